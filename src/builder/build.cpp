@@ -1,0 +1,196 @@
+#include "builder/build.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <functional>
+
+#include "builder/generators.hpp"
+#include "contact/gap_spring.hpp"
+#include "core/errors.hpp"
+#include "integrators/newmark.hpp"
+
+namespace pound::builder {
+namespace {
+
+class Resolver {
+ public:
+  Resolver(const ModelSpec& spec) : spec_(spec) {}
+
+  [[noreturn]] void fail(const std::string& path, const std::string& what) const {
+    throw InputError(spec_.source, path, what);
+  }
+
+  // Registers ids of one array; `origin(k)` names where entry k came from.
+  template <typename Item, typename Origin>
+  std::map<std::string, Index> index_ids(const std::vector<Item>& items, const char* kind,
+                                         Origin origin) const {
+    std::map<std::string, Index> index;
+    for (std::size_t k = 0; k < items.size(); ++k) {
+      auto [it, inserted] = index.emplace(items[k].id, static_cast<Index>(k));
+      if (!inserted)
+        fail(origin(k), fmt::format("duplicate {} id '{}' (also at {})", kind, items[k].id,
+                                    origin(static_cast<std::size_t>(it->second))));
+    }
+    return index;
+  }
+
+  Index node(const std::map<std::string, Index>& nodes, const std::string& id,
+             const std::string& path) const {
+    auto found = nodes.find(id);
+    if (found == nodes.end()) fail(path, fmt::format("node '{}' does not exist", id));
+    return found->second;
+  }
+
+ private:
+  const ModelSpec& spec_;
+};
+
+// Path of entry k of an expanded array: the user's own entries keep their path; generated ones
+// point at their generator.
+std::function<std::string(std::size_t)> origin_of(const ModelSpec& spec, std::size_t user_count,
+                                                   const char* array) {
+  return [&spec, user_count, array](std::size_t k) {
+    if (k < user_count) return fmt::format("/{}/{}", array, k);
+    // Generated entries: only rod pairs exist so far; name the first generator when unsure.
+    const int generator = spec.rod_pair_generator_index.empty() ? 0 : spec.rod_pair_generator_index[0];
+    return fmt::format("/generators/{}", generator);
+  };
+}
+
+}  // namespace
+
+std::shared_ptr<const contact::ContactLaw> make_law(const LawSpec& law) {
+  if (law.type == "gap_spring") return std::make_shared<contact::GapSpring>(law.stiffness.value());
+  throw std::invalid_argument("unknown contact law " + law.type);
+}
+
+std::unique_ptr<Integrator> make_integrator(const AnalysisSpec& analysis) {
+  const ConvergenceTest test{analysis.relative_tolerance, analysis.absolute_tolerance,
+                             analysis.max_iterations};
+  return std::make_unique<Newmark>(analysis.integrator.beta, analysis.integrator.gamma, test);
+}
+
+TransientSettings make_transient_settings(const AnalysisSpec& analysis) {
+  return {.time_step = analysis.time_step,
+          .end_time = analysis.duration,
+          .max_step_cuts = analysis.max_step_cuts,
+          .max_steps = analysis.max_steps};
+}
+
+BuiltModel build(const ModelSpec& user_spec) {
+  if (user_spec.dimension != 1 && !user_spec.rod_pairs.empty())
+    throw InputError(user_spec.source, fmt::format("/generators/{}", user_spec.rod_pair_generator_index[0]),
+                     "rod_pair needs a 1-D scene (\"dimension\": 1)");
+  const ModelSpec spec = expand(user_spec);
+  const Resolver resolve(spec);
+  BuiltModel built;
+  model::Model& model = built.model;
+  model.dimension = spec.dimension;
+
+  built.node_index = resolve.index_ids(spec.nodes, "node", origin_of(user_spec, user_spec.nodes.size(), "nodes"));
+  const auto materials = resolve.index_ids(spec.materials, "material",
+                                           origin_of(user_spec, user_spec.materials.size(), "materials"));
+  resolve.index_ids(spec.elements, "element", origin_of(user_spec, user_spec.elements.size(), "elements"));
+  const auto link_origin = origin_of(user_spec, user_spec.links.size(), "links");
+  built.link_index = resolve.index_ids(spec.links, "link", link_origin);
+
+  for (const NodeSpec& node : spec.nodes) model.nodes.push_back({node.id, {node.x, node.y}});
+
+  const auto element_origin = origin_of(user_spec, user_spec.elements.size(), "elements");
+  for (std::size_t k = 0; k < spec.elements.size(); ++k) {
+    const ElementSpec& element = spec.elements[k];
+    const std::string path = element_origin(k);
+    model::Truss truss;
+    truss.id = element.id;
+    truss.node_i = resolve.node(built.node_index, element.node_i, path + "/nodes/0");
+    truss.node_j = resolve.node(built.node_index, element.node_j, path + "/nodes/1");
+    if (truss.node_i == truss.node_j) resolve.fail(path + "/nodes", "an element needs two different nodes");
+    auto material = materials.find(element.material);
+    if (material == materials.end())
+      resolve.fail(path + "/material", fmt::format("material '{}' does not exist", element.material));
+    const MaterialSpec& m = spec.materials[static_cast<std::size_t>(material->second)];
+    truss.youngs_modulus = m.youngs_modulus;
+    truss.density = m.density;
+    truss.area = element.area;
+    if (!(model.element_length(truss) > 0.0))
+      resolve.fail(path + "/nodes", fmt::format("element '{}' has zero length (nodes '{}' and '{}' "
+                                                "are at the same place)",
+                                                element.id, element.node_i, element.node_j));
+    model.trusses.push_back(truss);
+  }
+
+  for (std::size_t k = 0; k < spec.masses.size(); ++k)
+    model.masses.push_back({resolve.node(built.node_index, spec.masses[k].node,
+                                         fmt::format("/masses/{}/node", k)),
+                            spec.masses[k].mass});
+
+  const auto support_origin = origin_of(user_spec, user_spec.supports.size(), "supports");
+  for (std::size_t k = 0; k < spec.supports.size(); ++k)
+    model.supports.push_back({resolve.node(built.node_index, spec.supports[k].node, support_origin(k) + "/node"),
+                              {spec.supports[k].fix_x, spec.supports[k].fix_y}});
+
+  const auto velocity_origin = origin_of(user_spec, user_spec.initial_velocities.size(), "initial_velocities");
+  if (!spec.initial_velocities.empty()) model.initial_velocity.assign(model.nodes.size(), {0.0, 0.0});
+  for (std::size_t k = 0; k < spec.initial_velocities.size(); ++k) {
+    const InitialVelocitySpec& v = spec.initial_velocities[k];
+    const Index node = resolve.node(built.node_index, v.node, velocity_origin(k) + "/node");
+    model.initial_velocity[static_cast<std::size_t>(node)] = {v.x, v.y};
+  }
+
+  for (std::size_t k = 0; k < spec.links.size(); ++k) {
+    const LinkSpec& spec_link = spec.links[k];
+    const std::string path = link_origin(k);
+    model::Link link;
+    link.id = spec_link.id;
+    link.node_i = resolve.node(built.node_index, spec_link.node_i, path + "/nodes/0");
+    link.node_j = resolve.node(built.node_index, spec_link.node_j, path + "/nodes/1");
+    if (link.node_i == link.node_j) resolve.fail(path + "/nodes", "a link cannot join a node to itself");
+    link.gap = spec_link.gap;
+    if (spec_link.axis) {
+      const auto& axis = *spec_link.axis;
+      link.axis = {axis[0], axis.size() > 1 ? axis[1] : 0.0};
+    } else {
+      const auto& a = model.nodes[static_cast<std::size_t>(link.node_i)].position;
+      const auto& b = model.nodes[static_cast<std::size_t>(link.node_j)].position;
+      const double dx = b[0] - a[0], dy = spec.dimension == 2 ? b[1] - a[1] : 0.0;
+      const double length = std::hypot(dx, dy);
+      if (!(length > 0.0))
+        resolve.fail(path, fmt::format("nodes '{}' and '{}' are at the same place: give the link an "
+                                       "\"axis\"",
+                                       spec_link.node_i, spec_link.node_j));
+      link.axis = {dx / length, dy / length};
+    }
+    link.law = make_law(spec_link.law);
+    model.links.push_back(std::move(link));
+  }
+
+  built.analysis = spec.analysis;
+  for (std::size_t k = 0; k < spec.recorders.size(); ++k) {
+    const RecorderSpec& recorder = spec.recorders[k];
+    ResolvedRecorder resolved{recorder.type, {}, recorder.file};
+    for (std::size_t i = 0; i < recorder.ids.size(); ++i) {
+      const std::string path = fmt::format("/recorders/{}/{}/{}", k, recorder.type == "link" ? "links" : "nodes", i);
+      if (recorder.type == "node") {
+        resolved.items.push_back(resolve.node(built.node_index, recorder.ids[i], path));
+      } else {
+        auto found = built.link_index.find(recorder.ids[i]);
+        if (found == built.link_index.end())
+          resolve.fail(path, fmt::format("link '{}' does not exist", recorder.ids[i]));
+        resolved.items.push_back(found->second);
+      }
+    }
+    if (recorder.type == "link" && resolved.items.empty())
+      for (Index i = 0; i < static_cast<Index>(model.links.size()); ++i) resolved.items.push_back(i);
+    built.recorders.push_back(std::move(resolved));
+  }
+
+  const bool only_rod_pair = user_spec.rod_pairs.size() == 1 && user_spec.nodes.empty() &&
+                             user_spec.elements.empty() && user_spec.masses.empty() &&
+                             user_spec.supports.empty() && user_spec.initial_velocities.empty() &&
+                             user_spec.links.empty();
+  if (only_rod_pair) built.sole_rod_pair = user_spec.rod_pairs.front();
+  return built;
+}
+
+}  // namespace pound::builder

@@ -1,0 +1,43 @@
+#pragma once
+// Spec -> model: expands generators, resolves every id reference and checks what the reader
+// cannot see alone (dangling or duplicate ids across generated parts, zero-length elements,
+// links joining a node to itself, links without an axis). Errors are InputErrors with the
+// file and the JSON path of the offending entry.
+#include <map>
+#include <optional>
+#include <memory>
+#include <string>
+
+#include "builder/spec.hpp"
+#include "integrators/integrator.hpp"
+#include "integrators/transient_analysis.hpp"
+#include "model/model.hpp"
+
+namespace pound::builder {
+
+struct ResolvedRecorder {
+  std::string type;  // "link" | "node"
+  std::vector<Index> items;
+  std::string file;
+};
+
+struct BuiltModel {
+  model::Model model;
+  std::map<std::string, Index> node_index;
+  std::map<std::string, Index> link_index;
+  AnalysisSpec analysis;
+  std::vector<ResolvedRecorder> recorders;
+  // The rod pairs the model was generated from, when it is exactly one rod pair and nothing else
+  // (then the exact solution applies and `run` reports the verification metrics).
+  std::optional<RodPairSpec> sole_rod_pair;
+};
+
+BuiltModel build(const ModelSpec& spec);
+
+// The contact law object a LawSpec names (stiffness already resolved).
+std::shared_ptr<const contact::ContactLaw> make_law(const LawSpec& law);
+
+std::unique_ptr<Integrator> make_integrator(const AnalysisSpec& analysis);
+TransientSettings make_transient_settings(const AnalysisSpec& analysis);
+
+}  // namespace pound::builder

@@ -1,0 +1,70 @@
+#include "builder/generators.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace pound::builder {
+namespace {
+constexpr const char* kSide[] = {"left", "right"};
+
+double element_stiffness(const RodSpec& rod) {
+  return rod.youngs_modulus * rod.area / (rod.length / rod.elements);
+}
+
+// Left rod: nodes 0..n from the far end (x = -L) to the facing end (x = 0). Right rod: nodes
+// 0..n from the facing end (x = 0) to the far end (x = L).
+void add_rod(const RodPairSpec& pair, int side, ModelSpec& out) {
+  const RodSpec& rod = side == 0 ? pair.left : pair.right;
+  const std::string material = fmt::format("{}.{}", pair.id, kSide[side]);
+  out.materials.push_back({material, rod.youngs_modulus, rod.density});
+  const double h = rod.length / rod.elements;
+  for (int i = 0; i <= rod.elements; ++i) {
+    const double x = side == 0 ? -rod.length + i * h : i * h;
+    out.nodes.push_back({rod_node_id(pair, side, i), side == 0 && i == rod.elements ? 0.0 : x, 0.0});
+    if (rod.initial_velocity != 0.0)
+      out.initial_velocities.push_back({rod_node_id(pair, side, i), rod.initial_velocity, 0.0});
+  }
+  for (int e = 0; e < rod.elements; ++e)
+    out.elements.push_back({fmt::format("{}.{}.e{}", pair.id, kSide[side], e), "truss",
+                            rod_node_id(pair, side, e), rod_node_id(pair, side, e + 1), material,
+                            rod.area});
+  if (rod.far_end_fixed)
+    out.supports.push_back({rod_node_id(pair, side, side == 0 ? 0 : rod.elements), true, false});
+}
+}  // namespace
+
+std::string rod_node_id(const RodPairSpec& pair, int rod, int index) {
+  return fmt::format("{}.{}.{}", pair.id, kSide[rod], index);
+}
+
+std::string rod_link_id(const RodPairSpec& pair) { return pair.id + ".contact"; }
+
+double rod_pair_link_stiffness(const RodPairSpec& pair) {
+  if (pair.law.stiffness) return *pair.law.stiffness;
+  return pair.law.stiffness_ratio.value_or(1.0) *
+         std::min(element_stiffness(pair.left), element_stiffness(pair.right));
+}
+
+ModelSpec expand(const ModelSpec& spec) {
+  ModelSpec out = spec;
+  out.rod_pairs.clear();
+  out.rod_pair_generator_index.clear();
+  for (const RodPairSpec& pair : spec.rod_pairs) {
+    add_rod(pair, 0, out);
+    add_rod(pair, 1, out);
+    LinkSpec link;
+    link.id = rod_link_id(pair);
+    link.node_i = rod_node_id(pair, 0, pair.left.elements);
+    link.node_j = rod_node_id(pair, 1, 0);
+    link.gap = pair.gap;
+    link.axis = std::vector<double>{1.0};
+    link.law = pair.law;
+    link.law.stiffness = rod_pair_link_stiffness(pair);
+    link.law.stiffness_ratio.reset();
+    out.links.push_back(std::move(link));
+  }
+  return out;
+}
+
+}  // namespace pound::builder

@@ -1,0 +1,21 @@
+#pragma once
+// Scene generators: each turns a few lines of a model file into the nodes, elements, supports,
+// initial velocities and links a user would otherwise write by hand. expand() returns a spec
+// with no generators left, which is what the builder builds (and what `pound expand` could show).
+#include "builder/spec.hpp"
+
+namespace pound::builder {
+
+// Link stiffness from a rod pair's law: the explicit stiffness, or stiffness_ratio times the
+// axial stiffness E A / h of the softer element adjacent to the contact.
+double rod_pair_link_stiffness(const RodPairSpec& pair);
+
+// The spec with every generator replaced by what it generates (appended after the user's own
+// entries, in generator order).
+ModelSpec expand(const ModelSpec& spec);
+
+// Generated ids, shared with whoever looks the generated parts up again.
+std::string rod_node_id(const RodPairSpec& pair, int rod, int index);  // rod 0 left, 1 right
+std::string rod_link_id(const RodPairSpec& pair);
+
+}  // namespace pound::builder

@@ -1,0 +1,133 @@
+#pragma once
+// What a model file says, as plain data: the io/ reader fills these from JSON (checking types,
+// required fields, unknown fields and value ranges, each with its JSON path), the builder
+// checks references between them and turns them into a model::Model.
+//
+// Every vector here mirrors an array of the file, so an index k of `links` is the JSON path
+// "/links/k"; the builder names errors that way.
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace pound::builder {
+
+// A contact law, by name with its parameters. "gap_spring": Kawashima's compression-only spring,
+// with either "stiffness" [F/L] or (inside a rod_pair generator only) "stiffness_ratio", the
+// link stiffness over the axial stiffness E A / h of the softer adjacent element.
+struct LawSpec {
+  std::string type;  // "gap_spring"
+  std::optional<double> stiffness;
+  std::optional<double> stiffness_ratio;
+};
+
+struct NodeSpec {
+  std::string id;
+  double x = 0.0;
+  double y = 0.0;
+};
+
+struct MaterialSpec {
+  std::string id;
+  double youngs_modulus = 0.0;  // E [F/L^2], > 0
+  double density = 0.0;         // rho [M/L^3], >= 0
+};
+
+struct ElementSpec {
+  std::string id;
+  std::string type;  // "truss"
+  std::string node_i;
+  std::string node_j;
+  std::string material;
+  double area = 0.0;  // [L^2], > 0
+};
+
+struct MassSpec {
+  std::string node;
+  double mass = 0.0;  // [M], > 0
+};
+
+struct SupportSpec {
+  std::string node;
+  bool fix_x = false;
+  bool fix_y = false;
+};
+
+struct InitialVelocitySpec {
+  std::string node;
+  double x = 0.0;
+  double y = 0.0;
+};
+
+struct LinkSpec {
+  std::string id;
+  std::string node_i;
+  std::string node_j;
+  double gap = 0.0;  // [L], >= 0; never negative, never flipped
+  std::optional<std::vector<double>> axis;  // unit vector from i to j; default from coordinates
+  LawSpec law;
+};
+
+// One rod of a rod_pair generator.
+struct RodSpec {
+  double youngs_modulus = 0.0;
+  double density = 0.0;
+  double area = 0.0;
+  double length = 0.0;
+  int elements = 0;              // n >= 1
+  double initial_velocity = 0.0;  // along +x
+  bool far_end_fixed = false;    // "far_end": "free" | "fixed"
+};
+
+// Two collinear rods, the left one on [-L1, 0] and the right one on [gap, gap + L2] (nodes of
+// the facing ends both at x = 0; the gap is the link's), joined by a contact link.
+struct RodPairSpec {
+  std::string id;  // prefix of generated ids: "<id>.left.0" ... , link "<id>.contact"
+  RodSpec left;
+  RodSpec right;
+  double gap = 0.0;
+  LawSpec law;
+};
+
+struct IntegratorSpec {
+  std::string type = "newmark";  // "newmark"
+  double beta = 0.25;
+  double gamma = 0.5;
+};
+
+struct AnalysisSpec {
+  IntegratorSpec integrator;
+  double time_step = 0.0;  // > 0
+  double duration = 0.0;   // > 0
+  double relative_tolerance = 1e-10;
+  double absolute_tolerance = 0.0;
+  int max_iterations = 25;
+  int max_step_cuts = 10;
+  long max_steps = 0;  // 0: no limit
+};
+
+// Time histories written as CSV: "link" records force and penetration of the named links (all
+// links when `ids` is empty); "node" records displacement, velocity, acceleration of nodes.
+struct RecorderSpec {
+  std::string type;  // "link" | "node"
+  std::vector<std::string> ids;
+  std::string file;  // output file name inside the output folder
+};
+
+struct ModelSpec {
+  std::string source;  // file name, for error messages
+  std::string title;
+  int dimension = 1;  // 1 or 2
+  std::vector<NodeSpec> nodes;
+  std::vector<MaterialSpec> materials;
+  std::vector<ElementSpec> elements;
+  std::vector<MassSpec> masses;
+  std::vector<SupportSpec> supports;
+  std::vector<InitialVelocitySpec> initial_velocities;
+  std::vector<LinkSpec> links;
+  std::vector<RodPairSpec> rod_pairs;  // "generators" entries of type "rod_pair", in order
+  std::vector<int> rod_pair_generator_index;  // their index in "/generators"
+  AnalysisSpec analysis;
+  std::vector<RecorderSpec> recorders;
+};
+
+}  // namespace pound::builder

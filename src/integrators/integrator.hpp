@@ -1,0 +1,48 @@
+#pragma once
+// A time integrator advances a SecondOrderSystem by one step and says whether the step
+// converged; the driver (TransientAnalysis) decides what to do when it did not.
+#include <string>
+
+#include "core/types.hpp"
+#include "integrators/second_order_system.hpp"
+
+namespace pound {
+
+struct State {
+  double time = 0.0;
+  Vector displacement;
+  Vector velocity;
+  Vector acceleration;
+  Vector link_penetration;  // delta of every link
+  Vector link_force;        // F of every link (compression > 0)
+};
+
+// Equilibrium iteration stops when the unbalanced force is small against the forces present:
+//   ||R|| <= relative_tolerance * max(||f_ext||, ||B^T F||) + absolute_tolerance,
+// optionally also asking the last change of link forces to be small. Kawashima (1980) used a
+// relative tolerance of 1e-3; the default is much tighter because the condensed iteration is cheap.
+struct ConvergenceTest {
+  double relative_tolerance = 1e-10;
+  double absolute_tolerance = 0.0;  // [F]
+  int max_iterations = 25;
+};
+
+struct StepResult {
+  bool converged = false;
+  int iterations = 0;            // linearised corrections made
+  double unbalanced_force = 0;   // ||R|| at the accepted iterate [F]
+  std::string failure;           // why not, when !converged
+};
+
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+  virtual std::string name() const = 0;
+  // Completes `state` (acceleration, link state) at its time from u and v.
+  virtual void initialize(SecondOrderSystem& system, State& state) = 0;
+  // Tries one step of size dt from `from` into `to`; links are left at the trial state.
+  virtual StepResult advance(SecondOrderSystem& system, const State& from, double dt,
+                             State& to) = 0;
+};
+
+}  // namespace pound

@@ -1,0 +1,154 @@
+#include "integrators/newmark.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/LU>
+#include <cmath>
+#include <stdexcept>
+
+namespace pound {
+
+Newmark::Newmark(double beta, double gamma, ConvergenceTest test)
+    : beta_(beta), gamma_(gamma), test_(test) {
+  if (!(beta > 0.0) || !(gamma >= 0.5))
+    throw std::invalid_argument("Newmark needs beta > 0 and gamma >= 1/2");
+}
+
+Newmark Newmark::average_acceleration(ConvergenceTest test) { return {0.25, 0.5, test}; }
+Newmark Newmark::linear_acceleration(ConvergenceTest test) { return {1.0 / 6.0, 0.5, test}; }
+
+std::string Newmark::name() const {
+  if (beta_ == 0.25 && gamma_ == 0.5) return "newmark_average_acceleration";
+  if (beta_ == 1.0 / 6.0 && gamma_ == 0.5) return "newmark_linear_acceleration";
+  return fmt::format("newmark(beta={:g}, gamma={:g})", beta_, gamma_);
+}
+
+void Newmark::initialize(SecondOrderSystem& system, State& state) {
+  factorizations_.by_step.clear();
+  const Index n = system.size();
+  LinkSet& links = system.links();
+  if (state.displacement.size() != n) state.displacement = Vector::Zero(n);
+  if (state.velocity.size() != n) state.velocity = Vector::Zero(n);
+  Vector rate, zero = Vector::Zero(links.size()), tangent;
+  links.penetration(state.displacement, state.link_penetration);
+  links.project(state.velocity, rate);
+  links.set_trial(state.link_penetration, rate, zero, 0.0, 0.0, state.link_force, tangent);
+  links.commit();
+
+  // M a0 = f(t0) - C v0 - K u0 - B^T F0
+  Vector rhs = Vector::Zero(n), work(n);
+  if (system.has_external_force()) system.external_force(state.time, rhs);
+  if (system.has_damping()) {
+    system.multiply_damping(state.velocity, work);
+    rhs -= work;
+  }
+  system.multiply_stiffness(state.displacement, work);
+  rhs -= work;
+  rhs.noalias() -= links.connectivity().transpose() * state.link_force;
+  state.acceleration.resize(n);
+  system.factor(1.0, 0.0, 0.0)->solve(rhs, state.acceleration);
+}
+
+const Newmark::Factorization& Newmark::factorization(SecondOrderSystem& system, double dt) {
+  auto found = factorizations_.by_step.find(dt);
+  if (found != factorizations_.by_step.end()) return found->second;
+  const double c_m = 1.0 / (beta_ * dt * dt);
+  const double c_c = gamma_ / (beta_ * dt);
+  Factorization f;
+  f.solver = system.factor(c_m, system.has_damping() ? c_c : 0.0, 1.0);
+  const LinkSet& links = system.links();
+  const Index n = system.size(), m = links.size();
+  f.influence.resize(n, m);
+  Vector column(n), solution(n);
+  for (Index k = 0; k < m; ++k) {
+    column = links.connectivity().row(k).transpose();
+    f.solver->solve(column, solution);
+    f.influence.col(k) = solution;
+  }
+  f.coupling = links.connectivity() * f.influence;
+  return factorizations_.by_step.emplace(dt, std::move(f)).first->second;
+}
+
+StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double dt, State& to) {
+  const Factorization& f = factorization(system, dt);
+  LinkSet& links = system.links();
+  const Index n = system.size(), m = links.size();
+  const double c_m = 1.0 / (beta_ * dt * dt);
+  const double c_c = gamma_ / (beta_ * dt);
+  to.time = from.time + dt;
+
+  predicted_displacement_ = from.displacement + dt * from.velocity +
+                            ((0.5 - beta_) * dt * dt) * from.acceleration;
+  predicted_velocity_ = from.velocity + ((1.0 - gamma_) * dt) * from.acceleration;
+
+  // Linear right-hand side: f + M (c_m u~) + C (c_c u~ - v~).
+  work_ = c_m * predicted_displacement_;
+  rhs_.resize(n);
+  system.multiply_mass(work_, rhs_);
+  double external_norm = 0.0;
+  if (system.has_external_force()) {
+    system.external_force(to.time, external_);
+    rhs_ += external_;
+    external_norm = external_.norm();
+  }
+  if (system.has_damping()) {
+    work_ = c_c * predicted_displacement_ - predicted_velocity_;
+    Vector damping_force(n);
+    system.multiply_damping(work_, damping_force);
+    rhs_ += damping_force;
+  }
+  to.displacement.resize(n);
+  f.solver->solve(rhs_, to.displacement);  // u_lin
+
+  StepResult result;
+  assumed_force_ = Vector::Zero(m);
+  if (m > 0) {
+    links.penetration(to.displacement, delta_linear_);
+    links.penetration(predicted_displacement_, delta_predicted_);
+    links.project(predicted_velocity_, rate_predicted_);
+    for (int iteration = 0;; ++iteration) {
+      delta_.noalias() = delta_linear_ - f.coupling * assumed_force_;
+      rate_ = rate_predicted_ + c_c * (delta_ - delta_predicted_);
+      acceleration_ = c_m * (delta_ - delta_predicted_);
+      links.set_trial(delta_, rate_, acceleration_, c_c, c_m, law_force_, tangent_);
+      residual_ = assumed_force_ - law_force_;
+      if (!residual_.allFinite() || !law_force_.allFinite()) {
+        result.failure = "link forces are not finite";
+        return result;
+      }
+      result.unbalanced_force = links.nodal_norm(residual_);
+      const double reference = std::max(external_norm, links.nodal_norm(law_force_));
+      if (result.unbalanced_force <= test_.relative_tolerance * reference + test_.absolute_tolerance)
+        break;
+      if (iteration == test_.max_iterations) {
+        result.failure = fmt::format(
+            "Newton did not converge in {} iterations (unbalanced force {:.3e}, reference {:.3e})",
+            test_.max_iterations, result.unbalanced_force, reference);
+        return result;
+      }
+      // d(residual)/dF = I + T G
+      Matrix jacobian = tangent_.asDiagonal() * f.coupling;
+      jacobian.diagonal().array() += 1.0;
+      assumed_force_ -= jacobian.partialPivLu().solve(residual_);
+      ++result.iterations;
+    }
+    for (Index k = 0; k < m; ++k)
+      if (assumed_force_[k] != 0.0) to.displacement -= assumed_force_[k] * f.influence.col(k);
+    to.link_penetration = delta_;
+    to.link_force = assumed_force_;
+  } else {
+    to.link_penetration.resize(0);
+    to.link_force.resize(0);
+  }
+
+  to.acceleration = c_m * (to.displacement - predicted_displacement_);
+  to.velocity = predicted_velocity_ + (gamma_ * dt) * to.acceleration;
+  if (!to.displacement.allFinite()) {
+    result.failure = "displacements are not finite";
+    return result;
+  }
+  result.converged = true;
+  return result;
+}
+
+}  // namespace pound

@@ -1,0 +1,63 @@
+#pragma once
+// Newmark's method with Newton equilibrium iteration condensed onto the link coordinates.
+//
+//   u_{n+1} = u~ + beta dt^2 a_{n+1},   u~ = u_n + dt v_n + (1/2 - beta) dt^2 a_n
+//   v_{n+1} = v~ + gamma dt a_{n+1},    v~ = v_n + (1 - gamma) dt a_n
+//   M a_{n+1} + C v_{n+1} + K u_{n+1} + B^T F_{n+1} = f_{n+1}
+//
+// With A = M/(beta dt^2) + gamma/(beta dt) C + K factored once per dt, u_{n+1} = u_lin - Z F
+// where u_lin = A^{-1}(linear right-hand side) and Z = A^{-1} B^T. The remaining equations are
+// m scalar ones, F - F_law(delta_lin - G F) = 0 with G = B Z, solved by Newton with the laws'
+// consistent tangents. This is the full Newton method on the whole system, only cheaper: the
+// unbalanced force of the whole system is exactly B^T (F - F_law).
+#include <map>
+
+#include "integrators/integrator.hpp"
+
+namespace pound {
+
+class Newmark final : public Integrator {
+ public:
+  Newmark(double beta, double gamma, ConvergenceTest test = {});
+  // Trapezoidal rule: unconditionally stable, no numerical damping.
+  static Newmark average_acceleration(ConvergenceTest test = {});
+  // Conditionally stable (dt < 0.551 T_min), third-order period error.
+  static Newmark linear_acceleration(ConvergenceTest test = {});
+
+  std::string name() const override;
+  void initialize(SecondOrderSystem& system, State& state) override;
+  StepResult advance(SecondOrderSystem& system, const State& from, double dt,
+                     State& to) override;
+
+  double beta() const { return beta_; }
+  double gamma() const { return gamma_; }
+
+ private:
+  struct Factorization {
+    std::unique_ptr<LinearSolver> solver;
+    Matrix influence;  // Z = A^{-1} B^T (n x m)
+    Matrix coupling;   // G = B Z (m x m)
+  };
+  const Factorization& factorization(SecondOrderSystem& system, double dt);
+
+  double beta_;
+  double gamma_;
+  ConvergenceTest test_;
+  // Factors by dt, so step cuts reuse theirs. Tied to the system given to initialize(), so a
+  // copy of the integrator starts without them.
+  struct FactorCache {
+    FactorCache() = default;
+    FactorCache(const FactorCache&) {}
+    FactorCache& operator=(const FactorCache&) {
+      by_step.clear();
+      return *this;
+    }
+    std::map<double, Factorization> by_step;
+  } factorizations_;
+  // Work vectors, kept to avoid allocation inside the time loop.
+  Vector predicted_displacement_, predicted_velocity_, rhs_, work_, external_;
+  Vector delta_linear_, delta_predicted_, rate_predicted_;
+  Vector delta_, rate_, acceleration_, assumed_force_, law_force_, tangent_, residual_;
+};
+
+}  // namespace pound

@@ -1,0 +1,39 @@
+#pragma once
+// The seam between integrators and whatever they integrate (after Chrono's
+// (c_a M + c_v C + c_x K) Delta = R): a linear part M u'' + C u' + K u = f_ext(t), factored by
+// the system for any coefficients, plus a LinkSet whose forces B^T F(B u - gap, ...) are the
+// only nonlinearity. Integrators see nothing else, so they are tested on a one-DOF oscillator.
+#include <memory>
+
+#include "core/types.hpp"
+#include "integrators/link_set.hpp"
+
+namespace pound {
+
+// A factored matrix of the linear part.
+class LinearSolver {
+ public:
+  virtual ~LinearSolver() = default;
+  virtual void solve(const Vector& rhs, Vector& solution) const = 0;
+};
+
+class SecondOrderSystem {
+ public:
+  virtual ~SecondOrderSystem() = default;
+
+  virtual Index size() const = 0;
+  virtual void multiply_mass(const Vector& x, Vector& y) const = 0;       // y = M x
+  virtual bool has_damping() const = 0;
+  virtual void multiply_damping(const Vector& x, Vector& y) const = 0;    // y = C x
+  virtual void multiply_stiffness(const Vector& x, Vector& y) const = 0;  // y = K x
+  virtual bool has_external_force() const = 0;
+  virtual void external_force(double time, Vector& force) const = 0;      // f_ext(t)
+
+  // Factors c_m M + c_c C + c_k K (every coefficient >= 0, the result positive definite).
+  virtual std::unique_ptr<LinearSolver> factor(double c_m, double c_c, double c_k) const = 0;
+
+  virtual LinkSet& links() = 0;
+  const LinkSet& links() const { return const_cast<SecondOrderSystem*>(this)->links(); }
+};
+
+}  // namespace pound

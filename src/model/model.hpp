@@ -1,0 +1,85 @@
+#pragma once
+// The physical model: nodes, elements, masses, supports, links, initial velocities. Indices
+// refer to `nodes`; the builder has already checked every reference and value.
+//
+// Degrees of freedom follow the scene: a 1-D (axial) scene carries 1 DOF per node (u_x); a
+// plane truss scene carries 2 (u_x, u_y). Nothing is padded to 3 or 6.
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "contact/contact_law.hpp"
+#include "core/types.hpp"
+
+namespace pound::model {
+
+using Coordinates = std::array<double, 2>;  // (x, y); y unused in 1-D scenes
+
+struct Node {
+  std::string id;
+  Coordinates position{};
+};
+
+// Two-node axial element (rod / truss), linear elastic, lumped mass rho A L / 2 per node.
+struct Truss {
+  std::string id;
+  Index node_i = 0;
+  Index node_j = 0;
+  double youngs_modulus = 0.0;  // E [F/L^2]
+  double area = 0.0;            // A [L^2]
+  double density = 0.0;         // rho [M/L^3]
+};
+
+struct NodalMass {
+  Index node = 0;
+  double mass = 0.0;  // [M], in every translational direction
+};
+
+struct Support {
+  Index node = 0;
+  std::array<bool, 2> fixed{};  // per direction (x, y)
+};
+
+// Contact link between node i and node j along the unit axis n (from i towards j):
+// penetration delta = (u_i - u_j) . n - gap.
+struct Link {
+  std::string id;
+  Index node_i = 0;
+  Index node_j = 0;
+  Coordinates axis{1.0, 0.0};
+  double gap = 0.0;  // initial clear distance [L], >= 0
+  std::shared_ptr<const contact::ContactLaw> law;  // prototype; each analysis clones it
+};
+
+struct Model {
+  int dimension = 1;  // 1 or 2
+  std::vector<Node> nodes;
+  std::vector<Truss> trusses;
+  std::vector<NodalMass> masses;
+  std::vector<Support> supports;
+  std::vector<Link> links;
+  std::vector<Coordinates> initial_velocity;  // per node (empty: at rest)
+
+  int dofs_per_node() const { return dimension; }
+  double element_length(const Truss& truss) const;
+};
+
+// Equation numbers of the free DOFs, in node order (a chain of nodes gives a banded matrix).
+class DofMap {
+ public:
+  explicit DofMap(const Model& model);
+  Index size() const { return size_; }
+  int dofs_per_node() const { return dofs_per_node_; }
+  // Equation of (node, direction), or -1 where the DOF is fixed.
+  Index equation(Index node, int direction) const {
+    return equations_[static_cast<std::size_t>(node * dofs_per_node_ + direction)];
+  }
+
+ private:
+  int dofs_per_node_;
+  Index size_ = 0;
+  std::vector<Index> equations_;
+};
+
+}  // namespace pound::model

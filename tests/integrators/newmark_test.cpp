@@ -1,0 +1,113 @@
+// Newmark on a one-DOF oscillator against closed forms.
+#include "integrators/newmark.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "contact/gap_spring.hpp"
+#include "integrators/transient_analysis.hpp"
+#include "support/oscillator.hpp"
+
+namespace pound {
+namespace {
+
+using testing::Oscillator;
+constexpr double kPi = std::numbers::pi;
+
+// Free vibration: the average-acceleration rule reproduces u(t) = cos(w~ t) exactly at the steps,
+// with the discrete frequency w~ dt = 2 atan(w dt / 2) (no amplitude decay).
+TEST(Newmark, AverageAccelerationMatchesItsExactDiscreteSolution) {
+  const double mass = 2.0, stiffness = 50.0, omega = std::sqrt(stiffness / mass), dt = 0.05;
+  Oscillator system(mass, 0.0, stiffness);
+  Newmark newmark = Newmark::average_acceleration();
+  TransientAnalysis analysis(system, newmark, {.time_step = dt, .end_time = 10.0});
+  State state;
+  state.displacement = Vector::Constant(1, 1.0);
+  state.velocity = Vector::Zero(1);
+  const double discrete = 2.0 * std::atan(omega * dt / 2.0) / dt;
+  double worst = 0.0;
+  analysis.run(state, [&](const State& s, const StepResult&) {
+    worst = std::max(worst, std::abs(s.displacement[0] - std::cos(discrete * s.time)));
+  });
+  std::cout << "max |u - cos(w~ t)| = " << worst << "\n";
+  EXPECT_LT(worst, 1e-11);
+}
+
+// Damped, harmonically forced oscillator against the closed-form response; the error must fall
+// as dt^2 (second order), measured between dt and dt/2.
+double forced_error(const Newmark& prototype, double dt) {
+  const double mass = 1.0, stiffness = 40.0, zeta = 0.05;
+  const double omega = std::sqrt(stiffness / mass), damping = 2.0 * zeta * omega * mass;
+  const double force_amplitude = 3.0, forcing = 4.0;
+  Oscillator system(mass, damping, stiffness, LinkSet(1),
+                    [&](double t) { return force_amplitude * std::sin(forcing * t); });
+  // Steady state X sin(W t - phi) plus the free part fitted to u(0) = v(0) = 0.
+  const double r = forcing / omega;
+  const double amplitude = force_amplitude / stiffness /
+                           std::sqrt((1 - r * r) * (1 - r * r) + (2 * zeta * r) * (2 * zeta * r));
+  const double phase = std::atan2(2 * zeta * r, 1 - r * r);
+  const double omega_d = omega * std::sqrt(1 - zeta * zeta);
+  const double a = amplitude * std::sin(phase);
+  const double b = (zeta * omega * a - amplitude * forcing * std::cos(phase)) / omega_d;
+  auto exact = [&](double t) {
+    return amplitude * std::sin(forcing * t - phase) +
+           std::exp(-zeta * omega * t) * (a * std::cos(omega_d * t) + b * std::sin(omega_d * t));
+  };
+  Newmark newmark = prototype;
+  TransientAnalysis analysis(system, newmark, {.time_step = dt, .end_time = 4.0});
+  State state;
+  double worst = 0.0;
+  analysis.run(state, [&](const State& s, const StepResult&) {
+    worst = std::max(worst, std::abs(s.displacement[0] - exact(s.time)));
+  });
+  return worst;
+}
+
+TEST(Newmark, ForcedDampedOscillatorConvergesAtSecondOrder) {
+  for (const Newmark& method : {Newmark::average_acceleration(), Newmark::linear_acceleration()}) {
+    const double coarse = forced_error(method, 0.01), fine = forced_error(method, 0.005);
+    const double order = std::log2(coarse / fine);
+    std::cout << method.name() << ": error(dt=0.01) = " << coarse << ", error(dt=0.005) = " << fine
+              << ", observed order " << order << "\n";
+    EXPECT_NEAR(order, 2.0, 0.1);
+    EXPECT_LT(fine, 1e-4);
+  }
+}
+
+// A mass hitting a rigid wall through a gap spring: while in contact it is a half cycle of a
+// linear oscillator, so the contact lasts pi sqrt(m/k) and the rebound is elastic (e = 1).
+TEST(Newmark, GapSpringAgainstRigidWallGivesHalfCycleContact) {
+  const double mass = 1.0, wall_stiffness = 1.0e4, speed = 0.5, gap = 0.01;
+  std::vector<std::unique_ptr<contact::ContactLaw>> laws;
+  laws.push_back(std::make_unique<contact::GapSpring>(wall_stiffness));
+  LinkSet links(1, {{{0, 1.0}}}, {gap}, std::move(laws));
+  Oscillator system(mass, 0.0, 0.0, std::move(links));
+  const double contact_time = kPi * std::sqrt(mass / wall_stiffness);
+  const double dt = contact_time / 2000.0;
+  Newmark newmark = Newmark::average_acceleration();
+  TransientAnalysis analysis(system, newmark, {.time_step = dt, .end_time = 0.1});
+  State state;
+  state.velocity = Vector::Constant(1, speed);
+  double first_contact = -1, last_contact = -1, peak_force = 0;
+  analysis.run(state, [&](const State& s, const StepResult&) {
+    if (s.link_force[0] > 0) {
+      if (first_contact < 0) first_contact = s.time;
+      last_contact = s.time;
+      peak_force = std::max(peak_force, s.link_force[0]);
+    }
+  });
+  const double rebound = -state.velocity[0] / speed;
+  const double duration_error = (last_contact - first_contact) / contact_time - 1.0;
+  const double peak_error = peak_force / (speed * std::sqrt(wall_stiffness * mass)) - 1.0;
+  std::cout << "restitution " << rebound << ", duration error " << duration_error
+            << ", peak force error " << peak_error << "\n";
+  EXPECT_NEAR(rebound, 1.0, 1e-3);
+  // The contact is resolved to dt = T/2000 at each end: 2 steps out of 2000.
+  EXPECT_NEAR(duration_error, 0.0, 2e-3);
+  EXPECT_NEAR(peak_error, 0.0, 1e-3);
+}
+
+}  // namespace
+}  // namespace pound

@@ -1,0 +1,41 @@
+#pragma once
+// A one-DOF system m u'' + c u' + k u + F_links = f(t) for testing integrators without a model.
+#include <functional>
+
+#include "integrators/second_order_system.hpp"
+
+namespace pound::testing {
+
+class Oscillator final : public SecondOrderSystem {
+ public:
+  Oscillator(double mass, double damping, double stiffness, LinkSet links = LinkSet(1),
+             std::function<double(double)> force = {})
+      : mass_(mass), damping_(damping), stiffness_(stiffness), links_(std::move(links)),
+        force_(std::move(force)) {}
+
+  Index size() const override { return 1; }
+  void multiply_mass(const Vector& x, Vector& y) const override { y = mass_ * x; }
+  bool has_damping() const override { return damping_ != 0.0; }
+  void multiply_damping(const Vector& x, Vector& y) const override { y = damping_ * x; }
+  void multiply_stiffness(const Vector& x, Vector& y) const override { y = stiffness_ * x; }
+  bool has_external_force() const override { return static_cast<bool>(force_); }
+  void external_force(double time, Vector& force) const override {
+    force = Vector::Constant(1, force_(time));
+  }
+  std::unique_ptr<LinearSolver> factor(double c_m, double c_c, double c_k) const override {
+    return std::make_unique<Scalar>(c_m * mass_ + c_c * damping_ + c_k * stiffness_);
+  }
+  LinkSet& links() override { return links_; }
+
+ private:
+  struct Scalar final : LinearSolver {
+    explicit Scalar(double diagonal) : value(diagonal) {}
+    void solve(const Vector& rhs, Vector& solution) const override { solution = rhs / value; }
+    double value;
+  };
+  double mass_, damping_, stiffness_;
+  LinkSet links_;
+  std::function<double(double)> force_;
+};
+
+}  // namespace pound::testing
