@@ -1,0 +1,18 @@
+#pragma once
+// Subcommands of the `pound` program. Each takes the arguments after its name and returns the
+// process exit code: 0 success, 1 verification failed / usage error, 2 input error, 3 the
+// analysis failed, 4 output could not be written.
+#include <string>
+#include <vector>
+
+namespace pound::app {
+
+using Arguments = std::vector<std::string>;
+
+int run_command(const Arguments& arguments);
+int verify_command(const Arguments& arguments);
+
+// Dispatches argv to a subcommand, turning errors into messages and exit codes.
+int main_entry(int argc, char** argv);
+
+}  // namespace pound::app

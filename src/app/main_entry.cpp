@@ -1,0 +1,63 @@
+#include <fmt/format.h>
+
+#include <boost/program_options/errors.hpp>
+#include <iostream>
+
+#include "app/commands.hpp"
+#include "core/errors.hpp"
+#include "io/output.hpp"
+
+namespace pound::app {
+namespace {
+
+constexpr const char* kUsage = R"(pound: seismic pounding analysis (girders, abutments, adjacent buildings)
+
+usage: pound <command> [options]
+
+commands:
+  run MODEL.json [--out DIR]   run a model file; writes summary.json and CSV time histories
+  verify rod-impact [options]  the rod-impact benchmark against the exact wave solution
+  help [command]               this text, or a command's options
+
+Run `pound <command> --help` for a command's options. Model format: docs/model_format.md.
+Exit codes: 0 ok, 1 usage error or failed verification, 2 bad input, 3 analysis failed,
+4 output could not be written.
+)";
+
+}  // namespace
+
+int main_entry(int argc, char** argv) {
+  const Arguments all(argv + 1, argv + argc);
+  if (all.empty()) {
+    std::cerr << kUsage;
+    return 1;
+  }
+  const std::string command = all.front();
+  Arguments rest(all.begin() + 1, all.end());
+  try {
+    if (command == "run") return run_command(rest);
+    if (command == "verify") return verify_command(rest);
+    if (command == "help" || command == "--help" || command == "-h") {
+      if (!rest.empty() && rest.front() == "run") return run_command({"--help"});
+      if (!rest.empty() && rest.front() == "verify") return verify_command({"--help"});
+      std::cout << kUsage;
+      return 0;
+    }
+    std::cerr << fmt::format("pound: unknown command '{}'\n\n{}", command, kUsage);
+    return 1;
+  } catch (const InputError& error) {
+    std::cerr << "error: " << error.what() << "\n";
+    return 2;
+  } catch (const SolveError& error) {
+    std::cerr << "error: " << error.what() << "\n";
+    return 3;
+  } catch (const io::OutputError& error) {
+    std::cerr << "error: " << error.what() << "\n";
+    return 4;
+  } catch (const boost::program_options::error& error) {
+    std::cerr << fmt::format("pound {}: {}\n(see `pound {} --help`)\n", command, error.what(), command);
+    return 1;
+  }
+}
+
+}  // namespace pound::app

@@ -1,0 +1,130 @@
+#include <fmt/format.h>
+
+#include <boost/program_options.hpp>
+#include <iostream>
+
+#include "app/commands.hpp"
+#include "core/errors.hpp"
+#include "io/output.hpp"
+#include "report/rod_impact_report.hpp"
+
+namespace pound::app {
+namespace po = boost::program_options;
+
+namespace {
+
+constexpr const char* kVerifyUsage = R"(usage: pound verify rod-impact [options]
+
+Two elastic rods collide; the finite element solution (lumped-mass rods, contact link, Newmark
+with Newton iteration) is compared with the exact solution of the wave equation computed by
+characteristics. Defaults: Kawashima (1980): E = 100, A = 1, rho = 0.1, L = 10, V0 = 0.1 each
+way, n = 10 elements per rod, link as stiff as the adjacent element, dt = T_I/100.
+
+Metrics (DESIGN.md 3.1): force_l2_error over [0, 1.5 T], duration_error, separation_velocity_error,
+peak_force_ratio, max_penetration, min_force, run_time_s (solve alone), steps, newton_iterations.
+
+options)";
+
+}  // namespace
+
+int verify_command(const Arguments& arguments) {
+  po::options_description options(kVerifyUsage);
+  int elements = 10;
+  double stiffness_ratio = 1.0, dt_ratio = 0.01, duration_ratio = 3.0, tolerance = 1e-10;
+  std::string law = "gap_spring", case_name = "kawashima", csv, profiles_csv, study, integrator;
+  double courant = 0.0;
+  options.add_options()("help,h", "show this help")(
+      "case", po::value(&case_name)->default_value(case_name),
+      "benchmark case: kawashima (free rods, +-V0), fixed-end (rod into a rod at rest with a fixed "
+      "far end), area-ratio-3 (fixed-end with the striking rod's area 3x)")(
+      "n", po::value(&elements)->default_value(elements), "elements per rod")(
+      "k-ratio", po::value(&stiffness_ratio)->default_value(stiffness_ratio),
+      "link stiffness / axial stiffness E A / h of the softer adjacent element")(
+      "dt-ratio", po::value(&dt_ratio)->default_value(dt_ratio), "time step / exact contact duration")(
+      "courant", po::value(&courant),
+      "time step as a Courant number dt C0 / h of the striking rod (overrides --dt-ratio)")(
+      "duration-ratio", po::value(&duration_ratio)->default_value(duration_ratio),
+      "run length after first contact / exact contact duration")(
+      "law", po::value(&law)->default_value(law), "contact law: gap_spring")(
+      "integrator", po::value(&integrator)->default_value("newmark_average_acceleration"),
+      "newmark_average_acceleration | newmark_linear_acceleration")(
+      "tolerance", po::value(&tolerance)->default_value(tolerance),
+      "relative unbalanced-force tolerance of the Newton iteration")(
+      "json", "print the metrics as one JSON object")(
+      "csv", po::value(&csv), "write time, force, exact_force, penetration to this CSV file")(
+      "profiles-csv", po::value(&profiles_csv),
+      "write velocity and stress along both rods at 0, T/4, T/2, 3T/4 after first contact, FE and "
+      "exact (Kawashima Fig. 6)")(
+      "study", po::value(&study), "kawashima: Kawashima's tables over k_I, n and dt");
+  po::options_description hidden;
+  std::string benchmark;
+  hidden.add_options()("benchmark", po::value(&benchmark));
+  po::options_description all;
+  all.add(options).add(hidden);
+  po::positional_options_description positional;
+  positional.add("benchmark", 1);
+  po::variables_map vm;
+  po::store(po::command_line_parser(arguments).options(all).positional(positional).run(), vm);
+  po::notify(vm);
+  if (vm.count("help")) {
+    std::cout << options << "\n";
+    return 0;
+  }
+  if (benchmark != "rod-impact") {
+    std::cerr << (benchmark.empty() ? "pound verify: name a benchmark: rod-impact\n"
+                                    : fmt::format("pound verify: unknown benchmark '{}' (known: rod-impact)\n", benchmark));
+    return 1;
+  }
+  auto usage_error = [](const std::string& what) {
+    std::cerr << "pound verify: " << what << "\n";
+    return 1;
+  };
+  if (law != "gap_spring") return usage_error(fmt::format("unknown law '{}' (known: gap_spring)", law));
+  if (elements < 1) return usage_error("--n must be >= 1");
+  if (!(stiffness_ratio > 0.0)) return usage_error("--k-ratio must be > 0");
+  if (!(dt_ratio > 0.0)) return usage_error("--dt-ratio must be > 0");
+  if (vm.count("courant") && !(courant > 0.0)) return usage_error("--courant must be > 0");
+  if (!(duration_ratio >= 1.5)) return usage_error("--duration-ratio must be >= 1.5 (the error window)");
+  if (!(tolerance > 0.0)) return usage_error("--tolerance must be > 0");
+
+  if (study == "kawashima") {
+    const auto studies = report::kawashima_study();
+    if (vm.count("json")) {
+      std::cout << report::to_document(studies).dump() << "\n";
+    } else {
+      for (const auto& s : studies) std::cout << report::format_study(s) << "\n";
+    }
+    return 0;
+  }
+  if (!study.empty()) return usage_error(fmt::format("unknown study '{}' (known: kawashima)", study));
+
+  report::RodImpactOptions run;
+  try {
+    run.pair = report::rod_impact_case(case_name, elements, stiffness_ratio);
+  } catch (const std::invalid_argument& error) {
+    return usage_error(error.what());
+  }
+  run.dt_ratio = dt_ratio;
+  if (vm.count("courant")) run.courant = courant;
+  run.duration_ratio = duration_ratio;
+  run.relative_tolerance = tolerance;
+  if (integrator == "newmark_linear_acceleration") {
+    run.beta = 1.0 / 6.0;
+  } else if (integrator != "newmark_average_acceleration") {
+    return usage_error(fmt::format("unknown integrator '{}'", integrator));
+  }
+  if (!profiles_csv.empty()) run.profile_times = {0.0, 0.25, 0.5, 0.75};
+  const report::RodImpactResult result = report::run_rod_impact(run);
+  if (!csv.empty()) io::write_csv_atomic(csv, report::force_history_table(result));
+  if (!profiles_csv.empty()) io::write_csv_atomic(profiles_csv, report::profile_table(result));
+  if (vm.count("json")) {
+    std::cout << report::to_document(result.metrics).dump() << "\n";
+  } else {
+    std::cout << fmt::format("rod impact, case {}, n = {}, k-ratio {:g}, dt = {:.4e}, {}\n", case_name,
+                             elements, stiffness_ratio, result.time_step, integrator)
+              << report::format_metrics(result.metrics);
+  }
+  return 0;
+}
+
+}  // namespace pound::app

@@ -1,0 +1,36 @@
+#pragma once
+// An ordered JSON object built by code that must not know JSON (report/, app/): keys keep the
+// order they were set in, numbers print in full precision, NaN/Inf print as null.
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace pound::io {
+
+class Document {
+ public:
+  Document();
+  ~Document();
+  Document(const Document& other);
+  Document& operator=(const Document& other);
+  Document(Document&&) noexcept;
+  Document& operator=(Document&&) noexcept;
+
+  Document& set(const std::string& key, double value);
+  Document& set(const std::string& key, long value);
+  Document& set(const std::string& key, int value) { return set(key, static_cast<long>(value)); }
+  Document& set(const std::string& key, bool value);
+  Document& set(const std::string& key, const std::string& value);
+  Document& set(const std::string& key, const char* value) { return set(key, std::string(value)); }
+  Document& set(const std::string& key, const Document& child);
+  Document& set(const std::string& key, const std::vector<Document>& items);
+  Document& set(const std::string& key, const std::vector<double>& values);
+
+  std::string dump(int indent = 2) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace pound::io

@@ -1,0 +1,29 @@
+#pragma once
+// Writing results. Every file is written to a temporary name beside its destination and renamed
+// when complete, so a crash or a full disk never leaves a half-written result under the real
+// name. Failures throw OutputError naming the path and the system's reason.
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace pound::io {
+
+class OutputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Numeric columns of equal length with a header; written as CSV with full precision.
+struct Table {
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> values;  // values[c][row]
+};
+
+void write_text_atomic(const std::string& path, const std::string& text);
+void write_csv_atomic(const std::string& path, const Table& table);
+std::string to_csv(const Table& table);
+
+// Creates a folder (and its parents) for outputs; fails if a file of that name exists.
+void create_output_folder(const std::string& path);
+
+}  // namespace pound::io

@@ -1,0 +1,219 @@
+#include "report/rod_impact.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "assembly/structural_system.hpp"
+#include "builder/build.hpp"
+#include "builder/generators.hpp"
+#include "integrators/newmark.hpp"
+#include "integrators/transient_analysis.hpp"
+
+namespace pound::report {
+namespace {
+
+ExactRod exact_rod(const builder::RodSpec& rod) {
+  return {rod.youngs_modulus, rod.density, rod.area, rod.length, rod.initial_velocity,
+          rod.far_end_fixed};
+}
+
+double travel_time(const builder::RodSpec& rod) {
+  return rod.length / std::sqrt(rod.youngs_modulus / rod.density);
+}
+
+// Time where a linearly interpolated history crosses zero between samples k and k + 1.
+double crossing(const std::vector<double>& time, const std::vector<double>& value, std::size_t k) {
+  const double span = value[k] - value[k + 1];
+  if (span == 0.0) return time[k];
+  return time[k] + (time[k + 1] - time[k]) * value[k] / span;
+}
+
+}  // namespace
+
+ExactRodImpact exact_solution(const builder::RodPairSpec& pair, double t_end) {
+  return ExactRodImpact(exact_rod(pair.left), exact_rod(pair.right), pair.gap, t_end);
+}
+
+std::pair<double, double> exact_contact_window(const builder::RodPairSpec& pair) {
+  // Long enough for the approach across the gap and many wave transits.
+  const double closing = pair.left.initial_velocity - pair.right.initial_velocity;
+  const double approach = closing > 0.0 ? pair.gap / closing : 0.0;
+  const double horizon = approach + 20.0 * std::max(travel_time(pair.left), travel_time(pair.right));
+  const ExactRodImpact exact = exact_solution(pair, horizon);
+  if (exact.contacts().empty()) return {approach, 0.0};
+  return {exact.contacts().front().start, exact.contacts().back().end - exact.contacts().front().start};
+}
+
+builder::RodPairSpec kawashima_rod_pair(int elements, double stiffness_ratio) {
+  builder::RodPairSpec pair;
+  pair.id = "rods";
+  pair.left = {.youngs_modulus = 100.0, .density = 0.1, .area = 1.0, .length = 10.0,
+               .elements = elements, .initial_velocity = 0.1, .far_end_fixed = false};
+  pair.right = pair.left;
+  pair.right.initial_velocity = -0.1;
+  pair.law.type = "gap_spring";
+  pair.law.stiffness_ratio = stiffness_ratio;
+  return pair;
+}
+
+RodImpactMetrics compare_with_exact(const ExactRodImpact& exact, double first_contact,
+                                    double exact_duration, const std::vector<double>& time,
+                                    const std::vector<double>& force,
+                                    const std::vector<double>& penetration,
+                                    double separation_velocity, std::vector<double>* exact_force) {
+  RodImpactMetrics m;
+  m.exact_duration = exact_duration;
+  const double window_end = first_contact + 1.5 * exact_duration;
+  double error_squares = 0.0, exact_squares = 0.0;
+  double start = -1.0, end = -1.0;
+  bool in_contact = false;
+  m.min_force = force.empty() ? 0.0 : force.front();
+  if (exact_force) exact_force->clear();
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    const double reference = exact.contact_force(time[k]);
+    if (exact_force) exact_force->push_back(reference);
+    if (time[k] > window_end + 1e-12 * window_end) continue;
+    error_squares += (force[k] - reference) * (force[k] - reference);
+    exact_squares += reference * reference;
+    m.exact_peak_force = std::max(m.exact_peak_force, reference);
+    m.peak_force_ratio = std::max(m.peak_force_ratio, force[k]);
+    m.max_penetration = std::max(m.max_penetration, penetration[k]);
+    m.min_force = std::min(m.min_force, force[k]);
+    const bool contact = force[k] > 0.0;
+    if (contact && !in_contact) {
+      ++m.contact_episodes;
+      if (start < 0.0) start = k == 0 ? time[0] : crossing(time, penetration, k - 1);
+    }
+    if (!contact && in_contact) end = crossing(time, penetration, k - 1);
+    in_contact = contact;
+  }
+  if (in_contact) end = std::min(window_end, time.back());
+  m.force_l2_error = exact_squares > 0.0 ? std::sqrt(error_squares / exact_squares) : 0.0;
+  m.peak_force_ratio = m.exact_peak_force > 0.0 ? m.peak_force_ratio / m.exact_peak_force : 0.0;
+  m.duration = start >= 0.0 ? end - start : 0.0;
+  m.duration_error = exact_duration > 0.0 ? (m.duration - exact_duration) / exact_duration : 0.0;
+  for (const ContactInterval& interval : exact.contacts())
+    if (interval.start <= window_end) ++m.exact_contact_episodes;
+  const double t_final = time.empty() ? 0.0 : time.back();
+  m.separation_velocity = separation_velocity;
+  m.exact_separation_velocity =
+      exact.centre_of_mass_velocity(1, t_final) - exact.centre_of_mass_velocity(0, t_final);
+  const double scale = std::abs(m.exact_separation_velocity);
+  m.separation_velocity_error =
+      (separation_velocity - m.exact_separation_velocity) / (scale > 0.0 ? scale : 1.0);
+  return m;
+}
+
+RodImpactResult run_rod_impact(const RodImpactOptions& options) {
+  const builder::RodPairSpec& pair = options.pair;
+  const auto [first_contact, exact_duration] = exact_contact_window(pair);
+  RodImpactResult result;
+  const double h_left = pair.left.length / pair.left.elements;
+  result.time_step = options.courant
+                         ? *options.courant * h_left /
+                               std::sqrt(pair.left.youngs_modulus / pair.left.density)
+                         : options.dt_ratio * exact_duration;
+
+  builder::ModelSpec spec;
+  spec.source = "rod-impact";
+  spec.rod_pairs = {pair};
+  spec.rod_pair_generator_index = {0};
+  spec.analysis.time_step = result.time_step;
+  spec.analysis.duration = first_contact + options.duration_ratio * exact_duration;
+  spec.analysis.relative_tolerance = options.relative_tolerance;
+  spec.analysis.integrator.beta = options.beta;
+  spec.analysis.integrator.gamma = options.gamma;
+  const builder::BuiltModel built = builder::build(spec);
+  assembly::StructuralSystem system(built.model);
+  auto integrator = builder::make_integrator(built.analysis);
+  TransientAnalysis analysis(system, *integrator, builder::make_transient_settings(built.analysis));
+
+  // Equation (or -1) and lumped mass of every node of each rod, in the exact solution's x order.
+  struct RodNodes {
+    std::vector<Index> equation;
+    std::vector<double> x;
+    double element_length;
+    double mass;
+  } rods[2];
+  for (int r = 0; r < 2; ++r) {
+    const builder::RodSpec& rod = r == 0 ? pair.left : pair.right;
+    rods[r].element_length = rod.length / rod.elements;
+    rods[r].mass = rod.density * rod.area * rod.length;
+    for (int i = 0; i <= rod.elements; ++i) {
+      const Index node = built.node_index.at(builder::rod_node_id(pair, r, i));
+      rods[r].equation.push_back(system.dofs().equation(node, 0));
+      rods[r].x.push_back(r == 0 ? -rod.length + i * rods[r].element_length
+                                 : pair.gap + i * rods[r].element_length);
+    }
+  }
+  auto value_at = [](const Vector& v, Index eq) { return eq < 0 ? 0.0 : v[eq]; };
+  auto centre_velocity = [&](const State& s, int r) {
+    const builder::RodSpec& rod = r == 0 ? pair.left : pair.right;
+    double momentum = 0.0;
+    const double node_mass = rod.density * rod.area * rods[r].element_length;
+    for (std::size_t i = 0; i < rods[r].equation.size(); ++i) {
+      const bool end = i == 0 || i + 1 == rods[r].equation.size();
+      momentum += (end ? 0.5 : 1.0) * node_mass * value_at(s.velocity, rods[r].equation[i]);
+    }
+    return momentum / rods[r].mass;
+  };
+
+  std::vector<double> profile_targets;
+  for (double label : options.profile_times) profile_targets.push_back(first_contact + label * exact_duration);
+  std::vector<State> snapshots(profile_targets.size());
+  const std::size_t expected = static_cast<std::size_t>(spec.analysis.duration / result.time_step) + 2;
+  result.time.reserve(expected);
+  result.force.reserve(expected);
+  result.penetration.reserve(expected);
+
+  State state;
+  state.velocity = system.initial_velocity(built.model);
+  const auto started = std::chrono::steady_clock::now();
+  const TransientStatistics stats = analysis.run(state, [&](const State& s, const StepResult&) {
+    result.time.push_back(s.time);
+    result.force.push_back(s.link_force[0]);
+    result.penetration.push_back(s.link_penetration[0]);
+    for (std::size_t p = 0; p < profile_targets.size(); ++p)
+      if (snapshots[p].displacement.size() == 0 && s.time >= profile_targets[p] - 0.5 * result.time_step)
+        snapshots[p] = s;
+  });
+  const double run_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+
+  const ExactRodImpact exact = exact_solution(pair, spec.analysis.duration * (1.0 + 1e-9));
+  result.metrics = compare_with_exact(exact, first_contact, exact_duration, result.time, result.force,
+                                      result.penetration,
+                                      centre_velocity(state, 1) - centre_velocity(state, 0),
+                                      &result.exact_force);
+  result.metrics.run_time_s = run_time;
+  result.metrics.steps = stats.steps;
+  result.metrics.newton_iterations = stats.newton_iterations;
+
+  for (std::size_t p = 0; p < snapshots.size(); ++p) {
+    const State& s = snapshots[p];
+    if (s.displacement.size() == 0) continue;
+    RodProfile profile{s.time, options.profile_times[p], {}};
+    for (int r = 0; r < 2; ++r) {
+      const builder::RodSpec& rod = r == 0 ? pair.left : pair.right;
+      for (std::size_t i = 0; i < rods[r].equation.size(); ++i) {
+        RodProfile::Point point{r, rods[r].x[i], value_at(s.velocity, rods[r].equation[i]), 0.0,
+                                0.0, 0.0};
+        point.exact_velocity = exact.state(r, point.x, s.time).velocity;
+        if (i > 0) {
+          // Stress of the element ending at this node, compared at its midpoint.
+          const double strain = (value_at(s.displacement, rods[r].equation[i]) -
+                                 value_at(s.displacement, rods[r].equation[i - 1])) /
+                                rods[r].element_length;
+          point.stress = rod.youngs_modulus * strain;
+          point.exact_stress =
+              exact.state(r, point.x - 0.5 * rods[r].element_length, s.time).stress;
+        }
+        profile.points.push_back(point);
+      }
+    }
+    result.profiles.push_back(std::move(profile));
+  }
+  return result;
+}
+
+}  // namespace pound::report
