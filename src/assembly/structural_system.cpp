@@ -5,18 +5,20 @@
 #include <Eigen/SparseCholesky>
 
 #include "assembly/banded_ldlt.hpp"
+#include "assembly/twisted_tridiagonal.hpp"
 #include "core/errors.hpp"
 
 namespace pound::assembly {
 namespace {
 
-class BandedSolver final : public LinearSolver {
+template <typename Factor>
+class FactorSolver final : public LinearSolver {
  public:
-  explicit BandedSolver(const Eigen::SparseMatrix<double>& matrix) : factor_(matrix) {}
+  explicit FactorSolver(const Eigen::SparseMatrix<double>& matrix) : factor_(matrix) {}
   void solve(const Vector& rhs, Vector& solution) const override { factor_.solve(rhs, solution); }
 
  private:
-  BandedLdlt factor_;
+  Factor factor_;
 };
 
 // Wide bands (unlucky numbering) go to a general sparse LDL^T with fill-reducing ordering.
@@ -121,7 +123,9 @@ std::unique_ptr<LinearSolver> StructuralSystem::factor(double c_m, double, doubl
   for (Index i = 0; i < size(); ++i) mass.insert(i, i) = c_m * mass_[i];
   effective += mass;
   // A band factor costs n b^2 and solves in n b; past a modest band the sparse factor wins.
-  if (BandedLdlt::bandwidth_of(effective) <= 32) return std::make_unique<BandedSolver>(effective);
+  const Index bandwidth = BandedLdlt::bandwidth_of(effective);
+  if (bandwidth <= 1) return std::make_unique<FactorSolver<TwistedTridiagonal>>(effective);
+  if (bandwidth <= 32) return std::make_unique<FactorSolver<BandedLdlt>>(effective);
   return std::make_unique<SparseSolver>(effective);
 }
 

@@ -25,7 +25,7 @@ class StructuralSystem final : public SecondOrderSystem {
   LinkSet& links() override { return links_; }
 
   const model::DofMap& dofs() const { return dofs_; }
-  const Vector& lumped_mass() const { return mass_; }
+  const Vector* lumped_mass() const override { return &mass_; }
   const Eigen::SparseMatrix<double>& stiffness() const { return stiffness_; }
   // u, v at t = 0 from the model's initial velocities (displacements zero).
   Vector initial_velocity(const model::Model& model) const;

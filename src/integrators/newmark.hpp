@@ -55,7 +55,7 @@ class Newmark final : public Integrator {
     std::map<double, Factorization> by_step;
   } factorizations_;
   // Work vectors, kept to avoid allocation inside the time loop.
-  Vector predicted_displacement_, predicted_velocity_, rhs_, work_, external_;
+  Vector predicted_displacement_, predicted_velocity_, rhs_, work_, external_, damping_force_;
   Vector delta_linear_, delta_predicted_, rate_predicted_;
   Vector delta_, rate_, acceleration_, assumed_force_, law_force_, tangent_, residual_;
 };

@@ -23,6 +23,9 @@ class SecondOrderSystem {
 
   virtual Index size() const = 0;
   virtual void multiply_mass(const Vector& x, Vector& y) const = 0;       // y = M x
+  // The diagonal of M when M is diagonal (lumped), so integrators can fuse their vector
+  // updates into one pass; nullptr otherwise.
+  virtual const Vector* lumped_mass() const { return nullptr; }
   virtual bool has_damping() const = 0;
   virtual void multiply_damping(const Vector& x, Vector& y) const = 0;    // y = C x
   virtual void multiply_stiffness(const Vector& x, Vector& y) const = 0;  // y = K x

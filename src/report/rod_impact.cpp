@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <tuple>
 
 #include "assembly/structural_system.hpp"
 #include "builder/build.hpp"
@@ -105,96 +106,91 @@ RodImpactMetrics compare_with_exact(const ExactRodImpact& exact, double first_co
   return m;
 }
 
-RodImpactResult run_rod_impact(const RodImpactOptions& options) {
-  const builder::RodPairSpec& pair = options.pair;
-  const auto [first_contact, exact_duration] = exact_contact_window(pair);
-  RodImpactResult result;
-  const double h_left = pair.left.length / pair.left.elements;
-  result.time_step = options.courant
-                         ? *options.courant * h_left /
-                               std::sqrt(pair.left.youngs_modulus / pair.left.density)
-                         : options.dt_ratio * exact_duration;
-
-  builder::ModelSpec spec;
-  spec.source = "rod-impact";
-  spec.rod_pairs = {pair};
-  spec.rod_pair_generator_index = {0};
-  spec.analysis.time_step = result.time_step;
-  spec.analysis.duration = first_contact + options.duration_ratio * exact_duration;
-  spec.analysis.relative_tolerance = options.relative_tolerance;
-  spec.analysis.integrator.beta = options.beta;
-  spec.analysis.integrator.gamma = options.gamma;
-  const builder::BuiltModel built = builder::build(spec);
-  assembly::StructuralSystem system(built.model);
-  auto integrator = builder::make_integrator(built.analysis);
-  TransientAnalysis analysis(system, *integrator, builder::make_transient_settings(built.analysis));
-
-  // Equation (or -1) and lumped mass of every node of each rod, in the exact solution's x order.
+struct RodPairSimulation::Impl {
+  // Equation (or -1) and x of every node of a rod, in the exact solution's x order.
   struct RodNodes {
     std::vector<Index> equation;
     std::vector<double> x;
-    double element_length;
-    double mass;
-  } rods[2];
-  for (int r = 0; r < 2; ++r) {
-    const builder::RodSpec& rod = r == 0 ? pair.left : pair.right;
-    rods[r].element_length = rod.length / rod.elements;
-    rods[r].mass = rod.density * rod.area * rod.length;
-    for (int i = 0; i <= rod.elements; ++i) {
-      const Index node = built.node_index.at(builder::rod_node_id(pair, r, i));
-      rods[r].equation.push_back(system.dofs().equation(node, 0));
-      rods[r].x.push_back(r == 0 ? -rod.length + i * rods[r].element_length
-                                 : pair.gap + i * rods[r].element_length);
-    }
-  }
-  auto value_at = [](const Vector& v, Index eq) { return eq < 0 ? 0.0 : v[eq]; };
-  auto centre_velocity = [&](const State& s, int r) {
-    const builder::RodSpec& rod = r == 0 ? pair.left : pair.right;
-    double momentum = 0.0;
-    const double node_mass = rod.density * rod.area * rods[r].element_length;
-    for (std::size_t i = 0; i < rods[r].equation.size(); ++i) {
-      const bool end = i == 0 || i + 1 == rods[r].equation.size();
-      momentum += (end ? 0.5 : 1.0) * node_mass * value_at(s.velocity, rods[r].equation[i]);
-    }
-    return momentum / rods[r].mass;
+    double element_length = 0.0;
+    double node_mass = 0.0;  // interior node; ends carry half
+    double mass = 0.0;
   };
 
-  std::vector<double> profile_targets;
-  for (double label : options.profile_times) profile_targets.push_back(first_contact + label * exact_duration);
-  std::vector<State> snapshots(profile_targets.size());
-  const std::size_t expected = static_cast<std::size_t>(spec.analysis.duration / result.time_step) + 2;
-  result.time.reserve(expected);
-  result.force.reserve(expected);
-  result.penetration.reserve(expected);
-
-  State state;
-  state.velocity = system.initial_velocity(built.model);
-  const auto started = std::chrono::steady_clock::now();
-  const TransientStatistics stats = analysis.run(state, [&](const State& s, const StepResult&) {
-    result.time.push_back(s.time);
-    result.force.push_back(s.link_force[0]);
-    result.penetration.push_back(s.link_penetration[0]);
-    for (std::size_t p = 0; p < profile_targets.size(); ++p)
-      if (snapshots[p].displacement.size() == 0 && s.time >= profile_targets[p] - 0.5 * result.time_step)
-        snapshots[p] = s;
-  });
-  const double run_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-
-  const ExactRodImpact exact = exact_solution(pair, spec.analysis.duration * (1.0 + 1e-9));
-  result.metrics = compare_with_exact(exact, first_contact, exact_duration, result.time, result.force,
-                                      result.penetration,
-                                      centre_velocity(state, 1) - centre_velocity(state, 0),
-                                      &result.exact_force);
-  result.metrics.run_time_s = run_time;
-  result.metrics.steps = stats.steps;
-  result.metrics.newton_iterations = stats.newton_iterations;
-
-  for (std::size_t p = 0; p < snapshots.size(); ++p) {
-    const State& s = snapshots[p];
-    if (s.displacement.size() == 0) continue;
-    RodProfile profile{s.time, options.profile_times[p], {}};
+  explicit Impl(const RodImpactOptions& opts) : options(opts) {
+    const builder::RodPairSpec& pair = options.pair;
+    std::tie(first_contact, exact_duration) = exact_contact_window(pair);
+    const double h_left = pair.left.length / pair.left.elements;
+    time_step = options.courant ? *options.courant * h_left /
+                                      std::sqrt(pair.left.youngs_modulus / pair.left.density)
+                                : options.dt_ratio * exact_duration;
+    builder::ModelSpec spec;
+    spec.source = "rod-impact";
+    spec.rod_pairs = {pair};
+    spec.rod_pair_generator_index = {0};
+    spec.analysis.time_step = time_step;
+    spec.analysis.duration = first_contact + options.duration_ratio * exact_duration;
+    spec.analysis.relative_tolerance = options.relative_tolerance;
+    spec.analysis.integrator.beta = options.beta;
+    spec.analysis.integrator.gamma = options.gamma;
+    built = builder::build(spec);
+    system = std::make_unique<assembly::StructuralSystem>(built.model);
     for (int r = 0; r < 2; ++r) {
       const builder::RodSpec& rod = r == 0 ? pair.left : pair.right;
+      rods[r].element_length = rod.length / rod.elements;
+      rods[r].node_mass = rod.density * rod.area * rods[r].element_length;
+      rods[r].mass = rod.density * rod.area * rod.length;
+      for (int i = 0; i <= rod.elements; ++i) {
+        const Index node = built.node_index.at(builder::rod_node_id(pair, r, i));
+        rods[r].equation.push_back(system->dofs().equation(node, 0));
+        rods[r].x.push_back(r == 0 ? -rod.length + i * rods[r].element_length
+                                   : pair.gap + i * rods[r].element_length);
+      }
+    }
+  }
+
+  static double value_at(const Vector& v, Index equation) { return equation < 0 ? 0.0 : v[equation]; }
+
+  double centre_velocity(const State& s, int r) const {
+    double momentum = 0.0;
+    const std::size_t count = rods[r].equation.size();
+    for (std::size_t i = 0; i < count; ++i) {
+      const bool end = i == 0 || i + 1 == count;
+      momentum += (end ? 0.5 : 1.0) * rods[r].node_mass * value_at(s.velocity, rods[r].equation[i]);
+    }
+    return momentum / rods[r].mass;
+  }
+
+  TransientStatistics solve(RodImpactResult& result, std::vector<State>* snapshots,
+                            State& final_state) {
+    auto integrator = builder::make_integrator(built.analysis);
+    TransientAnalysis analysis(*system, *integrator, builder::make_transient_settings(built.analysis));
+    std::vector<double> targets;
+    for (double label : options.profile_times) targets.push_back(first_contact + label * exact_duration);
+    if (snapshots) snapshots->assign(targets.size(), State{});
+    const std::size_t expected = static_cast<std::size_t>(built.analysis.duration / time_step) + 2;
+    result.time.clear();
+    result.force.clear();
+    result.penetration.clear();
+    result.time.reserve(expected);
+    result.force.reserve(expected);
+    result.penetration.reserve(expected);
+    final_state = State{};
+    final_state.velocity = system->initial_velocity(built.model);
+    return analysis.run(final_state, [&](const State& s, const StepResult&) {
+      result.time.push_back(s.time);
+      result.force.push_back(s.link_force[0]);
+      result.penetration.push_back(s.link_penetration[0]);
+      if (!snapshots) return;
+      for (std::size_t p = 0; p < targets.size(); ++p)
+        if ((*snapshots)[p].displacement.size() == 0 && s.time >= targets[p] - 0.5 * time_step)
+          (*snapshots)[p] = s;
+    });
+  }
+
+  RodProfile profile(const ExactRodImpact& exact, const State& s, double label) const {
+    RodProfile profile{s.time, label, {}};
+    for (int r = 0; r < 2; ++r) {
+      const builder::RodSpec& rod = r == 0 ? options.pair.left : options.pair.right;
       for (std::size_t i = 0; i < rods[r].equation.size(); ++i) {
         RodProfile::Point point{r, rods[r].x[i], value_at(s.velocity, rods[r].equation[i]), 0.0,
                                 0.0, 0.0};
@@ -205,14 +201,58 @@ RodImpactResult run_rod_impact(const RodImpactOptions& options) {
                                  value_at(s.displacement, rods[r].equation[i - 1])) /
                                 rods[r].element_length;
           point.stress = rod.youngs_modulus * strain;
-          point.exact_stress =
-              exact.state(r, point.x - 0.5 * rods[r].element_length, s.time).stress;
+          point.exact_stress = exact.state(r, point.x - 0.5 * rods[r].element_length, s.time).stress;
         }
         profile.points.push_back(point);
       }
     }
-    result.profiles.push_back(std::move(profile));
+    return profile;
   }
+
+  RodImpactOptions options;
+  double first_contact = 0.0;
+  double exact_duration = 0.0;
+  double time_step = 0.0;
+  builder::BuiltModel built;
+  std::unique_ptr<assembly::StructuralSystem> system;
+  RodNodes rods[2];
+};
+
+RodPairSimulation::RodPairSimulation(const RodImpactOptions& options)
+    : impl_(std::make_unique<Impl>(options)) {}
+RodPairSimulation::~RodPairSimulation() = default;
+double RodPairSimulation::time_step() const { return impl_->time_step; }
+double RodPairSimulation::first_contact() const { return impl_->first_contact; }
+double RodPairSimulation::exact_duration() const { return impl_->exact_duration; }
+std::size_t RodPairSimulation::dofs() const { return static_cast<std::size_t>(impl_->system->size()); }
+TransientStatistics RodPairSimulation::solve(RodImpactResult& result) {
+  State final_state;
+  return impl_->solve(result, nullptr, final_state);
+}
+
+RodImpactResult run_rod_impact(const RodImpactOptions& options) {
+  RodPairSimulation::Impl simulation(options);
+  RodImpactResult result;
+  result.time_step = simulation.time_step;
+  std::vector<State> snapshots;
+  State final_state;
+  const auto started = std::chrono::steady_clock::now();
+  const TransientStatistics stats = simulation.solve(result, &snapshots, final_state);
+  const double run_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+
+  const ExactRodImpact exact =
+      exact_solution(options.pair, simulation.built.analysis.duration * (1.0 + 1e-9));
+  result.metrics = compare_with_exact(
+      exact, simulation.first_contact, simulation.exact_duration, result.time, result.force,
+      result.penetration,
+      simulation.centre_velocity(final_state, 1) - simulation.centre_velocity(final_state, 0),
+      &result.exact_force);
+  result.metrics.run_time_s = run_time;
+  result.metrics.steps = stats.steps;
+  result.metrics.newton_iterations = stats.newton_iterations;
+  for (std::size_t p = 0; p < snapshots.size(); ++p)
+    if (snapshots[p].displacement.size() > 0)
+      result.profiles.push_back(simulation.profile(exact, snapshots[p], options.profile_times[p]));
   return result;
 }
 

@@ -1,11 +1,13 @@
 #pragma once
 // The rod-impact benchmark (DESIGN.md section 3.1): a rod pair solved by the finite element
 // model and compared with the exact solution, with the metrics every verification reports.
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "builder/spec.hpp"
+#include "integrators/transient_analysis.hpp"
 #include "report/exact_rod_impact.hpp"
 
 namespace pound::report {
@@ -70,6 +72,25 @@ ExactRodImpact exact_solution(const builder::RodPairSpec& pair, double t_end);
 std::pair<double, double> exact_contact_window(const builder::RodPairSpec& pair);
 
 RodImpactResult run_rod_impact(const RodImpactOptions& options);
+
+// The finite element side alone, built once and solved any number of times (for benchmarks):
+// solve() integrates from the initial state and records the link force history.
+class RodPairSimulation {
+ public:
+  explicit RodPairSimulation(const RodImpactOptions& options);
+  ~RodPairSimulation();
+  double time_step() const;
+  double first_contact() const;
+  double exact_duration() const;
+  // Runs the analysis; returns its statistics. Histories are in the result's vectors.
+  TransientStatistics solve(RodImpactResult& result);
+  std::size_t dofs() const;
+
+ private:
+  friend RodImpactResult run_rod_impact(const RodImpactOptions& options);
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 // Metrics of a force / penetration history against the exact solution; the velocities are the
 // FE relative centre-of-mass velocity at the last time.

@@ -1,0 +1,362 @@
+#include "io/model_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+#include "io/json_reader.hpp"
+
+namespace pound::io {
+namespace {
+
+using builder::AnalysisSpec;
+using builder::ElementSpec;
+using builder::InitialVelocitySpec;
+using builder::IntegratorSpec;
+using builder::LawSpec;
+using builder::LinkSpec;
+using builder::MassSpec;
+using builder::MaterialSpec;
+using builder::ModelSpec;
+using builder::NodeSpec;
+using builder::RecorderSpec;
+using builder::RodPairSpec;
+using builder::RodSpec;
+using builder::SupportSpec;
+
+constexpr double kAxisLengthTolerance = 1e-9;
+
+// Where a contact law is given: a stiffness_ratio refers to the elements next to the contact,
+// which only a rod_pair generator knows.
+enum class LawPlace { link, rod_pair };
+
+// Reads an object with `read`, then rejects every field that `read` did not ask for.
+template <class Read>
+auto read_object(const JsonValue& value, Read read) {
+  JsonObject object(value);
+  if constexpr (std::is_void_v<std::invoke_result_t<Read, JsonObject&>>) {
+    read(object);
+    object.finish();
+  } else {
+    auto spec = read(object);
+    object.finish();
+    return spec;
+  }
+}
+
+// The objects of an optional array field, each read with `read`.
+template <class Read>
+auto read_each(JsonObject& parent, std::string_view key, Read read) {
+  std::vector<std::invoke_result_t<Read, JsonObject&>> specs;
+  for (const JsonValue& item : parent.array(key)) specs.push_back(read_object(item, read));
+  return specs;
+}
+
+std::string read_unique_id(JsonObject& object, UniqueNames& ids) {
+  const JsonValue value = object.at("id");
+  std::string id = value.as<std::string>(non_empty);
+  ids.add(id, value);
+  return id;
+}
+
+// A list of distinct non-empty names (node ids, link ids) of min_count..max_count entries.
+std::vector<std::string> read_names(
+    const JsonValue& value, const std::string& what, std::size_t min_count,
+    std::size_t max_count = std::numeric_limits<std::size_t>::max()) {
+  UniqueNames seen(what);
+  std::vector<std::string> names;
+  for (const JsonValue& element : value.elements(min_count, max_count)) {
+    names.push_back(element.as<std::string>(non_empty));
+    seen.add(names.back(), element);
+  }
+  return names;
+}
+
+// The y direction exists only in a plane (2-D) scene.
+void require_plane(const JsonValue& value, int dimension) {
+  if (dimension != 2) value.fail("only allowed when dimension is 2");
+}
+
+double read_plane_component(JsonObject& object, std::string_view key, int dimension) {
+  const std::optional<JsonValue> value = object.find(key);
+  if (!value) return 0.0;
+  require_plane(*value, dimension);
+  return value->as<double>();
+}
+
+int read_dimension(JsonObject& top) {
+  const std::optional<JsonValue> value = top.find("dimension");
+  if (!value) return ModelSpec{}.dimension;
+  const int dimension = value->as<int>();
+  if (dimension != 1 && dimension != 2)
+    value->fail(fmt::format("must be 1 or 2, got {}", dimension));
+  return dimension;
+}
+
+NodeSpec read_node(JsonObject& object, int dimension, UniqueNames& ids) {
+  NodeSpec node;
+  node.id = read_unique_id(object, ids);
+  node.x = object.required<double>("x");
+  node.y = read_plane_component(object, "y", dimension);
+  return node;
+}
+
+MaterialSpec read_material(JsonObject& object, UniqueNames& ids) {
+  MaterialSpec material;
+  material.id = read_unique_id(object, ids);
+  material.youngs_modulus = object.required<double>("youngs_modulus", positive);
+  material.density = object.required<double>("density", non_negative);
+  return material;
+}
+
+ElementSpec read_element(JsonObject& object, UniqueNames& ids) {
+  ElementSpec element;
+  element.id = read_unique_id(object, ids);
+  element.type = object.one_of("type", {"truss"});
+  const std::vector<std::string> nodes = read_names(object.at("nodes"), "node", 2, 2);
+  element.node_i = nodes[0];
+  element.node_j = nodes[1];
+  element.material = object.required<std::string>("material", non_empty);
+  element.area = object.required<double>("area", positive);
+  return element;
+}
+
+MassSpec read_mass(JsonObject& object) {
+  MassSpec mass;
+  mass.node = object.required<std::string>("node", non_empty);
+  mass.mass = object.required<double>("mass", positive);
+  return mass;
+}
+
+SupportSpec read_support(JsonObject& object, int dimension) {
+  SupportSpec support;
+  support.node = object.required<std::string>("node", non_empty);
+  UniqueNames directions("direction");
+  for (const JsonValue& value : object.at("fix").elements(1)) {
+    const std::string direction = value.as_one_of({"x", "y"});
+    directions.add(direction, value);
+    if (direction == "y") require_plane(value, dimension);
+    (direction == "x" ? support.fix_x : support.fix_y) = true;
+  }
+  return support;
+}
+
+InitialVelocitySpec read_initial_velocity(JsonObject& object, int dimension) {
+  InitialVelocitySpec velocity;
+  velocity.node = object.required<std::string>("node", non_empty);
+  velocity.x = object.optional<double>("x", velocity.x);
+  velocity.y = read_plane_component(object, "y", dimension);
+  return velocity;
+}
+
+std::vector<double> read_axis(const JsonValue& value, int dimension) {
+  std::vector<double> axis;
+  double length_squared = 0.0;
+  for (const JsonValue& component :
+       value.elements(static_cast<std::size_t>(dimension), static_cast<std::size_t>(dimension))) {
+    axis.push_back(component.as<double>());
+    length_squared += axis.back() * axis.back();
+  }
+  const double length = std::sqrt(length_squared);
+  if (std::abs(length - 1.0) > kAxisLengthTolerance)
+    value.fail(fmt::format("must be a unit vector (length 1 within {}), got length {}",
+                           kAxisLengthTolerance, length));
+  return axis;
+}
+
+LawSpec read_law(JsonObject& object, LawPlace place) {
+  LawSpec law;
+  law.type = object.one_of("type", {"gap_spring"});
+  if (place == LawPlace::link && object.has("stiffness_ratio"))
+    object.at("stiffness_ratio").fail("only allowed inside a rod_pair generator");
+  law.stiffness = object.if_present<double>("stiffness", positive);
+  law.stiffness_ratio = object.if_present<double>("stiffness_ratio", positive);
+  object.finish();  // so that a misspelt parameter is reported as such, not as a missing one
+  if (law.stiffness && law.stiffness_ratio)
+    object.fail("give either 'stiffness' or 'stiffness_ratio', not both");
+  if (!law.stiffness && !law.stiffness_ratio)
+    object.fail(place == LawPlace::link ? "needs 'stiffness'"
+                                        : "needs 'stiffness' or 'stiffness_ratio'");
+  return law;
+}
+
+LawSpec read_law_in(const JsonValue& value, LawPlace place) {
+  return read_object(value, [place](JsonObject& law) { return read_law(law, place); });
+}
+
+LinkSpec read_link(JsonObject& object, int dimension, UniqueNames& ids) {
+  LinkSpec link;
+  link.id = read_unique_id(object, ids);
+  const std::vector<std::string> nodes = read_names(object.at("nodes"), "node", 2, 2);
+  link.node_i = nodes[0];
+  link.node_j = nodes[1];
+  link.gap = object.optional<double>("gap", link.gap, non_negative);
+  if (const std::optional<JsonValue> axis = object.find("axis"))
+    link.axis = read_axis(*axis, dimension);
+  link.law = read_law_in(object.at("law"), LawPlace::link);
+  return link;
+}
+
+RodSpec read_rod(JsonObject& object) {
+  RodSpec rod;
+  rod.youngs_modulus = object.required<double>("youngs_modulus", positive);
+  rod.density = object.required<double>("density", positive);
+  rod.area = object.required<double>("area", positive);
+  rod.length = object.required<double>("length", positive);
+  rod.elements = object.required<int>("elements", at_least(1));
+  rod.initial_velocity = object.optional<double>("initial_velocity", rod.initial_velocity);
+  rod.far_end_fixed = object.one_of("far_end", {"free", "fixed"}, "free") == "fixed";
+  return rod;
+}
+
+RodPairSpec read_rod_pair(JsonObject& object, UniqueNames& ids) {
+  RodPairSpec pair;
+  pair.id = read_unique_id(object, ids);
+  pair.left = read_object(object.at("left"), read_rod);
+  pair.right = read_object(object.at("right"), read_rod);
+  pair.gap = object.optional<double>("gap", pair.gap, non_negative);
+  pair.law = read_law_in(object.at("law"), LawPlace::rod_pair);
+  return pair;
+}
+
+void read_generators(JsonObject& top, ModelSpec& spec) {
+  UniqueNames ids("id");
+  const std::vector<JsonValue> generators = top.array("generators");
+  for (std::size_t k = 0; k < generators.size(); ++k) {
+    spec.rod_pairs.push_back(read_object(generators[k], [&ids](JsonObject& generator) {
+      generator.one_of("type", {"rod_pair"});  // the only kind so far
+      return read_rod_pair(generator, ids);
+    }));
+    spec.rod_pair_generator_index.push_back(static_cast<int>(k));
+  }
+}
+
+// A Newmark object or the name of a preset.
+IntegratorSpec read_integrator(const JsonValue& value) {
+  IntegratorSpec integrator;  // average acceleration
+  if (value.json().is_string()) {
+    const std::string preset =
+        value.as_one_of({"newmark_average_acceleration", "newmark_linear_acceleration"});
+    if (preset == "newmark_linear_acceleration") integrator.beta = 1.0 / 6.0;
+    return integrator;
+  }
+  if (!value.json().is_object())
+    value.fail("expected an object or a preset name string, got " + value.kind());
+  return read_object(value, [&integrator](JsonObject& object) {
+    integrator.type = object.one_of("type", {"newmark"});
+    integrator.beta = object.optional<double>("beta", integrator.beta, positive);
+    integrator.gamma = object.optional<double>("gamma", integrator.gamma, at_least(0.5));
+    return integrator;
+  });
+}
+
+AnalysisSpec read_analysis(JsonObject& object) {
+  AnalysisSpec analysis;
+  if (const std::optional<JsonValue> integrator = object.find("integrator"))
+    analysis.integrator = read_integrator(*integrator);
+  analysis.time_step = object.required<double>("time_step", positive);
+  analysis.duration = object.required<double>("duration", positive);
+  if (const std::optional<JsonValue> convergence = object.find("convergence")) {
+    read_object(*convergence, [&analysis](JsonObject& settings) {
+      analysis.relative_tolerance =
+          settings.optional<double>("relative_tolerance", analysis.relative_tolerance, positive);
+      analysis.absolute_tolerance = settings.optional<double>(
+          "absolute_tolerance", analysis.absolute_tolerance, non_negative);
+      analysis.max_iterations =
+          settings.optional<int>("max_iterations", analysis.max_iterations, at_least(1));
+    });
+  }
+  analysis.max_step_cuts =
+      object.optional<int>("max_step_cuts", analysis.max_step_cuts, non_negative);
+  analysis.max_steps = object.optional<long>("max_steps", analysis.max_steps, non_negative);
+  return analysis;
+}
+
+// Recorder files are written inside the output folder: a name must not lead out of it.
+void check_file_name(const std::string& name, const JsonValue& where) {
+  const bool plain = name.size() > 4 && name.ends_with(".csv") &&
+                     name.find_first_of("/\\") == std::string::npos &&
+                     name.find("..") == std::string::npos;
+  if (!plain)
+    where.fail(
+        fmt::format("must be a plain file name ending in .csv (no folders), got '{}'", name));
+}
+
+RecorderSpec read_recorder(JsonObject& object, std::size_t index, UniqueNames& files) {
+  RecorderSpec recorder;
+  recorder.type = object.one_of("type", {"link", "node"});
+  if (recorder.type == "link") {
+    if (const std::optional<JsonValue> links = object.find("links"))
+      recorder.ids = read_names(*links, "link", 1);  // absent: every link
+  } else {
+    recorder.ids = read_names(object.at("nodes"), "node", 1);
+  }
+  const std::optional<JsonValue> file = object.find("file");
+  const JsonValue& where = file ? *file : object.value();
+  recorder.file = file ? file->as<std::string>() : fmt::format("{}_{}.csv", recorder.type, index);
+  check_file_name(recorder.file, where);
+  files.add(recorder.file, where);
+  return recorder;
+}
+
+std::vector<RecorderSpec> read_recorders(JsonObject& top) {
+  UniqueNames files("file name");
+  std::vector<RecorderSpec> recorders;
+  const std::vector<JsonValue> values = top.array("recorders");
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    recorders.push_back(read_object(
+        values[k], [k, &files](JsonObject& object) { return read_recorder(object, k, files); }));
+  }
+  return recorders;
+}
+
+ModelSpec read_model(JsonObject& top) {
+  ModelSpec spec;
+  spec.source = top.value().file();
+  spec.title = top.optional<std::string>("title", spec.title);
+  spec.dimension = read_dimension(top);
+  const int dimension = spec.dimension;
+
+  UniqueNames node_ids("id");
+  UniqueNames material_ids("id");
+  UniqueNames element_ids("id");
+  UniqueNames link_ids("id");
+  spec.nodes = read_each(
+      top, "nodes", [&](JsonObject& object) { return read_node(object, dimension, node_ids); });
+  spec.materials = read_each(
+      top, "materials", [&](JsonObject& object) { return read_material(object, material_ids); });
+  spec.elements = read_each(top, "elements",
+                            [&](JsonObject& object) { return read_element(object, element_ids); });
+  spec.masses = read_each(top, "masses", read_mass);
+  spec.supports = read_each(
+      top, "supports", [dimension](JsonObject& object) { return read_support(object, dimension); });
+  spec.initial_velocities = read_each(top, "initial_velocities", [dimension](JsonObject& object) {
+    return read_initial_velocity(object, dimension);
+  });
+  spec.links = read_each(
+      top, "links", [&](JsonObject& object) { return read_link(object, dimension, link_ids); });
+  read_generators(top, spec);
+  spec.analysis = read_object(top.at("analysis"), read_analysis);
+  spec.recorders = read_recorders(top);
+  return spec;
+}
+
+}  // namespace
+
+ModelSpec parse_model(const std::string& text, const std::string& source) {
+  const nlohmann::json document = parse_json(text, source);
+  return read_object(JsonValue(document, source, ""), read_model);
+}
+
+ModelSpec read_model_file(const std::string& path) {
+  return parse_model(read_text_file(path), path);
+}
+
+}  // namespace pound::io
