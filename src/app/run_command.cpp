@@ -1,5 +1,203 @@
-#include "app/commands.hpp"
+#include <fmt/format.h>
+
+#include <boost/program_options.hpp>
+#include <chrono>
+#include <filesystem>
 #include <iostream>
+
+#include "app/commands.hpp"
+#include "assembly/structural_system.hpp"
+#include "builder/build.hpp"
+#include "core/errors.hpp"
+#include "io/document.hpp"
+#include "io/model_reader.hpp"
+#include "io/output.hpp"
+#include "report/rod_impact.hpp"
+#include "report/rod_impact_report.hpp"
+#include "results/recorders.hpp"
+
 namespace pound::app {
-int run_command(const Arguments&) { std::cerr << "run: not yet\n"; return 1; }
+namespace po = boost::program_options;
+
+namespace {
+
+constexpr const char* kRunUsage = R"(usage: pound run MODEL.json [--out DIR]
+
+Runs the time-history analysis of a model file (format: docs/model_format.md) and writes into
+DIR (default out/<model name>):
+  summary.json   run statistics and, per link: impacts, peak force, peak penetration, impulse,
+                 work; for a model that is one rod_pair, the metrics against the exact solution
+  <recorder>.csv the time histories the model's recorders ask for (default links.csv)
+Nothing is written when the model is invalid (exit code 2). If the analysis fails (exit code 3)
+the histories up to the failure are written and summary.json says "status": "failed".
+
+options)";
+
+std::vector<std::unique_ptr<results::Recorder>> make_recorders(const builder::BuiltModel& built,
+                                                               const model::DofMap& dofs) {
+  std::vector<std::unique_ptr<results::Recorder>> recorders;
+  for (const builder::ResolvedRecorder& spec : built.recorders) {
+    std::vector<std::string> ids;
+    if (spec.type == "link") {
+      for (Index link : spec.items) ids.push_back(built.model.links[static_cast<std::size_t>(link)].id);
+      recorders.push_back(std::make_unique<results::LinkRecorder>(spec.file, spec.items, ids));
+    } else {
+      std::vector<std::vector<Index>> equations;
+      for (Index node : spec.items) {
+        ids.push_back(built.model.nodes[static_cast<std::size_t>(node)].id);
+        std::vector<Index> per_direction;
+        for (int d = 0; d < dofs.dofs_per_node(); ++d) per_direction.push_back(dofs.equation(node, d));
+        equations.push_back(std::move(per_direction));
+      }
+      recorders.push_back(std::make_unique<results::NodeRecorder>(spec.file, std::move(equations), ids));
+    }
+  }
+  return recorders;
 }
+
+io::Document link_document(const model::Link& link, const results::LinkSummary& s) {
+  io::Document doc;
+  doc.set("id", link.id)
+      .set("impacts", s.impacts)
+      .set("peak_force", s.peak_force)
+      .set("peak_penetration", s.peak_penetration)
+      .set("impulse", s.impulse)
+      .set("work", s.work);
+  if (s.first_contact >= 0.0) doc.set("first_contact", s.first_contact).set("last_contact", s.last_contact);
+  return doc;
+}
+
+}  // namespace
+
+int run_command(const Arguments& arguments) {
+  po::options_description options(kRunUsage);
+  std::string model_path, out;
+  long max_steps = 0;
+  options.add_options()("help,h", "show this help")(
+      "out,o", po::value(&out), "output folder (default out/<model name>)")(
+      "max-steps", po::value(&max_steps), "stop with an error after this many steps (0: no limit)")(
+      "quiet,q", "print nothing but errors");
+  po::options_description hidden;
+  hidden.add_options()("model", po::value(&model_path));
+  po::options_description all;
+  all.add(options).add(hidden);
+  po::positional_options_description positional;
+  positional.add("model", 1);
+  po::variables_map vm;
+  po::store(po::command_line_parser(arguments).options(all).positional(positional).run(), vm);
+  po::notify(vm);
+  if (vm.count("help")) {
+    std::cout << options << "\n";
+    return 0;
+  }
+  if (model_path.empty()) {
+    std::cerr << "pound run: name a model file (see `pound run --help`)\n";
+    return 1;
+  }
+  if (max_steps < 0) {
+    std::cerr << "pound run: --max-steps must be >= 0\n";
+    return 1;
+  }
+  const bool quiet = vm.count("quiet") > 0;
+  if (out.empty()) out = (std::filesystem::path("out") / std::filesystem::path(model_path).stem()).string();
+
+  // Everything that can be wrong with the input is found before any output exists.
+  const builder::ModelSpec spec = io::read_model_file(model_path);
+  builder::BuiltModel built = builder::build(spec);
+  if (max_steps > 0) built.analysis.max_steps = max_steps;
+  std::unique_ptr<assembly::StructuralSystem> system;
+  try {
+    system = std::make_unique<assembly::StructuralSystem>(built.model);
+  } catch (const InputError& error) {
+    throw error.in_file(model_path);
+  }
+  auto integrator = builder::make_integrator(built.analysis);
+  TransientAnalysis analysis(*system, *integrator, builder::make_transient_settings(built.analysis));
+  auto recorders = make_recorders(built, system->dofs());
+  results::LinkSummaries links(static_cast<Index>(built.model.links.size()));
+
+  State state;
+  state.velocity = system->initial_velocity(built.model);
+  TransientStatistics stats;
+  std::string failure;
+  double failure_time = 0.0;
+  const auto started = std::chrono::steady_clock::now();
+  try {
+    stats = analysis.run(state, [&](const State& s, const StepResult&) {
+      for (auto& recorder : recorders) recorder->record(s);
+      links.record(s);
+    });
+  } catch (const SolveError& error) {
+    failure = error.reason();
+    failure_time = error.time();
+  }
+  const double run_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+
+  io::Document summary;
+  summary.set("model", model_path)
+      .set("title", spec.title)
+      .set("status", failure.empty() ? "completed" : "failed");
+  if (!failure.empty()) summary.set("failure_time", failure_time).set("failure", failure);
+  summary.set("integrator", integrator->name())
+      .set("time_step", built.analysis.time_step)
+      .set("duration", built.analysis.duration)
+      .set("end_time", failure.empty() ? state.time : failure_time)
+      .set("dofs", static_cast<long>(system->size()))
+      .set("steps", stats.steps)
+      .set("newton_iterations", stats.newton_iterations)
+      .set("step_cuts", stats.step_cuts)
+      .set("max_unbalanced_force", stats.max_unbalanced_force)
+      .set("run_time_s", run_time);
+  std::vector<io::Document> link_documents;
+  for (std::size_t k = 0; k < built.model.links.size(); ++k)
+    link_documents.push_back(link_document(built.model.links[k], links.summaries()[k]));
+  summary.set("links", link_documents);
+
+  std::string verification_line;
+  if (built.sole_rod_pair && failure.empty()) {
+    // The model is one rod pair: compare with the exact solution, as `verify rod-impact` does.
+    const auto* link_recorder = recorders.empty() ? nullptr : recorders.front().get();
+    if (link_recorder && link_recorder->table().columns.size() >= 3 &&
+        dynamic_cast<const results::LinkRecorder*>(link_recorder)) {
+      const Table& history = link_recorder->table();
+      const report::RodPairNodes nodes(*built.sole_rod_pair, built, system->dofs());
+      report::RodImpactMetrics metrics =
+          report::rod_pair_metrics(*built.sole_rod_pair, nodes, history.values[0],
+                                   history.values[1], history.values[2], state);
+      metrics.run_time_s = run_time;
+      metrics.steps = stats.steps;
+      metrics.newton_iterations = stats.newton_iterations;
+      summary.set("verification", report::to_document(metrics));
+      verification_line = fmt::format(
+          "  against the exact solution: force_l2_error {:.4f}, duration_error {:+.4f}, "
+          "separation_velocity_error {:+.4f}, peak_force_ratio {:.3f}\n",
+          metrics.force_l2_error, metrics.duration_error, metrics.separation_velocity_error,
+          metrics.peak_force_ratio);
+    }
+  }
+
+  io::create_output_folder(out);
+  for (const auto& recorder : recorders)
+    io::write_csv_atomic((std::filesystem::path(out) / recorder->file()).string(), recorder->table());
+  io::write_text_atomic((std::filesystem::path(out) / "summary.json").string(), summary.dump() + "\n");
+
+  if (!quiet) {
+    std::cout << fmt::format("pound run {}: {} DOFs, {} steps, {} Newton iterations, {:.3f} s -> {}/\n",
+                             model_path, system->size(), stats.steps, stats.newton_iterations,
+                             run_time, out);
+    for (std::size_t k = 0; k < built.model.links.size(); ++k) {
+      const results::LinkSummary& s = links.summaries()[k];
+      std::cout << fmt::format("  link {}: {} impact(s), peak force {:.6g}, peak penetration {:.4g}, impulse {:.6g}\n",
+                               built.model.links[k].id, s.impacts, s.peak_force, s.peak_penetration, s.impulse);
+    }
+    std::cout << verification_line;
+  }
+  if (!failure.empty()) {
+    std::cerr << fmt::format("error: {}: analysis failed at t = {:.6g}: {} (results up to then are in {}/)\n",
+                             model_path, failure_time, failure, out);
+    return 3;
+  }
+  return 0;
+}
+
+}  // namespace pound::app

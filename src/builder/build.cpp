@@ -166,6 +166,11 @@ BuiltModel build(const ModelSpec& user_spec) {
   }
 
   built.analysis = spec.analysis;
+  if (!spec.recorders_given && !model.links.empty()) {
+    ResolvedRecorder every_link{"link", {}, "links.csv"};
+    for (Index i = 0; i < static_cast<Index>(model.links.size()); ++i) every_link.items.push_back(i);
+    built.recorders.push_back(std::move(every_link));
+  }
   for (std::size_t k = 0; k < spec.recorders.size(); ++k) {
     const RecorderSpec& recorder = spec.recorders[k];
     ResolvedRecorder resolved{recorder.type, {}, recorder.file};
@@ -180,7 +185,7 @@ BuiltModel build(const ModelSpec& user_spec) {
         resolved.items.push_back(found->second);
       }
     }
-    if (recorder.type == "link" && resolved.items.empty())
+    if (recorder.type == "link" && recorder.ids.empty())
       for (Index i = 0; i < static_cast<Index>(model.links.size()); ++i) resolved.items.push_back(i);
     built.recorders.push_back(std::move(resolved));
   }

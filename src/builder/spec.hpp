@@ -78,8 +78,9 @@ struct RodSpec {
   bool far_end_fixed = false;    // "far_end": "free" | "fixed"
 };
 
-// Two collinear rods, the left one on [-L1, 0] and the right one on [gap, gap + L2] (nodes of
-// the facing ends both at x = 0; the gap is the link's), joined by a contact link.
+// Two collinear rods joined by a contact link: the left rod on [-L1, 0], the right rod's nodes
+// on [0, L2] (both facing nodes at x = 0; the clear distance is the link's gap). The exact
+// solution places the right rod at [gap, gap + L2], which is the same physics.
 struct RodPairSpec {
   std::string id;  // prefix of generated ids: "<id>.left.0" ... , link "<id>.contact"
   RodSpec left;
@@ -128,6 +129,8 @@ struct ModelSpec {
   std::vector<int> rod_pair_generator_index;  // their index in "/generators"
   AnalysisSpec analysis;
   std::vector<RecorderSpec> recorders;
+  // Without a "recorders" field `run` records every link; "recorders": [] records nothing.
+  bool recorders_given = false;
 };
 
 }  // namespace pound::builder

@@ -275,6 +275,10 @@ AnalysisSpec read_analysis(JsonObject& object) {
   }
   analysis.max_step_cuts =
       object.optional<int>("max_step_cuts", analysis.max_step_cuts, non_negative);
+  // 2^-30 of a step is already below any meaningful time resolution.
+  if (analysis.max_step_cuts > 30)
+    object.at("max_step_cuts")
+        .fail(fmt::format("must be <= 30, got {}", analysis.max_step_cuts));
   analysis.max_steps = object.optional<long>("max_steps", analysis.max_steps, non_negative);
   return analysis;
 }
@@ -344,6 +348,7 @@ ModelSpec read_model(JsonObject& top) {
       top, "links", [&](JsonObject& object) { return read_link(object, dimension, link_ids); });
   read_generators(top, spec);
   spec.analysis = read_object(top.at("analysis"), read_analysis);
+  spec.recorders_given = top.has("recorders");
   spec.recorders = read_recorders(top);
   return spec;
 }

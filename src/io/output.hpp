@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "core/table.hpp"
+
 namespace pound::io {
 
 class OutputError : public std::runtime_error {
@@ -13,11 +15,7 @@ class OutputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Numeric columns of equal length with a header; written as CSV with full precision.
-struct Table {
-  std::vector<std::string> columns;
-  std::vector<std::vector<double>> values;  // values[c][row]
-};
+using pound::Table;
 
 void write_text_atomic(const std::string& path, const std::string& text);
 void write_csv_atomic(const std::string& path, const Table& table);

@@ -106,16 +106,46 @@ RodImpactMetrics compare_with_exact(const ExactRodImpact& exact, double first_co
   return m;
 }
 
-struct RodPairSimulation::Impl {
-  // Equation (or -1) and x of every node of a rod, in the exact solution's x order.
-  struct RodNodes {
-    std::vector<Index> equation;
-    std::vector<double> x;
-    double element_length = 0.0;
-    double node_mass = 0.0;  // interior node; ends carry half
-    double mass = 0.0;
-  };
+RodPairNodes::RodPairNodes(const builder::RodPairSpec& pair, const builder::BuiltModel& built,
+                           const model::DofMap& dofs) {
+  for (int r = 0; r < 2; ++r) {
+    const builder::RodSpec& rod = r == 0 ? pair.left : pair.right;
+    Rod& out = rods_[r];
+    out.element_length = rod.length / rod.elements;
+    out.node_mass = rod.density * rod.area * out.element_length;
+    out.mass = rod.density * rod.area * rod.length;
+    for (int i = 0; i <= rod.elements; ++i) {
+      out.equation.push_back(dofs.equation(built.node_index.at(builder::rod_node_id(pair, r, i)), 0));
+      out.x.push_back(r == 0 ? -rod.length + i * out.element_length : pair.gap + i * out.element_length);
+    }
+  }
+}
 
+double RodPairNodes::centre_velocity(const State& state, int rod) const {
+  const Rod& r = rods_[rod];
+  double momentum = 0.0;
+  for (std::size_t i = 0; i < r.equation.size(); ++i) {
+    const bool end = i == 0 || i + 1 == r.equation.size();
+    if (r.equation[i] >= 0) momentum += (end ? 0.5 : 1.0) * r.node_mass * state.velocity[r.equation[i]];
+  }
+  return momentum / r.mass;
+}
+
+double RodPairNodes::separation_velocity(const State& state) const {
+  return centre_velocity(state, 1) - centre_velocity(state, 0);
+}
+
+RodImpactMetrics rod_pair_metrics(const builder::RodPairSpec& pair, const RodPairNodes& nodes,
+                                  const std::vector<double>& time, const std::vector<double>& force,
+                                  const std::vector<double>& penetration, const State& final_state,
+                                  std::vector<double>* exact_force) {
+  const auto [first_contact, exact_duration] = exact_contact_window(pair);
+  const ExactRodImpact exact = exact_solution(pair, final_state.time * (1.0 + 1e-9));
+  return compare_with_exact(exact, first_contact, exact_duration, time, force, penetration,
+                            nodes.separation_velocity(final_state), exact_force);
+}
+
+struct RodPairSimulation::Impl {
   explicit Impl(const RodImpactOptions& opts) : options(opts) {
     const builder::RodPairSpec& pair = options.pair;
     std::tie(first_contact, exact_duration) = exact_contact_window(pair);
@@ -134,30 +164,7 @@ struct RodPairSimulation::Impl {
     spec.analysis.integrator.gamma = options.gamma;
     built = builder::build(spec);
     system = std::make_unique<assembly::StructuralSystem>(built.model);
-    for (int r = 0; r < 2; ++r) {
-      const builder::RodSpec& rod = r == 0 ? pair.left : pair.right;
-      rods[r].element_length = rod.length / rod.elements;
-      rods[r].node_mass = rod.density * rod.area * rods[r].element_length;
-      rods[r].mass = rod.density * rod.area * rod.length;
-      for (int i = 0; i <= rod.elements; ++i) {
-        const Index node = built.node_index.at(builder::rod_node_id(pair, r, i));
-        rods[r].equation.push_back(system->dofs().equation(node, 0));
-        rods[r].x.push_back(r == 0 ? -rod.length + i * rods[r].element_length
-                                   : pair.gap + i * rods[r].element_length);
-      }
-    }
-  }
-
-  static double value_at(const Vector& v, Index equation) { return equation < 0 ? 0.0 : v[equation]; }
-
-  double centre_velocity(const State& s, int r) const {
-    double momentum = 0.0;
-    const std::size_t count = rods[r].equation.size();
-    for (std::size_t i = 0; i < count; ++i) {
-      const bool end = i == 0 || i + 1 == count;
-      momentum += (end ? 0.5 : 1.0) * rods[r].node_mass * value_at(s.velocity, rods[r].equation[i]);
-    }
-    return momentum / rods[r].mass;
+    nodes = std::make_unique<RodPairNodes>(pair, built, system->dofs());
   }
 
   TransientStatistics solve(RodImpactResult& result, std::vector<State>* snapshots,
@@ -189,19 +196,21 @@ struct RodPairSimulation::Impl {
 
   RodProfile profile(const ExactRodImpact& exact, const State& s, double label) const {
     RodProfile profile{s.time, label, {}};
+    auto value_at = [](const Vector& v, Index eq) { return eq < 0 ? 0.0 : v[eq]; };
     for (int r = 0; r < 2; ++r) {
       const builder::RodSpec& rod = r == 0 ? options.pair.left : options.pair.right;
-      for (std::size_t i = 0; i < rods[r].equation.size(); ++i) {
-        RodProfile::Point point{r, rods[r].x[i], value_at(s.velocity, rods[r].equation[i]), 0.0,
+      const std::vector<Index>& equation = nodes->equations(r);
+      const double h = nodes->element_length(r);
+      for (std::size_t i = 0; i < equation.size(); ++i) {
+        RodProfile::Point point{r, nodes->positions(r)[i], value_at(s.velocity, equation[i]), 0.0,
                                 0.0, 0.0};
         point.exact_velocity = exact.state(r, point.x, s.time).velocity;
         if (i > 0) {
           // Stress of the element ending at this node, compared at its midpoint.
-          const double strain = (value_at(s.displacement, rods[r].equation[i]) -
-                                 value_at(s.displacement, rods[r].equation[i - 1])) /
-                                rods[r].element_length;
+          const double strain =
+              (value_at(s.displacement, equation[i]) - value_at(s.displacement, equation[i - 1])) / h;
           point.stress = rod.youngs_modulus * strain;
-          point.exact_stress = exact.state(r, point.x - 0.5 * rods[r].element_length, s.time).stress;
+          point.exact_stress = exact.state(r, point.x - 0.5 * h, s.time).stress;
         }
         profile.points.push_back(point);
       }
@@ -215,7 +224,7 @@ struct RodPairSimulation::Impl {
   double time_step = 0.0;
   builder::BuiltModel built;
   std::unique_ptr<assembly::StructuralSystem> system;
-  RodNodes rods[2];
+  std::unique_ptr<RodPairNodes> nodes;
 };
 
 RodPairSimulation::RodPairSimulation(const RodImpactOptions& options)
@@ -240,16 +249,12 @@ RodImpactResult run_rod_impact(const RodImpactOptions& options) {
   const TransientStatistics stats = simulation.solve(result, &snapshots, final_state);
   const double run_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
-  const ExactRodImpact exact =
-      exact_solution(options.pair, simulation.built.analysis.duration * (1.0 + 1e-9));
-  result.metrics = compare_with_exact(
-      exact, simulation.first_contact, simulation.exact_duration, result.time, result.force,
-      result.penetration,
-      simulation.centre_velocity(final_state, 1) - simulation.centre_velocity(final_state, 0),
-      &result.exact_force);
+  result.metrics = rod_pair_metrics(options.pair, *simulation.nodes, result.time, result.force,
+                                    result.penetration, final_state, &result.exact_force);
   result.metrics.run_time_s = run_time;
   result.metrics.steps = stats.steps;
   result.metrics.newton_iterations = stats.newton_iterations;
+  const ExactRodImpact exact = exact_solution(options.pair, final_state.time * (1.0 + 1e-9));
   for (std::size_t p = 0; p < snapshots.size(); ++p)
     if (snapshots[p].displacement.size() > 0)
       result.profiles.push_back(simulation.profile(exact, snapshots[p], options.profile_times[p]));

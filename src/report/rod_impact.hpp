@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "builder/build.hpp"
 #include "builder/spec.hpp"
 #include "integrators/transient_analysis.hpp"
 #include "report/exact_rod_impact.hpp"
@@ -99,6 +100,35 @@ RodImpactMetrics compare_with_exact(const ExactRodImpact& exact, double first_co
                                     const std::vector<double>& force,
                                     const std::vector<double>& penetration,
                                     double separation_velocity, std::vector<double>* exact_force);
+
+// Where the nodes of a generated rod pair sit in a system's equations, in the exact solution's
+// x order, and the rods' centre-of-mass velocities (lumped masses, fixed nodes at rest).
+class RodPairNodes {
+ public:
+  RodPairNodes(const builder::RodPairSpec& pair, const builder::BuiltModel& built,
+               const model::DofMap& dofs);
+  double centre_velocity(const State& state, int rod) const;
+  double separation_velocity(const State& state) const;  // right minus left
+  const std::vector<Index>& equations(int rod) const { return rods_[rod].equation; }
+  const std::vector<double>& positions(int rod) const { return rods_[rod].x; }
+  double element_length(int rod) const { return rods_[rod].element_length; }
+
+ private:
+  struct Rod {
+    std::vector<Index> equation;  // -1 where fixed
+    std::vector<double> x;
+    double element_length = 0.0;
+    double node_mass = 0.0;  // interior node; the ends carry half
+    double mass = 0.0;
+  } rods_[2];
+};
+
+// Metrics of a finished rod-pair run (histories of its contact link, state at the end) against
+// the exact solution; shared by `verify rod-impact` and `run` on a rod_pair model.
+RodImpactMetrics rod_pair_metrics(const builder::RodPairSpec& pair, const RodPairNodes& nodes,
+                                  const std::vector<double>& time, const std::vector<double>& force,
+                                  const std::vector<double>& penetration, const State& final_state,
+                                  std::vector<double>* exact_force = nullptr);
 
 // The rod pair of Kawashima (1980): E = 100, A = 1, rho = 0.1, L = 10, V0 = 0.1 each way.
 builder::RodPairSpec kawashima_rod_pair(int elements, double stiffness_ratio);

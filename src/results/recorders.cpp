@@ -1,0 +1,76 @@
+#include "results/recorders.hpp"
+
+#include <algorithm>
+
+namespace pound::results {
+
+LinkRecorder::LinkRecorder(std::string file, std::vector<Index> links,
+                           const std::vector<std::string>& ids)
+    : file_(std::move(file)), links_(std::move(links)) {
+  table_.columns.push_back("time");
+  for (const std::string& id : ids) {
+    table_.columns.push_back(id + ".force");
+    table_.columns.push_back(id + ".penetration");
+  }
+  table_.values.resize(table_.columns.size());
+}
+
+void LinkRecorder::record(const State& state) {
+  table_.values[0].push_back(state.time);
+  for (std::size_t k = 0; k < links_.size(); ++k) {
+    table_.values[1 + 2 * k].push_back(state.link_force[links_[k]]);
+    table_.values[2 + 2 * k].push_back(state.link_penetration[links_[k]]);
+  }
+}
+
+NodeRecorder::NodeRecorder(std::string file, std::vector<std::vector<Index>> equations,
+                           const std::vector<std::string>& ids)
+    : file_(std::move(file)), equations_(std::move(equations)) {
+  static const char* kDirection[] = {"x", "y"};
+  table_.columns.push_back("time");
+  for (std::size_t k = 0; k < ids.size(); ++k)
+    for (std::size_t d = 0; d < equations_[k].size(); ++d)
+      for (const char* quantity : {"u", "v", "a"})
+        table_.columns.push_back(ids[k] + "." + quantity + "_" + kDirection[d]);
+  table_.values.resize(table_.columns.size());
+}
+
+void NodeRecorder::record(const State& state) {
+  std::size_t column = 0;
+  table_.values[column++].push_back(state.time);
+  for (const auto& node : equations_)
+    for (Index equation : node)
+      for (const Vector* quantity : {&state.displacement, &state.velocity, &state.acceleration})
+        table_.values[column++].push_back(equation < 0 ? 0.0 : (*quantity)[equation]);
+}
+
+void LinkSummaries::record(const State& state) {
+  for (std::size_t k = 0; k < summaries_.size(); ++k) {
+    LinkSummary& s = summaries_[k];
+    const Index link = static_cast<Index>(k);
+    const double force = state.link_force[link];
+    const double penetration = state.link_penetration[link];
+    const bool contact = force != 0.0;
+    if (started_) {
+      const double previous_force = previous_.link_force[link];
+      const double dt = state.time - previous_.time;
+      s.impulse += 0.5 * (force + previous_force) * dt;
+      s.work += 0.5 * (force + previous_force) * (penetration - previous_.link_penetration[link]);
+      if (contact && previous_force == 0.0) ++s.impacts;
+    } else if (contact) {
+      ++s.impacts;
+    }
+    if (contact) {
+      if (s.first_contact < 0.0) s.first_contact = state.time;
+      s.last_contact = state.time;
+    }
+    s.peak_force = std::max(s.peak_force, force);
+    s.peak_penetration = std::max(s.peak_penetration, penetration);
+  }
+  previous_.time = state.time;
+  previous_.link_force = state.link_force;
+  previous_.link_penetration = state.link_penetration;
+  started_ = true;
+}
+
+}  // namespace pound::results

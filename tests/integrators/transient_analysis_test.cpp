@@ -1,0 +1,143 @@
+// Step cutting and loud failure of the transient driver, on a one-DOF system.
+#include "integrators/transient_analysis.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "core/errors.hpp"
+#include "integrators/newmark.hpp"
+#include "support/oscillator.hpp"
+
+namespace pound {
+namespace {
+
+// F = k delta^3 in contact, but reporting a zero tangent: Newton becomes the fixed-point
+// iteration F <- F(delta_lin - G F), which converges only while |3 k delta^2 G| < 1, and
+// G = beta dt^2 / m shrinks with the step. So large steps fail and cut steps succeed.
+class CubicWithoutTangent final : public contact::ContactLaw {
+ public:
+  explicit CubicWithoutTangent(double stiffness) : stiffness_(stiffness) {}
+  std::string name() const override { return "cubic_without_tangent"; }
+  std::unique_ptr<contact::ContactLaw> clone() const override {
+    return std::make_unique<CubicWithoutTangent>(*this);
+  }
+  contact::LawResponse set_trial(const contact::LinkKinematics& trial) override {
+    const double delta = std::max(0.0, trial.penetration);
+    return {.force = stiffness_ * delta * delta * delta};
+  }
+  void commit() override {}
+  void revert() override {}
+  bool in_contact() const override { return false; }
+
+ private:
+  double stiffness_;
+};
+
+// A law whose force is NaN once it is in contact (a model gone wrong).
+class Poisoned final : public contact::ContactLaw {
+ public:
+  std::string name() const override { return "poisoned"; }
+  std::unique_ptr<contact::ContactLaw> clone() const override { return std::make_unique<Poisoned>(); }
+  contact::LawResponse set_trial(const contact::LinkKinematics& trial) override {
+    if (trial.penetration <= 0.0) return {};
+    return {.force = std::numeric_limits<double>::quiet_NaN(), .stiffness = 1.0};
+  }
+  void commit() override {}
+  void revert() override {}
+  bool in_contact() const override { return false; }
+};
+
+testing::Oscillator mass_against_wall(std::unique_ptr<contact::ContactLaw> law) {
+  std::vector<std::unique_ptr<contact::ContactLaw>> laws;
+  laws.push_back(std::move(law));
+  return testing::Oscillator(1.0, 0.0, 0.0, LinkSet(1, {{{0, 1.0}}}, {0.0}, std::move(laws)));
+}
+
+TEST(TransientAnalysis, CutsStepsThatDoNotConvergeAndFinishes) {
+  auto system = mass_against_wall(std::make_unique<CubicWithoutTangent>(1.0e14));
+  Newmark newmark = Newmark::average_acceleration({.relative_tolerance = 1e-10, .max_iterations = 30});
+  TransientAnalysis analysis(system, newmark, {.time_step = 1e-3, .end_time = 0.02, .max_step_cuts = 12});
+  State state;
+  state.velocity = Vector::Constant(1, 1.0);
+  // Every accepted step, cut or not, satisfied m a = -F; with gamma = 1/2 the velocity is the
+  // trapezoidal integral of the acceleration, so the impulse of the recorded forces must equal
+  // the momentum change to rounding.
+  double impulse = 0.0, previous_time = 0.0, previous_force = 0.0, peak_force = 0.0;
+  const TransientStatistics stats = analysis.run(state, [&](const State& s, const StepResult&) {
+    impulse += 0.5 * (s.link_force[0] + previous_force) * (s.time - previous_time);
+    previous_time = s.time;
+    previous_force = s.link_force[0];
+    peak_force = std::max(peak_force, s.link_force[0]);
+  });
+  const double momentum_error = std::abs((1.0 - state.velocity[0]) - impulse) / impulse;
+  std::cout << "step cuts " << stats.step_cuts << ", steps " << stats.steps << ", impulse "
+            << impulse << ", momentum error " << momentum_error << ", rebound velocity "
+            << state.velocity[0] << "\n";
+  EXPECT_GT(stats.step_cuts, 0);
+  EXPECT_NEAR(state.time, 0.02, 1e-12);
+  EXPECT_LT(momentum_error, 1e-9);
+  // An impact resolved by a few cut steps is coarse (energy is not conserved to better than
+  // tens of per cent), but it is an impact: the mass comes back.
+  EXPECT_LT(state.velocity[0], -0.8);
+  EXPECT_GT(peak_force, 0.0);
+}
+
+TEST(TransientAnalysis, FailsLoudlyWithTimeAndReasonWhenCuttingIsNotEnough) {
+  auto system = mass_against_wall(std::make_unique<CubicWithoutTangent>(1.0e14));
+  Newmark newmark = Newmark::average_acceleration({.relative_tolerance = 1e-10, .max_iterations = 30});
+  TransientAnalysis analysis(system, newmark, {.time_step = 1e-3, .end_time = 0.02, .max_step_cuts = 0});
+  State state;
+  state.velocity = Vector::Constant(1, 1.0);
+  try {
+    analysis.run(state);
+    FAIL() << "an unconverged step was accepted";
+  } catch (const SolveError& error) {
+    std::cout << error.what() << "\n";
+    EXPECT_GE(error.time(), 0.0);
+    EXPECT_LT(error.time(), 0.02);
+    EXPECT_NE(std::string(error.what()).find("did not converge"), std::string::npos);
+  }
+}
+
+TEST(TransientAnalysis, NonFiniteForcesStopTheRun) {
+  auto system = mass_against_wall(std::make_unique<Poisoned>());
+  Newmark newmark = Newmark::average_acceleration();
+  TransientAnalysis analysis(system, newmark, {.time_step = 0.01, .end_time = 1.0, .max_step_cuts = 3});
+  State state;
+  state.velocity = Vector::Constant(1, 1.0);
+  EXPECT_THROW(
+      {
+        try {
+          analysis.run(state);
+        } catch (const SolveError& error) {
+          EXPECT_NE(std::string(error.what()).find("not finite"), std::string::npos) << error.what();
+          throw;
+        }
+      },
+      SolveError);
+}
+
+TEST(TransientAnalysis, StepLimitStopsARunawayRun) {
+  testing::Oscillator system(1.0, 0.0, 1.0);
+  Newmark newmark = Newmark::average_acceleration();
+  TransientAnalysis analysis(system, newmark, {.time_step = 0.01, .end_time = 1.0, .max_steps = 10});
+  State state;
+  long recorded = 0;
+  EXPECT_THROW(analysis.run(state, [&](const State&, const StepResult&) { ++recorded; }), SolveError);
+  EXPECT_EQ(recorded, 11);  // the initial state and ten steps
+}
+
+TEST(TransientAnalysis, EndTimeIsReachedExactlyWithoutDrift) {
+  testing::Oscillator system(1.0, 0.0, 1.0);
+  Newmark newmark = Newmark::average_acceleration();
+  TransientAnalysis analysis(system, newmark, {.time_step = 0.1, .end_time = 1.05});
+  State state;
+  const TransientStatistics stats = analysis.run(state);
+  EXPECT_EQ(stats.steps, 11);  // ten steps of 0.1 and a last one of 0.05
+  EXPECT_EQ(state.time, 1.05);
+}
+
+}  // namespace
+}  // namespace pound
