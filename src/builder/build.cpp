@@ -48,13 +48,11 @@ class Resolver {
 
 // Path of entry k of an expanded array: the user's own entries keep their path; generated ones
 // point at their generator.
-std::function<std::string(std::size_t)> origin_of(const ModelSpec& spec, std::size_t user_count,
-                                                   const char* array) {
-  return [&spec, user_count, array](std::size_t k) {
+std::function<std::string(std::size_t)> origin_of(std::size_t user_count, const char* array,
+                                                   const std::vector<int>& generated_from) {
+  return [user_count, array, &generated_from](std::size_t k) {
     if (k < user_count) return fmt::format("/{}/{}", array, k);
-    // Generated entries: only rod pairs exist so far; name the first generator when unsure.
-    const int generator = spec.rod_pair_generator_index.empty() ? 0 : spec.rod_pair_generator_index[0];
-    return fmt::format("/generators/{}", generator);
+    return fmt::format("/generators/{}", generated_from[k - user_count]);
   };
 }
 
@@ -88,16 +86,16 @@ BuiltModel build(const ModelSpec& user_spec) {
   model::Model& model = built.model;
   model.dimension = spec.dimension;
 
-  built.node_index = resolve.index_ids(spec.nodes, "node", origin_of(user_spec, user_spec.nodes.size(), "nodes"));
+  built.node_index = resolve.index_ids(spec.nodes, "node", origin_of(user_spec.nodes.size(), "nodes", spec.generated_from.nodes));
   const auto materials = resolve.index_ids(spec.materials, "material",
-                                           origin_of(user_spec, user_spec.materials.size(), "materials"));
-  resolve.index_ids(spec.elements, "element", origin_of(user_spec, user_spec.elements.size(), "elements"));
-  const auto link_origin = origin_of(user_spec, user_spec.links.size(), "links");
+                                           origin_of(user_spec.materials.size(), "materials", spec.generated_from.materials));
+  resolve.index_ids(spec.elements, "element", origin_of(user_spec.elements.size(), "elements", spec.generated_from.elements));
+  const auto link_origin = origin_of(user_spec.links.size(), "links", spec.generated_from.links);
   built.link_index = resolve.index_ids(spec.links, "link", link_origin);
 
   for (const NodeSpec& node : spec.nodes) model.nodes.push_back({node.id, {node.x, node.y}});
 
-  const auto element_origin = origin_of(user_spec, user_spec.elements.size(), "elements");
+  const auto element_origin = origin_of(user_spec.elements.size(), "elements", spec.generated_from.elements);
   for (std::size_t k = 0; k < spec.elements.size(); ++k) {
     const ElementSpec& element = spec.elements[k];
     const std::string path = element_origin(k);
@@ -125,12 +123,12 @@ BuiltModel build(const ModelSpec& user_spec) {
                                          fmt::format("/masses/{}/node", k)),
                             spec.masses[k].mass});
 
-  const auto support_origin = origin_of(user_spec, user_spec.supports.size(), "supports");
+  const auto support_origin = origin_of(user_spec.supports.size(), "supports", spec.generated_from.supports);
   for (std::size_t k = 0; k < spec.supports.size(); ++k)
     model.supports.push_back({resolve.node(built.node_index, spec.supports[k].node, support_origin(k) + "/node"),
                               {spec.supports[k].fix_x, spec.supports[k].fix_y}});
 
-  const auto velocity_origin = origin_of(user_spec, user_spec.initial_velocities.size(), "initial_velocities");
+  const auto velocity_origin = origin_of(user_spec.initial_velocities.size(), "initial_velocities", spec.generated_from.initial_velocities);
   if (!spec.initial_velocities.empty()) model.initial_velocity.assign(model.nodes.size(), {0.0, 0.0});
   for (std::size_t k = 0; k < spec.initial_velocities.size(); ++k) {
     const InitialVelocitySpec& v = spec.initial_velocities[k];

@@ -50,7 +50,21 @@ ModelSpec expand(const ModelSpec& spec) {
   ModelSpec out = spec;
   out.rod_pairs.clear();
   out.rod_pair_generator_index.clear();
-  for (const RodPairSpec& pair : spec.rod_pairs) {
+  auto& from = out.generated_from;
+  // Everything appended since the last call came from `generator`.
+  auto mark = [&out, &from, &spec](int generator) {
+    auto fill = [generator](std::vector<int>& origins, std::size_t total, std::size_t user) {
+      origins.resize(total - user, generator);
+    };
+    fill(from.nodes, out.nodes.size(), spec.nodes.size());
+    fill(from.materials, out.materials.size(), spec.materials.size());
+    fill(from.elements, out.elements.size(), spec.elements.size());
+    fill(from.supports, out.supports.size(), spec.supports.size());
+    fill(from.initial_velocities, out.initial_velocities.size(), spec.initial_velocities.size());
+    fill(from.links, out.links.size(), spec.links.size());
+  };
+  for (std::size_t g = 0; g < spec.rod_pairs.size(); ++g) {
+    const RodPairSpec& pair = spec.rod_pairs[g];
     add_rod(pair, 0, out);
     add_rod(pair, 1, out);
     LinkSpec link;
@@ -63,6 +77,8 @@ ModelSpec expand(const ModelSpec& spec) {
     link.law.stiffness = rod_pair_link_stiffness(pair);
     link.law.stiffness_ratio.reset();
     out.links.push_back(std::move(link));
+    mark(spec.rod_pair_generator_index.empty() ? static_cast<int>(g)
+                                               : spec.rod_pair_generator_index[g]);
   }
   return out;
 }

@@ -129,6 +129,11 @@ struct ModelSpec {
   std::vector<int> rod_pair_generator_index;  // their index in "/generators"
   AnalysisSpec analysis;
   std::vector<RecorderSpec> recorders;
+  // Filled by expand(): for entries a generator appended, the index of that generator in
+  // "/generators" (entry k of an array with u user entries came from generated_from[k - u]).
+  struct GeneratedFrom {
+    std::vector<int> nodes, materials, elements, supports, initial_velocities, links;
+  } generated_from;
   // Without a "recorders" field `run` records every link; "recorders": [] records nothing.
   bool recorders_given = false;
 };

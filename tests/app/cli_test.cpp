@@ -1,0 +1,291 @@
+// The `pound` program as a user runs it: exit codes, messages, and the files it writes (or does
+// not write). Each test runs the real binary with its output captured in a fresh temporary folder.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const std::string kRodModel = POUND_SOURCE_DIR "/models/rod_impact.json";
+const std::string kGirderModel = POUND_SOURCE_DIR "/models/girder_abutment_sdof.json";
+
+// A small valid model; the bad-input cases change one thing in it (RFC 6902 patch).
+constexpr const char* kModel = R"({
+  "dimension": 1,
+  "nodes": [{"id": "ground", "x": 0.0}, {"id": "girder", "x": 10.0},
+            {"id": "abutment", "x": 10.0}],
+  "materials": [{"id": "bearing", "youngs_modulus": 2.0e6, "density": 0.0}],
+  "elements": [{"id": "bearing", "type": "truss", "nodes": ["ground", "girder"],
+                "material": "bearing", "area": 0.05}],
+  "masses": [{"node": "girder", "mass": 500.0}],
+  "supports": [{"node": "ground", "fix": ["x"]}, {"node": "abutment", "fix": ["x"]}],
+  "initial_velocities": [{"node": "girder", "x": 0.5}],
+  "links": [{"id": "joint", "nodes": ["girder", "abutment"], "axis": [1], "gap": 0.02,
+             "law": {"type": "gap_spring", "stiffness": 1.0e6}}],
+  "analysis": {"time_step": 0.001, "duration": 0.1}
+})";
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::vector<std::string> read_lines(const fs::path& path) {
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+// First comma-separated field of a CSV data line, as a number.
+double first_field(const std::string& line) { return std::stod(line.substr(0, line.find(','))); }
+
+std::string shell_quoted(const std::string& text) {
+  std::string quoted = "'";
+  for (char c : text) {
+    if (c == '\'')
+      quoted.append("'\\''");
+    else
+      quoted.push_back(c);
+  }
+  quoted.push_back('\'');
+  return quoted;
+}
+
+struct Outcome {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    folder_ = fs::temp_directory_path() / fmt::format("pound_cli_{}_{}", name, ::getpid());
+    fs::remove_all(folder_);
+    ASSERT_TRUE(fs::create_directories(folder_)) << folder_;
+  }
+
+  void TearDown() override {
+    std::error_code ignored;
+    fs::remove_all(folder_, ignored);
+  }
+
+  fs::path path(const std::string& name) const { return folder_ / name; }
+
+  // Runs `pound <arguments>` with stdout and stderr captured.
+  Outcome pound(const std::vector<std::string>& arguments) const {
+    std::string command = shell_quoted(POUND_BINARY);
+    for (const std::string& argument : arguments)
+      command.append(" ").append(shell_quoted(argument));
+    const fs::path out = path("stdout.txt"), err = path("stderr.txt");
+    command.append(
+        fmt::format(" >{} 2>{}", shell_quoted(out.string()), shell_quoted(err.string())));
+    const int status = std::system(command.c_str());
+    Outcome outcome;
+    outcome.exit_code = status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    outcome.out = read_text(out);
+    outcome.err = read_text(err);
+    return outcome;
+  }
+
+  // Writes kModel with `json_patch` applied; returns the file's path.
+  std::string write_model(const std::string& name, const std::string& json_patch) const {
+    const fs::path file = path(name);
+    std::ofstream(file) << json::parse(kModel).patch(json::parse(json_patch)).dump(2);
+    return file.string();
+  }
+
+  // `pound run` on a model that must be refused: exit 2, nothing written.
+  Outcome run_refused(const std::string& model) const {
+    const fs::path out = path("out");
+    const Outcome outcome = pound({"run", model, "--out", out.string()});
+    EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+    EXPECT_NE(outcome.err.find(model), std::string::npos) << outcome.err;
+    EXPECT_FALSE(fs::exists(out)) << "output folder created for an invalid model";
+    std::cout << "stderr: " << outcome.err;
+    return outcome;
+  }
+
+  fs::path folder_;
+};
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+TEST_F(Cli, HelpListsTheCommands) {
+  const Outcome outcome = pound({"--help"});
+  EXPECT_EQ(outcome.exit_code, 0);
+  EXPECT_TRUE(contains(outcome.out, "run MODEL.json")) << outcome.out;
+  EXPECT_TRUE(contains(outcome.out, "verify rod-impact")) << outcome.out;
+}
+
+TEST_F(Cli, NoArgumentsIsAUsageError) {
+  const Outcome outcome = pound({});
+  EXPECT_EQ(outcome.exit_code, 1);
+  EXPECT_TRUE(contains(outcome.err, "usage")) << outcome.err;
+}
+
+TEST_F(Cli, UnknownCommandIsAUsageError) {
+  const Outcome outcome = pound({"frobnicate"});
+  EXPECT_EQ(outcome.exit_code, 1);
+  EXPECT_TRUE(contains(outcome.err, "unknown command 'frobnicate'")) << outcome.err;
+}
+
+TEST_F(Cli, RunHelpShowsItsOptions) {
+  const Outcome outcome = pound({"run", "--help"});
+  EXPECT_EQ(outcome.exit_code, 0);
+  for (const char* option : {"--out", "--max-steps", "--quiet"})
+    EXPECT_TRUE(contains(outcome.out, option)) << option << " missing from\n" << outcome.out;
+}
+
+TEST_F(Cli, VerifyHelpShowsItsOptions) {
+  const Outcome outcome = pound({"verify", "--help"});
+  EXPECT_EQ(outcome.exit_code, 0);
+  for (const char* option : {"--json", "--n", "--k-ratio", "--dt-ratio", "--courant", "--case",
+                             "--csv", "--profiles-csv", "--study"})
+    EXPECT_TRUE(contains(outcome.out, option)) << option << " missing from\n" << outcome.out;
+}
+
+TEST_F(Cli, VerifyJsonPrintsOneObjectWithTheMetrics) {
+  const Outcome outcome = pound({"verify", "rod-impact", "--json"});
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const json metrics = json::parse(outcome.out);  // throws on anything but one JSON value
+  ASSERT_TRUE(metrics.is_object());
+  for (const char* key :
+       {"force_l2_error", "duration_error", "separation_velocity_error", "peak_force_ratio",
+        "max_penetration", "min_force", "run_time_s", "steps", "newton_iterations"}) {
+    ASSERT_TRUE(metrics.contains(key)) << key;
+    EXPECT_TRUE(metrics[key].is_number()) << key;
+  }
+  EXPECT_GT(metrics["steps"].get<long>(), 0);
+  std::cout << "force_l2_error " << metrics["force_l2_error"] << ", steps " << metrics["steps"]
+            << "\n";
+}
+
+TEST_F(Cli, VerifyCsvHasOneRowPerStepAndTheInitialState) {
+  const fs::path csv = path("force.csv");
+  const Outcome outcome = pound({"verify", "rod-impact", "--json", "--csv", csv.string()});
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const long steps = json::parse(outcome.out)["steps"].get<long>();
+  const std::vector<std::string> lines = read_lines(csv);
+  ASSERT_FALSE(lines.empty());
+  EXPECT_EQ(lines.front(), "time,force,exact_force,penetration");
+  EXPECT_EQ(static_cast<long>(lines.size()) - 1, steps + 1);
+  EXPECT_EQ(first_field(lines[1]), 0.0);
+}
+
+TEST_F(Cli, VerifyProfilesCsvHasTheFourInstants) {
+  const fs::path csv = path("profiles.csv");
+  const Outcome outcome = pound({"verify", "rod-impact", "--profiles-csv", csv.string()});
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const std::vector<std::string> lines = read_lines(csv);
+  ASSERT_GT(lines.size(), 1u);
+  EXPECT_TRUE(lines.front().starts_with("time_over_T,")) << lines.front();
+  std::set<double> instants;
+  for (std::size_t k = 1; k < lines.size(); ++k) instants.insert(first_field(lines[k]));
+  EXPECT_EQ(instants, (std::set<double>{0.0, 0.25, 0.5, 0.75}));
+}
+
+TEST_F(Cli, RunRodImpactMatchesVerify) {
+  const fs::path out = path("out");
+  const Outcome run = pound({"run", kRodModel, "--out", out.string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(fs::exists(out / "link_force.csv"));
+  const json summary = json::parse(read_text(out / "summary.json"));
+  EXPECT_EQ(summary["status"], "completed");
+  ASSERT_TRUE(summary.contains("verification")) << summary.dump(2);
+
+  const Outcome verify = pound({"verify", "rod-impact", "--n", "100", "--courant", "1", "--json"});
+  ASSERT_EQ(verify.exit_code, 0) << verify.err;
+  const double from_run = summary["verification"]["force_l2_error"].get<double>();
+  const double from_verify = json::parse(verify.out)["force_l2_error"].get<double>();
+  const double relative = std::abs(from_run - from_verify) / std::abs(from_verify);
+  std::cout << "force_l2_error run " << from_run << ", verify " << from_verify
+            << ", relative difference " << relative << "\n";
+  EXPECT_LE(relative, 1e-12);
+  EXPECT_EQ(summary["verification"]["steps"], json::parse(verify.out)["steps"]);
+}
+
+TEST_F(Cli, RunGirderWritesItsRecorders) {
+  const fs::path out = path("out");
+  const Outcome outcome = pound({"run", kGirderModel, "--out", out.string(), "--quiet"});
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_TRUE(outcome.out.empty()) << outcome.out;
+  const std::vector<std::string> joint = read_lines(out / "joint.csv");
+  const std::vector<std::string> girder = read_lines(out / "girder.csv");
+  ASSERT_FALSE(joint.empty());
+  ASSERT_FALSE(girder.empty());
+  EXPECT_EQ(joint.front(), "time,joint.force,joint.penetration");
+  EXPECT_EQ(girder.front(), "time,girder.u_x,girder.v_x,girder.a_x");
+  const json summary = json::parse(read_text(out / "summary.json"));
+  EXPECT_EQ(summary["status"], "completed");
+  EXPECT_FALSE(summary.contains("verification"));
+  EXPECT_EQ(joint.size(), static_cast<std::size_t>(summary["steps"].get<long>()) + 2);
+}
+
+TEST_F(Cli, NegativeGapIsRefusedWithItsPath) {
+  const Outcome outcome = run_refused(write_model(
+      "negative_gap.json", R"([{"op": "replace", "path": "/links/0/gap", "value": -0.01}])"));
+  EXPECT_TRUE(contains(outcome.err, "/links/0/gap")) << outcome.err;
+}
+
+TEST_F(Cli, DanglingNodeIsRefusedWithItsPath) {
+  const Outcome outcome = run_refused(write_model(
+      "dangling.json", R"([{"op": "replace", "path": "/links/0/nodes/1", "value": "b9"}])"));
+  EXPECT_TRUE(contains(outcome.err, "/links/0/nodes/1")) << outcome.err;
+  EXPECT_TRUE(contains(outcome.err, "does not exist")) << outcome.err;
+}
+
+TEST_F(Cli, MalformedJsonIsRefusedWithLineAndColumn) {
+  const fs::path model = path("malformed.json");
+  std::ofstream(model) << "{\n  \"dimension\": 1,,\n}\n";
+  const Outcome outcome = run_refused(model.string());
+  EXPECT_TRUE(contains(outcome.err, "line 2")) << outcome.err;
+  EXPECT_TRUE(contains(outcome.err, "column")) << outcome.err;
+}
+
+TEST_F(Cli, MissingModelFileIsRefused) { run_refused(path("no_such_model.json").string()); }
+
+TEST_F(Cli, StepLimitFailsAndKeepsTheHistorySoFar) {
+  const fs::path out = path("out");
+  const Outcome outcome = pound({"run", kRodModel, "--out", out.string(), "--max-steps", "10"});
+  EXPECT_EQ(outcome.exit_code, 3);
+  EXPECT_TRUE(contains(outcome.err, "step limit")) << outcome.err;
+  const json summary = json::parse(read_text(out / "summary.json"));
+  EXPECT_EQ(summary["status"], "failed");
+  EXPECT_EQ(summary["steps"], 10);
+  EXPECT_TRUE(contains(summary["failure"].get<std::string>(), "step limit"));
+  EXPECT_FALSE(summary.contains("verification"));  // no metrics for a partial run
+  const std::vector<std::string> lines = read_lines(out / "link_force.csv");
+  EXPECT_EQ(lines.size(), 1u + 11u);  // header, the initial state, 10 steps
+}
+
+TEST_F(Cli, UnwritableOutputFolderIsAnOutputError) {
+  const std::string out = "/proc/pound_test_out";
+  const Outcome outcome = pound({"run", kRodModel, "--out", out, "--quiet"});
+  EXPECT_EQ(outcome.exit_code, 4);
+  EXPECT_TRUE(contains(outcome.err, out)) << outcome.err;
+  std::cout << "stderr: " << outcome.err;
+}
+
+}  // namespace

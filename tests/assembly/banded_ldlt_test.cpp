@@ -1,0 +1,116 @@
+#include "assembly/banded_ldlt.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <iostream>
+#include <numeric>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+namespace pound::assembly {
+namespace {
+
+using Sparse = Eigen::SparseMatrix<double>;
+
+// A random symmetric positive definite matrix of half-bandwidth `band` made of independent blocks
+// of the given sizes (entries within a block and the band are non-zero, between blocks zero).
+// Diagonally dominant, so well conditioned.
+Sparse random_banded(const std::vector<Index>& blocks, Index band, std::mt19937& rng) {
+  std::uniform_real_distribution<double> magnitude(0.1, 1.0), margin(0.05, 2.0);
+  std::bernoulli_distribution negative(0.5);
+  const Index n = std::accumulate(blocks.begin(), blocks.end(), Index{0});
+  Matrix dense = Matrix::Zero(n, n);
+  Index first = 0;
+  for (Index size : blocks) {
+    for (Index i = first; i < first + size; ++i)
+      for (Index j = std::max(first, i - band); j < i; ++j)
+        dense(i, j) = dense(j, i) = negative(rng) ? -magnitude(rng) : magnitude(rng);
+    first += size;
+  }
+  for (Index i = 0; i < n; ++i) dense(i, i) = dense.row(i).cwiseAbs().sum() + margin(rng);
+  return dense.sparseView();
+}
+
+Vector random_vector(Index n, std::mt19937& rng) {
+  std::uniform_real_distribution<double> value(-1.0, 1.0);
+  Vector v(n);
+  for (Index i = 0; i < n; ++i) v[i] = value(rng);
+  return v;
+}
+
+// || x - x_eigen || / || x_eigen || against Eigen's dense Cholesky (LL^T) of the same system.
+double relative_error(const BandedLdlt& solver, const Sparse& matrix, const Vector& rhs) {
+  Vector x = Vector::Constant(rhs.size(), 123.0);  // whatever was in it must not matter
+  solver.solve(rhs, x);
+  const Vector reference = Matrix(matrix).llt().solve(rhs);
+  return (x - reference).norm() / reference.norm();
+}
+
+TEST(BandedLdlt, MatchesDenseCholeskyForOneBlock) {
+  std::mt19937 rng(11);
+  for (Index band : {0, 1, 2, 5}) {
+    for (Index n : {1, 2, 3, 7, 1000}) {
+      const Sparse matrix = random_banded({n}, band, rng);
+      const BandedLdlt solver(matrix);
+      EXPECT_EQ(solver.size(), n);
+      EXPECT_EQ(solver.bandwidth(), std::min(band, n - 1));
+      const double error = relative_error(solver, matrix, random_vector(n, rng));
+      std::cout << "bandwidth " << band << ", n = " << n << ": relative error " << error << "\n";
+      EXPECT_LE(error, 1e-12) << "bandwidth " << band << ", n = " << n;
+    }
+  }
+}
+
+TEST(BandedLdlt, MatchesDenseCholeskyForIndependentBlocks) {
+  std::mt19937 rng(13);
+  const std::vector<std::vector<Index>> layouts = {
+      {1, 2}, {2, 1, 3}, {5, 1, 13, 2, 8, 3, 1, 40, 2, 7}, {500, 2, 1, 497}};
+  for (Index band : {2, 5}) {
+    for (const auto& blocks : layouts) {
+      const Sparse matrix = random_banded(blocks, band, rng);
+      const BandedLdlt solver(matrix);
+      const double error = relative_error(solver, matrix, random_vector(matrix.rows(), rng));
+      std::cout << "bandwidth " << band << ", " << blocks.size() << " blocks, n = " << matrix.rows()
+                << ": relative error " << error << "\n";
+      EXPECT_LE(error, 1e-12) << "bandwidth " << band << ", n = " << matrix.rows();
+    }
+  }
+}
+
+TEST(BandedLdlt, BandwidthOfIsTheFarthestNonZeroFromTheDiagonal) {
+  Sparse matrix = Sparse(Matrix::Identity(6, 6).sparseView());
+  EXPECT_EQ(BandedLdlt::bandwidth_of(matrix), 0);
+  matrix.coeffRef(4, 1) = 0.5;
+  matrix.coeffRef(1, 4) = 0.5;
+  EXPECT_EQ(BandedLdlt::bandwidth_of(matrix), 3);
+  matrix.coeffRef(5, 0) = 0.0;  // a stored zero does not widen the band
+  EXPECT_EQ(BandedLdlt::bandwidth_of(matrix), 3);
+}
+
+TEST(BandedLdlt, IndefiniteMatrixThrowsNamingItsEquation) {
+  std::mt19937 rng(19);
+  Sparse matrix = random_banded({10}, 2, rng);
+  matrix.coeffRef(4, 4) = -100.0;
+  try {
+    const BandedLdlt solver(matrix);
+    FAIL() << "no exception";
+  } catch (const std::domain_error& error) {
+    std::cout << error.what() << "\n";
+    EXPECT_NE(std::string(error.what()).find("equation 4"), std::string::npos) << error.what();
+  }
+}
+
+TEST(BandedLdlt, SingularMatrixThrows) {
+  Sparse matrix(2, 2);
+  matrix.insert(0, 0) = 1.0;
+  matrix.insert(1, 0) = 1.0;
+  matrix.insert(0, 1) = 1.0;
+  matrix.insert(1, 1) = 1.0;
+  EXPECT_THROW(BandedLdlt{matrix}, std::domain_error);
+}
+
+}  // namespace
+}  // namespace pound::assembly

@@ -1,0 +1,218 @@
+#include "assembly/structural_system.hpp"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <iostream>
+#include <numbers>
+#include <random>
+#include <string>
+
+#include "assembly/banded_ldlt.hpp"
+#include "contact/gap_spring.hpp"
+#include "core/errors.hpp"
+
+namespace pound::assembly {
+namespace {
+
+model::Truss truss(Index i, Index j, double youngs_modulus, double area, double density) {
+  return {.id = fmt::format("e{}_{}", i, j),
+          .node_i = i,
+          .node_j = j,
+          .youngs_modulus = youngs_modulus,
+          .area = area,
+          .density = density};
+}
+
+model::Link link(Index i, Index j, model::Coordinates axis, double gap = 0.0) {
+  return {.id = fmt::format("l{}_{}", i, j),
+          .node_i = i,
+          .node_j = j,
+          .axis = axis,
+          .gap = gap,
+          .law = std::make_shared<contact::GapSpring>(1.0)};
+}
+
+// x = 0, 1, 3, 4.5; node 0 fixed, a lumped mass on node 3. Element stiffnesses E A / L:
+// 100 * 2 / 1 = 200, 200 * 1 / 2 = 100, 50 * 3 / 1.5 = 100; half masses rho A L / 2: 1, 0.5, 4.5.
+model::Model chain() {
+  model::Model m;
+  m.dimension = 1;
+  for (double x : {0.0, 1.0, 3.0, 4.5})
+    m.nodes.push_back({fmt::format("n{}", m.nodes.size()), {x, 0.0}});
+  m.trusses = {truss(0, 1, 100.0, 2.0, 1.0), truss(1, 2, 200.0, 1.0, 0.5),
+               truss(2, 3, 50.0, 3.0, 2.0)};
+  m.supports = {{.node = 0, .fixed = {true, false}}};
+  m.masses = {{.node = 3, .mass = 7.0}};
+  return m;
+}
+
+// One truss of length 2 at 30 degrees, E A / L = 10 * 3 / 2 = 15, rho A L / 2 = 0.5 * 3 * 2 / 2.
+constexpr double kAxial = 15.0, kHalfMass = 1.5;
+const double kCos = std::cos(std::numbers::pi / 6), kSin = std::sin(std::numbers::pi / 6);
+
+model::Model inclined_truss() {
+  model::Model m;
+  m.dimension = 2;
+  m.nodes = {{"a", {0.0, 0.0}}, {"b", {2.0 * kCos, 2.0 * kSin}}};
+  m.trusses = {truss(0, 1, 10.0, 3.0, 0.5)};
+  return m;
+}
+
+double relative_difference(const Matrix& actual, const Matrix& expected) {
+  return (actual - expected).norm() / expected.norm();
+}
+
+Vector random_vector(Index n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> value(-1.0, 1.0);
+  Vector v(n);
+  for (Index i = 0; i < n; ++i) v[i] = value(rng);
+  return v;
+}
+
+// Solves (c_m M + c_k K) x = b with system.factor and compares with a dense Cholesky solve.
+double factor_error(const StructuralSystem& system, double c_m, double c_k) {
+  const Matrix effective =
+      c_m * Matrix(system.lumped_mass()->asDiagonal()) + c_k * Matrix(system.stiffness());
+  const Vector rhs = random_vector(system.size(), 42);
+  Vector x;
+  system.factor(c_m, 0.0, c_k)->solve(rhs, x);
+  const Vector expected = effective.llt().solve(rhs);
+  return (x - expected).norm() / expected.norm();
+}
+
+TEST(StructuralSystem, ChainStiffnessAndMassAreTheHandAssembledOnes) {
+  const StructuralSystem system(chain());
+  ASSERT_EQ(system.size(), 3);
+  Matrix stiffness(3, 3);
+  stiffness << 300, -100, 0,  //
+      -100, 200, -100,        //
+      0, -100, 100;
+  const Vector mass = Vector{{1.5, 5.0, 11.5}};
+  const double k_error = relative_difference(Matrix(system.stiffness()), stiffness);
+  const double m_error = relative_difference(*system.lumped_mass(), mass);
+  std::cout << "K relative error " << k_error << ", M relative error " << m_error << "\n";
+  EXPECT_LE(k_error, 1e-14);
+  EXPECT_LE(m_error, 1e-14);
+
+  // The operators agree with the matrices.
+  const Vector x = random_vector(3, 1);
+  Vector y;
+  system.multiply_stiffness(x, y);
+  EXPECT_LE((y - stiffness * x).norm(), 1e-12 * (stiffness * x).norm());
+  system.multiply_mass(x, y);
+  EXPECT_LE((y - mass.cwiseProduct(x)).norm(), 1e-14 * mass.cwiseProduct(x).norm());
+}
+
+TEST(StructuralSystem, InclinedTrussHasTheRotatedStiffness) {
+  const StructuralSystem system(inclined_truss());
+  ASSERT_EQ(system.size(), 4);
+  Matrix rotation(2, 2);
+  rotation << kCos * kCos, kCos * kSin,  //
+      kCos * kSin, kSin * kSin;
+  Matrix stiffness(4, 4);
+  stiffness << rotation, -rotation, -rotation, rotation;
+  stiffness *= kAxial;
+  const double k_error = relative_difference(Matrix(system.stiffness()), stiffness);
+  const double m_error = relative_difference(*system.lumped_mass(), Vector::Constant(4, kHalfMass));
+  std::cout << "K relative error " << k_error << ", M relative error " << m_error << "\n";
+  EXPECT_LE(k_error, 1e-14);
+  EXPECT_LE(m_error, 1e-14);
+}
+
+TEST(StructuralSystem, SupportsRemoveEquations) {
+  model::Model m = inclined_truss();
+  m.supports = {{.node = 0, .fixed = {true, true}}, {.node = 1, .fixed = {false, true}}};
+  const StructuralSystem system(m);
+  ASSERT_EQ(system.size(), 1);
+  EXPECT_EQ(system.dofs().equation(0, 0), -1);
+  EXPECT_EQ(system.dofs().equation(0, 1), -1);
+  EXPECT_EQ(system.dofs().equation(1, 0), 0);
+  EXPECT_EQ(system.dofs().equation(1, 1), -1);
+  EXPECT_NEAR(Matrix(system.stiffness())(0, 0), kAxial * kCos * kCos, 1e-14 * kAxial);
+  EXPECT_DOUBLE_EQ((*system.lumped_mass())[0], kHalfMass);
+}
+
+TEST(StructuralSystem, LumpedMassActsInEveryDirection) {
+  model::Model m = inclined_truss();
+  m.masses = {{.node = 1, .mass = 2.0}};
+  const StructuralSystem system(m);
+  EXPECT_DOUBLE_EQ((*system.lumped_mass())[2], kHalfMass + 2.0);
+  EXPECT_DOUBLE_EQ((*system.lumped_mass())[3], kHalfMass + 2.0);
+}
+
+TEST(StructuralSystem, FreeNodeWithoutMassIsAnInputError) {
+  model::Model m = chain();
+  m.nodes.push_back({"loose", {9.0, 0.0}});
+  try {
+    const StructuralSystem system(m);
+    FAIL() << "no exception";
+  } catch (const InputError& error) {
+    std::cout << error.what() << "\n";
+    EXPECT_EQ(error.where(), "/nodes/4");
+    EXPECT_NE(error.reason().find("'loose'"), std::string::npos) << error.what();
+  }
+}
+
+TEST(StructuralSystem, MasslessElementLeavesItsFreeNodeWithoutMass) {
+  model::Model m = chain();
+  m.trusses[2].density = 0.0;
+  m.masses.clear();
+  EXPECT_THROW(StructuralSystem{m}, InputError);
+}
+
+TEST(StructuralSystem, LinkRowsCarryTheAxisWithOppositeSigns) {
+  model::Model m;
+  m.dimension = 2;
+  m.nodes = {{"p", {0.0, 0.0}}, {"q", {3.0, 4.0}}, {"wall", {5.0, 4.0}}};
+  m.masses = {{.node = 0, .mass = 1.0}, {.node = 1, .mass = 1.0}};
+  m.supports = {{.node = 2, .fixed = {true, true}}};
+  m.links = {link(0, 1, {0.6, 0.8}, 0.01), link(1, 2, {1.0, 0.0}), link(2, 0, {0.0, 1.0})};
+  StructuralSystem system(m);
+  ASSERT_EQ(system.size(), 4);
+  const LinkSet& links = system.links();
+  ASSERT_EQ(links.size(), 3);
+  Matrix expected(3, 4);
+  expected << 0.6, 0.8, -0.6, -0.8,  // +n at i, -n at j
+      0.0, 0.0, 1.0, 0.0,            // the wall's term is dropped
+      0.0, -1.0, 0.0, 0.0;           // i is the wall: only -n at j
+  EXPECT_EQ(Matrix(links.connectivity()), expected);
+  EXPECT_EQ(links.gaps(), (Vector{{0.01, 0.0, 0.0}}));
+}
+
+TEST(StructuralSystem, FactorSolvesTheEffectiveMatrix) {
+  // A chain (tridiagonal), a plane truss (band 3) and a chain closed by an element from its first
+  // to its last node (band 38): each kind of factor StructuralSystem chooses.
+  model::Model ring;
+  ring.dimension = 1;
+  for (int i = 0; i < 40; ++i) ring.nodes.push_back({fmt::format("r{}", i), {1.0 * i, 0.0}});
+  for (Index i = 0; i + 1 < 40; ++i) ring.trusses.push_back(truss(i, i + 1, 100.0, 1.0, 0.1));
+  ring.trusses.push_back(truss(0, 39, 100.0, 1.0, 0.1));
+  ring.supports = {{.node = 20, .fixed = {true, false}}};
+
+  model::Model plane = inclined_truss();
+  plane.nodes.push_back({"c", {4.0, 0.0}});
+  plane.trusses.push_back(truss(1, 2, 10.0, 3.0, 0.5));
+  plane.supports = {{.node = 0, .fixed = {true, true}}};
+
+  const model::Model models[] = {chain(), plane, ring};
+  const char* names[] = {"chain", "plane truss", "closed chain"};
+  const Index bands[] = {1, 3, 38};  // twisted tridiagonal, banded LDL^T, sparse LDL^T
+  for (int k = 0; k < 3; ++k) {
+    const StructuralSystem system(models[k]);
+    EXPECT_EQ(BandedLdlt::bandwidth_of(system.stiffness()), bands[k]) << names[k];
+    for (const auto& [c_m, c_k] : {std::pair{4.0e4, 1.0}, std::pair{1.0, 0.5}}) {
+      const double error = factor_error(system, c_m, c_k);
+      std::cout << names[k] << " (" << system.size() << " DOFs, band "
+                << BandedLdlt::bandwidth_of(system.stiffness()) << "), c_m " << c_m << ", c_k "
+                << c_k << ": relative error " << error << "\n";
+      EXPECT_LE(error, 1e-12) << names[k];
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pound::assembly

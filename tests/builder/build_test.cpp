@@ -1,0 +1,272 @@
+#include "builder/build.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "contact/gap_spring.hpp"
+#include "core/errors.hpp"
+#include "io/model_reader.hpp"
+
+namespace pound::builder {
+namespace {
+
+// A valid 1-D model in which every kind of reference occurs once; the error cases change one
+// thing in it (RFC 6902 patch). Nodes b and c are at the same place.
+constexpr const char* kModel = R"({
+  "nodes": [{"id": "a", "x": 0.0}, {"id": "b", "x": 1.0}, {"id": "c", "x": 1.0}],
+  "materials": [{"id": "steel", "youngs_modulus": 100, "density": 1}],
+  "elements": [{"id": "e0", "type": "truss", "nodes": ["a", "b"], "material": "steel",
+                "area": 1}],
+  "masses": [{"node": "c", "mass": 1}],
+  "supports": [{"node": "a", "fix": ["x"]}],
+  "initial_velocities": [{"node": "c", "x": -0.1}],
+  "links": [{"id": "joint", "nodes": ["b", "c"], "axis": [1],
+             "law": {"type": "gap_spring", "stiffness": 10}}],
+  "analysis": {"time_step": 0.01, "duration": 1},
+  "recorders": [{"type": "link", "links": ["joint"], "file": "joint.csv"},
+                {"type": "node", "nodes": ["c"], "file": "c.csv"}]
+})";
+
+// A model that is one rod pair and nothing else.
+constexpr const char* kRodPair = R"({
+  "generators": [{
+    "type": "rod_pair", "id": "rods",
+    "left":  {"youngs_modulus": 100, "density": 0.1, "area": 1, "length": 10, "elements": 10,
+              "initial_velocity": 0.1},
+    "right": {"youngs_modulus": 100, "density": 0.1, "area": 1, "length": 10, "elements": 10,
+              "initial_velocity": -0.1},
+    "law": {"type": "gap_spring", "stiffness_ratio": 1.0}
+  }],
+  "analysis": {"time_step": 0.01, "duration": 1}
+})";
+
+std::string patched(const char* model, const std::string& json_patch) {
+  return nlohmann::json::parse(model).patch(nlohmann::json::parse(json_patch)).dump();
+}
+
+ModelSpec spec_of(const std::string& text) { return io::parse_model(text, "m.json"); }
+
+std::optional<InputError> build_error(const ModelSpec& spec) {
+  try {
+    (void)build(spec);
+  } catch (const InputError& error) {
+    return error;
+  }
+  return std::nullopt;
+}
+
+// Building `spec` must fail at `where` (in m.json) with a reason containing `part`.
+void expect_error(const ModelSpec& spec, const std::string& where, const std::string& part) {
+  const std::optional<InputError> error = build_error(spec);
+  ASSERT_TRUE(error.has_value()) << "no error, expected one at " << where;
+  EXPECT_EQ(error->file(), "m.json");
+  EXPECT_EQ(error->where(), where) << error->what();
+  EXPECT_NE(error->reason().find(part), std::string::npos) << error->what();
+}
+
+// The same for kModel with `json_patch` applied.
+void expect_error(const std::string& json_patch, const std::string& where,
+                  const std::string& part) {
+  expect_error(spec_of(patched(kModel, json_patch)), where, part);
+}
+
+double law_stiffness(const model::Link& link) {
+  return dynamic_cast<const contact::GapSpring&>(*link.law).stiffness();
+}
+
+TEST(Build, UnchangedModelBuilds) {
+  const BuiltModel built = build(spec_of(kModel));
+  EXPECT_EQ(built.model.nodes.size(), 3u);
+  EXPECT_EQ(built.model.trusses.size(), 1u);
+  ASSERT_EQ(built.model.links.size(), 1u);
+  EXPECT_EQ(built.model.links[0].node_i, built.node_index.at("b"));
+  EXPECT_EQ(built.model.links[0].node_j, built.node_index.at("c"));
+  EXPECT_EQ(built.recorders.size(), 2u);
+  EXPECT_FALSE(built.sole_rod_pair.has_value());
+}
+
+TEST(Build, ErrorMessageNamesFileAndPath) {
+  const auto error =
+      build_error(spec_of(patched(kModel, R"([{"op": "replace", "path": "/elements/0/nodes/1",
+                                   "value": "zz"}])")));
+  ASSERT_TRUE(error.has_value());
+  EXPECT_STREQ(error->what(), "m.json: /elements/0/nodes/1: node 'zz' does not exist");
+}
+
+TEST(Build, ElementNodeMissing) {
+  expect_error(R"([{"op": "replace", "path": "/elements/0/nodes/1", "value": "zz"}])",
+               "/elements/0/nodes/1", "node 'zz' does not exist");
+}
+
+TEST(Build, ElementMaterialMissing) {
+  expect_error(R"([{"op": "replace", "path": "/elements/0/material", "value": "wood"}])",
+               "/elements/0/material", "material 'wood' does not exist");
+}
+
+TEST(Build, ZeroLengthElement) {
+  expect_error(R"([{"op": "replace", "path": "/elements/0/nodes/0", "value": "c"}])",
+               "/elements/0/nodes", "zero length");
+}
+
+TEST(Build, LinkJoiningANodeToItself) {
+  // The reader already refuses ["b", "b"] (a repeated name); the builder checks it again for
+  // specs made in code.
+  ModelSpec spec = spec_of(kModel);
+  spec.links[0].node_j = spec.links[0].node_i;
+  expect_error(spec, "/links/0/nodes", "cannot join a node to itself");
+}
+
+TEST(Build, LinkBetweenCoincidentNodesNeedsAnAxis) {
+  expect_error(R"([{"op": "remove", "path": "/links/0/axis"}])", "/links/0", "\"axis\"");
+}
+
+TEST(Build, RecorderNamingAMissingLink) {
+  expect_error(R"([{"op": "replace", "path": "/recorders/0/links/0", "value": "nope"}])",
+               "/recorders/0/links/0", "link 'nope' does not exist");
+}
+
+TEST(Build, RecorderNamingAMissingNode) {
+  expect_error(R"([{"op": "replace", "path": "/recorders/1/nodes/0", "value": "nope"}])",
+               "/recorders/1/nodes/0", "node 'nope' does not exist");
+}
+
+TEST(Build, MassOnAMissingNode) {
+  expect_error(R"([{"op": "replace", "path": "/masses/0/node", "value": "nope"}])",
+               "/masses/0/node", "node 'nope' does not exist");
+}
+
+TEST(Build, SupportOnAMissingNode) {
+  expect_error(R"([{"op": "replace", "path": "/supports/0/node", "value": "nope"}])",
+               "/supports/0/node", "node 'nope' does not exist");
+}
+
+TEST(Build, InitialVelocityOnAMissingNode) {
+  expect_error(R"([{"op": "replace", "path": "/initial_velocities/0/node", "value": "nope"}])",
+               "/initial_velocities/0/node", "node 'nope' does not exist");
+}
+
+TEST(Build, UserNodeWithAGeneratedId) {
+  const std::string text = patched(kRodPair, R"([{"op": "add", "path": "/nodes",
+                                                  "value": [{"id": "rods.left.0", "x": 5}]}])");
+  expect_error(spec_of(text), "/generators/0",
+               "duplicate node id 'rods.left.0' (also at /nodes/0)");
+}
+
+// Generated entries are blamed on the generator that made them, not on the first one.
+TEST(Build, ClashWithTheSecondGeneratorNamesIt) {
+  const std::string text = patched(kRodPair, R"([
+      {"op": "copy", "from": "/generators/0", "path": "/generators/1"},
+      {"op": "replace", "path": "/generators/1/id", "value": "more"},
+      {"op": "add", "path": "/nodes", "value": [{"id": "more.left.0", "x": 5}]}])");
+  expect_error(spec_of(text), "/generators/1",
+               "duplicate node id 'more.left.0' (also at /nodes/0)");
+}
+
+TEST(Build, RodPairNeedsA1dScene) {
+  expect_error(spec_of(patched(kRodPair, R"([{"op": "add", "path": "/dimension", "value": 2}])")),
+               "/generators/0", "1-D");
+}
+
+TEST(Build, RodPairExpandsIntoNodesElementsAndOneLink) {
+  const BuiltModel built = build(spec_of(kRodPair));
+  const model::Model& model = built.model;
+  const int n = 10;
+  EXPECT_EQ(model.nodes.size(), static_cast<std::size_t>(2 * (n + 1)));
+  EXPECT_EQ(model.trusses.size(), static_cast<std::size_t>(2 * n));
+  EXPECT_TRUE(model.supports.empty());
+  ASSERT_EQ(model.links.size(), 1u);
+  const model::Link& link = model.links[0];
+  EXPECT_EQ(link.id, "rods.contact");
+  EXPECT_EQ(link.axis, (model::Coordinates{1.0, 0.0}));
+  EXPECT_EQ(link.node_i, built.node_index.at("rods.left.10"));
+  EXPECT_EQ(link.node_j, built.node_index.at("rods.right.0"));
+  EXPECT_EQ(model.nodes[static_cast<std::size_t>(built.node_index.at("rods.left.0"))].position[0],
+            -10.0);
+  EXPECT_EQ(model.nodes[static_cast<std::size_t>(link.node_i)].position[0], 0.0);
+  EXPECT_EQ(model.nodes[static_cast<std::size_t>(link.node_j)].position[0], 0.0);
+  EXPECT_DOUBLE_EQ(
+      model.nodes[static_cast<std::size_t>(built.node_index.at("rods.right.10"))].position[0],
+      10.0);
+  ASSERT_EQ(model.initial_velocity.size(), model.nodes.size());
+  EXPECT_EQ(model.initial_velocity[static_cast<std::size_t>(link.node_i)][0], 0.1);
+  EXPECT_EQ(model.initial_velocity[static_cast<std::size_t>(link.node_j)][0], -0.1);
+  ASSERT_TRUE(built.sole_rod_pair.has_value());
+  EXPECT_EQ(built.sole_rod_pair->id, "rods");
+}
+
+TEST(Build, StiffnessRatioIsTakenFromTheSofterAdjacentElement) {
+  // Left: E A / h = 100 * 1 / (10 / 10) = 100; right: 200 * 2 / (5 / 4) = 320.
+  const std::string unequal = patched(kRodPair, R"([
+    {"op": "replace", "path": "/generators/0/right",
+     "value": {"youngs_modulus": 200, "density": 0.2, "area": 2, "length": 5, "elements": 4}},
+    {"op": "replace", "path": "/generators/0/law/stiffness_ratio", "value": 1.5}])");
+  const BuiltModel built = build(spec_of(unequal));
+  EXPECT_EQ(built.model.nodes.size(), 11u + 5u);
+  EXPECT_EQ(built.model.trusses.size(), 10u + 4u);
+  ASSERT_EQ(built.model.links.size(), 1u);
+  EXPECT_DOUBLE_EQ(law_stiffness(built.model.links[0]), 1.5 * 100.0);
+
+  // The same with the rods swapped: the softer one is now on the right.
+  ModelSpec swapped = spec_of(unequal);
+  std::swap(swapped.rod_pairs[0].left, swapped.rod_pairs[0].right);
+  EXPECT_DOUBLE_EQ(law_stiffness(build(swapped).model.links[0]), 1.5 * 100.0);
+}
+
+TEST(Build, FixedFarEndBecomesASupportOnTheRightRod) {
+  const BuiltModel built =
+      build(spec_of(patched(kRodPair, R"([{"op": "add", "path": "/generators/0/right/far_end",
+                              "value": "fixed"}])")));
+  ASSERT_EQ(built.model.supports.size(), 1u);
+  EXPECT_EQ(built.model.supports[0].node, built.node_index.at("rods.right.10"));
+  EXPECT_TRUE(built.model.supports[0].fixed[0]);
+  EXPECT_FALSE(built.model.supports[0].fixed[1]);
+}
+
+TEST(Build, DiagonalLinkAxisComesFromCoordinates) {
+  const BuiltModel built = build(spec_of(R"({
+    "dimension": 2,
+    "nodes": [{"id": "p", "x": 1, "y": 1}, {"id": "q", "x": 4, "y": 5}],
+    "masses": [{"node": "p", "mass": 1}, {"node": "q", "mass": 1}],
+    "links": [{"id": "l", "nodes": ["p", "q"], "law": {"type": "gap_spring", "stiffness": 1}}],
+    "analysis": {"time_step": 0.01, "duration": 1}
+  })"));
+  ASSERT_EQ(built.model.links.size(), 1u);
+  EXPECT_DOUBLE_EQ(built.model.links[0].axis[0], 0.6);
+  EXPECT_DOUBLE_EQ(built.model.links[0].axis[1], 0.8);
+}
+
+TEST(Build, LinkAxisIn1dPointsFromITowardsJ) {
+  const BuiltModel built = build(spec_of(R"({
+    "nodes": [{"id": "p", "x": 3}, {"id": "q", "x": 1}],
+    "masses": [{"node": "p", "mass": 1}, {"node": "q", "mass": 1}],
+    "links": [{"id": "l", "nodes": ["p", "q"], "law": {"type": "gap_spring", "stiffness": 1}}],
+    "analysis": {"time_step": 0.01, "duration": 1}
+  })"));
+  ASSERT_EQ(built.model.links.size(), 1u);
+  EXPECT_EQ(built.model.links[0].axis, (model::Coordinates{-1.0, 0.0}));
+}
+
+TEST(Build, WithoutRecordersEveryLinkIsRecordedToLinksCsv) {
+  const BuiltModel built = build(spec_of(patched(kModel, R"([
+    {"op": "remove", "path": "/recorders"},
+    {"op": "add", "path": "/links/-",
+     "value": {"id": "second", "nodes": ["a", "c"], "law": {"type": "gap_spring",
+                                                            "stiffness": 1}}}])")));
+  ASSERT_EQ(built.recorders.size(), 1u);
+  EXPECT_EQ(built.recorders[0].type, "link");
+  EXPECT_EQ(built.recorders[0].file, "links.csv");
+  EXPECT_EQ(built.recorders[0].items, (std::vector<Index>{0, 1}));
+}
+
+TEST(Build, EmptyRecordersRecordNothing) {
+  const BuiltModel built =
+      build(spec_of(patched(kModel, R"([{"op": "replace", "path": "/recorders", "value": []}])")));
+  EXPECT_TRUE(built.recorders.empty());
+}
+
+}  // namespace
+}  // namespace pound::builder
