@@ -95,9 +95,30 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
     }
     rows.push_back(std::move(row));
     gaps.push_back(link.gap);
-    laws.push_back(link.law->clone());
+    laws.push_back(link.make_law(link_context(link)));
   }
   links_ = LinkSet(n, rows, std::move(gaps), std::move(laws));
+}
+
+contact::LinkContext StructuralSystem::link_context(const model::Link& link) const {
+  contact::LinkContext context;
+  // Mass and diagonal stiffness of one end along the axis: n^T K_nn n over its free DOFs.
+  auto end = [&](Index node, double& mass, double& stiffness, bool& fixed) {
+    fixed = true;
+    for (int d = 0; d < dofs_.dofs_per_node(); ++d) {
+      const double n_d = link.axis[static_cast<std::size_t>(d)];
+      const Index row = dofs_.equation(node, d);
+      if (n_d == 0.0 || row < 0) continue;
+      fixed = false;
+      mass = mass_[row];
+      for (int e = 0; e < dofs_.dofs_per_node(); ++e)
+        if (const Index col = dofs_.equation(node, e); col >= 0)
+          stiffness += n_d * link.axis[static_cast<std::size_t>(e)] * stiffness_.coeff(row, col);
+    }
+  };
+  end(link.node_i, context.mass_i, context.stiffness_i, context.fixed_i);
+  end(link.node_j, context.mass_j, context.stiffness_j, context.fixed_j);
+  return context;
 }
 
 void StructuralSystem::multiply_mass(const Vector& x, Vector& y) const {

@@ -27,6 +27,8 @@ class StructuralSystem final : public SecondOrderSystem {
   const model::DofMap& dofs() const { return dofs_; }
   const Vector* lumped_mass() const override { return &mass_; }
   const Eigen::SparseMatrix<double>& stiffness() const { return stiffness_; }
+  // What a link's law may need of the bodies it joins (masses and stiffnesses at its ends).
+  contact::LinkContext link_context(const model::Link& link) const;
   // u, v at t = 0 from the model's initial velocities (displacements zero).
   Vector initial_velocity(const model::Model& model) const;
 

@@ -3,10 +3,19 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 #include <functional>
 
 #include "builder/generators.hpp"
+#include "contact/bilinear_impact.hpp"
+#include "contact/extended_penalty.hpp"
 #include "contact/gap_spring.hpp"
+#include "contact/hertz.hpp"
+#include "contact/hertz_damp.hpp"
+#include "contact/jankowski.hpp"
+#include "contact/kelvin_voigt.hpp"
+#include "contact/restitution.hpp"
+#include "contact/restrainer.hpp"
 #include "core/errors.hpp"
 #include "integrators/newmark.hpp"
 
@@ -58,9 +67,100 @@ std::function<std::string(std::size_t)> origin_of(std::size_t user_count, const 
 
 }  // namespace
 
-std::shared_ptr<const contact::ContactLaw> make_law(const LawSpec& law) {
-  if (law.type == "gap_spring") return std::make_shared<contact::GapSpring>(law.stiffness.value());
-  throw std::invalid_argument("unknown contact law " + law.type);
+model::LawFactory make_law(const LawSpec& law, const std::string& source, const std::string& path) {
+  using contact::LinkContext;
+  const auto number = [law](const std::string& name) { return law.number(name); };
+  // The effective mass a law calibrates with: given, or from the model.
+  const auto effective_mass = [law, source, path](const LinkContext& context) {
+    const double mass = law.number("mass").value_or(context.effective_mass());
+    if (!(mass > 0.0) || !std::isfinite(mass))
+      throw InputError(source, path + "/mass",
+                       fmt::format("{} needs the effective mass of the bodies it joins, and the "
+                                   "model gives {} (both ends fixed or massless): give 'mass'",
+                                   law.type, mass));
+    return mass;
+  };
+  const std::string& type = law.type;
+  if (type == "gap_spring") {
+    const double k = *number("stiffness");
+    return [k](const LinkContext&) { return std::make_unique<contact::GapSpring>(k); };
+  }
+  if (type == "kelvin_voigt") {
+    const double k = *number("stiffness");
+    const bool clip = law.choice("tension", "clip") == "clip";
+    const std::optional<double> damping = number("damping"), e = number("restitution");
+    return [=](const LinkContext& context) {
+      const double c = damping ? *damping
+                               : 2.0 * contact::kelvin_voigt_damping_ratio(*e) *
+                                     std::sqrt(k * effective_mass(context));
+      return std::make_unique<contact::KelvinVoigt>(k, c, clip);
+    };
+  }
+  if (type == "hertz") {
+    const double k = *number("stiffness");
+    return [k](const LinkContext&) { return std::make_unique<contact::Hertz>(k); };
+  }
+  if (type == "hertz_damp") {
+    const double k = *number("stiffness");
+    const double ratio = number("damping_ratio").value_or(
+        number("restitution") ? contact::hertz_damp_ratio_ye(*number("restitution")) : 0.0);
+    return [k, ratio](const LinkContext&) { return std::make_unique<contact::HertzDamp>(k, ratio); };
+  }
+  if (type == "jankowski") {
+    const double k = *number("stiffness");
+    const double ratio = number("damping_ratio").value_or(
+        number("restitution") ? contact::jankowski_damping_ratio(*number("restitution")) : 0.0);
+    return [=](const LinkContext& context) {
+      return std::make_unique<contact::Jankowski>(k, ratio, effective_mass(context));
+    };
+  }
+  if (type == "bilinear_impact") {
+    if (number("k1"))
+      return [loop = contact::BilinearImpact::Loop{*number("k1"), *number("k2"),
+                                                    *number("yield_penetration")}](const LinkContext&) {
+        return std::make_unique<contact::BilinearImpact>(loop);
+      };
+    const double k = *number("stiffness"), e = *number("restitution");
+    const double fraction = number("yield_fraction").value_or(0.1);
+    if ((1.0 - e * e) / (1.0 + e * e) >= 1.0 - fraction)
+      throw InputError(source, path + "/restitution",
+                       fmt::format("e = {} cannot be reached with yield_fraction {}: the loop "
+                                   "would need K2 <= 0 (raise e or lower yield_fraction)",
+                                   e, fraction));
+    return [=](const LinkContext& context) {
+      return std::make_unique<contact::BilinearImpact>(
+          contact::BilinearImpact::Calibration{k, e, effective_mass(context), fraction});
+    };
+  }
+  if (type == "extended_penalty") {
+    const double tolerance = number("tolerance").value_or(1e-3), eta = number("eta").value_or(1.0);
+    const std::optional<double> alpha0 = number("alpha0"), alpha1 = number("alpha1"),
+                                alpha2 = number("alpha2");
+    return [=](const LinkContext& context) {
+      contact::ExtendedPenalty::Numbers numbers{alpha0.value_or(0.0), 0.0, alpha2.value_or(0.0)};
+      if (!alpha0 || !alpha2) {
+        const auto automatic = contact::ExtendedPenalty::automatic(context, tolerance, eta);
+        if (!(automatic.alpha0 > 0.0) || !std::isfinite(automatic.alpha2))
+          throw InputError(source, path,
+                           "extended_penalty cannot take its numbers from the model: no "
+                           "stiffness at either contact node; give 'alpha0' and 'alpha2'");
+        if (!alpha0) numbers.alpha0 = automatic.alpha0;
+        // eq. 29 with the alpha0 actually used
+        if (!alpha2) numbers.alpha2 = automatic.alpha2 * numbers.alpha0 / automatic.alpha0;
+      }
+      numbers.alpha1 = alpha1.value_or(2.0 * eta * std::sqrt(numbers.alpha0 * numbers.alpha2));
+      return std::make_unique<contact::ExtendedPenalty>(numbers);
+    };
+  }
+  if (type == "restrainer" || type == "hook") {
+    const double k = *number("stiffness"), slack = number("slack").value_or(0.0);
+    const double yield = number("yield_force").value_or(std::numeric_limits<double>::infinity());
+    const double hardening = number("hardening_ratio").value_or(0.0);
+    return [=](const LinkContext&) {
+      return std::make_unique<contact::Restrainer>(type, k, slack, yield, hardening);
+    };
+  }
+  throw std::invalid_argument("unknown contact law " + type);
 }
 
 std::unique_ptr<Integrator> make_integrator(const AnalysisSpec& analysis) {
@@ -159,7 +259,12 @@ BuiltModel build(const ModelSpec& user_spec) {
                                        spec_link.node_i, spec_link.node_j));
       link.axis = {dx / length, dy / length};
     }
-    link.law = make_law(spec_link.law);
+    const bool tension_law = spec_link.law.type == "restrainer" || spec_link.law.type == "hook";
+    if (tension_law && spec_link.gap != 0.0)
+      resolve.fail(path + "/gap", fmt::format("a {} has 'slack' in its law, not a gap: the link's "
+                                              "gap must be 0, got {}",
+                                              spec_link.law.type, spec_link.gap));
+    link.make_law = make_law(spec_link.law, spec.source, path + "/law");
     model.links.push_back(std::move(link));
   }
 

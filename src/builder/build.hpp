@@ -34,8 +34,10 @@ struct BuiltModel {
 
 BuiltModel build(const ModelSpec& spec);
 
-// The contact law object a LawSpec names (stiffness already resolved).
-std::shared_ptr<const contact::ContactLaw> make_law(const LawSpec& law);
+// The factory of the law a LawSpec names (a rod pair's stiffness_ratio already resolved);
+// `source` and `path` locate the law in its file for errors the model reveals later (a law
+// that needs a mass where the model has none).
+model::LawFactory make_law(const LawSpec& law, const std::string& source, const std::string& path);
 
 std::unique_ptr<Integrator> make_integrator(const AnalysisSpec& analysis);
 TransientSettings make_transient_settings(const AnalysisSpec& analysis);

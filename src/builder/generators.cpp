@@ -40,10 +40,8 @@ std::string rod_node_id(const RodPairSpec& pair, int rod, int index) {
 
 std::string rod_link_id(const RodPairSpec& pair) { return pair.id + ".contact"; }
 
-double rod_pair_link_stiffness(const RodPairSpec& pair) {
-  if (pair.law.stiffness) return *pair.law.stiffness;
-  return pair.law.stiffness_ratio.value_or(1.0) *
-         std::min(element_stiffness(pair.left), element_stiffness(pair.right));
+double rod_pair_adjacent_stiffness(const RodPairSpec& pair) {
+  return std::min(element_stiffness(pair.left), element_stiffness(pair.right));
 }
 
 ModelSpec expand(const ModelSpec& spec) {
@@ -74,8 +72,10 @@ ModelSpec expand(const ModelSpec& spec) {
     link.gap = pair.gap;
     link.axis = std::vector<double>{1.0};
     link.law = pair.law;
-    link.law.stiffness = rod_pair_link_stiffness(pair);
-    link.law.stiffness_ratio.reset();
+    if (const auto ratio = pair.law.number("stiffness_ratio")) {
+      link.law.parameters["stiffness"] = *ratio * rod_pair_adjacent_stiffness(pair);
+      link.law.parameters.erase("stiffness_ratio");
+    }
     out.links.push_back(std::move(link));
     mark(spec.rod_pair_generator_index.empty() ? static_cast<int>(g)
                                                : spec.rod_pair_generator_index[g]);

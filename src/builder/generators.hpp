@@ -6,9 +6,9 @@
 
 namespace pound::builder {
 
-// Link stiffness from a rod pair's law: the explicit stiffness, or stiffness_ratio times the
-// axial stiffness E A / h of the softer element adjacent to the contact.
-double rod_pair_link_stiffness(const RodPairSpec& pair);
+// The axial stiffness E A / h of the softer element adjacent to a rod pair's contact, which a
+// law's stiffness_ratio multiplies.
+double rod_pair_adjacent_stiffness(const RodPairSpec& pair);
 
 // The spec with every generator replaced by what it generates (appended after the user's own
 // entries, in generator order).

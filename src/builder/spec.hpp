@@ -5,19 +5,28 @@
 //
 // Every vector here mirrors an array of the file, so an index k of `links` is the JSON path
 // "/links/k"; the builder names errors that way.
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace pound::builder {
 
-// A contact law, by name with its parameters. "gap_spring": Kawashima's compression-only spring,
-// with either "stiffness" [F/L] or (inside a rod_pair generator only) "stiffness_ratio", the
-// link stiffness over the axial stiffness E A / h of the softer adjacent element.
+// A contact law, by name with its parameters (builder/law_catalog.hpp lists them; the reader
+// has checked names, ranges and combinations against it).
 struct LawSpec {
-  std::string type;  // "gap_spring"
-  std::optional<double> stiffness;
-  std::optional<double> stiffness_ratio;
+  std::string type;
+  std::map<std::string, double> parameters;
+  std::map<std::string, std::string> choices;
+
+  std::optional<double> number(const std::string& name) const {
+    auto found = parameters.find(name);
+    return found == parameters.end() ? std::nullopt : std::optional<double>(found->second);
+  }
+  std::string choice(const std::string& name, const std::string& fallback) const {
+    auto found = choices.find(name);
+    return found == choices.end() ? fallback : found->second;
+  }
 };
 
 struct NodeSpec {

@@ -307,13 +307,12 @@ std::string JsonValue::as<std::string>() const {
   return json_->get<std::string>();
 }
 
-std::string JsonValue::as_one_of(std::initializer_list<std::string_view> options) const {
+std::string JsonValue::as_one_of(const std::vector<std::string>& options) const {
   const std::string value = as<std::string>();
   if (std::find(options.begin(), options.end(), value) != options.end()) return value;
-  std::vector<std::string> names(options.begin(), options.end());
   std::string listed;
-  for (const std::string& name : names) listed += (listed.empty() ? "'" : ", '") + name + "'";
-  fail(fmt::format("expected one of {}, got '{}'{}", listed, value, did_you_mean(value, names)));
+  for (const std::string& name : options) listed += (listed.empty() ? "'" : ", '") + name + "'";
+  fail(fmt::format("expected one of {}, got '{}'{}", listed, value, did_you_mean(value, options)));
 }
 
 std::vector<JsonValue> JsonValue::elements(std::size_t min_count, std::size_t max_count) const {
@@ -367,12 +366,12 @@ JsonValue JsonObject::at(std::string_view key) {
 }
 
 std::string JsonObject::one_of(std::string_view key,
-                               std::initializer_list<std::string_view> options) {
+                               const std::vector<std::string>& options) {
   return at(key).as_one_of(options);
 }
 
 std::string JsonObject::one_of(std::string_view key,
-                               std::initializer_list<std::string_view> options,
+                               const std::vector<std::string>& options,
                                std::string_view fallback) {
   const std::optional<JsonValue> value = find(key);
   return value ? value->as_one_of(options) : std::string(fallback);

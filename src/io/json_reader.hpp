@@ -89,7 +89,7 @@ class JsonValue {
   }
 
   // A string that must be one of `options`; a near miss is suggested.
-  std::string as_one_of(std::initializer_list<std::string_view> options) const;
+  std::string as_one_of(const std::vector<std::string>& options) const;
 
   // The elements of an array with min_count..max_count elements.
   std::vector<JsonValue> elements(
@@ -150,8 +150,8 @@ class JsonObject {
     return value->template as<T>(check...);
   }
 
-  std::string one_of(std::string_view key, std::initializer_list<std::string_view> options);
-  std::string one_of(std::string_view key, std::initializer_list<std::string_view> options,
+  std::string one_of(std::string_view key, const std::vector<std::string>& options);
+  std::string one_of(std::string_view key, const std::vector<std::string>& options,
                      std::string_view fallback);
 
   // The elements of an optional array field; none when it is absent.

@@ -1,7 +1,10 @@
 #include "io/model_reader.hpp"
 
+#include "builder/law_catalog.hpp"
+
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -171,19 +174,65 @@ std::vector<double> read_axis(const JsonValue& value, int dimension) {
   return axis;
 }
 
+Minimum lower_bound(builder::LawParameter::Range range) {
+  using Range = builder::LawParameter::Range;
+  return range == Range::positive || range == Range::restitution ? positive : non_negative;
+}
+
+std::string quoted_list(const std::vector<std::string>& names) {
+  std::string text;
+  for (std::size_t k = 0; k < names.size(); ++k)
+    text += fmt::format("{}'{}'", k == 0 ? "" : (k + 1 == names.size() ? " or " : ", "), names[k]);
+  return text;
+}
+
+// A law object checked against its entry in the law catalog.
 LawSpec read_law(JsonObject& object, LawPlace place) {
+  using Range = builder::LawParameter::Range;
   LawSpec law;
-  law.type = object.one_of("type", {"gap_spring"});
-  if (place == LawPlace::link && object.has("stiffness_ratio"))
-    object.at("stiffness_ratio").fail("only allowed inside a rod_pair generator");
-  law.stiffness = object.if_present<double>("stiffness", positive);
-  law.stiffness_ratio = object.if_present<double>("stiffness_ratio", positive);
+  law.type = object.one_of("type", builder::law_type_names());
+  const builder::LawType& type = *builder::find_law_type(law.type);
+  for (const std::string& name : type.required) (void)object.at(name);
+  for (const builder::LawParameter& parameter : type.parameters) {
+    const std::optional<JsonValue> value = object.find(parameter.name);
+    if (!value) continue;
+    const double number = value->as<double>(lower_bound(parameter.range));
+    if (parameter.range == Range::restitution && number > 1.0)
+      value->fail(fmt::format("must be <= 1 (a coefficient of restitution), got {}", number));
+    if (parameter.range == Range::fraction && number >= 1.0)
+      value->fail(fmt::format("must be < 1, got {}", number));
+    const bool generator_only = std::find(type.generator_only.begin(), type.generator_only.end(),
+                                          parameter.name) != type.generator_only.end();
+    if (generator_only && place == LawPlace::link) value->fail("only allowed inside a rod_pair generator");
+    law.parameters[parameter.name] = number;
+  }
+  for (const builder::LawChoice& choice : type.choices)
+    law.choices[choice.name] = object.one_of(choice.name, choice.values, choice.values.front());
   object.finish();  // so that a misspelt parameter is reported as such, not as a missing one
-  if (law.stiffness && law.stiffness_ratio)
-    object.fail("give either 'stiffness' or 'stiffness_ratio', not both");
-  if (!law.stiffness && !law.stiffness_ratio)
-    object.fail(place == LawPlace::link ? "needs 'stiffness'"
-                                        : "needs 'stiffness' or 'stiffness_ratio'");
+  auto given = [&law](const std::string& name) { return law.parameters.count(name) > 0; };
+  for (const std::vector<std::string>& group : type.exactly_one_of) {
+    const auto count = std::count_if(group.begin(), group.end(), given);
+    if (count > 1)
+      object.fail(group.size() == 2
+                      ? fmt::format("give either '{}' or '{}', not both", group[0], group[1])
+                      : fmt::format("give only one of {}", quoted_list(group)));
+    if (count == 0) {
+      std::vector<std::string> allowed = group;
+      if (place == LawPlace::link)
+        std::erase_if(allowed, [&type](const std::string& name) {
+          return std::find(type.generator_only.begin(), type.generator_only.end(), name) !=
+                 type.generator_only.end();
+        });
+      object.fail(fmt::format("{} needs {}", law.type, quoted_list(allowed)));
+    }
+  }
+  for (const auto& [name, needed] : type.needs)
+    for (const std::string& other : needed)
+      if (given(name) && !given(other)) object.fail(fmt::format("'{}' needs '{}'", name, other));
+  for (const auto& [name, excluded] : type.excludes)
+    for (const std::string& other : excluded)
+      if (given(name) && given(other))
+        object.at(other).fail(fmt::format("not allowed together with '{}'", name));
   return law;
 }
 

@@ -5,11 +5,13 @@
 // Degrees of freedom follow the scene: a 1-D (axial) scene carries 1 DOF per node (u_x); a
 // plane truss scene carries 2 (u_x, u_y). Nothing is padded to 3 or 6.
 #include <array>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "contact/contact_law.hpp"
+#include "contact/link_context.hpp"
 #include "core/types.hpp"
 
 namespace pound::model {
@@ -41,6 +43,11 @@ struct Support {
   std::array<bool, 2> fixed{};  // per direction (x, y)
 };
 
+// Makes a link's law once the assembled model can tell the law about the bodies it joins
+// (masses and stiffnesses at the two ends, for automatic numbers). Throws InputError when the
+// model cannot supply what the law needs.
+using LawFactory = std::function<std::unique_ptr<contact::ContactLaw>(const contact::LinkContext&)>;
+
 // Contact link between node i and node j along the unit axis n (from i towards j):
 // penetration delta = (u_i - u_j) . n - gap.
 struct Link {
@@ -49,7 +56,7 @@ struct Link {
   Index node_j = 0;
   Coordinates axis{1.0, 0.0};
   double gap = 0.0;  // initial clear distance [L], >= 0
-  std::shared_ptr<const contact::ContactLaw> law;  // prototype; each analysis clones it
+  LawFactory make_law;
 };
 
 struct Model {

@@ -54,7 +54,7 @@ builder::RodPairSpec kawashima_rod_pair(int elements, double stiffness_ratio) {
   pair.right = pair.left;
   pair.right.initial_velocity = -0.1;
   pair.law.type = "gap_spring";
-  pair.law.stiffness_ratio = stiffness_ratio;
+  pair.law.parameters["stiffness_ratio"] = stiffness_ratio;
   return pair;
 }
 

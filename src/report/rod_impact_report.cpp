@@ -8,8 +8,17 @@ namespace pound::report {
 
 std::vector<std::string> rod_impact_case_names() { return {"kawashima", "fixed-end", "area-ratio-3"}; }
 
-builder::RodPairSpec rod_impact_case(const std::string& name, int elements, double stiffness_ratio) {
+std::vector<std::string> rod_impact_law_names() { return {"gap_spring", "extended_penalty"}; }
+
+builder::RodPairSpec rod_impact_case(const std::string& name, int elements, double stiffness_ratio,
+                                     const std::string& law, double eta) {
   builder::RodPairSpec pair = kawashima_rod_pair(elements, stiffness_ratio);
+  if (law == "extended_penalty") {
+    pair.law = {.type = "extended_penalty", .parameters = {{"eta", eta}}};
+  } else if (law != "gap_spring") {
+    throw std::invalid_argument(fmt::format("unknown law '{}' for the rod pair (expected one of: {})",
+                                            law, fmt::join(rod_impact_law_names(), ", ")));
+  }
   if (name == "kawashima") return pair;
   pair.right.initial_velocity = 0.0;
   pair.right.far_end_fixed = true;

@@ -13,7 +13,11 @@ namespace pound::report {
 // The named benchmark cases: "kawashima" (two free rods, each at V0 = 0.1 towards the other),
 // "fixed-end" (a rod at 0.1 into an identical one at rest with its far end fixed; Suzuki & Toi)
 // and "area-ratio-3" (the same with the striking rod's area three times the struck one's).
-builder::RodPairSpec rod_impact_case(const std::string& name, int elements, double stiffness_ratio);
+// `law` is "gap_spring" (with the stiffness ratio) or "extended_penalty" (automatic numbers,
+// `eta` its damping factor).
+builder::RodPairSpec rod_impact_case(const std::string& name, int elements, double stiffness_ratio,
+                                     const std::string& law = "gap_spring", double eta = 1.0);
+std::vector<std::string> rod_impact_law_names();
 std::vector<std::string> rod_impact_case_names();
 
 io::Document to_document(const RodImpactMetrics& metrics);

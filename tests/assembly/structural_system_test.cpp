@@ -32,7 +32,9 @@ model::Link link(Index i, Index j, model::Coordinates axis, double gap = 0.0) {
           .node_j = j,
           .axis = axis,
           .gap = gap,
-          .law = std::make_shared<contact::GapSpring>(1.0)};
+          .make_law = [](const contact::LinkContext&) {
+            return std::make_unique<contact::GapSpring>(1.0);
+          }};
 }
 
 // x = 0, 1, 3, 4.5; node 0 fixed, a lumped mass on node 3. Element stiffnesses E A / L:

@@ -75,7 +75,8 @@ void expect_error(const std::string& json_patch, const std::string& where,
 }
 
 double law_stiffness(const model::Link& link) {
-  return dynamic_cast<const contact::GapSpring&>(*link.law).stiffness();
+  const auto law = link.make_law(contact::LinkContext{});
+  return dynamic_cast<const contact::GapSpring&>(*law).stiffness();
 }
 
 TEST(Build, UnchangedModelBuilds) {

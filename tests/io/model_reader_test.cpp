@@ -106,8 +106,8 @@ TEST(ModelReader, ReadsEveryField) {
   EXPECT_EQ(link.gap, 0.02);
   EXPECT_EQ(link.axis, std::vector<double>{1.0});
   EXPECT_EQ(link.law.type, "gap_spring");
-  EXPECT_EQ(link.law.stiffness, 1.0e8);
-  EXPECT_FALSE(link.law.stiffness_ratio);
+  EXPECT_EQ(link.law.number("stiffness"), 1.0e8);
+  EXPECT_FALSE(link.law.number("stiffness_ratio"));
 
   ASSERT_EQ(spec.rod_pairs.size(), 1u);
   EXPECT_EQ(spec.rod_pair_generator_index, std::vector<int>{0});
@@ -129,8 +129,8 @@ TEST(ModelReader, ReadsEveryField) {
   EXPECT_TRUE(pair.right.far_end_fixed);
   EXPECT_EQ(pair.gap, 0.5);
   EXPECT_EQ(pair.law.type, "gap_spring");
-  EXPECT_FALSE(pair.law.stiffness);
-  EXPECT_EQ(pair.law.stiffness_ratio, 1.5);
+  EXPECT_FALSE(pair.law.number("stiffness"));
+  EXPECT_EQ(pair.law.number("stiffness_ratio"), 1.5);
 
   const builder::AnalysisSpec& analysis = spec.analysis;
   EXPECT_EQ(analysis.integrator.type, "newmark");
