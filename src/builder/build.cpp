@@ -15,6 +15,7 @@
 #include "contact/jankowski.hpp"
 #include "contact/kelvin_voigt.hpp"
 #include "contact/restitution.hpp"
+#include "contact/restitution_calibration.hpp"
 #include "contact/restrainer.hpp"
 #include "core/errors.hpp"
 #include "integrators/newmark.hpp"
@@ -80,6 +81,17 @@ model::LawFactory make_law(const LawSpec& law, const std::string& source, const 
                                    law.type, mass));
     return mass;
   };
+  // Damping from a target restitution: exact (calibrated on the nondimensional impact) or the
+  // source's published formula.
+  const bool exact = law.choice("calibration", "exact") == "exact";
+  const auto calibrated = [&](contact::DampedImpact kind, double (*published)(double)) {
+    const double e = *law.number("restitution");
+    try {
+      return exact ? contact::damping_for_restitution(kind, e) : published(e);
+    } catch (const std::domain_error& error) {
+      throw InputError(source, path + "/restitution", error.what());
+    }
+  };
   const std::string& type = law.type;
   if (type == "gap_spring") {
     const double k = *number("stiffness");
@@ -88,11 +100,14 @@ model::LawFactory make_law(const LawSpec& law, const std::string& source, const 
   if (type == "kelvin_voigt") {
     const double k = *number("stiffness");
     const bool clip = law.choice("tension", "clip") == "clip";
-    const std::optional<double> damping = number("damping"), e = number("restitution");
+    const std::optional<double> damping = number("damping");
+    const double ratio =
+        damping ? 0.0
+                : calibrated(clip ? contact::DampedImpact::kelvin_voigt_clipped
+                                  : contact::DampedImpact::kelvin_voigt,
+                             contact::kelvin_voigt_damping_ratio);
     return [=](const LinkContext& context) {
-      const double c = damping ? *damping
-                               : 2.0 * contact::kelvin_voigt_damping_ratio(*e) *
-                                     std::sqrt(k * effective_mass(context));
+      const double c = damping ? *damping : 2.0 * ratio * std::sqrt(k * effective_mass(context));
       return std::make_unique<contact::KelvinVoigt>(k, c, clip);
     };
   }
@@ -102,14 +117,16 @@ model::LawFactory make_law(const LawSpec& law, const std::string& source, const 
   }
   if (type == "hertz_damp") {
     const double k = *number("stiffness");
-    const double ratio = number("damping_ratio").value_or(
-        number("restitution") ? contact::hertz_damp_ratio_ye(*number("restitution")) : 0.0);
+    const double ratio = number("damping_ratio")
+                             ? *number("damping_ratio")
+                             : calibrated(contact::DampedImpact::hertz_damp, contact::hertz_damp_ratio_ye);
     return [k, ratio](const LinkContext&) { return std::make_unique<contact::HertzDamp>(k, ratio); };
   }
   if (type == "jankowski") {
     const double k = *number("stiffness");
-    const double ratio = number("damping_ratio").value_or(
-        number("restitution") ? contact::jankowski_damping_ratio(*number("restitution")) : 0.0);
+    const double ratio = number("damping_ratio")
+                             ? *number("damping_ratio")
+                             : calibrated(contact::DampedImpact::jankowski, contact::jankowski_damping_ratio);
     return [=](const LinkContext& context) {
       return std::make_unique<contact::Jankowski>(k, ratio, effective_mass(context));
     };

@@ -7,6 +7,10 @@ using Range = LawParameter::Range;
 std::vector<LawType> make_catalog() {
   const LawParameter restitution{"restitution", Range::restitution,
                                  "target coefficient of restitution e, 0 < e <= 1"};
+  const LawChoice calibration{
+      "calibration", {"exact", "published"},
+      "how 'restitution' becomes damping: exact (the two-mass impact reaches e) or published (the "
+      "source's formula, approximate)"};
   const LawParameter mass{"mass", Range::positive,
                           "effective mass m1 m2 / (m1 + m2) [M]; default: from the model's lumped "
                           "masses at the two nodes"};
@@ -28,7 +32,8 @@ std::vector<LawType> make_catalog() {
                       restitution,
                       mass},
        .choices = {{"tension", {"clip", "allow"},
-                    "clip: a tensile force is set to 0 (raises the achieved e); allow: exact e"}},
+                    "clip: a tensile force is set to 0; allow: the force may pull near separation"},
+                   calibration},
        .required = {"stiffness"},
        .exactly_one_of = {{"damping", "restitution"}},
        .excludes = {{"damping", {"mass"}}}},
@@ -43,6 +48,7 @@ std::vector<LawType> make_catalog() {
        .parameters = {{"stiffness", Range::positive, "k_h [F/L^1.5]"},
                       {"damping_ratio", Range::non_negative, "xi_bar [-]"},
                       restitution},
+       .choices = {calibration},
        .required = {"stiffness"},
        .exactly_one_of = {{"damping_ratio", "restitution"}}},
       {.type = "jankowski",
@@ -53,6 +59,7 @@ std::vector<LawType> make_catalog() {
                       {"damping_ratio", Range::non_negative, "xi [-]"},
                       restitution,
                       mass},
+       .choices = {calibration},
        .required = {"stiffness"},
        .exactly_one_of = {{"damping_ratio", "restitution"}}},
       {.type = "bilinear_impact",

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <stdexcept>
 
 namespace pound::report {
@@ -90,6 +91,94 @@ std::vector<Study> kawashima_study() {
   for (double ratio : {0.5, 0.05, 0.01}) step.rows.push_back({fmt::format("dt = {:g} T_I", ratio), run(10, 1.0, ratio)});
   studies.push_back(std::move(step));
   return studies;
+}
+
+std::vector<Study> penalty_study() {
+  auto run = [](builder::LawSpec law) {
+    RodImpactOptions options;
+    options.pair = rod_impact_case("fixed-end", 50, 1.0);
+    options.pair.law = std::move(law);
+    options.courant = 1.0;
+    return run_rod_impact(options).metrics;
+  };
+  const double adjacent = 100.0 * 1.0 / (10.0 / 50.0);  // E A / h of Kawashima's rod, n = 50
+  Study spring_only{"alpha0 only (Suzuki & Toi Fig. 7), fixed-end rods, n = 50, dt = h/C0", {}};
+  for (double xi : {1.0, 10.0, 1e3})
+    spring_only.rows.push_back(
+        {fmt::format("xi = alpha0/k = {:g}", xi),
+         run({.type = "extended_penalty",
+              .parameters = {{"alpha0", xi * adjacent}, {"alpha1", 0.0}, {"alpha2", 0.0}}})});
+  Study extended{"extended penalty, e* = 1e-3 (Fig. 8), fixed-end rods, n = 50, dt = h/C0", {}};
+  for (double eta : {0.0, 1.0, 10.0})
+    extended.rows.push_back({fmt::format("eta = {:g}", eta),
+                             run({.type = "extended_penalty", .parameters = {{"eta", eta}}})});
+  extended.rows.push_back(
+      {"gap spring, k-ratio 1",
+       run({.type = "gap_spring", .parameters = {{"stiffness_ratio", 1.0}}})});
+  return {spring_only, extended};
+}
+
+std::string format_two_element(const std::vector<TwoElementResult>& results) {
+  std::string text = fmt::format("{:>6} {:>6} {:>9} {:>9} {:>13} {:>13} {:>10} {:>10}\n", "k2/k1",
+                                 "m2/m1", "alpha0/k1", "alpha2*", "w1/w_exact", "w2/w_exact",
+                                 "error", "");
+  double worst = 0.0;
+  for (const TwoElementResult& r : results) {
+    const TwoElementCase& c = r.input;
+    const double reference_mass = c.alpha0 * (c.m1 + c.m2) / (c.k1 + c.k2);
+    text += fmt::format("{:>6g} {:>6g} {:>9g} {:>9g} {:>13.6f} {:>13.6f} {:>10.2e}\n", c.k2 / c.k1,
+                        c.m2 / c.m1, c.alpha0 / c.k1, c.alpha2 / reference_mass,
+                        std::sqrt(r.omega1_squared / r.exact_omega_squared),
+                        std::sqrt(r.omega2_squared / r.exact_omega_squared), r.relative_error);
+    worst = std::max(worst, r.relative_error);
+  }
+  return text + fmt::format(
+                    "alpha2* = alpha2 / (alpha0 (m1 + m2) / (k1 + k2)), eq. 29 at 1; error: largest "
+                    "relative difference of w^2 from eq. 4 / eqs. 23-24\n{} cases, largest error {:.2e}\n",
+                    results.size(), worst);
+}
+
+io::Document to_document(const std::vector<TwoElementResult>& results) {
+  std::vector<io::Document> rows;
+  double worst = 0.0;
+  for (const TwoElementResult& r : results) {
+    io::Document row;
+    row.set("k1", r.input.k1).set("k2", r.input.k2).set("m1", r.input.m1).set("m2", r.input.m2)
+        .set("alpha0", r.input.alpha0).set("alpha2", r.input.alpha2)
+        .set("omega1_squared", r.omega1_squared).set("omega2_squared", r.omega2_squared)
+        .set("closed_omega1_squared", r.closed_omega1_squared)
+        .set("closed_omega2_squared", r.closed_omega2_squared)
+        .set("exact_omega_squared", r.exact_omega_squared).set("relative_error", r.relative_error);
+    rows.push_back(row);
+    worst = std::max(worst, r.relative_error);
+  }
+  io::Document doc;
+  doc.set("cases", rows).set("max_relative_error", worst);
+  return doc;
+}
+
+std::string format_restitution(const std::vector<RestitutionRow>& rows) {
+  std::string text = fmt::format("{:<32} {:>7} {:>9} {:>9} {:>12} {:>11} {:>12}\n", "law", "target",
+                                 "achieved", "error", "peak force", "contact", "penetration");
+  for (const RestitutionRow& r : rows)
+    text += fmt::format("{:<32} {:>7.3f} {:>9.5f} {:>+9.5f} {:>12.5g} {:>11.5g} {:>12.5g}{}\n", r.law,
+                        r.target, r.achieved, r.achieved - r.target, r.peak_force, r.contact_time,
+                        r.max_penetration, r.calibrated ? "" : "  (not calibrated for e)");
+  return text;
+}
+
+io::Document to_document(const std::vector<RestitutionRow>& rows) {
+  std::vector<io::Document> items;
+  for (const RestitutionRow& r : rows) {
+    io::Document row;
+    row.set("law", r.law).set("target", r.target).set("achieved", r.achieved)
+        .set("peak_force", r.peak_force).set("contact_time", r.contact_time)
+        .set("max_penetration", r.max_penetration).set("calibrated", r.calibrated);
+    items.push_back(row);
+  }
+  io::Document doc;
+  doc.set("rows", items);
+  return doc;
 }
 
 std::string format_metrics(const RodImpactMetrics& m) {

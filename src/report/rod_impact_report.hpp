@@ -6,6 +6,8 @@
 
 #include "io/document.hpp"
 #include "io/output.hpp"
+#include "report/restitution.hpp"
+#include "report/two_element.hpp"
 #include "report/rod_impact.hpp"
 
 namespace pound::report {
@@ -34,8 +36,16 @@ struct Study {
   std::vector<StudyRow> rows;
 };
 std::vector<Study> kawashima_study();
+// Suzuki & Toi's Figs. 7-8 in numbers, on their fixed-end rods (n = 50, dt = h / C0, Newmark):
+// alpha0 alone at xi = alpha0 / k = 1, 10, 10^3, and the extended penalty on automatic numbers
+// with eta = 0, 1, 10; the gap spring at k-ratio 1 for reference.
+std::vector<Study> penalty_study();
 
 std::string format_metrics(const RodImpactMetrics& metrics);
+std::string format_two_element(const std::vector<TwoElementResult>& results);
+io::Document to_document(const std::vector<TwoElementResult>& results);
+std::string format_restitution(const std::vector<RestitutionRow>& rows);
+io::Document to_document(const std::vector<RestitutionRow>& rows);
 std::string format_study(const Study& study);
 io::Document to_document(const std::vector<Study>& studies);
 

@@ -102,6 +102,44 @@ TEST(RodImpact, FineMeshMeetsDurationAndSeparationTargets) {
   }
 }
 
+// The contact-laws issue's targets for the extended penalty on automatic numbers (n = 1000,
+// dt = h / C0): the oscillation of the gap spring (force error ~0.31) is gone.
+TEST(RodImpact, ExtendedPenaltyRemovesTheSpuriousOscillation) {
+  for (const std::string& name : {std::string("kawashima"), std::string("area-ratio-3")}) {
+    RodImpactOptions options;
+    options.pair = rod_impact_case(name, 1000, 1.0, "extended_penalty");
+    options.courant = 1.0;
+    const RodImpactMetrics penalty = run_rod_impact(options).metrics;
+    options.pair = rod_impact_case(name, 1000, 1.0, "gap_spring");
+    const RodImpactMetrics spring = run_rod_impact(options).metrics;
+    print(name + ", extended penalty", penalty);
+    print(name + ", gap spring", spring);
+    EXPECT_GE(penalty.min_force, 0.0) << name;
+    EXPECT_GT(spring.force_l2_error, 3.0 * penalty.force_l2_error) << name;
+    if (name == "kawashima") {
+      EXPECT_LE(penalty.force_l2_error, 0.05);
+      EXPECT_LE(std::abs(penalty.duration_error), 0.003);
+      EXPECT_LE(std::abs(penalty.separation_velocity_error), 0.005);
+    } else {
+      EXPECT_LE(penalty.force_l2_error, 0.06);
+    }
+  }
+}
+
+// Suzuki & Toi Figs. 7-8: a stiff alpha0 alone chatters; eta = 1 beats eta = 0 and eta = 10.
+TEST(RodImpact, PenaltyStudyReproducesSuzukiToi) {
+  const std::vector<Study> studies = penalty_study();
+  for (const Study& study : studies) std::cout << format_study(study);
+  const auto& alone = studies[0].rows;
+  const auto& extended = studies[1].rows;
+  EXPECT_EQ(alone[0].metrics.contact_episodes, 1);       // xi = 1
+  EXPECT_GT(alone[2].metrics.contact_episodes, 10);      // xi = 1e3
+  EXPECT_GT(alone[2].metrics.peak_force_ratio, 10.0);
+  EXPECT_LT(extended[1].metrics.force_l2_error, extended[0].metrics.force_l2_error);  // eta 1 < 0
+  EXPECT_LT(extended[1].metrics.force_l2_error, extended[2].metrics.force_l2_error);  // eta 1 < 10
+  EXPECT_GT(extended[2].metrics.peak_force_ratio, extended[1].metrics.peak_force_ratio);
+}
+
 // Kawashima Fig. 6: velocity and stress along the rods during contact follow the exact waves.
 TEST(RodImpact, ProfilesAlongTheRodsFollowTheExactWaves) {
   RodImpactOptions options;
