@@ -34,13 +34,18 @@ the histories up to the failure are written and summary.json says "status": "fai
 options)";
 
 std::vector<std::unique_ptr<results::Recorder>> make_recorders(const builder::BuiltModel& built,
-                                                               const model::DofMap& dofs) {
+                                                               const model::DofMap& dofs,
+                                                               const LinkSet& links) {
   std::vector<std::unique_ptr<results::Recorder>> recorders;
   for (const builder::ResolvedRecorder& spec : built.recorders) {
     std::vector<std::string> ids;
     if (spec.type == "link") {
-      for (Index link : spec.items) ids.push_back(built.model.links[static_cast<std::size_t>(link)].id);
-      recorders.push_back(std::make_unique<results::LinkRecorder>(spec.file, spec.items, ids));
+      std::vector<results::LinkRows> rows;
+      for (Index link : spec.items) {
+        ids.push_back(built.model.links[static_cast<std::size_t>(link)].id);
+        rows.push_back({links.row(link), links.has_friction(link)});
+      }
+      recorders.push_back(std::make_unique<results::LinkRecorder>(spec.file, rows, ids));
     } else {
       std::vector<std::vector<Index>> equations;
       for (Index node : spec.items) {
@@ -113,8 +118,10 @@ int run_command(const Arguments& arguments) {
   }
   auto integrator = builder::make_integrator(built.analysis);
   TransientAnalysis analysis(*system, *integrator, builder::make_transient_settings(built.analysis));
-  auto recorders = make_recorders(built, system->dofs());
-  results::LinkSummaries links(static_cast<Index>(built.model.links.size()));
+  auto recorders = make_recorders(built, system->dofs(), system->links());
+  std::vector<Index> normal_rows;
+  for (Index k = 0; k < system->links().count(); ++k) normal_rows.push_back(system->links().row(k));
+  results::LinkSummaries links(std::move(normal_rows));
 
   State state;
   state.velocity = system->initial_velocity(built.model);

@@ -78,26 +78,51 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
                                      "element with density, or a support)",
                                      model.nodes[static_cast<std::size_t>(node)].id, kDirection[d]));
 
+  loads_ = Vector::Zero(n);
+  for (const model::NodalLoad& load : model.loads)
+    for (int d = 0; d < dpn; ++d)
+      if (const Index row = dofs_.equation(load.node, d); row >= 0) {
+        loads_[row] += load.force[static_cast<std::size_t>(d)];
+        has_loads_ = has_loads_ || load.force[static_cast<std::size_t>(d)] != 0.0;
+      }
+
   stiffness_.resize(n, n);
   stiffness_.setFromTriplets(triplets.begin(), triplets.end());
   stiffness_.prune(0.0);
 
-  std::vector<std::vector<LinkSet::Term>> rows;
-  std::vector<double> gaps;
-  std::vector<std::unique_ptr<contact::ContactLaw>> laws;
+  std::vector<LinkSet::Link> links;
   for (const model::Link& link : model.links) {
-    std::vector<LinkSet::Term> row;
-    for (int d = 0; d < dpn; ++d) {
-      const double component = link.axis[static_cast<std::size_t>(d)];
-      if (component == 0.0) continue;
-      if (const Index eq = dofs_.equation(link.node_i, d); eq >= 0) row.push_back({eq, component});
-      if (const Index eq = dofs_.equation(link.node_j, d); eq >= 0) row.push_back({eq, -component});
+    // Row of a direction d: +d at node i, -d at node j (fixed DOFs dropped).
+    auto row_along = [&](const model::Coordinates& direction) {
+      std::vector<LinkSet::Term> row;
+      for (int d = 0; d < dpn; ++d) {
+        const double component = direction[static_cast<std::size_t>(d)];
+        if (component == 0.0) continue;
+        if (const Index eq = dofs_.equation(link.node_i, d); eq >= 0) row.push_back({eq, component});
+        if (const Index eq = dofs_.equation(link.node_j, d); eq >= 0) row.push_back({eq, -component});
+      }
+      return row;
+    };
+    LinkSet::Link entry;
+    entry.normal_row = row_along(link.axis);
+    entry.gap = link.gap;
+    std::unique_ptr<contact::ContactLaw> law = link.make_law(link_context(link));
+    if (!link.friction) {
+      entry.law = std::move(law);
+    } else {
+      entry.tangential_row = row_along({-link.axis[1], link.axis[0]});
+      // The stick penalty defaults to the normal law's tangent at first touch.
+      const auto probe = law->clone();
+      const contact::LawResponse touch = probe->set_trial({1e-12, 1e-12, 0.0});
+      const model::LinkFriction& f = *link.friction;
+      const contact::StickPenalty stick{f.stick_stiffness.value_or(touch.stiffness),
+                                        f.stick_damping.value_or(touch.damping),
+                                        f.stick_mass.value_or(touch.mass)};
+      entry.friction = std::make_unique<contact::CoulombFriction>(std::move(law), f.coefficient, stick);
     }
-    rows.push_back(std::move(row));
-    gaps.push_back(link.gap);
-    laws.push_back(link.make_law(link_context(link)));
+    links.push_back(std::move(entry));
   }
-  links_ = LinkSet(n, rows, std::move(gaps), std::move(laws));
+  links_ = LinkSet(n, std::move(links));
 }
 
 contact::LinkContext StructuralSystem::link_context(const model::Link& link) const {
@@ -133,9 +158,7 @@ void StructuralSystem::multiply_stiffness(const Vector& x, Vector& y) const {
   y.noalias() = stiffness_ * x;
 }
 
-void StructuralSystem::external_force(double, Vector& force) const {
-  force = Vector::Zero(size());
-}
+void StructuralSystem::external_force(double, Vector& force) const { force = loads_; }
 
 std::unique_ptr<LinearSolver> StructuralSystem::factor(double c_m, double, double c_k) const {
   Eigen::SparseMatrix<double> effective = c_k * stiffness_;

@@ -19,7 +19,7 @@ class StructuralSystem final : public SecondOrderSystem {
   bool has_damping() const override { return false; }
   void multiply_damping(const Vector& x, Vector& y) const override;
   void multiply_stiffness(const Vector& x, Vector& y) const override;
-  bool has_external_force() const override { return false; }
+  bool has_external_force() const override { return has_loads_; }
   void external_force(double time, Vector& force) const override;
   std::unique_ptr<LinearSolver> factor(double c_m, double c_c, double c_k) const override;
   LinkSet& links() override { return links_; }
@@ -35,6 +35,8 @@ class StructuralSystem final : public SecondOrderSystem {
  private:
   model::DofMap dofs_;
   Vector mass_;
+  Vector loads_;  // constant nodal forces on the free DOFs
+  bool has_loads_ = false;
   Eigen::SparseMatrix<double> stiffness_;
   LinkSet links_;
 };

@@ -245,6 +245,11 @@ BuiltModel build(const ModelSpec& user_spec) {
     model.supports.push_back({resolve.node(built.node_index, spec.supports[k].node, support_origin(k) + "/node"),
                               {spec.supports[k].fix_x, spec.supports[k].fix_y}});
 
+  for (std::size_t k = 0; k < spec.loads.size(); ++k)
+    model.loads.push_back({resolve.node(built.node_index, spec.loads[k].node,
+                                        fmt::format("/loads/{}/node", k)),
+                           {spec.loads[k].x, spec.loads[k].y}});
+
   const auto velocity_origin = origin_of(user_spec.initial_velocities.size(), "initial_velocities", spec.generated_from.initial_velocities);
   if (!spec.initial_velocities.empty()) model.initial_velocity.assign(model.nodes.size(), {0.0, 0.0});
   for (std::size_t k = 0; k < spec.initial_velocities.size(); ++k) {
@@ -282,6 +287,18 @@ BuiltModel build(const ModelSpec& user_spec) {
                                               "gap must be 0, got {}",
                                               spec_link.law.type, spec_link.gap));
     link.make_law = make_law(spec_link.law, spec.source, path + "/law");
+    if (spec_link.friction) {
+      if (spec.dimension != 2)
+        resolve.fail(path + "/friction", "friction needs a tangential direction: a 2-D scene (\"dimension\": 2)");
+      if (tension_law)
+        resolve.fail(path + "/friction", fmt::format("a {} carries no normal contact force to rub with", spec_link.law.type));
+      const FrictionSpec& f = *spec_link.friction;
+      const bool nonlinear_normal = spec_link.law.type == "hertz" || spec_link.law.type == "hertz_damp" ||
+                                    spec_link.law.type == "jankowski" || spec_link.law.type == "bilinear_impact";
+      if (nonlinear_normal && !f.stick_stiffness)
+        resolve.fail(path + "/friction", fmt::format("give 'stick_stiffness': a {} law has no stiffness at first touch to stick with", spec_link.law.type));
+      link.friction = model::LinkFriction{f.coefficient, f.stick_stiffness, f.stick_damping, f.stick_mass};
+    }
     model.links.push_back(std::move(link));
   }
 
@@ -311,6 +328,7 @@ BuiltModel build(const ModelSpec& user_spec) {
   }
 
   const bool only_rod_pair = user_spec.rod_pairs.size() == 1 && user_spec.nodes.empty() &&
+                             user_spec.loads.empty() &&
                              user_spec.elements.empty() && user_spec.masses.empty() &&
                              user_spec.supports.empty() && user_spec.initial_velocities.empty() &&
                              user_spec.links.empty();

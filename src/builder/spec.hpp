@@ -67,6 +67,20 @@ struct InitialVelocitySpec {
   double y = 0.0;
 };
 
+// A constant nodal force (dead load, gravity on a lumped mass) acting from t = 0 [F].
+struct LoadSpec {
+  std::string node;
+  double x = 0.0;
+  double y = 0.0;
+};
+
+// Coulomb friction on a 2-D link (contact/coulomb_friction.hpp). The stick penalty defaults to
+// the normal law's own tangent (k, c, m of a linear law; alpha0..2 of the extended penalty).
+struct FrictionSpec {
+  double coefficient = 0.0;  // mu >= 0, static = kinetic
+  std::optional<double> stick_stiffness, stick_damping, stick_mass;
+};
+
 struct LinkSpec {
   std::string id;
   std::string node_i;
@@ -74,6 +88,7 @@ struct LinkSpec {
   double gap = 0.0;  // [L], >= 0; never negative, never flipped
   std::optional<std::vector<double>> axis;  // unit vector from i to j; default from coordinates
   LawSpec law;
+  std::optional<FrictionSpec> friction;  // 2-D only
 };
 
 // One rod of a rod_pair generator.
@@ -133,6 +148,7 @@ struct ModelSpec {
   std::vector<MassSpec> masses;
   std::vector<SupportSpec> supports;
   std::vector<InitialVelocitySpec> initial_velocities;
+  std::vector<LoadSpec> loads;
   std::vector<LinkSpec> links;
   std::vector<RodPairSpec> rod_pairs;  // "generators" entries of type "rod_pair", in order
   std::vector<int> rod_pair_generator_index;  // their index in "/generators"

@@ -4,19 +4,45 @@
 #include <cmath>
 
 namespace pound {
+namespace {
+
+std::vector<LinkSet::Link> scalar_links(const std::vector<std::vector<LinkSet::Term>>& rows,
+                                        const std::vector<double>& gaps,
+                                        std::vector<std::unique_ptr<contact::ContactLaw>> laws) {
+  assert(rows.size() == laws.size() && gaps.size() == laws.size());
+  std::vector<LinkSet::Link> links(rows.size());
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    links[k].normal_row = rows[k];
+    links[k].gap = gaps[k];
+    links[k].law = std::move(laws[k]);
+  }
+  return links;
+}
+
+}  // namespace
 
 LinkSet::LinkSet(Index dofs, const std::vector<std::vector<Term>>& rows, std::vector<double> gaps,
                  std::vector<std::unique_ptr<contact::ContactLaw>> laws)
-    : connectivity_(static_cast<Index>(rows.size()), dofs),
-      gaps_(Eigen::Map<const Vector>(gaps.data(), static_cast<Index>(gaps.size()))),
-      laws_(std::move(laws)) {
-  assert(rows.size() == laws_.size() && gaps.size() == laws_.size());
+    : LinkSet(dofs, scalar_links(rows, gaps, std::move(laws))) {}
+
+LinkSet::LinkSet(Index dofs, std::vector<Link> links) : links_(std::move(links)) {
   std::vector<Eigen::Triplet<double>> triplets;
-  for (std::size_t k = 0; k < rows.size(); ++k)
-    for (const Term& term : rows[k])
-      triplets.emplace_back(static_cast<Index>(k), term.dof, term.coefficient);
+  std::vector<double> gaps;
+  Index rows = 0;
+  auto add_row = [&](const std::vector<Term>& terms, double gap) {
+    for (const Term& term : terms) triplets.emplace_back(rows, term.dof, term.coefficient);
+    gaps.push_back(gap);
+    ++rows;
+  };
+  for (const Link& link : links_) {
+    first_row_.push_back(rows);
+    add_row(link.normal_row, link.gap);
+    if (link.friction) add_row(link.tangential_row, 0.0);
+  }
+  connectivity_.resize(rows, dofs);
   connectivity_.setFromTriplets(triplets.begin(), triplets.end());
   gram_ = Matrix(connectivity_ * connectivity_.transpose());
+  gaps_ = Eigen::Map<const Vector>(gaps.data(), rows);
 }
 
 void LinkSet::penetration(const Vector& displacement, Vector& delta) const {
@@ -28,30 +54,56 @@ void LinkSet::project(const Vector& x, Vector& projected) const {
   projected.noalias() = connectivity_ * x;
 }
 
-double LinkSet::nodal_norm(const Vector& link_values) const {
-  return std::sqrt(std::max(0.0, link_values.dot(gram_ * link_values)));
+double LinkSet::nodal_norm(const Vector& row_values) const {
+  return std::sqrt(std::max(0.0, row_values.dot(gram_ * row_values)));
 }
 
 void LinkSet::set_trial(const Vector& delta, const Vector& rate, const Vector& acceleration,
                         double rate_factor, double acceleration_factor, Vector& force,
-                        Vector& total_tangent) {
-  force.resize(size());
-  total_tangent.resize(size());
-  for (Index k = 0; k < size(); ++k) {
-    const contact::LawResponse response =
-        laws_[k]->set_trial({delta[k], rate[k], acceleration[k]});
-    force[k] = response.force;
-    total_tangent[k] = response.stiffness + response.damping * rate_factor +
-                       response.mass * acceleration_factor;
+                        Matrix& tangent) {
+  const Index rows = size();
+  force.resize(rows);
+  tangent.setZero(rows, rows);
+  auto total = [rate_factor, acceleration_factor](const contact::LawResponse& r) {
+    return r.stiffness + r.damping * rate_factor + r.mass * acceleration_factor;
+  };
+  for (std::size_t k = 0; k < links_.size(); ++k) {
+    const Index n = first_row_[k];
+    const contact::LinkKinematics normal{delta[n], rate[n], acceleration[n]};
+    if (!links_[k].friction) {
+      const contact::LawResponse response = links_[k].law->set_trial(normal);
+      force[n] = response.force;
+      tangent(n, n) = total(response);
+      continue;
+    }
+    const Index t = n + 1;
+    const contact::FrictionResponse response =
+        links_[k].friction->set_trial(normal, {delta[t], rate[t], acceleration[t]});
+    force[n] = response.normal.force;
+    force[t] = response.tangential_force;
+    tangent(n, n) = total(response.normal);
+    tangent(t, n) = total(response.tangential_on_normal);
+    tangent(t, t) = total(response.tangential_on_slip);
   }
 }
 
 void LinkSet::commit() {
-  for (auto& law : laws_) law->commit();
+  for (Link& link : links_) {
+    if (link.friction) link.friction->commit();
+    else link.law->commit();
+  }
 }
 
 void LinkSet::revert() {
-  for (auto& law : laws_) law->revert();
+  for (Link& link : links_) {
+    if (link.friction) link.friction->revert();
+    else link.law->revert();
+  }
+}
+
+const contact::ContactLaw& LinkSet::law(Index link) const {
+  const Link& entry = links_[static_cast<std::size_t>(link)];
+  return entry.friction ? entry.friction->normal_law() : *entry.law;
 }
 
 }  // namespace pound

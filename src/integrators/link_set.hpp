@@ -1,14 +1,17 @@
 #pragma once
-// The nonlinear part of a system: m link elements, each with one deformation coordinate
-//   delta_k = b_k . u - gap_k         (penetration, DESIGN.md section 2)
-// and a force F_k(delta, delta_dot, delta_ddot) from its contact law, entering the equations of
-// motion as f_links = B^T F. B is constant (small displacements), so the integrators can condense
-// the nonlinearity onto these m coordinates while the linear part stays factored once.
+// The nonlinear part of a system: link elements whose deformations are linear in u,
+//   delta = b_n . u - gap     (penetration, DESIGN.md section 2)
+//   s     = b_t . u           (tangential slide, only for links with friction)
+// and whose forces, F (normal) and R_t (tangential), enter the equations of motion as B^T F.
+// Each link has one row of B, or two with friction. B is constant (small displacements), so
+// the integrators condense the nonlinearity onto these rows while the linear part stays
+// factored once.
 #include <Eigen/SparseCore>
 #include <memory>
 #include <vector>
 
 #include "contact/contact_law.hpp"
+#include "contact/coulomb_friction.hpp"
 #include "core/types.hpp"
 
 namespace pound {
@@ -20,38 +23,55 @@ class LinkSet {
     Index dof;
     double coefficient;
   };
+  struct Link {
+    std::vector<Term> normal_row;
+    double gap = 0.0;
+    std::unique_ptr<contact::ContactLaw> law;  // without friction
+    // With friction: the tangential row and the friction law, which owns the normal law.
+    std::vector<Term> tangential_row;
+    std::unique_ptr<contact::CoulombFriction> friction;
+  };
 
-  // Rebuilds B from rows; `dofs` is the number of equations of the system.
+  LinkSet(Index dofs, std::vector<Link> links);
+  // Links without friction, one row each.
   LinkSet(Index dofs, const std::vector<std::vector<Term>>& rows, std::vector<double> gaps,
           std::vector<std::unique_ptr<contact::ContactLaw>> laws);
-  LinkSet(Index dofs = 0) : LinkSet(dofs, {}, {}, {}) {}
+  explicit LinkSet(Index dofs = 0) : LinkSet(dofs, std::vector<Link>{}) {}
 
-  Index size() const { return static_cast<Index>(laws_.size()); }
-  const SparseRowMatrix& connectivity() const { return connectivity_; }  // B (m x n)
+  Index size() const { return connectivity_.rows(); }  // rows
+  Index count() const { return static_cast<Index>(links_.size()); }  // links
+  Index row(Index link) const { return first_row_[static_cast<std::size_t>(link)]; }
+  bool has_friction(Index link) const { return links_[static_cast<std::size_t>(link)].friction != nullptr; }
+  const SparseRowMatrix& connectivity() const { return connectivity_; }  // B (rows x n)
   const Vector& gaps() const { return gaps_; }
 
-  // delta = B u - gap
+  // Row deformations B u - gap (penetrations and slides).
   void penetration(const Vector& displacement, Vector& delta) const;
-  // B x (rates and accelerations of delta)
+  // B x (their rates and accelerations).
   void project(const Vector& x, Vector& projected) const;
   // ||B^T s||_2 without forming B^T s (B B^T is kept).
-  double nodal_norm(const Vector& link_values) const;
+  double nodal_norm(const Vector& row_values) const;
 
-  // Sets every law's trial state; returns the forces and the total tangents
-  // dF/d(delta) + dF/d(delta_dot) * rate_factor + dF/d(delta_ddot) * acceleration_factor.
+  // Sets every law's trial state; returns the row forces and the total tangent
+  // dF/d(delta) + dF/d(delta_dot) * rate_factor + dF/d(delta_ddot) * acceleration_factor,
+  // block diagonal (a 2 x 2 block, not symmetric, for a link with friction).
   void set_trial(const Vector& delta, const Vector& rate, const Vector& acceleration,
-                 double rate_factor, double acceleration_factor, Vector& force,
-                 Vector& total_tangent);
+                 double rate_factor, double acceleration_factor, Vector& force, Matrix& tangent);
   void commit();
   void revert();
 
-  const contact::ContactLaw& law(Index k) const { return *laws_[k]; }
+  // The normal law of a link (for a link with friction, the one inside it).
+  const contact::ContactLaw& law(Index link) const;
+  const contact::CoulombFriction* friction(Index link) const {
+    return links_[static_cast<std::size_t>(link)].friction.get();
+  }
 
  private:
+  std::vector<Link> links_;
+  std::vector<Index> first_row_;
   SparseRowMatrix connectivity_;
   Matrix gram_;  // B B^T
   Vector gaps_;
-  std::vector<std::unique_ptr<contact::ContactLaw>> laws_;
 };
 
 }  // namespace pound

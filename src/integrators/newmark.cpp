@@ -55,7 +55,8 @@ void Newmark::initialize(SecondOrderSystem& system, State& state) {
   LinkSet& links = system.links();
   if (state.displacement.size() != n) state.displacement = Vector::Zero(n);
   if (state.velocity.size() != n) state.velocity = Vector::Zero(n);
-  Vector rate, zero = Vector::Zero(links.size()), tangent;
+  Vector rate, zero = Vector::Zero(links.size());
+  Matrix tangent;
   links.penetration(state.displacement, state.link_penetration);
   links.project(state.velocity, rate);
   links.set_trial(state.link_penetration, rate, zero, 0.0, 0.0, state.link_force, tangent);
@@ -161,9 +162,9 @@ StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double
         return result;
       }
       // d(residual)/dF = I + T G
-      Matrix jacobian = tangent_.asDiagonal() * f.coupling;
-      jacobian.diagonal().array() += 1.0;
-      assumed_force_ -= jacobian.partialPivLu().solve(residual_);
+      jacobian_.noalias() = tangent_ * f.coupling;
+      jacobian_.diagonal().array() += 1.0;
+      assumed_force_ -= jacobian_.partialPivLu().solve(residual_);
       ++result.iterations;
     }
     for (Index k = 0; k < m; ++k)

@@ -57,7 +57,8 @@ class Newmark final : public Integrator {
   // Work vectors, kept to avoid allocation inside the time loop.
   Vector predicted_displacement_, predicted_velocity_, rhs_, work_, external_, damping_force_;
   Vector delta_linear_, delta_predicted_, rate_predicted_;
-  Vector delta_, rate_, acceleration_, assumed_force_, law_force_, tangent_, residual_;
+  Vector delta_, rate_, acceleration_, assumed_force_, law_force_, residual_;
+  Matrix tangent_, jacobian_;
 };
 
 }  // namespace pound

@@ -151,6 +151,14 @@ SupportSpec read_support(JsonObject& object, int dimension) {
   return support;
 }
 
+builder::LoadSpec read_load(JsonObject& object, int dimension) {
+  builder::LoadSpec load;
+  load.node = object.required<std::string>("node", non_empty);
+  load.x = object.optional<double>("x", load.x);
+  load.y = read_plane_component(object, "y", dimension);
+  return load;
+}
+
 InitialVelocitySpec read_initial_velocity(JsonObject& object, int dimension) {
   InitialVelocitySpec velocity;
   velocity.node = object.required<std::string>("node", non_empty);
@@ -250,6 +258,15 @@ LinkSpec read_link(JsonObject& object, int dimension, UniqueNames& ids) {
   if (const std::optional<JsonValue> axis = object.find("axis"))
     link.axis = read_axis(*axis, dimension);
   link.law = read_law_in(object.at("law"), LawPlace::link);
+  if (const std::optional<JsonValue> friction = object.find("friction"))
+    link.friction = read_object(*friction, [](JsonObject& f) {
+      builder::FrictionSpec spec;
+      spec.coefficient = f.required<double>("coefficient", non_negative);
+      spec.stick_stiffness = f.if_present<double>("stick_stiffness", positive);
+      spec.stick_damping = f.if_present<double>("stick_damping", non_negative);
+      spec.stick_mass = f.if_present<double>("stick_mass", non_negative);
+      return spec;
+    });
   return link;
 }
 
@@ -390,6 +407,8 @@ ModelSpec read_model(JsonObject& top) {
   spec.masses = read_each(top, "masses", read_mass);
   spec.supports = read_each(
       top, "supports", [dimension](JsonObject& object) { return read_support(object, dimension); });
+  spec.loads = read_each(top, "loads",
+                         [dimension](JsonObject& object) { return read_load(object, dimension); });
   spec.initial_velocities = read_each(top, "initial_velocities", [dimension](JsonObject& object) {
     return read_initial_velocity(object, dimension);
   });

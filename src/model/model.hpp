@@ -7,6 +7,7 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,11 @@ struct NodalMass {
   double mass = 0.0;  // [M], in every translational direction
 };
 
+struct NodalLoad {
+  Index node = 0;
+  Coordinates force{};  // constant from t = 0 [F]
+};
+
 struct Support {
   Index node = 0;
   std::array<bool, 2> fixed{};  // per direction (x, y)
@@ -50,6 +56,12 @@ using LawFactory = std::function<std::unique_ptr<contact::ContactLaw>(const cont
 
 // Contact link between node i and node j along the unit axis n (from i towards j):
 // penetration delta = (u_i - u_j) . n - gap.
+// Coulomb friction along the tangent t = n rotated by +90 degrees (2-D only).
+struct LinkFriction {
+  double coefficient = 0.0;
+  std::optional<double> stick_stiffness, stick_damping, stick_mass;  // default: the normal law's
+};
+
 struct Link {
   std::string id;
   Index node_i = 0;
@@ -57,6 +69,7 @@ struct Link {
   Coordinates axis{1.0, 0.0};
   double gap = 0.0;  // initial clear distance [L], >= 0
   LawFactory make_law;
+  std::optional<LinkFriction> friction;
 };
 
 struct Model {
@@ -65,6 +78,7 @@ struct Model {
   std::vector<Truss> trusses;
   std::vector<NodalMass> masses;
   std::vector<Support> supports;
+  std::vector<NodalLoad> loads;
   std::vector<Link> links;
   std::vector<Coordinates> initial_velocity;  // per node (empty: at rest)
 

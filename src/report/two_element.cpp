@@ -39,13 +39,14 @@ TwoElementResult solve_two_element(const TwoElementCase& c) {
   // dF/d(delta_ddot) to M, read as the total tangent with acceleration factor 0 and 1.
   LinkSet& links = system.links();
   const Vector penetration = Vector::Constant(1, 1e-6), rate = Vector::Constant(1, 1.0);
-  Vector force, link_stiffness, stiffness_and_mass;
+  Vector force;
+  Matrix link_stiffness, stiffness_and_mass;
   links.set_trial(penetration, rate, Vector::Zero(1), 0.0, 0.0, force, link_stiffness);
   links.set_trial(penetration, rate, Vector::Zero(1), 0.0, 1.0, force, stiffness_and_mass);
   const Matrix b = Matrix(links.connectivity());
-  const Matrix stiffness = Matrix(system.stiffness()) + link_stiffness[0] * b.transpose() * b;
+  const Matrix stiffness = Matrix(system.stiffness()) + link_stiffness(0, 0) * b.transpose() * b;
   const Matrix mass = Matrix(system.lumped_mass()->asDiagonal()) +
-                      (stiffness_and_mass[0] - link_stiffness[0]) * b.transpose() * b;
+                      (stiffness_and_mass(0, 0) - link_stiffness(0, 0)) * b.transpose() * b;
   const Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> solver(stiffness, mass);
 
   TwoElementResult r{c, solver.eigenvalues()[0], solver.eigenvalues()[1], 0, 0,

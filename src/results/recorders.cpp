@@ -4,22 +4,30 @@
 
 namespace pound::results {
 
-LinkRecorder::LinkRecorder(std::string file, std::vector<Index> links,
+LinkRecorder::LinkRecorder(std::string file, std::vector<LinkRows> links,
                            const std::vector<std::string>& ids)
     : file_(std::move(file)), links_(std::move(links)) {
   table_.columns.push_back("time");
-  for (const std::string& id : ids) {
-    table_.columns.push_back(id + ".force");
-    table_.columns.push_back(id + ".penetration");
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    table_.columns.push_back(ids[k] + ".force");
+    table_.columns.push_back(ids[k] + ".penetration");
+    if (links_[k].friction) {
+      table_.columns.push_back(ids[k] + ".tangential_force");
+      table_.columns.push_back(ids[k] + ".slide");
+    }
   }
   table_.values.resize(table_.columns.size());
 }
 
 void LinkRecorder::record(const State& state) {
-  table_.values[0].push_back(state.time);
-  for (std::size_t k = 0; k < links_.size(); ++k) {
-    table_.values[1 + 2 * k].push_back(state.link_force[links_[k]]);
-    table_.values[2 + 2 * k].push_back(state.link_penetration[links_[k]]);
+  std::size_t column = 0;
+  table_.values[column++].push_back(state.time);
+  for (const LinkRows& link : links_) {
+    const Index rows = link.friction ? 2 : 1;
+    for (Index r = link.row; r < link.row + rows; ++r) {
+      table_.values[column++].push_back(state.link_force[r]);
+      table_.values[column++].push_back(state.link_penetration[r]);
+    }
   }
 }
 
@@ -47,7 +55,7 @@ void NodeRecorder::record(const State& state) {
 void LinkSummaries::record(const State& state) {
   for (std::size_t k = 0; k < summaries_.size(); ++k) {
     LinkSummary& s = summaries_[k];
-    const Index link = static_cast<Index>(k);
+    const Index link = rows_[k];
     const double force = state.link_force[link];
     const double penetration = state.link_penetration[link];
     const bool contact = force != 0.0;

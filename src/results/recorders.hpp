@@ -17,17 +17,25 @@ class Recorder {
   virtual const std::string& file() const = 0;
 };
 
-// Columns time, <id>.force, <id>.penetration per link.
+// Where a link's values sit in the state's link vectors: its normal row, and the tangential
+// row right after it when the link has friction.
+struct LinkRows {
+  Index row = 0;
+  bool friction = false;
+};
+
+// Columns time, <id>.force, <id>.penetration per link, and <id>.tangential_force, <id>.slide
+// for a link with friction.
 class LinkRecorder final : public Recorder {
  public:
-  LinkRecorder(std::string file, std::vector<Index> links, const std::vector<std::string>& ids);
+  LinkRecorder(std::string file, std::vector<LinkRows> links, const std::vector<std::string>& ids);
   void record(const State& state) override;
   const Table& table() const override { return table_; }
   const std::string& file() const override { return file_; }
 
  private:
   std::string file_;
-  std::vector<Index> links_;
+  std::vector<LinkRows> links_;
   Table table_;
 };
 
@@ -61,11 +69,13 @@ struct LinkSummary {
 
 class LinkSummaries {
  public:
-  explicit LinkSummaries(Index links) : summaries_(static_cast<std::size_t>(links)) {}
+  explicit LinkSummaries(std::vector<Index> normal_rows)
+      : rows_(std::move(normal_rows)), summaries_(rows_.size()) {}
   void record(const State& state);
   const std::vector<LinkSummary>& summaries() const { return summaries_; }
 
  private:
+  std::vector<Index> rows_;
   std::vector<LinkSummary> summaries_;
   State previous_;
   bool started_ = false;
