@@ -65,7 +65,9 @@ io::Document link_document(const model::Link& link, const results::LinkSummary& 
   doc.set("id", link.id)
       .set("impacts", s.impacts)
       .set("peak_force", s.peak_force)
+      .set("peak_tension", s.peak_tension)
       .set("peak_penetration", s.peak_penetration)
+      .set("peak_opening", s.peak_opening)
       .set("impulse", s.impulse)
       .set("work", s.work);
   if (s.first_contact >= 0.0) doc.set("first_contact", s.first_contact).set("last_contact", s.last_contact);
@@ -194,8 +196,12 @@ int run_command(const Arguments& arguments) {
                              run_time, out);
     for (std::size_t k = 0; k < built.model.links.size(); ++k) {
       const results::LinkSummary& s = links.summaries()[k];
-      std::cout << fmt::format("  link {}: {} impact(s), peak force {:.6g}, peak penetration {:.4g}, impulse {:.6g}\n",
-                               built.model.links[k].id, s.impacts, s.peak_force, s.peak_penetration, s.impulse);
+      if (s.peak_tension > 0.0)
+        std::cout << fmt::format("  link {}: taut {} time(s), peak tension {:.6g}, peak opening {:.4g}\n",
+                                 built.model.links[k].id, s.impacts, s.peak_tension, s.peak_opening);
+      else
+        std::cout << fmt::format("  link {}: {} impact(s), peak force {:.6g}, peak penetration {:.4g}, impulse {:.6g}\n",
+                                 built.model.links[k].id, s.impacts, s.peak_force, s.peak_penetration, s.impulse);
     }
     std::cout << verification_line;
   }

@@ -163,7 +163,8 @@ std::string format_restitution(const std::vector<RestitutionRow>& rows) {
   for (const RestitutionRow& r : rows)
     text += fmt::format("{:<32} {:>7.3f} {:>9.5f} {:>+9.5f} {:>12.5g} {:>11.5g} {:>12.5g}{}\n", r.law,
                         r.target, r.achieved, r.achieved - r.target, r.peak_force, r.contact_time,
-                        r.max_penetration, r.calibrated ? "" : "  (not calibrated for e)");
+                        r.max_penetration,
+                        r.calibrated ? "" : (r.target == 1.0 ? "  (elastic)" : "  (published formula)"));
   return text;
 }
 

@@ -73,7 +73,9 @@ void LinkSummaries::record(const State& state) {
       s.last_contact = state.time;
     }
     s.peak_force = std::max(s.peak_force, force);
+    s.peak_tension = std::max(s.peak_tension, -force);
     s.peak_penetration = std::max(s.peak_penetration, penetration);
+    s.peak_opening = std::max(s.peak_opening, -penetration);
   }
   previous_.time = state.time;
   previous_.link_force = state.link_force;

@@ -289,3 +289,31 @@ TEST_F(Cli, UnwritableOutputFolderIsAnOutputError) {
 }
 
 }  // namespace
+
+namespace {
+
+// Every bundled example runs to completion and writes its summary.
+TEST_F(Cli, EveryBundledModelRuns) {
+  int models = 0;
+  for (const fs::directory_entry& entry : fs::directory_iterator(fs::path(POUND_SOURCE_DIR) / "models")) {
+    if (entry.path().extension() != ".json") continue;
+    ++models;
+    const fs::path out = path(entry.path().stem().string());
+    const Outcome outcome = pound({"run", entry.path().string(), "--out", out.string(), "--quiet"});
+    EXPECT_EQ(outcome.exit_code, 0) << entry.path() << "\n" << outcome.err;
+    const json summary = json::parse(read_text(out / "summary.json"));
+    EXPECT_EQ(summary["status"], "completed") << entry.path();
+  }
+  EXPECT_GE(models, 4);
+}
+
+TEST_F(Cli, VerifyTwoElementAndRestitutionPass) {
+  const Outcome two_element = pound({"verify", "two-element", "--json"});
+  ASSERT_EQ(two_element.exit_code, 0) << two_element.err;
+  EXPECT_LE(json::parse(two_element.out)["max_relative_error"].get<double>(), 1e-10);
+  const Outcome restitution = pound({"verify", "restitution"});
+  EXPECT_EQ(restitution.exit_code, 0) << restitution.out << restitution.err;
+  EXPECT_TRUE(contains(restitution.out, "bilinear_impact"));
+}
+
+}  // namespace

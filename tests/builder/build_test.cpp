@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include "assembly/structural_system.hpp"
+#include "contact/extended_penalty.hpp"
 #include "contact/gap_spring.hpp"
 #include "core/errors.hpp"
 #include "io/model_reader.hpp"
@@ -267,6 +269,62 @@ TEST(Build, EmptyRecordersRecordNothing) {
   const BuiltModel built =
       build(spec_of(patched(kModel, R"([{"op": "replace", "path": "/recorders", "value": []}])")));
   EXPECT_TRUE(built.recorders.empty());
+}
+
+}  // namespace
+}  // namespace pound::builder
+
+namespace pound::builder {
+namespace {
+
+TEST(BuildLaws, FrictionNeedsATwoDimensionalScene) {
+  expect_error(R"([{"op": "add", "path": "/links/0/friction", "value": {"coefficient": 0.3}}])",
+               "/links/0/friction", "2-D scene");
+}
+
+TEST(BuildLaws, RestrainerTakesSlackNotGap) {
+  expect_error(R"([{"op": "replace", "path": "/links/0/law",
+                    "value": {"type": "restrainer", "stiffness": 1e7, "slack": 0.01}},
+                   {"op": "add", "path": "/links/0/gap", "value": 0.02}])",
+               "/links/0/gap", "slack");
+}
+
+// What only the assembled model can tell: the masses and stiffnesses a law's automatic numbers
+// need. The error still names the law in the file.
+std::optional<InputError> assembly_error(const std::string& json_patch) {
+  const BuiltModel built = build(spec_of(patched(kModel, json_patch)));
+  try {
+    assembly::StructuralSystem system(built.model);
+  } catch (const InputError& error) {
+    return error;
+  }
+  return std::nullopt;
+}
+
+TEST(BuildLaws, RestitutionWithoutAnyMassAtTheLinkIsAnError) {
+  // Both ends fixed: no effective mass for the Kelvin-Voigt damping from e.
+  const auto error = assembly_error(R"([
+      {"op": "replace", "path": "/links/0/law",
+       "value": {"type": "kelvin_voigt", "stiffness": 1e7, "restitution": 0.5}},
+      {"op": "add", "path": "/supports/-", "value": {"node": "b", "fix": ["x"]}},
+      {"op": "add", "path": "/supports/-", "value": {"node": "c", "fix": ["x"]}}])");
+  ASSERT_TRUE(error.has_value());
+  EXPECT_EQ(error->file(), "m.json");
+  EXPECT_EQ(error->where(), "/links/0/law/mass") << error->what();
+  EXPECT_NE(error->reason().find("give 'mass'"), std::string::npos) << error->what();
+}
+
+TEST(BuildLaws, ExtendedPenaltyBuildsItsNumbersFromTheModel) {
+  const BuiltModel built = build(spec_of(patched(
+      kModel, R"([{"op": "replace", "path": "/links/0/law", "value": {"type": "extended_penalty"}}])")));
+  assembly::StructuralSystem system(built.model);
+  const auto& law = dynamic_cast<const contact::ExtendedPenalty&>(system.links().law(0));
+  const contact::LinkContext context = system.link_context(built.model.links[0]);
+  const auto expected = contact::ExtendedPenalty::automatic(context, 1e-3, 1.0);
+  EXPECT_DOUBLE_EQ(law.numbers().alpha0, expected.alpha0);
+  EXPECT_DOUBLE_EQ(law.numbers().alpha1, expected.alpha1);
+  EXPECT_DOUBLE_EQ(law.numbers().alpha2, expected.alpha2);
+  EXPECT_GT(expected.alpha0, 0.0);
 }
 
 }  // namespace
