@@ -4,12 +4,15 @@
 #include <benchmark/benchmark.h>
 
 #include "report/rod_impact.hpp"
+#include "report/rod_impact_report.hpp"
 
 namespace {
 
+// range(0): elements per rod; range(1): 0 gap spring (k-ratio 1), 1 extended penalty (automatic).
 void rod_impact_fine_mesh(benchmark::State& state) {
   pound::report::RodImpactOptions options;
-  options.pair = pound::report::kawashima_rod_pair(static_cast<int>(state.range(0)), 1.0);
+  options.pair = pound::report::rod_impact_case("kawashima", static_cast<int>(state.range(0)), 1.0,
+                                                state.range(1) == 0 ? "gap_spring" : "extended_penalty");
   options.courant = 1.0;
   pound::report::RodPairSimulation simulation(options);
   pound::report::RodImpactResult result;
@@ -24,6 +27,11 @@ void rod_impact_fine_mesh(benchmark::State& state) {
       static_cast<double>(steps) * 1e-6, benchmark::Counter::kIsIterationInvariantRate |
                                              benchmark::Counter::kInvert);
 }
-BENCHMARK(rod_impact_fine_mesh)->Arg(1000)->Arg(100)->Unit(benchmark::kMillisecond);
+BENCHMARK(rod_impact_fine_mesh)
+    ->ArgNames({"n", "extended_penalty"})
+    ->Args({1000, 0})
+    ->Args({1000, 1})
+    ->Args({100, 0})
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
