@@ -11,6 +11,8 @@ using Arguments = std::vector<std::string>;
 
 int run_command(const Arguments& arguments);
 int verify_command(const Arguments& arguments);
+int spectrum_command(const Arguments& arguments);
+int modes_command(const Arguments& arguments);
 
 // Dispatches argv to a subcommand, turning errors into messages and exit codes.
 int main_entry(int argc, char** argv);

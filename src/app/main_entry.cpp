@@ -2,6 +2,7 @@
 
 #include <boost/program_options/errors.hpp>
 #include <iostream>
+#include <map>
 
 #include "app/commands.hpp"
 #include "core/errors.hpp"
@@ -17,6 +18,8 @@ usage: pound <command> [options]
 commands:
   run MODEL.json [--out DIR]   run a model file; writes summary.json and CSV time histories
   verify rod-impact [options]  the rod-impact benchmark against the exact wave solution
+  modes MODEL.json [--count N]  natural periods and modal masses of a model
+  spectrum RECORD [options]    a ground motion's PGA and response spectrum (.AT2 or columns)
   help [command]               this text, or a command's options
 
 Run `pound <command> --help` for a command's options. Model format: docs/model_format.md.
@@ -35,11 +38,16 @@ int main_entry(int argc, char** argv) {
   const std::string command = all.front();
   Arguments rest(all.begin() + 1, all.end());
   try {
-    if (command == "run") return run_command(rest);
-    if (command == "verify") return verify_command(rest);
+    using Command = int (*)(const Arguments&);
+    const std::map<std::string, Command> commands = {{"run", run_command},
+                                                     {"verify", verify_command},
+                                                     {"modes", modes_command},
+                                                     {"spectrum", spectrum_command}};
+    if (auto found = commands.find(command); found != commands.end()) return found->second(rest);
     if (command == "help" || command == "--help" || command == "-h") {
-      if (!rest.empty() && rest.front() == "run") return run_command({"--help"});
-      if (!rest.empty() && rest.front() == "verify") return verify_command({"--help"});
+      if (!rest.empty())
+        if (auto found = commands.find(rest.front()); found != commands.end())
+          return found->second({"--help"});
       std::cout << kUsage;
       return 0;
     }

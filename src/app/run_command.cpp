@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "app/model_loading.hpp"
 #include "assembly/structural_system.hpp"
 #include "builder/build.hpp"
 #include "core/errors.hpp"
@@ -21,7 +22,7 @@ namespace po = boost::program_options;
 
 namespace {
 
-constexpr const char* kRunUsage = R"(usage: pound run MODEL.json [--out DIR]
+constexpr const char* kRunUsage = R"(usage: pound run MODEL.json [--motion RECORD] [--out DIR]
 
 Runs the time-history analysis of a model file (format: docs/model_format.md) and writes into
 DIR (default out/<model name>):
@@ -78,10 +79,13 @@ io::Document link_document(const model::Link& link, const results::LinkSummary& 
 
 int run_command(const Arguments& arguments) {
   po::options_description options(kRunUsage);
-  std::string model_path, out;
+  std::string model_path, out, motion;
   long max_steps = 0;
   options.add_options()("help,h", "show this help")(
       "out,o", po::value(&out), "output folder (default out/<model name>)")(
+      "motion", po::value(&motion),
+      "ground-motion record (.AT2, or columns) replacing the model's first excitation, or "
+      "exciting it along x in g when it has none")(
       "max-steps", po::value(&max_steps), "stop with an error after this many steps (0: no limit)")(
       "quiet,q", "print nothing but errors");
   po::options_description hidden;
@@ -109,8 +113,9 @@ int run_command(const Arguments& arguments) {
   if (out.empty()) out = (std::filesystem::path("out") / std::filesystem::path(model_path).stem()).string();
 
   // Everything that can be wrong with the input is found before any output exists.
-  const builder::ModelSpec spec = io::read_model_file(model_path);
-  builder::BuiltModel built = builder::build(spec);
+  LoadedModel loaded = load_model(model_path, motion.empty() ? std::nullopt : std::optional(motion));
+  const builder::ModelSpec& spec = loaded.spec;
+  builder::BuiltModel& built = loaded.built;
   if (max_steps > 0) built.analysis.max_steps = max_steps;
   std::unique_ptr<assembly::StructuralSystem> system;
   try {

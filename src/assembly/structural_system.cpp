@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <Eigen/SparseCholesky>
+#include <array>
+#include <cmath>
 
 #include "assembly/banded_ldlt.hpp"
 #include "assembly/twisted_tridiagonal.hpp"
@@ -34,7 +36,58 @@ class SparseSolver final : public LinearSolver {
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor_;
 };
 
-constexpr const char* kDirection[] = {"x", "y"};
+constexpr const char* kDirection[] = {"x", "y", "rotation"};
+
+using Matrix6 = Eigen::Matrix<double, 6, 6>;
+
+// 2-D Euler-Bernoulli beam-column in local coordinates (u1, v1, theta1, u2, v2, theta2).
+Matrix6 beam_local_stiffness(const model::Beam& beam, double length) {
+  const double ea = beam.youngs_modulus * beam.area / length;
+  const double ei = beam.youngs_modulus * beam.inertia;
+  const double l2 = length * length, l3 = l2 * length;
+  Matrix6 k = Matrix6::Zero();
+  k(0, 0) = k(3, 3) = ea;
+  k(0, 3) = k(3, 0) = -ea;
+  k(1, 1) = k(4, 4) = 12 * ei / l3;
+  k(1, 4) = k(4, 1) = -12 * ei / l3;
+  k(1, 2) = k(2, 1) = k(1, 5) = k(5, 1) = 6 * ei / l2;
+  k(4, 2) = k(2, 4) = k(4, 5) = k(5, 4) = -6 * ei / l2;
+  k(2, 2) = k(5, 5) = 4 * ei / length;
+  k(2, 5) = k(5, 2) = 2 * ei / length;
+  return k;
+}
+
+// Consistent mass of the same element: linear axial, cubic Hermitian transverse shapes.
+Matrix6 beam_consistent_mass(double mass_per_length, double length) {
+  const double m = mass_per_length * length, l = length;
+  Matrix6 mass = Matrix6::Zero();
+  mass(0, 0) = mass(3, 3) = m / 3.0;
+  mass(0, 3) = mass(3, 0) = m / 6.0;
+  const double c = m / 420.0;
+  mass(1, 1) = mass(4, 4) = 156 * c;
+  mass(1, 4) = mass(4, 1) = 54 * c;
+  mass(1, 2) = mass(2, 1) = 22 * l * c;
+  mass(4, 5) = mass(5, 4) = -22 * l * c;
+  mass(1, 5) = mass(5, 1) = -13 * l * c;
+  mass(2, 4) = mass(4, 2) = 13 * l * c;
+  mass(2, 2) = mass(5, 5) = 4 * l * l * c;
+  mass(2, 5) = mass(5, 2) = -3 * l * l * c;
+  return mass;
+}
+
+// Local -> global: u_local = T u_global.
+Matrix6 beam_rotation(double cosine, double sine) {
+  Matrix6 t = Matrix6::Zero();
+  for (int node = 0; node < 2; ++node) {
+    const int o = 3 * node;
+    t(o, o) = cosine;
+    t(o, o + 1) = sine;
+    t(o + 1, o) = -sine;
+    t(o + 1, o + 1) = cosine;
+    t(o + 2, o + 2) = 1.0;
+  }
+  return t;
+}
 
 }  // namespace
 
@@ -42,7 +95,24 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
   const Index n = dofs_.size();
   const int dpn = dofs_.dofs_per_node();
   mass_ = Vector::Zero(n);
-  std::vector<Eigen::Triplet<double>> triplets;
+  std::vector<Eigen::Triplet<double>> stiffness, consistent_mass;
+
+  // Scatter a block over (node, direction) pairs, dropping fixed DOFs.
+  auto scatter = [&](std::vector<Eigen::Triplet<double>>& into, const auto& block,
+                     const std::vector<std::pair<Index, int>>& dofs) {
+    for (std::size_t a = 0; a < dofs.size(); ++a) {
+      const Index row = dofs_.equation(dofs[a].first, dofs[a].second);
+      if (row < 0) continue;
+      for (std::size_t b = 0; b < dofs.size(); ++b) {
+        const Index col = dofs_.equation(dofs[b].first, dofs[b].second);
+        const double value = block(static_cast<Index>(a), static_cast<Index>(b));
+        if (col >= 0 && value != 0.0) into.emplace_back(row, col, value);
+      }
+    }
+  };
+  auto add_mass = [&](Index node, int direction, double value) {
+    if (const Index row = dofs_.equation(node, direction); row >= 0) mass_[row] += value;
+  };
 
   for (const model::Truss& truss : model.trusses) {
     const double length = model.element_length(truss);
@@ -50,50 +120,94 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
     const auto& b = model.nodes[static_cast<std::size_t>(truss.node_j)].position;
     const double cosines[2] = {(b[0] - a[0]) / length, (b[1] - a[1]) / length};
     const double axial = truss.youngs_modulus * truss.area / length;
-    const double half_mass = 0.5 * truss.density * truss.area * length;
-    const Index nodes[2] = {truss.node_i, truss.node_j};
-    for (int p = 0; p < 2; ++p)
-      for (int dp = 0; dp < dpn; ++dp) {
-        const Index row = dofs_.equation(nodes[p], dp);
-        if (row < 0) continue;
-        mass_[row] += half_mass;
-        for (int q = 0; q < 2; ++q)
-          for (int dq = 0; dq < dpn; ++dq) {
-            const Index col = dofs_.equation(nodes[q], dq);
-            if (col < 0) continue;
-            const double sign = (p == q) ? 1.0 : -1.0;
-            triplets.emplace_back(row, col, sign * axial * cosines[dp] * cosines[dq]);
-          }
+    const int translations = std::min(dpn, 2);
+    std::vector<std::pair<Index, int>> dofs;
+    for (Index node : {truss.node_i, truss.node_j})
+      for (int d = 0; d < translations; ++d) dofs.emplace_back(node, d);
+    Matrix block(dofs.size(), dofs.size());
+    for (std::size_t p = 0; p < dofs.size(); ++p)
+      for (std::size_t q = 0; q < dofs.size(); ++q) {
+        const double sign = (p / translations == q / translations) ? 1.0 : -1.0;
+        block(p, q) = sign * axial * cosines[dofs[p].second] * cosines[dofs[q].second];
       }
+    scatter(stiffness, block, dofs);
+    for (Index node : {truss.node_i, truss.node_j})
+      for (int d = 0; d < translations; ++d)
+        add_mass(node, d, 0.5 * truss.density * truss.area * length);
   }
-  for (const model::NodalMass& lumped : model.masses)
-    for (int d = 0; d < dpn; ++d)
-      if (const Index row = dofs_.equation(lumped.node, d); row >= 0) mass_[row] += lumped.mass;
 
+  bool consistent = false;
+  for (const model::Beam& beam : model.beams) {
+    const double length = model.length(beam.node_i, beam.node_j);
+    const auto& a = model.nodes[static_cast<std::size_t>(beam.node_i)].position;
+    const auto& b = model.nodes[static_cast<std::size_t>(beam.node_j)].position;
+    const Matrix6 t = beam_rotation((b[0] - a[0]) / length, (b[1] - a[1]) / length);
+    const std::vector<std::pair<Index, int>> dofs = {{beam.node_i, 0}, {beam.node_i, 1}, {beam.node_i, 2},
+                                                     {beam.node_j, 0}, {beam.node_j, 1}, {beam.node_j, 2}};
+    scatter(stiffness, Matrix6(t.transpose() * beam_local_stiffness(beam, length) * t), dofs);
+    const double mass_per_length = beam.density * beam.area + beam.extra_mass;
+    if (beam.consistent_mass) {
+      consistent = true;
+      scatter(consistent_mass, Matrix6(t.transpose() * beam_consistent_mass(mass_per_length, length) * t), dofs);
+    } else {
+      for (Index node : {beam.node_i, beam.node_j})
+        for (int d = 0; d < 2; ++d) add_mass(node, d, 0.5 * mass_per_length * length);
+    }
+  }
+
+  for (const model::NodalMass& lumped : model.masses) {
+    for (int d = 0; d < std::min(dpn, 2); ++d) add_mass(lumped.node, d, lumped.mass);
+    if (dpn == 3) add_mass(lumped.node, 2, lumped.rotary_inertia);
+  }
+
+  // Translational DOFs must carry mass; rotations may be massless (no rotary inertia lumped).
+  Vector diagonal_mass = mass_;
+  if (consistent) {
+    for (const auto& entry : consistent_mass)
+      if (entry.row() == entry.col()) diagonal_mass[entry.row()] += entry.value();
+  }
   for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
-    for (int d = 0; d < dpn; ++d)
-      if (const Index row = dofs_.equation(node, d); row >= 0 && !(mass_[row] > 0.0))
+    for (int d = 0; d < std::min(dpn, 2); ++d)
+      if (const Index row = dofs_.equation(node, d); row >= 0 && !(diagonal_mass[row] > 0.0))
         throw InputError("", fmt::format("/nodes/{}", node),
                          fmt::format("node '{}' has no mass in direction {} (add a mass, an "
                                      "element with density, or a support)",
                                      model.nodes[static_cast<std::size_t>(node)].id, kDirection[d]));
+  if (consistent) {
+    for (Index i = 0; i < n; ++i)
+      if (mass_[i] != 0.0) consistent_mass.emplace_back(i, i, mass_[i]);
+    mass_matrix_.resize(n, n);
+    mass_matrix_.setFromTriplets(consistent_mass.begin(), consistent_mass.end());
+  }
+
+  stiffness_.resize(n, n);
+  stiffness_.setFromTriplets(stiffness.begin(), stiffness.end());
+  stiffness_.prune(0.0);
+
+  if (model.damping) damping_ = *model.damping;
 
   loads_ = Vector::Zero(n);
   for (const model::NodalLoad& load : model.loads)
-    for (int d = 0; d < dpn; ++d)
-      if (const Index row = dofs_.equation(load.node, d); row >= 0) {
+    for (int d = 0; d < std::min(dpn, 2); ++d)
+      if (const Index row = dofs_.equation(load.node, d); row >= 0)
         loads_[row] += load.force[static_cast<std::size_t>(d)];
-        has_loads_ = has_loads_ || load.force[static_cast<std::size_t>(d)] != 0.0;
-      }
-
-  stiffness_.resize(n, n);
-  stiffness_.setFromTriplets(triplets.begin(), triplets.end());
-  stiffness_.prune(0.0);
+  has_loads_ = loads_.any();
+  // Uniform excitation: the influence vector iota picks the translations along the direction.
+  for (const model::UniformExcitation& excitation : model.excitations) {
+    Vector influence = Vector::Zero(n);
+    for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
+      for (int d = 0; d < std::min(dpn, 2); ++d)
+        if (const Index row = dofs_.equation(node, d); row >= 0)
+          influence[row] = excitation.direction[static_cast<std::size_t>(d)];
+    Vector inertia(n);
+    multiply_mass(influence, inertia);
+    excitations_.push_back({excitation.motion, std::move(inertia)});
+  }
 
   std::vector<LinkSet::Link> links;
   for (const model::Link& link : model.links) {
     // Row of a direction d: +d at node i, -d at node j (fixed DOFs dropped).
-    auto row_along = [&](const model::Coordinates& direction) {
+    auto row_along = [&](const std::array<double, 3>& direction) {
       std::vector<LinkSet::Term> row;
       for (int d = 0; d < dpn; ++d) {
         const double component = direction[static_cast<std::size_t>(d)];
@@ -104,13 +218,14 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
       return row;
     };
     LinkSet::Link entry;
-    entry.normal_row = row_along(link.axis);
+    entry.normal_row = row_along(link.rotational ? std::array<double, 3>{0.0, 0.0, 1.0}
+                                                 : std::array<double, 3>{link.axis[0], link.axis[1], 0.0});
     entry.gap = link.gap;
     std::unique_ptr<contact::ContactLaw> law = link.make_law(link_context(link));
     if (!link.friction) {
       entry.law = std::move(law);
     } else {
-      entry.tangential_row = row_along({-link.axis[1], link.axis[0]});
+      entry.tangential_row = row_along({-link.axis[1], link.axis[0], 0.0});
       // The stick penalty defaults to the normal law's tangent at first touch.
       const auto probe = law->clone();
       const contact::LawResponse touch = probe->set_trial({1e-12, 1e-12, 0.0});
@@ -127,18 +242,21 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
 
 contact::LinkContext StructuralSystem::link_context(const model::Link& link) const {
   contact::LinkContext context;
-  // Mass and diagonal stiffness of one end along the axis: n^T K_nn n over its free DOFs.
+  const std::array<double, 3> direction =
+      link.rotational ? std::array<double, 3>{0.0, 0.0, 1.0}
+                      : std::array<double, 3>{link.axis[0], link.axis[1], 0.0};
+  // Mass and diagonal stiffness of one end along the direction: n^T K_nn n over its free DOFs.
   auto end = [&](Index node, double& mass, double& stiffness, bool& fixed) {
     fixed = true;
     for (int d = 0; d < dofs_.dofs_per_node(); ++d) {
-      const double n_d = link.axis[static_cast<std::size_t>(d)];
+      const double n_d = direction[static_cast<std::size_t>(d)];
       const Index row = dofs_.equation(node, d);
       if (n_d == 0.0 || row < 0) continue;
       fixed = false;
-      mass = mass_[row];
+      mass = mass_matrix_.size() > 0 ? mass_matrix_.coeff(row, row) : mass_[row];
       for (int e = 0; e < dofs_.dofs_per_node(); ++e)
         if (const Index col = dofs_.equation(node, e); col >= 0)
-          stiffness += n_d * link.axis[static_cast<std::size_t>(e)] * stiffness_.coeff(row, col);
+          stiffness += n_d * direction[static_cast<std::size_t>(e)] * stiffness_.coeff(row, col);
     }
   };
   end(link.node_i, context.mass_i, context.stiffness_i, context.fixed_i);
@@ -146,27 +264,47 @@ contact::LinkContext StructuralSystem::link_context(const model::Link& link) con
   return context;
 }
 
-void StructuralSystem::multiply_mass(const Vector& x, Vector& y) const {
-  y = mass_.cwiseProduct(x);
+const Vector* StructuralSystem::lumped_mass() const {
+  return mass_matrix_.size() > 0 ? nullptr : &mass_;
 }
 
-void StructuralSystem::multiply_damping(const Vector&, Vector& y) const {
-  y = Vector::Zero(size());
+Eigen::SparseMatrix<double> StructuralSystem::mass_matrix() const {
+  if (mass_matrix_.size() > 0) return mass_matrix_;
+  Eigen::SparseMatrix<double> mass(size(), size());
+  mass.reserve(Eigen::VectorXi::Constant(size(), 1));
+  for (Index i = 0; i < size(); ++i)
+    if (mass_[i] != 0.0) mass.insert(i, i) = mass_[i];
+  return mass;
+}
+
+void StructuralSystem::multiply_mass(const Vector& x, Vector& y) const {
+  if (mass_matrix_.size() > 0) y.noalias() = mass_matrix_ * x;
+  else y = mass_.cwiseProduct(x);
+}
+
+void StructuralSystem::multiply_damping(const Vector& x, Vector& y) const {
+  // C = a0 M + a1 K
+  multiply_mass(x, y);
+  y *= damping_.mass_coefficient;
+  y.noalias() += damping_.stiffness_coefficient * (stiffness_ * x);
 }
 
 void StructuralSystem::multiply_stiffness(const Vector& x, Vector& y) const {
   y.noalias() = stiffness_ * x;
 }
 
-void StructuralSystem::external_force(double, Vector& force) const { force = loads_; }
+void StructuralSystem::external_force(double time, Vector& force) const {
+  force = loads_;
+  for (const Excitation& excitation : excitations_)
+    force -= excitation.motion.at(time) * excitation.inertia;  // -M iota a_g(t)
+}
 
-std::unique_ptr<LinearSolver> StructuralSystem::factor(double c_m, double, double c_k) const {
-  Eigen::SparseMatrix<double> effective = c_k * stiffness_;
-  Eigen::SparseMatrix<double> mass(size(), size());
-  mass.reserve(Eigen::VectorXi::Constant(size(), 1));
-  for (Index i = 0; i < size(); ++i) mass.insert(i, i) = c_m * mass_[i];
-  effective += mass;
-  // A band factor costs n b^2 and solves in n b; past a modest band the sparse factor wins.
+std::unique_ptr<LinearSolver> StructuralSystem::factor(double c_m, double c_c, double c_k) const {
+  // c_m M + c_c (a0 M + a1 K) + c_k K
+  const double mass_factor = c_m + c_c * damping_.mass_coefficient;
+  const double stiffness_factor = c_k + c_c * damping_.stiffness_coefficient;
+  Eigen::SparseMatrix<double> effective = stiffness_factor * stiffness_ + mass_factor * mass_matrix();
+  effective.prune(0.0);
   const Index bandwidth = BandedLdlt::bandwidth_of(effective);
   if (bandwidth <= 1) return std::make_unique<FactorSolver<TwistedTridiagonal>>(effective);
   if (bandwidth <= 32) return std::make_unique<FactorSolver<BandedLdlt>>(effective);
@@ -177,7 +315,7 @@ Vector StructuralSystem::initial_velocity(const model::Model& model) const {
   Vector velocity = Vector::Zero(size());
   if (model.initial_velocity.empty()) return velocity;
   for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
-    for (int d = 0; d < dofs_.dofs_per_node(); ++d)
+    for (int d = 0; d < std::min(dofs_.dofs_per_node(), 2); ++d)
       if (const Index row = dofs_.equation(node, d); row >= 0)
         velocity[row] = model.initial_velocity[static_cast<std::size_t>(node)][static_cast<std::size_t>(d)];
   return velocity;

@@ -1,7 +1,8 @@
 #pragma once
-// The assembled equations of a Model: lumped mass M (a diagonal), stiffness K of the linear
-// elements, no damping matrix unless the model has damping, and the links as a LinkSet. Only the
-// free DOFs of the scene are numbered (DofMap).
+// The assembled equations of a Model: mass M (a diagonal when every element lumps its mass,
+// sparse with consistent beam masses), stiffness K of the linear elements, Rayleigh damping
+// C = a0 M + a1 K only when the model has damping, loads and uniform ground excitation
+// -M iota a_g(t), and the links as a LinkSet. Only the free DOFs of the scene are numbered.
 #include <Eigen/SparseCore>
 
 #include "integrators/second_order_system.hpp"
@@ -16,16 +17,21 @@ class StructuralSystem final : public SecondOrderSystem {
 
   Index size() const override { return dofs_.size(); }
   void multiply_mass(const Vector& x, Vector& y) const override;
-  bool has_damping() const override { return false; }
+  bool has_damping() const override {
+    return damping_.mass_coefficient != 0.0 || damping_.stiffness_coefficient != 0.0;
+  }
   void multiply_damping(const Vector& x, Vector& y) const override;
   void multiply_stiffness(const Vector& x, Vector& y) const override;
-  bool has_external_force() const override { return has_loads_; }
+  bool has_external_force() const override { return has_loads_ || !excitations_.empty(); }
   void external_force(double time, Vector& force) const override;
   std::unique_ptr<LinearSolver> factor(double c_m, double c_c, double c_k) const override;
   LinkSet& links() override { return links_; }
+  const LinkSet& links() const { return links_; }
 
   const model::DofMap& dofs() const { return dofs_; }
-  const Vector* lumped_mass() const override { return &mass_; }
+  const Vector* lumped_mass() const override;
+  Eigen::SparseMatrix<double> mass_matrix() const;
+  const model::RayleighDamping& damping() const { return damping_; }
   const Eigen::SparseMatrix<double>& stiffness() const { return stiffness_; }
   // What a link's law may need of the bodies it joins (masses and stiffnesses at its ends).
   contact::LinkContext link_context(const model::Link& link) const;
@@ -34,9 +40,16 @@ class StructuralSystem final : public SecondOrderSystem {
 
  private:
   model::DofMap dofs_;
-  Vector mass_;
+  Vector mass_;                             // lumped part (all of M without consistent masses)
+  Eigen::SparseMatrix<double> mass_matrix_;  // all of M, only with consistent masses
+  model::RayleighDamping damping_;
   Vector loads_;  // constant nodal forces on the free DOFs
   bool has_loads_ = false;
+  struct Excitation {
+    model::GroundMotion motion;
+    Vector inertia;  // M iota
+  };
+  std::vector<Excitation> excitations_;
   Eigen::SparseMatrix<double> stiffness_;
   LinkSet links_;
 };

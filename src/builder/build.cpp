@@ -2,12 +2,19 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
+#include <numbers>
 #include <limits>
 #include <functional>
 
+#include "assembly/modal_analysis.hpp"
+#include "assembly/structural_system.hpp"
 #include "builder/generators.hpp"
+#include "contact/backfill.hpp"
 #include "contact/bilinear_impact.hpp"
+#include "contact/bilinear_spring.hpp"
+#include "contact/elastic_spring.hpp"
 #include "contact/extended_penalty.hpp"
 #include "contact/gap_spring.hpp"
 #include "contact/hertz.hpp"
@@ -177,6 +184,30 @@ model::LawFactory make_law(const LawSpec& law, const std::string& source, const 
       return std::make_unique<contact::Restrainer>(type, k, slack, yield, hardening);
     };
   }
+  if (type == "elastic_spring") {
+    const double k = *number("stiffness");
+    return [k](const LinkContext&) { return std::make_unique<contact::ElasticSpring>(k); };
+  }
+  if (type == "bilinear_spring") {
+    const double k = *number("stiffness"), yield = *number("yield_force");
+    const double hardening = number("hardening_ratio").value_or(0.0);
+    return [=](const LinkContext&) {
+      return std::make_unique<contact::BilinearSpring>(k, yield, hardening);
+    };
+  }
+  if (type == "backfill") {
+    const double k = *number("initial_stiffness"), ultimate_force = *number("ultimate_force");
+    const double ultimate_deformation = *number("ultimate_deformation");
+    if (!(contact::Backfill::hyperbola_curvature(k, ultimate_force, ultimate_deformation) > 0.0))
+      throw InputError(source, path,
+                       fmt::format("backfill: ultimate_force / initial_stiffness = {} must be "
+                                   "below ultimate_deformation = {} (the hyperbola through "
+                                   "(delta_ult, F_ult) needs D = K / F_ult - 1 / delta_ult > 0)",
+                                   ultimate_force / k, ultimate_deformation));
+    return [=](const LinkContext&) {
+      return std::make_unique<contact::Backfill>(k, ultimate_force, ultimate_deformation);
+    };
+  }
   throw std::invalid_argument("unknown contact law " + type);
 }
 
@@ -193,7 +224,58 @@ TransientSettings make_transient_settings(const AnalysisSpec& analysis) {
           .max_steps = analysis.max_steps};
 }
 
-BuiltModel build(const ModelSpec& user_spec) {
+namespace {
+
+// The records, scaled as the spec says (targets in g), along their directions.
+void add_excitations(const ModelSpec& spec, const std::vector<model::GroundMotion>& motions,
+                     model::Model& model) {
+  if (motions.size() != spec.excitations.size())
+    throw std::invalid_argument("build: one ground motion per excitation is needed");
+  const double gravity = spec.units.gravity();
+  for (std::size_t k = 0; k < motions.size(); ++k) {
+    const ExcitationSpec& e = spec.excitations[k];
+    model::GroundMotion motion = motions[k];
+    const std::string path = fmt::format("/excitations/{}/scale", k);
+    if (!(motion.peak() > 0.0) && (e.target_pga || e.target_sa))
+      throw InputError(spec.source, path, fmt::format("record '{}' is all zeros: it cannot be scaled "
+                                                      "to a target", motion.name));
+    double factor = e.scale_factor.value_or(1.0);
+    if (e.target_pga) factor = model::scale_to_peak(motion, *e.target_pga * gravity);
+    if (e.target_sa)
+      factor = model::scale_to_spectral_acceleration(motion, *e.target_sa * gravity, e.sa_period,
+                                                     e.sa_damping);
+    model::scale(motion, factor);
+    model.excitations.push_back(
+        {std::move(motion), {e.direction[0], e.direction.size() > 1 ? e.direction[1] : 0.0}});
+  }
+}
+
+// a0 = 2 xi w1 w2 / (w1 + w2), a1 = 2 xi / (w1 + w2): the ratio xi at both frequencies.
+model::RayleighDamping rayleigh_damping(const DampingSpec& damping, const model::Model& model,
+                                        const std::string& source) {
+  if (damping.mass_coefficient || damping.stiffness_coefficient)
+    return {damping.mass_coefficient.value_or(0.0), damping.stiffness_coefficient.value_or(0.0)};
+  std::array<double, 2> periods{};
+  if (damping.periods) {
+    periods = *damping.periods;
+  } else {
+    const int highest = std::max((*damping.modes)[0], (*damping.modes)[1]);
+    const assembly::StructuralSystem system(model);
+    const std::vector<double> found = assembly::natural_periods(system, highest);
+    if (static_cast<int>(found.size()) < highest)
+      throw InputError(source, "/damping/modes",
+                       fmt::format("mode {} asked for, the model has {} vibration modes", highest,
+                                   found.size()));
+    periods = {found[static_cast<std::size_t>((*damping.modes)[0] - 1)],
+               found[static_cast<std::size_t>((*damping.modes)[1] - 1)]};
+  }
+  const double w1 = 2.0 * std::numbers::pi / periods[0], w2 = 2.0 * std::numbers::pi / periods[1];
+  return {2.0 * damping.ratio * w1 * w2 / (w1 + w2), 2.0 * damping.ratio / (w1 + w2)};
+}
+
+}  // namespace
+
+BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMotion>& motions) {
   if (user_spec.dimension != 1 && !user_spec.rod_pairs.empty())
     throw InputError(user_spec.source, fmt::format("/generators/{}", user_spec.rod_pair_generator_index[0]),
                      "rod_pair needs a 1-D scene (\"dimension\": 1)");
@@ -216,34 +298,34 @@ BuiltModel build(const ModelSpec& user_spec) {
   for (std::size_t k = 0; k < spec.elements.size(); ++k) {
     const ElementSpec& element = spec.elements[k];
     const std::string path = element_origin(k);
-    model::Truss truss;
-    truss.id = element.id;
-    truss.node_i = resolve.node(built.node_index, element.node_i, path + "/nodes/0");
-    truss.node_j = resolve.node(built.node_index, element.node_j, path + "/nodes/1");
-    if (truss.node_i == truss.node_j) resolve.fail(path + "/nodes", "an element needs two different nodes");
+    const Index node_i = resolve.node(built.node_index, element.node_i, path + "/nodes/0");
+    const Index node_j = resolve.node(built.node_index, element.node_j, path + "/nodes/1");
+    if (node_i == node_j) resolve.fail(path + "/nodes", "an element needs two different nodes");
     auto material = materials.find(element.material);
     if (material == materials.end())
       resolve.fail(path + "/material", fmt::format("material '{}' does not exist", element.material));
     const MaterialSpec& m = spec.materials[static_cast<std::size_t>(material->second)];
-    truss.youngs_modulus = m.youngs_modulus;
-    truss.density = m.density;
-    truss.area = element.area;
-    if (!(model.element_length(truss) > 0.0))
+    if (!(model.length(node_i, node_j) > 0.0))
       resolve.fail(path + "/nodes", fmt::format("element '{}' has zero length (nodes '{}' and '{}' "
                                                 "are at the same place)",
                                                 element.id, element.node_i, element.node_j));
-    model.trusses.push_back(truss);
+    if (element.type == "beam") {
+      model.beams.push_back({element.id, node_i, node_j, m.youngs_modulus, element.area,
+                             element.inertia, m.density, element.extra_mass, element.consistent_mass});
+    } else {
+      model.trusses.push_back({element.id, node_i, node_j, m.youngs_modulus, element.area, m.density});
+    }
   }
 
   for (std::size_t k = 0; k < spec.masses.size(); ++k)
     model.masses.push_back({resolve.node(built.node_index, spec.masses[k].node,
                                          fmt::format("/masses/{}/node", k)),
-                            spec.masses[k].mass});
+                            spec.masses[k].mass, spec.masses[k].rotary_inertia});
 
   const auto support_origin = origin_of(user_spec.supports.size(), "supports", spec.generated_from.supports);
   for (std::size_t k = 0; k < spec.supports.size(); ++k)
     model.supports.push_back({resolve.node(built.node_index, spec.supports[k].node, support_origin(k) + "/node"),
-                              {spec.supports[k].fix_x, spec.supports[k].fix_y}});
+                              {spec.supports[k].fix_x, spec.supports[k].fix_y, spec.supports[k].fix_rotation}});
 
   for (std::size_t k = 0; k < spec.loads.size(); ++k)
     model.loads.push_back({resolve.node(built.node_index, spec.loads[k].node,
@@ -267,6 +349,7 @@ BuiltModel build(const ModelSpec& user_spec) {
     link.node_j = resolve.node(built.node_index, spec_link.node_j, path + "/nodes/1");
     if (link.node_i == link.node_j) resolve.fail(path + "/nodes", "a link cannot join a node to itself");
     link.gap = spec_link.gap;
+    link.rotational = spec_link.rotational;
     if (spec_link.axis) {
       const auto& axis = *spec_link.axis;
       link.axis = {axis[0], axis.size() > 1 ? axis[1] : 0.0};
@@ -303,6 +386,11 @@ BuiltModel build(const ModelSpec& user_spec) {
   }
 
   built.analysis = spec.analysis;
+  add_excitations(spec, motions, model);
+  if (built.analysis.duration == 0.0)
+    for (const model::UniformExcitation& excitation : model.excitations)
+      built.analysis.duration = std::max(built.analysis.duration, excitation.motion.duration());
+  if (spec.damping) model.damping = rayleigh_damping(*spec.damping, model, spec.source);
   if (!spec.recorders_given && !model.links.empty()) {
     ResolvedRecorder every_link{"link", {}, "links.csv"};
     for (Index i = 0; i < static_cast<Index>(model.links.size()); ++i) every_link.items.push_back(i);

@@ -32,7 +32,9 @@ struct BuiltModel {
   std::optional<RodPairSpec> sole_rod_pair;
 };
 
-BuiltModel build(const ModelSpec& spec);
+// `motions`: the records of spec.excitations, read and converted to model units (io/); the
+// builder scales them as the spec says.
+BuiltModel build(const ModelSpec& spec, const std::vector<model::GroundMotion>& motions = {});
 
 // The factory of the law a LawSpec names (a rod pair's stiffness_ratio already resolved);
 // `source` and `path` locate the law in its file for errors the model reveals later (a law

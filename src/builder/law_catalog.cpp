@@ -104,6 +104,33 @@ std::vector<LawType> make_catalog() {
        .parameters = {{"stiffness", Range::positive, "k [F/L]"},
                       {"slack", Range::non_negative, "[L] (default 0)"}},
        .required = {"stiffness"}},
+      // Structural springs: links with gap 0 whose laws act in both directions.
+      {.type = "elastic_spring",
+       .formula = "F = k delta in compression and tension",
+       .source = "linear bearing / abutment spring (Caltrans SDC; OpenSees Elastic material)",
+       .parameters = {{"stiffness", Range::positive, "k [F/L]"}},
+       .required = {"stiffness"}},
+      {.type = "bilinear_spring",
+       .formula = "F = k (delta - p), |F - H p| <= F_y, H = b k / (1 - b): elastic-plastic in "
+                  "both directions with kinematic hardening, post-yield slope b k",
+       .source = "bilinear hysteretic model (OpenSees Steel01 without isotropic hardening; "
+                 "Caltrans SDC bilinear bearing)",
+       .parameters = {{"stiffness", Range::positive, "elastic stiffness k [F/L]"},
+                      {"yield_force", Range::positive, "F_y [F]"},
+                      {"hardening_ratio", Range::fraction,
+                       "b, post-yield stiffness / k, 0 <= b < 1 (default 0)"}},
+       .required = {"stiffness", "yield_force"}},
+      {.type = "backfill",
+       .formula = "compression only: F = K delta / (1 + D delta) up to delta_ult, F_ult beyond, "
+                  "D = K / F_ult - 1 / delta_ult > 0; unloading with K leaves a gap of the "
+                  "permanent deformation, never tensile",
+       .source = "abutment backfill, hyperbolic force-displacement: Shamsabadi et al. (2007, "
+                 "2010); Caltrans SDC",
+       .parameters = {{"initial_stiffness", Range::positive, "K_max [F/L]"},
+                      {"ultimate_force", Range::positive, "F_ult, the passive capacity [F]"},
+                      {"ultimate_deformation", Range::positive,
+                       "delta_ult at which F_ult is reached [L], > F_ult / K_max"}},
+       .required = {"initial_stiffness", "ultimate_force", "ultimate_deformation"}},
   };
 }
 

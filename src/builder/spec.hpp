@@ -5,6 +5,7 @@
 //
 // Every vector here mirrors an array of the file, so an index k of `links` is the JSON path
 // "/links/k"; the builder names errors that way.
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -43,22 +44,27 @@ struct MaterialSpec {
 
 struct ElementSpec {
   std::string id;
-  std::string type;  // "truss"
+  std::string type;  // "truss" | "beam" (2-D elastic beam-column, frame scenes)
   std::string node_i;
   std::string node_j;
   std::string material;
-  double area = 0.0;  // [L^2], > 0
+  double area = 0.0;            // [L^2], > 0
+  double inertia = 0.0;         // beam: second moment of area [L^4], > 0
+  double extra_mass = 0.0;      // beam: added mass per length [M/L] (deck, barriers, floor)
+  bool consistent_mass = false; // beam: "mass": "consistent" (default "lumped")
 };
 
 struct MassSpec {
   std::string node;
-  double mass = 0.0;  // [M], > 0
+  double mass = 0.0;            // [M], > 0
+  double rotary_inertia = 0.0;  // [M L^2], frame scenes
 };
 
 struct SupportSpec {
   std::string node;
   bool fix_x = false;
   bool fix_y = false;
+  bool fix_rotation = false;  // "rz", frame scenes
 };
 
 struct InitialVelocitySpec {
@@ -89,6 +95,40 @@ struct LinkSpec {
   std::optional<std::vector<double>> axis;  // unit vector from i to j; default from coordinates
   LawSpec law;
   std::optional<FrictionSpec> friction;  // 2-D only
+  bool rotational = false;  // "dof": "rotation": acts on theta_i - theta_j (hinge springs)
+};
+
+// The model's units, for converting records: only length and time matter.
+struct UnitsSpec {
+  std::string length = "m";  // m, cm, mm, km, in, ft
+  std::string time = "s";    // s, ms
+  // The acceleration of gravity (9.80665 m/s^2) in these units.
+  double gravity() const;
+};
+
+// Rayleigh damping C = a0 M + a1 K of the linear elements: `ratio` at two periods (or at the
+// periods of two modes, counted from 1), or the coefficients themselves.
+struct DampingSpec {
+  double ratio = 0.0;
+  std::optional<std::array<double, 2>> periods;
+  std::optional<std::array<int, 2>> modes;
+  std::optional<double> mass_coefficient, stiffness_coefficient;
+};
+
+// Uniform support excitation by a record (read by io/, scaled by the builder).
+struct ExcitationSpec {
+  std::string record;            // path, relative to the model file
+  std::string format = "auto";   // "at2", "columns", "auto"
+  int column = 1;
+  std::optional<double> time_step;
+  bool time_column = false;
+  std::string units = "g";       // of the file's values: "g", "m/s2", "cm/s2", "model"
+  std::optional<double> scale_factor;
+  std::optional<double> target_pga;  // [g]
+  std::optional<double> target_sa;   // [g] at sa_period
+  double sa_period = 0.0;
+  double sa_damping = 0.05;
+  std::vector<double> direction{1.0};  // unit vector (1-D: [1] or [-1])
 };
 
 // One rod of a rod_pair generator.
@@ -122,7 +162,7 @@ struct IntegratorSpec {
 struct AnalysisSpec {
   IntegratorSpec integrator;
   double time_step = 0.0;  // > 0
-  double duration = 0.0;   // > 0
+  double duration = 0.0;   // > 0; 0 in a file without it: the longest record's duration
   double relative_tolerance = 1e-10;
   double absolute_tolerance = 0.0;
   int max_iterations = 25;
@@ -152,6 +192,9 @@ struct ModelSpec {
   std::vector<LinkSpec> links;
   std::vector<RodPairSpec> rod_pairs;  // "generators" entries of type "rod_pair", in order
   std::vector<int> rod_pair_generator_index;  // their index in "/generators"
+  UnitsSpec units;
+  std::optional<DampingSpec> damping;
+  std::vector<ExcitationSpec> excitations;
   AnalysisSpec analysis;
   std::vector<RecorderSpec> recorders;
   // Filled by expand(): for entries a generator appended, the index of that generator in

@@ -20,9 +20,10 @@ LawResponse ExtendedPenalty::set_trial(const LinkKinematics& trial) {
   const double force = numbers_.alpha0 * trial.penetration +
                        numbers_.alpha1 * trial.penetration_rate +
                        numbers_.alpha2 * trial.penetration_acceleration;
-  trial_contact_ = committed_contact_
-                       ? force > 0.0
-                       : trial.penetration > 0.0 && trial.penetration_rate > 0.0 && force > 0.0;
+  // In contact the force may hold past delta = 0 while positive (released only when it would
+  // pull); out of contact it needs penetration. No condition on the rate: it would leave the
+  // condensed Newton equation without a solution near a grazing contact.
+  trial_contact_ = force > 0.0 && (committed_contact_ || trial.penetration > 0.0);
   if (!trial_contact_) return {};
   return {.force = force, .stiffness = numbers_.alpha0, .damping = numbers_.alpha1,
           .mass = numbers_.alpha2};

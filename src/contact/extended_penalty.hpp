@@ -12,9 +12,9 @@
 //   alpha1 = 2 eta sqrt(alpha0 alpha2)     (eq. 34/38; eta = 1 damps the relative motion critically)
 // Units: alpha0 [F/L], alpha1 [F T/L], alpha2 [M].
 //
-// Contact rule: contact begins when delta > 0 while closing (delta_dot > 0), and it is released
-// when R_n would turn tensile, not only when delta < 0; otherwise the dashpot and the mass pull
-// the bodies together. While in contact R_n = max(0, alpha0 delta + ...), continuous in the trial.
+// Contact rule: contact begins when delta > 0 and R_n > 0, and it is released when R_n would
+// turn tensile, not only when delta < 0; otherwise the dashpot and the mass pull the bodies
+// together. A penetrating pair that separates fast has R_n < 0 and stays apart.
 #include "contact/contact_law.hpp"
 #include "contact/link_context.hpp"
 

@@ -119,15 +119,21 @@ MaterialSpec read_material(JsonObject& object, UniqueNames& ids) {
   return material;
 }
 
-ElementSpec read_element(JsonObject& object, UniqueNames& ids) {
+ElementSpec read_element(JsonObject& object, int dimension, UniqueNames& ids) {
   ElementSpec element;
   element.id = read_unique_id(object, ids);
-  element.type = object.one_of("type", {"truss"});
+  element.type = object.one_of("type", {"truss", "beam"});
   const std::vector<std::string> nodes = read_names(object.at("nodes"), "node", 2, 2);
   element.node_i = nodes[0];
   element.node_j = nodes[1];
   element.material = object.required<std::string>("material", non_empty);
   element.area = object.required<double>("area", positive);
+  if (element.type == "beam") {
+    if (dimension != 2) object.at("type").fail("a beam needs a 2-D scene (\"dimension\": 2)");
+    element.inertia = object.required<double>("inertia", positive);
+    element.extra_mass = object.optional<double>("extra_mass", 0.0, non_negative);
+    element.consistent_mass = object.one_of("mass", {"lumped", "consistent"}, "lumped") == "consistent";
+  }
   return element;
 }
 
@@ -135,6 +141,7 @@ MassSpec read_mass(JsonObject& object) {
   MassSpec mass;
   mass.node = object.required<std::string>("node", non_empty);
   mass.mass = object.required<double>("mass", positive);
+  mass.rotary_inertia = object.optional<double>("rotary_inertia", 0.0, non_negative);
   return mass;
 }
 
@@ -143,10 +150,10 @@ SupportSpec read_support(JsonObject& object, int dimension) {
   support.node = object.required<std::string>("node", non_empty);
   UniqueNames directions("direction");
   for (const JsonValue& value : object.at("fix").elements(1)) {
-    const std::string direction = value.as_one_of({"x", "y"});
+    const std::string direction = value.as_one_of({"x", "y", "rz"});
     directions.add(direction, value);
-    if (direction == "y") require_plane(value, dimension);
-    (direction == "x" ? support.fix_x : support.fix_y) = true;
+    if (direction != "x") require_plane(value, dimension);
+    (direction == "x" ? support.fix_x : direction == "y" ? support.fix_y : support.fix_rotation) = true;
   }
   return support;
 }
@@ -258,6 +265,9 @@ LinkSpec read_link(JsonObject& object, int dimension, UniqueNames& ids) {
   if (const std::optional<JsonValue> axis = object.find("axis"))
     link.axis = read_axis(*axis, dimension);
   link.law = read_law_in(object.at("law"), LawPlace::link);
+  link.rotational = object.one_of("dof", {"translation", "rotation"}, "translation") == "rotation";
+  if (link.rotational && dimension != 2) object.at("dof").fail("a rotational link needs a 2-D scene");
+  if (link.rotational && link.axis) object.at("axis").fail("a rotational link has no axis");
   if (const std::optional<JsonValue> friction = object.find("friction"))
     link.friction = read_object(*friction, [](JsonObject& f) {
       builder::FrictionSpec spec;
@@ -323,12 +333,73 @@ IntegratorSpec read_integrator(const JsonValue& value) {
   });
 }
 
+builder::UnitsSpec read_units(JsonObject& object) {
+  builder::UnitsSpec units;
+  units.length = object.one_of("length", {"m", "cm", "mm", "km", "in", "ft"}, "m");
+  units.time = object.one_of("time", {"s", "ms"}, "s");
+  return units;
+}
+
+builder::DampingSpec read_damping(JsonObject& object) {
+  builder::DampingSpec damping;
+  (void)object.one_of("type", {"rayleigh"}, "rayleigh");
+  const bool coefficients = object.has("mass_coefficient") || object.has("stiffness_coefficient");
+  if (coefficients) {
+    damping.mass_coefficient = object.optional<double>("mass_coefficient", 0.0, non_negative);
+    damping.stiffness_coefficient = object.optional<double>("stiffness_coefficient", 0.0, non_negative);
+    return damping;
+  }
+  damping.ratio = object.required<double>("ratio", non_negative);
+  if (damping.ratio >= 1.0) object.at("ratio").fail(fmt::format("must be < 1, got {}", damping.ratio));
+  const std::optional<JsonValue> periods = object.find("periods"), modes = object.find("modes");
+  if (periods.has_value() == modes.has_value())
+    object.fail("give the two 'periods' or the two 'modes' Rayleigh damping matches the ratio at "
+                "(or 'mass_coefficient' and 'stiffness_coefficient')");
+  if (periods) {
+    const std::vector<JsonValue> values = periods->elements(2, 2);
+    damping.periods = {values[0].as<double>(positive), values[1].as<double>(positive)};
+    if ((*damping.periods)[0] == (*damping.periods)[1]) periods->fail("needs two different periods");
+  } else {
+    const std::vector<JsonValue> values = modes->elements(2, 2);
+    damping.modes = {values[0].as<int>(at_least(1)), values[1].as<int>(at_least(1))};
+    if ((*damping.modes)[0] == (*damping.modes)[1]) modes->fail("needs two different modes");
+  }
+  return damping;
+}
+
+builder::ExcitationSpec read_excitation(JsonObject& object, int dimension) {
+  builder::ExcitationSpec excitation;
+  excitation.record = object.required<std::string>("record", non_empty);
+  excitation.format = object.one_of("format", {"auto", "at2", "columns"}, "auto");
+  excitation.column = object.optional<int>("column", 1, at_least(1));
+  excitation.time_step = object.if_present<double>("time_step", positive);
+  excitation.time_column = object.optional<bool>("time_column", false);
+  excitation.units = object.one_of("units", {"g", "m/s2", "cm/s2", "model"}, "g");
+  if (const std::optional<JsonValue> direction = object.find("direction"))
+    excitation.direction = read_axis(*direction, dimension);
+  if (const std::optional<JsonValue> scale = object.find("scale")) {
+    read_object(*scale, [&excitation](JsonObject& s) {
+      excitation.scale_factor = s.if_present<double>("factor", positive);
+      excitation.target_pga = s.if_present<double>("pga", positive);
+      excitation.target_sa = s.if_present<double>("sa", positive);
+      const int given = excitation.scale_factor.has_value() + excitation.target_pga.has_value() +
+                        excitation.target_sa.has_value();
+      if (given != 1) s.fail("give exactly one of 'factor', 'pga' [g], 'sa' [g] (with 'period')");
+      if (excitation.target_sa) {
+        excitation.sa_period = s.required<double>("period", positive);
+        excitation.sa_damping = s.optional<double>("damping", 0.05, non_negative);
+      }
+    });
+  }
+  return excitation;
+}
+
 AnalysisSpec read_analysis(JsonObject& object) {
   AnalysisSpec analysis;
   if (const std::optional<JsonValue> integrator = object.find("integrator"))
     analysis.integrator = read_integrator(*integrator);
   analysis.time_step = object.required<double>("time_step", positive);
-  analysis.duration = object.required<double>("duration", positive);
+  analysis.duration = object.optional<double>("duration", 0.0, positive);
   if (const std::optional<JsonValue> convergence = object.find("convergence")) {
     read_object(*convergence, [&analysis](JsonObject& settings) {
       analysis.relative_tolerance =
@@ -402,8 +473,9 @@ ModelSpec read_model(JsonObject& top) {
       top, "nodes", [&](JsonObject& object) { return read_node(object, dimension, node_ids); });
   spec.materials = read_each(
       top, "materials", [&](JsonObject& object) { return read_material(object, material_ids); });
-  spec.elements = read_each(top, "elements",
-                            [&](JsonObject& object) { return read_element(object, element_ids); });
+  spec.elements = read_each(top, "elements", [&](JsonObject& object) {
+    return read_element(object, dimension, element_ids);
+  });
   spec.masses = read_each(top, "masses", read_mass);
   spec.supports = read_each(
       top, "supports", [dimension](JsonObject& object) { return read_support(object, dimension); });
@@ -415,7 +487,15 @@ ModelSpec read_model(JsonObject& top) {
   spec.links = read_each(
       top, "links", [&](JsonObject& object) { return read_link(object, dimension, link_ids); });
   read_generators(top, spec);
+  if (const std::optional<JsonValue> units = top.find("units"))
+    spec.units = read_object(*units, read_units);
+  if (const std::optional<JsonValue> damping = top.find("damping"))
+    spec.damping = read_object(*damping, read_damping);
+  spec.excitations = read_each(
+      top, "excitations", [dimension](JsonObject& object) { return read_excitation(object, dimension); });
   spec.analysis = read_object(top.at("analysis"), read_analysis);
+  if (spec.analysis.duration == 0.0 && spec.excitations.empty())
+    top.at("analysis").fail("needs 'duration' (it may be left out only with 'excitations')");
   spec.recorders_given = top.has("recorders");
   spec.recorders = read_recorders(top);
   return spec;

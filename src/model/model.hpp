@@ -3,7 +3,8 @@
 // refer to `nodes`; the builder has already checked every reference and value.
 //
 // Degrees of freedom follow the scene: a 1-D (axial) scene carries 1 DOF per node (u_x); a
-// plane truss scene carries 2 (u_x, u_y). Nothing is padded to 3 or 6.
+// plane truss scene carries 2 (u_x, u_y); a plane frame scene (any beam-column) carries 3
+// (u_x, u_y, theta_z). Nothing is padded to 3 or 6.
 #include <array>
 #include <functional>
 #include <memory>
@@ -14,6 +15,7 @@
 #include "contact/contact_law.hpp"
 #include "contact/link_context.hpp"
 #include "core/types.hpp"
+#include "model/ground_motion.hpp"
 
 namespace pound::model {
 
@@ -34,9 +36,25 @@ struct Truss {
   double density = 0.0;         // rho [M/L^3]
 };
 
+// Two-node 2-D elastic beam-column (Euler-Bernoulli, axial and bending), for girders, piers
+// and storey columns. Mass rho A per length (plus any extra mass per length), lumped (rho A L / 2
+// per end, no rotary inertia) or consistent.
+struct Beam {
+  std::string id;
+  Index node_i = 0;
+  Index node_j = 0;
+  double youngs_modulus = 0.0;  // E [F/L^2]
+  double area = 0.0;            // A [L^2]
+  double inertia = 0.0;         // I [L^4]
+  double density = 0.0;         // rho [M/L^3]
+  double extra_mass = 0.0;      // [M/L], e.g. deck, barriers, tributary floor
+  bool consistent_mass = false;
+};
+
 struct NodalMass {
   Index node = 0;
   double mass = 0.0;  // [M], in every translational direction
+  double rotary_inertia = 0.0;  // [M L^2], frame scenes only
 };
 
 struct NodalLoad {
@@ -46,7 +64,20 @@ struct NodalLoad {
 
 struct Support {
   Index node = 0;
-  std::array<bool, 2> fixed{};  // per direction (x, y)
+  std::array<bool, 3> fixed{};  // per direction (x, y, rotation)
+};
+
+// Rayleigh damping C = a0 M + a1 K of the linear elements (links are never part of it).
+struct RayleighDamping {
+  double mass_coefficient = 0.0;       // a0 [1/T]
+  double stiffness_coefficient = 0.0;  // a1 [T]
+};
+
+// Uniform support excitation: every support moves with the record along `direction`; the
+// equations are in displacements relative to the ground, with loads -M iota a_g(t).
+struct UniformExcitation {
+  GroundMotion motion;
+  Coordinates direction{1.0, 0.0};  // unit vector
 };
 
 // Makes a link's law once the assembled model can tell the law about the bodies it joins
@@ -67,6 +98,7 @@ struct Link {
   Index node_i = 0;
   Index node_j = 0;
   Coordinates axis{1.0, 0.0};
+  bool rotational = false;  // acts on theta_i - theta_j (frame scenes), e.g. a plastic hinge
   double gap = 0.0;  // initial clear distance [L], >= 0
   LawFactory make_law;
   std::optional<LinkFriction> friction;
@@ -76,13 +108,17 @@ struct Model {
   int dimension = 1;  // 1 or 2
   std::vector<Node> nodes;
   std::vector<Truss> trusses;
+  std::vector<Beam> beams;
   std::vector<NodalMass> masses;
   std::vector<Support> supports;
   std::vector<NodalLoad> loads;
   std::vector<Link> links;
   std::vector<Coordinates> initial_velocity;  // per node (empty: at rest)
+  std::optional<RayleighDamping> damping;
+  std::vector<UniformExcitation> excitations;
 
-  int dofs_per_node() const { return dimension; }
+  int dofs_per_node() const { return dimension == 1 ? 1 : (beams.empty() ? 2 : 3); }
+  double length(Index node_i, Index node_j) const;
   double element_length(const Truss& truss) const;
 };
 

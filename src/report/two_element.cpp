@@ -25,7 +25,8 @@ model::Model two_element_model(const TwoElementCase& c) {
   m.masses = {{1, c.m1}, {2, c.m2}};
   m.supports = {{0, {true, false}}, {3, {true, false}}};
   const contact::ExtendedPenalty::Numbers numbers{c.alpha0, 0.0, c.alpha2};
-  m.links = {{"contact", 1, 2, {1.0, 0.0}, 0.0, [numbers](const contact::LinkContext&) {
+  m.links = {{.id = "contact", .node_i = 1, .node_j = 2, .axis = {1.0, 0.0}, .gap = 0.0,
+              .make_law = [numbers](const contact::LinkContext&) {
                 return std::make_unique<contact::ExtendedPenalty>(numbers);
               }}};
   return m;

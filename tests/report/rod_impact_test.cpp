@@ -134,7 +134,12 @@ TEST(RodImpact, PenaltyStudyReproducesSuzukiToi) {
   const auto& extended = studies[1].rows;
   EXPECT_EQ(alone[0].metrics.contact_episodes, 1);       // xi = 1
   EXPECT_GT(alone[2].metrics.contact_episodes, 10);      // xi = 1e3
-  EXPECT_GT(alone[2].metrics.peak_force_ratio, 10.0);
+  // The stiffer the spring, the larger the oscillation of the contact force.
+  for (std::size_t k = 1; k < alone.size(); ++k) {
+    EXPECT_GT(alone[k].metrics.force_l2_error, alone[k - 1].metrics.force_l2_error);
+    EXPECT_GT(alone[k].metrics.peak_force_ratio, alone[k - 1].metrics.peak_force_ratio);
+  }
+  EXPECT_GT(alone[2].metrics.peak_force_ratio, 5.0);
   EXPECT_LT(extended[1].metrics.force_l2_error, extended[0].metrics.force_l2_error);  // eta 1 < 0
   EXPECT_LT(extended[1].metrics.force_l2_error, extended[2].metrics.force_l2_error);  // eta 1 < 10
   EXPECT_GT(extended[2].metrics.peak_force_ratio, extended[1].metrics.peak_force_ratio);

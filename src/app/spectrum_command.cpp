@@ -1,0 +1,192 @@
+#include <fmt/format.h>
+
+#include <boost/program_options.hpp>
+#include <cmath>
+#include <iostream>
+#include <numbers>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+
+#include "app/commands.hpp"
+#include "core/errors.hpp"
+#include "io/document.hpp"
+#include "io/ground_motion_reader.hpp"
+#include "io/output.hpp"
+#include "model/ground_motion.hpp"
+
+namespace pound::app {
+namespace po = boost::program_options;
+
+namespace {
+
+constexpr const char* kSpectrumUsage = R"(usage: pound spectrum RECORD [options]
+
+Reads a ground-acceleration record (PEER .AT2, or text columns) and prints its number of points,
+time step, duration, peak ground acceleration and its linear elastic response spectrum:
+pseudo-spectral acceleration Sa [g], pseudo-velocity Sv = Sa/w [m/s] and displacement
+Sd = Sa/w^2 [m], computed with the exact piecewise-linear recurrence of Nigam & Jennings (1969).
+Default periods: 40 log-spaced from 0.02 s to 10 s.
+
+options)";
+
+constexpr double kStandardGravity = 9.80665;  // m/s^2
+constexpr double kFirstPeriod = 0.02, kLastPeriod = 10.0;
+constexpr int kDefaultPeriods = 40;
+
+std::vector<double> default_periods() {
+  std::vector<double> periods;
+  for (int k = 0; k < kDefaultPeriods; ++k)
+    periods.push_back(kFirstPeriod * std::pow(kLastPeriod / kFirstPeriod,
+                                              static_cast<double>(k) / (kDefaultPeriods - 1)));
+  return periods;
+}
+
+// "0.1,0.2,1" -> periods >= 0; throws std::invalid_argument naming the bad entry.
+std::vector<double> parse_periods(const std::string& text) {
+  std::vector<double> periods;
+  std::istringstream list(text);
+  for (std::string item; std::getline(list, item, ',');) {
+    std::size_t used = 0;
+    double period = -1.0;
+    try {
+      period = std::stod(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || item.find_first_not_of(" ", used) != std::string::npos || !(period >= 0.0) ||
+        !std::isfinite(period))
+      throw std::invalid_argument(
+          fmt::format("--periods: '{}' is not a period in seconds (>= 0)", item));
+    periods.push_back(period);
+  }
+  if (periods.empty()) throw std::invalid_argument("--periods: give at least one period");
+  return periods;
+}
+
+struct Spectrum {
+  std::vector<double> periods, sa_g, sv, sd;  // Sa in g, Sv in m/s, Sd in m
+};
+
+Spectrum response_spectrum(const model::GroundMotion& motion, const std::vector<double>& periods,
+                           double damping_ratio) {
+  Spectrum spectrum;
+  spectrum.periods = periods;
+  for (double period : periods) {
+    const double sa = model::spectral_acceleration(motion, period, damping_ratio);
+    const double omega = period > 0.0 ? 2.0 * std::numbers::pi / period : 0.0;
+    spectrum.sa_g.push_back(sa / kStandardGravity);
+    spectrum.sv.push_back(period > 0.0 ? sa / omega : 0.0);
+    spectrum.sd.push_back(period > 0.0 ? sa / (omega * omega) : 0.0);
+  }
+  return spectrum;
+}
+
+std::string format_spectrum(const model::GroundMotion& motion, const Spectrum& spectrum,
+                            double damping_ratio) {
+  std::string text = fmt::format(
+      "record     {}\npoints     {}\ndt         {:g} s\nduration   {:g} s\n"
+      "PGA        {:.4f} g ({:.4g} m/s^2)\ndamping    {:g} %\n\n"
+      "{:>10}  {:>10}  {:>11}  {:>11}\n",
+      motion.name, motion.acceleration.size(), motion.time_step, motion.duration(),
+      motion.peak() / kStandardGravity, motion.peak(), 100.0 * damping_ratio, "period [s]",
+      "Sa [g]", "Sv [m/s]", "Sd [m]");
+  for (std::size_t k = 0; k < spectrum.periods.size(); ++k)
+    text += fmt::format("{:>10.4g}  {:>10.4f}  {:>11.4e}  {:>11.4e}\n", spectrum.periods[k],
+                        spectrum.sa_g[k], spectrum.sv[k], spectrum.sd[k]);
+  return text;
+}
+
+io::Document spectrum_document(const std::string& path, const model::GroundMotion& motion,
+                               const Spectrum& spectrum, double damping_ratio) {
+  io::Document document;
+  document.set("record", motion.name)
+      .set("path", path)
+      .set("npts", static_cast<long>(motion.acceleration.size()))
+      .set("dt", motion.time_step)
+      .set("duration", motion.duration())
+      .set("pga_g", motion.peak() / kStandardGravity)
+      .set("pga_m_per_s2", motion.peak())
+      .set("damping_ratio", damping_ratio)
+      .set("periods", spectrum.periods)
+      .set("sa_g", spectrum.sa_g)
+      .set("sv_m_per_s", spectrum.sv)
+      .set("sd_m", spectrum.sd);
+  return document;
+}
+
+}  // namespace
+
+int spectrum_command(const Arguments& arguments) {
+  po::options_description options(kSpectrumUsage);
+  std::string format = "auto", units = "g", periods_text, csv;
+  int column = 1;
+  double damping_ratio = 0.05;
+  std::optional<double> time_step;
+  options.add_options()("help,h", "show this help")(
+      "format", po::value(&format)->default_value(format),
+      "at2 | columns | auto (.AT2 or an NPTS header line: at2; else columns)")(
+      "column", po::value(&column),
+      "columns file: the column to read, counting from 1 (default 1, or 2 with --time-column)")(
+      "dt", po::value<double>(), "time step [s] of a columns file that does not state it")(
+      "time-column", "columns file: the first column is time (gives dt)")(
+      "units", po::value(&units)->default_value(units),
+      "of the values in the file: g | m/s2 | cm/s2 (AT2 files are in g)")(
+      "damping", po::value(&damping_ratio)->default_value(damping_ratio, "0.05"),
+      "damping ratio of the oscillators")(
+      "periods", po::value(&periods_text),
+      "comma-separated periods [s], e.g. 0.1,0.2,0.5,1 (0 gives the PGA)")(
+      "csv", po::value(&csv), "write period,sa_g,sv_m_per_s,sd_m to this CSV file")(
+      "json", "print the record's data and the spectrum as one JSON object");
+  po::options_description hidden;
+  std::string record;
+  hidden.add_options()("record", po::value(&record));
+  po::options_description all;
+  all.add(options).add(hidden);
+  po::positional_options_description positional;
+  positional.add("record", 1);
+  po::variables_map vm;
+  po::store(po::command_line_parser(arguments).options(all).positional(positional).run(), vm);
+  po::notify(vm);
+  if (vm.count("help")) {
+    std::cout << options << "\n";
+    return 0;
+  }
+  auto usage_error = [](const std::string& what) {
+    std::cerr << "pound spectrum: " << what << "\n";
+    return 1;
+  };
+  if (record.empty()) return usage_error("name the record file (see `pound spectrum --help`)");
+  if (!(damping_ratio >= 0.0 && damping_ratio < 1.0))
+    return usage_error("--damping must be in [0, 1)");
+  if (format != "auto" && format != "at2" && format != "columns")
+    return usage_error(fmt::format("unknown --format '{}' (known: at2, columns, auto)", format));
+
+  io::RecordFormat record_format;
+  record_format.format = format;
+  record_format.time_column = vm.count("time-column") > 0;
+  record_format.column = vm.count("column") ? column : (record_format.time_column ? 2 : 1);
+  if (vm.count("dt")) record_format.time_step = vm["dt"].as<double>();
+  std::vector<double> periods = default_periods();
+  try {
+    record_format.units = io::parse_acceleration_unit(units);
+    if (!periods_text.empty()) periods = parse_periods(periods_text);
+  } catch (const std::invalid_argument& error) {
+    return usage_error(error.what());
+  }
+
+  // Read in m/s^2 (the spectrum's SI units); Sa is printed in g.
+  const model::GroundMotion motion =
+      io::read_ground_motion(record, record_format, kStandardGravity);
+  const Spectrum spectrum = response_spectrum(motion, periods, damping_ratio);
+  if (!csv.empty())
+    io::write_csv_atomic(csv, Table{{"period", "sa_g", "sv_m_per_s", "sd_m"},
+                                    {spectrum.periods, spectrum.sa_g, spectrum.sv, spectrum.sd}});
+  if (vm.count("json"))
+    std::cout << spectrum_document(record, motion, spectrum, damping_ratio).dump() << "\n";
+  else
+    std::cout << format_spectrum(motion, spectrum, damping_ratio);
+  return 0;
+}
+
+}  // namespace pound::app

@@ -1,0 +1,71 @@
+#include "assembly/modal_analysis.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <numbers>
+#include <stdexcept>
+
+namespace pound::assembly {
+
+Modes modal_analysis(const StructuralSystem& system, Index max_dofs) {
+  const Index n = system.size();
+  if (n > max_dofs)
+    throw std::length_error(fmt::format("modal analysis of {} DOFs: the dense eigen-solver is "
+                                        "limited to {} DOFs",
+                                        n, max_dofs));
+  Matrix stiffness = Matrix(system.stiffness());
+  const Matrix mass = Matrix(system.mass_matrix());
+  // Links at their initial tangent (penetration -gap, at rest), on copies of their laws.
+  const LinkSet& links = system.links();
+  const Matrix connectivity = Matrix(links.connectivity());
+  for (Index k = 0; k < links.count(); ++k) {
+    const Index row = links.row(k);
+    auto law = links.law(k).clone();
+    const double tangent = law->set_trial({-links.gaps()[row], 0.0, 0.0}).stiffness;
+    if (tangent != 0.0)
+      stiffness += tangent * connectivity.row(row).transpose() * connectivity.row(row);
+  }
+  // Split DOFs with and without mass; condense the massless ones statically.
+  std::vector<Index> with_mass, massless;
+  for (Index i = 0; i < n; ++i) (mass.row(i).cwiseAbs().maxCoeff() > 0.0 ? with_mass : massless).push_back(i);
+  const auto m_count = static_cast<Index>(with_mass.size()), z_count = static_cast<Index>(massless.size());
+  auto block = [](const Matrix& a, const std::vector<Index>& rows, const std::vector<Index>& cols) {
+    Matrix out(rows.size(), cols.size());
+    for (std::size_t r = 0; r < rows.size(); ++r)
+      for (std::size_t c = 0; c < cols.size(); ++c) out(r, c) = a(rows[r], cols[c]);
+    return out;
+  };
+  Matrix reduced = block(stiffness, with_mass, with_mass);
+  Matrix recovery(z_count, m_count);  // x_0 = recovery x_m
+  if (z_count > 0) {
+    const Eigen::LDLT<Matrix> k00(block(stiffness, massless, massless));
+    recovery = -k00.solve(block(stiffness, massless, with_mass));
+    reduced += block(stiffness, with_mass, massless) * recovery;
+  }
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> solver(reduced,
+                                                               block(mass, with_mass, with_mass));
+  if (solver.info() != Eigen::Success) throw std::runtime_error("modal analysis did not converge");
+  Modes modes;
+  modes.omega_squared = solver.eigenvalues();
+  modes.shapes = Matrix::Zero(n, m_count);
+  for (Index r = 0; r < m_count; ++r) modes.shapes.row(with_mass[r]) = solver.eigenvectors().row(r);
+  if (z_count > 0) {
+    const Matrix recovered = recovery * solver.eigenvectors();
+    for (Index r = 0; r < z_count; ++r) modes.shapes.row(massless[r]) = recovered.row(r);
+  }
+  return modes;
+}
+
+std::vector<double> natural_periods(const StructuralSystem& system, int count) {
+  const Modes modes = modal_analysis(system);
+  const double largest = modes.omega_squared.size() ? modes.omega_squared.maxCoeff() : 0.0;
+  std::vector<double> periods;
+  for (Index k = 0; k < modes.omega_squared.size() && static_cast<int>(periods.size()) < count; ++k)
+    if (modes.omega_squared[k] > 1e-10 * largest)  // rigid-body modes have no period
+      periods.push_back(2.0 * std::numbers::pi / std::sqrt(modes.omega_squared[k]));
+  return periods;
+}
+
+}  // namespace pound::assembly

@@ -1,0 +1,23 @@
+#pragma once
+// Natural frequencies and mode shapes of an assembled model as it starts: the linear elements
+// plus every link at its initial tangent (structural springs at their stiffness, contact links
+// open), undamped. Massless DOFs (rotations without rotary inertia) are condensed statically
+// first; the rest is a dense generalised eigenproblem K x = w^2 M x (Eigen), so it is meant for
+// models up to a few thousand DOFs.
+#include <vector>
+
+#include "assembly/structural_system.hpp"
+
+namespace pound::assembly {
+
+struct Modes {
+  Vector omega_squared;  // ascending, [1/T^2]; rigid-body modes ~ 0
+  Matrix shapes;         // columns, mass-normalised (phi^T M phi = 1), all DOFs
+};
+
+// Throws std::length_error above `max_dofs` (dense solve).
+Modes modal_analysis(const StructuralSystem& system, Index max_dofs = 4000);
+// The first `count` periods 2 pi / w of the vibration modes (rigid-body modes left out).
+std::vector<double> natural_periods(const StructuralSystem& system, int count);
+
+}  // namespace pound::assembly

@@ -1,0 +1,10 @@
+#include "contact/elastic_spring.hpp"
+
+namespace pound::contact {
+
+LawResponse ElasticSpring::set_trial(const LinkKinematics& trial) {
+  trial_loaded_ = trial.penetration != 0.0;
+  return {.force = stiffness_ * trial.penetration, .stiffness = stiffness_};
+}
+
+}  // namespace pound::contact

@@ -1,0 +1,42 @@
+#pragma once
+// Reading ground-acceleration records in the forms users download them:
+//  * PEER .AT2 files of every header generation (NGA-West2 "NPTS=  5372, DT=   .0100 SEC",
+//    NGA-West1 "4096    0.0100    NPTS, DT", PEER 2000, AT2-like free-text headers): values
+//    free-format in Fortran E, F or D notation, glued fields, short last lines, CRLF;
+//  * plain text columns: comment ('%', '#', '!', "//") and header lines before the data, tabs
+//    and commas, CRLF, optionally a time column; dt from an option, the header ("dt=0.005") or
+//    the time column.
+// Values are converted to the model's units. A header that states units other than the ones
+// given is an error, as is anything malformed: each InputError names the file, the line and
+// what was expected.
+#include <optional>
+#include <string>
+
+#include "model/ground_motion.hpp"
+
+namespace pound::io {
+
+enum class AccelerationUnit { g, m_per_s2, cm_per_s2, model };  // "g", "m/s2", "cm/s2", "model"
+
+struct RecordFormat {
+  // "at2", "columns", or "auto": at2 for a .AT2 extension (any case) or a header line with
+  // NPTS in the first lines, else columns.
+  std::string format = "auto";
+  int column = 1;  // 1-based column to read in a columns file (counting the time column)
+  // Required for columns files unless the header states dt or `time_column` is set; when the
+  // file states it too, the two must agree.
+  std::optional<double> time_step;
+  bool time_column = false;  // the first column is time (uniform; dt is derived from it)
+  AccelerationUnit units = AccelerationUnit::g;  // of the values in the file; AT2 files are in g
+};
+
+// Reads a record and converts it to model units: `g_in_model_units` is the acceleration of
+// gravity in the model's units (9.80665 for m and s). Throws pound::InputError(file, "line N",
+// what) for anything wrong in the file.
+model::GroundMotion read_ground_motion(const std::string& path, const RecordFormat& format,
+                                       double g_in_model_units);
+
+// "g", "m/s2", "cm/s2" or "model"; throws std::invalid_argument listing the valid names.
+AccelerationUnit parse_acceleration_unit(const std::string& text);
+
+}  // namespace pound::io

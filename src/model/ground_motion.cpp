@@ -1,0 +1,188 @@
+#include "model/ground_motion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace pound::model {
+namespace {
+
+// How far past the last sample (in samples) a time still counts as on it: times computed as
+// k * dt by callers land a rounding error away from the sample.
+constexpr double kSampleTolerance = 1e-9;
+
+void require_samples(const GroundMotion& motion) {
+  if (!(motion.time_step > 0.0) || !std::isfinite(motion.time_step))
+    throw std::invalid_argument("ground motion '" + motion.name +
+                                "': the time step must be positive and finite");
+  if (motion.acceleration.empty())
+    throw std::invalid_argument("ground motion '" + motion.name + "' has no samples");
+}
+
+void require_oscillator(double period, double damping_ratio) {
+  if (!(period > 0.0) || !std::isfinite(period))
+    throw std::invalid_argument("the SDOF period must be positive and finite");
+  if (!(damping_ratio >= 0.0 && damping_ratio < 1.0))
+    throw std::invalid_argument("the SDOF damping ratio must be in [0, 1)");
+}
+
+// y - sin(y) without the cancellation of the direct difference at small y (long periods give
+// w dt ~ 1e-3, where the difference would keep only half the digits).
+double y_minus_sin(double y) {
+  if (std::abs(y) > 0.1) return y - std::sin(y);
+  const double y2 = y * y;
+  // y^3/3! - y^5/5! + y^7/7! - y^9/9!: the next term is below 1e-19 of the sum for |y| <= 0.1.
+  return y * y2 / 6.0 * (1.0 - y2 / 20.0 * (1.0 - y2 / 42.0 * (1.0 - y2 / 72.0)));
+}
+
+// The exact one-step map of u'' + 2 z w u' + w^2 u = -a_g(t) for a ground acceleration that is
+// linear within the step (Nigam, N. C. and Jennings, P. C. (1969), "Calculation of response
+// spectra from strong-motion earthquake records", BSSA 59(2), 909-922):
+//
+//   u_{i+1} = a11 u_i + a12 v_i + b11 a_i + b12 a_{i+1}
+//   v_{i+1} = a21 u_i + a22 v_i + b21 a_i + b22 a_{i+1}
+//
+// With E = exp(-z w dt), wd = w sqrt(1 - z^2), S = sin(wd dt), C = cos(wd dt), z' = z/sqrt(1-z^2)
+// the free response is
+//   a11 = E (C + z' S),  a12 = E S / wd,  a21 = -E w S / sqrt(1 - z^2),  a22 = E (C - z' S).
+// Within the step a_g = a_i + (a_{i+1} - a_i) tau/dt has the particular solution P + Q tau with
+//   Q = -(a_{i+1} - a_i) / (w^2 dt),  P = -a_i / w^2 - 2 z Q / w,
+// and the deviation from it moves freely, so
+//   u_{i+1} = a11 u_i + a12 v_i + (1 - a11) P + (dt - a12) Q
+//   v_{i+1} = a21 u_i + a22 v_i - a21 P + (1 - a22) Q;
+// collecting a_i and a_{i+1} gives Nigam & Jennings' b coefficients. They are applied here as
+// b11 a_i + b12 a_{i+1} = (b11 + b12) a_i + b12 (a_{i+1} - a_i), with the step part
+// b11 + b12 = -(1 - a11)/w^2 and b21 + b22 = a21/w^2 formed directly: the b's are large and of
+// opposite sign for short periods, and their sum rounded separately would lose digits. Likewise
+// 1 - a11, 1 - a22 and dt - a12 are formed from expm1, 2 sin^2(y/2) and y - sin y so that long
+// periods (w dt << 1) keep theirs.
+struct StepMap {
+  double a11, a12, a21, a22;
+  double step_u, ramp_u, step_v, ramp_v;  // b11 + b12, b12, b21 + b22, b22
+};
+
+StepMap nigam_jennings_map(double omega, double zeta, double dt) {
+  const double root = std::sqrt(1.0 - zeta * zeta);
+  const double omega_d = omega * root;
+  const double x = zeta * omega * dt, y = omega_d * dt;
+  const double one_minus_e = -std::expm1(-x), e = 1.0 - one_minus_e;
+  const double s = std::sin(y), c = std::cos(y);
+  const double one_minus_c = 2.0 * std::pow(std::sin(0.5 * y), 2);
+  const double one_minus_ec = one_minus_e + one_minus_c - one_minus_e * one_minus_c;
+  const double skew = e * zeta / root * s;  // E z' S
+
+  StepMap map{};
+  map.a11 = e * c + skew;
+  map.a12 = e * s / omega_d;
+  map.a21 = -e * omega * s / root;
+  map.a22 = e * c - skew;
+  const double one_minus_a11 = one_minus_ec - skew;
+  const double one_minus_a22 = one_minus_ec + skew;
+  const double dt_minus_a12 = (y_minus_sin(y) + one_minus_e * s) / omega_d;
+
+  // dP/da_{i+1} and dQ/da_{i+1}; a step (a_i = a_{i+1}) has P = -a_i/w^2, Q = 0.
+  const double w2 = omega * omega;
+  const double dq1 = -1.0 / (w2 * dt);
+  const double dp1 = -2.0 * zeta * dq1 / omega;
+  map.step_u = -one_minus_a11 / w2;
+  map.step_v = map.a21 / w2;
+  map.ramp_u = one_minus_a11 * dp1 + dt_minus_a12 * dq1;
+  map.ramp_v = -map.a21 * dp1 + one_minus_a22 * dq1;
+  return map;
+}
+
+// Runs the recurrence from rest, calling visit(k, u, v) at every sample k.
+template <class Visit>
+void integrate_sdof(const GroundMotion& motion, double period, double damping_ratio, Visit visit) {
+  require_samples(motion);
+  require_oscillator(period, damping_ratio);
+  const double omega = 2.0 * std::numbers::pi / period;
+  const StepMap m = nigam_jennings_map(omega, damping_ratio, motion.time_step);
+  const std::vector<double>& a = motion.acceleration;
+  double u = 0.0, v = 0.0;
+  visit(std::size_t{0}, u, v);
+  for (std::size_t k = 0; k + 1 < a.size(); ++k) {
+    const double increment = a[k + 1] - a[k];
+    const double u_next = m.a11 * u + m.a12 * v + m.step_u * a[k] + m.ramp_u * increment;
+    v = m.a21 * u + m.a22 * v + m.step_v * a[k] + m.ramp_v * increment;
+    u = u_next;
+    visit(k + 1, u, v);
+  }
+}
+
+}  // namespace
+
+double GroundMotion::duration() const {
+  return acceleration.empty() ? 0.0 : static_cast<double>(acceleration.size() - 1) * time_step;
+}
+
+double GroundMotion::at(double time) const {
+  if (acceleration.empty() || !(time_step > 0.0)) return 0.0;
+  const double position = time / time_step;
+  const double last = static_cast<double>(acceleration.size() - 1);
+  if (!(position >= -kSampleTolerance && position <= last + kSampleTolerance)) return 0.0;
+  const double clamped = std::clamp(position, 0.0, last);
+  const auto k = std::min(static_cast<std::size_t>(clamped), acceleration.size() - 1);
+  if (k + 1 == acceleration.size()) return acceleration[k];
+  const double fraction = clamped - static_cast<double>(k);
+  return acceleration[k] + fraction * (acceleration[k + 1] - acceleration[k]);
+}
+
+double GroundMotion::peak() const {
+  double largest = 0.0;
+  for (double a : acceleration) largest = std::max(largest, std::abs(a));
+  return largest;
+}
+
+SdofResponse sdof_response(const GroundMotion& motion, double period, double damping_ratio) {
+  SdofResponse response;
+  const std::size_t n = motion.acceleration.size();
+  response.displacement.reserve(n);
+  response.velocity.reserve(n);
+  response.absolute_acceleration.reserve(n);
+  const double omega = 2.0 * std::numbers::pi / period;
+  integrate_sdof(motion, period, damping_ratio, [&](std::size_t, double u, double v) {
+    response.displacement.push_back(u);
+    response.velocity.push_back(v);
+    // u'' + a_g = -(2 z w u' + w^2 u): the oscillator's absolute acceleration.
+    response.absolute_acceleration.push_back(
+        -(2.0 * damping_ratio * omega * v + omega * omega * u));
+  });
+  return response;
+}
+
+double spectral_acceleration(const GroundMotion& motion, double period, double damping_ratio) {
+  if (period == 0.0) {
+    require_samples(motion);
+    return motion.peak();
+  }
+  double largest = 0.0;
+  integrate_sdof(motion, period, damping_ratio,
+                 [&](std::size_t, double u, double) { largest = std::max(largest, std::abs(u)); });
+  const double omega = 2.0 * std::numbers::pi / period;
+  return omega * omega * largest;
+}
+
+double scale_to_peak(const GroundMotion& motion, double target_peak) {
+  const double peak = motion.peak();
+  if (!(peak > 0.0))
+    throw std::invalid_argument("ground motion '" + motion.name + "' is zero: cannot scale it");
+  return target_peak / peak;
+}
+
+double scale_to_spectral_acceleration(const GroundMotion& motion, double target, double period,
+                                      double damping_ratio) {
+  const double sa = spectral_acceleration(motion, period, damping_ratio);
+  if (!(sa > 0.0))
+    throw std::invalid_argument("ground motion '" + motion.name +
+                                "' has no spectral acceleration at that period: cannot scale it");
+  return target / sa;
+}
+
+void scale(GroundMotion& motion, double factor) {
+  for (double& a : motion.acceleration) a *= factor;
+}
+
+}  // namespace pound::model

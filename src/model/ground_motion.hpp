@@ -1,0 +1,41 @@
+#pragma once
+// A ground-acceleration record, uniformly sampled, in the model's units of acceleration (the
+// io/ readers convert from g, cm/s^2 or m/s^2), with the scaling engineers apply to records.
+#include <string>
+#include <vector>
+
+namespace pound::model {
+
+struct GroundMotion {
+  std::string name;                  // where it came from (file name), for outputs
+  double time_step = 0.0;            // [T], > 0
+  std::vector<double> acceleration;  // [L/T^2], acceleration[k] at t = k * time_step
+
+  double duration() const;  // (n - 1) * time_step
+  // Linear interpolation between samples; 0 before 0 and after the last sample (the ground is
+  // at rest once the record ends).
+  double at(double time) const;
+  double peak() const;  // max |a|
+};
+
+// Pseudo-spectral acceleration S_a = w^2 max|u| of a linear SDOF (period, damping ratio) under
+// the record, computed with the exact piecewise-linear recurrence (Nigam & Jennings 1969), so
+// it is exact for the linearly interpolated record. Period 0 gives the peak acceleration.
+double spectral_acceleration(const GroundMotion& motion, double period, double damping_ratio);
+
+// Relative displacement, velocity and absolute acceleration history of a linear SDOF under the
+// record at the record's own samples (Nigam & Jennings); used for spectra and as an exact
+// reference for the time integrators.
+struct SdofResponse {
+  std::vector<double> displacement, velocity, absolute_acceleration;
+};
+SdofResponse sdof_response(const GroundMotion& motion, double period, double damping_ratio);
+
+// Scale factors that bring a record to a target: a peak ground acceleration, or a spectral
+// acceleration at a period (damping ratio usually 0.05). Targets in the record's own units.
+double scale_to_peak(const GroundMotion& motion, double target_peak);
+double scale_to_spectral_acceleration(const GroundMotion& motion, double target, double period,
+                                      double damping_ratio);
+void scale(GroundMotion& motion, double factor);
+
+}  // namespace pound::model
