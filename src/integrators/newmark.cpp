@@ -73,7 +73,12 @@ void Newmark::initialize(SecondOrderSystem& system, State& state) {
   rhs -= work;
   rhs.noalias() -= links.connectivity().transpose() * state.link_force;
   state.acceleration.resize(n);
-  system.factor(1.0, 0.0, 0.0)->solve(rhs, state.acceleration);
+  if (const Vector* mass = system.lumped_mass()) {
+    // Massless DOFs (rotations without rotary inertia) have static equations: no acceleration.
+    for (Index i = 0; i < n; ++i) state.acceleration[i] = (*mass)[i] > 0.0 ? rhs[i] / (*mass)[i] : 0.0;
+  } else {
+    system.factor(1.0, 0.0, 0.0)->solve(rhs, state.acceleration);
+  }
 }
 
 const Newmark::Factorization& Newmark::factorization(SecondOrderSystem& system, double dt) {
