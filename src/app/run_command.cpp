@@ -15,6 +15,8 @@
 #include "io/output.hpp"
 #include "report/rod_impact.hpp"
 #include "report/rod_impact_report.hpp"
+#include "results/energy_balance.hpp"
+#include "results/monitors.hpp"
 #include "results/recorders.hpp"
 
 namespace pound::app {
@@ -129,6 +131,18 @@ int run_command(const Arguments& arguments) {
   std::vector<Index> normal_rows;
   for (Index k = 0; k < system->links().count(); ++k) normal_rows.push_back(system->links().row(k));
   results::LinkSummaries links(std::move(normal_rows));
+  results::EnergyBalance energy(*system);
+  const auto& dofs = system->dofs();
+  std::vector<std::pair<Index, Index>> drift_equations;
+  for (const builder::DriftMonitor& m : built.drift_monitors)
+    drift_equations.emplace_back(dofs.equation(m.bottom, 0), dofs.equation(m.top, 0));
+  results::DriftMonitors drifts(std::move(drift_equations));
+  std::vector<results::JointMonitors::Where> joint_places;
+  for (const builder::JointMonitor& m : built.joint_monitors)
+    joint_places.push_back({system->links().row(m.link),
+                            built.model.links[static_cast<std::size_t>(m.link)].gap,
+                            dofs.equation(m.girder, 0), dofs.equation(m.seat, 0)});
+  results::JointMonitors joints(std::move(joint_places));
 
   State state;
   state.velocity = system->initial_velocity(built.model);
@@ -140,10 +154,14 @@ int run_command(const Arguments& arguments) {
     stats = analysis.run(state, [&](const State& s, const StepResult&) {
       for (auto& recorder : recorders) recorder->record(s);
       links.record(s);
+      energy.record(s);
+      drifts.record(s);
+      joints.record(s);
     });
   } catch (const SolveError& error) {
     failure = error.reason();
     failure_time = error.time();
+    stats = analysis.statistics();  // up to the failure
   }
   const double run_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
@@ -166,6 +184,55 @@ int run_command(const Arguments& arguments) {
   for (std::size_t k = 0; k < built.model.links.size(); ++k)
     link_documents.push_back(link_document(built.model.links[k], links.summaries()[k]));
   summary.set("links", link_documents);
+  std::vector<io::Document> storey_documents, pier_documents, joint_documents;
+  for (std::size_t k = 0; k < built.drift_monitors.size(); ++k) {
+    const builder::DriftMonitor& m = built.drift_monitors[k];
+    const results::DriftPeak& peak = drifts.peaks()[k];
+    io::Document doc;
+    doc.set("id", m.id).set(m.kind == "pier" ? "bridge" : "building", m.group)
+        .set("height", m.height).set("peak_drift", peak.peak_drift)
+        .set("drift_ratio", peak.peak_drift / m.height).set("time", peak.time);
+    if (m.yield_drift) doc.set("ductility", peak.peak_drift / *m.yield_drift);
+    (m.kind == "pier" ? pier_documents : storey_documents).push_back(doc);
+  }
+  for (std::size_t k = 0; k < built.joint_monitors.size(); ++k) {
+    const builder::JointMonitor& m = built.joint_monitors[k];
+    const results::JointPeak& peak = joints.peaks()[k];
+    io::Document doc;
+    doc.set("id", m.id).set("link", built.model.links[static_cast<std::size_t>(m.link)].id)
+        .set("peak_opening", peak.peak_opening).set("peak_closing", peak.peak_closing)
+        .set("peak_seat_movement", peak.peak_seat_movement);
+    if (m.seat_width > 0.0)
+      doc.set("seat_width", m.seat_width).set("unseating_margin", m.seat_width - peak.peak_seat_movement)
+          .set("unseated", peak.peak_seat_movement >= m.seat_width);
+    joint_documents.push_back(doc);
+  }
+  if (!storey_documents.empty()) summary.set("storeys", storey_documents);
+  if (!pier_documents.empty()) summary.set("piers", pier_documents);
+  if (!joint_documents.empty()) summary.set("joints", joint_documents);
+  const results::EnergyTerms& e = energy.terms();
+  io::Document energy_document;
+  energy_document.set("input", e.input).set("initial", e.initial).set("kinetic", e.kinetic)
+      .set("strain", e.strain).set("damping", e.damping).set("links", e.links)
+      .set("balance_error", e.balance_error()).set("worst_balance_error", energy.worst_balance_error());
+  summary.set("energy", energy_document);
+  // Warnings for results an engineer should not trust as they are.
+  std::vector<std::string> warnings;
+  for (std::size_t k = 0; k < built.joint_monitors.size(); ++k)
+    if (built.joint_monitors[k].seat_width > 0.0 &&
+        joints.peaks()[k].peak_seat_movement >= built.joint_monitors[k].seat_width)
+      warnings.push_back(fmt::format("joint {}: the girder moved {:.4g} on a seat {:.4g} wide: unseated",
+                                     built.joint_monitors[k].id, joints.peaks()[k].peak_seat_movement,
+                                     built.joint_monitors[k].seat_width));
+  if (energy.worst_balance_error() > 0.01)
+    warnings.push_back(fmt::format("energy balance error reached {:.2f} % of the largest energy term: "
+                                   "a contact or a step was not resolved (reduce the time step)",
+                                   100.0 * energy.worst_balance_error()));
+  summary.set("warnings", [&] {
+    std::vector<io::Document> items;
+    for (const std::string& w : warnings) items.push_back(io::Document().set("warning", w));
+    return items;
+  }());
 
   std::string verification_line;
   if (built.sole_rod_pair && failure.empty()) {
@@ -199,17 +266,51 @@ int run_command(const Arguments& arguments) {
     std::cout << fmt::format("pound run {}: {} DOFs, {} steps, {} Newton iterations, {:.3f} s -> {}/\n",
                              model_path, system->size(), stats.steps, stats.newton_iterations,
                              run_time, out);
+    // Contacts and restrainers one line each; structural springs (bearings) in one line.
+    int springs = 0;
+    double spring_force = 0.0;
     for (std::size_t k = 0; k < built.model.links.size(); ++k) {
       const results::LinkSummary& s = links.summaries()[k];
-      if (s.peak_tension > 0.0)
-        std::cout << fmt::format("  link {}: taut {} time(s), peak tension {:.6g}, peak opening {:.4g}\n",
-                                 built.model.links[k].id, s.impacts, s.peak_tension, s.peak_opening);
-      else
-        std::cout << fmt::format("  link {}: {} impact(s), peak force {:.6g}, peak penetration {:.4g}, impulse {:.6g}\n",
-                                 built.model.links[k].id, s.impacts, s.peak_force, s.peak_penetration, s.impulse);
+      const std::string law = system->links().law(static_cast<Index>(k)).name();
+      const std::string& id = built.model.links[k].id;
+      if (law == "elastic_spring" || law == "bilinear_spring") {
+        ++springs;
+        spring_force = std::max({spring_force, s.peak_force, s.peak_tension});
+      } else if (law == "restrainer" || law == "hook") {
+        std::cout << fmt::format("  {} {}: taut {} time(s), peak tension {:.6g}, peak opening {:.4g}\n",
+                                 law, id, s.impacts, s.peak_tension, s.peak_opening);
+      } else {
+        std::cout << fmt::format("  contact {}: {} impact(s), peak force {:.6g}, peak penetration {:.4g}, impulse {:.6g}\n",
+                                 id, s.impacts, s.peak_force, s.peak_penetration, s.impulse);
+      }
+    }
+    if (springs > 0)
+      std::cout << fmt::format("  {} spring link(s) (bearings, hinges): largest force {:.6g}\n", springs,
+                               spring_force);
+    for (std::size_t k = 0; k < built.joint_monitors.size(); ++k) {
+      const auto& m = built.joint_monitors[k];
+      const auto& p = joints.peaks()[k];
+      std::cout << fmt::format("  joint {}: opened {:.4g}, closed {:.4g}, moved {:.4g} on its seat{}\n", m.id,
+                               p.peak_opening, p.peak_closing, p.peak_seat_movement,
+                               m.seat_width > 0.0 ? fmt::format(" (seat {:.4g}, margin {:.4g})", m.seat_width,
+                                                                m.seat_width - p.peak_seat_movement)
+                                                  : std::string());
+    }
+    for (std::size_t k = 0; k < built.drift_monitors.size(); ++k) {
+      const auto& m = built.drift_monitors[k];
+      const double drift = drifts.peaks()[k].peak_drift;
+      std::cout << fmt::format("  {} {}: peak drift {:.4g} ({:.3f} % of {:.4g}){}\n", m.kind, m.id, drift,
+                               100.0 * drift / m.height, m.height,
+                               m.yield_drift ? fmt::format(", ductility {:.2f}", drift / *m.yield_drift)
+                                             : std::string());
     }
     std::cout << verification_line;
+    std::cout << fmt::format("  energy: input {:.6g}, initial {:.6g}, kinetic {:.6g}, strain {:.6g}, "
+                             "damping {:.6g}, links {:.6g}; balance error {:.2e}\n",
+                             e.input, e.initial, e.kinetic, e.strain, e.damping, e.links,
+                             energy.worst_balance_error());
   }
+  for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
   if (!failure.empty()) {
     std::cerr << fmt::format("error: {}: analysis failed at t = {:.6g}: {} (results up to then are in {}/)\n",
                              model_path, failure_time, failure, out);

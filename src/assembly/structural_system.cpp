@@ -95,7 +95,15 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
   const Index n = dofs_.size();
   const int dpn = dofs_.dofs_per_node();
   mass_ = Vector::Zero(n);
-  std::vector<Eigen::Triplet<double>> stiffness, consistent_mass;
+  std::vector<Eigen::Triplet<double>> stiffness, consistent_mass, damping;
+  // Each element's own Rayleigh coefficients, or the model's: C = sum a0_e M_e + a1_e K_e.
+  bool own_damping = false;
+  const model::RayleighDamping global = model.damping.value_or(model::RayleighDamping{});
+  auto coefficients = [&](const std::optional<model::RayleighDamping>& own) {
+    own_damping = own_damping || own.has_value();
+    return own.value_or(global);
+  };
+  Vector damping_diagonal = Vector::Zero(n);
 
   // Scatter a block over (node, direction) pairs, dropping fixed DOFs.
   auto scatter = [&](std::vector<Eigen::Triplet<double>>& into, const auto& block,
@@ -110,8 +118,11 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
       }
     }
   };
-  auto add_mass = [&](Index node, int direction, double value) {
-    if (const Index row = dofs_.equation(node, direction); row >= 0) mass_[row] += value;
+  auto add_mass = [&](Index node, int direction, double value, double mass_coefficient) {
+    if (const Index row = dofs_.equation(node, direction); row >= 0) {
+      mass_[row] += value;
+      damping_diagonal[row] += mass_coefficient * value;
+    }
   };
 
   for (const model::Truss& truss : model.trusses) {
@@ -131,9 +142,11 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
         block(p, q) = sign * axial * cosines[dofs[p].second] * cosines[dofs[q].second];
       }
     scatter(stiffness, block, dofs);
+    const model::RayleighDamping c = coefficients(truss.damping);
+    if (c.stiffness_coefficient != 0.0) scatter(damping, Matrix(c.stiffness_coefficient * block), dofs);
     for (Index node : {truss.node_i, truss.node_j})
       for (int d = 0; d < translations; ++d)
-        add_mass(node, d, 0.5 * truss.density * truss.area * length);
+        add_mass(node, d, 0.5 * truss.density * truss.area * length, c.mass_coefficient);
   }
 
   bool consistent = false;
@@ -144,34 +157,47 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
     const Matrix6 t = beam_rotation((b[0] - a[0]) / length, (b[1] - a[1]) / length);
     const std::vector<std::pair<Index, int>> dofs = {{beam.node_i, 0}, {beam.node_i, 1}, {beam.node_i, 2},
                                                      {beam.node_j, 0}, {beam.node_j, 1}, {beam.node_j, 2}};
-    scatter(stiffness, Matrix6(t.transpose() * beam_local_stiffness(beam, length) * t), dofs);
+    const Matrix6 element_stiffness = t.transpose() * beam_local_stiffness(beam, length) * t;
+    scatter(stiffness, element_stiffness, dofs);
+    const model::RayleighDamping c = coefficients(beam.damping);
+    if (c.stiffness_coefficient != 0.0)
+      scatter(damping, Matrix6(c.stiffness_coefficient * element_stiffness), dofs);
     const double mass_per_length = beam.density * beam.area + beam.extra_mass;
     if (beam.consistent_mass) {
       consistent = true;
-      scatter(consistent_mass, Matrix6(t.transpose() * beam_consistent_mass(mass_per_length, length) * t), dofs);
+      const Matrix6 element_mass = t.transpose() * beam_consistent_mass(mass_per_length, length) * t;
+      scatter(consistent_mass, element_mass, dofs);
+      if (c.mass_coefficient != 0.0) scatter(damping, Matrix6(c.mass_coefficient * element_mass), dofs);
     } else {
       for (Index node : {beam.node_i, beam.node_j})
-        for (int d = 0; d < 2; ++d) add_mass(node, d, 0.5 * mass_per_length * length);
+        for (int d = 0; d < 2; ++d) add_mass(node, d, 0.5 * mass_per_length * length, c.mass_coefficient);
     }
   }
 
   for (const model::NodalMass& lumped : model.masses) {
-    for (int d = 0; d < std::min(dpn, 2); ++d) add_mass(lumped.node, d, lumped.mass);
-    if (dpn == 3) add_mass(lumped.node, 2, lumped.rotary_inertia);
+    const double a0 = coefficients(lumped.damping).mass_coefficient;
+    for (int d = 0; d < std::min(dpn, 2); ++d) add_mass(lumped.node, d, lumped.mass, a0);
+    if (dpn == 3) add_mass(lumped.node, 2, lumped.rotary_inertia, a0);
   }
 
-  // Translational DOFs must carry mass; rotations may be massless (no rotary inertia lumped).
+  // A free DOF needs mass or element stiffness: massless DOFs with stiffness (rotations
+  // without rotary inertia, contact points on a column) have static equations; one with neither
+  // would make the equations singular.
   Vector diagonal_mass = mass_;
   if (consistent) {
     for (const auto& entry : consistent_mass)
       if (entry.row() == entry.col()) diagonal_mass[entry.row()] += entry.value();
   }
+  Vector diagonal_stiffness = Vector::Zero(n);
+  for (const auto& entry : stiffness)
+    if (entry.row() == entry.col()) diagonal_stiffness[entry.row()] += entry.value();
   for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
     for (int d = 0; d < std::min(dpn, 2); ++d)
-      if (const Index row = dofs_.equation(node, d); row >= 0 && !(diagonal_mass[row] > 0.0))
+      if (const Index row = dofs_.equation(node, d);
+          row >= 0 && !(diagonal_mass[row] > 0.0) && !(diagonal_stiffness[row] > 0.0))
         throw InputError("", fmt::format("/nodes/{}", node),
-                         fmt::format("node '{}' has no mass in direction {} (add a mass, an "
-                                     "element with density, or a support)",
+                         fmt::format("node '{}' has neither mass nor stiffness in direction {} (add "
+                                     "a mass, an element, or a support)",
                                      model.nodes[static_cast<std::size_t>(node)].id, kDirection[d]));
   if (consistent) {
     for (Index i = 0; i < n; ++i)
@@ -185,6 +211,14 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
   stiffness_.prune(0.0);
 
   if (model.damping) damping_ = *model.damping;
+  if (own_damping) {
+    // Elements damp with their own coefficients: C is assembled, not a0 M + a1 K.
+    for (Index i = 0; i < n; ++i)
+      if (damping_diagonal[i] != 0.0) damping.emplace_back(i, i, damping_diagonal[i]);
+    damping_matrix_.resize(n, n);
+    damping_matrix_.setFromTriplets(damping.begin(), damping.end());
+    damping_matrix_.prune(0.0);
+  }
 
   loads_ = Vector::Zero(n);
   for (const model::NodalLoad& load : model.loads)
@@ -283,6 +317,10 @@ void StructuralSystem::multiply_mass(const Vector& x, Vector& y) const {
 }
 
 void StructuralSystem::multiply_damping(const Vector& x, Vector& y) const {
+  if (damping_matrix_.size() > 0) {
+    y.noalias() = damping_matrix_ * x;
+    return;
+  }
   // C = a0 M + a1 K
   multiply_mass(x, y);
   y *= damping_.mass_coefficient;
@@ -300,10 +338,15 @@ void StructuralSystem::external_force(double time, Vector& force) const {
 }
 
 std::unique_ptr<LinearSolver> StructuralSystem::factor(double c_m, double c_c, double c_k) const {
-  // c_m M + c_c (a0 M + a1 K) + c_k K
-  const double mass_factor = c_m + c_c * damping_.mass_coefficient;
-  const double stiffness_factor = c_k + c_c * damping_.stiffness_coefficient;
-  Eigen::SparseMatrix<double> effective = stiffness_factor * stiffness_ + mass_factor * mass_matrix();
+  Eigen::SparseMatrix<double> effective;
+  if (damping_matrix_.size() > 0) {
+    effective = c_k * stiffness_ + c_m * mass_matrix() + c_c * damping_matrix_;
+  } else {
+    // c_m M + c_c (a0 M + a1 K) + c_k K
+    const double mass_factor = c_m + c_c * damping_.mass_coefficient;
+    const double stiffness_factor = c_k + c_c * damping_.stiffness_coefficient;
+    effective = stiffness_factor * stiffness_ + mass_factor * mass_matrix();
+  }
   effective.prune(0.0);
   const Index bandwidth = BandedLdlt::bandwidth_of(effective);
   if (bandwidth <= 1) return std::make_unique<FactorSolver<TwistedTridiagonal>>(effective);

@@ -18,7 +18,8 @@ class StructuralSystem final : public SecondOrderSystem {
   Index size() const override { return dofs_.size(); }
   void multiply_mass(const Vector& x, Vector& y) const override;
   bool has_damping() const override {
-    return damping_.mass_coefficient != 0.0 || damping_.stiffness_coefficient != 0.0;
+    return damping_matrix_.size() > 0 || damping_.mass_coefficient != 0.0 ||
+           damping_.stiffness_coefficient != 0.0;
   }
   void multiply_damping(const Vector& x, Vector& y) const override;
   void multiply_stiffness(const Vector& x, Vector& y) const override;
@@ -43,6 +44,7 @@ class StructuralSystem final : public SecondOrderSystem {
   Vector mass_;                             // lumped part (all of M without consistent masses)
   Eigen::SparseMatrix<double> mass_matrix_;  // all of M, only with consistent masses
   model::RayleighDamping damping_;
+  Eigen::SparseMatrix<double> damping_matrix_;  // assembled C, only when elements damp on their own
   Vector loads_;  // constant nodal forces on the free DOFs
   bool has_loads_ = false;
   struct Excitation {

@@ -279,6 +279,15 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
   if (user_spec.dimension != 1 && !user_spec.rod_pairs.empty())
     throw InputError(user_spec.source, fmt::format("/generators/{}", user_spec.rod_pair_generator_index[0]),
                      "rod_pair needs a 1-D scene (\"dimension\": 1)");
+  for (const auto* generators : {&user_spec.building_pairs})
+    for (const auto& g : *generators)
+      if (user_spec.dimension != 2)
+        throw InputError(user_spec.source, fmt::format("/generators/{}", g.generator_index),
+                         "adjacent_buildings needs a 2-D scene (\"dimension\": 2)");
+  for (const GirderBridgeSpec& g : user_spec.bridges)
+    if (user_spec.dimension != 2)
+      throw InputError(user_spec.source, fmt::format("/generators/{}", g.generator_index),
+                       "girder_bridge needs a 2-D scene (\"dimension\": 2)");
   const ModelSpec spec = expand(user_spec);
   const Resolver resolve(spec);
   BuiltModel built;
@@ -309,18 +318,24 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
       resolve.fail(path + "/nodes", fmt::format("element '{}' has zero length (nodes '{}' and '{}' "
                                                 "are at the same place)",
                                                 element.id, element.node_i, element.node_j));
+    std::optional<model::RayleighDamping> own;
+    if (element.rayleigh) own = model::RayleighDamping{(*element.rayleigh)[0], (*element.rayleigh)[1]};
     if (element.type == "beam") {
       model.beams.push_back({element.id, node_i, node_j, m.youngs_modulus, element.area,
-                             element.inertia, m.density, element.extra_mass, element.consistent_mass});
+                             element.inertia, m.density, element.extra_mass, element.consistent_mass,
+                             own});
     } else {
-      model.trusses.push_back({element.id, node_i, node_j, m.youngs_modulus, element.area, m.density});
+      model.trusses.push_back({element.id, node_i, node_j, m.youngs_modulus, element.area, m.density, own});
     }
   }
 
   for (std::size_t k = 0; k < spec.masses.size(); ++k)
     model.masses.push_back({resolve.node(built.node_index, spec.masses[k].node,
                                          fmt::format("/masses/{}/node", k)),
-                            spec.masses[k].mass, spec.masses[k].rotary_inertia});
+                            spec.masses[k].mass, spec.masses[k].rotary_inertia,
+                            spec.masses[k].mass_damping
+                                ? std::optional(model::RayleighDamping{*spec.masses[k].mass_damping, 0.0})
+                                : std::nullopt});
 
   const auto support_origin = origin_of(user_spec.supports.size(), "supports", spec.generated_from.supports);
   for (std::size_t k = 0; k < spec.supports.size(); ++k)
@@ -415,7 +430,30 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
     built.recorders.push_back(std::move(resolved));
   }
 
+  // Monitors, generated or the user's; generated ones come after the user's.
+  const std::size_t user_drifts = user_spec.drift_monitors.size(), user_joints = user_spec.joint_monitors.size();
+  for (std::size_t k = 0; k < spec.drift_monitors.size(); ++k) {
+    const DriftMonitorSpec& m = spec.drift_monitors[k];
+    const std::string path = k < user_drifts ? fmt::format("/monitors/drifts/{}", k) : "/generators";
+    built.drift_monitors.push_back({m.id, m.kind, m.group,
+                                    resolve.node(built.node_index, m.bottom, path + "/bottom"),
+                                    resolve.node(built.node_index, m.top, path + "/top"), m.height,
+                                    m.yield_drift});
+  }
+  for (std::size_t k = 0; k < spec.joint_monitors.size(); ++k) {
+    const JointMonitorSpec& m = spec.joint_monitors[k];
+    const std::string path = k < user_joints ? fmt::format("/monitors/joints/{}", k) : "/generators";
+    auto link = built.link_index.find(m.link);
+    if (link == built.link_index.end())
+      resolve.fail(path + "/link", fmt::format("link '{}' does not exist", m.link));
+    built.joint_monitors.push_back({m.id, link->second,
+                                    resolve.node(built.node_index, m.girder, path + "/girder"),
+                                    resolve.node(built.node_index, m.seat, path + "/seat"),
+                                    m.seat_width});
+  }
+
   const bool only_rod_pair = user_spec.rod_pairs.size() == 1 && user_spec.nodes.empty() &&
+                             user_spec.building_pairs.empty() && user_spec.bridges.empty() &&
                              user_spec.loads.empty() &&
                              user_spec.elements.empty() && user_spec.masses.empty() &&
                              user_spec.supports.empty() && user_spec.initial_velocities.empty() &&

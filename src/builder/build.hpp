@@ -21,12 +21,27 @@ struct ResolvedRecorder {
   std::string file;
 };
 
+struct DriftMonitor {
+  std::string id, kind, group;
+  Index bottom = 0, top = 0;  // nodes
+  double height = 0.0;
+  std::optional<double> yield_drift;
+};
+struct JointMonitor {
+  std::string id;
+  Index link = 0;             // the pounding link across the joint
+  Index girder = 0, seat = 0; // nodes
+  double seat_width = 0.0;
+};
+
 struct BuiltModel {
   model::Model model;
   std::map<std::string, Index> node_index;
   std::map<std::string, Index> link_index;
   AnalysisSpec analysis;
   std::vector<ResolvedRecorder> recorders;
+  std::vector<DriftMonitor> drift_monitors;
+  std::vector<JointMonitor> joint_monitors;
   // The rod pairs the model was generated from, when it is exactly one rod pair and nothing else
   // (then the exact solution applies and `run` reports the verification metrics).
   std::optional<RodPairSpec> sole_rod_pair;

@@ -80,6 +80,16 @@ ModelSpec expand(const ModelSpec& spec) {
     mark(spec.rod_pair_generator_index.empty() ? static_cast<int>(g)
                                                : spec.rod_pair_generator_index[g]);
   }
+  out.building_pairs.clear();
+  out.bridges.clear();
+  for (const AdjacentBuildingsSpec& pair : spec.building_pairs) {
+    add_adjacent_buildings(pair, out);
+    mark(pair.generator_index);
+  }
+  for (const GirderBridgeSpec& bridge : spec.bridges) {
+    add_girder_bridge(bridge, out);
+    mark(bridge.generator_index);
+  }
   return out;
 }
 

@@ -14,6 +14,11 @@ double rod_pair_adjacent_stiffness(const RodPairSpec& pair);
 // entries, in generator order).
 ModelSpec expand(const ModelSpec& spec);
 
+// Appends what one generator makes to `out` (used by expand()).
+void add_adjacent_buildings(const AdjacentBuildingsSpec& pair, ModelSpec& out);
+void add_girder_bridge(const GirderBridgeSpec& bridge, ModelSpec& out);
+std::string building_node_id(const AdjacentBuildingsSpec& pair, int side, int floor);
+
 // Generated ids, shared with whoever looks the generated parts up again.
 std::string rod_node_id(const RodPairSpec& pair, int rod, int index);  // rod 0 left, 1 right
 std::string rod_link_id(const RodPairSpec& pair);

@@ -52,12 +52,15 @@ struct ElementSpec {
   double inertia = 0.0;         // beam: second moment of area [L^4], > 0
   double extra_mass = 0.0;      // beam: added mass per length [M/L] (deck, barriers, floor)
   bool consistent_mass = false; // beam: "mass": "consistent" (default "lumped")
+  // Its own Rayleigh coefficients {a0, a1} instead of the model's ("damping" object).
+  std::optional<std::array<double, 2>> rayleigh;
 };
 
 struct MassSpec {
   std::string node;
   double mass = 0.0;            // [M], > 0
   double rotary_inertia = 0.0;  // [M L^2], frame scenes
+  std::optional<double> mass_damping;  // its own a0 instead of the model's
 };
 
 struct SupportSpec {
@@ -153,6 +156,77 @@ struct RodPairSpec {
   LawSpec law;
 };
 
+// Adjacent buildings as storey-stick (shear building) models in a 2-D scene: rigid floors
+// (floor nodes move in x only), storey stiffness k as a column with E I = k h^3 / 12 between
+// floors whose rotations are fixed. Pounding links join the buildings at every height where a
+// floor of either meets the other (floor to floor, or floor to column mid-height).
+struct StoreySpec {
+  double height = 0.0;     // [L]
+  double mass = 0.0;       // floor mass [M]
+  double stiffness = 0.0;  // lateral storey stiffness [F/L]
+};
+struct BuildingSpec {
+  std::vector<StoreySpec> storeys;  // from the ground up
+  double damping_ratio = 0.0;       // Rayleigh on the building's own modes 1 and 2 (0: none)
+};
+struct AdjacentBuildingsSpec {
+  std::string id;
+  int generator_index = 0;
+  BuildingSpec left, right;
+  double separation = 0.0;  // clear gap between the facades [L]
+  LawSpec law;              // pounding law of every link
+};
+
+// A multi-span girder bridge in a 2-D scene (x along the bridge, y up): girders as beams on
+// bearings (a horizontal law and a stiff vertical spring) on piers (beams fixed at the base) and
+// abutments; expansion joints at chosen piers and at both abutments with a gap, a pounding law,
+// optionally a restrainer, and a seat width; abutment backfill behind the backwalls.
+struct SectionSpec {
+  double youngs_modulus = 0.0, area = 0.0, inertia = 0.0, density = 0.0;
+  double extra_mass = 0.0;  // per length [M/L]
+  int elements = 2;         // per span (girder) or per pier
+};
+struct JointSpec {
+  double gap = 0.0;
+  LawSpec law;
+  std::optional<LawSpec> restrainer;  // a tension law (restrainer / hook)
+  double seat_width = 0.0;            // [L]; 0: not checked
+};
+struct GirderBridgeSpec {
+  std::string id;
+  int generator_index = 0;
+  std::vector<double> spans;         // [L]
+  SectionSpec girder;
+  SectionSpec pier;
+  double pier_height = 0.0;          // [L]
+  std::optional<double> pier_yield_drift;  // [L], for displacement ductility
+  LawSpec bearing;                   // horizontal law of every bearing
+  double bearing_vertical_stiffness = 0.0;  // [F/L]
+  std::vector<int> expansion_joints; // pier numbers (1 .. spans - 1) where the deck is cut
+  JointSpec joint;                   // at the expansion joints
+  JointSpec abutment;                // girder end against the backwall
+  std::optional<LawSpec> backfill;   // behind each backwall (compression-only)
+  double backwall_mass = 0.0;        // [M], needed with backfill
+};
+
+// What a run reports beyond links: drift of storeys and piers (peak of |u_top - u_bottom|
+// along x, over the height; ductility against a yield drift), and joints (peak opening and
+// closing of a link, and the girder's peak movement on its seat against the seat width).
+struct DriftMonitorSpec {
+  std::string id;
+  std::string kind = "storey";  // "storey" | "pier"; how the summary groups it
+  std::string group;  // building or bridge id
+  std::string bottom, top;
+  double height = 0.0;
+  std::optional<double> yield_drift;
+};
+struct JointMonitorSpec {
+  std::string id;
+  std::string link;                     // the pounding link across the joint
+  std::string girder, seat;             // nodes: the girder end and what it sits on
+  double seat_width = 0.0;              // 0: unseating not checked
+};
+
 struct IntegratorSpec {
   std::string type = "newmark";  // "newmark"
   double beta = 0.25;
@@ -192,6 +266,10 @@ struct ModelSpec {
   std::vector<LinkSpec> links;
   std::vector<RodPairSpec> rod_pairs;  // "generators" entries of type "rod_pair", in order
   std::vector<int> rod_pair_generator_index;  // their index in "/generators"
+  std::vector<AdjacentBuildingsSpec> building_pairs;
+  std::vector<GirderBridgeSpec> bridges;
+  std::vector<DriftMonitorSpec> drift_monitors;
+  std::vector<JointMonitorSpec> joint_monitors;
   UnitsSpec units;
   std::optional<DampingSpec> damping;
   std::vector<ExcitationSpec> excitations;

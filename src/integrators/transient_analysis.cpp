@@ -16,7 +16,7 @@ TransientAnalysis::TransientAnalysis(SecondOrderSystem& system, Integrator& inte
 }
 
 TransientStatistics TransientAnalysis::run(State& state, const StepObserver& observer) {
-  TransientStatistics stats;
+  statistics_ = {};
   integrator_.initialize(system_, state);
   if (observer) {
     StepResult initial;
@@ -30,13 +30,13 @@ TransientStatistics TransientAnalysis::run(State& state, const StepObserver& obs
   for (long k = 1; k <= nominal_steps; ++k) {
     const double target = (k == nominal_steps) ? settings_.end_time
                                                : start + static_cast<double>(k) * settings_.time_step;
-    advance(state, target - state.time, 0, observer, stats);
+    advance(state, target - state.time, 0, observer);
   }
-  return stats;
+  return statistics_;
 }
 
-void TransientAnalysis::advance(State& state, double dt, int depth, const StepObserver& observer,
-                                TransientStatistics& stats) {
+void TransientAnalysis::advance(State& state, double dt, int depth, const StepObserver& observer) {
+  TransientStatistics& stats = statistics_;
   if (settings_.max_steps > 0 && stats.steps >= settings_.max_steps)
     throw SolveError(state.time, fmt::format("step limit of {} steps reached", settings_.max_steps));
   const StepResult result = integrator_.advance(system_, state, dt, next_);
@@ -55,8 +55,8 @@ void TransientAnalysis::advance(State& state, double dt, int depth, const StepOb
                                              result.failure, depth, dt));
   ++stats.step_cuts;
   const double end = state.time + dt;
-  advance(state, 0.5 * dt, depth + 1, observer, stats);
-  advance(state, end - state.time, depth + 1, observer, stats);
+  advance(state, 0.5 * dt, depth + 1, observer);
+  advance(state, end - state.time, depth + 1, observer);
 }
 
 }  // namespace pound

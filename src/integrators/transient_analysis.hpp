@@ -31,14 +31,16 @@ class TransientAnalysis {
 
   // Runs from `state` (u, v, time set; completed by the integrator) to end_time.
   TransientStatistics run(State& state, const StepObserver& observer = {});
+  // The statistics so far: after a SolveError, those up to the failure.
+  const TransientStatistics& statistics() const { return statistics_; }
 
  private:
-  void advance(State& state, double dt, int depth, const StepObserver& observer,
-               TransientStatistics& stats);
+  void advance(State& state, double dt, int depth, const StepObserver& observer);
 
   SecondOrderSystem& system_;
   Integrator& integrator_;
   TransientSettings settings_;
+  TransientStatistics statistics_;
   State next_;
 };
 

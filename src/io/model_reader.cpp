@@ -134,6 +134,11 @@ ElementSpec read_element(JsonObject& object, int dimension, UniqueNames& ids) {
     element.extra_mass = object.optional<double>("extra_mass", 0.0, non_negative);
     element.consistent_mass = object.one_of("mass", {"lumped", "consistent"}, "lumped") == "consistent";
   }
+  if (const std::optional<JsonValue> damping = object.find("damping"))
+    element.rayleigh = read_object(*damping, [](JsonObject& d) {
+      return std::array<double, 2>{d.optional<double>("mass_coefficient", 0.0, non_negative),
+                                   d.optional<double>("stiffness_coefficient", 0.0, non_negative)};
+    });
   return element;
 }
 
@@ -142,6 +147,7 @@ MassSpec read_mass(JsonObject& object) {
   mass.node = object.required<std::string>("node", non_empty);
   mass.mass = object.required<double>("mass", positive);
   mass.rotary_inertia = object.optional<double>("rotary_inertia", 0.0, non_negative);
+  mass.mass_damping = object.if_present<double>("mass_damping", non_negative);
   return mass;
 }
 
@@ -302,16 +308,127 @@ RodPairSpec read_rod_pair(JsonObject& object, UniqueNames& ids) {
   return pair;
 }
 
+builder::BuildingSpec read_building(JsonObject& object) {
+  builder::BuildingSpec building;
+  for (const JsonValue& value : object.at("storeys").elements(1))
+    building.storeys.push_back(read_object(value, [](JsonObject& storey) {
+      return builder::StoreySpec{storey.required<double>("height", positive),
+                                 storey.required<double>("mass", positive),
+                                 storey.required<double>("stiffness", positive)};
+    }));
+  building.damping_ratio = object.optional<double>("damping_ratio", 0.0, non_negative);
+  if (building.damping_ratio >= 1.0) object.at("damping_ratio").fail("must be < 1");
+  return building;
+}
+
+builder::AdjacentBuildingsSpec read_adjacent_buildings(JsonObject& object, UniqueNames& ids) {
+  builder::AdjacentBuildingsSpec pair;
+  pair.id = read_unique_id(object, ids);
+  pair.left = read_object(object.at("left"), read_building);
+  pair.right = read_object(object.at("right"), read_building);
+  pair.separation = object.required<double>("separation", non_negative);
+  pair.law = read_law_in(object.at("law"), LawPlace::link);
+  return pair;
+}
+
+builder::SectionSpec read_section(JsonObject& object, int default_elements) {
+  builder::SectionSpec section;
+  section.youngs_modulus = object.required<double>("youngs_modulus", positive);
+  section.area = object.required<double>("area", positive);
+  section.inertia = object.required<double>("inertia", positive);
+  section.density = object.optional<double>("density", 0.0, non_negative);
+  section.extra_mass = object.optional<double>("extra_mass", 0.0, non_negative);
+  section.elements = object.optional<int>("elements", default_elements, at_least(1));
+  if (section.elements > 1000) object.at("elements").fail("must be <= 1000");
+  return section;
+}
+
+builder::JointSpec read_joint(JsonObject& object) {
+  builder::JointSpec joint;
+  joint.gap = object.required<double>("gap", non_negative);
+  joint.law = read_law_in(object.at("law"), LawPlace::link);
+  if (const std::optional<JsonValue> restrainer = object.find("restrainer"))
+    joint.restrainer = read_law_in(*restrainer, LawPlace::link);
+  joint.seat_width = object.optional<double>("seat_width", 0.0, non_negative);
+  return joint;
+}
+
+builder::GirderBridgeSpec read_girder_bridge(JsonObject& object, UniqueNames& ids) {
+  builder::GirderBridgeSpec bridge;
+  bridge.id = read_unique_id(object, ids);
+  for (const JsonValue& span : object.at("spans").elements(1, 100))
+    bridge.spans.push_back(span.as<double>(positive));
+  bridge.girder = read_object(object.at("girder"), [](JsonObject& o) { return read_section(o, 4); });
+  bridge.pier = read_object(object.at("pier"), [](JsonObject& o) { return read_section(o, 2); });
+  bridge.pier_height = object.required<double>("pier_height", positive);
+  bridge.pier_yield_drift = object.if_present<double>("pier_yield_drift", positive);
+  bridge.bearing = read_law_in(object.at("bearing"), LawPlace::link);
+  bridge.bearing_vertical_stiffness = object.required<double>("bearing_vertical_stiffness", positive);
+  UniqueNames joints("expansion joint");
+  if (const std::optional<JsonValue> list = object.find("expansion_joints"))
+    for (const JsonValue& value : list->elements()) {
+      const int pier = value.as<int>(at_least(1));
+      if (pier >= static_cast<int>(bridge.spans.size()))
+        value.fail(fmt::format("is pier {}, but the bridge has piers 1 to {}", pier, bridge.spans.size() - 1));
+      joints.add(std::to_string(pier), value);
+      bridge.expansion_joints.push_back(pier);
+    }
+  if (!bridge.expansion_joints.empty() || object.has("joint"))
+    bridge.joint = read_object(object.at("joint"), read_joint);
+  bridge.abutment = read_object(object.at("abutment"), read_joint);
+  if (const std::optional<JsonValue> backfill = object.find("backfill")) {
+    bridge.backfill = read_law_in(*backfill, LawPlace::link);
+    bridge.backwall_mass = object.required<double>("backwall_mass", positive);
+  }
+  return bridge;
+}
+
 void read_generators(JsonObject& top, ModelSpec& spec) {
   UniqueNames ids("id");
   const std::vector<JsonValue> generators = top.array("generators");
   for (std::size_t k = 0; k < generators.size(); ++k) {
-    spec.rod_pairs.push_back(read_object(generators[k], [&ids](JsonObject& generator) {
-      generator.one_of("type", {"rod_pair"});  // the only kind so far
-      return read_rod_pair(generator, ids);
-    }));
-    spec.rod_pair_generator_index.push_back(static_cast<int>(k));
+    const int index = static_cast<int>(k);
+    read_object(generators[k], [&](JsonObject& generator) {
+      const std::string type =
+          generator.one_of("type", {"rod_pair", "adjacent_buildings", "girder_bridge"});
+      if (type == "rod_pair") {
+        spec.rod_pairs.push_back(read_rod_pair(generator, ids));
+        spec.rod_pair_generator_index.push_back(index);
+      } else if (type == "adjacent_buildings") {
+        spec.building_pairs.push_back(read_adjacent_buildings(generator, ids));
+        spec.building_pairs.back().generator_index = index;
+      } else {
+        spec.bridges.push_back(read_girder_bridge(generator, ids));
+        spec.bridges.back().generator_index = index;
+      }
+      return 0;
+    });
   }
+}
+
+void read_monitors(JsonObject& object, ModelSpec& spec) {
+  for (const JsonValue& value : object.array("drifts"))
+    spec.drift_monitors.push_back(read_object(value, [](JsonObject& m) {
+      builder::DriftMonitorSpec monitor;
+      monitor.id = m.required<std::string>("id", non_empty);
+      monitor.kind = m.one_of("kind", {"storey", "pier"}, "storey");
+      monitor.group = m.optional<std::string>("group", "");
+      monitor.bottom = m.required<std::string>("bottom", non_empty);
+      monitor.top = m.required<std::string>("top", non_empty);
+      monitor.height = m.required<double>("height", positive);
+      monitor.yield_drift = m.if_present<double>("yield_drift", positive);
+      return monitor;
+    }));
+  for (const JsonValue& value : object.array("joints"))
+    spec.joint_monitors.push_back(read_object(value, [](JsonObject& m) {
+      builder::JointMonitorSpec monitor;
+      monitor.id = m.required<std::string>("id", non_empty);
+      monitor.link = m.required<std::string>("link", non_empty);
+      monitor.girder = m.required<std::string>("girder", non_empty);
+      monitor.seat = m.required<std::string>("seat", non_empty);
+      monitor.seat_width = m.optional<double>("seat_width", 0.0, non_negative);
+      return monitor;
+    }));
 }
 
 // A Newmark object or the name of a preset.
@@ -487,6 +604,11 @@ ModelSpec read_model(JsonObject& top) {
   spec.links = read_each(
       top, "links", [&](JsonObject& object) { return read_link(object, dimension, link_ids); });
   read_generators(top, spec);
+  if (const std::optional<JsonValue> monitors = top.find("monitors"))
+    read_object(*monitors, [&spec](JsonObject& object) {
+      read_monitors(object, spec);
+      return 0;
+    });
   if (const std::optional<JsonValue> units = top.find("units"))
     spec.units = read_object(*units, read_units);
   if (const std::optional<JsonValue> damping = top.find("damping"))

@@ -26,6 +26,12 @@ struct Node {
   Coordinates position{};
 };
 
+// Rayleigh damping C = a0 M + a1 K of the linear elements (links are never part of it).
+struct RayleighDamping {
+  double mass_coefficient = 0.0;       // a0 [1/T]
+  double stiffness_coefficient = 0.0;  // a1 [T]
+};
+
 // Two-node axial element (rod / truss), linear elastic, lumped mass rho A L / 2 per node.
 struct Truss {
   std::string id;
@@ -34,6 +40,7 @@ struct Truss {
   double youngs_modulus = 0.0;  // E [F/L^2]
   double area = 0.0;            // A [L^2]
   double density = 0.0;         // rho [M/L^3]
+  std::optional<RayleighDamping> damping;  // its own, instead of the model's
 };
 
 // Two-node 2-D elastic beam-column (Euler-Bernoulli, axial and bending), for girders, piers
@@ -49,12 +56,14 @@ struct Beam {
   double density = 0.0;         // rho [M/L^3]
   double extra_mass = 0.0;      // [M/L], e.g. deck, barriers, tributary floor
   bool consistent_mass = false;
+  std::optional<RayleighDamping> damping;  // its own, instead of the model's
 };
 
 struct NodalMass {
   Index node = 0;
   double mass = 0.0;  // [M], in every translational direction
   double rotary_inertia = 0.0;  // [M L^2], frame scenes only
+  std::optional<RayleighDamping> damping;  // its own mass-proportional part, instead of the model's
 };
 
 struct NodalLoad {
@@ -65,12 +74,6 @@ struct NodalLoad {
 struct Support {
   Index node = 0;
   std::array<bool, 3> fixed{};  // per direction (x, y, rotation)
-};
-
-// Rayleigh damping C = a0 M + a1 K of the linear elements (links are never part of it).
-struct RayleighDamping {
-  double mass_coefficient = 0.0;       // a0 [1/T]
-  double stiffness_coefficient = 0.0;  // a1 [T]
 };
 
 // Uniform support excitation: every support moves with the record along `direction`; the

@@ -34,7 +34,7 @@ void LinkRecorder::record(const State& state) {
 NodeRecorder::NodeRecorder(std::string file, std::vector<std::vector<Index>> equations,
                            const std::vector<std::string>& ids)
     : file_(std::move(file)), equations_(std::move(equations)) {
-  static const char* kDirection[] = {"x", "y"};
+  static const char* kDirection[] = {"x", "y", "rz"};
   table_.columns.push_back("time");
   for (std::size_t k = 0; k < ids.size(); ++k)
     for (std::size_t d = 0; d < equations_[k].size(); ++d)

@@ -303,6 +303,8 @@ TEST_F(Cli, EveryBundledModelRuns) {
     EXPECT_EQ(outcome.exit_code, 0) << entry.path() << "\n" << outcome.err;
     const json summary = json::parse(read_text(out / "summary.json"));
     EXPECT_EQ(summary["status"], "completed") << entry.path();
+    // Every example keeps its energy balance within 1 % of the largest term, all the way.
+    EXPECT_LT(summary["energy"]["worst_balance_error"].get<double>(), 0.01) << entry.path();
   }
   EXPECT_GE(models, 4);
 }

@@ -159,11 +159,26 @@ TEST(StructuralSystem, FreeNodeWithoutMassIsAnInputError) {
   }
 }
 
-TEST(StructuralSystem, MasslessElementLeavesItsFreeNodeWithoutMass) {
+// A massless end of an element has a static equation (its stiffness), which is fine...
+TEST(StructuralSystem, MasslessElementEndIsAStaticDof) {
   model::Model m = chain();
   m.trusses[2].density = 0.0;
   m.masses.clear();
-  EXPECT_THROW(StructuralSystem{m}, InputError);
+  EXPECT_NO_THROW(StructuralSystem{m});
+}
+
+// ...but a free node with neither mass nor stiffness makes the equations singular.
+TEST(StructuralSystem, NodeWithNeitherMassNorStiffnessIsRefused) {
+  model::Model m = chain();
+  m.nodes.push_back({"loose", {9.0, 0.0}});
+  try {
+    StructuralSystem system(m);
+    FAIL() << "accepted a node without mass or stiffness";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.where(), "/nodes/4");
+    EXPECT_NE(error.reason().find("'loose' has neither mass nor stiffness"), std::string::npos)
+        << error.what();
+  }
 }
 
 TEST(StructuralSystem, LinkRowsCarryTheAxisWithOppositeSigns) {

@@ -1,0 +1,75 @@
+#include <boost/program_options.hpp>
+#include <filesystem>
+#include <iostream>
+
+#include "app/commands.hpp"
+#include "builder/generators.hpp"
+#include "io/model_reader.hpp"
+#include "io/model_writer.hpp"
+#include "io/output.hpp"
+
+namespace pound::app {
+namespace po = boost::program_options;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kExpandUsage = R"(usage: pound expand MODEL.json [--out FILE]
+
+Writes a model file with every generator (rod_pair) replaced by the nodes, materials, elements,
+supports, initial velocities and links it generates, so that they can be seen and edited. The
+result is itself a model file (docs/model_format.md): `pound run` on it gives the same results
+(only the comparison with the exact solution, which needs the generator, is no longer made).
+Defaults are written out where they matter to a reader (integrator, convergence).
+Records of excitations are named relative to the model file; with --out they are renamed
+relative to FILE's folder, on standard output they are left as they are.
+
+options)";
+
+// Keeps the records found when the expanded model is written to another folder.
+void rebase_records(builder::ModelSpec& spec, const fs::path& model_path,
+                    const fs::path& out_path) {
+  const fs::path model_folder = fs::absolute(model_path).parent_path();
+  const fs::path out_folder = fs::absolute(out_path).parent_path();
+  for (builder::ExcitationSpec& excitation : spec.excitations) {
+    const fs::path record(excitation.record);
+    if (!record.is_absolute())
+      excitation.record = fs::proximate(model_folder / record, out_folder).generic_string();
+  }
+}
+
+}  // namespace
+
+int expand_command(const Arguments& arguments) {
+  po::options_description options(kExpandUsage);
+  std::string model_path, out;
+  options.add_options()("help,h", "show this help")(
+      "out,o", po::value(&out), "write the expanded model to FILE (default: standard output)");
+  po::options_description hidden;
+  hidden.add_options()("model", po::value(&model_path));
+  po::options_description all;
+  all.add(options).add(hidden);
+  po::positional_options_description positional;
+  positional.add("model", 1);
+  po::variables_map vm;
+  po::store(po::command_line_parser(arguments).options(all).positional(positional).run(), vm);
+  po::notify(vm);
+  if (vm.count("help")) {
+    std::cout << options << "\n";
+    return 0;
+  }
+  if (model_path.empty()) {
+    std::cerr << "pound expand: name a model file (see `pound expand --help`)\n";
+    return 1;
+  }
+  builder::ModelSpec expanded = builder::expand(io::read_model_file(model_path));
+  if (out.empty()) {
+    std::cout << io::model_to_json(expanded);
+    return 0;
+  }
+  rebase_records(expanded, model_path, out);
+  io::write_text_atomic(out, io::model_to_json(expanded));
+  return 0;
+}
+
+}  // namespace pound::app

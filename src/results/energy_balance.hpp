@@ -1,0 +1,44 @@
+#pragma once
+// Energy balance of a run, accumulated step by step:
+//   kinetic + strain + damping + links = input + (kinetic + strain at the start)
+// kinetic 1/2 v^T M v, strain 1/2 u^T K u of the linear elements, damping sum du^T C v_avg,
+// links sum F_avg d(delta) over every link row (impact, spring and friction work, elastic or
+// dissipated), input sum du^T f_avg with f = loads - M iota a_g (relative formulation). Work
+// terms use step averages, which makes the balance exact for the trapezoidal rule (Newmark
+// beta = 1/4, gamma = 1/2) up to the Newton tolerance, so a large error means a step was not
+// resolved (or another integrator's own dissipation).
+#include "core/types.hpp"
+#include "integrators/integrator.hpp"
+#include "integrators/second_order_system.hpp"
+
+namespace pound::results {
+
+struct EnergyTerms {
+  double input = 0.0;    // work of loads and ground motion since the start
+  double kinetic = 0.0;  // now
+  double strain = 0.0;   // now, linear elements
+  double damping = 0.0;  // dissipated by C since the start
+  double links = 0.0;    // work done on the links since the start
+  double initial = 0.0;  // kinetic + strain at the start
+  // |kinetic + strain + damping + links - input - initial| over the largest term.
+  double balance_error() const;
+};
+
+class EnergyBalance {
+ public:
+  explicit EnergyBalance(const SecondOrderSystem& system) : system_(system) {}
+  void record(const State& state);
+  const EnergyTerms& terms() const { return terms_; }
+  // The largest balance error seen over the run (not only at the end).
+  double worst_balance_error() const { return worst_; }
+
+ private:
+  const SecondOrderSystem& system_;
+  EnergyTerms terms_;
+  double worst_ = 0.0;
+  bool started_ = false;
+  State previous_;
+  Vector previous_external_, external_, work_, average_;
+};
+
+}  // namespace pound::results

@@ -1,0 +1,53 @@
+#pragma once
+// Peak responses an engineer checks after a pounding run: storey and pier drifts (with the
+// displacement ductility demand where a yield drift is known), and joints (how far the gap
+// opened and closed, how far the girder moved on its seat, and the margin left to unseating).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "integrators/integrator.hpp"
+
+namespace pound::results {
+
+struct DriftPeak {
+  double peak_drift = 0.0;  // max |u_top - u_bottom| along x [L]
+  double time = 0.0;        // when
+};
+
+class DriftMonitors {
+ public:
+  // For each monitor: x equations of its bottom and top node (-1 where fixed).
+  explicit DriftMonitors(std::vector<std::pair<Index, Index>> equations)
+      : equations_(std::move(equations)), peaks_(equations_.size()) {}
+  void record(const State& state);
+  const std::vector<DriftPeak>& peaks() const { return peaks_; }
+
+ private:
+  std::vector<std::pair<Index, Index>> equations_;
+  std::vector<DriftPeak> peaks_;
+};
+
+struct JointPeak {
+  double peak_opening = 0.0;        // max -(delta + gap): the joint wider than at the start [L]
+  double peak_closing = 0.0;        // max (delta + gap): the joint narrower than at the start [L]
+  double peak_seat_movement = 0.0;  // max |u_girder - u_seat| along x [L]
+};
+
+class JointMonitors {
+ public:
+  struct Where {
+    Index link_row;   // the pounding link's normal row
+    double gap;
+    Index girder_x, seat_x;  // equations, -1 where fixed
+  };
+  explicit JointMonitors(std::vector<Where> joints) : joints_(std::move(joints)), peaks_(joints_.size()) {}
+  void record(const State& state);
+  const std::vector<JointPeak>& peaks() const { return peaks_; }
+
+ private:
+  std::vector<Where> joints_;
+  std::vector<JointPeak> peaks_;
+};
+
+}  // namespace pound::results

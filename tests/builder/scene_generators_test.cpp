@@ -1,0 +1,123 @@
+// The scene generators: what they build, and the bridge with gaps too wide to close behaving
+// exactly as the same bridge without those links.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <Eigen/Eigenvalues>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "assembly/modal_analysis.hpp"
+#include "assembly/structural_system.hpp"
+#include "builder/build.hpp"
+#include "builder/generators.hpp"
+#include "io/ground_motion_reader.hpp"
+#include "io/model_reader.hpp"
+
+namespace pound::builder {
+namespace {
+
+std::string bundled(const std::string& name) {
+  std::ifstream file(std::string(POUND_SOURCE_DIR) + "/models/" + name);
+  return std::string(std::istreambuf_iterator<char>(file), {});
+}
+
+model::GroundMotion record() {
+  io::RecordFormat format;
+  model::GroundMotion motion = io::read_ground_motion(
+      std::string(POUND_SOURCE_DIR) + "/ground_motions/synthetic_firm_01.AT2", format, 9.80665);
+  motion.acceleration.resize(800);  // 8 s are enough to compare
+  return motion;
+}
+
+// Displacements of every free DOF at every step.
+std::vector<Vector> run(const ModelSpec& spec) {
+  const BuiltModel built = build(spec, {record()});
+  assembly::StructuralSystem system(built.model);
+  auto integrator = make_integrator(built.analysis);
+  auto settings = make_transient_settings(built.analysis);
+  settings.end_time = 8.0;
+  TransientAnalysis analysis(system, *integrator, settings);
+  std::vector<Vector> history;
+  State state;
+  analysis.run(state, [&](const State& s, const StepResult&) { history.push_back(s.displacement); });
+  return history;
+}
+
+TEST(SceneGenerators, BridgeWithGapsTooWideToCloseEqualsTheGapFreeBridge) {
+  nlohmann::json model = nlohmann::json::parse(bundled("three_span_bridge.json"));
+  auto& bridge = model["generators"][0];
+  bridge["joint"]["gap"] = 10.0;
+  bridge["abutment"]["gap"] = 10.0;
+  bridge["joint"].erase("restrainer");
+  model.erase("recorders");
+  const ModelSpec wide = io::parse_model(model.dump(), "bridge.json");
+  // The same bridge expanded, without the pounding links.
+  ModelSpec without = expand(wide);
+  const std::set<std::string> joints = {"bridge.joint1", "bridge.joint2", "bridge.a0.joint", "bridge.a1.joint"};
+  std::erase_if(without.links, [&joints](const LinkSpec& link) { return joints.count(link.id) > 0; });
+  without.joint_monitors.clear();
+  ASSERT_EQ(expand(wide).links.size() - without.links.size(), 4u);  // two joints, two abutments
+  const std::vector<Vector> a = run(wide), b = run(without);
+  ASSERT_EQ(a.size(), b.size());
+  double difference = 0.0, peak = 0.0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    difference = std::max(difference, (a[k] - b[k]).cwiseAbs().maxCoeff());
+    peak = std::max(peak, a[k].cwiseAbs().maxCoeff());
+  }
+  std::cout << "largest difference " << difference << " of a peak displacement " << peak << "\n";
+  EXPECT_LE(difference, 1e-12 * peak);
+}
+
+TEST(SceneGenerators, BuildingsMeetAtEveryFloorOfEither) {
+  const ModelSpec spec = expand(io::parse_model(bundled("adjacent_buildings.json"), "b.json"));
+  std::vector<std::string> links;
+  for (const LinkSpec& link : spec.links) links.push_back(link.id);
+  // Left floors at 3.5 k (k <= 5), right floors at 3 k, up to the lower roof at 17.5.
+  const std::vector<std::string> expected = {"pair.pounding.at3",  "pair.pounding.at3.5", "pair.pounding.at6",
+                                             "pair.pounding.at7",  "pair.pounding.at9",   "pair.pounding.at10.5",
+                                             "pair.pounding.at12", "pair.pounding.at14",  "pair.pounding.at15",
+                                             "pair.pounding.at17.5"};
+  EXPECT_EQ(links, expected);
+  EXPECT_EQ(spec.drift_monitors.size(), 13u);
+}
+
+// Columns cut where the other building's floors meet them keep each storey's stiffness: with
+// the links removed, the generated pair vibrates at the shear-building periods of each building.
+TEST(SceneGenerators, CutColumnsKeepTheShearBuildingPeriods) {
+  const ModelSpec spec = io::parse_model(bundled("adjacent_buildings.json"), "b.json");
+  BuiltModel built = build(spec, {record()});
+  built.model.links.clear();
+  const assembly::Modes modes = assembly::modal_analysis(assembly::StructuralSystem(built.model));
+  std::vector<double> generated;
+  for (Index k = 0; k < modes.omega_squared.size(); ++k) generated.push_back(modes.omega_squared[k]);
+  std::vector<double> expected;
+  for (const BuildingSpec* building : {&spec.building_pairs[0].left, &spec.building_pairs[0].right}) {
+    const auto n = static_cast<Index>(building->storeys.size());
+    Matrix k = Matrix::Zero(n, n), m = Matrix::Zero(n, n);
+    for (Index s = 0; s < n; ++s) {
+      const StoreySpec& storey = building->storeys[static_cast<std::size_t>(s)];
+      k(s, s) += storey.stiffness;
+      if (s > 0) {
+        k(s - 1, s - 1) += storey.stiffness;
+        k(s - 1, s) = k(s, s - 1) = -storey.stiffness;
+      }
+      m(s, s) = storey.mass;
+    }
+    const Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> solver(k, m);
+    for (Index i = 0; i < n; ++i) expected.push_back(solver.eigenvalues()[i]);
+  }
+  std::sort(expected.begin(), expected.end());
+  ASSERT_EQ(generated.size(), expected.size());
+  double worst = 0.0;
+  for (std::size_t i = 0; i < expected.size(); ++i)
+    worst = std::max(worst, std::abs(generated[i] / expected[i] - 1.0));
+  std::cout << expected.size() << " modes, largest relative error of w^2: " << worst << "\n";
+  EXPECT_LT(worst, 1e-9);
+}
+
+}  // namespace
+}  // namespace pound::builder

@@ -1,0 +1,98 @@
+#!/usr/bin/env bash
+# tools/plot_run.py on a real run: the figures exist and are PNGs; bad input exits 2 cleanly.
+# usage: plot_run_test.sh POUND_BINARY REPO_ROOT
+set -euo pipefail
+if [ $# -ne 2 ]; then
+  echo "usage: $0 POUND_BINARY REPO_ROOT" >&2
+  exit 1
+fi
+pound=$1
+root=$2
+script="$root/tools/plot_run.py"
+
+fail() {
+  echo "FAIL: $*" >&2
+  exit 1
+}
+
+# Debian's python3-matplotlib is seen by /usr/bin/python3, not necessarily by the python3 on PATH
+# (pyenv, a venv): take the first of the two that can import it.
+python=""
+for candidate in /usr/bin/python3 python3; do
+  if command -v "$candidate" >/dev/null 2>&1 && "$candidate" -c "import matplotlib" >/dev/null 2>&1; then
+    python=$(command -v "$candidate")
+    break
+  fi
+done
+[ -n "$python" ] || fail "matplotlib is not importable by /usr/bin/python3 nor by python3 on PATH; \
+install it with tools/install_dependencies.sh (Debian package python3-matplotlib)"
+echo "using $python"
+
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+export MPLCONFIGDIR="$tmp/matplotlib"
+
+is_png() {  # a PNG signature and more than a blank canvas
+  local file=$1
+  [ -f "$file" ] || fail "$file was not written"
+  [ "$(head -c 8 "$file" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] ||
+    fail "$file is not a PNG"
+  [ "$(stat -c %s "$file")" -gt 10000 ] || fail "$file is only $(stat -c %s "$file") bytes"
+}
+
+# 1. A real run: two girders, a pounding joint link and a restrainer, a node recorder.
+run="$tmp/run"
+"$pound" run "$root/models/two_girders_joint.json" --out "$run" --quiet ||
+  fail "pound run models/two_girders_joint.json failed"
+status=0
+"$python" "$script" "$run" --dpi 80 >"$tmp/stdout" 2>"$tmp/stderr" || status=$?
+[ "$status" -eq 0 ] || fail "plot_run.py exited $status on a good run folder: $(cat "$tmp/stderr")"
+expected=(link_forces.png force_penetration.png displacements.png)
+[ -f "$run/joints.csv" ] && expected+=(joint_openings.png)
+[ -f "$run/energy.csv" ] && expected+=(energy.png)
+grep -q '"storeys"\|"piers"' "$run/summary.json" && expected+=(drift_envelopes.png)
+for png in "${expected[@]}"; do
+  is_png "$run/$png"
+  grep -qx "$run/$png" "$tmp/stdout" || fail "plot_run.py did not print $run/$png"
+done
+written=$(find "$run" -maxdepth 1 -name '*.png' | wc -l)
+[ "$(wc -l <"$tmp/stdout")" -eq "$written" ] || fail "expected one line per PNG written, got: $(cat "$tmp/stdout")"
+! ls "$run" | grep -q '\.tmp\.' || fail "temporary files left in $run"
+
+# 2. The python3 on PATH works too (it starts /usr/bin/python3 if it has no matplotlib).
+if command -v python3 >/dev/null 2>&1; then
+  rm -f "$run"/*.png
+  status=0
+  python3 "$script" "$run" --dpi 60 >/dev/null 2>"$tmp/stderr" || status=$?
+  [ "$status" -eq 0 ] || fail "python3 $script exited $status: $(cat "$tmp/stderr")"
+  is_png "$run/link_forces.png"
+fi
+
+# 3. Bad input: exit 2, a message naming the folder or file, never a traceback.
+expect_input_error() {  # folder, text the message must contain
+  local status=0
+  "$python" "$script" "$1" >/dev/null 2>"$tmp/stderr" || status=$?
+  [ "$status" -eq 2 ] || fail "expected exit 2 for $1, got $status: $(cat "$tmp/stderr")"
+  grep -qF "$2" "$tmp/stderr" || fail "message for $1 does not name $2: $(cat "$tmp/stderr")"
+  ! grep -q Traceback "$tmp/stderr" || fail "traceback for $1: $(cat "$tmp/stderr")"
+}
+mkdir "$tmp/no_summary"
+cp "$run/links.csv" "$tmp/no_summary/"
+expect_input_error "$tmp/no_summary" "$tmp/no_summary"
+expect_input_error "$tmp/does_not_exist" "$tmp/does_not_exist"
+
+mkdir "$tmp/ragged"
+cp "$run/summary.json" "$tmp/ragged/"
+printf 'time,joint.force,joint.penetration\n0,0,-0.05\n0.1,2\n' >"$tmp/ragged/links.csv"
+expect_input_error "$tmp/ragged" "$tmp/ragged/links.csv"
+
+mkdir "$tmp/not_a_number"
+cp "$run/summary.json" "$tmp/not_a_number/"
+printf 'time,girder.u_x\n0,0\n0.1,abc\n' >"$tmp/not_a_number/nodes.csv"
+expect_input_error "$tmp/not_a_number" "$tmp/not_a_number/nodes.csv"
+
+mkdir "$tmp/bad_json"
+printf '{"links": [' >"$tmp/bad_json/summary.json"
+expect_input_error "$tmp/bad_json" "$tmp/bad_json/summary.json"
+
+echo "plot_run_test: ok (${expected[*]})"

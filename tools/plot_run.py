@@ -1,0 +1,634 @@
+#!/usr/bin/env python3
+"""Plots the results of `pound run` as PNG figures next to them.
+
+usage: python3 tools/plot_run.py DIR [--dpi 120]
+
+DIR is the --out folder of `pound run` (summary.json and the CSV time histories). Written into
+DIR, each when its data is there (one line printed per file):
+  link_forces.png        force history of every link (compression +, tension -)
+  force_penetration.png  force against penetration per link (impact, restrainer, spring loops)
+  joint_openings.png     joint opening histories (joints.csv), seat width dashed
+  drift_envelopes.png    peak storey drift ratio against height, pier drift ratio and ductility
+  energy.png             energy components (energy.csv) and the balance error
+  displacements.png      u_x histories of the recorded nodes
+Figures with more links or joints than fit on a page continue in link_forces_2.png, ...
+CSV files are recognised by their columns, not their names. Units are the model's own.
+
+Needs matplotlib (Debian: python3-matplotlib, installed by tools/install_dependencies.sh).
+Run it with the interpreter that has it; if `python3` is another one (pyenv, a venv) without
+matplotlib, the script starts itself again with /usr/bin/python3 when that one exists.
+
+Exit codes: 0 ok, 1 usage error or matplotlib missing, 2 bad input (no summary.json, a
+malformed summary or CSV; message names the file), 4 a figure could not be written.
+"""
+
+import argparse
+import csv
+import json
+import math
+import os
+import sys
+import warnings
+from array import array
+
+EXIT_USAGE = 1
+EXIT_INPUT = 2
+EXIT_OUTPUT = 4
+
+SYSTEM_PYTHON = "/usr/bin/python3"
+REEXEC_MARK = "POUND_PLOT_RUN_REEXEC"
+
+PER_PAGE = 8          # subplots per page of the per-link and per-joint figures
+NODES_PER_AXES = 10   # node histories overlaid in one subplot of displacements.png
+TIME_LABEL = "time [model units]"
+
+LINK_QUANTITIES = ("force", "penetration", "tangential_force", "slide")
+ENERGY_TERMS = ("kinetic", "strain", "damping", "links")
+
+
+class InputError(Exception):
+    """Bad input: the message names the file and what is wrong."""
+
+
+class OutputError(Exception):
+    """A figure could not be written."""
+
+
+def import_matplotlib():
+    """Returns matplotlib's Figure class (Agg backend), or exits with a clear message."""
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        from matplotlib.figure import Figure
+        import numpy  # noqa: F401  (matplotlib depends on it)
+        return Figure
+    except ImportError as error:
+        missing = error
+    # A pyenv or venv python3 does not see Debian's python3-matplotlib: use the system one.
+    if (not os.environ.get(REEXEC_MARK) and os.access(SYSTEM_PYTHON, os.X_OK)
+            and os.path.realpath(sys.executable) != os.path.realpath(SYSTEM_PYTHON)):
+        os.environ[REEXEC_MARK] = "1"
+        try:
+            os.execv(SYSTEM_PYTHON, [SYSTEM_PYTHON, os.path.abspath(__file__)] + sys.argv[1:])
+        except OSError:
+            pass
+    sys.stderr.write(
+        f"plot_run.py: matplotlib is not available to {sys.executable} ({missing}); install it "
+        "with tools/install_dependencies.sh (Debian package python3-matplotlib) or run this "
+        f"script with a python3 that has it\n")
+    sys.exit(EXIT_USAGE)
+
+
+# ----------------------------------------------------------------------------------------------
+# Input
+
+def load_summary(folder):
+    if not os.path.isdir(folder):
+        raise InputError(f"{folder}: {'not a folder' if os.path.exists(folder) else 'no such folder'}")
+    path = os.path.join(folder, "summary.json")
+    if not os.path.isfile(path):
+        raise InputError(f"{folder}: no summary.json here (is it the --out folder of `pound run`?)")
+    try:
+        with open(path, encoding="utf-8") as file:
+            summary = json.load(file)
+    except (OSError, UnicodeDecodeError) as error:
+        raise InputError(f"{path}: cannot read: {error}") from None
+    except json.JSONDecodeError as error:
+        raise InputError(f"{path}: not valid JSON: {error}") from None
+    if not isinstance(summary, dict):
+        raise InputError(f"{path}: expected a JSON object at the top level")
+    summary["__path__"] = path
+    return summary
+
+
+def summary_items(summary, key):
+    """summary[key] as a list of objects ([] when absent)."""
+    value = summary.get(key)
+    if value is None:
+        return []
+    if not isinstance(value, list) or not all(isinstance(item, dict) for item in value):
+        raise InputError(f"{summary['__path__']}: \"{key}\" must be a list of objects")
+    return value
+
+
+def summary_object(summary, key):
+    value = summary.get(key)
+    if value is None:
+        return {}
+    if not isinstance(value, dict):
+        raise InputError(f"{summary['__path__']}: \"{key}\" must be an object")
+    return value
+
+
+def number(item, key):
+    """item[key] as a float, or None when absent or not a number."""
+    value = item.get(key)
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        return None
+    return float(value)
+
+
+def split_column(name):
+    """'girder_1.u_x' -> ('girder_1', 'u_x'); ids may themselves contain dots."""
+    owner, dot, quantity = name.rpartition(".")
+    return (owner, quantity) if dot else (None, name)
+
+
+def is_node_quantity(quantity):
+    return len(quantity) >= 3 and quantity[0] in "uva" and quantity[1] == "_"
+
+
+class History:
+    """One CSV time history: its header, then the columns that are plotted, as float arrays."""
+
+    def __init__(self, path, header):
+        self.path = path
+        self.columns = header
+        self.index = {name: i for i, name in enumerate(header)}
+        self.values = {}
+        self.rows = 0
+
+    def kinds(self):
+        kinds = set()
+        for name in self.columns[1:]:
+            owner, quantity = split_column(name)
+            if owner is None:
+                if quantity in ENERGY_TERMS or quantity == "input":
+                    kinds.add("energy")
+            elif quantity in LINK_QUANTITIES:
+                kinds.add("link")
+            elif quantity == "opening":
+                kinds.add("joint")
+            elif is_node_quantity(quantity):
+                kinds.add("node")
+        return kinds
+
+    def wanted(self):
+        """Names of the columns a figure uses (others are checked for shape only)."""
+        names = ["time"]
+        for name in self.columns[1:]:
+            owner, quantity = split_column(name)
+            if owner is None:
+                if quantity in ENERGY_TERMS or quantity in ("input", "initial"):
+                    names.append(name)
+            elif quantity in LINK_QUANTITIES or quantity in ("opening", "u_x"):
+                names.append(name)
+        return names
+
+    def load(self, numpy):
+        names = self.wanted()
+        indices = [self.index[name] for name in names]
+        arrays = [array("d") for _ in names]
+        width = len(self.columns)
+        try:
+            with open(self.path, encoding="utf-8", newline="") as file:
+                reader = csv.reader(file)
+                next(reader)
+                for row in reader:
+                    if not row:
+                        continue
+                    if len(row) != width:
+                        raise InputError(f"{self.path}: line {reader.line_num}: {len(row)} fields, "
+                                         f"expected {width} (the header's)")
+                    try:
+                        for values, i in zip(arrays, indices):
+                            values.append(float(row[i]))
+                    except ValueError:
+                        bad = next(i for i in indices if not is_float(row[i]))
+                        raise InputError(f"{self.path}: line {reader.line_num}, column "
+                                         f"'{self.columns[bad]}': not a number: {row[bad]!r}") from None
+        except (OSError, UnicodeDecodeError, csv.Error) as error:
+            raise InputError(f"{self.path}: cannot read: {error}") from None
+        self.values = {name: numpy.frombuffer(values, dtype=float) if len(values) else
+                       numpy.zeros(0) for name, values in zip(names, arrays)}
+        self.rows = len(arrays[0])
+
+    def time(self):
+        return self.values["time"]
+
+
+def is_float(text):
+    try:
+        float(text)
+        return True
+    except ValueError:
+        return False
+
+
+def read_histories(folder, numpy):
+    """Every CSV of the folder whose first column is time, with its plotted columns loaded."""
+    histories = []
+    for name in sorted(os.listdir(folder)):
+        path = os.path.join(folder, name)
+        if not name.lower().endswith(".csv") or not os.path.isfile(path):
+            continue
+        try:
+            with open(path, encoding="utf-8", newline="") as file:
+                header = next(csv.reader(file), None)
+        except (OSError, UnicodeDecodeError, csv.Error) as error:
+            raise InputError(f"{path}: cannot read: {error}") from None
+        if header is None:
+            raise InputError(f"{path}: empty file (no header line)")
+        header = [column.strip() for column in header]
+        if header[0] != "time":
+            sys.stderr.write(f"note: {path}: first column is not 'time', not a pound history: skipped\n")
+            continue
+        if any(not column for column in header):
+            raise InputError(f"{path}: header has an empty column name")
+        duplicates = sorted({column for column in header if header.count(column) > 1})
+        if duplicates:
+            raise InputError(f"{path}: header repeats column(s) {', '.join(duplicates)}")
+        history = History(path, header)
+        if not history.kinds():
+            continue
+        history.load(numpy)
+        if history.rows == 0:
+            sys.stderr.write(f"note: {path}: header only, no rows: skipped\n")
+            continue
+        histories.append(history)
+    return histories
+
+
+# ----------------------------------------------------------------------------------------------
+# Figures
+
+def fmt(value):
+    return "n/a" if value is None else f"{value:.4g}"
+
+
+class Plotter:
+    def __init__(self, folder, summary, dpi, figure_class, numpy):
+        self.folder = folder
+        self.summary = summary
+        self.dpi = dpi
+        self.Figure = figure_class
+        self.np = numpy
+        from matplotlib.ticker import MaxNLocator
+        self.MaxNLocator = MaxNLocator
+        model = summary.get("model")
+        self.model = (os.path.splitext(os.path.basename(model))[0] if isinstance(model, str) and model
+                      else os.path.basename(os.path.abspath(folder)))
+        if summary.get("status") == "failed":
+            self.model += f" (analysis failed at t = {fmt(number(summary, 'failure_time'))})"
+        self.written = []
+
+    def figure(self, count, columns, row_height, width=11.0):
+        rows = max(1, math.ceil(count / columns))
+        fig = self.Figure(figsize=(width, 1.2 + row_height * rows))
+        axes = fig.subplots(rows, columns, squeeze=False).ravel()
+        for ax in axes[count:]:
+            ax.set_visible(False)
+        return fig, axes[:count]
+
+    def save(self, fig, name, title):
+        fig.suptitle(f"{title}: {self.model}")
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            fig.tight_layout()
+        path = os.path.join(self.folder, name)
+        temporary = f"{path}.tmp.{os.getpid()}"
+        try:
+            fig.savefig(temporary, format="png", dpi=self.dpi)
+            os.replace(temporary, path)
+        except (OSError, ValueError) as error:
+            try:
+                os.remove(temporary)
+            except OSError:
+                pass
+            raise OutputError(f"{path}: cannot write: {error}") from None
+        print(path)
+        self.written.append(path)
+
+    @staticmethod
+    def pages(items):
+        return [items[i:i + PER_PAGE] for i in range(0, len(items), PER_PAGE)]
+
+    @staticmethod
+    def page_name(base, page):
+        return f"{base}.png" if page == 0 else f"{base}_{page + 1}.png"
+
+    # -- links ----------------------------------------------------------------------------------
+
+    def link_series(self, histories):
+        """{link id: {quantity: (time, values)}}, in the summary's link order, first file wins."""
+        series = {}
+        for history in histories:
+            for name in history.columns[1:]:
+                owner, quantity = split_column(name)
+                if owner is not None and quantity in LINK_QUANTITIES:
+                    series.setdefault(owner, {}).setdefault(
+                        quantity, (history.time(), history.values[name]))
+        order = [str(link.get("id")) for link in summary_items(self.summary, "links")]
+        ids = [i for i in order if i in series] + [i for i in series if i not in order]
+        return [(i, series[i]) for i in ids]
+
+    def link_summaries(self):
+        return {str(link.get("id")): link for link in summary_items(self.summary, "links")}
+
+    def link_title(self, link_id, info):
+        parts = []
+        peak_force, peak_tension = number(info, "peak_force"), number(info, "peak_tension")
+        if peak_force is not None and (peak_force > 0.0 or not peak_tension):
+            parts.append(f"peak force {fmt(peak_force)}")
+        if peak_tension:
+            parts.append(f"peak tension {fmt(peak_tension)}")
+        impacts = number(info, "impacts")
+        if impacts is not None:
+            taut = peak_tension and not peak_force
+            parts.append(f"{'taut' if taut else 'impacts'}: {impacts:g}")
+        return f"{link_id}\n" + ", ".join(parts) if parts else link_id
+
+    def plot_link_forces(self, links):
+        summaries = self.link_summaries()
+        for page, items in enumerate(self.pages(links)):
+            columns = 1 if len(items) <= 4 else 2
+            fig, axes = self.figure(len(items), columns, 2.3)
+            for ax, (link_id, data) in zip(axes, items):
+                if "force" in data:
+                    ax.plot(*data["force"], lw=0.8, color="C0", label="normal force")
+                if "tangential_force" in data:
+                    ax.plot(*data["tangential_force"], lw=0.8, color="C1", label="tangential force")
+                    ax.legend(loc="best", fontsize="small")
+                ax.axhline(0.0, color="0.6", lw=0.5)
+                ax.set_title(self.link_title(link_id, summaries.get(link_id, {})), fontsize="medium")
+                ax.set_xlabel(TIME_LABEL)
+                ax.set_ylabel("force (compression +)\n[model units]")
+                ax.grid(alpha=0.3)
+            self.save(fig, self.page_name("link_forces", page), "Link force histories")
+
+    def contact_window(self, x, force):
+        """x limits around the part of a loop where the link carries force (None: all of it)."""
+        np = self.np
+        active = (force != 0.0) & np.isfinite(force) & np.isfinite(x)
+        if not active.any():
+            return None
+        low, high = float(x[active].min()), float(x[active].max())
+        finite = x[np.isfinite(x)]
+        span = high - low
+        if span <= 0.0:
+            span = max(abs(high), 1e-12)
+        # a quarter of the engaged range of free travel each side, then a small margin
+        low = max(low - 0.25 * span, float(finite.min())) - 0.04 * span
+        high = min(high + 0.25 * span, float(finite.max())) + 0.04 * span
+        return low, high
+
+    def plot_force_penetration(self, links):
+        summaries = self.link_summaries()
+        panels = []
+        for link_id, data in links:
+            if "force" in data and "penetration" in data:
+                panels.append((link_id, data["penetration"][1], data["force"][1], "normal"))
+            if "tangential_force" in data and "slide" in data:
+                panels.append((link_id, data["slide"][1], data["tangential_force"][1], "tangential"))
+        for page, items in enumerate(self.pages(panels)):
+            columns = min(3, len(items))
+            fig, axes = self.figure(len(items), columns, 3.2)
+            for ax, (link_id, x, force, kind) in zip(axes, items):
+                ax.plot(x, force, lw=0.8, color="C0" if kind == "normal" else "C1")
+                ax.axhline(0.0, color="0.6", lw=0.5)
+                ax.axvline(0.0, color="0.6", lw=0.5)
+                window = self.contact_window(x, force)
+                if window:
+                    ax.set_xlim(*window)
+                if kind == "normal":
+                    title = self.link_title(link_id, summaries.get(link_id, {}))
+                    ax.set_xlabel("penetration (closing +) [model units]")
+                    ax.set_ylabel("force (compression +) [model units]")
+                else:
+                    title = f"{link_id}\nfriction: tangential force against slide"
+                    ax.set_xlabel("slide [model units]")
+                    ax.set_ylabel("tangential force [model units]")
+                if window is None:
+                    title += " (never engaged)"
+                ax.xaxis.set_major_locator(self.MaxNLocator(4, steps=[1, 2, 5, 10]))
+                ax.set_title(title, fontsize="medium")
+                ax.grid(alpha=0.3)
+            self.save(fig, self.page_name("force_penetration", page),
+                      "Force against penetration (zoomed on engagement)")
+
+    # -- joints ---------------------------------------------------------------------------------
+
+    def plot_joint_openings(self, histories):
+        series = {}
+        for history in histories:
+            for name in history.columns[1:]:
+                owner, quantity = split_column(name)
+                if owner is not None and quantity == "opening":
+                    series.setdefault(owner, (history.time(), history.values[name]))
+        if not series:
+            return
+        joints = {str(j.get("id")): j for j in summary_items(self.summary, "joints")}
+        ids = [i for i in joints if i in series] + [i for i in series if i not in joints]
+        for page, items in enumerate(self.pages(ids)):
+            columns = 1 if len(items) <= 4 else 2
+            fig, axes = self.figure(len(items), columns, 2.3)
+            for ax, joint_id in zip(axes, items):
+                info = joints.get(joint_id, {})
+                ax.plot(*series[joint_id], lw=0.8, color="C0", label="opening")
+                ax.axhline(0.0, color="0.6", lw=0.5)
+                seat = number(info, "seat_width")
+                if seat is not None:
+                    ax.axhline(seat, color="C3", ls="--", lw=1.0, label=f"seat width {fmt(seat)}")
+                    ax.legend(loc="best", fontsize="small")
+                parts = [f"peak opening {fmt(number(info, 'peak_opening'))}"] if info else []
+                if number(info, "peak_closing") is not None:
+                    parts.append(f"peak closing {fmt(number(info, 'peak_closing'))}")
+                if number(info, "unseating_margin") is not None:
+                    parts.append(f"unseating margin {fmt(number(info, 'unseating_margin'))}")
+                ax.set_title(f"{joint_id}\n" + ", ".join(parts) if parts else joint_id,
+                             fontsize="medium")
+                ax.set_xlabel(TIME_LABEL)
+                ax.set_ylabel("opening [model units]")
+                ax.grid(alpha=0.3)
+            self.save(fig, self.page_name("joint_openings", page), "Joint opening histories")
+
+    # -- drifts ---------------------------------------------------------------------------------
+
+    def plot_drift_envelopes(self):
+        storeys = summary_items(self.summary, "storeys")
+        piers = [p for p in summary_items(self.summary, "piers")
+                 if number(p, "drift_ratio") is not None or number(p, "ductility") is not None]
+        storeys = [s for s in storeys if number(s, "drift_ratio") is not None]
+        has_ductility = any(number(p, "ductility") is not None for p in piers)
+        panels = (["storeys"] if storeys else []) + (["pier drift"] if piers else []) + \
+                 (["pier ductility"] if has_ductility else [])
+        if not panels:
+            return
+        fig, axes = self.figure(len(panels), len(panels), 4.6, width=max(6.0, 4.8 * len(panels)))
+        for ax, panel in zip(axes, panels):
+            if panel == "storeys":
+                self.storey_profile(ax, storeys)
+            elif panel == "pier drift":
+                self.pier_bars(ax, piers, "drift_ratio", "peak drift ratio [-]", "Pier drift ratio")
+            else:
+                self.pier_bars(ax, piers, "ductility", "displacement ductility [-]", "Pier ductility")
+                ax.axhline(1.0, color="C3", ls="--", lw=1.0, label="yield (ductility 1)")
+                ax.legend(loc="best", fontsize="small")
+        self.save(fig, "drift_envelopes.png", "Drift envelopes")
+
+    def storey_profile(self, ax, storeys):
+        buildings = {}
+        for storey in storeys:
+            buildings.setdefault(str(storey.get("building", "")), []).append(storey)
+        use_heights = all(number(s, "height") is not None and number(s, "height") > 0 for s in storeys)
+        for k, (building, items) in enumerate(buildings.items()):
+            if all(number(s, "storey") is not None for s in items):
+                items = sorted(items, key=lambda s: number(s, "storey"))
+            xs, ys, level = [], [], 0.0
+            for position, storey in enumerate(items):
+                ratio = number(storey, "drift_ratio")
+                step = number(storey, "height") if use_heights else 1.0
+                xs += [ratio, ratio]
+                ys += [level, level + step]
+                level += step
+            ax.plot(xs, ys, lw=1.5, color=f"C{k % 10}", label=building or None)
+            ax.plot(xs[::2], [(a + b) / 2 for a, b in zip(ys[::2], ys[1::2])], "o", ms=3,
+                    color=f"C{k % 10}")
+        ax.set_xlim(left=0.0)
+        ax.set_ylim(bottom=0.0)
+        ax.set_xlabel("peak storey drift ratio [-]")
+        ax.set_ylabel("height [model units]" if use_heights else "storey")
+        ax.set_title("Storey drift ratio envelopes", fontsize="medium")
+        if any(buildings):
+            ax.legend(loc="best", fontsize="small")
+        ax.grid(alpha=0.3)
+
+    def pier_bars(self, ax, piers, key, label, title):
+        names = [str(p.get("id")) for p in piers]
+        values = [number(p, key) for p in piers]
+        values = [math.nan if v is None else v for v in values]
+        ax.bar(range(len(names)), values, color="C0")
+        ax.set_xticks(range(len(names)))
+        ax.set_xticklabels(names, rotation=45 if len(names) > 6 else 0,
+                           ha="right" if len(names) > 6 else "center")
+        ax.set_xlabel("pier")
+        ax.set_ylabel(label)
+        ax.set_title(title, fontsize="medium")
+        ax.grid(alpha=0.3, axis="y")
+
+    # -- energy ---------------------------------------------------------------------------------
+
+    def plot_energy(self, histories):
+        np = self.np
+        history = next((h for h in histories if "energy" in h.kinds()
+                        and all(term in h.values for term in ENERGY_TERMS)), None)
+        if history is None:
+            return
+        t = history.time()
+        terms = [history.values[term] for term in ENERGY_TERMS]
+        energy = summary_object(self.summary, "energy")
+        input_work = history.values.get("input", np.zeros_like(t))
+        if "initial" in history.values:
+            initial = history.values["initial"]
+        elif number(energy, "initial") is not None:
+            initial = np.full_like(t, number(energy, "initial"))
+        else:  # the energy in the model at the first recorded instant
+            initial = np.full_like(t, terms[0][0] + terms[1][0] + terms[2][0] + terms[3][0] - input_work[0])
+        supplied = initial + input_work
+        stored = terms[0] + terms[1] + terms[2] + terms[3]
+        scale = np.maximum.reduce([np.abs(term) for term in terms + [input_work, initial]])
+        with np.errstate(divide="ignore", invalid="ignore"):
+            relative = np.where(scale > 0.0, np.abs(stored - supplied) / scale, 0.0)
+
+        fig = self.Figure(figsize=(11.0, 7.5))
+        top, bottom = fig.subplots(2, 1, sharex=True, gridspec_kw={"height_ratios": [2.2, 1.0]})
+        top.stackplot(t, *terms, labels=["kinetic", "strain (linear elements)",
+                                         "damping (dissipated)", "links (work on links)"], alpha=0.8)
+        top.plot(t, supplied, "k--", lw=1.2, label="initial + input")
+        top.set_ylabel("energy [model units]")
+        top.set_title("Energy components (stacked) against the energy supplied", fontsize="medium")
+        top.legend(loc="best", fontsize="small")
+        top.grid(alpha=0.3)
+        bottom.semilogy(t, np.where(relative > 0.0, relative, np.nan), lw=0.8, color="C3", label="balance error")
+        bottom.axhline(0.01, color="0.4", ls="--", lw=1.0, label="warning level (1 %)")
+        final = number(energy, "balance_error")
+        worst = number(energy, "worst_balance_error")
+        title = "Balance error |stored + dissipated - supplied| / largest term"
+        if worst is not None or final is not None:
+            title += f" (summary: final {fmt(final)}, worst {fmt(worst)})"
+        bottom.set_title(title, fontsize="medium")
+        bottom.set_xlabel(TIME_LABEL)
+        bottom.set_ylabel("balance error [-]")
+        bottom.legend(loc="best", fontsize="small")
+        bottom.grid(alpha=0.3, which="both")
+        self.save(fig, "energy.png", "Energy balance")
+
+    # -- nodes ----------------------------------------------------------------------------------
+
+    def plot_displacements(self, histories):
+        panels = []
+        for history in histories:
+            nodes = [(split_column(name)[0], name) for name in history.columns[1:]
+                     if split_column(name)[1] == "u_x" and split_column(name)[0] is not None]
+            if nodes:
+                panels.append((history, nodes))
+        if not panels:
+            return
+        panels = panels[:PER_PAGE]
+        fig, axes = self.figure(len(panels), 1, 2.8)
+        for ax, (history, nodes) in zip(axes, panels):
+            shown = nodes
+            if len(nodes) > NODES_PER_AXES:  # evenly spaced, first and last included
+                picks = sorted({round(i * (len(nodes) - 1) / (NODES_PER_AXES - 1))
+                                for i in range(NODES_PER_AXES)})
+                shown = [nodes[i] for i in picks]
+            for node, name in shown:
+                ax.plot(history.time(), history.values[name], lw=0.9, label=node)
+            ax.axhline(0.0, color="0.6", lw=0.5)
+            title = os.path.basename(history.path)
+            if len(shown) < len(nodes):
+                title += f" ({len(shown)} of {len(nodes)} nodes shown)"
+            ax.set_title(title, fontsize="medium")
+            ax.set_xlabel(TIME_LABEL)
+            ax.set_ylabel("displacement u_x\n[model units]")
+            ax.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize="small")
+            ax.grid(alpha=0.3)
+        self.save(fig, "displacements.png", "Node displacement histories")
+
+
+# ----------------------------------------------------------------------------------------------
+
+class Parser(argparse.ArgumentParser):
+    def error(self, message):
+        self.print_usage(sys.stderr)
+        sys.stderr.write(f"{self.prog}: {message}\n")
+        sys.exit(EXIT_USAGE)
+
+
+def main(argv):
+    parser = Parser(prog="plot_run.py", description=__doc__.split("\n\n")[0],
+                    epilog="Units on the axes are the model's own.")
+    parser.add_argument("folder", metavar="DIR", help="the --out folder of `pound run`")
+    parser.add_argument("--dpi", type=int, default=120, help="resolution of the PNGs (default 120)")
+    args = parser.parse_args(argv)
+    if not 20 <= args.dpi <= 1200:
+        parser.error(f"--dpi must be between 20 and 1200, got {args.dpi}")
+
+    figure_class = import_matplotlib()
+    import numpy
+
+    try:
+        summary = load_summary(args.folder)
+        histories = read_histories(args.folder, numpy)
+        plotter = Plotter(args.folder, summary, args.dpi, figure_class, numpy)
+        links = plotter.link_series(histories)
+        if links:
+            plotter.plot_link_forces(links)
+            plotter.plot_force_penetration(links)
+        plotter.plot_joint_openings(histories)
+        plotter.plot_drift_envelopes()
+        plotter.plot_energy(histories)
+        plotter.plot_displacements(histories)
+    except InputError as error:
+        sys.stderr.write(f"plot_run.py: {error}\n")
+        return EXIT_INPUT
+    except OutputError as error:
+        sys.stderr.write(f"plot_run.py: {error}\n")
+        return EXIT_OUTPUT
+    if not plotter.written:
+        sys.stderr.write(f"plot_run.py: {args.folder}: no time histories to plot\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
