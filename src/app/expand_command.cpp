@@ -16,11 +16,12 @@ namespace {
 
 constexpr const char* kExpandUsage = R"(usage: pound expand MODEL.json [--out FILE]
 
-Writes a model file with every generator (rod_pair) replaced by the nodes, materials, elements,
-supports, initial velocities and links it generates, so that they can be seen and edited. The
-result is itself a model file (docs/model_format.md): `pound run` on it gives the same results
-(only the comparison with the exact solution, which needs the generator, is no longer made).
-Defaults are written out where they matter to a reader (integrator, convergence).
+Writes a model file with every generator (rod_pair, adjacent_buildings, girder_bridge) replaced
+by the nodes, materials, elements, masses, supports, initial velocities, links and monitors it
+generates, so that they can be seen and edited. The result is itself a model file
+(docs/model_format.md): `pound run` on it gives the same results (only a rod_pair's comparison
+with the exact solution, which needs the generator, is no longer made). Defaults are written
+out where they matter to a reader (integrator, convergence).
 Records of excitations are named relative to the model file; with --out they are renamed
 relative to FILE's folder, on standard output they are left as they are.
 
