@@ -4,6 +4,7 @@
 
 #include <Eigen/SparseCholesky>
 #include <array>
+#include <map>
 #include <cmath>
 
 #include "assembly/banded_ldlt.hpp"
@@ -118,6 +119,21 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
       }
     }
   };
+  // K_fs, stiffness between free DOFs and fixed ones, by fixed DOF (node * dpn + direction):
+  // only needed when supports move differently (multi-support excitation).
+  const bool moving_supports = !model.support_excitations.empty();
+  std::map<Index, std::vector<std::pair<Index, double>>> support_coupling;
+  auto couple = [&](const auto& block, const std::vector<std::pair<Index, int>>& dofs) {
+    if (!moving_supports) return;
+    for (std::size_t a = 0; a < dofs.size(); ++a) {
+      const Index row = dofs_.equation(dofs[a].first, dofs[a].second);
+      if (row < 0) continue;
+      for (std::size_t b = 0; b < dofs.size(); ++b)
+        if (dofs_.equation(dofs[b].first, dofs[b].second) < 0)
+          support_coupling[dofs[b].first * dpn + dofs[b].second].emplace_back(
+              row, block(static_cast<Index>(a), static_cast<Index>(b)));
+    }
+  };
   auto add_mass = [&](Index node, int direction, double value, double mass_coefficient) {
     if (const Index row = dofs_.equation(node, direction); row >= 0) {
       mass_[row] += value;
@@ -142,6 +158,7 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
         block(p, q) = sign * axial * cosines[dofs[p].second] * cosines[dofs[q].second];
       }
     scatter(stiffness, block, dofs);
+    couple(block, dofs);
     const model::RayleighDamping c = coefficients(truss.damping);
     if (c.stiffness_coefficient != 0.0) scatter(damping, Matrix(c.stiffness_coefficient * block), dofs);
     for (Index node : {truss.node_i, truss.node_j})
@@ -159,6 +176,7 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
                                                      {beam.node_j, 0}, {beam.node_j, 1}, {beam.node_j, 2}};
     const Matrix6 element_stiffness = t.transpose() * beam_local_stiffness(beam, length) * t;
     scatter(stiffness, element_stiffness, dofs);
+    couple(element_stiffness, dofs);
     const model::RayleighDamping c = coefficients(beam.damping);
     if (c.stiffness_coefficient != 0.0)
       scatter(damping, Matrix6(c.stiffness_coefficient * element_stiffness), dofs);
@@ -239,6 +257,12 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
   }
 
   std::vector<LinkSet::Link> links;
+  // For each link row: its nodes and direction, to see how moving supports deform it.
+  struct RowGeometry {
+    Index node_i, node_j;
+    std::array<double, 3> direction;
+  };
+  std::vector<RowGeometry> rows;
   for (const model::Link& link : model.links) {
     // Row of a direction d: +d at node i, -d at node j (fixed DOFs dropped).
     auto row_along = [&](const std::array<double, 3>& direction) {
@@ -252,14 +276,17 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
       return row;
     };
     LinkSet::Link entry;
-    entry.normal_row = row_along(link.rotational ? std::array<double, 3>{0.0, 0.0, 1.0}
-                                                 : std::array<double, 3>{link.axis[0], link.axis[1], 0.0});
+    const std::array<double, 3> normal = link.rotational ? std::array<double, 3>{0.0, 0.0, 1.0}
+                                                         : std::array<double, 3>{link.axis[0], link.axis[1], 0.0};
+    entry.normal_row = row_along(normal);
+    rows.push_back({link.node_i, link.node_j, normal});
     entry.gap = link.gap;
     std::unique_ptr<contact::ContactLaw> law = link.make_law(link_context(link));
     if (!link.friction) {
       entry.law = std::move(law);
     } else {
       entry.tangential_row = row_along({-link.axis[1], link.axis[0], 0.0});
+      rows.push_back({link.node_i, link.node_j, {-link.axis[1], link.axis[0], 0.0}});
       // The stick penalty defaults to the normal law's tangent at first touch.
       const auto probe = law->clone();
       const contact::LawResponse touch = probe->set_trial({1e-12, 1e-12, 0.0});
@@ -272,6 +299,70 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
     links.push_back(std::move(entry));
   }
   links_ = LinkSet(n, std::move(links));
+
+  if (!moving_supports) return;
+  // Any influence matrix R gives exact equations if the static term -(K_ff R + K_fs) u_s(t) is
+  // loaded too; R is chosen as the quasi-static influence of the supports on the structure with
+  // its links at their initial tangent (bearings hold the girders), so that u_dyn stays small.
+  // DOFs nothing holds even then (a backwall behind open backfill) are regularised: r = 0.
+  const Matrix b = Matrix(links_.connectivity());
+  Vector initial_tangent = Vector::Zero(links_.size());
+  for (Index k = 0; k < links_.count(); ++k) {
+    const Index row = links_.row(k);
+    initial_tangent[row] = links_.law(k).clone()->set_trial({-links_.gaps()[row], 0.0, 0.0}).stiffness;
+  }
+  Eigen::SparseMatrix<double> held = stiffness_;
+  held += (b.transpose() * initial_tangent.asDiagonal() * b).sparseView();
+  const double largest = held.diagonal().cwiseAbs().maxCoeff();
+  for (Index i = 0; i < n; ++i)
+    if (!(std::abs(held.coeff(i, i)) > 0.0)) held.coeffRef(i, i) = 1e-12 * largest;
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> held_factor(held);
+  if (held_factor.info() != Eigen::Success)
+    throw InputError("", "/excitations", "multi-support excitation: the structure's stiffness "
+                                         "could not be factored to find the supports' influence");
+  for (const model::SupportExcitation& excitation : model.support_excitations)
+    for (const auto& [node, delay] : excitation.supports) {
+      // K_fs for the support moving along the direction.
+      Vector coupling = Vector::Zero(n);
+      for (int d = 0; d < std::min(dpn, 2); ++d)
+        if (auto found = support_coupling.find(node * dpn + d); found != support_coupling.end())
+          for (const auto& [row, value] : found->second)
+            coupling[row] += excitation.direction[static_cast<std::size_t>(d)] * value;
+      // Links attached to the support itself move with it.
+      Vector direct = Vector::Zero(links_.size());
+      for (std::size_t r = 0; r < rows.size(); ++r) {
+        const double along = rows[r].direction[0] * excitation.direction[0] +
+                             rows[r].direction[1] * excitation.direction[1];
+        if (rows[r].node_i == node) direct[static_cast<Index>(r)] += along;
+        if (rows[r].node_j == node) direct[static_cast<Index>(r)] -= along;
+      }
+      const Vector held_coupling = coupling + b.transpose() * initial_tangent.cwiseProduct(direct);
+      const Vector influence = -held_factor.solve(held_coupling);
+      MovingSupport moving{model::GroundKinematics(excitation.motion, delay), Vector(n),
+                           b * influence + direct, Vector(n)};
+      multiply_mass(influence, moving.inertia);
+      moving.static_load = -(stiffness_ * influence + coupling);
+      moving_supports_.push_back(std::move(moving));
+    }
+}
+
+bool StructuralSystem::has_link_motion() const {
+  for (const MovingSupport& support : moving_supports_)
+    if (support.link_coefficients.size() > 0 && support.link_coefficients.any()) return true;
+  return false;
+}
+
+void StructuralSystem::link_motion(double time, Vector& offset, Vector& rate,
+                                   Vector& acceleration) const {
+  offset.setZero(links_.size());
+  rate.setZero(links_.size());
+  acceleration.setZero(links_.size());
+  for (const MovingSupport& support : moving_supports_) {
+    const model::GroundState ground = support.kinematics.at(time);
+    offset += ground.displacement * support.link_coefficients;
+    rate += ground.velocity * support.link_coefficients;
+    acceleration += ground.acceleration * support.link_coefficients;
+  }
 }
 
 contact::LinkContext StructuralSystem::link_context(const model::Link& link) const {
@@ -335,6 +426,11 @@ void StructuralSystem::external_force(double time, Vector& force) const {
   force = loads_;
   for (const Excitation& excitation : excitations_)
     force -= excitation.motion.at(time) * excitation.inertia;  // -M iota a_g(t)
+  for (const MovingSupport& support : moving_supports_) {
+    const model::GroundState ground = support.kinematics.at(time);
+    force -= ground.acceleration * support.inertia;        // -M r a_s(t)
+    force += ground.displacement * support.static_load;    // -(K_ff r + K_fs) u_s(t)
+  }
 }
 
 std::unique_ptr<LinearSolver> StructuralSystem::factor(double c_m, double c_c, double c_k) const {

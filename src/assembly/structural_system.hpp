@@ -23,7 +23,11 @@ class StructuralSystem final : public SecondOrderSystem {
   }
   void multiply_damping(const Vector& x, Vector& y) const override;
   void multiply_stiffness(const Vector& x, Vector& y) const override;
-  bool has_external_force() const override { return has_loads_ || !excitations_.empty(); }
+  bool has_external_force() const override {
+    return has_loads_ || !excitations_.empty() || !moving_supports_.empty();
+  }
+  bool has_link_motion() const override;
+  void link_motion(double time, Vector& offset, Vector& rate, Vector& acceleration) const override;
   void external_force(double time, Vector& force) const override;
   std::unique_ptr<LinearSolver> factor(double c_m, double c_c, double c_k) const override;
   LinkSet& links() override { return links_; }
@@ -52,6 +56,13 @@ class StructuralSystem final : public SecondOrderSystem {
     Vector inertia;  // M iota
   };
   std::vector<Excitation> excitations_;
+  struct MovingSupport {
+    model::GroundKinematics kinematics;  // the record at this support, delayed
+    Vector inertia;                      // M r
+    Vector link_coefficients;            // d(delta) / d(u_support) of every link row
+    Vector static_load;                  // -(K_ff r + K_fs): zero when r is K_ff's own
+  };
+  std::vector<MovingSupport> moving_supports_;
   Eigen::SparseMatrix<double> stiffness_;
   LinkSet links_;
 };

@@ -228,7 +228,7 @@ namespace {
 
 // The records, scaled as the spec says (targets in g), along their directions.
 void add_excitations(const ModelSpec& spec, const std::vector<model::GroundMotion>& motions,
-                     model::Model& model) {
+                     const std::map<std::string, Index>& nodes, model::Model& model) {
   if (motions.size() != spec.excitations.size())
     throw std::invalid_argument("build: one ground motion per excitation is needed");
   const double gravity = spec.units.gravity();
@@ -245,8 +245,32 @@ void add_excitations(const ModelSpec& spec, const std::vector<model::GroundMotio
       factor = model::scale_to_spectral_acceleration(motion, *e.target_sa * gravity, e.sa_period,
                                                      e.sa_damping);
     model::scale(motion, factor);
-    model.excitations.push_back(
-        {std::move(motion), {e.direction[0], e.direction.size() > 1 ? e.direction[1] : 0.0}});
+    const model::Coordinates direction{e.direction[0], e.direction.size() > 1 ? e.direction[1] : 0.0};
+    if (e.supports.empty()) {
+      model.excitations.push_back({std::move(motion), direction});
+      continue;
+    }
+    model::SupportExcitation moving{std::move(motion), direction, {}};
+    for (std::size_t s = 0; s < e.supports.size(); ++s) {
+      const std::string where = fmt::format("/excitations/{}/supports/{}", k, s);
+      auto found = nodes.find(e.supports[s]);
+      if (found == nodes.end())
+        throw InputError(spec.source, where, fmt::format("node '{}' does not exist", e.supports[s]));
+      const Index node = found->second;
+      // Only a support can be moved: every direction the record acts in must be fixed there.
+      bool held = false;
+      for (const model::Support& support : model.supports)
+        if (support.node == node)
+          held = (direction[0] == 0.0 || support.fixed[0]) && (direction[1] == 0.0 || support.fixed[1]);
+      if (!held)
+        throw InputError(spec.source, where,
+                         fmt::format("node '{}' is not a support fixed along the excitation's direction",
+                                     e.supports[s]));
+      const double x = model.nodes[static_cast<std::size_t>(node)].position[0];
+      const double delay = e.apparent_velocity ? std::abs(x - e.wave_origin) / *e.apparent_velocity : 0.0;
+      moving.supports.emplace_back(node, delay);
+    }
+    model.support_excitations.push_back(std::move(moving));
   }
 }
 
@@ -401,10 +425,14 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
   }
 
   built.analysis = spec.analysis;
-  add_excitations(spec, motions, model);
+  add_excitations(spec, motions, built.node_index, model);
   if (built.analysis.duration == 0.0)
     for (const model::UniformExcitation& excitation : model.excitations)
       built.analysis.duration = std::max(built.analysis.duration, excitation.motion.duration());
+  if (built.analysis.duration == 0.0)
+    for (const model::SupportExcitation& excitation : model.support_excitations)
+      for (const auto& [node, delay] : excitation.supports)
+        built.analysis.duration = std::max(built.analysis.duration, excitation.motion.duration() + delay);
   if (spec.damping) model.damping = rayleigh_damping(*spec.damping, model, spec.source);
   if (!spec.recorders_given && !model.links.empty()) {
     ResolvedRecorder every_link{"link", {}, "links.csv"};

@@ -132,6 +132,11 @@ struct ExcitationSpec {
   double sa_period = 0.0;
   double sa_damping = 0.05;
   std::vector<double> direction{1.0};  // unit vector (1-D: [1] or [-1])
+  // Multi-support excitation: the supports this record moves (empty: every support, uniform),
+  // optionally reached by a wave at apparent_velocity from `wave_origin` (delay |x - x0| / c).
+  std::vector<std::string> supports;
+  std::optional<double> apparent_velocity;
+  double wave_origin = 0.0;
 };
 
 // One rod of a rod_pair generator.

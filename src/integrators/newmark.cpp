@@ -59,6 +59,12 @@ void Newmark::initialize(SecondOrderSystem& system, State& state) {
   Matrix tangent;
   links.penetration(state.displacement, state.link_penetration);
   links.project(state.velocity, rate);
+  if (system.has_link_motion()) {
+    Vector offset, offset_rate, offset_acceleration;
+    system.link_motion(state.time, offset, offset_rate, offset_acceleration);
+    state.link_penetration += offset;
+    rate += offset_rate;
+  }
   links.set_trial(state.link_penetration, rate, zero, 0.0, 0.0, state.link_force, tangent);
   links.commit();
 
@@ -146,10 +152,19 @@ StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double
     links.penetration(to.displacement, delta_linear_);
     links.penetration(predicted_displacement_, delta_predicted_);
     links.project(predicted_velocity_, rate_predicted_);
+    // Support motion moves the links' deformation by s(t); B a = c_m (delta - delta~) stays.
+    const bool moving = system.has_link_motion();
+    if (moving) {
+      system.link_motion(to.time, link_offset_, link_offset_rate_, link_offset_acceleration_);
+      delta_linear_ += link_offset_;
+      delta_predicted_ += link_offset_;
+      rate_predicted_ += link_offset_rate_;
+    }
     for (int iteration = 0;; ++iteration) {
       delta_.noalias() = delta_linear_ - f.coupling * assumed_force_;
       rate_ = rate_predicted_ + c_c * (delta_ - delta_predicted_);
       acceleration_ = c_m * (delta_ - delta_predicted_);
+      if (moving) acceleration_ += link_offset_acceleration_;
       links.set_trial(delta_, rate_, acceleration_, c_c, c_m, law_force_, tangent_);
       residual_ = assumed_force_ - law_force_;
       if (!residual_.allFinite() || !law_force_.allFinite()) {

@@ -59,6 +59,7 @@ class Newmark final : public Integrator {
   Vector delta_linear_, delta_predicted_, rate_predicted_;
   Vector delta_, rate_, acceleration_, assumed_force_, law_force_, residual_;
   Matrix tangent_, jacobian_;
+  Vector link_offset_, link_offset_rate_, link_offset_acceleration_;
 };
 
 }  // namespace pound

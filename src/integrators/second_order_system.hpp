@@ -36,6 +36,16 @@ class SecondOrderSystem {
   virtual std::unique_ptr<LinearSolver> factor(double c_m, double c_c, double c_k) const = 0;
 
   virtual LinkSet& links() = 0;
+
+  // Links attached to supports that move differently from the rest (multi-support excitation)
+  // see a prescribed part of their deformation: delta = B u - gap + s(t), with rates
+  // B v + s'(t) and B a + s''(t). None unless the system says so.
+  virtual bool has_link_motion() const { return false; }
+  virtual void link_motion(double /*time*/, Vector& offset, Vector& rate, Vector& acceleration) const {
+    offset.setZero(links().size());
+    rate.setZero(links().size());
+    acceleration.setZero(links().size());
+  }
   const LinkSet& links() const { return const_cast<SecondOrderSystem*>(this)->links(); }
 };
 

@@ -494,6 +494,16 @@ builder::ExcitationSpec read_excitation(JsonObject& object, int dimension) {
   excitation.units = object.one_of("units", {"g", "m/s2", "cm/s2", "model"}, "g");
   if (const std::optional<JsonValue> direction = object.find("direction"))
     excitation.direction = read_axis(*direction, dimension);
+  if (const std::optional<JsonValue> supports = object.find("supports"))
+    excitation.supports = read_names(*supports, "node", 1);
+  if (const std::optional<JsonValue> wave = object.find("wave_passage")) {
+    if (excitation.supports.empty()) wave->fail("a wave passage needs the 'supports' it reaches");
+    read_object(*wave, [&excitation](JsonObject& w) {
+      excitation.apparent_velocity = w.required<double>("apparent_velocity", positive);
+      excitation.wave_origin = w.optional<double>("origin", 0.0);
+      return 0;
+    });
+  }
   if (const std::optional<JsonValue> scale = object.find("scale")) {
     read_object(*scale, [&excitation](JsonObject& s) {
       excitation.scale_factor = s.if_present<double>("factor", positive);

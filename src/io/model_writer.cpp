@@ -362,6 +362,10 @@ Json excitation_json(const builder::ExcitationSpec& excitation) {
   json["units"] = excitation.units;  // written always: g or m/s2 is the first thing to check
   // The default [1] means +x in any dimension; written out it would be refused in 2-D.
   set_unless_default(json, "direction", excitation.direction, fallback.direction);
+  if (!excitation.supports.empty()) json["supports"] = excitation.supports;
+  if (excitation.apparent_velocity)
+    json["wave_passage"] = Json{{"apparent_velocity", *excitation.apparent_velocity},
+                                {"origin", excitation.wave_origin}};
   Json scale;
   set_if_present(scale, "factor", excitation.scale_factor);
   set_if_present(scale, "pga", excitation.target_pga);

@@ -130,6 +130,35 @@ double GroundMotion::at(double time) const {
   return acceleration[k] + fraction * (acceleration[k + 1] - acceleration[k]);
 }
 
+GroundKinematics::GroundKinematics(const GroundMotion& motion, double delay)
+    : motion_(motion), delay_(delay) {
+  const std::vector<double>& a = motion.acceleration;
+  const double dt = motion.time_step;
+  velocity_.assign(a.size(), 0.0);
+  displacement_.assign(a.size(), 0.0);
+  for (std::size_t k = 1; k < a.size(); ++k) {
+    velocity_[k] = velocity_[k - 1] + 0.5 * dt * (a[k - 1] + a[k]);
+    displacement_[k] = displacement_[k - 1] + dt * velocity_[k - 1] + dt * dt * (a[k - 1] / 3.0 + a[k] / 6.0);
+  }
+}
+
+GroundState GroundKinematics::at(double time) const {
+  const double t = time - delay_;
+  const std::size_t n = motion_.acceleration.size();
+  if (t < 0.0 || n == 0) return {};  // the wave has not arrived yet
+  const double dt = motion_.time_step;
+  const double end = static_cast<double>(n - 1) * dt;
+  if (t >= end) {  // at rest in acceleration; velocity and displacement carry on
+    return {0.0, velocity_.back(), displacement_.back() + velocity_.back() * (t - end)};
+  }
+  const auto k = std::min(static_cast<std::size_t>(t / dt), n - 2);
+  const double tau = t - static_cast<double>(k) * dt;
+  const double a0 = motion_.acceleration[k], a1 = motion_.acceleration[k + 1];
+  const double slope = (a1 - a0) / dt;
+  return {a0 + slope * tau, velocity_[k] + a0 * tau + 0.5 * slope * tau * tau,
+          displacement_[k] + velocity_[k] * tau + 0.5 * a0 * tau * tau + slope * tau * tau * tau / 6.0};
+}
+
 double GroundMotion::peak() const {
   double largest = 0.0;
   for (double a : acceleration) largest = std::max(largest, std::abs(a));

@@ -18,6 +18,24 @@ struct GroundMotion {
   double peak() const;  // max |a|
 };
 
+// Ground acceleration, velocity and displacement of a record, possibly delayed (a support that
+// the wave reaches later), for multi-support excitation. Velocity and displacement are the exact
+// integrals of the linearly interpolated acceleration from rest at t = 0 (no baseline correction:
+// a record whose velocity does not end at zero keeps drifting after its end).
+struct GroundState {
+  double acceleration = 0.0, velocity = 0.0, displacement = 0.0;
+};
+class GroundKinematics {
+ public:
+  GroundKinematics(const GroundMotion& motion, double delay);
+  GroundState at(double time) const;
+
+ private:
+  GroundMotion motion_;
+  double delay_;
+  std::vector<double> velocity_, displacement_;  // at the samples
+};
+
 // Pseudo-spectral acceleration S_a = w^2 max|u| of a linear SDOF (period, damping ratio) under
 // the record, computed with the exact piecewise-linear recurrence (Nigam & Jennings 1969), so
 // it is exact for the linearly interpolated record. Period 0 gives the peak acceleration.

@@ -83,6 +83,15 @@ struct UniformExcitation {
   Coordinates direction{1.0, 0.0};  // unit vector
 };
 
+// Multi-support excitation: the listed supports move along `direction` with the record, each
+// after its delay; the others stand still. Solved as u = u_dyn + R u_s (R = -K_ff^-1 K_fs, the
+// quasi-static influence of the supports): loads -M R a_s(t), and links see R u_s + u_s directly.
+struct SupportExcitation {
+  GroundMotion motion;
+  Coordinates direction{1.0, 0.0};
+  std::vector<std::pair<Index, double>> supports;  // node, delay [T]
+};
+
 // Makes a link's law once the assembled model can tell the law about the bodies it joins
 // (masses and stiffnesses at the two ends, for automatic numbers). Throws InputError when the
 // model cannot supply what the law needs.
@@ -119,6 +128,7 @@ struct Model {
   std::vector<Coordinates> initial_velocity;  // per node (empty: at rest)
   std::optional<RayleighDamping> damping;
   std::vector<UniformExcitation> excitations;
+  std::vector<SupportExcitation> support_excitations;
 
   int dofs_per_node() const { return dimension == 1 ? 1 : (beams.empty() ? 2 : 3); }
   double length(Index node_i, Index node_j) const;

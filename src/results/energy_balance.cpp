@@ -31,9 +31,12 @@ void EnergyBalance::record(const State& state) {
       system_.multiply_damping(average_, work_);
       terms_.damping += step.dot(work_);
     }
-    if (state.link_force.size() > 0)
-      terms_.links += 0.5 * (state.link_force + previous_.link_force)
-                                .dot(state.link_penetration - previous_.link_penetration);
+    if (state.link_force.size() > 0) {
+      // Work of the link forces on the structure (B du): with moving supports the links also
+      // deform by the supports' motion, whose work is not the structure's.
+      system_.links().project(step, work_);
+      terms_.links += 0.5 * (state.link_force + previous_.link_force).dot(work_);
+    }
   }
   worst_ = std::max(worst_, terms_.balance_error());
   previous_external_.swap(external_);

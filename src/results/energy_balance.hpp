@@ -2,8 +2,8 @@
 // Energy balance of a run, accumulated step by step:
 //   kinetic + strain + damping + links = input + (kinetic + strain at the start)
 // kinetic 1/2 v^T M v, strain 1/2 u^T K u of the linear elements, damping sum du^T C v_avg,
-// links sum F_avg d(delta) over every link row (impact, spring and friction work, elastic or
-// dissipated), input sum du^T f_avg with f = loads - M iota a_g (relative formulation). Work
+// links sum F_avg . B du over every link row (impact, spring and friction work on the
+// structure, elastic or dissipated; the same as F d(delta) unless supports move the links), input sum du^T f_avg with f = loads - M iota a_g (relative formulation). Work
 // terms use step averages, which makes the balance exact for the trapezoidal rule (Newmark
 // beta = 1/4, gamma = 1/2) up to the Newton tolerance, so a large error means a step was not
 // resolved (or another integrator's own dissipation).
