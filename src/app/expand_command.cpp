@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "app/command_line.hpp"
 #include "app/commands.hpp"
 #include "builder/generators.hpp"
 #include "io/model_reader.hpp"
@@ -46,19 +47,7 @@ int expand_command(const Arguments& arguments) {
   std::string model_path, out;
   options.add_options()("help,h", "show this help")(
       "out,o", po::value(&out), "write the expanded model to FILE (default: standard output)");
-  po::options_description hidden;
-  hidden.add_options()("model", po::value(&model_path));
-  po::options_description all;
-  all.add(options).add(hidden);
-  po::positional_options_description positional;
-  positional.add("model", 1);
-  po::variables_map vm;
-  po::store(po::command_line_parser(arguments).options(all).positional(positional).run(), vm);
-  po::notify(vm);
-  if (vm.count("help")) {
-    std::cout << options << "\n";
-    return 0;
-  }
+  if (!parse_command_line(arguments, options, "model", model_path)) return 0;
   if (model_path.empty()) {
     std::cerr << "pound expand: name a model file (see `pound expand --help`)\n";
     return 1;

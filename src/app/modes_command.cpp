@@ -5,6 +5,7 @@
 #include <iostream>
 #include <numbers>
 
+#include "app/command_line.hpp"
 #include "app/commands.hpp"
 #include "app/model_loading.hpp"
 #include "assembly/modal_analysis.hpp"
@@ -31,19 +32,9 @@ int modes_command(const Arguments& arguments) {
   options.add_options()("help,h", "show this help")(
       "count,n", po::value(&count)->default_value(count), "how many modes to list")(
       "json", "print the modes as one JSON object");
-  po::options_description hidden;
-  hidden.add_options()("model", po::value(&model_path));
-  po::options_description all;
-  all.add(options).add(hidden);
-  po::positional_options_description positional;
-  positional.add("model", 1);
-  po::variables_map vm;
-  po::store(po::command_line_parser(arguments).options(all).positional(positional).run(), vm);
-  po::notify(vm);
-  if (vm.count("help")) {
-    std::cout << options << "\n";
-    return 0;
-  }
+  const auto parsed = parse_command_line(arguments, options, "model", model_path);
+  if (!parsed) return 0;
+  const po::variables_map& vm = *parsed;
   if (model_path.empty() || count < 1) {
     std::cerr << "pound modes: name a model file and a --count >= 1 (see `pound modes --help`)\n";
     return 1;

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "app/command_line.hpp"
 #include "app/commands.hpp"
 #include "app/model_loading.hpp"
 #include "assembly/structural_system.hpp"
@@ -90,19 +91,9 @@ int run_command(const Arguments& arguments) {
       "exciting it along x in g when it has none")(
       "max-steps", po::value(&max_steps), "stop with an error after this many steps (0: no limit)")(
       "quiet,q", "print nothing but errors");
-  po::options_description hidden;
-  hidden.add_options()("model", po::value(&model_path));
-  po::options_description all;
-  all.add(options).add(hidden);
-  po::positional_options_description positional;
-  positional.add("model", 1);
-  po::variables_map vm;
-  po::store(po::command_line_parser(arguments).options(all).positional(positional).run(), vm);
-  po::notify(vm);
-  if (vm.count("help")) {
-    std::cout << options << "\n";
-    return 0;
-  }
+  const auto parsed = parse_command_line(arguments, options, "model", model_path);
+  if (!parsed) return 0;
+  const po::variables_map& vm = *parsed;
   if (model_path.empty()) {
     std::cerr << "pound run: name a model file (see `pound run --help`)\n";
     return 1;

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "app/command_line.hpp"
 #include "app/commands.hpp"
 #include "core/errors.hpp"
 #include "io/document.hpp"
@@ -138,20 +139,10 @@ int spectrum_command(const Arguments& arguments) {
       "comma-separated periods [s], e.g. 0.1,0.2,0.5,1 (0 gives the PGA)")(
       "csv", po::value(&csv), "write period,sa_g,sv_m_per_s,sd_m to this CSV file")(
       "json", "print the record's data and the spectrum as one JSON object");
-  po::options_description hidden;
   std::string record;
-  hidden.add_options()("record", po::value(&record));
-  po::options_description all;
-  all.add(options).add(hidden);
-  po::positional_options_description positional;
-  positional.add("record", 1);
-  po::variables_map vm;
-  po::store(po::command_line_parser(arguments).options(all).positional(positional).run(), vm);
-  po::notify(vm);
-  if (vm.count("help")) {
-    std::cout << options << "\n";
-    return 0;
-  }
+  const auto parsed = parse_command_line(arguments, options, "record", record);
+  if (!parsed) return 0;
+  const po::variables_map& vm = *parsed;
   auto usage_error = [](const std::string& what) {
     std::cerr << "pound spectrum: " << what << "\n";
     return 1;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "app/command_line.hpp"
 #include "app/commands.hpp"
 #include "core/errors.hpp"
 #include "io/output.hpp"
@@ -69,20 +70,10 @@ int verify_command(const Arguments& arguments) {
       "study", po::value(&study),
       "kawashima: Kawashima's tables over k_I, n and dt; penalty: Suzuki & Toi's alpha0-only and "
       "extended-penalty cases (Figs. 7-8)");
-  po::options_description hidden;
   std::string benchmark;
-  hidden.add_options()("benchmark", po::value(&benchmark));
-  po::options_description all;
-  all.add(options).add(hidden);
-  po::positional_options_description positional;
-  positional.add("benchmark", 1);
-  po::variables_map vm;
-  po::store(po::command_line_parser(arguments).options(all).positional(positional).run(), vm);
-  po::notify(vm);
-  if (vm.count("help")) {
-    std::cout << options << "\n";
-    return 0;
-  }
+  const auto parsed = parse_command_line(arguments, options, "benchmark", benchmark);
+  if (!parsed) return 0;
+  const po::variables_map& vm = *parsed;
   const bool json = vm.count("json") > 0;
   if (benchmark == "two-element") {
     const auto results = report::two_element_sweep();
