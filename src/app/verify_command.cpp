@@ -41,7 +41,7 @@ int verify_command(const Arguments& arguments) {
   int elements = 10;
   double stiffness_ratio = 1.0, dt_ratio = 0.01, duration_ratio = 3.0, tolerance = 1e-10;
   std::string law = "gap_spring", case_name = "kawashima", csv, profiles_csv, study, integrator;
-  double courant = 0.0, eta = 1.0;
+  double courant = 0.0, eta = 1.0, hht_alpha = -0.1, rho_infinity = 0.8;
   options.add_options()("help,h", "show this help")(
       "case", po::value(&case_name)->default_value(case_name),
       "benchmark case: kawashima (free rods, +-V0), fixed-end (rod into a rod at rest with a fixed "
@@ -59,7 +59,10 @@ int verify_command(const Arguments& arguments) {
       "automatic numbers)")(
       "eta", po::value(&eta)->default_value(eta), "extended_penalty: damping factor of alpha1")(
       "integrator", po::value(&integrator)->default_value("newmark_average_acceleration"),
-      "newmark_average_acceleration | newmark_linear_acceleration")(
+      "newmark_average_acceleration | newmark_linear_acceleration | hht | generalized_alpha")(
+      "alpha", po::value(&hht_alpha)->default_value(hht_alpha), "hht: alpha in [-1/3, 0]")(
+      "rho-inf", po::value(&rho_infinity)->default_value(rho_infinity),
+      "generalized_alpha: spectral radius at infinite frequency, in [0, 1]")(
       "tolerance", po::value(&tolerance)->default_value(tolerance),
       "relative unbalanced-force tolerance of the Newton iteration")(
       "json", "print the metrics as one JSON object")(
@@ -131,7 +134,15 @@ int verify_command(const Arguments& arguments) {
   run.duration_ratio = duration_ratio;
   run.relative_tolerance = tolerance;
   if (integrator == "newmark_linear_acceleration") {
-    run.beta = 1.0 / 6.0;
+    run.integrator.beta = 1.0 / 6.0;
+  } else if (integrator == "hht" || integrator == "generalized_alpha") {
+    run.integrator.type = integrator;
+    run.integrator.alpha = hht_alpha;
+    run.integrator.rho_infinity = rho_infinity;
+    if (!(hht_alpha >= -1.0 / 3.0 && hht_alpha <= 0.0)) return usage_error("--alpha must be in [-1/3, 0]");
+    if (!(rho_infinity >= 0.0 && rho_infinity <= 1.0)) return usage_error("--rho-inf must be in [0, 1]");
+  } else if (integrator != "newmark_average_acceleration") {
+    return usage_error(fmt::format("unknown integrator '{}'", integrator));
   } else if (integrator != "newmark_average_acceleration") {
     return usage_error(fmt::format("unknown integrator '{}'", integrator));
   }

@@ -214,7 +214,11 @@ model::LawFactory make_law(const LawSpec& law, const std::string& source, const 
 std::unique_ptr<Integrator> make_integrator(const AnalysisSpec& analysis) {
   const ConvergenceTest test{analysis.relative_tolerance, analysis.absolute_tolerance,
                              analysis.max_iterations};
-  return std::make_unique<Newmark>(analysis.integrator.beta, analysis.integrator.gamma, test);
+  const IntegratorSpec& integrator = analysis.integrator;
+  if (integrator.type == "hht") return std::make_unique<Newmark>(Newmark::hht(integrator.alpha, test));
+  if (integrator.type == "generalized_alpha")
+    return std::make_unique<Newmark>(Newmark::generalized_alpha(integrator.rho_infinity, test));
+  return std::make_unique<Newmark>(integrator.beta, integrator.gamma, test);
 }
 
 TransientSettings make_transient_settings(const AnalysisSpec& analysis) {

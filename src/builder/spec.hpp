@@ -232,10 +232,14 @@ struct JointMonitorSpec {
   double seat_width = 0.0;              // 0: unseating not checked
 };
 
+// "newmark" (beta, gamma), "hht" (alpha in [-1/3, 0]) or "generalized_alpha" (rho_infinity in
+// [0, 1]); integrators/newmark.hpp.
 struct IntegratorSpec {
-  std::string type = "newmark";  // "newmark"
+  std::string type = "newmark";
   double beta = 0.25;
   double gamma = 0.5;
+  double alpha = -0.1;
+  double rho_infinity = 0.8;
 };
 
 struct AnalysisSpec {

@@ -40,10 +40,35 @@ Newmark::Newmark(double beta, double gamma, ConvergenceTest test)
     throw std::invalid_argument("Newmark needs beta > 0 and gamma >= 1/2");
 }
 
+Newmark::Newmark(double beta, double gamma, double alpha_m, double alpha_f, std::string name,
+                 ConvergenceTest test)
+    : Newmark(beta, gamma, test) {
+  alpha_m_ = alpha_m;
+  alpha_f_ = alpha_f;
+  name_ = std::move(name);
+}
+
 Newmark Newmark::average_acceleration(ConvergenceTest test) { return {0.25, 0.5, test}; }
 Newmark Newmark::linear_acceleration(ConvergenceTest test) { return {1.0 / 6.0, 0.5, test}; }
 
+Newmark Newmark::hht(double alpha, ConvergenceTest test) {
+  if (!(alpha >= -1.0 / 3.0 && alpha <= 0.0))
+    throw std::invalid_argument("HHT needs alpha in [-1/3, 0]");
+  return {0.25 * (1.0 - alpha) * (1.0 - alpha), 0.5 - alpha, 0.0, -alpha,
+          fmt::format("hht(alpha={:g})", alpha), test};
+}
+
+Newmark Newmark::generalized_alpha(double rho, ConvergenceTest test) {
+  if (!(rho >= 0.0 && rho <= 1.0))
+    throw std::invalid_argument("generalised-alpha needs rho_infinity in [0, 1]");
+  const double alpha_m = (2.0 * rho - 1.0) / (rho + 1.0), alpha_f = rho / (rho + 1.0);
+  const double gamma = 0.5 - alpha_m + alpha_f;
+  return {0.25 * (1.0 - alpha_m + alpha_f) * (1.0 - alpha_m + alpha_f), gamma, alpha_m, alpha_f,
+          fmt::format("generalized_alpha(rho_inf={:g})", rho), test};
+}
+
 std::string Newmark::name() const {
+  if (!name_.empty()) return name_;
   if (beta_ == 0.25 && gamma_ == 0.5) return "newmark_average_acceleration";
   if (beta_ == 1.0 / 6.0 && gamma_ == 0.5) return "newmark_linear_acceleration";
   return fmt::format("newmark(beta={:g}, gamma={:g})", beta_, gamma_);
@@ -90,7 +115,8 @@ void Newmark::initialize(SecondOrderSystem& system, State& state) {
 const Newmark::Factorization& Newmark::factorization(SecondOrderSystem& system, double dt) {
   auto found = factorizations_.by_step.find(dt);
   if (found != factorizations_.by_step.end()) return found->second;
-  const double c_m = 1.0 / (beta_ * dt * dt);
+  // With alpha_m, alpha_f the mass term weighs (1 - a_m) / (1 - a_f).
+  const double c_m = (1.0 - alpha_m_) / (1.0 - alpha_f_) / (beta_ * dt * dt);
   const double c_c = gamma_ / (beta_ * dt);
   Factorization f;
   f.solver = system.factor(c_m, system.has_damping() ? c_c : 0.0, 1.0);
@@ -113,23 +139,44 @@ StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double
   const Index n = system.size(), m = links.size();
   const double c_m = 1.0 / (beta_ * dt * dt);
   const double c_c = gamma_ / (beta_ * dt);
+  const bool alpha = alpha_m_ != 0.0 || alpha_f_ != 0.0;
+  const double mass_weight = (1.0 - alpha_m_) / (1.0 - alpha_f_);
   to.time = from.time + dt;
 
   // Predictors and the linear right-hand side f + M (c_m u~) + C (c_c u~ - v~), in one pass
-  // when M is diagonal.
+  // when M is diagonal (c_m weighted for the alpha methods).
   const double displacement_factor = (0.5 - beta_) * dt * dt, velocity_factor = (1.0 - gamma_) * dt;
   predicted_displacement_.resize(n);
   predicted_velocity_.resize(n);
   rhs_.resize(n);
   if (const Vector* mass = system.lumped_mass()) {
-    predict(n, dt, displacement_factor, velocity_factor, c_m, from.displacement.data(),
+    predict(n, dt, displacement_factor, velocity_factor, mass_weight * c_m, from.displacement.data(),
             from.velocity.data(), from.acceleration.data(), mass->data(),
             predicted_displacement_.data(), predicted_velocity_.data(), rhs_.data());
   } else {
     predicted_displacement_ = from.displacement + dt * from.velocity + displacement_factor * from.acceleration;
     predicted_velocity_ = from.velocity + velocity_factor * from.acceleration;
-    work_ = c_m * predicted_displacement_;
+    work_ = mass_weight * c_m * predicted_displacement_;
     system.multiply_mass(work_, rhs_);
+  }
+  if (alpha) {
+    // History of the alpha methods: [a_f (f_n - C v_n - K u_n - B^T F_n) - a_m M a_n] / (1 - a_f).
+    history_ = Vector::Zero(n);
+    if (system.has_external_force()) {
+      system.external_force(from.time, work_);
+      history_ += alpha_f_ * work_;
+    }
+    system.multiply_stiffness(from.displacement, work_);
+    history_ -= alpha_f_ * work_;
+    if (system.has_damping()) {
+      system.multiply_damping(from.velocity, work_);
+      history_ -= alpha_f_ * work_;
+    }
+    if (from.link_force.size() > 0)
+      history_.noalias() -= alpha_f_ * (links.connectivity().transpose() * from.link_force);
+    system.multiply_mass(from.acceleration, work_);
+    history_ -= alpha_m_ * work_;
+    rhs_ += history_ / (1.0 - alpha_f_);
   }
   double external_norm = 0.0;
   if (system.has_external_force()) {

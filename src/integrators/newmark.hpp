@@ -16,6 +16,13 @@
 
 namespace pound {
 
+//
+// With alpha_m, alpha_f the same step is the generalised-alpha family (Chung & Hulbert 1993):
+// the equation holds at the intermediate instants, inertia at n+1-alpha_m, the rest (damping,
+// stiffness, link forces, loads) at n+1-alpha_f, with the forces interpolated between n and n+1:
+//   (1-a_m) M a_{n+1} + a_m M a_n + (1-a_f)(C v + K u + B^T F + ...)_{n+1} + a_f (...)_n = ...
+// Dividing by (1-a_f) leaves the structure above with c_m scaled by (1-a_m)/(1-a_f) and a history
+// term, so the condensed Newton on the link forces is unchanged. HHT-alpha is a_m = 0.
 class Newmark final : public Integrator {
  public:
   Newmark(double beta, double gamma, ConvergenceTest test = {});
@@ -23,6 +30,13 @@ class Newmark final : public Integrator {
   static Newmark average_acceleration(ConvergenceTest test = {});
   // Conditionally stable (dt < 0.551 T_min), third-order period error.
   static Newmark linear_acceleration(ConvergenceTest test = {});
+  // Hilber-Hughes-Taylor, alpha in [-1/3, 0]: gamma = 1/2 - alpha, beta = (1 - alpha)^2 / 4;
+  // damps the high modes, second order.
+  static Newmark hht(double alpha, ConvergenceTest test = {});
+  // Generalised-alpha with the spectral radius rho_inf in [0, 1] at infinite frequency:
+  // a_m = (2 rho - 1)/(rho + 1), a_f = rho/(rho + 1), gamma = 1/2 - a_m + a_f,
+  // beta = (1 - a_m + a_f)^2 / 4. rho_inf = 1: no damping; 0: the high modes die in one step.
+  static Newmark generalized_alpha(double rho_infinity, ConvergenceTest test = {});
 
   std::string name() const override;
   void initialize(SecondOrderSystem& system, State& state) override;
@@ -31,8 +45,12 @@ class Newmark final : public Integrator {
 
   double beta() const { return beta_; }
   double gamma() const { return gamma_; }
+  double alpha_m() const { return alpha_m_; }
+  double alpha_f() const { return alpha_f_; }
 
  private:
+  Newmark(double beta, double gamma, double alpha_m, double alpha_f, std::string name,
+          ConvergenceTest test);
   struct Factorization {
     std::unique_ptr<LinearSolver> solver;
     Matrix influence;  // Z = A^{-1} B^T (n x m)
@@ -42,6 +60,9 @@ class Newmark final : public Integrator {
 
   double beta_;
   double gamma_;
+  double alpha_m_ = 0.0;
+  double alpha_f_ = 0.0;
+  std::string name_;  // of the preset, when one was used
   ConvergenceTest test_;
   // Factors by dt, so step cuts reuse theirs. Tied to the system given to initialize(), so a
   // copy of the integrator starts without them.
@@ -56,6 +77,7 @@ class Newmark final : public Integrator {
   } factorizations_;
   // Work vectors, kept to avoid allocation inside the time loop.
   Vector predicted_displacement_, predicted_velocity_, rhs_, work_, external_, damping_force_;
+  Vector history_;
   Vector delta_linear_, delta_predicted_, rate_predicted_;
   Vector delta_, rate_, acceleration_, assumed_force_, law_force_, residual_;
   Matrix tangent_, jacobian_;

@@ -435,17 +435,27 @@ void read_monitors(JsonObject& object, ModelSpec& spec) {
 IntegratorSpec read_integrator(const JsonValue& value) {
   IntegratorSpec integrator;  // average acceleration
   if (value.json().is_string()) {
-    const std::string preset =
-        value.as_one_of({"newmark_average_acceleration", "newmark_linear_acceleration"});
+    const std::string preset = value.as_one_of(
+        {"newmark_average_acceleration", "newmark_linear_acceleration", "hht", "generalized_alpha"});
     if (preset == "newmark_linear_acceleration") integrator.beta = 1.0 / 6.0;
+    if (preset == "hht" || preset == "generalized_alpha") integrator.type = preset;
     return integrator;
   }
   if (!value.json().is_object())
     value.fail("expected an object or a preset name string, got " + value.kind());
   return read_object(value, [&integrator](JsonObject& object) {
-    integrator.type = object.one_of("type", {"newmark"});
-    integrator.beta = object.optional<double>("beta", integrator.beta, positive);
-    integrator.gamma = object.optional<double>("gamma", integrator.gamma, at_least(0.5));
+    integrator.type = object.one_of("type", {"newmark", "hht", "generalized_alpha"});
+    if (integrator.type == "newmark") {
+      integrator.beta = object.optional<double>("beta", integrator.beta, positive);
+      integrator.gamma = object.optional<double>("gamma", integrator.gamma, at_least(0.5));
+    } else if (integrator.type == "hht") {
+      integrator.alpha = object.optional<double>("alpha", integrator.alpha, at_least(-1.0 / 3.0));
+      if (integrator.alpha > 0.0) object.at("alpha").fail(fmt::format("must be <= 0, got {}", integrator.alpha));
+    } else {
+      integrator.rho_infinity = object.optional<double>("rho_infinity", integrator.rho_infinity, non_negative);
+      if (integrator.rho_infinity > 1.0)
+        object.at("rho_infinity").fail(fmt::format("must be <= 1, got {}", integrator.rho_infinity));
+    }
     return integrator;
   });
 }

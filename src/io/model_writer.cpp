@@ -382,8 +382,14 @@ Json analysis_json(const builder::AnalysisSpec& analysis) {
   Json json;
   Json integrator;  // always the object: a preset name reads back as its beta and gamma
   integrator["type"] = analysis.integrator.type;
-  integrator["beta"] = analysis.integrator.beta;
-  integrator["gamma"] = analysis.integrator.gamma;
+  if (analysis.integrator.type == "hht") {
+    integrator["alpha"] = analysis.integrator.alpha;
+  } else if (analysis.integrator.type == "generalized_alpha") {
+    integrator["rho_infinity"] = analysis.integrator.rho_infinity;
+  } else {
+    integrator["beta"] = analysis.integrator.beta;
+    integrator["gamma"] = analysis.integrator.gamma;
+  }
   json["integrator"] = std::move(integrator);
   json["time_step"] = analysis.time_step;
   // 0 stands for "the longest record's duration", which is said by leaving the field out.

@@ -160,8 +160,7 @@ struct RodPairSimulation::Impl {
     spec.analysis.time_step = time_step;
     spec.analysis.duration = first_contact + options.duration_ratio * exact_duration;
     spec.analysis.relative_tolerance = options.relative_tolerance;
-    spec.analysis.integrator.beta = options.beta;
-    spec.analysis.integrator.gamma = options.gamma;
+    spec.analysis.integrator = options.integrator;
     built = builder::build(spec);
     system = std::make_unique<assembly::StructuralSystem>(built.model);
     nodes = std::make_unique<RodPairNodes>(pair, built, system->dofs());

@@ -54,8 +54,7 @@ struct RodImpactOptions {
   std::optional<double> courant;
   double duration_ratio = 3.0;  // run to duration_ratio * T_exact after first contact
   double relative_tolerance = 1e-10;
-  double beta = 0.25;
-  double gamma = 0.5;
+  builder::IntegratorSpec integrator;  // average acceleration
   std::vector<double> profile_times;  // in units of T_exact after first contact
 };
 

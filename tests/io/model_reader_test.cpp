@@ -532,8 +532,16 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"unknown_integrator_preset", replaced("/analysis/integrator", R"("newmark")"),
                 "/analysis/integrator",
                 "expected one of 'newmark_average_acceleration', 'newmark_linear_acceleration'"},
-        BadCase{"unknown_integrator_type", replaced("/analysis/integrator/type", R"("hht")"),
-                "/analysis/integrator/type", "expected one of 'newmark', got 'hht'"},
+        BadCase{"unknown_integrator_type", replaced("/analysis/integrator/type", R"("wilson")"),
+                "/analysis/integrator/type",
+                "expected one of 'newmark', 'hht', 'generalized_alpha', got 'wilson'"},
+        BadCase{"hht_with_newmark_beta", replaced("/analysis/integrator/type", R"("hht")"),
+                "/analysis/integrator/beta", "unknown field"},
+        BadCase{"hht_alpha_positive", replaced("/analysis/integrator", R"({"type": "hht", "alpha": 0.1})"),
+                "/analysis/integrator/alpha", "must be <= 0"},
+        BadCase{"rho_infinity_above_one",
+                replaced("/analysis/integrator", R"({"type": "generalized_alpha", "rho_infinity": 1.5})"),
+                "/analysis/integrator/rho_infinity", "must be <= 1"},
         // Contact laws.
         // The law catalog: every law's parameters, ranges and combinations.
         BadCase{"kelvin_voigt_without_damping",
