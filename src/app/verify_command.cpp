@@ -59,7 +59,8 @@ int verify_command(const Arguments& arguments) {
       "automatic numbers)")(
       "eta", po::value(&eta)->default_value(eta), "extended_penalty: damping factor of alpha1")(
       "integrator", po::value(&integrator)->default_value("newmark_average_acceleration"),
-      "newmark_average_acceleration | newmark_linear_acceleration | hht | generalized_alpha")(
+      "newmark_average_acceleration | newmark_linear_acceleration | hht | generalized_alpha | "
+      "central_difference (explicit: refused above its stable step)")(
       "alpha", po::value(&hht_alpha)->default_value(hht_alpha), "hht: alpha in [-1/3, 0]")(
       "rho-inf", po::value(&rho_infinity)->default_value(rho_infinity),
       "generalized_alpha: spectral radius at infinite frequency, in [0, 1]")(
@@ -135,6 +136,8 @@ int verify_command(const Arguments& arguments) {
   run.relative_tolerance = tolerance;
   if (integrator == "newmark_linear_acceleration") {
     run.integrator.beta = 1.0 / 6.0;
+  } else if (integrator == "central_difference") {
+    run.integrator.type = integrator;
   } else if (integrator == "hht" || integrator == "generalized_alpha") {
     run.integrator.type = integrator;
     run.integrator.alpha = hht_alpha;

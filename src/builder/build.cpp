@@ -25,6 +25,7 @@
 #include "contact/restitution_calibration.hpp"
 #include "contact/restrainer.hpp"
 #include "core/errors.hpp"
+#include "integrators/central_difference.hpp"
 #include "integrators/newmark.hpp"
 
 namespace pound::builder {
@@ -215,10 +216,30 @@ std::unique_ptr<Integrator> make_integrator(const AnalysisSpec& analysis) {
   const ConvergenceTest test{analysis.relative_tolerance, analysis.absolute_tolerance,
                              analysis.max_iterations};
   const IntegratorSpec& integrator = analysis.integrator;
+  if (integrator.type == "central_difference") return std::make_unique<CentralDifference>();
   if (integrator.type == "hht") return std::make_unique<Newmark>(Newmark::hht(integrator.alpha, test));
   if (integrator.type == "generalized_alpha")
     return std::make_unique<Newmark>(Newmark::generalized_alpha(integrator.rho_infinity, test));
   return std::make_unique<Newmark>(integrator.beta, integrator.gamma, test);
+}
+
+void settle_time_step(AnalysisSpec& analysis, SecondOrderSystem& system, const std::string& source) {
+  if (analysis.integrator.type != "central_difference") return;
+  double limit = 0.0;
+  try {
+    limit = stable_time_step(system, true);
+  } catch (const std::domain_error& error) {
+    throw InputError(source, "/analysis/integrator", error.what());
+  }
+  if (analysis.time_step_auto) {
+    analysis.time_step = analysis.safety_factor * limit;
+  } else if (analysis.time_step > limit) {
+    throw InputError(source, "/analysis/time_step",
+                     fmt::format("{:.6g} is above the stable limit {:.6g} of central difference "
+                                 "(2 / omega_max with the links in contact); use \"auto\" or a "
+                                 "smaller step",
+                                 analysis.time_step, limit));
+  }
 }
 
 TransientSettings make_transient_settings(const AnalysisSpec& analysis) {

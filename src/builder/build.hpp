@@ -58,5 +58,8 @@ model::LawFactory make_law(const LawSpec& law, const std::string& source, const 
 
 std::unique_ptr<Integrator> make_integrator(const AnalysisSpec& analysis);
 TransientSettings make_transient_settings(const AnalysisSpec& analysis);
+// For central difference: sets an "auto" step from the stable limit (links in contact), or
+// refuses one above it with the limit in the message, before any step is taken.
+void settle_time_step(AnalysisSpec& analysis, SecondOrderSystem& system, const std::string& source);
 
 }  // namespace pound::builder

@@ -233,7 +233,8 @@ struct JointMonitorSpec {
 };
 
 // "newmark" (beta, gamma), "hht" (alpha in [-1/3, 0]) or "generalized_alpha" (rho_infinity in
-// [0, 1]); integrators/newmark.hpp.
+// [0, 1]), integrators/newmark.hpp; or "central_difference" (explicit, lumped mass),
+// integrators/central_difference.hpp.
 struct IntegratorSpec {
   std::string type = "newmark";
   double beta = 0.25;
@@ -245,6 +246,9 @@ struct IntegratorSpec {
 struct AnalysisSpec {
   IntegratorSpec integrator;
   double time_step = 0.0;  // > 0
+  // "time_step": "auto" (central difference): safety_factor times the stable limit.
+  bool time_step_auto = false;
+  double safety_factor = 0.8;
   double duration = 0.0;   // > 0; 0 in a file without it: the longest record's duration
   double relative_tolerance = 1e-10;
   double absolute_tolerance = 0.0;

@@ -435,16 +435,19 @@ void read_monitors(JsonObject& object, ModelSpec& spec) {
 IntegratorSpec read_integrator(const JsonValue& value) {
   IntegratorSpec integrator;  // average acceleration
   if (value.json().is_string()) {
-    const std::string preset = value.as_one_of(
-        {"newmark_average_acceleration", "newmark_linear_acceleration", "hht", "generalized_alpha"});
+    const std::string preset =
+        value.as_one_of({"newmark_average_acceleration", "newmark_linear_acceleration", "hht",
+                         "generalized_alpha", "central_difference"});
     if (preset == "newmark_linear_acceleration") integrator.beta = 1.0 / 6.0;
-    if (preset == "hht" || preset == "generalized_alpha") integrator.type = preset;
+    if (preset == "hht" || preset == "generalized_alpha" || preset == "central_difference")
+      integrator.type = preset;
     return integrator;
   }
   if (!value.json().is_object())
     value.fail("expected an object or a preset name string, got " + value.kind());
   return read_object(value, [&integrator](JsonObject& object) {
-    integrator.type = object.one_of("type", {"newmark", "hht", "generalized_alpha"});
+    integrator.type =
+        object.one_of("type", {"newmark", "hht", "generalized_alpha", "central_difference"});
     if (integrator.type == "newmark") {
       integrator.beta = object.optional<double>("beta", integrator.beta, positive);
       integrator.gamma = object.optional<double>("gamma", integrator.gamma, at_least(0.5));
@@ -535,7 +538,16 @@ AnalysisSpec read_analysis(JsonObject& object) {
   AnalysisSpec analysis;
   if (const std::optional<JsonValue> integrator = object.find("integrator"))
     analysis.integrator = read_integrator(*integrator);
-  analysis.time_step = object.required<double>("time_step", positive);
+  if (const JsonValue step = object.at("time_step"); step.json().is_string()) {
+    (void)step.as_one_of({"auto"});
+    if (analysis.integrator.type != "central_difference")
+      step.fail("\"auto\" is the stable step of central difference; implicit integrators need a number");
+    analysis.time_step_auto = true;
+    analysis.safety_factor = object.optional<double>("safety_factor", analysis.safety_factor, positive);
+    if (analysis.safety_factor > 1.0) object.at("safety_factor").fail("must be <= 1");
+  } else {
+    analysis.time_step = step.as<double>(positive);
+  }
   analysis.duration = object.optional<double>("duration", 0.0, positive);
   if (const std::optional<JsonValue> convergence = object.find("convergence")) {
     read_object(*convergence, [&analysis](JsonObject& settings) {

@@ -391,7 +391,12 @@ Json analysis_json(const builder::AnalysisSpec& analysis) {
     integrator["gamma"] = analysis.integrator.gamma;
   }
   json["integrator"] = std::move(integrator);
-  json["time_step"] = analysis.time_step;
+  if (analysis.time_step_auto) {
+    json["time_step"] = "auto";
+    json["safety_factor"] = analysis.safety_factor;
+  } else {
+    json["time_step"] = analysis.time_step;
+  }
   // 0 stands for "the longest record's duration", which is said by leaving the field out.
   set_unless_default(json, "duration", analysis.duration, 0.0);
   Json convergence;

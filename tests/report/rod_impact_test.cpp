@@ -7,6 +7,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "core/errors.hpp"
 #include "report/rod_impact_report.hpp"
 
 namespace pound::report {
@@ -142,6 +143,24 @@ TEST(RodImpact, AlphaMethodsDampTheGapSpringOscillation) {
     EXPECT_LE(std::abs(m.duration_error), 0.005) << label;
     EXPECT_LE(std::abs(m.separation_velocity_error), 0.01) << label;
   }
+}
+
+// Suzuki & Toi's own scheme: central difference with the extended penalty at a fraction of the
+// stable step. The gap spring at Courant 1 is refused (its contact raises omega_max).
+TEST(RodImpact, CentralDifferenceWithTheExtendedPenalty) {
+  RodImpactOptions options;
+  options.pair = rod_impact_case("kawashima", 1000, 1.0, "extended_penalty");
+  options.integrator.type = "central_difference";
+  options.courant = 0.5;
+  const RodImpactMetrics m = run_rod_impact(options).metrics;
+  print("central difference, extended penalty, Courant 0.5", m);
+  EXPECT_LT(m.force_l2_error, 0.05);
+  EXPECT_LE(std::abs(m.duration_error), 0.003);
+  EXPECT_LE(std::abs(m.separation_velocity_error), 0.005);
+  EXPECT_GE(m.min_force, 0.0);
+  options.pair = rod_impact_case("kawashima", 1000, 1.0, "gap_spring");
+  options.courant = 1.0;
+  EXPECT_THROW(run_rod_impact(options), InputError);
 }
 
 // Suzuki & Toi Figs. 7-8: a stiff alpha0 alone chatters; eta = 1 beats eta = 0 and eta = 10.

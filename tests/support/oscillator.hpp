@@ -11,10 +11,11 @@ class Oscillator final : public SecondOrderSystem {
   Oscillator(double mass, double damping, double stiffness, LinkSet links = LinkSet(1),
              std::function<double(double)> force = {})
       : mass_(mass), damping_(damping), stiffness_(stiffness), links_(std::move(links)),
-        force_(std::move(force)) {}
+        force_(std::move(force)), lumped_(Vector::Constant(1, mass)) {}
 
   Index size() const override { return 1; }
   void multiply_mass(const Vector& x, Vector& y) const override { y = mass_ * x; }
+  const Vector* lumped_mass() const override { return &lumped_; }
   bool has_damping() const override { return damping_ != 0.0; }
   void multiply_damping(const Vector& x, Vector& y) const override { y = damping_ * x; }
   void multiply_stiffness(const Vector& x, Vector& y) const override { y = stiffness_ * x; }
@@ -36,6 +37,7 @@ class Oscillator final : public SecondOrderSystem {
   double mass_, damping_, stiffness_;
   LinkSet links_;
   std::function<double(double)> force_;
+  Vector lumped_;
 };
 
 }  // namespace pound::testing

@@ -1,0 +1,203 @@
+#include "integrators/central_difference.hpp"
+
+#include <Eigen/LU>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace pound {
+namespace {
+
+const Vector& diagonal_mass(const SecondOrderSystem& system) {
+  const Vector* mass = system.lumped_mass();
+  if (!mass || !((mass->array() > 0.0).all()))
+    throw std::domain_error("central difference needs a lumped mass on every DOF");
+  return *mass;
+}
+
+// a = (M + B^T diag(m) B)^-1 r for diagonal M, by Woodbury over the rows with m != 0.
+void solve_with_link_mass(const Vector& inverse_mass, const LinkSet::SparseRowMatrix& b,
+                          const Vector& link_mass, const Vector& rhs, Vector& solution) {
+  solution = inverse_mass.cwiseProduct(rhs);
+  std::vector<Index> rows;
+  for (Index r = 0; r < link_mass.size(); ++r)
+    if (link_mass[r] != 0.0) rows.push_back(r);
+  if (rows.empty()) return;
+  const auto k = static_cast<Index>(rows.size());
+  Matrix active(k, b.cols());
+  for (Index i = 0; i < k; ++i) active.row(i) = b.row(rows[static_cast<std::size_t>(i)]);
+  Matrix small = active * inverse_mass.asDiagonal() * active.transpose();
+  for (Index i = 0; i < k; ++i) small(i, i) += 1.0 / link_mass[rows[static_cast<std::size_t>(i)]];
+  const Vector correction = small.partialPivLu().solve(active * solution);
+  solution.noalias() -= inverse_mass.asDiagonal() * (active.transpose() * correction);
+}
+
+}  // namespace
+
+void CentralDifference::initialize(SecondOrderSystem& system, State& state) {
+  const Index n = system.size();
+  inverse_mass_ = diagonal_mass(system).cwiseInverse();
+  LinkSet& links = system.links();
+  if (state.displacement.size() != n) state.displacement = Vector::Zero(n);
+  if (state.velocity.size() != n) state.velocity = Vector::Zero(n);
+  links.penetration(state.displacement, state.link_penetration);
+  links.project(state.velocity, rate_);
+  if (system.has_link_motion()) {
+    system.link_motion(state.time, offset_, offset_rate_, offset_acceleration_);
+    state.link_penetration += offset_;
+    rate_ += offset_rate_;
+  }
+  links.set_trial(state.link_penetration, rate_, Vector::Zero(links.size()), 0.0, 0.0, state.link_force, tangent_);
+  links.commit();
+  Vector rhs = Vector::Zero(n);
+  if (system.has_external_force()) system.external_force(state.time, rhs);
+  if (system.has_damping()) {
+    system.multiply_damping(state.velocity, work_);
+    rhs -= work_;
+  }
+  system.multiply_stiffness(state.displacement, work_);
+  rhs -= work_;
+  rhs.noalias() -= links.connectivity().transpose() * state.link_force;
+  state.acceleration = inverse_mass_.cwiseProduct(rhs);
+}
+
+StepResult CentralDifference::advance(SecondOrderSystem& system, const State& from, double dt,
+                                      State& to) {
+  LinkSet& links = system.links();
+  const Index n = system.size(), m = links.size();
+  if (inverse_mass_.size() != n) inverse_mass_ = diagonal_mass(system).cwiseInverse();
+  to.time = from.time + dt;
+  to.displacement = from.displacement + dt * from.velocity + (0.5 * dt * dt) * from.acceleration;
+  // Velocity-dependent forces (damping, dashpots) use v* = v_n + dt a_n, which differs from
+  // v_{n+1} by O(dt^2) and keeps the scheme second order (the half-step velocity would not).
+  const Vector predicted_velocity = from.velocity + dt * from.acceleration;
+
+  Vector rhs = Vector::Zero(n);
+  if (system.has_external_force()) system.external_force(to.time, rhs);
+  if (system.has_damping()) {
+    system.multiply_damping(predicted_velocity, work_);
+    rhs -= work_;
+  }
+  system.multiply_stiffness(to.displacement, work_);
+  rhs -= work_;
+
+  StepResult result;
+  to.acceleration = inverse_mass_.cwiseProduct(rhs);  // without the links
+  if (m > 0) {
+    // Link rates at the half step: the extended penalty's critical dashpot on its stiff relative
+    // mode is stable there at the Courant limit, not with the forward-predicted velocity.
+    links.penetration(to.displacement, to.link_penetration);
+    links.project(from.velocity + (0.5 * dt) * from.acceleration, rate_);
+    Vector free_acceleration;
+    links.project(to.acceleration, free_acceleration);
+    if (system.has_link_motion()) {
+      system.link_motion(to.time, offset_, offset_rate_, offset_acceleration_);
+      to.link_penetration += offset_;
+      rate_ += offset_rate_;
+      free_acceleration += offset_acceleration_;
+    }
+    // The link forces F change the accelerations by -M^-1 B^T F, so the laws see
+    // delta_ddot = free - G F (G = B M^-1 B^T). Solve F = F_law(delta, rate, free - G F): laws with
+    // no mass term need one evaluation; the extended penalty's alpha2 makes it a small system.
+    const LinkSet::SparseRowMatrix& b = links.connectivity();
+    const Matrix g = Matrix(b * inverse_mass_.asDiagonal() * b.transpose());
+    to.link_force = Vector::Zero(m);
+    Matrix stiffness_only;
+    for (int iteration = 0;; ++iteration) {
+      const Vector link_acceleration = free_acceleration - g * to.link_force;
+      links.set_trial(to.link_penetration, rate_, link_acceleration, 0.0, 0.0, force_, stiffness_only);
+      links.set_trial(to.link_penetration, rate_, link_acceleration, 0.0, 1.0, force_, tangent_);
+      residual_ = to.link_force - force_;
+      if (!residual_.allFinite()) {
+        result.failure = "link forces are not finite";
+        return result;
+      }
+      if (links.nodal_norm(residual_) <= 1e-12 * std::max(1e-300, links.nodal_norm(force_))) break;
+      if (iteration == 25) {
+        result.failure = "the link forces of the explicit step did not settle in 25 iterations";
+        return result;
+      }
+      Matrix jacobian = (tangent_ - stiffness_only) * g;  // dF_law / d(delta_ddot) G
+      jacobian.diagonal().array() += 1.0;
+      to.link_force -= jacobian.partialPivLu().solve(residual_);
+    }
+    to.acceleration.noalias() -= inverse_mass_.asDiagonal() * (b.transpose() * to.link_force);
+  } else {
+    to.link_penetration.resize(0);
+    to.link_force.resize(0);
+  }
+  to.velocity = from.velocity + (0.5 * dt) * (from.acceleration + to.acceleration);
+  if (!std::isfinite(to.velocity.sum()) || !std::isfinite(to.displacement.sum())) {
+    result.failure = "the state is not finite (is the time step above the stable limit?)";
+    return result;
+  }
+  result.converged = true;
+  return result;
+}
+
+double stable_time_step(SecondOrderSystem& system, bool contacts_active) {
+  const Index n = system.size();
+  const Vector inverse_mass = diagonal_mass(system).cwiseInverse();
+  LinkSet& links = system.links();
+  const Index m = links.size();
+  // Link tangents: at first touch (closing) when contacts count, else at rest.
+  Vector link_stiffness = Vector::Zero(m), link_mass = Vector::Zero(m), link_damping = Vector::Zero(m);
+  {
+    const Vector delta = contacts_active ? Vector::Constant(m, 1e-12) : Vector(-links.gaps());
+    const Vector rate = Vector::Constant(m, contacts_active ? 1e-12 : 0.0);
+    Vector force;
+    Matrix stiffness_only, with_mass, with_damping;
+    links.set_trial(delta, rate, Vector::Zero(m), 0.0, 0.0, force, stiffness_only);
+    links.set_trial(delta, rate, Vector::Zero(m), 0.0, 1.0, force, with_mass);
+    links.set_trial(delta, rate, Vector::Zero(m), 1.0, 0.0, force, with_damping);
+    links.revert();
+    link_stiffness = stiffness_only.diagonal();
+    link_mass = (with_mass - stiffness_only).diagonal();
+    link_damping = (with_damping - stiffness_only).diagonal();
+  }
+  // Power iteration on (M + B^T m_l B)^-1 (K + B^T k_l B), from a fixed start (reproducible).
+  Vector x = Vector::LinSpaced(n, 1.0, 2.0), y, kx, projected;
+  double lambda = 0.0;
+  for (int iteration = 0; iteration < 500; ++iteration) {
+    x.normalize();
+    system.multiply_stiffness(x, kx);
+    links.project(x, projected);
+    kx.noalias() += links.connectivity().transpose() * link_stiffness.cwiseProduct(projected);
+    solve_with_link_mass(inverse_mass, links.connectivity(), link_mass, kx, y);
+    const double next = x.dot(y);
+    const bool settled = iteration > 20 && std::abs(next - lambda) <= 1e-10 * std::abs(next);
+    lambda = next;
+    x = y;
+    if (settled) break;
+  }
+  const double omega = std::sqrt(std::max(lambda, 0.0));
+  if (!(omega > 0.0)) return std::numeric_limits<double>::infinity();
+  // Damping lowers the limit to (2 / w)(sqrt(1 + z^2) - z), with z the damping ratio of the
+  // highest mode: x^T C x / (2 w x^T M x), x its shape from the power iteration.
+  double zeta = 0.0;
+  if (system.has_damping()) {
+    x.normalize();
+    Vector cx, mx;
+    system.multiply_damping(x, cx);
+    system.multiply_mass(x, mx);
+    links.project(x, projected);
+    const double modal_mass = x.dot(mx) + projected.dot(link_mass.cwiseProduct(projected));
+    zeta = x.dot(cx) / (2.0 * omega * modal_mass);
+  }
+  double limit = 2.0 / omega * (std::sqrt(1.0 + zeta * zeta) - zeta);
+  // A link's own relative mode (its two end masses, m_rel = 1 / (B M^-1 B^T), against its
+  // stiffness, penalty mass and dashpot) can be the binding one when its dashpot is stiff: the
+  // extended penalty's critical alpha1 allows only 0.414 of 2 / omega there.
+  for (Index r = 0; r < m; ++r) {
+    if (!(link_stiffness[r] > 0.0)) continue;
+    const double relative_mass =
+        1.0 / links.connectivity().row(r).cwiseAbs2().dot(inverse_mass.transpose());
+    const double modal_mass = relative_mass + link_mass[r];
+    const double link_omega = std::sqrt(link_stiffness[r] / modal_mass);
+    const double link_zeta = link_damping[r] / (2.0 * std::sqrt(link_stiffness[r] * modal_mass));
+    limit = std::min(limit, 2.0 / link_omega * (std::sqrt(1.0 + link_zeta * link_zeta) - link_zeta));
+  }
+  return limit;
+}
+
+}  // namespace pound
