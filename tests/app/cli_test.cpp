@@ -319,3 +319,29 @@ TEST_F(Cli, VerifyTwoElementAndRestitutionPass) {
 }
 
 }  // namespace
+
+namespace {
+
+// Central difference above its stable step is refused before the run, naming the limit;
+// "auto" takes a safe fraction of it.
+TEST_F(Cli, ExplicitStepAboveTheStableLimitIsRefused) {
+  json model = json::parse(read_text(fs::path(POUND_SOURCE_DIR) / "models" / "rod_impact.json"));
+  model["analysis"]["integrator"] = "central_difference";
+  const fs::path file = path("explicit.json");
+  std::ofstream(file) << model.dump();
+  const fs::path out = path("out");
+  const Outcome refused = pound({"run", file.string(), "--out", out.string()});
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_TRUE(contains(refused.err, "/analysis/time_step")) << refused.err;
+  EXPECT_TRUE(contains(refused.err, "above the stable limit")) << refused.err;
+  EXPECT_FALSE(fs::exists(out));
+  model["analysis"]["time_step"] = "auto";
+  std::ofstream(file) << model.dump();
+  const Outcome ran = pound({"run", file.string(), "--out", out.string(), "--quiet"});
+  EXPECT_EQ(ran.exit_code, 0) << ran.err;
+  const json summary = json::parse(read_text(out / "summary.json"));
+  EXPECT_EQ(summary["integrator"], "central_difference");
+  EXPECT_LT(summary["verification"]["duration_error"].get<double>(), 0.05);
+}
+
+}  // namespace
