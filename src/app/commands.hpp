@@ -13,6 +13,7 @@ int run_command(const Arguments& arguments);
 int verify_command(const Arguments& arguments);
 int spectrum_command(const Arguments& arguments);
 int modes_command(const Arguments& arguments);
+int check_command(const Arguments& arguments);
 int expand_command(const Arguments& arguments);
 
 // Dispatches argv to a subcommand, turning errors into messages and exit codes.

@@ -18,6 +18,8 @@ usage: pound <command> [options]
 commands:
   run MODEL.json [--out DIR]   run a model file; writes summary.json and CSV time histories
   verify rod-impact [options]  the rod-impact benchmark against the exact wave solution
+  check MODEL.json             before a run: periods, stable steps, link stiffness and contact
+                               resolution, and a warning for every meaningless setting
   modes MODEL.json [--count N]  natural periods and modal masses of a model
   expand MODEL.json [--out FILE]  the model with its generators replaced by what they generate
   spectrum RECORD [options]    a ground motion's PGA and response spectrum (.AT2 or columns)
@@ -43,6 +45,7 @@ int main_entry(int argc, char** argv) {
     const std::map<std::string, Command> commands = {{"run", run_command},
                                                      {"verify", verify_command},
                                                      {"modes", modes_command},
+                                                     {"check", check_command},
                                                      {"expand", expand_command},
                                                      {"spectrum", spectrum_command}};
     if (auto found = commands.find(command); found != commands.end()) return found->second(rest);

@@ -345,3 +345,32 @@ TEST_F(Cli, ExplicitStepAboveTheStableLimitIsRefused) {
 }
 
 }  // namespace
+
+namespace {
+
+// `pound check` finds what the benchmarks show to be meaningless, and is quiet otherwise.
+TEST_F(Cli, CheckWarnsAboutMeaninglessSettingsOnly) {
+  for (const char* model : {"rod_impact.json", "three_span_bridge.json", "two_sdof_girders.json"}) {
+    const Outcome quiet = pound({"check", (fs::path(POUND_SOURCE_DIR) / "models" / model).string(), "--strict"});
+    EXPECT_EQ(quiet.exit_code, 0) << model << "\n" << quiet.out;
+    EXPECT_TRUE(contains(quiet.out, "no warnings")) << quiet.out;
+  }
+  // Kawashima's stiff link (k-ratio 1000) and a step of half the contact.
+  json model = json::parse(read_text(fs::path(POUND_SOURCE_DIR) / "models" / "two_sdof_girders.json"));
+  model["links"][0]["law"]["stiffness"] = 1e10;
+  model["analysis"]["time_step"] = 0.02;
+  model["excitations"][0]["record"] =
+      (fs::path(POUND_SOURCE_DIR) / "ground_motions" / "synthetic_firm_02.AT2").string();
+  const fs::path file = path("stiff.json");
+  std::ofstream(file) << model.dump();
+  const Outcome warned = pound({"check", file.string(), "--strict", "--json"});
+  EXPECT_EQ(warned.exit_code, 1) << warned.err;
+  const json findings = json::parse(warned.out);
+  std::string all;
+  for (const json& w : findings["warnings"]) all += w["warning"].get<std::string>() + "\n";
+  EXPECT_TRUE(contains(all, "separates and recontacts")) << all;
+  EXPECT_TRUE(contains(all, "meaningless")) << all;
+  EXPECT_GT(findings["explicit_stable_step_open"].get<double>(), findings["explicit_stable_step_contact"].get<double>());
+}
+
+}  // namespace
