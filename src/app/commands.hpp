@@ -14,6 +14,7 @@ int verify_command(const Arguments& arguments);
 int spectrum_command(const Arguments& arguments);
 int modes_command(const Arguments& arguments);
 int check_command(const Arguments& arguments);
+int study_command(const Arguments& arguments);
 int expand_command(const Arguments& arguments);
 
 // Dispatches argv to a subcommand, turning errors into messages and exit codes.

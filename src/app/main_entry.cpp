@@ -17,6 +17,7 @@ usage: pound <command> [options]
 
 commands:
   run MODEL.json [--out DIR]   run a model file; writes summary.json and CSV time histories
+  study rod-impact [options]   error against run time over integrators, laws, meshes, steps
   verify rod-impact [options]  the rod-impact benchmark against the exact wave solution
   check MODEL.json             before a run: periods, stable steps, link stiffness and contact
                                resolution, and a warning for every meaningless setting
@@ -46,6 +47,7 @@ int main_entry(int argc, char** argv) {
                                                      {"verify", verify_command},
                                                      {"modes", modes_command},
                                                      {"check", check_command},
+                                                     {"study", study_command},
                                                      {"expand", expand_command},
                                                      {"spectrum", spectrum_command}};
     if (auto found = commands.find(command); found != commands.end()) return found->second(rest);

@@ -37,6 +37,7 @@ void solve_with_link_mass(const Vector& inverse_mass, const LinkSet::SparseRowMa
 void CentralDifference::initialize(SecondOrderSystem& system, State& state) {
   const Index n = system.size();
   inverse_mass_ = diagonal_mass(system).cwiseInverse();
+  coupling_.resize(0, 0);  // G = B M^-1 B^T, built at the first step with links
   LinkSet& links = system.links();
   if (state.displacement.size() != n) state.displacement = Vector::Zero(n);
   if (state.velocity.size() != n) state.velocity = Vector::Zero(n);
@@ -100,7 +101,8 @@ StepResult CentralDifference::advance(SecondOrderSystem& system, const State& fr
     // delta_ddot = free - G F (G = B M^-1 B^T). Solve F = F_law(delta, rate, free - G F): laws with
     // no mass term need one evaluation; the extended penalty's alpha2 makes it a small system.
     const LinkSet::SparseRowMatrix& b = links.connectivity();
-    const Matrix g = Matrix(b * inverse_mass_.asDiagonal() * b.transpose());
+    if (coupling_.rows() != m) coupling_ = Matrix(b * inverse_mass_.asDiagonal() * b.transpose());
+    const Matrix& g = coupling_;
     to.link_force = Vector::Zero(m);
     Matrix stiffness_only;
     for (int iteration = 0;; ++iteration) {

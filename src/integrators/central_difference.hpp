@@ -23,6 +23,7 @@ class CentralDifference final : public Integrator {
  private:
   Vector rate_, offset_, offset_rate_, offset_acceleration_, force_, residual_, work_, inverse_mass_;
   Matrix tangent_;
+  Matrix coupling_;  // G = B M^-1 B^T, constant
 };
 
 // The largest stable step of central difference, 2/omega_max (reduced for damping at omega_max),

@@ -47,6 +47,17 @@ std::string to_csv(const Table& table) {
   return text;
 }
 
+std::string to_csv(const TextTable& table) {
+  auto line = [](const std::vector<std::string>& cells) {
+    std::string text;
+    for (std::size_t c = 0; c < cells.size(); ++c) text += (c ? "," : "") + cells[c];
+    return text + "\n";
+  };
+  std::string text = line(table.columns);
+  for (const auto& row : table.rows) text += line(row);
+  return text;
+}
+
 void write_csv_atomic(const std::string& path, const Table& table) {
   write_text_atomic(path, to_csv(table));
 }

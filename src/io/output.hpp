@@ -17,7 +17,14 @@ class OutputError : public std::runtime_error {
 
 using pound::Table;
 
+// A table of text cells (names and numbers already formatted), for results with categories.
+struct TextTable {
+  std::vector<std::string> columns;
+  std::vector<std::vector<std::string>> rows;
+};
+
 void write_text_atomic(const std::string& path, const std::string& text);
+std::string to_csv(const TextTable& table);
 void write_csv_atomic(const std::string& path, const Table& table);
 std::string to_csv(const Table& table);
 

@@ -1,0 +1,62 @@
+#include <fmt/format.h>
+
+#include <boost/program_options.hpp>
+#include <filesystem>
+#include <iostream>
+
+#include "app/command_line.hpp"
+#include "app/commands.hpp"
+#include "io/output.hpp"
+#include "report/error_study.hpp"
+
+namespace pound::app {
+namespace po = boost::program_options;
+
+namespace {
+constexpr const char* kStudyUsage = R"(usage: pound study rod-impact [--out DIR] [--repeats N] [--quick]
+
+Error against run time on the rod benchmark: integrators (Newmark average acceleration, HHT
+alpha = -0.1, generalised-alpha rho_inf = 0.5, explicit central difference) x contact laws (gap
+spring at k-ratio 1, extended penalty on automatic numbers) x elements per rod (50, 200, 1000) x
+Courant numbers dt C0 / h (1, 0.5, 0.25), on Kawashima's case and the fixed-end A2 = 3 A1 case.
+Every DESIGN.md 3.1 metric, the run time of the solve alone (median of the repeats), and the
+Pareto front per case (no other run has both less force error and less run time). Explicit steps
+above their stable limit are listed as refused. With --out: error_study.csv and error_study.json
+(plot with tools/plot_pareto.py).
+
+options)";
+}  // namespace
+
+int study_command(const Arguments& arguments) {
+  po::options_description options(kStudyUsage);
+  std::string benchmark, out;
+  int repeats = 3;
+  options.add_options()("help,h", "show this help")("out,o", po::value(&out), "write error_study.csv/.json here")(
+      "repeats", po::value(&repeats)->default_value(repeats), "timed solves per run (median)")(
+      "quick", "a reduced grid (n = 50, 200; Courant 1, 0.5)");
+  const auto parsed = parse_command_line(arguments, options, "benchmark", benchmark);
+  if (!parsed) return 0;
+  const po::variables_map& vm = *parsed;
+  if (benchmark != "rod-impact" || repeats < 1) {
+    std::cerr << "pound study: name the study (rod-impact) and --repeats >= 1 (see `pound study --help`)\n";
+    return 1;
+  }
+  report::ErrorStudyOptions study;
+  study.repeats = repeats;
+  if (vm.count("quick")) {
+    study.elements = {50, 200};
+    study.courants = {1.0, 0.5};
+  }
+  const auto results = report::error_study(study);
+  std::cout << report::format_error_study(results);
+  if (!out.empty()) {
+    io::create_output_folder(out);
+    io::write_text_atomic((std::filesystem::path(out) / "error_study.csv").string(),
+                          io::to_csv(report::error_study_table(results)));
+    io::write_text_atomic((std::filesystem::path(out) / "error_study.json").string(),
+                          report::to_document(results).dump() + "\n");
+  }
+  return 0;
+}
+
+}  // namespace pound::app
