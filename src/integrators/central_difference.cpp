@@ -121,7 +121,10 @@ StepResult CentralDifference::advance(SecondOrderSystem& system, const State& fr
       }
       Matrix jacobian = (tangent_ - stiffness_only) * g;  // dF_law / d(delta_ddot) G
       jacobian.diagonal().array() += 1.0;
-      to.link_force -= jacobian.partialPivLu().solve(residual_);
+      const Vector correction = jacobian.partialPivLu().solve(residual_);
+      to.link_force -= correction;
+      // At machine precision already (a very stiff penalty mass): stop as the implicit step does.
+      if (iteration > 0 && correction.norm() <= 1e-14 * std::max(to.link_force.norm(), 1e-300)) break;
     }
     to.acceleration.noalias() -= inverse_mass_.asDiagonal() * (b.transpose() * to.link_force);
   } else {

@@ -19,8 +19,10 @@ struct State {
 
 // Equilibrium iteration stops when the unbalanced force is small against the forces present:
 //   ||R|| <= relative_tolerance * max(||f_ext||, ||B^T F||) + absolute_tolerance,
-// optionally also asking the last change of link forces to be small. Kawashima (1980) used a
-// relative tolerance of 1e-3; the default is much tighter because the condensed iteration is cheap.
+// or, when a very stiff penalty keeps the residual at its round-off (stiffness x eps x
+// displacement), once the Newton correction itself is below 1e-14 of the link forces. Kawashima
+// (1980) used a relative tolerance of 1e-3; the default is much tighter because the condensed
+// iteration is cheap.
 struct ConvergenceTest {
   double relative_tolerance = 1e-10;
   double absolute_tolerance = 0.0;  // [F]

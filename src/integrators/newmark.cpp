@@ -231,8 +231,15 @@ StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double
       // d(residual)/dF = I + T G
       jacobian_.noalias() = tangent_ * f.coupling;
       jacobian_.diagonal().array() += 1.0;
-      assumed_force_ -= jacobian_.partialPivLu().solve(residual_);
+      const Vector correction = jacobian_.partialPivLu().solve(residual_);
+      assumed_force_ -= correction;
       ++result.iterations;
+      // Converged to machine precision: with a very stiff penalty the residual cannot fall below
+      // its round-off (stiffness x eps x displacement) while the correction already has.
+      if (iteration > 0 && correction.norm() <= 1e-14 * std::max(assumed_force_.norm(), 1e-300)) {
+        delta_.noalias() = delta_linear_ - f.coupling * assumed_force_;
+        break;
+      }
     }
     for (Index k = 0; k < m; ++k)
       if (assumed_force_[k] != 0.0) to.displacement -= assumed_force_[k] * f.influence.col(k);

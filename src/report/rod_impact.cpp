@@ -255,6 +255,17 @@ RodImpactResult run_rod_impact(const RodImpactOptions& options) {
   result.metrics.run_time_s = run_time;
   result.metrics.steps = stats.steps;
   result.metrics.newton_iterations = stats.newton_iterations;
+  {
+    const assembly::StructuralSystem& system = *simulation.system;
+    const Vector initial_velocity = system.initial_velocity(simulation.built.model);
+    Vector mv, ku;
+    system.multiply_mass(initial_velocity, mv);
+    const double initial = 0.5 * initial_velocity.dot(mv);
+    system.multiply_mass(final_state.velocity, mv);
+    system.multiply_stiffness(final_state.displacement, ku);
+    const double final_energy = 0.5 * final_state.velocity.dot(mv) + 0.5 * final_state.displacement.dot(ku);
+    result.metrics.energy_ratio = initial > 0.0 ? final_energy / initial : 1.0;
+  }
   const ExactRodImpact exact = exact_solution(options.pair, final_state.time * (1.0 + 1e-9));
   for (std::size_t p = 0; p < snapshots.size(); ++p)
     if (snapshots[p].displacement.size() > 0)

@@ -32,6 +32,9 @@ struct RodImpactMetrics {
   int exact_contact_episodes = 0;
   double separation_velocity = 0.0;        // v_cm(right) - v_cm(left) at the end
   double exact_separation_velocity = 0.0;
+  // Kinetic + strain energy of the rods at the end over the initial kinetic energy (1 for an
+  // exact elastic collision; above 1 means the integration made energy).
+  double energy_ratio = 1.0;
 };
 
 // Velocity and stress along both rods at one instant, FE against exact (Kawashima Fig. 6).

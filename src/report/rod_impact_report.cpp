@@ -49,7 +49,8 @@ io::Document to_document(const RodImpactMetrics& m) {
       .set("contact_episodes", m.contact_episodes)
       .set("exact_contact_episodes", m.exact_contact_episodes)
       .set("separation_velocity", m.separation_velocity)
-      .set("exact_separation_velocity", m.exact_separation_velocity);
+      .set("exact_separation_velocity", m.exact_separation_velocity)
+      .set("energy_ratio", m.energy_ratio);
   return doc;
 }
 
