@@ -69,18 +69,21 @@ StepResult CentralDifference::advance(SecondOrderSystem& system, const State& fr
   if (inverse_mass_.size() != n) inverse_mass_ = diagonal_mass(system).cwiseInverse();
   to.time = from.time + dt;
   to.displacement = from.displacement + dt * from.velocity + (0.5 * dt * dt) * from.acceleration;
-  // Velocity-dependent forces (damping, dashpots) use v* = v_n + dt a_n, which differs from
-  // v_{n+1} by O(dt^2) and keeps the scheme second order (the half-step velocity would not).
-  const Vector predicted_velocity = from.velocity + dt * from.acceleration;
 
-  Vector rhs = Vector::Zero(n);
-  if (system.has_external_force()) system.external_force(to.time, rhs);
-  if (system.has_damping()) {
-    system.multiply_damping(predicted_velocity, work_);
-    rhs -= work_;
+  // rhs = f - C v* - K u, with v* = v_n + dt a_n for damping: it differs from v_{n+1} by O(dt^2)
+  // and keeps the scheme second order (the half-step velocity would not).
+  system.multiply_stiffness(to.displacement, rhs_);
+  rhs_ = -rhs_;
+  if (system.has_external_force()) {
+    system.external_force(to.time, work_);
+    rhs_ += work_;
   }
-  system.multiply_stiffness(to.displacement, work_);
-  rhs -= work_;
+  if (system.has_damping()) {
+    predicted_velocity_ = from.velocity + dt * from.acceleration;
+    system.multiply_damping(predicted_velocity_, work_);
+    rhs_ -= work_;
+  }
+  const Vector& rhs = rhs_;
 
   StepResult result;
   to.acceleration = inverse_mass_.cwiseProduct(rhs);  // without the links
@@ -88,7 +91,8 @@ StepResult CentralDifference::advance(SecondOrderSystem& system, const State& fr
     // Link rates at the half step: the extended penalty's critical dashpot on its stiff relative
     // mode is stable there at the Courant limit, not with the forward-predicted velocity.
     links.penetration(to.displacement, to.link_penetration);
-    links.project(from.velocity + (0.5 * dt) * from.acceleration, rate_);
+    half_step_velocity_ = from.velocity + (0.5 * dt) * from.acceleration;
+    links.project(half_step_velocity_, rate_);
     Vector free_acceleration;
     links.project(to.acceleration, free_acceleration);
     if (system.has_link_motion()) {
@@ -109,6 +113,11 @@ StepResult CentralDifference::advance(SecondOrderSystem& system, const State& fr
       const Vector link_acceleration = free_acceleration - g * to.link_force;
       links.set_trial(to.link_penetration, rate_, link_acceleration, 0.0, 0.0, force_, stiffness_only);
       links.set_trial(to.link_penetration, rate_, link_acceleration, 0.0, 1.0, force_, tangent_);
+      // Without a mass term the law's force does not depend on F: it is the answer.
+      if ((tangent_ - stiffness_only).cwiseAbs().maxCoeff() == 0.0) {
+        to.link_force = force_;
+        break;
+      }
       residual_ = to.link_force - force_;
       if (!residual_.allFinite()) {
         result.failure = "link forces are not finite";

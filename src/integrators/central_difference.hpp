@@ -22,6 +22,7 @@ class CentralDifference final : public Integrator {
 
  private:
   Vector rate_, offset_, offset_rate_, offset_acceleration_, force_, residual_, work_, inverse_mass_;
+  Vector rhs_, predicted_velocity_, half_step_velocity_;
   Matrix tangent_;
   Matrix coupling_;  // G = B M^-1 B^T, constant
 };
