@@ -329,3 +329,53 @@ TEST(BuildLaws, ExtendedPenaltyBuildsItsNumbersFromTheModel) {
 
 }  // namespace
 }  // namespace pound::builder
+
+namespace pound::builder {
+namespace {
+
+// Multi-support excitation names supports; anything else is refused with its path.
+TEST(BuildExcitations, MovingSupportsMustBeSupports) {
+  const std::string base = R"({
+    "nodes": [{"id": "g", "x": 0}, {"id": "m", "x": 1}],
+    "materials": [{"id": "k", "youngs_modulus": 100, "density": 1}],
+    "elements": [{"id": "e", "type": "truss", "nodes": ["g", "m"], "material": "k", "area": 1}],
+    "supports": [{"node": "g", "fix": ["x"]}],
+    "excitations": [{"record": "r.AT2", "supports": ["SUPPORT"]}],
+    "analysis": {"time_step": 0.01}})";
+  model::GroundMotion motion{"r", 0.01, {0.0, 1.0, 0.0}};
+  auto error_for = [&](const std::string& support) -> std::optional<InputError> {
+    std::string text = base;
+    text.replace(text.find("SUPPORT"), 7, support);
+    try {
+      (void)build(io::parse_model(text, "m.json"), {motion});
+    } catch (const InputError& error) {
+      return error;
+    }
+    return std::nullopt;
+  };
+  EXPECT_FALSE(error_for("g").has_value());
+  const auto missing = error_for("nowhere");
+  ASSERT_TRUE(missing.has_value());
+  EXPECT_EQ(missing->where(), "/excitations/0/supports/0");
+  EXPECT_NE(missing->reason().find("does not exist"), std::string::npos);
+  const auto free_node = error_for("m");
+  ASSERT_TRUE(free_node.has_value());
+  EXPECT_EQ(free_node->where(), "/excitations/0/supports/0");
+  EXPECT_NE(free_node->reason().find("not a support"), std::string::npos) << free_node->what();
+}
+
+TEST(BuildExcitations, AWavePassageNeedsTheSupportsItReaches) {
+  try {
+    (void)io::parse_model(R"({"nodes": [{"id": "g", "x": 0}],
+      "excitations": [{"record": "r.AT2", "wave_passage": {"apparent_velocity": 300}}],
+      "analysis": {"time_step": 0.01}})",
+                          "m.json");
+    FAIL() << "accepted";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.where(), "/excitations/0/wave_passage");
+    EXPECT_NE(error.reason().find("needs the 'supports'"), std::string::npos) << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace pound::builder
