@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "support/process.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -40,13 +42,6 @@ constexpr const char* kModel = R"({
   "analysis": {"time_step": 0.001, "duration": 0.1}
 })";
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 std::vector<std::string> read_lines(const fs::path& path) {
   std::ifstream in(path);
   std::vector<std::string> lines;
@@ -57,56 +52,11 @@ std::vector<std::string> read_lines(const fs::path& path) {
 // First comma-separated field of a CSV data line, as a number.
 double first_field(const std::string& line) { return std::stod(line.substr(0, line.find(','))); }
 
-std::string shell_quoted(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) {
-    if (c == '\'')
-      quoted.append("'\\''");
-    else
-      quoted.push_back(c);
-  }
-  quoted.push_back('\'');
-  return quoted;
-}
+using pound::testing::Outcome;
+using pound::testing::read_text;
 
-struct Outcome {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-class Cli : public ::testing::Test {
+class Cli : public pound::testing::PoundProcess {
  protected:
-  void SetUp() override {
-    const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    folder_ = fs::temp_directory_path() / fmt::format("pound_cli_{}_{}", name, ::getpid());
-    fs::remove_all(folder_);
-    ASSERT_TRUE(fs::create_directories(folder_)) << folder_;
-  }
-
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(folder_, ignored);
-  }
-
-  fs::path path(const std::string& name) const { return folder_ / name; }
-
-  // Runs `pound <arguments>` with stdout and stderr captured.
-  Outcome pound(const std::vector<std::string>& arguments) const {
-    std::string command = shell_quoted(POUND_BINARY);
-    for (const std::string& argument : arguments)
-      command.append(" ").append(shell_quoted(argument));
-    const fs::path out = path("stdout.txt"), err = path("stderr.txt");
-    command.append(
-        fmt::format(" >{} 2>{}", shell_quoted(out.string()), shell_quoted(err.string())));
-    const int status = std::system(command.c_str());
-    Outcome outcome;
-    outcome.exit_code = status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    outcome.out = read_text(out);
-    outcome.err = read_text(err);
-    return outcome;
-  }
-
   // Writes kModel with `json_patch` applied; returns the file's path.
   std::string write_model(const std::string& name, const std::string& json_patch) const {
     const fs::path file = path(name);
@@ -124,8 +74,6 @@ class Cli : public ::testing::Test {
     std::cout << "stderr: " << outcome.err;
     return outcome;
   }
-
-  fs::path folder_;
 };
 
 bool contains(const std::string& text, const std::string& part) {
@@ -295,7 +243,8 @@ namespace {
 // Every bundled example runs to completion and writes its summary.
 TEST_F(Cli, EveryBundledModelRuns) {
   int models = 0;
-  for (const fs::directory_entry& entry : fs::directory_iterator(fs::path(POUND_SOURCE_DIR) / "models")) {
+  for (const fs::directory_entry& entry :
+       fs::directory_iterator(fs::path(POUND_SOURCE_DIR) / "models")) {
     if (entry.path().extension() != ".json") continue;
     ++models;
     const fs::path out = path(entry.path().stem().string());
@@ -351,12 +300,14 @@ namespace {
 // `pound check` finds what the benchmarks show to be meaningless, and is quiet otherwise.
 TEST_F(Cli, CheckWarnsAboutMeaninglessSettingsOnly) {
   for (const char* model : {"rod_impact.json", "three_span_bridge.json", "two_sdof_girders.json"}) {
-    const Outcome quiet = pound({"check", (fs::path(POUND_SOURCE_DIR) / "models" / model).string(), "--strict"});
+    const Outcome quiet =
+        pound({"check", (fs::path(POUND_SOURCE_DIR) / "models" / model).string(), "--strict"});
     EXPECT_EQ(quiet.exit_code, 0) << model << "\n" << quiet.out;
     EXPECT_TRUE(contains(quiet.out, "no warnings")) << quiet.out;
   }
   // Kawashima's stiff link (k-ratio 1000) and a step of half the contact.
-  json model = json::parse(read_text(fs::path(POUND_SOURCE_DIR) / "models" / "two_sdof_girders.json"));
+  json model =
+      json::parse(read_text(fs::path(POUND_SOURCE_DIR) / "models" / "two_sdof_girders.json"));
   model["links"][0]["law"]["stiffness"] = 1e10;
   model["analysis"]["time_step"] = 0.02;
   model["excitations"][0]["record"] =
@@ -370,7 +321,8 @@ TEST_F(Cli, CheckWarnsAboutMeaninglessSettingsOnly) {
   for (const json& w : findings["warnings"]) all += w["warning"].get<std::string>() + "\n";
   EXPECT_TRUE(contains(all, "separates and recontacts")) << all;
   EXPECT_TRUE(contains(all, "meaningless")) << all;
-  EXPECT_GT(findings["explicit_stable_step_open"].get<double>(), findings["explicit_stable_step_contact"].get<double>());
+  EXPECT_GT(findings["explicit_stable_step_open"].get<double>(),
+            findings["explicit_stable_step_contact"].get<double>());
 }
 
 }  // namespace

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "support/process.hpp"
 
 namespace pound::io {
 namespace {
@@ -33,12 +34,7 @@ const std::string kShipped = POUND_SOURCE_DIR "/ground_motions/";
 const std::string kNgaWest2 = kShared + "ImperialValley1940_ElCentroArray9_180_NGAW2.AT2";
 const std::string kKobeColumns = kShared + "Kobe1995_JMA_NS-EW_cms2_dt0.005.txt";
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using pound::testing::read_text;
 
 RecordFormat at2() {
   RecordFormat format;
@@ -210,25 +206,13 @@ TEST(GroundMotionReader, ShippedSyntheticRecordsHitTheirPeakAndEndAtRest) {
 
 // ---- record quirks that must read correctly --------------------------------------------------
 
-class GroundMotionReaderFiles : public ::testing::Test {
+class GroundMotionReaderFiles : public pound::testing::PoundProcess {
  protected:
-  void SetUp() override {
-    std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    std::replace(name.begin(), name.end(), '/', '_');  // parameterised tests: "Test/case"
-    folder_ = fs::temp_directory_path() / fmt::format("pound_motion_{}_{}", name, ::getpid());
-    fs::remove_all(folder_);
-    ASSERT_TRUE(fs::create_directories(folder_));
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(folder_, ignored);
-  }
   std::string write(const std::string& name, const std::string& text) const {
     const fs::path file = folder_ / name;
     std::ofstream(file, std::ios::binary) << text;
     return file.string();
   }
-  fs::path folder_;
 };
 
 std::vector<double> values_of(const model::GroundMotion& motion) { return motion.acceleration; }
@@ -428,32 +412,19 @@ TEST_F(GroundMotionReaderFiles, MissingFileAndFolderAreInputErrors) {
 
 // ---- pound spectrum ----------------------------------------------------------------------------
 
-struct Outcome {
-  int exit_code = -1;
-  std::string out, err;
-};
-
-std::string shell_quoted(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
+using pound::testing::Outcome;
 
 class SpectrumCommand : public GroundMotionReaderFiles {
  protected:
-  Outcome pound(const std::vector<std::string>& arguments) const {
-    std::string command = shell_quoted(POUND_BINARY) + " spectrum";
-    for (const std::string& argument : arguments) command += " " + shell_quoted(argument);
-    const fs::path out = folder_ / "stdout.txt", err = folder_ / "stderr.txt";
-    command += " >" + shell_quoted(out.string()) + " 2>" + shell_quoted(err.string());
-    const int status = std::system(command.c_str());
-    return {status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(out.string()),
-            read_text(err.string())};
+  // Runs `pound spectrum <arguments>`.
+  Outcome spectrum(std::vector<std::string> arguments) const {
+    arguments.insert(arguments.begin(), "spectrum");
+    return pound(arguments);
   }
 };
 
 TEST_F(SpectrumCommand, JsonReportsTheRecordAndItsSpectrum) {
-  const Outcome outcome = pound({kNgaWest2, "--json"});
+  const Outcome outcome = spectrum({kNgaWest2, "--json"});
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   const nlohmann::json result = nlohmann::json::parse(outcome.out);
   EXPECT_EQ(result["npts"], 5372);
@@ -471,8 +442,8 @@ TEST_F(SpectrumCommand, JsonReportsTheRecordAndItsSpectrum) {
 
 TEST_F(SpectrumCommand, ColumnsFileAndCsv) {
   const fs::path csv = folder_ / "spectrum.csv";
-  const Outcome outcome = pound({kKobeColumns, "--column", "2", "--units", "cm/s2", "--periods",
-                                 "0,0.5,1", "--csv", csv.string()});
+  const Outcome outcome = spectrum({kKobeColumns, "--column", "2", "--units", "cm/s2", "--periods",
+                                    "0,0.5,1", "--csv", csv.string()});
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   EXPECT_NE(outcome.out.find("PGA        0.631"), std::string::npos) << outcome.out;
   const std::vector<std::string> lines = split_lines(read_text(csv.string()));
@@ -482,14 +453,14 @@ TEST_F(SpectrumCommand, ColumnsFileAndCsv) {
 
 TEST_F(SpectrumCommand, MissingFileIsExitCode2) {
   const std::string missing = (folder_ / "missing.AT2").string();
-  const Outcome outcome = pound({missing});
+  const Outcome outcome = spectrum({missing});
   EXPECT_EQ(outcome.exit_code, 2);
   EXPECT_NE(outcome.err.find(missing), std::string::npos) << outcome.err;
 }
 
 TEST_F(SpectrumCommand, BadRecordIsExitCode2WithItsLine) {
   const std::string path = write("bad.AT2", with_line(kNgaWest2, 4, "NPTS= , DT= .01"));
-  const Outcome outcome = pound({path});
+  const Outcome outcome = spectrum({path});
   EXPECT_EQ(outcome.exit_code, 2);
   EXPECT_NE(outcome.err.find(path + ": line 4: expected"), std::string::npos) << outcome.err;
 }
@@ -499,7 +470,7 @@ TEST_F(SpectrumCommand, BadOptionsAreUsageErrors) {
        {std::vector<std::string>{kNgaWest2, "--units", "furlongs"},
         std::vector<std::string>{kNgaWest2, "--periods", "0.1,x"},
         std::vector<std::string>{kNgaWest2, "--damping", "1.5"}, std::vector<std::string>{}}) {
-    const Outcome outcome = pound(arguments);
+    const Outcome outcome = spectrum(arguments);
     EXPECT_EQ(outcome.exit_code, 1) << outcome.err;
     std::cout << "stderr: " << outcome.err;
   }

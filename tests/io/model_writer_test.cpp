@@ -20,6 +20,7 @@
 
 #include "builder/generators.hpp"
 #include "io/model_reader.hpp"
+#include "support/process.hpp"
 
 namespace pound::io {
 namespace {
@@ -257,11 +258,9 @@ TEST(ModelWriter, ReadsBackTheSameValues) {
 }
 
 TEST(ModelWriter, WritesTheOtherFormsOfDampingAndDuration) {
-  expect_written_as_given(patched(
-      kRichModel, R"([{"op": "replace", "path": "/damping",
+  expect_written_as_given(patched(kRichModel, R"([{"op": "replace", "path": "/damping",
                        "value": {"type": "rayleigh", "ratio": 0.02, "modes": [1, 3]}}])"));
-  expect_written_as_given(patched(
-      kRichModel, R"([{"op": "replace", "path": "/damping",
+  expect_written_as_given(patched(kRichModel, R"([{"op": "replace", "path": "/damping",
                        "value": {"type": "rayleigh", "mass_coefficient": 0.1,
                                  "stiffness_coefficient": 0.002}}])"));
   // Without a duration the longest record's is taken: it stays left out.
@@ -284,8 +283,8 @@ TEST(ModelWriter, KeepsNoRecordersApartFromDefaultRecorders) {
 }
 
 TEST(ModelWriter, WritesAnIntegratorPresetAsItsParameters) {
-  const builder::ModelSpec spec = round_trip(parse(patched(
-      kRichModel, R"([{"op": "replace", "path": "/analysis/integrator",
+  const builder::ModelSpec spec =
+      round_trip(parse(patched(kRichModel, R"([{"op": "replace", "path": "/analysis/integrator",
                        "value": "newmark_linear_acceleration"}])")));
   EXPECT_EQ(spec.analysis.integrator.beta, 1.0 / 6.0);  // bit for bit
   EXPECT_EQ(spec.analysis.integrator.gamma, 0.5);
@@ -334,44 +333,16 @@ TEST(ModelWriter, BundledModelsRoundTrip) {
 
 // ---- `pound expand` as a user runs it ----
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using pound::testing::read_text;
 
-std::string shell_quoted(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-class ModelWriterCli : public ::testing::Test {
+class ModelWriterCli : public pound::testing::PoundProcess {
  protected:
-  void SetUp() override {
-    const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    folder_ = fs::temp_directory_path() / fmt::format("pound_expand_{}_{}", name, ::getpid());
-    fs::remove_all(folder_);
-    ASSERT_TRUE(fs::create_directories(folder_)) << folder_;
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(folder_, ignored);
-  }
-
-  fs::path path(const std::string& name) const { return folder_ / name; }
-
   // Runs `pound <arguments>`; returns the exit code, stdout in `out_`, stderr in `err_`.
   int pound(const std::vector<std::string>& arguments) {
-    std::string command = shell_quoted(POUND_BINARY);
-    for (const std::string& argument : arguments) command += " " + shell_quoted(argument);
-    command += fmt::format(" >{} 2>{}", shell_quoted(path("stdout.txt").string()),
-                           shell_quoted(path("stderr.txt").string()));
-    const int status = std::system(command.c_str());
-    out_ = read_text(path("stdout.txt"));
-    err_ = read_text(path("stderr.txt"));
-    return status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    const pound::testing::Outcome outcome = PoundProcess::pound(arguments);
+    out_ = outcome.out;
+    err_ = outcome.err;
+    return outcome.exit_code;
   }
 
   // `pound run` on a model: its summary.json and the folder its histories are in.
@@ -380,7 +351,6 @@ class ModelWriterCli : public ::testing::Test {
     return json::parse(read_text(path(out_name) / "summary.json"));
   }
 
-  fs::path folder_;
   std::string out_, err_;
 };
 
@@ -444,8 +414,7 @@ TEST_F(ModelWriterCli, ExpandedModelFindsItsRecordsFromAnotherFolder) {
 
   const fs::path expanded = path("elsewhere") / "expanded.json";
   fs::create_directories(expanded.parent_path());
-  ASSERT_EQ(pound({"expand", (path("in") / "model.json").string(), "--out", expanded.string()}),
-            0)
+  ASSERT_EQ(pound({"expand", (path("in") / "model.json").string(), "--out", expanded.string()}), 0)
       << err_;
   EXPECT_EQ(json::parse(read_text(expanded))["excitations"][0]["record"], "../in/motion.txt");
   const json before = run((path("in") / "model.json").string(), "before");
