@@ -2,6 +2,7 @@
 
 #include <boost/program_options.hpp>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 
@@ -55,10 +56,12 @@ std::vector<std::unique_ptr<results::Recorder>> make_recorders(const builder::Bu
       for (Index node : spec.items) {
         ids.push_back(built.model.nodes[static_cast<std::size_t>(node)].id);
         std::vector<Index> per_direction;
-        for (int d = 0; d < dofs.dofs_per_node(); ++d) per_direction.push_back(dofs.equation(node, d));
+        for (int d = 0; d < dofs.dofs_per_node(); ++d)
+          per_direction.push_back(dofs.equation(node, d));
         equations.push_back(std::move(per_direction));
       }
-      recorders.push_back(std::make_unique<results::NodeRecorder>(spec.file, std::move(equations), ids));
+      recorders.push_back(
+          std::make_unique<results::NodeRecorder>(spec.file, std::move(equations), ids));
     }
   }
   return recorders;
@@ -74,7 +77,8 @@ io::Document link_document(const model::Link& link, const results::LinkSummary& 
       .set("peak_opening", s.peak_opening)
       .set("impulse", s.impulse)
       .set("work", s.work);
-  if (s.first_contact >= 0.0) doc.set("first_contact", s.first_contact).set("last_contact", s.last_contact);
+  if (s.first_contact >= 0.0)
+    doc.set("first_contact", s.first_contact).set("last_contact", s.last_contact);
   return doc;
 }
 
@@ -84,13 +88,16 @@ int run_command(const Arguments& arguments) {
   po::options_description options(kRunUsage);
   std::string model_path, out, motion;
   long max_steps = 0;
-  options.add_options()("help,h", "show this help")(
-      "out,o", po::value(&out), "output folder (default out/<model name>)")(
+  double time_limit = 0.0;
+  options.add_options()("help,h", "show this help")("out,o", po::value(&out),
+                                                    "output folder (default out/<model name>)")(
       "motion", po::value(&motion),
       "ground-motion record (.AT2, or columns) replacing the model's first excitation, or "
       "exciting it along x in g when it has none")(
       "max-steps", po::value(&max_steps), "stop with an error after this many steps (0: no limit)")(
-      "quiet,q", "print nothing but errors");
+      "time-limit", po::value(&time_limit),
+      "stop with an error after this many seconds of solving (0: no limit); the histories so far "
+      "are kept")("quiet,q", "print nothing but errors");
   const auto parsed = parse_command_line(arguments, options, "model", model_path);
   if (!parsed) return 0;
   const po::variables_map& vm = *parsed;
@@ -102,14 +109,21 @@ int run_command(const Arguments& arguments) {
     std::cerr << "pound run: --max-steps must be >= 0\n";
     return 1;
   }
+  if (!(time_limit >= 0.0) || !std::isfinite(time_limit)) {
+    std::cerr << "pound run: --time-limit must be a number of seconds >= 0\n";
+    return 1;
+  }
   const bool quiet = vm.count("quiet") > 0;
-  if (out.empty()) out = (std::filesystem::path("out") / std::filesystem::path(model_path).stem()).string();
+  if (out.empty())
+    out = (std::filesystem::path("out") / std::filesystem::path(model_path).stem()).string();
 
   // Everything that can be wrong with the input is found before any output exists.
-  LoadedModel loaded = load_model(model_path, motion.empty() ? std::nullopt : std::optional(motion));
+  LoadedModel loaded =
+      load_model(model_path, motion.empty() ? std::nullopt : std::optional(motion));
   const builder::ModelSpec& spec = loaded.spec;
   builder::BuiltModel& built = loaded.built;
   if (max_steps > 0) built.analysis.max_steps = max_steps;
+  built.analysis.time_limit = time_limit;
   std::unique_ptr<assembly::StructuralSystem> system;
   try {
     system = std::make_unique<assembly::StructuralSystem>(built.model);
@@ -118,7 +132,8 @@ int run_command(const Arguments& arguments) {
   }
   builder::settle_time_step(built.analysis, *system, model_path);
   auto integrator = builder::make_integrator(built.analysis);
-  TransientAnalysis analysis(*system, *integrator, builder::make_transient_settings(built.analysis));
+  TransientAnalysis analysis(*system, *integrator,
+                             builder::make_transient_settings(built.analysis));
   auto recorders = make_recorders(built, system->dofs(), system->links());
   std::vector<Index> normal_rows;
   for (Index k = 0; k < system->links().count(); ++k) normal_rows.push_back(system->links().row(k));
@@ -155,7 +170,8 @@ int run_command(const Arguments& arguments) {
     failure_time = error.time();
     stats = analysis.statistics();  // up to the failure
   }
-  const double run_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const double run_time =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
   io::Document summary;
   summary.set("model", model_path)
@@ -181,9 +197,12 @@ int run_command(const Arguments& arguments) {
     const builder::DriftMonitor& m = built.drift_monitors[k];
     const results::DriftPeak& peak = drifts.peaks()[k];
     io::Document doc;
-    doc.set("id", m.id).set(m.kind == "pier" ? "bridge" : "building", m.group)
-        .set("height", m.height).set("peak_drift", peak.peak_drift)
-        .set("drift_ratio", peak.peak_drift / m.height).set("time", peak.time);
+    doc.set("id", m.id)
+        .set(m.kind == "pier" ? "bridge" : "building", m.group)
+        .set("height", m.height)
+        .set("peak_drift", peak.peak_drift)
+        .set("drift_ratio", peak.peak_drift / m.height)
+        .set("time", peak.time);
     if (m.yield_drift) doc.set("ductility", peak.peak_drift / *m.yield_drift);
     (m.kind == "pier" ? pier_documents : storey_documents).push_back(doc);
   }
@@ -191,11 +210,14 @@ int run_command(const Arguments& arguments) {
     const builder::JointMonitor& m = built.joint_monitors[k];
     const results::JointPeak& peak = joints.peaks()[k];
     io::Document doc;
-    doc.set("id", m.id).set("link", built.model.links[static_cast<std::size_t>(m.link)].id)
-        .set("peak_opening", peak.peak_opening).set("peak_closing", peak.peak_closing)
+    doc.set("id", m.id)
+        .set("link", built.model.links[static_cast<std::size_t>(m.link)].id)
+        .set("peak_opening", peak.peak_opening)
+        .set("peak_closing", peak.peak_closing)
         .set("peak_seat_movement", peak.peak_seat_movement);
     if (m.seat_width > 0.0)
-      doc.set("seat_width", m.seat_width).set("unseating_margin", m.seat_width - peak.peak_seat_movement)
+      doc.set("seat_width", m.seat_width)
+          .set("unseating_margin", m.seat_width - peak.peak_seat_movement)
           .set("unseated", peak.peak_seat_movement >= m.seat_width);
     joint_documents.push_back(doc);
   }
@@ -204,22 +226,29 @@ int run_command(const Arguments& arguments) {
   if (!joint_documents.empty()) summary.set("joints", joint_documents);
   const results::EnergyTerms& e = energy.terms();
   io::Document energy_document;
-  energy_document.set("input", e.input).set("initial", e.initial).set("kinetic", e.kinetic)
-      .set("strain", e.strain).set("damping", e.damping).set("links", e.links)
-      .set("balance_error", e.balance_error()).set("worst_balance_error", energy.worst_balance_error());
+  energy_document.set("input", e.input)
+      .set("initial", e.initial)
+      .set("kinetic", e.kinetic)
+      .set("strain", e.strain)
+      .set("damping", e.damping)
+      .set("links", e.links)
+      .set("balance_error", e.balance_error())
+      .set("worst_balance_error", energy.worst_balance_error());
   summary.set("energy", energy_document);
   // Warnings for results an engineer should not trust as they are.
   std::vector<std::string> warnings;
   for (std::size_t k = 0; k < built.joint_monitors.size(); ++k)
     if (built.joint_monitors[k].seat_width > 0.0 &&
         joints.peaks()[k].peak_seat_movement >= built.joint_monitors[k].seat_width)
-      warnings.push_back(fmt::format("joint {}: the girder moved {:.4g} on a seat {:.4g} wide: unseated",
-                                     built.joint_monitors[k].id, joints.peaks()[k].peak_seat_movement,
-                                     built.joint_monitors[k].seat_width));
+      warnings.push_back(
+          fmt::format("joint {}: the girder moved {:.4g} on a seat {:.4g} wide: unseated",
+                      built.joint_monitors[k].id, joints.peaks()[k].peak_seat_movement,
+                      built.joint_monitors[k].seat_width));
   if (energy.worst_balance_error() > 0.01)
-    warnings.push_back(fmt::format("energy balance error reached {:.2f} % of the largest energy term: "
-                                   "a contact or a step was not resolved (reduce the time step)",
-                                   100.0 * energy.worst_balance_error()));
+    warnings.push_back(
+        fmt::format("energy balance error reached {:.2f} % of the largest energy term: "
+                    "a contact or a step was not resolved (reduce the time step)",
+                    100.0 * energy.worst_balance_error()));
   summary.set("warnings", [&] {
     std::vector<io::Document> items;
     for (const std::string& w : warnings) items.push_back(io::Document().set("warning", w));
@@ -251,13 +280,15 @@ int run_command(const Arguments& arguments) {
 
   io::create_output_folder(out);
   for (const auto& recorder : recorders)
-    io::write_csv_atomic((std::filesystem::path(out) / recorder->file()).string(), recorder->table());
-  io::write_text_atomic((std::filesystem::path(out) / "summary.json").string(), summary.dump() + "\n");
+    io::write_csv_atomic((std::filesystem::path(out) / recorder->file()).string(),
+                         recorder->table());
+  io::write_text_atomic((std::filesystem::path(out) / "summary.json").string(),
+                        summary.dump() + "\n");
 
   if (!quiet) {
-    std::cout << fmt::format("pound run {}: {} DOFs, {} steps, {} Newton iterations, {:.3f} s -> {}/\n",
-                             model_path, system->size(), stats.steps, stats.newton_iterations,
-                             run_time, out);
+    std::cout << fmt::format(
+        "pound run {}: {} DOFs, {} steps, {} Newton iterations, {:.3f} s -> {}/\n", model_path,
+        system->size(), stats.steps, stats.newton_iterations, run_time, out);
     // Contacts and restrainers one line each; structural springs (bearings) in one line.
     int springs = 0;
     double spring_force = 0.0;
@@ -269,43 +300,49 @@ int run_command(const Arguments& arguments) {
         ++springs;
         spring_force = std::max({spring_force, s.peak_force, s.peak_tension});
       } else if (law == "restrainer" || law == "hook") {
-        std::cout << fmt::format("  {} {}: taut {} time(s), peak tension {:.6g}, peak opening {:.4g}\n",
-                                 law, id, s.impacts, s.peak_tension, s.peak_opening);
+        std::cout << fmt::format(
+            "  {} {}: taut {} time(s), peak tension {:.6g}, peak opening {:.4g}\n", law, id,
+            s.impacts, s.peak_tension, s.peak_opening);
       } else {
-        std::cout << fmt::format("  contact {}: {} impact(s), peak force {:.6g}, peak penetration {:.4g}, impulse {:.6g}\n",
-                                 id, s.impacts, s.peak_force, s.peak_penetration, s.impulse);
+        std::cout << fmt::format(
+            "  contact {}: {} impact(s), peak force {:.6g}, peak penetration {:.4g}, impulse "
+            "{:.6g}\n",
+            id, s.impacts, s.peak_force, s.peak_penetration, s.impulse);
       }
     }
     if (springs > 0)
-      std::cout << fmt::format("  {} spring link(s) (bearings, hinges): largest force {:.6g}\n", springs,
-                               spring_force);
+      std::cout << fmt::format("  {} spring link(s) (bearings, hinges): largest force {:.6g}\n",
+                               springs, spring_force);
     for (std::size_t k = 0; k < built.joint_monitors.size(); ++k) {
       const auto& m = built.joint_monitors[k];
       const auto& p = joints.peaks()[k];
-      std::cout << fmt::format("  joint {}: opened {:.4g}, closed {:.4g}, moved {:.4g} on its seat{}\n", m.id,
-                               p.peak_opening, p.peak_closing, p.peak_seat_movement,
-                               m.seat_width > 0.0 ? fmt::format(" (seat {:.4g}, margin {:.4g})", m.seat_width,
-                                                                m.seat_width - p.peak_seat_movement)
-                                                  : std::string());
+      std::cout << fmt::format(
+          "  joint {}: opened {:.4g}, closed {:.4g}, moved {:.4g} on its seat{}\n", m.id,
+          p.peak_opening, p.peak_closing, p.peak_seat_movement,
+          m.seat_width > 0.0 ? fmt::format(" (seat {:.4g}, margin {:.4g})", m.seat_width,
+                                           m.seat_width - p.peak_seat_movement)
+                             : std::string());
     }
     for (std::size_t k = 0; k < built.drift_monitors.size(); ++k) {
       const auto& m = built.drift_monitors[k];
       const double drift = drifts.peaks()[k].peak_drift;
-      std::cout << fmt::format("  {} {}: peak drift {:.4g} ({:.3f} % of {:.4g}){}\n", m.kind, m.id, drift,
-                               100.0 * drift / m.height, m.height,
-                               m.yield_drift ? fmt::format(", ductility {:.2f}", drift / *m.yield_drift)
-                                             : std::string());
+      std::cout << fmt::format("  {} {}: peak drift {:.4g} ({:.3f} % of {:.4g}){}\n", m.kind, m.id,
+                               drift, 100.0 * drift / m.height, m.height,
+                               m.yield_drift
+                                   ? fmt::format(", ductility {:.2f}", drift / *m.yield_drift)
+                                   : std::string());
     }
     std::cout << verification_line;
-    std::cout << fmt::format("  energy: input {:.6g}, initial {:.6g}, kinetic {:.6g}, strain {:.6g}, "
-                             "damping {:.6g}, links {:.6g}; balance error {:.2e}\n",
-                             e.input, e.initial, e.kinetic, e.strain, e.damping, e.links,
-                             energy.worst_balance_error());
+    std::cout << fmt::format(
+        "  energy: input {:.6g}, initial {:.6g}, kinetic {:.6g}, strain {:.6g}, "
+        "damping {:.6g}, links {:.6g}; balance error {:.2e}\n",
+        e.input, e.initial, e.kinetic, e.strain, e.damping, e.links, energy.worst_balance_error());
   }
   for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
   if (!failure.empty()) {
-    std::cerr << fmt::format("error: {}: analysis failed at t = {:.6g}: {} (results up to then are in {}/)\n",
-                             model_path, failure_time, failure, out);
+    std::cerr << fmt::format(
+        "error: {}: analysis failed at t = {:.6g}: {} (results up to then are in {}/)\n",
+        model_path, failure_time, failure, out);
     return 3;
   }
   return 0;

@@ -4,9 +4,9 @@
 
 #include <array>
 #include <cmath>
-#include <numbers>
-#include <limits>
 #include <functional>
+#include <limits>
+#include <numbers>
 
 #include "assembly/modal_analysis.hpp"
 #include "assembly/structural_system.hpp"
@@ -67,7 +67,7 @@ class Resolver {
 // Path of entry k of an expanded array: the user's own entries keep their path; generated ones
 // point at their generator.
 std::function<std::string(std::size_t)> origin_of(std::size_t user_count, const char* array,
-                                                   const std::vector<int>& generated_from) {
+                                                  const std::vector<int>& generated_from) {
   return [user_count, array, &generated_from](std::size_t k) {
     if (k < user_count) return fmt::format("/{}/{}", array, k);
     return fmt::format("/generators/{}", generated_from[k - user_count]);
@@ -109,11 +109,10 @@ model::LawFactory make_law(const LawSpec& law, const std::string& source, const 
     const double k = *number("stiffness");
     const bool clip = law.choice("tension", "clip") == "clip";
     const std::optional<double> damping = number("damping");
-    const double ratio =
-        damping ? 0.0
-                : calibrated(clip ? contact::DampedImpact::kelvin_voigt_clipped
-                                  : contact::DampedImpact::kelvin_voigt,
-                             contact::kelvin_voigt_damping_ratio);
+    const double ratio = damping ? 0.0
+                                 : calibrated(clip ? contact::DampedImpact::kelvin_voigt_clipped
+                                                   : contact::DampedImpact::kelvin_voigt,
+                                              contact::kelvin_voigt_damping_ratio);
     return [=](const LinkContext& context) {
       const double c = damping ? *damping : 2.0 * ratio * std::sqrt(k * effective_mass(context));
       return std::make_unique<contact::KelvinVoigt>(k, c, clip);
@@ -125,24 +124,25 @@ model::LawFactory make_law(const LawSpec& law, const std::string& source, const 
   }
   if (type == "hertz_damp") {
     const double k = *number("stiffness");
-    const double ratio = number("damping_ratio")
-                             ? *number("damping_ratio")
-                             : calibrated(contact::DampedImpact::hertz_damp, contact::hertz_damp_ratio_ye);
-    return [k, ratio](const LinkContext&) { return std::make_unique<contact::HertzDamp>(k, ratio); };
+    const double ratio = number("damping_ratio") ? *number("damping_ratio")
+                                                 : calibrated(contact::DampedImpact::hertz_damp,
+                                                              contact::hertz_damp_ratio_ye);
+    return
+        [k, ratio](const LinkContext&) { return std::make_unique<contact::HertzDamp>(k, ratio); };
   }
   if (type == "jankowski") {
     const double k = *number("stiffness");
-    const double ratio = number("damping_ratio")
-                             ? *number("damping_ratio")
-                             : calibrated(contact::DampedImpact::jankowski, contact::jankowski_damping_ratio);
+    const double ratio = number("damping_ratio") ? *number("damping_ratio")
+                                                 : calibrated(contact::DampedImpact::jankowski,
+                                                              contact::jankowski_damping_ratio);
     return [=](const LinkContext& context) {
       return std::make_unique<contact::Jankowski>(k, ratio, effective_mass(context));
     };
   }
   if (type == "bilinear_impact") {
     if (number("k1"))
-      return [loop = contact::BilinearImpact::Loop{*number("k1"), *number("k2"),
-                                                    *number("yield_penetration")}](const LinkContext&) {
+      return [loop = contact::BilinearImpact::Loop{
+                  *number("k1"), *number("k2"), *number("yield_penetration")}](const LinkContext&) {
         return std::make_unique<contact::BilinearImpact>(loop);
       };
     const double k = *number("stiffness"), e = *number("restitution");
@@ -217,13 +217,15 @@ std::unique_ptr<Integrator> make_integrator(const AnalysisSpec& analysis) {
                              analysis.max_iterations};
   const IntegratorSpec& integrator = analysis.integrator;
   if (integrator.type == "central_difference") return std::make_unique<CentralDifference>();
-  if (integrator.type == "hht") return std::make_unique<Newmark>(Newmark::hht(integrator.alpha, test));
+  if (integrator.type == "hht")
+    return std::make_unique<Newmark>(Newmark::hht(integrator.alpha, test));
   if (integrator.type == "generalized_alpha")
     return std::make_unique<Newmark>(Newmark::generalized_alpha(integrator.rho_infinity, test));
   return std::make_unique<Newmark>(integrator.beta, integrator.gamma, test);
 }
 
-void settle_time_step(AnalysisSpec& analysis, SecondOrderSystem& system, const std::string& source) {
+void settle_time_step(AnalysisSpec& analysis, SecondOrderSystem& system,
+                      const std::string& source) {
   if (analysis.integrator.type != "central_difference") return;
   double limit = 0.0;
   try {
@@ -246,7 +248,8 @@ TransientSettings make_transient_settings(const AnalysisSpec& analysis) {
   return {.time_step = analysis.time_step,
           .end_time = analysis.duration,
           .max_step_cuts = analysis.max_step_cuts,
-          .max_steps = analysis.max_steps};
+          .max_steps = analysis.max_steps,
+          .time_limit = analysis.time_limit};
 }
 
 namespace {
@@ -262,15 +265,18 @@ void add_excitations(const ModelSpec& spec, const std::vector<model::GroundMotio
     model::GroundMotion motion = motions[k];
     const std::string path = fmt::format("/excitations/{}/scale", k);
     if (!(motion.peak() > 0.0) && (e.target_pga || e.target_sa))
-      throw InputError(spec.source, path, fmt::format("record '{}' is all zeros: it cannot be scaled "
-                                                      "to a target", motion.name));
+      throw InputError(spec.source, path,
+                       fmt::format("record '{}' is all zeros: it cannot be scaled "
+                                   "to a target",
+                                   motion.name));
     double factor = e.scale_factor.value_or(1.0);
     if (e.target_pga) factor = model::scale_to_peak(motion, *e.target_pga * gravity);
     if (e.target_sa)
       factor = model::scale_to_spectral_acceleration(motion, *e.target_sa * gravity, e.sa_period,
                                                      e.sa_damping);
     model::scale(motion, factor);
-    const model::Coordinates direction{e.direction[0], e.direction.size() > 1 ? e.direction[1] : 0.0};
+    const model::Coordinates direction{e.direction[0],
+                                       e.direction.size() > 1 ? e.direction[1] : 0.0};
     if (e.supports.empty()) {
       model.excitations.push_back({std::move(motion), direction});
       continue;
@@ -280,19 +286,23 @@ void add_excitations(const ModelSpec& spec, const std::vector<model::GroundMotio
       const std::string where = fmt::format("/excitations/{}/supports/{}", k, s);
       auto found = nodes.find(e.supports[s]);
       if (found == nodes.end())
-        throw InputError(spec.source, where, fmt::format("node '{}' does not exist", e.supports[s]));
+        throw InputError(spec.source, where,
+                         fmt::format("node '{}' does not exist", e.supports[s]));
       const Index node = found->second;
       // Only a support can be moved: every direction the record acts in must be fixed there.
       bool held = false;
       for (const model::Support& support : model.supports)
         if (support.node == node)
-          held = (direction[0] == 0.0 || support.fixed[0]) && (direction[1] == 0.0 || support.fixed[1]);
+          held = (direction[0] == 0.0 || support.fixed[0]) &&
+                 (direction[1] == 0.0 || support.fixed[1]);
       if (!held)
-        throw InputError(spec.source, where,
-                         fmt::format("node '{}' is not a support fixed along the excitation's direction",
-                                     e.supports[s]));
+        throw InputError(
+            spec.source, where,
+            fmt::format("node '{}' is not a support fixed along the excitation's direction",
+                        e.supports[s]));
       const double x = model.nodes[static_cast<std::size_t>(node)].position[0];
-      const double delay = e.apparent_velocity ? std::abs(x - e.wave_origin) / *e.apparent_velocity : 0.0;
+      const double delay =
+          e.apparent_velocity ? std::abs(x - e.wave_origin) / *e.apparent_velocity : 0.0;
       moving.supports.emplace_back(node, delay);
     }
     model.support_excitations.push_back(std::move(moving));
@@ -326,7 +336,8 @@ model::RayleighDamping rayleigh_damping(const DampingSpec& damping, const model:
 
 BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMotion>& motions) {
   if (user_spec.dimension != 1 && !user_spec.rod_pairs.empty())
-    throw InputError(user_spec.source, fmt::format("/generators/{}", user_spec.rod_pair_generator_index[0]),
+    throw InputError(user_spec.source,
+                     fmt::format("/generators/{}", user_spec.rod_pair_generator_index[0]),
                      "rod_pair needs a 1-D scene (\"dimension\": 1)");
   for (const auto* generators : {&user_spec.building_pairs})
     for (const auto& g : *generators)
@@ -343,16 +354,20 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
   model::Model& model = built.model;
   model.dimension = spec.dimension;
 
-  built.node_index = resolve.index_ids(spec.nodes, "node", origin_of(user_spec.nodes.size(), "nodes", spec.generated_from.nodes));
-  const auto materials = resolve.index_ids(spec.materials, "material",
-                                           origin_of(user_spec.materials.size(), "materials", spec.generated_from.materials));
-  resolve.index_ids(spec.elements, "element", origin_of(user_spec.elements.size(), "elements", spec.generated_from.elements));
+  built.node_index = resolve.index_ids(
+      spec.nodes, "node", origin_of(user_spec.nodes.size(), "nodes", spec.generated_from.nodes));
+  const auto materials = resolve.index_ids(
+      spec.materials, "material",
+      origin_of(user_spec.materials.size(), "materials", spec.generated_from.materials));
+  resolve.index_ids(spec.elements, "element",
+                    origin_of(user_spec.elements.size(), "elements", spec.generated_from.elements));
   const auto link_origin = origin_of(user_spec.links.size(), "links", spec.generated_from.links);
   built.link_index = resolve.index_ids(spec.links, "link", link_origin);
 
   for (const NodeSpec& node : spec.nodes) model.nodes.push_back({node.id, {node.x, node.y}});
 
-  const auto element_origin = origin_of(user_spec.elements.size(), "elements", spec.generated_from.elements);
+  const auto element_origin =
+      origin_of(user_spec.elements.size(), "elements", spec.generated_from.elements);
   for (std::size_t k = 0; k < spec.elements.size(); ++k) {
     const ElementSpec& element = spec.elements[k];
     const std::string path = element_origin(k);
@@ -361,43 +376,50 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
     if (node_i == node_j) resolve.fail(path + "/nodes", "an element needs two different nodes");
     auto material = materials.find(element.material);
     if (material == materials.end())
-      resolve.fail(path + "/material", fmt::format("material '{}' does not exist", element.material));
+      resolve.fail(path + "/material",
+                   fmt::format("material '{}' does not exist", element.material));
     const MaterialSpec& m = spec.materials[static_cast<std::size_t>(material->second)];
     if (!(model.length(node_i, node_j) > 0.0))
       resolve.fail(path + "/nodes", fmt::format("element '{}' has zero length (nodes '{}' and '{}' "
                                                 "are at the same place)",
                                                 element.id, element.node_i, element.node_j));
     std::optional<model::RayleighDamping> own;
-    if (element.rayleigh) own = model::RayleighDamping{(*element.rayleigh)[0], (*element.rayleigh)[1]};
+    if (element.rayleigh)
+      own = model::RayleighDamping{(*element.rayleigh)[0], (*element.rayleigh)[1]};
     if (element.type == "beam") {
       model.beams.push_back({element.id, node_i, node_j, m.youngs_modulus, element.area,
-                             element.inertia, m.density, element.extra_mass, element.consistent_mass,
-                             own});
+                             element.inertia, m.density, element.extra_mass,
+                             element.consistent_mass, own});
     } else {
-      model.trusses.push_back({element.id, node_i, node_j, m.youngs_modulus, element.area, m.density, own});
+      model.trusses.push_back(
+          {element.id, node_i, node_j, m.youngs_modulus, element.area, m.density, own});
     }
   }
 
   for (std::size_t k = 0; k < spec.masses.size(); ++k)
-    model.masses.push_back({resolve.node(built.node_index, spec.masses[k].node,
-                                         fmt::format("/masses/{}/node", k)),
-                            spec.masses[k].mass, spec.masses[k].rotary_inertia,
-                            spec.masses[k].mass_damping
-                                ? std::optional(model::RayleighDamping{*spec.masses[k].mass_damping, 0.0})
-                                : std::nullopt});
+    model.masses.push_back(
+        {resolve.node(built.node_index, spec.masses[k].node, fmt::format("/masses/{}/node", k)),
+         spec.masses[k].mass, spec.masses[k].rotary_inertia,
+         spec.masses[k].mass_damping
+             ? std::optional(model::RayleighDamping{*spec.masses[k].mass_damping, 0.0})
+             : std::nullopt});
 
-  const auto support_origin = origin_of(user_spec.supports.size(), "supports", spec.generated_from.supports);
+  const auto support_origin =
+      origin_of(user_spec.supports.size(), "supports", spec.generated_from.supports);
   for (std::size_t k = 0; k < spec.supports.size(); ++k)
-    model.supports.push_back({resolve.node(built.node_index, spec.supports[k].node, support_origin(k) + "/node"),
-                              {spec.supports[k].fix_x, spec.supports[k].fix_y, spec.supports[k].fix_rotation}});
+    model.supports.push_back(
+        {resolve.node(built.node_index, spec.supports[k].node, support_origin(k) + "/node"),
+         {spec.supports[k].fix_x, spec.supports[k].fix_y, spec.supports[k].fix_rotation}});
 
   for (std::size_t k = 0; k < spec.loads.size(); ++k)
-    model.loads.push_back({resolve.node(built.node_index, spec.loads[k].node,
-                                        fmt::format("/loads/{}/node", k)),
-                           {spec.loads[k].x, spec.loads[k].y}});
+    model.loads.push_back(
+        {resolve.node(built.node_index, spec.loads[k].node, fmt::format("/loads/{}/node", k)),
+         {spec.loads[k].x, spec.loads[k].y}});
 
-  const auto velocity_origin = origin_of(user_spec.initial_velocities.size(), "initial_velocities", spec.generated_from.initial_velocities);
-  if (!spec.initial_velocities.empty()) model.initial_velocity.assign(model.nodes.size(), {0.0, 0.0});
+  const auto velocity_origin = origin_of(user_spec.initial_velocities.size(), "initial_velocities",
+                                         spec.generated_from.initial_velocities);
+  if (!spec.initial_velocities.empty())
+    model.initial_velocity.assign(model.nodes.size(), {0.0, 0.0});
   for (std::size_t k = 0; k < spec.initial_velocities.size(); ++k) {
     const InitialVelocitySpec& v = spec.initial_velocities[k];
     const Index node = resolve.node(built.node_index, v.node, velocity_origin(k) + "/node");
@@ -411,7 +433,8 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
     link.id = spec_link.id;
     link.node_i = resolve.node(built.node_index, spec_link.node_i, path + "/nodes/0");
     link.node_j = resolve.node(built.node_index, spec_link.node_j, path + "/nodes/1");
-    if (link.node_i == link.node_j) resolve.fail(path + "/nodes", "a link cannot join a node to itself");
+    if (link.node_i == link.node_j)
+      resolve.fail(path + "/nodes", "a link cannot join a node to itself");
     link.gap = spec_link.gap;
     link.rotational = spec_link.rotational;
     if (spec_link.axis) {
@@ -423,9 +446,10 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
       const double dx = b[0] - a[0], dy = spec.dimension == 2 ? b[1] - a[1] : 0.0;
       const double length = std::hypot(dx, dy);
       if (!(length > 0.0))
-        resolve.fail(path, fmt::format("nodes '{}' and '{}' are at the same place: give the link an "
-                                       "\"axis\"",
-                                       spec_link.node_i, spec_link.node_j));
+        resolve.fail(path,
+                     fmt::format("nodes '{}' and '{}' are at the same place: give the link an "
+                                 "\"axis\"",
+                                 spec_link.node_i, spec_link.node_j));
       link.axis = {dx / length, dy / length};
     }
     const bool tension_law = spec_link.law.type == "restrainer" || spec_link.law.type == "hook";
@@ -436,15 +460,24 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
     link.make_law = make_law(spec_link.law, spec.source, path + "/law");
     if (spec_link.friction) {
       if (spec.dimension != 2)
-        resolve.fail(path + "/friction", "friction needs a tangential direction: a 2-D scene (\"dimension\": 2)");
+        resolve.fail(path + "/friction",
+                     "friction needs a tangential direction: a 2-D scene (\"dimension\": 2)");
       if (tension_law)
-        resolve.fail(path + "/friction", fmt::format("a {} carries no normal contact force to rub with", spec_link.law.type));
+        resolve.fail(
+            path + "/friction",
+            fmt::format("a {} carries no normal contact force to rub with", spec_link.law.type));
       const FrictionSpec& f = *spec_link.friction;
-      const bool nonlinear_normal = spec_link.law.type == "hertz" || spec_link.law.type == "hertz_damp" ||
-                                    spec_link.law.type == "jankowski" || spec_link.law.type == "bilinear_impact";
+      const bool nonlinear_normal =
+          spec_link.law.type == "hertz" || spec_link.law.type == "hertz_damp" ||
+          spec_link.law.type == "jankowski" || spec_link.law.type == "bilinear_impact";
       if (nonlinear_normal && !f.stick_stiffness)
-        resolve.fail(path + "/friction", fmt::format("give 'stick_stiffness': a {} law has no stiffness at first touch to stick with", spec_link.law.type));
-      link.friction = model::LinkFriction{f.coefficient, f.stick_stiffness, f.stick_damping, f.stick_mass};
+        resolve.fail(
+            path + "/friction",
+            fmt::format(
+                "give 'stick_stiffness': a {} law has no stiffness at first touch to stick with",
+                spec_link.law.type));
+      link.friction =
+          model::LinkFriction{f.coefficient, f.stick_stiffness, f.stick_damping, f.stick_mass};
     }
     model.links.push_back(std::move(link));
   }
@@ -457,18 +490,21 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
   if (built.analysis.duration == 0.0)
     for (const model::SupportExcitation& excitation : model.support_excitations)
       for (const auto& [node, delay] : excitation.supports)
-        built.analysis.duration = std::max(built.analysis.duration, excitation.motion.duration() + delay);
+        built.analysis.duration =
+            std::max(built.analysis.duration, excitation.motion.duration() + delay);
   if (spec.damping) model.damping = rayleigh_damping(*spec.damping, model, spec.source);
   if (!spec.recorders_given && !model.links.empty()) {
     ResolvedRecorder every_link{"link", {}, "links.csv"};
-    for (Index i = 0; i < static_cast<Index>(model.links.size()); ++i) every_link.items.push_back(i);
+    for (Index i = 0; i < static_cast<Index>(model.links.size()); ++i)
+      every_link.items.push_back(i);
     built.recorders.push_back(std::move(every_link));
   }
   for (std::size_t k = 0; k < spec.recorders.size(); ++k) {
     const RecorderSpec& recorder = spec.recorders[k];
     ResolvedRecorder resolved{recorder.type, {}, recorder.file};
     for (std::size_t i = 0; i < recorder.ids.size(); ++i) {
-      const std::string path = fmt::format("/recorders/{}/{}/{}", k, recorder.type == "link" ? "links" : "nodes", i);
+      const std::string path =
+          fmt::format("/recorders/{}/{}/{}", k, recorder.type == "link" ? "links" : "nodes", i);
       if (recorder.type == "node") {
         resolved.items.push_back(resolve.node(built.node_index, recorder.ids[i], path));
       } else {
@@ -479,38 +515,39 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
       }
     }
     if (recorder.type == "link" && recorder.ids.empty())
-      for (Index i = 0; i < static_cast<Index>(model.links.size()); ++i) resolved.items.push_back(i);
+      for (Index i = 0; i < static_cast<Index>(model.links.size()); ++i)
+        resolved.items.push_back(i);
     built.recorders.push_back(std::move(resolved));
   }
 
   // Monitors, generated or the user's; generated ones come after the user's.
-  const std::size_t user_drifts = user_spec.drift_monitors.size(), user_joints = user_spec.joint_monitors.size();
+  const std::size_t user_drifts = user_spec.drift_monitors.size(),
+                    user_joints = user_spec.joint_monitors.size();
   for (std::size_t k = 0; k < spec.drift_monitors.size(); ++k) {
     const DriftMonitorSpec& m = spec.drift_monitors[k];
-    const std::string path = k < user_drifts ? fmt::format("/monitors/drifts/{}", k) : "/generators";
-    built.drift_monitors.push_back({m.id, m.kind, m.group,
-                                    resolve.node(built.node_index, m.bottom, path + "/bottom"),
-                                    resolve.node(built.node_index, m.top, path + "/top"), m.height,
-                                    m.yield_drift});
+    const std::string path =
+        k < user_drifts ? fmt::format("/monitors/drifts/{}", k) : "/generators";
+    built.drift_monitors.push_back(
+        {m.id, m.kind, m.group, resolve.node(built.node_index, m.bottom, path + "/bottom"),
+         resolve.node(built.node_index, m.top, path + "/top"), m.height, m.yield_drift});
   }
   for (std::size_t k = 0; k < spec.joint_monitors.size(); ++k) {
     const JointMonitorSpec& m = spec.joint_monitors[k];
-    const std::string path = k < user_joints ? fmt::format("/monitors/joints/{}", k) : "/generators";
+    const std::string path =
+        k < user_joints ? fmt::format("/monitors/joints/{}", k) : "/generators";
     auto link = built.link_index.find(m.link);
     if (link == built.link_index.end())
       resolve.fail(path + "/link", fmt::format("link '{}' does not exist", m.link));
-    built.joint_monitors.push_back({m.id, link->second,
-                                    resolve.node(built.node_index, m.girder, path + "/girder"),
-                                    resolve.node(built.node_index, m.seat, path + "/seat"),
-                                    m.seat_width});
+    built.joint_monitors.push_back(
+        {m.id, link->second, resolve.node(built.node_index, m.girder, path + "/girder"),
+         resolve.node(built.node_index, m.seat, path + "/seat"), m.seat_width});
   }
 
   const bool only_rod_pair = user_spec.rod_pairs.size() == 1 && user_spec.nodes.empty() &&
                              user_spec.building_pairs.empty() && user_spec.bridges.empty() &&
-                             user_spec.loads.empty() &&
-                             user_spec.elements.empty() && user_spec.masses.empty() &&
-                             user_spec.supports.empty() && user_spec.initial_velocities.empty() &&
-                             user_spec.links.empty();
+                             user_spec.loads.empty() && user_spec.elements.empty() &&
+                             user_spec.masses.empty() && user_spec.supports.empty() &&
+                             user_spec.initial_velocities.empty() && user_spec.links.empty();
   if (only_rod_pair) built.sole_rod_pair = user_spec.rod_pairs.front();
   return built;
 }

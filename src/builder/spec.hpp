@@ -48,18 +48,18 @@ struct ElementSpec {
   std::string node_i;
   std::string node_j;
   std::string material;
-  double area = 0.0;            // [L^2], > 0
-  double inertia = 0.0;         // beam: second moment of area [L^4], > 0
-  double extra_mass = 0.0;      // beam: added mass per length [M/L] (deck, barriers, floor)
-  bool consistent_mass = false; // beam: "mass": "consistent" (default "lumped")
+  double area = 0.0;             // [L^2], > 0
+  double inertia = 0.0;          // beam: second moment of area [L^4], > 0
+  double extra_mass = 0.0;       // beam: added mass per length [M/L] (deck, barriers, floor)
+  bool consistent_mass = false;  // beam: "mass": "consistent" (default "lumped")
   // Its own Rayleigh coefficients {a0, a1} instead of the model's ("damping" object).
   std::optional<std::array<double, 2>> rayleigh;
 };
 
 struct MassSpec {
   std::string node;
-  double mass = 0.0;            // [M], > 0
-  double rotary_inertia = 0.0;  // [M L^2], frame scenes
+  double mass = 0.0;                   // [M], > 0
+  double rotary_inertia = 0.0;         // [M L^2], frame scenes
   std::optional<double> mass_damping;  // its own a0 instead of the model's
 };
 
@@ -94,7 +94,7 @@ struct LinkSpec {
   std::string id;
   std::string node_i;
   std::string node_j;
-  double gap = 0.0;  // [L], >= 0; never negative, never flipped
+  double gap = 0.0;                         // [L], >= 0; never negative, never flipped
   std::optional<std::vector<double>> axis;  // unit vector from i to j; default from coordinates
   LawSpec law;
   std::optional<FrictionSpec> friction;  // 2-D only
@@ -120,12 +120,12 @@ struct DampingSpec {
 
 // Uniform support excitation by a record (read by io/, scaled by the builder).
 struct ExcitationSpec {
-  std::string record;            // path, relative to the model file
-  std::string format = "auto";   // "at2", "columns", "auto"
+  std::string record;           // path, relative to the model file
+  std::string format = "auto";  // "at2", "columns", "auto"
   int column = 1;
   std::optional<double> time_step;
   bool time_column = false;
-  std::string units = "g";       // of the file's values: "g", "m/s2", "cm/s2", "model"
+  std::string units = "g";  // of the file's values: "g", "m/s2", "cm/s2", "model"
   std::optional<double> scale_factor;
   std::optional<double> target_pga;  // [g]
   std::optional<double> target_sa;   // [g] at sa_period
@@ -145,9 +145,9 @@ struct RodSpec {
   double density = 0.0;
   double area = 0.0;
   double length = 0.0;
-  int elements = 0;              // n >= 1
+  int elements = 0;               // n >= 1
   double initial_velocity = 0.0;  // along +x
-  bool far_end_fixed = false;    // "far_end": "free" | "fixed"
+  bool far_end_fixed = false;     // "far_end": "free" | "fixed"
 };
 
 // Two collinear rods joined by a contact link: the left rod on [-L1, 0], the right rod's nodes
@@ -200,18 +200,18 @@ struct JointSpec {
 struct GirderBridgeSpec {
   std::string id;
   int generator_index = 0;
-  std::vector<double> spans;         // [L]
+  std::vector<double> spans;  // [L]
   SectionSpec girder;
   SectionSpec pier;
-  double pier_height = 0.0;          // [L]
-  std::optional<double> pier_yield_drift;  // [L], for displacement ductility
-  LawSpec bearing;                   // horizontal law of every bearing
+  double pier_height = 0.0;                 // [L]
+  std::optional<double> pier_yield_drift;   // [L], for displacement ductility
+  LawSpec bearing;                          // horizontal law of every bearing
   double bearing_vertical_stiffness = 0.0;  // [F/L]
-  std::vector<int> expansion_joints; // pier numbers (1 .. spans - 1) where the deck is cut
-  JointSpec joint;                   // at the expansion joints
-  JointSpec abutment;                // girder end against the backwall
-  std::optional<LawSpec> backfill;   // behind each backwall (compression-only)
-  double backwall_mass = 0.0;        // [M], needed with backfill
+  std::vector<int> expansion_joints;        // pier numbers (1 .. spans - 1) where the deck is cut
+  JointSpec joint;                          // at the expansion joints
+  JointSpec abutment;                       // girder end against the backwall
+  std::optional<LawSpec> backfill;          // behind each backwall (compression-only)
+  double backwall_mass = 0.0;               // [M], needed with backfill
 };
 
 // What a run reports beyond links: drift of storeys and piers (peak of |u_top - u_bottom|
@@ -220,16 +220,16 @@ struct GirderBridgeSpec {
 struct DriftMonitorSpec {
   std::string id;
   std::string kind = "storey";  // "storey" | "pier"; how the summary groups it
-  std::string group;  // building or bridge id
+  std::string group;            // building or bridge id
   std::string bottom, top;
   double height = 0.0;
   std::optional<double> yield_drift;
 };
 struct JointMonitorSpec {
   std::string id;
-  std::string link;                     // the pounding link across the joint
-  std::string girder, seat;             // nodes: the girder end and what it sits on
-  double seat_width = 0.0;              // 0: unseating not checked
+  std::string link;          // the pounding link across the joint
+  std::string girder, seat;  // nodes: the girder end and what it sits on
+  double seat_width = 0.0;   // 0: unseating not checked
 };
 
 // "newmark" (beta, gamma), "hht" (alpha in [-1/3, 0]) or "generalized_alpha" (rho_infinity in
@@ -249,12 +249,13 @@ struct AnalysisSpec {
   // "time_step": "auto" (central difference): safety_factor times the stable limit.
   bool time_step_auto = false;
   double safety_factor = 0.8;
-  double duration = 0.0;   // > 0; 0 in a file without it: the longest record's duration
+  double duration = 0.0;  // > 0; 0 in a file without it: the longest record's duration
   double relative_tolerance = 1e-10;
   double absolute_tolerance = 0.0;
   int max_iterations = 25;
   int max_step_cuts = 10;
-  long max_steps = 0;  // 0: no limit
+  long max_steps = 0;       // 0: no limit
+  double time_limit = 0.0;  // wall-clock seconds, 0: no limit; set by `pound run --time-limit`
 };
 
 // Time histories written as CSV: "link" records force and penetration of the named links (all
@@ -277,7 +278,7 @@ struct ModelSpec {
   std::vector<InitialVelocitySpec> initial_velocities;
   std::vector<LoadSpec> loads;
   std::vector<LinkSpec> links;
-  std::vector<RodPairSpec> rod_pairs;  // "generators" entries of type "rod_pair", in order
+  std::vector<RodPairSpec> rod_pairs;         // "generators" entries of type "rod_pair", in order
   std::vector<int> rod_pair_generator_index;  // their index in "/generators"
   std::vector<AdjacentBuildingsSpec> building_pairs;
   std::vector<GirderBridgeSpec> bridges;

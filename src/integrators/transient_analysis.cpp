@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
 #include <cmath>
 
 #include "core/errors.hpp"
@@ -13,10 +14,12 @@ TransientAnalysis::TransientAnalysis(SecondOrderSystem& system, Integrator& inte
     : system_(system), integrator_(integrator), settings_(settings) {
   if (!(settings_.time_step > 0.0) || !std::isfinite(settings_.time_step))
     throw std::invalid_argument("time step must be positive and finite");
+  if (!(settings_.time_limit >= 0.0)) throw std::invalid_argument("time limit must be >= 0");
 }
 
 TransientStatistics TransientAnalysis::run(State& state, const StepObserver& observer) {
   statistics_ = {};
+  started_ = std::chrono::steady_clock::now();
   integrator_.initialize(system_, state);
   if (observer) {
     StepResult initial;
@@ -28,8 +31,9 @@ TransientStatistics TransientAnalysis::run(State& state, const StepObserver& obs
   const double span = settings_.end_time - start;
   const long nominal_steps = static_cast<long>(std::ceil(span / settings_.time_step - 1e-9));
   for (long k = 1; k <= nominal_steps; ++k) {
-    const double target = (k == nominal_steps) ? settings_.end_time
-                                               : start + static_cast<double>(k) * settings_.time_step;
+    const double target = (k == nominal_steps)
+                              ? settings_.end_time
+                              : start + static_cast<double>(k) * settings_.time_step;
     advance(state, target - state.time, 0, observer);
   }
   return statistics_;
@@ -38,7 +42,16 @@ TransientStatistics TransientAnalysis::run(State& state, const StepObserver& obs
 void TransientAnalysis::advance(State& state, double dt, int depth, const StepObserver& observer) {
   TransientStatistics& stats = statistics_;
   if (settings_.max_steps > 0 && stats.steps >= settings_.max_steps)
-    throw SolveError(state.time, fmt::format("step limit of {} steps reached", settings_.max_steps));
+    throw SolveError(state.time,
+                     fmt::format("step limit of {} steps reached", settings_.max_steps));
+  // The clock is read only when a limit is set, and then every 64 steps (a few ns per step).
+  if (settings_.time_limit > 0.0 && stats.steps % 64 == 0) {
+    const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - started_;
+    if (elapsed.count() > settings_.time_limit)
+      throw SolveError(state.time,
+                       fmt::format("time limit of {:g} s reached after {} steps ({:.3g} s)",
+                                   settings_.time_limit, stats.steps, elapsed.count()));
+  }
   const StepResult result = integrator_.advance(system_, state, dt, next_);
   if (result.converged) {
     system_.links().commit();

@@ -2,6 +2,7 @@
 // Drives an integrator from t0 to t_end with a nominal step, cutting a step that does not
 // converge in halves down to a floor, and stopping with a SolveError (time and reason) when even
 // the floor fails. An unconverged step is never accepted.
+#include <chrono>
 #include <functional>
 
 #include "integrators/integrator.hpp"
@@ -9,10 +10,11 @@
 namespace pound {
 
 struct TransientSettings {
-  double time_step = 0.0;      // nominal dt
+  double time_step = 0.0;  // nominal dt
   double end_time = 0.0;
-  int max_step_cuts = 10;      // floor: dt / 2^max_step_cuts
-  long max_steps = 0;          // 0: no limit; otherwise refuse to run more accepted steps
+  int max_step_cuts = 10;   // floor: dt / 2^max_step_cuts
+  long max_steps = 0;       // 0: no limit; otherwise refuse to run more accepted steps
+  double time_limit = 0.0;  // wall-clock seconds; 0: no limit. The machine's, not the model's.
 };
 
 struct TransientStatistics {
@@ -41,6 +43,7 @@ class TransientAnalysis {
   Integrator& integrator_;
   TransientSettings settings_;
   TransientStatistics statistics_;
+  std::chrono::steady_clock::time_point started_;
   State next_;
 };
 

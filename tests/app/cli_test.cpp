@@ -228,6 +228,29 @@ TEST_F(Cli, StepLimitFailsAndKeepsTheHistorySoFar) {
   EXPECT_EQ(lines.size(), 1u + 11u);  // header, the initial state, 10 steps
 }
 
+TEST_F(Cli, TimeLimitFailsAndKeepsTheHistorySoFar) {
+  const fs::path out = path("out");
+  // A 1 ms budget cannot finish the bridge's 16,667 steps (0.15 s here) on any machine.
+  const Outcome outcome = pound({"run", POUND_SOURCE_DIR "/models/three_span_bridge.json", "--out",
+                                 out.string(), "--time-limit", "0.001", "--quiet"});
+  EXPECT_EQ(outcome.exit_code, 3);
+  EXPECT_TRUE(contains(outcome.err, "time limit of 0.001 s")) << outcome.err;
+  const json summary = json::parse(read_text(out / "summary.json"));
+  EXPECT_EQ(summary["status"], "failed");
+  EXPECT_TRUE(contains(summary["failure"].get<std::string>(), "time limit"));
+  std::cout << "stderr: " << outcome.err;
+}
+
+TEST_F(Cli, BadTimeLimitIsAUsageError) {
+  for (const char* limit : {"-1", "nan", "soon"}) {
+    const Outcome outcome =
+        pound({"run", kRodModel, "--out", path("out").string(), "--time-limit", limit});
+    EXPECT_EQ(outcome.exit_code, 1) << limit << ": " << outcome.err;
+    EXPECT_TRUE(contains(outcome.err, "time-limit")) << outcome.err;
+    EXPECT_FALSE(fs::exists(path("out")));
+  }
+}
+
 TEST_F(Cli, UnwritableOutputFolderIsAnOutputError) {
   const std::string out = "/proc/pound_test_out";
   const Outcome outcome = pound({"run", kRodModel, "--out", out, "--quiet"});

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 #include <limits>
 
 #include "core/errors.hpp"
@@ -39,7 +40,9 @@ class CubicWithoutTangent final : public contact::ContactLaw {
 class Poisoned final : public contact::ContactLaw {
  public:
   std::string name() const override { return "poisoned"; }
-  std::unique_ptr<contact::ContactLaw> clone() const override { return std::make_unique<Poisoned>(); }
+  std::unique_ptr<contact::ContactLaw> clone() const override {
+    return std::make_unique<Poisoned>();
+  }
   contact::LawResponse set_trial(const contact::LinkKinematics& trial) override {
     if (trial.penetration <= 0.0) return {};
     return {.force = std::numeric_limits<double>::quiet_NaN(), .stiffness = 1.0};
@@ -57,8 +60,10 @@ testing::Oscillator mass_against_wall(std::unique_ptr<contact::ContactLaw> law) 
 
 TEST(TransientAnalysis, CutsStepsThatDoNotConvergeAndFinishes) {
   auto system = mass_against_wall(std::make_unique<CubicWithoutTangent>(1.0e14));
-  Newmark newmark = Newmark::average_acceleration({.relative_tolerance = 1e-10, .max_iterations = 30});
-  TransientAnalysis analysis(system, newmark, {.time_step = 1e-3, .end_time = 0.02, .max_step_cuts = 12});
+  Newmark newmark =
+      Newmark::average_acceleration({.relative_tolerance = 1e-10, .max_iterations = 30});
+  TransientAnalysis analysis(system, newmark,
+                             {.time_step = 1e-3, .end_time = 0.02, .max_step_cuts = 12});
   State state;
   state.velocity = Vector::Constant(1, 1.0);
   // Every accepted step, cut or not, satisfied m a = -F; with gamma = 1/2 the velocity is the
@@ -86,8 +91,10 @@ TEST(TransientAnalysis, CutsStepsThatDoNotConvergeAndFinishes) {
 
 TEST(TransientAnalysis, FailsLoudlyWithTimeAndReasonWhenCuttingIsNotEnough) {
   auto system = mass_against_wall(std::make_unique<CubicWithoutTangent>(1.0e14));
-  Newmark newmark = Newmark::average_acceleration({.relative_tolerance = 1e-10, .max_iterations = 30});
-  TransientAnalysis analysis(system, newmark, {.time_step = 1e-3, .end_time = 0.02, .max_step_cuts = 0});
+  Newmark newmark =
+      Newmark::average_acceleration({.relative_tolerance = 1e-10, .max_iterations = 30});
+  TransientAnalysis analysis(system, newmark,
+                             {.time_step = 1e-3, .end_time = 0.02, .max_step_cuts = 0});
   State state;
   state.velocity = Vector::Constant(1, 1.0);
   try {
@@ -104,7 +111,8 @@ TEST(TransientAnalysis, FailsLoudlyWithTimeAndReasonWhenCuttingIsNotEnough) {
 TEST(TransientAnalysis, NonFiniteForcesStopTheRun) {
   auto system = mass_against_wall(std::make_unique<Poisoned>());
   Newmark newmark = Newmark::average_acceleration();
-  TransientAnalysis analysis(system, newmark, {.time_step = 0.01, .end_time = 1.0, .max_step_cuts = 3});
+  TransientAnalysis analysis(system, newmark,
+                             {.time_step = 0.01, .end_time = 1.0, .max_step_cuts = 3});
   State state;
   state.velocity = Vector::Constant(1, 1.0);
   EXPECT_THROW(
@@ -112,7 +120,8 @@ TEST(TransientAnalysis, NonFiniteForcesStopTheRun) {
         try {
           analysis.run(state);
         } catch (const SolveError& error) {
-          EXPECT_NE(std::string(error.what()).find("not finite"), std::string::npos) << error.what();
+          EXPECT_NE(std::string(error.what()).find("not finite"), std::string::npos)
+              << error.what();
           throw;
         }
       },
@@ -122,11 +131,41 @@ TEST(TransientAnalysis, NonFiniteForcesStopTheRun) {
 TEST(TransientAnalysis, StepLimitStopsARunawayRun) {
   testing::Oscillator system(1.0, 0.0, 1.0);
   Newmark newmark = Newmark::average_acceleration();
-  TransientAnalysis analysis(system, newmark, {.time_step = 0.01, .end_time = 1.0, .max_steps = 10});
+  TransientAnalysis analysis(system, newmark,
+                             {.time_step = 0.01, .end_time = 1.0, .max_steps = 10});
   State state;
   long recorded = 0;
-  EXPECT_THROW(analysis.run(state, [&](const State&, const StepResult&) { ++recorded; }), SolveError);
+  EXPECT_THROW(analysis.run(state, [&](const State&, const StepResult&) { ++recorded; }),
+               SolveError);
   EXPECT_EQ(recorded, 11);  // the initial state and ten steps
+}
+
+TEST(TransientAnalysis, TimeLimitStopsARunawayRunWithTheTimeAndTheReason) {
+  testing::Oscillator system(1.0, 0.0, 1.0);
+  Newmark newmark = Newmark::average_acceleration();
+  // 1e9 steps would take minutes; a limit of 20 ms stops it after a few thousand.
+  TransientAnalysis analysis(system, newmark,
+                             {.time_step = 1e-9, .end_time = 1.0, .time_limit = 0.02});
+  State state;
+  try {
+    analysis.run(state);
+    FAIL() << "the run was not stopped";
+  } catch (const SolveError& error) {
+    std::cout << "error: " << error.what() << "\n";
+    EXPECT_NE(std::string(error.what()).find("time limit of 0.02 s"), std::string::npos)
+        << error.what();
+    EXPECT_GT(error.time(), 0.0);
+    EXPECT_LT(error.time(), 1.0);
+    EXPECT_EQ(state.time, error.time());  // the state is the last accepted step
+  }
+}
+
+TEST(TransientAnalysis, NegativeTimeLimitIsRefused) {
+  testing::Oscillator system(1.0, 0.0, 1.0);
+  Newmark newmark = Newmark::average_acceleration();
+  EXPECT_THROW(
+      TransientAnalysis(system, newmark, {.time_step = 0.1, .end_time = 1.0, .time_limit = -1.0}),
+      std::invalid_argument);
 }
 
 TEST(TransientAnalysis, EndTimeIsReachedExactlyWithoutDrift) {
