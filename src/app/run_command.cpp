@@ -130,7 +130,7 @@ int run_command(const Arguments& arguments) {
   } catch (const InputError& error) {
     throw error.in_file(model_path);
   }
-  builder::settle_time_step(built.analysis, *system, model_path);
+  builder::settle_time_step(built.analysis, built.model, *system, model_path);
   auto integrator = builder::make_integrator(built.analysis);
   TransientAnalysis analysis(*system, *integrator,
                              builder::make_transient_settings(built.analysis));

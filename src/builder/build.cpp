@@ -224,9 +224,27 @@ std::unique_ptr<Integrator> make_integrator(const AnalysisSpec& analysis) {
   return std::make_unique<Newmark>(integrator.beta, integrator.gamma, test);
 }
 
-void settle_time_step(AnalysisSpec& analysis, SecondOrderSystem& system,
-                      const std::string& source) {
+void settle_time_step(AnalysisSpec& analysis, const model::Model& model,
+                      assembly::StructuralSystem& system, const std::string& source) {
   if (analysis.integrator.type != "central_difference") return;
+  // Implicit methods carry massless DOFs (contact points, rotations) as static equations; the
+  // explicit update divides by each DOF's own mass.
+  constexpr const char* kDirection[] = {"x", "y", "rotation"};
+  const Vector* lumped = system.lumped_mass();
+  if (!lumped)
+    throw InputError(source, "/analysis/integrator",
+                     "central difference needs lumped masses, and this model has consistent "
+                     "element masses: set \"mass\": \"lumped\" on its elements, or use an implicit "
+                     "integrator");
+  for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
+    for (int d = 0; d < system.dofs().dofs_per_node(); ++d)
+      if (const Index row = system.dofs().equation(node, d); row >= 0 && !((*lumped)[row] > 0.0))
+        throw InputError(
+            source, "/analysis/integrator",
+            fmt::format("central difference needs a lumped mass on every free DOF, "
+                        "and node '{}' has none in direction {}: add a mass there, "
+                        "or use an implicit integrator",
+                        model.nodes[static_cast<std::size_t>(node)].id, kDirection[d]));
   double limit = 0.0;
   try {
     limit = stable_time_step(system, true);

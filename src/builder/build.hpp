@@ -4,10 +4,11 @@
 // links joining a node to itself, links without an axis). Errors are InputErrors with the
 // file and the JSON path of the offending entry.
 #include <map>
-#include <optional>
 #include <memory>
+#include <optional>
 #include <string>
 
+#include "assembly/structural_system.hpp"
 #include "builder/spec.hpp"
 #include "integrators/integrator.hpp"
 #include "integrators/transient_analysis.hpp"
@@ -29,8 +30,8 @@ struct DriftMonitor {
 };
 struct JointMonitor {
   std::string id;
-  Index link = 0;             // the pounding link across the joint
-  Index girder = 0, seat = 0; // nodes
+  Index link = 0;              // the pounding link across the joint
+  Index girder = 0, seat = 0;  // nodes
   double seat_width = 0.0;
 };
 
@@ -59,7 +60,9 @@ model::LawFactory make_law(const LawSpec& law, const std::string& source, const 
 std::unique_ptr<Integrator> make_integrator(const AnalysisSpec& analysis);
 TransientSettings make_transient_settings(const AnalysisSpec& analysis);
 // For central difference: sets an "auto" step from the stable limit (links in contact), or
-// refuses one above it with the limit in the message, before any step is taken.
-void settle_time_step(AnalysisSpec& analysis, SecondOrderSystem& system, const std::string& source);
+// refuses one above it with the limit in the message, before any step is taken. A free DOF
+// without lumped mass is refused naming its node.
+void settle_time_step(AnalysisSpec& analysis, const model::Model& model,
+                      assembly::StructuralSystem& system, const std::string& source);
 
 }  // namespace pound::builder

@@ -163,7 +163,7 @@ struct RodPairSimulation::Impl {
     spec.analysis.integrator = options.integrator;
     built = builder::build(spec);
     system = std::make_unique<assembly::StructuralSystem>(built.model);
-    builder::settle_time_step(built.analysis, *system, "rod-impact");
+    builder::settle_time_step(built.analysis, built.model, *system, "rod-impact");
     time_step = built.analysis.time_step;
     nodes = std::make_unique<RodPairNodes>(pair, built, system->dofs());
   }

@@ -294,6 +294,30 @@ TEST_F(Cli, VerifyTwoElementAndRestitutionPass) {
 
 namespace {
 
+// A massless contact point is fine for implicit methods (a static equation) and refused for
+// central difference, which divides by each DOF's mass, naming the node.
+TEST_F(Cli, ExplicitMethodRefusesAMasslessNodeByName) {
+  // The bearing's far end becomes a massless pad between the girder and the abutment.
+  const std::string patch = R"([
+    {"op": "add", "path": "/nodes/-", "value": {"id": "pad", "x": 10.5}},
+    {"op": "replace", "path": "/nodes/2/x", "value": 10.5},
+    {"op": "add", "path": "/elements/-", "value": {"id": "pad_spring", "type": "truss",
+      "nodes": ["girder", "pad"], "material": "bearing", "area": 0.05}},
+    {"op": "replace", "path": "/links/0/nodes", "value": ["pad", "abutment"]}])";
+  const std::string implicit_model = write_model("implicit.json", patch);
+  const Outcome implicit_run =
+      pound({"run", implicit_model, "--out", path("implicit").string(), "--quiet"});
+  EXPECT_EQ(implicit_run.exit_code, 0) << implicit_run.err;
+
+  const std::string explicit_model = write_model(
+      "explicit.json",
+      patch.substr(0, patch.size() - 1) +
+          R"(, {"op": "add", "path": "/analysis/integrator", "value": "central_difference"}])");
+  const Outcome refused = run_refused(explicit_model);
+  EXPECT_TRUE(contains(refused.err, "/analysis/integrator")) << refused.err;
+  EXPECT_TRUE(contains(refused.err, "node 'pad' has none in direction x")) << refused.err;
+}
+
 // Central difference above its stable step is refused before the run, naming the limit;
 // "auto" takes a safe fraction of it.
 TEST_F(Cli, ExplicitStepAboveTheStableLimitIsRefused) {
