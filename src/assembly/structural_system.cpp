@@ -227,6 +227,7 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
   stiffness_.resize(n, n);
   stiffness_.setFromTriplets(stiffness.begin(), stiffness.end());
   stiffness_.prune(0.0);
+  stiffness_rows_ = stiffness_;
 
   if (model.damping) damping_ = *model.damping;
   if (own_damping) {
@@ -415,11 +416,11 @@ void StructuralSystem::multiply_damping(const Vector& x, Vector& y) const {
   // C = a0 M + a1 K
   multiply_mass(x, y);
   y *= damping_.mass_coefficient;
-  y.noalias() += damping_.stiffness_coefficient * (stiffness_ * x);
+  y.noalias() += damping_.stiffness_coefficient * (stiffness_rows_ * x);
 }
 
 void StructuralSystem::multiply_stiffness(const Vector& x, Vector& y) const {
-  y.noalias() = stiffness_ * x;
+  y.noalias() = stiffness_rows_ * x;
 }
 
 void StructuralSystem::external_force(double time, Vector& force) const {

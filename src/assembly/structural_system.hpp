@@ -64,6 +64,10 @@ class StructuralSystem final : public SecondOrderSystem {
   };
   std::vector<MovingSupport> moving_supports_;
   Eigen::SparseMatrix<double> stiffness_;
+  // The same by rows for K x, a large part of an explicit step: each entry of y is one dot
+  // product (gathers) instead of scattered updates. Measured on the fine rod mesh: 5.8 -> 5.0 us
+  // per central-difference step (`pound_bench`).
+  Eigen::SparseMatrix<double, Eigen::RowMajor> stiffness_rows_;
   LinkSet links_;
 };
 
