@@ -4,8 +4,8 @@
 
 #include <Eigen/SparseCholesky>
 #include <array>
-#include <map>
 #include <cmath>
+#include <map>
 
 #include "assembly/banded_ldlt.hpp"
 #include "assembly/twisted_tridiagonal.hpp"
@@ -36,8 +36,6 @@ class SparseSolver final : public LinearSolver {
  private:
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor_;
 };
-
-constexpr const char* kDirection[] = {"x", "y", "rotation"};
 
 using Matrix6 = Eigen::Matrix<double, 6, 6>;
 
@@ -160,7 +158,8 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
     scatter(stiffness, block, dofs);
     couple(block, dofs);
     const model::RayleighDamping c = coefficients(truss.damping);
-    if (c.stiffness_coefficient != 0.0) scatter(damping, Matrix(c.stiffness_coefficient * block), dofs);
+    if (c.stiffness_coefficient != 0.0)
+      scatter(damping, Matrix(c.stiffness_coefficient * block), dofs);
     for (Index node : {truss.node_i, truss.node_j})
       for (int d = 0; d < translations; ++d)
         add_mass(node, d, 0.5 * truss.density * truss.area * length, c.mass_coefficient);
@@ -172,8 +171,9 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
     const auto& a = model.nodes[static_cast<std::size_t>(beam.node_i)].position;
     const auto& b = model.nodes[static_cast<std::size_t>(beam.node_j)].position;
     const Matrix6 t = beam_rotation((b[0] - a[0]) / length, (b[1] - a[1]) / length);
-    const std::vector<std::pair<Index, int>> dofs = {{beam.node_i, 0}, {beam.node_i, 1}, {beam.node_i, 2},
-                                                     {beam.node_j, 0}, {beam.node_j, 1}, {beam.node_j, 2}};
+    const std::vector<std::pair<Index, int>> dofs = {{beam.node_i, 0}, {beam.node_i, 1},
+                                                     {beam.node_i, 2}, {beam.node_j, 0},
+                                                     {beam.node_j, 1}, {beam.node_j, 2}};
     const Matrix6 element_stiffness = t.transpose() * beam_local_stiffness(beam, length) * t;
     scatter(stiffness, element_stiffness, dofs);
     couple(element_stiffness, dofs);
@@ -183,12 +183,15 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
     const double mass_per_length = beam.density * beam.area + beam.extra_mass;
     if (beam.consistent_mass) {
       consistent = true;
-      const Matrix6 element_mass = t.transpose() * beam_consistent_mass(mass_per_length, length) * t;
+      const Matrix6 element_mass =
+          t.transpose() * beam_consistent_mass(mass_per_length, length) * t;
       scatter(consistent_mass, element_mass, dofs);
-      if (c.mass_coefficient != 0.0) scatter(damping, Matrix6(c.mass_coefficient * element_mass), dofs);
+      if (c.mass_coefficient != 0.0)
+        scatter(damping, Matrix6(c.mass_coefficient * element_mass), dofs);
     } else {
       for (Index node : {beam.node_i, beam.node_j})
-        for (int d = 0; d < 2; ++d) add_mass(node, d, 0.5 * mass_per_length * length, c.mass_coefficient);
+        for (int d = 0; d < 2; ++d)
+          add_mass(node, d, 0.5 * mass_per_length * length, c.mass_coefficient);
     }
   }
 
@@ -213,10 +216,11 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
     for (int d = 0; d < std::min(dpn, 2); ++d)
       if (const Index row = dofs_.equation(node, d);
           row >= 0 && !(diagonal_mass[row] > 0.0) && !(diagonal_stiffness[row] > 0.0))
-        throw InputError("", fmt::format("/nodes/{}", node),
-                         fmt::format("node '{}' has neither mass nor stiffness in direction {} (add "
-                                     "a mass, an element, or a support)",
-                                     model.nodes[static_cast<std::size_t>(node)].id, kDirection[d]));
+        throw InputError(
+            "", fmt::format("/nodes/{}", node),
+            fmt::format("node '{}' has neither mass nor stiffness in direction {} (add "
+                        "a mass, an element, or a support)",
+                        model.nodes[static_cast<std::size_t>(node)].id, model::direction_name(d)));
   if (consistent) {
     for (Index i = 0; i < n; ++i)
       if (mass_[i] != 0.0) consistent_mass.emplace_back(i, i, mass_[i]);
@@ -271,14 +275,17 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
       for (int d = 0; d < dpn; ++d) {
         const double component = direction[static_cast<std::size_t>(d)];
         if (component == 0.0) continue;
-        if (const Index eq = dofs_.equation(link.node_i, d); eq >= 0) row.push_back({eq, component});
-        if (const Index eq = dofs_.equation(link.node_j, d); eq >= 0) row.push_back({eq, -component});
+        if (const Index eq = dofs_.equation(link.node_i, d); eq >= 0)
+          row.push_back({eq, component});
+        if (const Index eq = dofs_.equation(link.node_j, d); eq >= 0)
+          row.push_back({eq, -component});
       }
       return row;
     };
     LinkSet::Link entry;
-    const std::array<double, 3> normal = link.rotational ? std::array<double, 3>{0.0, 0.0, 1.0}
-                                                         : std::array<double, 3>{link.axis[0], link.axis[1], 0.0};
+    const std::array<double, 3> normal =
+        link.rotational ? std::array<double, 3>{0.0, 0.0, 1.0}
+                        : std::array<double, 3>{link.axis[0], link.axis[1], 0.0};
     entry.normal_row = row_along(normal);
     rows.push_back({link.node_i, link.node_j, normal});
     entry.gap = link.gap;
@@ -295,7 +302,8 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
       const contact::StickPenalty stick{f.stick_stiffness.value_or(touch.stiffness),
                                         f.stick_damping.value_or(touch.damping),
                                         f.stick_mass.value_or(touch.mass)};
-      entry.friction = std::make_unique<contact::CoulombFriction>(std::move(law), f.coefficient, stick);
+      entry.friction =
+          std::make_unique<contact::CoulombFriction>(std::move(law), f.coefficient, stick);
     }
     links.push_back(std::move(entry));
   }
@@ -310,7 +318,8 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
   Vector initial_tangent = Vector::Zero(links_.size());
   for (Index k = 0; k < links_.count(); ++k) {
     const Index row = links_.row(k);
-    initial_tangent[row] = links_.law(k).clone()->set_trial({-links_.gaps()[row], 0.0, 0.0}).stiffness;
+    initial_tangent[row] =
+        links_.law(k).clone()->set_trial({-links_.gaps()[row], 0.0, 0.0}).stiffness;
   }
   Eigen::SparseMatrix<double> held = stiffness_;
   held += (b.transpose() * initial_tangent.asDiagonal() * b).sparseView();
@@ -319,8 +328,9 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
     if (!(std::abs(held.coeff(i, i)) > 0.0)) held.coeffRef(i, i) = 1e-12 * largest;
   const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> held_factor(held);
   if (held_factor.info() != Eigen::Success)
-    throw InputError("", "/excitations", "multi-support excitation: the structure's stiffness "
-                                         "could not be factored to find the supports' influence");
+    throw InputError("", "/excitations",
+                     "multi-support excitation: the structure's stiffness "
+                     "could not be factored to find the supports' influence");
   for (const model::SupportExcitation& excitation : model.support_excitations)
     for (const auto& [node, delay] : excitation.supports) {
       // K_fs for the support moving along the direction.
@@ -404,8 +414,10 @@ Eigen::SparseMatrix<double> StructuralSystem::mass_matrix() const {
 }
 
 void StructuralSystem::multiply_mass(const Vector& x, Vector& y) const {
-  if (mass_matrix_.size() > 0) y.noalias() = mass_matrix_ * x;
-  else y = mass_.cwiseProduct(x);
+  if (mass_matrix_.size() > 0)
+    y.noalias() = mass_matrix_ * x;
+  else
+    y = mass_.cwiseProduct(x);
 }
 
 void StructuralSystem::multiply_damping(const Vector& x, Vector& y) const {
@@ -429,8 +441,8 @@ void StructuralSystem::external_force(double time, Vector& force) const {
     force -= excitation.motion.at(time) * excitation.inertia;  // -M iota a_g(t)
   for (const MovingSupport& support : moving_supports_) {
     const model::GroundState ground = support.kinematics.at(time);
-    force -= ground.acceleration * support.inertia;        // -M r a_s(t)
-    force += ground.displacement * support.static_load;    // -(K_ff r + K_fs) u_s(t)
+    force -= ground.acceleration * support.inertia;      // -M r a_s(t)
+    force += ground.displacement * support.static_load;  // -(K_ff r + K_fs) u_s(t)
   }
 }
 
@@ -457,7 +469,8 @@ Vector StructuralSystem::initial_velocity(const model::Model& model) const {
   for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
     for (int d = 0; d < std::min(dofs_.dofs_per_node(), 2); ++d)
       if (const Index row = dofs_.equation(node, d); row >= 0)
-        velocity[row] = model.initial_velocity[static_cast<std::size_t>(node)][static_cast<std::size_t>(d)];
+        velocity[row] =
+            model.initial_velocity[static_cast<std::size_t>(node)][static_cast<std::size_t>(d)];
   return velocity;
 }
 

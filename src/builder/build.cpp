@@ -229,7 +229,6 @@ void settle_time_step(AnalysisSpec& analysis, const model::Model& model,
   if (analysis.integrator.type != "central_difference") return;
   // Implicit methods carry massless DOFs (contact points, rotations) as static equations; the
   // explicit update divides by each DOF's own mass.
-  constexpr const char* kDirection[] = {"x", "y", "rotation"};
   const Vector* lumped = system.lumped_mass();
   if (!lumped)
     throw InputError(source, "/analysis/integrator",
@@ -244,7 +243,7 @@ void settle_time_step(AnalysisSpec& analysis, const model::Model& model,
             fmt::format("central difference needs a lumped mass on every free DOF, "
                         "and node '{}' has none in direction {}: add a mass there, "
                         "or use an implicit integrator",
-                        model.nodes[static_cast<std::size_t>(node)].id, kDirection[d]));
+                        model.nodes[static_cast<std::size_t>(node)].id, model::direction_name(d)));
   double limit = 0.0;
   try {
     limit = stable_time_step(system, true);

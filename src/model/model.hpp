@@ -37,9 +37,9 @@ struct Truss {
   std::string id;
   Index node_i = 0;
   Index node_j = 0;
-  double youngs_modulus = 0.0;  // E [F/L^2]
-  double area = 0.0;            // A [L^2]
-  double density = 0.0;         // rho [M/L^3]
+  double youngs_modulus = 0.0;             // E [F/L^2]
+  double area = 0.0;                       // A [L^2]
+  double density = 0.0;                    // rho [M/L^3]
   std::optional<RayleighDamping> damping;  // its own, instead of the model's
 };
 
@@ -61,8 +61,8 @@ struct Beam {
 
 struct NodalMass {
   Index node = 0;
-  double mass = 0.0;  // [M], in every translational direction
-  double rotary_inertia = 0.0;  // [M L^2], frame scenes only
+  double mass = 0.0;                       // [M], in every translational direction
+  double rotary_inertia = 0.0;             // [M L^2], frame scenes only
   std::optional<RayleighDamping> damping;  // its own mass-proportional part, instead of the model's
 };
 
@@ -111,7 +111,7 @@ struct Link {
   Index node_j = 0;
   Coordinates axis{1.0, 0.0};
   bool rotational = false;  // acts on theta_i - theta_j (frame scenes), e.g. a plastic hinge
-  double gap = 0.0;  // initial clear distance [L], >= 0
+  double gap = 0.0;         // initial clear distance [L], >= 0
   LawFactory make_law;
   std::optional<LinkFriction> friction;
 };
@@ -134,6 +134,12 @@ struct Model {
   double length(Index node_i, Index node_j) const;
   double element_length(const Truss& truss) const;
 };
+
+// A DOF direction as messages name it: 0 x, 1 y, 2 rotation.
+inline const char* direction_name(int direction) {
+  constexpr const char* kNames[] = {"x", "y", "rotation"};
+  return kNames[direction];
+}
 
 // Equation numbers of the free DOFs, in node order (a chain of nodes gives a banded matrix).
 class DofMap {
