@@ -10,6 +10,7 @@ namespace pound::app {
 using Arguments = std::vector<std::string>;
 
 int run_command(const Arguments& arguments);
+int batch_command(const Arguments& arguments);
 int verify_command(const Arguments& arguments);
 int spectrum_command(const Arguments& arguments);
 int modes_command(const Arguments& arguments);

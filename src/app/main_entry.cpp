@@ -17,6 +17,8 @@ usage: pound <command> [options]
 
 commands:
   run MODEL.json [--out DIR]   run a model file; writes summary.json and CSV time histories
+  batch SET.json --out DIR     every model x record x scale of a set, on threads or MPI ranks,
+                               resumable; summary rows, statistics, fragility fits
   study rod-impact [options]   error against run time over integrators, laws, meshes, steps
   verify rod-impact [options]  the rod-impact benchmark against the exact wave solution
   check MODEL.json             before a run: periods, stable steps, link stiffness and contact
@@ -44,6 +46,7 @@ int main_entry(int argc, char** argv) {
   try {
     using Command = int (*)(const Arguments&);
     const std::map<std::string, Command> commands = {{"run", run_command},
+                                                     {"batch", batch_command},
                                                      {"verify", verify_command},
                                                      {"modes", modes_command},
                                                      {"check", check_command},

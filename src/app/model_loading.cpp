@@ -7,6 +7,35 @@
 #include "io/model_reader.hpp"
 
 namespace pound::app {
+namespace {
+
+// Reads the records of `loaded.spec` and builds it. `first_as_given`: the first record's path is
+// the caller's (relative to where pound runs), not relative to the model file.
+void read_records_and_build(const std::string& path, bool first_as_given, LoadedModel& loaded) {
+  const builder::ModelSpec& spec = loaded.spec;
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  for (std::size_t k = 0; k < spec.excitations.size(); ++k) {
+    const builder::ExcitationSpec& e = spec.excitations[k];
+    const std::string record =
+        (k == 0 && first_as_given) || std::filesystem::path(e.record).is_absolute()
+            ? e.record
+            : (folder / e.record).string();
+    io::RecordFormat format;
+    format.format = e.format;
+    format.column = e.column;
+    format.time_step = e.time_step;
+    format.time_column = e.time_column;
+    format.units = io::parse_acceleration_unit(e.units);
+    loaded.records.push_back(io::read_ground_motion(record, format, spec.units.gravity()));
+  }
+  try {
+    loaded.built = builder::build(spec, loaded.records);
+  } catch (const InputError& error) {
+    throw error.file().empty() ? error.in_file(path) : error;
+  }
+}
+
+}  // namespace
 
 LoadedModel load_model(const std::string& path, const std::optional<std::string>& motion_override) {
   LoadedModel loaded;
@@ -17,27 +46,23 @@ LoadedModel load_model(const std::string& path, const std::optional<std::string>
     spec.excitations.front().record = *motion_override;
     spec.excitations.front().format = "auto";
   }
-  // Records are named relative to the model file (a --motion path relative to where pound runs).
-  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-  std::vector<model::GroundMotion> motions;
-  for (std::size_t k = 0; k < spec.excitations.size(); ++k) {
-    const builder::ExcitationSpec& e = spec.excitations[k];
-    const std::string record = (k == 0 && motion_override) || std::filesystem::path(e.record).is_absolute()
-                                   ? e.record
-                                   : (folder / e.record).string();
-    io::RecordFormat format;
-    format.format = e.format;
-    format.column = e.column;
-    format.time_step = e.time_step;
-    format.time_column = e.time_column;
-    format.units = io::parse_acceleration_unit(e.units);
-    motions.push_back(io::read_ground_motion(record, format, spec.units.gravity()));
-  }
-  try {
-    loaded.built = builder::build(spec, motions);
-  } catch (const InputError& error) {
-    throw error.file().empty() ? error.in_file(path) : error;
-  }
+  read_records_and_build(path, motion_override.has_value(), loaded);
+  return loaded;
+}
+
+LoadedModel load_model_with_record(const std::string& path, const builder::ExcitationSpec& record) {
+  LoadedModel loaded;
+  loaded.spec = io::read_model_file(path);
+  builder::ModelSpec& spec = loaded.spec;
+  if (spec.excitations.empty()) spec.excitations.push_back({});
+  builder::ExcitationSpec& first = spec.excitations.front();
+  builder::ExcitationSpec replaced = record;
+  replaced.direction = first.direction;
+  replaced.supports = first.supports;
+  replaced.apparent_velocity = first.apparent_velocity;
+  replaced.wave_origin = first.wave_origin;
+  first = replaced;
+  read_records_and_build(path, true, loaded);
   return loaded;
 }
 

@@ -1,22 +1,30 @@
 #pragma once
 // Reading a model file with its ground-motion records into a built model: what `run`, `modes`
-// and later `batch` share. Everything that can be wrong with the input is found here, before
-// any output exists.
+// and `batch` share. Everything that can be wrong with the input is found here, before any
+// output exists.
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "builder/build.hpp"
+#include "model/ground_motion.hpp"
 
 namespace pound::app {
 
 struct LoadedModel {
   builder::ModelSpec spec;
   builder::BuiltModel built;
+  std::vector<model::GroundMotion> records;  // of spec.excitations, as read (before scaling)
 };
 
 // `motion_override`: a record path replacing the first excitation's record (or adding a uniform
 // x excitation in g when the model has none), as `pound run --motion` does.
-LoadedModel load_model(const std::string& path, const std::optional<std::string>& motion_override = {});
+LoadedModel load_model(const std::string& path,
+                       const std::optional<std::string>& motion_override = {});
+
+// A batch case: `record` (its path as the program opens it, format, units, scale and IDA
+// factor) replaces the first excitation's; the model keeps its direction, supports and wave
+// passage. A model without excitations gets it as a uniform excitation along x.
+LoadedModel load_model_with_record(const std::string& path, const builder::ExcitationSpec& record);
 
 }  // namespace pound::app

@@ -273,7 +273,8 @@ namespace {
 
 // The records, scaled as the spec says (targets in g), along their directions.
 void add_excitations(const ModelSpec& spec, const std::vector<model::GroundMotion>& motions,
-                     const std::map<std::string, Index>& nodes, model::Model& model) {
+                     const std::map<std::string, Index>& nodes, model::Model& model,
+                     std::vector<double>& factors) {
   if (motions.size() != spec.excitations.size())
     throw std::invalid_argument("build: one ground motion per excitation is needed");
   const double gravity = spec.units.gravity();
@@ -291,7 +292,8 @@ void add_excitations(const ModelSpec& spec, const std::vector<model::GroundMotio
     if (e.target_sa)
       factor = model::scale_to_spectral_acceleration(motion, *e.target_sa * gravity, e.sa_period,
                                                      e.sa_damping);
-    model::scale(motion, factor);
+    model::scale(motion, factor * e.extra_factor);
+    factors.push_back(factor * e.extra_factor);
     const model::Coordinates direction{e.direction[0],
                                        e.direction.size() > 1 ? e.direction[1] : 0.0};
     if (e.supports.empty()) {
@@ -500,7 +502,7 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
   }
 
   built.analysis = spec.analysis;
-  add_excitations(spec, motions, built.node_index, model);
+  add_excitations(spec, motions, built.node_index, model, built.excitation_factors);
   if (built.analysis.duration == 0.0)
     for (const model::UniformExcitation& excitation : model.excitations)
       built.analysis.duration = std::max(built.analysis.duration, excitation.motion.duration());

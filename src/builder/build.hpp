@@ -46,6 +46,8 @@ struct BuiltModel {
   // The rod pairs the model was generated from, when it is exactly one rod pair and nothing else
   // (then the exact solution applies and `run` reports the verification metrics).
   std::optional<RodPairSpec> sole_rod_pair;
+  // The factor each record of spec.excitations was multiplied by (its scale times extra_factor).
+  std::vector<double> excitation_factors;
 };
 
 // `motions`: the records of spec.excitations, read and converted to model units (io/); the

@@ -131,6 +131,8 @@ struct ExcitationSpec {
   std::optional<double> target_sa;   // [g] at sa_period
   double sa_period = 0.0;
   double sa_damping = 0.05;
+  // Applied after the scale above: a batch's incremental-dynamic-analysis factor.
+  double extra_factor = 1.0;
   std::vector<double> direction{1.0};  // unit vector (1-D: [1] or [-1])
   // Multi-support excitation: the supports this record moves (empty: every support, uniform),
   // optionally reached by a wave at apparent_velocity from `wave_origin` (delay |x - x0| / c).

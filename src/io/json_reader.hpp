@@ -15,6 +15,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -178,5 +179,27 @@ class UniqueNames {
   std::string what_;                          // "id", "file name", ...
   std::map<std::string, std::string> first_;  // name -> JSON path of its first use
 };
+
+// Reads an object with `read`, then rejects every field that `read` did not ask for.
+template <class Read>
+auto read_object(const JsonValue& value, Read read) {
+  JsonObject object(value);
+  if constexpr (std::is_void_v<std::invoke_result_t<Read, JsonObject&>>) {
+    read(object);
+    object.finish();
+  } else {
+    auto spec = read(object);
+    object.finish();
+    return spec;
+  }
+}
+
+// The objects of an optional array field, each read with `read`.
+template <class Read>
+auto read_each(JsonObject& parent, std::string_view key, Read read) {
+  std::vector<std::invoke_result_t<Read, JsonObject&>> specs;
+  for (const JsonValue& item : parent.array(key)) specs.push_back(read_object(item, read));
+  return specs;
+}
 
 }  // namespace pound::io

@@ -1,7 +1,5 @@
 #include "io/model_reader.hpp"
 
-#include "builder/law_catalog.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -14,9 +12,33 @@
 #include <type_traits>
 #include <vector>
 
+#include "builder/law_catalog.hpp"
 #include "io/json_reader.hpp"
 
 namespace pound::io {
+
+void read_record_fields(JsonObject& object, builder::ExcitationSpec& excitation) {
+  excitation.format = object.one_of("format", {"auto", "at2", "columns"}, "auto");
+  excitation.column = object.optional<int>("column", 1, at_least(1));
+  excitation.time_step = object.if_present<double>("time_step", positive);
+  excitation.time_column = object.optional<bool>("time_column", false);
+  excitation.units = object.one_of("units", {"g", "m/s2", "cm/s2", "model"}, "g");
+  if (const std::optional<JsonValue> scale = object.find("scale")) {
+    read_object(*scale, [&excitation](JsonObject& s) {
+      excitation.scale_factor = s.if_present<double>("factor", positive);
+      excitation.target_pga = s.if_present<double>("pga", positive);
+      excitation.target_sa = s.if_present<double>("sa", positive);
+      const int given = excitation.scale_factor.has_value() + excitation.target_pga.has_value() +
+                        excitation.target_sa.has_value();
+      if (given != 1) s.fail("give exactly one of 'factor', 'pga' [g], 'sa' [g] (with 'period')");
+      if (excitation.target_sa) {
+        excitation.sa_period = s.required<double>("period", positive);
+        excitation.sa_damping = s.optional<double>("damping", 0.05, non_negative);
+      }
+    });
+  }
+}
+
 namespace {
 
 using builder::AnalysisSpec;
@@ -39,28 +61,6 @@ constexpr double kAxisLengthTolerance = 1e-9;
 // Where a contact law is given: a stiffness_ratio refers to the elements next to the contact,
 // which only a rod_pair generator knows.
 enum class LawPlace { link, rod_pair };
-
-// Reads an object with `read`, then rejects every field that `read` did not ask for.
-template <class Read>
-auto read_object(const JsonValue& value, Read read) {
-  JsonObject object(value);
-  if constexpr (std::is_void_v<std::invoke_result_t<Read, JsonObject&>>) {
-    read(object);
-    object.finish();
-  } else {
-    auto spec = read(object);
-    object.finish();
-    return spec;
-  }
-}
-
-// The objects of an optional array field, each read with `read`.
-template <class Read>
-auto read_each(JsonObject& parent, std::string_view key, Read read) {
-  std::vector<std::invoke_result_t<Read, JsonObject&>> specs;
-  for (const JsonValue& item : parent.array(key)) specs.push_back(read_object(item, read));
-  return specs;
-}
 
 std::string read_unique_id(JsonObject& object, UniqueNames& ids) {
   const JsonValue value = object.at("id");
@@ -132,7 +132,8 @@ ElementSpec read_element(JsonObject& object, int dimension, UniqueNames& ids) {
     if (dimension != 2) object.at("type").fail("a beam needs a 2-D scene (\"dimension\": 2)");
     element.inertia = object.required<double>("inertia", positive);
     element.extra_mass = object.optional<double>("extra_mass", 0.0, non_negative);
-    element.consistent_mass = object.one_of("mass", {"lumped", "consistent"}, "lumped") == "consistent";
+    element.consistent_mass =
+        object.one_of("mass", {"lumped", "consistent"}, "lumped") == "consistent";
   }
   if (const std::optional<JsonValue> damping = object.find("damping"))
     element.rayleigh = read_object(*damping, [](JsonObject& d) {
@@ -159,7 +160,9 @@ SupportSpec read_support(JsonObject& object, int dimension) {
     const std::string direction = value.as_one_of({"x", "y", "rz"});
     directions.add(direction, value);
     if (direction != "x") require_plane(value, dimension);
-    (direction == "x" ? support.fix_x : direction == "y" ? support.fix_y : support.fix_rotation) = true;
+    (direction == "x"   ? support.fix_x
+     : direction == "y" ? support.fix_y
+                        : support.fix_rotation) = true;
   }
   return support;
 }
@@ -224,7 +227,8 @@ LawSpec read_law(JsonObject& object, LawPlace place) {
       value->fail(fmt::format("must be < 1, got {}", number));
     const bool generator_only = std::find(type.generator_only.begin(), type.generator_only.end(),
                                           parameter.name) != type.generator_only.end();
-    if (generator_only && place == LawPlace::link) value->fail("only allowed inside a rod_pair generator");
+    if (generator_only && place == LawPlace::link)
+      value->fail("only allowed inside a rod_pair generator");
     law.parameters[parameter.name] = number;
   }
   for (const builder::LawChoice& choice : type.choices)
@@ -272,7 +276,8 @@ LinkSpec read_link(JsonObject& object, int dimension, UniqueNames& ids) {
     link.axis = read_axis(*axis, dimension);
   link.law = read_law_in(object.at("law"), LawPlace::link);
   link.rotational = object.one_of("dof", {"translation", "rotation"}, "translation") == "rotation";
-  if (link.rotational && dimension != 2) object.at("dof").fail("a rotational link needs a 2-D scene");
+  if (link.rotational && dimension != 2)
+    object.at("dof").fail("a rotational link needs a 2-D scene");
   if (link.rotational && link.axis) object.at("axis").fail("a rotational link has no axis");
   if (const std::optional<JsonValue> friction = object.find("friction"))
     link.friction = read_object(*friction, [](JsonObject& f) {
@@ -358,18 +363,21 @@ builder::GirderBridgeSpec read_girder_bridge(JsonObject& object, UniqueNames& id
   bridge.id = read_unique_id(object, ids);
   for (const JsonValue& span : object.at("spans").elements(1, 100))
     bridge.spans.push_back(span.as<double>(positive));
-  bridge.girder = read_object(object.at("girder"), [](JsonObject& o) { return read_section(o, 4); });
+  bridge.girder =
+      read_object(object.at("girder"), [](JsonObject& o) { return read_section(o, 4); });
   bridge.pier = read_object(object.at("pier"), [](JsonObject& o) { return read_section(o, 2); });
   bridge.pier_height = object.required<double>("pier_height", positive);
   bridge.pier_yield_drift = object.if_present<double>("pier_yield_drift", positive);
   bridge.bearing = read_law_in(object.at("bearing"), LawPlace::link);
-  bridge.bearing_vertical_stiffness = object.required<double>("bearing_vertical_stiffness", positive);
+  bridge.bearing_vertical_stiffness =
+      object.required<double>("bearing_vertical_stiffness", positive);
   UniqueNames joints("expansion joint");
   if (const std::optional<JsonValue> list = object.find("expansion_joints"))
     for (const JsonValue& value : list->elements()) {
       const int pier = value.as<int>(at_least(1));
       if (pier >= static_cast<int>(bridge.spans.size()))
-        value.fail(fmt::format("is pier {}, but the bridge has piers 1 to {}", pier, bridge.spans.size() - 1));
+        value.fail(fmt::format("is pier {}, but the bridge has piers 1 to {}", pier,
+                               bridge.spans.size() - 1));
       joints.add(std::to_string(pier), value);
       bridge.expansion_joints.push_back(pier);
     }
@@ -453,11 +461,14 @@ IntegratorSpec read_integrator(const JsonValue& value) {
       integrator.gamma = object.optional<double>("gamma", integrator.gamma, at_least(0.5));
     } else if (integrator.type == "hht") {
       integrator.alpha = object.optional<double>("alpha", integrator.alpha, at_least(-1.0 / 3.0));
-      if (integrator.alpha > 0.0) object.at("alpha").fail(fmt::format("must be <= 0, got {}", integrator.alpha));
+      if (integrator.alpha > 0.0)
+        object.at("alpha").fail(fmt::format("must be <= 0, got {}", integrator.alpha));
     } else {
-      integrator.rho_infinity = object.optional<double>("rho_infinity", integrator.rho_infinity, non_negative);
+      integrator.rho_infinity =
+          object.optional<double>("rho_infinity", integrator.rho_infinity, non_negative);
       if (integrator.rho_infinity > 1.0)
-        object.at("rho_infinity").fail(fmt::format("must be <= 1, got {}", integrator.rho_infinity));
+        object.at("rho_infinity")
+            .fail(fmt::format("must be <= 1, got {}", integrator.rho_infinity));
     }
     return integrator;
   });
@@ -476,19 +487,23 @@ builder::DampingSpec read_damping(JsonObject& object) {
   const bool coefficients = object.has("mass_coefficient") || object.has("stiffness_coefficient");
   if (coefficients) {
     damping.mass_coefficient = object.optional<double>("mass_coefficient", 0.0, non_negative);
-    damping.stiffness_coefficient = object.optional<double>("stiffness_coefficient", 0.0, non_negative);
+    damping.stiffness_coefficient =
+        object.optional<double>("stiffness_coefficient", 0.0, non_negative);
     return damping;
   }
   damping.ratio = object.required<double>("ratio", non_negative);
-  if (damping.ratio >= 1.0) object.at("ratio").fail(fmt::format("must be < 1, got {}", damping.ratio));
+  if (damping.ratio >= 1.0)
+    object.at("ratio").fail(fmt::format("must be < 1, got {}", damping.ratio));
   const std::optional<JsonValue> periods = object.find("periods"), modes = object.find("modes");
   if (periods.has_value() == modes.has_value())
-    object.fail("give the two 'periods' or the two 'modes' Rayleigh damping matches the ratio at "
-                "(or 'mass_coefficient' and 'stiffness_coefficient')");
+    object.fail(
+        "give the two 'periods' or the two 'modes' Rayleigh damping matches the ratio at "
+        "(or 'mass_coefficient' and 'stiffness_coefficient')");
   if (periods) {
     const std::vector<JsonValue> values = periods->elements(2, 2);
     damping.periods = {values[0].as<double>(positive), values[1].as<double>(positive)};
-    if ((*damping.periods)[0] == (*damping.periods)[1]) periods->fail("needs two different periods");
+    if ((*damping.periods)[0] == (*damping.periods)[1])
+      periods->fail("needs two different periods");
   } else {
     const std::vector<JsonValue> values = modes->elements(2, 2);
     damping.modes = {values[0].as<int>(at_least(1)), values[1].as<int>(at_least(1))};
@@ -500,11 +515,7 @@ builder::DampingSpec read_damping(JsonObject& object) {
 builder::ExcitationSpec read_excitation(JsonObject& object, int dimension) {
   builder::ExcitationSpec excitation;
   excitation.record = object.required<std::string>("record", non_empty);
-  excitation.format = object.one_of("format", {"auto", "at2", "columns"}, "auto");
-  excitation.column = object.optional<int>("column", 1, at_least(1));
-  excitation.time_step = object.if_present<double>("time_step", positive);
-  excitation.time_column = object.optional<bool>("time_column", false);
-  excitation.units = object.one_of("units", {"g", "m/s2", "cm/s2", "model"}, "g");
+  read_record_fields(object, excitation);
   if (const std::optional<JsonValue> direction = object.find("direction"))
     excitation.direction = read_axis(*direction, dimension);
   if (const std::optional<JsonValue> supports = object.find("supports"))
@@ -517,20 +528,6 @@ builder::ExcitationSpec read_excitation(JsonObject& object, int dimension) {
       return 0;
     });
   }
-  if (const std::optional<JsonValue> scale = object.find("scale")) {
-    read_object(*scale, [&excitation](JsonObject& s) {
-      excitation.scale_factor = s.if_present<double>("factor", positive);
-      excitation.target_pga = s.if_present<double>("pga", positive);
-      excitation.target_sa = s.if_present<double>("sa", positive);
-      const int given = excitation.scale_factor.has_value() + excitation.target_pga.has_value() +
-                        excitation.target_sa.has_value();
-      if (given != 1) s.fail("give exactly one of 'factor', 'pga' [g], 'sa' [g] (with 'period')");
-      if (excitation.target_sa) {
-        excitation.sa_period = s.required<double>("period", positive);
-        excitation.sa_damping = s.optional<double>("damping", 0.05, non_negative);
-      }
-    });
-  }
   return excitation;
 }
 
@@ -541,9 +538,11 @@ AnalysisSpec read_analysis(JsonObject& object) {
   if (const JsonValue step = object.at("time_step"); step.json().is_string()) {
     (void)step.as_one_of({"auto"});
     if (analysis.integrator.type != "central_difference")
-      step.fail("\"auto\" is the stable step of central difference; implicit integrators need a number");
+      step.fail(
+          "\"auto\" is the stable step of central difference; implicit integrators need a number");
     analysis.time_step_auto = true;
-    analysis.safety_factor = object.optional<double>("safety_factor", analysis.safety_factor, positive);
+    analysis.safety_factor =
+        object.optional<double>("safety_factor", analysis.safety_factor, positive);
     if (analysis.safety_factor > 1.0) object.at("safety_factor").fail("must be <= 1");
   } else {
     analysis.time_step = step.as<double>(positive);
@@ -563,8 +562,7 @@ AnalysisSpec read_analysis(JsonObject& object) {
       object.optional<int>("max_step_cuts", analysis.max_step_cuts, non_negative);
   // 2^-30 of a step is already below any meaningful time resolution.
   if (analysis.max_step_cuts > 30)
-    object.at("max_step_cuts")
-        .fail(fmt::format("must be <= 30, got {}", analysis.max_step_cuts));
+    object.at("max_step_cuts").fail(fmt::format("must be <= 30, got {}", analysis.max_step_cuts));
   analysis.max_steps = object.optional<long>("max_steps", analysis.max_steps, non_negative);
   return analysis;
 }
@@ -645,8 +643,9 @@ ModelSpec read_model(JsonObject& top) {
     spec.units = read_object(*units, read_units);
   if (const std::optional<JsonValue> damping = top.find("damping"))
     spec.damping = read_object(*damping, read_damping);
-  spec.excitations = read_each(
-      top, "excitations", [dimension](JsonObject& object) { return read_excitation(object, dimension); });
+  spec.excitations = read_each(top, "excitations", [dimension](JsonObject& object) {
+    return read_excitation(object, dimension);
+  });
   spec.analysis = read_object(top.at("analysis"), read_analysis);
   if (spec.analysis.duration == 0.0 && spec.excitations.empty())
     top.at("analysis").fail("needs 'duration' (it may be left out only with 'excitations')");

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "builder/spec.hpp"
+#include "io/json_reader.hpp"
 
 namespace pound::io {
 
@@ -15,5 +16,9 @@ builder::ModelSpec read_model_file(const std::string& path);
 
 // Same from text; `source` names the file in messages.
 builder::ModelSpec parse_model(const std::string& text, const std::string& source);
+
+// The fields of a record entry that say how to read and scale it (format, column, time_step,
+// time_column, units, scale), shared by model excitations and batch sets.
+void read_record_fields(JsonObject& object, builder::ExcitationSpec& excitation);
 
 }  // namespace pound::io

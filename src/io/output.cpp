@@ -1,5 +1,6 @@
 #include "io/output.hpp"
 
+#include <fmt/compile.h>
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -10,7 +11,7 @@
 
 namespace pound::io {
 
-void write_text_atomic(const std::string& path, const std::string& text) {
+void write_text_atomic(const std::string& path, std::string_view text) {
   const std::string temporary = fmt::format("{}.tmp.{}", path, ::getpid());
   std::FILE* file = std::fopen(temporary.c_str(), "wb");
   if (!file) throw OutputError(fmt::format("{}: cannot write: {}", path, std::strerror(errno)));
@@ -31,20 +32,31 @@ void write_text_atomic(const std::string& path, const std::string& text) {
   }
 }
 
-std::string to_csv(const Table& table) {
-  std::string text;
-  for (std::size_t c = 0; c < table.columns.size(); ++c)
-    text += (c ? "," : "") + table.columns[c];
-  text += '\n';
+namespace {
+
+// Numbers in their shortest form that reads back to the same double (fmt's Dragonbox): exact,
+// and several times faster to write than a fixed 17 digits, which matters for a batch's histories.
+void format_csv(const Table& table, fmt::memory_buffer& text) {
   const std::size_t rows = table.values.empty() ? 0 : table.values.front().size();
+  text.reserve(64 + (rows + 1) * table.columns.size() * 24);  // one allocation for most tables
+  for (std::size_t c = 0; c < table.columns.size(); ++c)
+    fmt::format_to(std::back_inserter(text), "{}{}", c ? "," : "", table.columns[c]);
+  text.push_back('\n');
   for (std::size_t r = 0; r < rows; ++r) {
     for (std::size_t c = 0; c < table.values.size(); ++c) {
-      if (c) text += ',';
-      text += fmt::format("{:.17g}", table.values[c][r]);
+      if (c) text.push_back(',');
+      fmt::format_to(std::back_inserter(text), FMT_COMPILE("{}"), table.values[c][r]);
     }
-    text += '\n';
+    text.push_back('\n');
   }
-  return text;
+}
+
+}  // namespace
+
+std::string to_csv(const Table& table) {
+  fmt::memory_buffer text;
+  format_csv(table, text);
+  return fmt::to_string(text);
 }
 
 std::string to_csv(const TextTable& table) {
@@ -59,7 +71,9 @@ std::string to_csv(const TextTable& table) {
 }
 
 void write_csv_atomic(const std::string& path, const Table& table) {
-  write_text_atomic(path, to_csv(table));
+  fmt::memory_buffer text;
+  format_csv(table, text);
+  write_text_atomic(path, std::string_view(text.data(), text.size()));
 }
 
 void create_output_folder(const std::string& path) {
@@ -68,6 +82,35 @@ void create_output_folder(const std::string& path) {
   if (error || !std::filesystem::is_directory(path))
     throw OutputError(fmt::format("{}: cannot create output folder: {}", path,
                                   error ? error.message() : "a file of that name exists"));
+}
+
+void move_folder_into_place(const std::string& temporary, const std::string& destination) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::path parent = fs::path(destination).parent_path();
+  if (!parent.empty()) create_output_folder(parent.string());
+  fs::remove_all(destination, error);
+  if (!error) fs::rename(temporary, destination, error);
+  if (error)
+    throw OutputError(
+        fmt::format("{}: cannot move the results into place: {}", destination, error.message()));
+}
+
+void remove_folder(const std::string& path) {
+  std::error_code error;
+  std::filesystem::remove_all(path, error);
+  if (error) throw OutputError(fmt::format("{}: cannot remove: {}", path, error.message()));
+}
+
+bool is_file(const std::string& path) {
+  std::error_code error;
+  return std::filesystem::is_regular_file(path, error);
+}
+
+bool is_empty_or_missing_folder(const std::string& path) {
+  std::error_code error;
+  if (!std::filesystem::exists(path, error)) return true;
+  return std::filesystem::is_directory(path, error) && std::filesystem::is_empty(path, error);
 }
 
 }  // namespace pound::io

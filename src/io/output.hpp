@@ -4,6 +4,7 @@
 // name. Failures throw OutputError naming the path and the system's reason.
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/table.hpp"
@@ -23,12 +24,22 @@ struct TextTable {
   std::vector<std::vector<std::string>> rows;
 };
 
-void write_text_atomic(const std::string& path, const std::string& text);
+void write_text_atomic(const std::string& path, std::string_view text);
 std::string to_csv(const TextTable& table);
 void write_csv_atomic(const std::string& path, const Table& table);
 std::string to_csv(const Table& table);
 
 // Creates a folder (and its parents) for outputs; fails if a file of that name exists.
 void create_output_folder(const std::string& path);
+
+// Puts a completed folder of results in place in one rename (creating the destination's parents
+// and removing an older folder there first), so a reader sees either no folder or a whole one.
+void move_folder_into_place(const std::string& temporary, const std::string& destination);
+
+// Removes a folder and everything in it (nothing if it does not exist).
+void remove_folder(const std::string& path);
+
+bool is_file(const std::string& path);
+bool is_empty_or_missing_folder(const std::string& path);
 
 }  // namespace pound::io

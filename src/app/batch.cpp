@@ -1,0 +1,290 @@
+#include "app/batch.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <thread>
+
+#include "app/model_run.hpp"
+#include "core/errors.hpp"
+#include "io/case_rows.hpp"
+#include "io/document.hpp"
+#include "io/json_reader.hpp"
+#include "io/model_reader.hpp"
+#include "io/output.hpp"
+#include "io/set_reader.hpp"
+
+namespace pound::app {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string scale_text(const builder::ExcitationSpec& e) {
+  if (e.scale_factor) return fmt::format("factor {}", *e.scale_factor);
+  if (e.target_pga) return fmt::format("pga {} g", *e.target_pga);
+  if (e.target_sa)
+    return fmt::format("sa {} g at {} s, damping {}", *e.target_sa, e.sa_period, e.sa_damping);
+  return "as recorded";
+}
+
+// What the cases are, in order: an earlier batch in the same folder is resumed only if this is
+// unchanged.
+std::string plan_text(const builder::SetSpec& set, const std::vector<builder::BatchCase>& cases) {
+  std::vector<io::Document> items;
+  for (const builder::BatchCase& c : cases) {
+    const builder::ExcitationSpec& e = set.records[c.record].excitation;
+    items.push_back(io::Document()
+                        .set("case", c.name)
+                        .set("model", set.models[c.model].path)
+                        .set("record", e.record)
+                        .set("format", e.format)
+                        .set("column", e.column)
+                        .set("units", e.units)
+                        .set("record_scale", scale_text(e))
+                        .set("scale", c.scale));
+  }
+  io::Document intensity;
+  intensity.set("type", set.intensity.type)
+      .set("period", set.intensity.period)
+      .set("damping", set.intensity.damping);
+  return io::Document()
+             .set("set", set.source)
+             .set("intensity_measure", intensity)
+             .set("cases", items)
+             .dump() +
+         "\n";
+}
+
+std::string one_line(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  std::replace(text.begin(), text.end(), '\r', ' ');
+  return text;
+}
+
+struct CaseResult {
+  std::size_t index = 0;
+  std::string row;
+  results::CaseSummary summary;
+  double worker_s = 0.0;  // the whole case
+  double setup_s = 0.0;   // reading and building
+  double write_s = 0.0;   // writing its folder
+};
+
+// Runs one case into <out>/.partial, then moves it into place.
+CaseResult run_case(const builder::SetSpec& set, const builder::BatchCase& c,
+                    const std::string& out, int rank) {
+  const Clock::time_point started = Clock::now();
+  RunRequest request;
+  request.model_path = set.models[c.model].path;
+  request.record = set.records[c.record].excitation;
+  request.record->extra_factor = c.scale;
+  request.intensity = set.intensity;
+  request.histories = set.histories;
+  RunOutcome outcome;
+  try {
+    outcome = run_model(request);
+  } catch (const InputError& error) {
+    outcome = RunOutcome();
+    outcome.case_summary.status = "input_error";
+    outcome.case_summary.reason = one_line(error.what());
+    outcome.summary.set("model", request.model_path)
+        .set("status", "input_error")
+        .set("failure", outcome.case_summary.reason);
+  }
+  results::CaseSummary& summary = outcome.case_summary;
+  summary.name = c.name;
+  summary.model = set.models[c.model].id;
+  summary.record = set.records[c.record].id;
+  summary.scale = c.scale;
+  summary.reason = one_line(summary.reason);
+  outcome.summary.set("batch_case", io::Document()
+                                        .set("name", c.name)
+                                        .set("set", set.source)
+                                        .set("record", set.records[c.record].excitation.record)
+                                        .set("scale", c.scale));
+  const Clock::time_point writing = Clock::now();
+  const std::string temporary =
+      (fs::path(out) / ".partial" / fmt::format("{}.r{}", c.index, rank)).string();
+  io::remove_folder(temporary);
+  write_run_outputs(temporary, outcome);
+  CaseResult result;
+  result.index = c.index;
+  result.row = io::case_row(summary);
+  io::write_text_atomic((fs::path(temporary) / "case.csv").string(),
+                        io::case_row_header() + "\n" + result.row + "\n");
+  io::move_folder_into_place(temporary, (fs::path(out) / c.name).string());
+  // The row as it reads back, so statistics are the same whether a case ran now or is resumed.
+  result.summary = io::parse_case_row(result.row, c.name);
+  result.worker_s = seconds_since(started);
+  result.write_s = seconds_since(writing);
+  result.setup_s = outcome.setup_s;
+  return result;
+}
+
+}  // namespace
+
+BatchReport run_batch(const BatchOptions& options, const Cluster& cluster) {
+  // Everything wrong with the set or its models is found before anything is written.
+  const builder::SetSpec set = io::read_set_file(options.set_path);
+  for (const builder::BatchModel& model : set.models) (void)io::read_model_file(model.path);
+  const std::vector<builder::BatchCase> cases = builder::plan_cases(set);
+  const std::string plan = plan_text(set, cases);
+  const std::string out = options.out;
+  const std::string plan_path = (fs::path(out) / "batch_plan.json").string();
+
+  if (io::is_file(plan_path)) {
+    if (!options.resume)
+      throw InputError(out, "",
+                       "holds a batch already: add --resume to finish it, or choose another --out");
+    if (io::read_text_file(plan_path) != plan)
+      throw InputError(plan_path, "",
+                       fmt::format("the cases of {} are not those of the batch in {} (the set, a "
+                                   "record or a path changed): use another --out",
+                                   options.set_path, out));
+  } else if (!io::is_empty_or_missing_folder(out)) {
+    throw InputError(out, "", "exists and is not a batch folder: choose another --out");
+  }
+  cluster.barrier();  // every rank has checked before rank 0 writes
+  if (cluster.is_root()) {
+    io::create_output_folder(out);
+    io::remove_folder((fs::path(out) / ".partial").string());  // cases a killed run left unfinished
+    io::write_text_atomic(plan_path, plan);
+  }
+  cluster.barrier();
+
+  // Complete cases (a whole folder with its row) are kept; the rest run, shared out over ranks.
+  std::map<std::size_t, std::string> rows;
+  std::vector<const builder::BatchCase*> pending;
+  for (const builder::BatchCase& c : cases) {
+    const std::string row_file = (fs::path(out) / c.name / "case.csv").string();
+    std::string row;
+    bool complete = false;
+    if (options.resume && io::is_file(row_file)) {
+      try {
+        const results::CaseSummary summary = io::read_case_file(row_file, row);
+        complete = summary.name == c.name;
+      } catch (const InputError&) {
+        complete = false;  // damaged: run it again
+      }
+    }
+    if (complete)
+      rows[c.index] = row;
+    else
+      pending.push_back(&c);
+  }
+  cluster.barrier();  // every rank has looked before any case is rewritten
+  std::vector<const builder::BatchCase*> mine;
+  for (std::size_t k = 0; k < pending.size(); ++k)
+    if (static_cast<int>(k % static_cast<std::size_t>(cluster.size())) == cluster.rank())
+      mine.push_back(pending[k]);
+
+  BatchReport report;
+  report.cases = cases.size();
+  report.resumed = rows.size();
+  report.ranks = cluster.size();
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  report.jobs = options.jobs > 0 ? options.jobs : cluster.size() > 1 ? 1 : static_cast<int>(cores);
+  const int workers = std::max(1, std::min(report.jobs, static_cast<int>(mine.size())));
+
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> stop{false};
+  std::mutex mutex;  // guards what follows
+  std::vector<CaseResult> results;
+  std::string fatal;
+  BatchProgress progress;
+  progress.total = mine.size();
+  const Clock::time_point started = Clock::now();
+  auto work = [&] {
+    while (!stop) {
+      const std::size_t k = next++;
+      if (k >= mine.size()) return;
+      try {
+        CaseResult result = run_case(set, *mine[k], out, cluster.rank());
+        const std::lock_guard lock(mutex);
+        results.push_back(std::move(result));
+        ++progress.done;
+        progress.failed += results.back().summary.status != "completed";
+        progress.elapsed_s = seconds_since(started);
+        progress.last = &results.back().summary;
+        if (options.progress) options.progress(progress);
+      } catch (const std::exception& error) {
+        // Results cannot be written (disk full, permissions): stop taking cases.
+        const std::lock_guard lock(mutex);
+        if (fatal.empty()) fatal = fmt::format("case {}: {}", mine[k]->name, error.what());
+        stop = true;
+      }
+    }
+  };
+  {
+    std::vector<std::jthread> pool;
+    for (int w = 1; w < workers; ++w) pool.emplace_back(work);
+    work();
+  }
+  report.wall_s = seconds_since(started);
+
+  // Rank 0 gathers every rank's rows and timings.
+  std::vector<std::string> messages;
+  double worker_s = 0.0, solve_s = 0.0, setup_s = 0.0, write_s = 0.0;
+  for (const CaseResult& r : results) {
+    messages.push_back(fmt::format("R{}\t{}", r.index, r.row));
+    worker_s += r.worker_s;
+    solve_s += r.summary.run_time_s.value_or(0.0);
+    setup_s += r.setup_s;
+    write_s += r.write_s;
+  }
+  messages.push_back(fmt::format("T{}\t{}\t{}\t{}\t{}\t{}", results.size(), worker_s, solve_s,
+                                 setup_s, write_s, report.wall_s));
+  if (!fatal.empty()) messages.push_back("F" + one_line(fatal));
+  const std::vector<std::string> gathered = cluster.gather(messages);
+  if (cluster.any(!fatal.empty())) {
+    if (!cluster.is_root()) throw io::OutputError(fatal.empty() ? "another rank failed" : fatal);
+    for (const std::string& m : gathered)
+      if (m.front() == 'F') throw io::OutputError(m.substr(1));
+  }
+  if (!cluster.is_root()) return report;
+
+  for (const std::string& m : gathered) {
+    const std::size_t tab = m.find('\t');
+    if (m.front() == 'R') {
+      rows[std::stoul(m.substr(1, tab - 1))] = m.substr(tab + 1);
+    } else if (m.front() == 'T') {
+      std::size_t ran = 0;
+      double w = 0.0, s = 0.0, setup = 0.0, write = 0.0, wall = 0.0;
+      std::sscanf(m.c_str(), "T%zu\t%lf\t%lf\t%lf\t%lf\t%lf", &ran, &w, &s, &setup, &write, &wall);
+      report.ran += ran;
+      report.worker_s += w;
+      report.solve_s += s;
+      report.setup_s += setup;
+      report.write_s += write;
+      report.wall_s = std::max(report.wall_s, wall);
+    }
+  }
+  if (rows.size() != cases.size())
+    throw std::logic_error(fmt::format("batch: {} rows for {} cases", rows.size(), cases.size()));
+  std::string csv = io::case_row_header() + "\n";
+  std::vector<results::CaseSummary> summaries;
+  for (const auto& [index, row] : rows) {
+    csv += row + "\n";
+    summaries.push_back(io::parse_case_row(row, cases[index].name));
+    report.completed += summaries.back().status == "completed";
+  }
+  report.failed = cases.size() - report.completed;
+  report.statistics = report::batch_statistics(set, summaries);
+  io::write_text_atomic((fs::path(out) / "batch_summary.csv").string(), csv);
+  io::write_text_atomic((fs::path(out) / "batch_stats.json").string(),
+                        report::to_document(report.statistics, set).dump() + "\n");
+  return report;
+}
+
+}  // namespace pound::app

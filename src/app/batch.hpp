@@ -1,0 +1,50 @@
+#pragma once
+// `pound batch`: every (model, record, scale) case of a set, on a pool of worker threads and,
+// under mpirun, over MPI ranks. Each case writes the outputs of `pound run` into its own folder
+// <out>/<model>/<record>/x<scale>/ (plus case.csv, its summary row), built under <out>/.partial
+// and renamed into place when complete, so a killed batch leaves only whole cases and --resume
+// runs the rest. Rank 0 then writes batch_summary.csv (one row per case, in plan order) and
+// batch_stats.json. Every number in them is independent of --jobs and of the number of ranks;
+// only run_time_s varies.
+#include <cstddef>
+#include <functional>
+#include <string>
+
+#include "app/cluster.hpp"
+#include "report/batch_statistics.hpp"
+#include "results/case_summary.hpp"
+
+namespace pound::app {
+
+struct BatchProgress {
+  std::size_t done = 0, total = 0, failed = 0;  // of this rank's cases still to run
+  double elapsed_s = 0.0;
+  const results::CaseSummary* last = nullptr;  // the case just finished
+};
+
+struct BatchOptions {
+  std::string set_path;
+  std::string out;
+  int jobs = 0;         // worker threads per rank; 0: every core, or 1 per rank under MPI
+  bool resume = false;  // keep the complete cases of an earlier run of the same set
+  // Called after each case this rank runs, one call at a time.
+  std::function<void(const BatchProgress&)> progress;
+};
+
+struct BatchReport {
+  std::size_t cases = 0, resumed = 0, ran = 0;
+  std::size_t completed = 0, failed = 0;  // over every case, resumed or not (root only)
+  int ranks = 1, jobs = 1;
+  double wall_s = 0.0;    // of running the cases, on the slowest rank
+  double worker_s = 0.0;  // summed over every case run (all ranks): reading, solving, writing
+  double solve_s = 0.0;   // of that, in the time-step loop (recording included)
+  double setup_s = 0.0;   // reading the model and record, building and assembling
+  double write_s = 0.0;   // writing the case folders
+  report::BatchStatistics statistics;  // root only
+};
+
+// Throws InputError (bad set, model or --out) before any case runs; io::OutputError if results
+// cannot be written. A case that fails (bad record, analysis failure) does not stop the others.
+BatchReport run_batch(const BatchOptions& options, const Cluster& cluster);
+
+}  // namespace pound::app

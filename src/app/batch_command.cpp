@@ -1,0 +1,140 @@
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <boost/program_options.hpp>
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+
+#include "app/batch.hpp"
+#include "app/cluster.hpp"
+#include "app/command_line.hpp"
+#include "app/commands.hpp"
+
+namespace pound::app {
+namespace po = boost::program_options;
+
+namespace {
+
+constexpr const char* kBatchUsage = R"(usage: pound batch SET.json --out DIR [--jobs N] [--resume]
+       mpirun -np K pound batch SET.json --out DIR [--jobs N] [--resume]
+
+Runs every (model, record, scale) case of a set file (docs/batch_format.md) on N worker threads
+(default: every core; under mpirun, the cases are shared over the K ranks, one thread each unless
+--jobs says otherwise). Writes into DIR:
+  <model>/<record>/x<scale>/  per case, what `pound run` writes, and case.csv (its summary row);
+                     moved into place only when complete, so a killed batch leaves whole cases
+  batch_summary.csv  one row per case: status, reason, PGA and intensity measure, impacts, peak
+                     pounding and restrainer forces, joint opening and seat movement, unseating,
+                     drift ratio and ductility, energy balance error, run time
+  batch_stats.json   per model and scale: median, 84th percentile and maximum of each response,
+                     the fraction of records exceeding each limit, and lognormal fragility fits
+  batch_plan.json    the cases, so --resume can check it continues the same batch
+A case that fails (a broken record, an analysis that cannot go on) is reported in its row and does
+not stop the others. Exit code 0 when every case completed, 3 when some failed, 2 for a bad set
+or model (nothing written), 4 when results cannot be written.
+
+options)";
+
+std::string clock_text(double seconds) {
+  const long s = std::lround(seconds);
+  return s >= 3600 ? fmt::format("{}:{:02}:{:02}", s / 3600, s / 60 % 60, s % 60)
+                   : fmt::format("{:02}:{:02}", s / 60, s % 60);
+}
+
+// A bar redrawn in place on a terminal; one line per case otherwise (logs, CI).
+void show_progress(const BatchProgress& p, bool terminal, int rank, int ranks) {
+  const double eta =
+      p.done ? p.elapsed_s / static_cast<double>(p.done) * static_cast<double>(p.total - p.done)
+             : 0.0;
+  const std::string who = ranks > 1 ? fmt::format("rank {}/{}: ", rank, ranks) : std::string();
+  if (terminal) {
+    constexpr int width = 30;
+    const int filled = p.total ? static_cast<int>(width * p.done / p.total) : width;
+    std::cerr << fmt::format("\r{}[{}{}] {}/{} cases, {} failed, {} elapsed, ETA {}  ", who,
+                             std::string(static_cast<std::size_t>(filled), '#'),
+                             std::string(static_cast<std::size_t>(width - filled), ' '), p.done,
+                             p.total, p.failed, clock_text(p.elapsed_s), clock_text(eta));
+    if (p.done == p.total) std::cerr << "\n";
+  } else {
+    std::cerr << fmt::format("{}[{}/{}] {} {}{} ({} elapsed, ETA {})\n", who, p.done, p.total,
+                             p.last->name, p.last->status,
+                             p.last->reason.empty() ? "" : ": " + p.last->reason,
+                             clock_text(p.elapsed_s), clock_text(eta));
+  }
+}
+
+}  // namespace
+
+int batch_command(const Arguments& arguments) {
+  po::options_description options(kBatchUsage);
+  BatchOptions batch;
+  options.add_options()("help,h", "show this help")("out,o", po::value(&batch.out),
+                                                    "output folder (required)")(
+      "jobs,j", po::value(&batch.jobs), "worker threads per process (default: every core)")(
+      "resume", "keep the complete cases of an earlier run into --out and run the rest")(
+      "quiet,q", "print nothing but errors");
+  const auto parsed = parse_command_line(arguments, options, "set", batch.set_path);
+  if (!parsed) return 0;
+  const po::variables_map& vm = *parsed;
+  if (batch.set_path.empty() || batch.out.empty()) {
+    std::cerr << "pound batch: name a set file and --out DIR (see `pound batch --help`)\n";
+    return 1;
+  }
+  if (vm.count("jobs") && batch.jobs < 1) {
+    std::cerr << "pound batch: --jobs must be >= 1\n";
+    return 1;
+  }
+  batch.resume = vm.count("resume") > 0;
+  const bool quiet = vm.count("quiet") > 0;
+  std::unique_ptr<Cluster> started;
+  try {
+    started = std::make_unique<Cluster>();
+  } catch (const std::runtime_error& error) {
+    std::cerr << "pound batch: " << error.what() << "\n";
+    return 1;
+  }
+  const Cluster& cluster = *started;
+  const bool terminal = ::isatty(STDERR_FILENO) && cluster.size() == 1;
+  // Under MPI only rank 0 reports, for its own share of the cases.
+  if (!quiet && cluster.is_root())
+    batch.progress = [&](const BatchProgress& p) {
+      show_progress(p, terminal, cluster.rank(), cluster.size());
+    };
+  const BatchReport report = run_batch(batch, cluster);
+  if (!cluster.is_root()) return 0;
+  if (!quiet) {
+    const double rate = report.wall_s > 0.0 ? static_cast<double>(report.ran) / report.wall_s : 0.0;
+    std::cout << fmt::format(
+        "pound batch {}: {} cases ({} resumed, {} run on {} rank(s) x {} worker(s)), {} completed, "
+        "{} failed -> {}/\n",
+        batch.set_path, report.cases, report.resumed, report.ran, report.ranks, report.jobs,
+        report.completed, report.failed, batch.out);
+    if (report.ran > 0)
+      std::cout << fmt::format(
+          "  {:.2f} s, {:.3g} cases/s; of the workers' time: solving {:.1f} %, reading and "
+          "building {:.1f} %, writing {:.1f} %, the rest {:.1f} %\n",
+          report.wall_s, rate, 100.0 * report.solve_s / report.worker_s,
+          100.0 * report.setup_s / report.worker_s, 100.0 * report.write_s / report.worker_s,
+          100.0 * (report.worker_s - report.solve_s - report.setup_s - report.write_s) /
+              report.worker_s);
+    for (const report::FragilityFit& f : report.statistics.fragilities)
+      std::cout << (f.fitted ? fmt::format("  fragility {} {} > {:.4g}: median {:.4g} g, "
+                                           "dispersion {:.3f} ({} of {} cases exceed)\n",
+                                           f.model, f.quantity, f.limit, f.median, f.dispersion,
+                                           f.exceeded, f.observations)
+                             : fmt::format("  fragility {} {} > {:.4g}: not fitted: {}\n", f.model,
+                                           f.quantity, f.limit, f.reason));
+  }
+  if (report.failed > 0) {
+    std::cerr << fmt::format(
+        "error: {} of {} cases failed (see the status and reason columns of "
+        "{}/batch_summary.csv)\n",
+        report.failed, report.cases, batch.out);
+    return 3;
+  }
+  return 0;
+}
+
+}  // namespace pound::app

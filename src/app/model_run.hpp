@@ -1,0 +1,47 @@
+#pragma once
+// One analysis of a model file, from reading it to the results `pound run` writes: shared by
+// `run` (one model) and `batch` (many cases, on threads and MPI ranks). Nothing here writes to
+// the console, so cases can run side by side.
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "app/model_loading.hpp"
+#include "builder/batch_spec.hpp"
+#include "core/table.hpp"
+#include "io/document.hpp"
+#include "results/case_summary.hpp"
+
+namespace pound::app {
+
+struct RunRequest {
+  std::string model_path;
+  std::optional<std::string> motion;              // `pound run --motion`
+  std::optional<builder::ExcitationSpec> record;  // a batch case's record (replaces `motion`)
+  long max_steps = 0;                             // 0: the model's
+  double time_limit = 0.0;                        // [s] of solving, 0: none
+  builder::IntensityMeasure intensity;            // for the case summary
+  bool histories = true;                          // record and write the model's recorders
+};
+
+struct RunOutcome {
+  io::Document summary;                                  // summary.json
+  std::vector<std::pair<std::string, Table>> histories;  // file name, table
+  std::string headline;  // "pound run MODEL: DOFs, steps, Newton iterations, run time"
+  std::string report;    // the lines `pound run` prints after the headline
+  std::vector<std::string> warnings;
+  std::string failure;  // empty when the analysis completed
+  double failure_time = 0.0;
+  results::CaseSummary case_summary;  // status and responses; the caller names the case
+  double setup_s = 0.0;  // reading the model and records, building, assembling (before the solve)
+};
+
+// Reads, builds and runs. Input errors throw InputError before anything runs; a failed analysis
+// (SolveError) is an outcome with `failure` set and the histories up to then.
+RunOutcome run_model(const RunRequest& request);
+
+// summary.json and the history CSVs into `folder` (created if needed), each file atomically.
+void write_run_outputs(const std::string& folder, const RunOutcome& outcome);
+
+}  // namespace pound::app

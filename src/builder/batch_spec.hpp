@@ -1,0 +1,68 @@
+#pragma once
+// A batch set (docs/batch_format.md): models run against a set of ground-motion records, each
+// record at one or more scale factors (incremental dynamic analysis), and the limits whose
+// exceedance the statistics count. Read and checked by io/set_reader; expanded here into the
+// list of cases, in an order that does not depend on how the cases are later distributed.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "builder/spec.hpp"
+
+namespace pound::builder {
+
+struct BatchModel {
+  std::string id;    // names the case folders and the summary rows
+  std::string path;  // the model file, as the program can open it (relative paths resolved)
+};
+
+// One record (a component of a recording): what replaces the model's first excitation. The
+// model keeps its direction, supports and wave passage; the record brings its file, format,
+// units and scale (none given: the record as recorded).
+struct BatchRecord {
+  std::string id;
+  ExcitationSpec excitation;  // `record` is a path the program can open
+};
+
+// The intensity measure the fragility is fitted against, of the record as scaled for a case.
+struct IntensityMeasure {
+  std::string type = "pga";  // "pga": peak ground acceleration [g]; "sa": S_a(period) [g]
+  double period = 0.0;
+  double damping = 0.05;
+};
+
+// A response quantity of the summary rows, and the value above which it counts as exceeded.
+struct ResponseLimit {
+  std::string quantity;  // a column of batch_summary.csv (batch_quantities())
+  double value = 0.0;
+};
+
+struct SetSpec {
+  std::string source;  // the set file, for messages
+  std::string title;
+  std::vector<BatchModel> models;
+  std::vector<BatchRecord> records;
+  std::vector<double> scales{1.0};  // IDA factors applied on top of each record's own scale
+  IntensityMeasure intensity;
+  std::vector<ResponseLimit> limits;
+  // Whether each case writes the time histories its model's recorders ask for (false: only
+  // summary.json and case.csv, for large IDA sets where the histories would fill the disk).
+  bool histories = true;
+};
+
+// One analysis of a batch: a model under a record at a scale.
+struct BatchCase {
+  std::size_t index = 0;  // position in the plan: the row of batch_summary.csv
+  std::size_t model = 0, record = 0;
+  double scale = 1.0;
+  std::string name;  // "<model id>/<record id>/x<scale>": the case's folder under --out
+};
+
+// The cases model by model, record by record, scale by scale.
+std::vector<BatchCase> plan_cases(const SetSpec& set);
+
+// The response quantities a batch summarises (the numeric columns of a summary row that the
+// statistics and limits may name).
+const std::vector<std::string>& batch_quantities();
+
+}  // namespace pound::builder

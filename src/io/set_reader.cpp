@@ -1,0 +1,179 @@
+#include "io/set_reader.hpp"
+
+#include <fmt/format.h>
+#include <fnmatch.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "io/json_reader.hpp"
+#include "io/model_reader.hpp"
+
+namespace pound::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool is_safe_name_char(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' ||
+         c == '_' || c == '-';
+}
+
+// Ids name folders: letters, digits, '.', '_', '-', and not "." or "..".
+std::string read_id(const JsonValue& value) {
+  std::string id = value.as<std::string>(non_empty);
+  if (!std::all_of(id.begin(), id.end(), is_safe_name_char) || id == "." || id == "..")
+    value.fail(fmt::format("id '{}' names a folder: use letters, digits, '.', '_' or '-'", id));
+  return id;
+}
+
+// An id made from a file name, with anything unsafe for a folder name replaced by '_'.
+std::string id_from_file(const fs::path& file) {
+  std::string id = file.stem().string();
+  std::replace_if(
+      id.begin(), id.end(), [](char c) { return !is_safe_name_char(c); }, '_');
+  return id.empty() || id == "." || id == ".." ? "record" : id;
+}
+
+// A path in the set file, relative to the set file's folder.
+std::string resolve(const fs::path& folder, const std::string& path) {
+  return fs::path(path).is_absolute() ? path : (folder / path).lexically_normal().string();
+}
+
+void require_file(const JsonValue& where, const std::string& path, const char* what) {
+  std::error_code error;
+  if (!fs::is_regular_file(path, error))
+    where.fail(fmt::format("{} '{}' {}", what, path,
+                           fs::exists(path, error) ? "is not a file" : "does not exist"));
+}
+
+builder::BatchModel read_model_entry(const JsonValue& value, const fs::path& folder) {
+  builder::BatchModel model;
+  if (value.json().is_string()) {
+    model.path = resolve(folder, value.as<std::string>(non_empty));
+    model.id = id_from_file(model.path);
+    require_file(value, model.path, "model file");
+    return model;
+  }
+  read_object(value, [&](JsonObject& object) {
+    const JsonValue file = object.at("file");
+    model.path = resolve(folder, file.as<std::string>(non_empty));
+    require_file(file, model.path, "model file");
+    const std::optional<JsonValue> id = object.find("id");
+    model.id = id ? read_id(*id) : id_from_file(model.path);
+  });
+  return model;
+}
+
+// One record entry: a file, or every file of a folder matching a pattern (in name order).
+std::vector<builder::BatchRecord> read_record_entry(JsonObject& object, const fs::path& folder) {
+  builder::ExcitationSpec excitation;
+  read_record_fields(object, excitation);
+  const std::optional<JsonValue> file = object.find("file");
+  const std::optional<JsonValue> records_folder = object.find("folder");
+  const std::optional<JsonValue> id = object.find("id");
+  if (file.has_value() == records_folder.has_value())
+    object.fail("give either 'file' (one record) or 'folder' with 'pattern' (every match)");
+  const std::string suffix =
+      excitation.column == 1 ? std::string() : fmt::format("_col{}", excitation.column);
+  std::vector<builder::BatchRecord> records;
+  if (file) {
+    excitation.record = resolve(folder, file->as<std::string>(non_empty));
+    require_file(*file, excitation.record, "record");
+    records.push_back({id ? read_id(*id) : id_from_file(excitation.record) + suffix, excitation});
+    return records;
+  }
+  if (id) id->fail("an id names one record: give it with 'file', not 'folder'");
+  const std::string path = resolve(folder, records_folder->as<std::string>(non_empty));
+  const JsonValue pattern_value = object.at("pattern");
+  const std::string pattern = pattern_value.as<std::string>(non_empty);
+  std::error_code error;
+  if (!fs::is_directory(path, error))
+    records_folder->fail(fmt::format(
+        "folder '{}' {}", path, fs::exists(path, error) ? "is not a folder" : "does not exist"));
+  std::vector<fs::path> matches;
+  for (const fs::directory_entry& entry : fs::directory_iterator(path, error))
+    if (entry.is_regular_file() &&
+        ::fnmatch(pattern.c_str(), entry.path().filename().c_str(), 0) == 0)
+      matches.push_back(entry.path());
+  if (error) records_folder->fail(fmt::format("cannot list '{}': {}", path, error.message()));
+  if (matches.empty())
+    pattern_value.fail(fmt::format("no file in '{}' matches '{}'", path, pattern));
+  std::sort(matches.begin(), matches.end());
+  for (const fs::path& match : matches) {
+    excitation.record = match.string();
+    records.push_back({id_from_file(match) + suffix, excitation});
+  }
+  return records;
+}
+
+builder::IntensityMeasure read_intensity(JsonObject& object) {
+  builder::IntensityMeasure measure;
+  measure.type = object.one_of("type", {"pga", "sa"});
+  if (measure.type == "sa") {
+    measure.period = object.required<double>("period", positive);
+    measure.damping = object.optional<double>("damping", 0.05, non_negative);
+  }
+  return measure;
+}
+
+builder::SetSpec read_set(JsonObject& top) {
+  builder::SetSpec set;
+  set.source = top.value().file();
+  const fs::path folder = fs::path(set.source).parent_path();
+  set.title = top.optional<std::string>("title", std::string());
+
+  UniqueNames model_ids("model id");
+  const JsonValue models = top.at("models");
+  for (const JsonValue& entry : models.elements(1)) {
+    set.models.push_back(read_model_entry(entry, folder));
+    model_ids.add(set.models.back().id, entry);
+  }
+
+  UniqueNames record_ids("record id");
+  const JsonValue records = top.at("records");
+  for (const JsonValue& entry : records.elements(1)) {
+    const std::vector<builder::BatchRecord> expanded =
+        read_object(entry, [&](JsonObject& object) { return read_record_entry(object, folder); });
+    for (const builder::BatchRecord& record : expanded) {
+      record_ids.add(record.id, entry);
+      set.records.push_back(record);
+    }
+  }
+
+  if (const std::optional<JsonValue> scales = top.find("scales")) {
+    set.scales.clear();
+    for (const JsonValue& scale : scales->elements(1)) {
+      const double factor = scale.as<double>(positive);
+      if (std::find(set.scales.begin(), set.scales.end(), factor) != set.scales.end())
+        scale.fail(fmt::format("scale {} is given twice", factor));
+      set.scales.push_back(factor);
+    }
+  }
+  set.histories = top.optional<bool>("histories", true);
+  if (const std::optional<JsonValue> intensity = top.find("intensity_measure"))
+    set.intensity = read_object(*intensity, read_intensity);
+  if (const std::optional<JsonValue> limits = top.find("limits")) {
+    JsonObject object(*limits);
+    for (const std::string& quantity : builder::batch_quantities())
+      if (const std::optional<double> value = object.if_present<double>(quantity, positive))
+        set.limits.push_back({quantity, *value});
+    object.finish();  // a name that is not a quantity, with the closest one suggested
+  }
+  return set;
+}
+
+}  // namespace
+
+builder::SetSpec parse_set(const std::string& text, const std::string& source) {
+  const nlohmann::json document = parse_json(text, source);
+  return read_object(JsonValue(document, source, ""), read_set);
+}
+
+builder::SetSpec read_set_file(const std::string& path) {
+  return parse_set(read_text_file(path), path);
+}
+
+}  // namespace pound::io

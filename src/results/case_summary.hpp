@@ -1,0 +1,56 @@
+#pragma once
+// The pounding summary of one analysis in a batch: one row of batch_summary.csv. Quantities a
+// model does not have (no joints, no storeys) are absent rather than zero, so statistics never
+// mix "no joint" with "a joint that did not open".
+#include <optional>
+#include <string>
+
+namespace pound::results {
+
+struct CaseSummary {
+  std::string name;    // the case folder under the batch's output, "<model>/<record>/x<scale>"
+  std::string model;   // model id
+  std::string record;  // record id
+  double scale = 1.0;  // the IDA factor on top of the record's own scale
+  std::string status;  // "completed", "failed" (the analysis stopped), "input_error"
+  std::string reason;  // why it failed, empty when completed
+
+  std::optional<double> pga_g;      // peak of the record as applied [g]
+  std::optional<double> intensity;  // the set's intensity measure of the record as applied [g]
+  std::optional<double> end_time;   // how far the analysis got [T]
+  std::optional<double> steps;
+  // Over the contact links (every law but springs, restrainers and hooks): engagements, and the
+  // largest compression with the link that carried it.
+  std::optional<double> impacts;
+  std::optional<double> max_pounding_force;
+  std::string max_pounding_link;
+  // Over restrainers and hooks: the largest tension and its link.
+  std::optional<double> max_restrainer_force;
+  std::string max_restrainer_link;
+  // Over the joint monitors: widest opening, largest movement on a seat, the least margin left
+  // on a seat and whether any girder came off its seat.
+  std::optional<double> max_joint_opening;
+  std::optional<double> max_seat_movement;
+  std::optional<double> min_unseating_margin;
+  std::optional<bool> unseated;
+  // Over the storey and pier monitors: largest drift ratio and ductility demand.
+  std::optional<double> max_drift_ratio;
+  std::optional<double> max_ductility;
+  std::optional<double> energy_balance_error;  // worst over the run
+  std::optional<double> run_time_s;  // of the solve; the one column that varies run to run
+
+  // A numeric response quantity by its column name (builder::batch_quantities()).
+  std::optional<double> quantity(const std::string& column) const {
+    if (column == "impacts") return impacts;
+    if (column == "max_pounding_force") return max_pounding_force;
+    if (column == "max_restrainer_force") return max_restrainer_force;
+    if (column == "max_joint_opening") return max_joint_opening;
+    if (column == "max_seat_movement") return max_seat_movement;
+    if (column == "max_drift_ratio") return max_drift_ratio;
+    if (column == "max_ductility") return max_ductility;
+    if (column == "energy_balance_error") return energy_balance_error;
+    return std::nullopt;
+  }
+};
+
+}  // namespace pound::results
