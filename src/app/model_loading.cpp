@@ -1,13 +1,35 @@
 #include "app/model_loading.hpp"
 
+#include <fmt/format.h>
+
 #include <filesystem>
 
 #include "core/errors.hpp"
 #include "io/ground_motion_reader.hpp"
 #include "io/model_reader.hpp"
+#include "io/system_memory.hpp"
 
 namespace pound::app {
 namespace {
+
+constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
+
+// A model too large for this machine is refused before its generators allocate it. Measured:
+// 0.85 KiB per DOF for a 10^6-DOF rod pair (everything `run` holds, 200 steps); 2 KiB allows for
+// the wider bands of frames.
+void check_model_fits(const builder::ModelSpec& spec, const std::string& path) {
+  constexpr double bytes_per_dof = 2048.0;
+  const builder::ModelSize size = builder::model_size(spec);
+  const double needed = bytes_per_dof * static_cast<double>(size.dofs);
+  const std::optional<std::size_t> available = io::available_memory_bytes();
+  if (available && needed > static_cast<double>(*available))
+    throw InputError(path, size.largest_path,
+                     fmt::format("the model would have up to {} DOFs ({} nodes, {} of them from "
+                                 "here) and need about {:.1f} GiB, more than the {:.1f} GiB of "
+                                 "memory available",
+                                 size.dofs, size.nodes, size.largest_nodes, needed / kGiB,
+                                 static_cast<double>(*available) / kGiB));
+}
 
 // Reads the records of `loaded.spec` and builds it. `first_as_given`: the first record's path is
 // the caller's (relative to where pound runs), not relative to the model file.
@@ -40,6 +62,7 @@ void read_records_and_build(const std::string& path, bool first_as_given, Loaded
 LoadedModel load_model(const std::string& path, const std::optional<std::string>& motion_override) {
   LoadedModel loaded;
   loaded.spec = io::read_model_file(path);
+  check_model_fits(loaded.spec, path);
   builder::ModelSpec& spec = loaded.spec;
   if (motion_override) {
     if (spec.excitations.empty()) spec.excitations.push_back({});
@@ -53,6 +76,7 @@ LoadedModel load_model(const std::string& path, const std::optional<std::string>
 LoadedModel load_model_with_record(const std::string& path, const builder::ExcitationSpec& record) {
   LoadedModel loaded;
   loaded.spec = io::read_model_file(path);
+  check_model_fits(loaded.spec, path);
   builder::ModelSpec& spec = loaded.spec;
   if (spec.excitations.empty()) spec.excitations.push_back({});
   builder::ExcitationSpec& first = spec.excitations.front();

@@ -12,6 +12,7 @@
 #include "builder/build.hpp"
 #include "core/errors.hpp"
 #include "io/output.hpp"
+#include "io/system_memory.hpp"
 #include "model/ground_motion.hpp"
 #include "report/rod_impact.hpp"
 #include "report/rod_impact_report.hpp"
@@ -65,6 +66,27 @@ io::Document link_document(const model::Link& link, const results::LinkSummary& 
   if (s.first_contact >= 0.0)
     doc.set("first_contact", s.first_contact).set("last_contact", s.last_contact);
   return doc;
+}
+
+// The histories are held in memory until the run ends: refuse a run whose recorders would not
+// fit (a long record at a fine step with many nodes recorded) before it starts. A table grows by
+// doubling and is copied once for writing: three times its size at the peak.
+void check_histories_fit(const std::vector<std::unique_ptr<results::Recorder>>& recorders,
+                         const builder::AnalysisSpec& analysis, const std::string& model_path) {
+  std::size_t columns = 0;
+  for (const auto& recorder : recorders) columns += recorder->table().columns.size();
+  if (columns == 0) return;
+  const double steps = std::ceil(analysis.duration / analysis.time_step) + 1.0;
+  const double needed = 3.0 * 8.0 * steps * static_cast<double>(columns);
+  const std::optional<std::size_t> available = io::available_memory_bytes();
+  constexpr double gib = 1024.0 * 1024.0 * 1024.0;
+  if (available && needed > static_cast<double>(*available))
+    throw InputError(model_path, "/recorders",
+                     fmt::format("recording {} columns over {:.0f} steps needs about {:.1f} GiB, "
+                                 "more than the {:.1f} GiB of memory available: record fewer "
+                                 "links or nodes, or a shorter duration",
+                                 columns, steps, needed / gib,
+                                 static_cast<double>(*available) / gib));
 }
 
 // The numbers a batch row needs, from what the run recorded.
@@ -159,6 +181,7 @@ RunOutcome run_model(const RunRequest& request) {
   // Without histories nothing is recorded, not just not written.
   auto recorders = request.histories ? make_recorders(built, system->dofs(), system->links())
                                      : std::vector<std::unique_ptr<results::Recorder>>();
+  check_histories_fit(recorders, built.analysis, model_path);
   std::vector<Index> normal_rows;
   for (Index k = 0; k < system->links().count(); ++k) normal_rows.push_back(system->links().row(k));
   results::LinkSummaries links(std::move(normal_rows));
@@ -190,6 +213,16 @@ RunOutcome run_model(const RunRequest& request) {
       energy.record(s);
       drifts.record(s);
       joints.record(s);
+      // Energy the integration made up: an unstable step or an unresolved stiff contact. The
+      // histories up to here are kept; the run stops rather than go on to a NaN.
+      const double created = energy.terms().created_fraction();
+      if (created > results::kEnergyGrowthLimit)
+        throw SolveError(
+            s.time, fmt::format("the structure holds {:.1f} % more energy than was put in (of the "
+                                "largest energy term; limit {:.0f} %): the integration is "
+                                "creating energy, so the time step is too large for the "
+                                "integrator or for a stiff link",
+                                100.0 * created, 100.0 * results::kEnergyGrowthLimit));
     });
   } catch (const SolveError& error) {
     failure = error.reason();
@@ -263,6 +296,15 @@ RunOutcome run_model(const RunRequest& request) {
   summary.set("energy", energy_document);
   // Warnings for results an engineer should not trust as they are.
   std::vector<std::string>& warnings = outcome.warnings;
+  // A record much longer than the analysis was read whole for nothing; say so, it may be a
+  // mistaken duration.
+  for (std::size_t k = 0; k < loaded.records.size(); ++k)
+    if (loaded.records[k].duration() > 10.0 * built.analysis.duration)
+      warnings.push_back(fmt::format(
+          "record '{}' lasts {:.4g} s but the analysis stops at {:.4g} s: only its first {:.1f} % "
+          "is used (is /analysis/duration what you meant?)",
+          loaded.records[k].name, loaded.records[k].duration(), built.analysis.duration,
+          100.0 * built.analysis.duration / loaded.records[k].duration()));
   for (std::size_t k = 0; k < built.joint_monitors.size(); ++k)
     if (built.joint_monitors[k].seat_width > 0.0 &&
         joints.peaks()[k].peak_seat_movement >= built.joint_monitors[k].seat_width)

@@ -571,4 +571,31 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
   return built;
 }
 
+ModelSize model_size(const ModelSpec& spec) {
+  ModelSize size;
+  auto add = [&size](std::size_t nodes, const std::string& path) {
+    size.nodes += nodes;
+    if (nodes > size.largest_nodes) {
+      size.largest_nodes = nodes;
+      size.largest_path = path;
+    }
+  };
+  add(spec.nodes.size(), "/nodes");
+  for (std::size_t k = 0; k < spec.rod_pairs.size(); ++k)
+    add(static_cast<std::size_t>(spec.rod_pairs[k].left.elements) +
+            static_cast<std::size_t>(spec.rod_pairs[k].right.elements) + 2,
+        fmt::format("/generators/{}", spec.rod_pair_generator_index.at(k)));
+  for (const AdjacentBuildingsSpec& pair : spec.building_pairs)
+    add(2 * (pair.left.storeys.size() + pair.right.storeys.size() + 2),
+        fmt::format("/generators/{}", pair.generator_index));
+  for (const GirderBridgeSpec& bridge : spec.bridges) {
+    const std::size_t spans = bridge.spans.size();
+    add(spans * (static_cast<std::size_t>(bridge.girder.elements) + 3) +
+            (spans + 1) * (static_cast<std::size_t>(bridge.pier.elements) + 3) + 8,
+        fmt::format("/generators/{}", bridge.generator_index));
+  }
+  size.dofs = size.nodes * (spec.dimension == 1 ? 1 : 3);
+  return size;
+}
+
 }  // namespace pound::builder

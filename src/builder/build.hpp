@@ -50,6 +50,17 @@ struct BuiltModel {
   std::vector<double> excitation_factors;
 };
 
+// The size of the model a spec makes, generators included, known before anything is built (a
+// generator asked for 10^9 elements must be refused, not allocated): nodes and an upper bound on
+// the DOFs, and the entry that makes the most nodes, for the message.
+struct ModelSize {
+  std::size_t nodes = 0;
+  std::size_t dofs = 0;  // nodes x DOFs per node of the scene (1 in 1-D, at most 3 in 2-D)
+  std::string largest_path = "/nodes";
+  std::size_t largest_nodes = 0;
+};
+ModelSize model_size(const ModelSpec& spec);
+
 // `motions`: the records of spec.excitations, read and converted to model units (io/); the
 // builder scales them as the spec says.
 BuiltModel build(const ModelSpec& spec, const std::vector<model::GroundMotion>& motions = {});

@@ -5,12 +5,14 @@
 
 namespace pound::results {
 
-double EnergyTerms::balance_error() const {
+double EnergyTerms::created_fraction() const {
   const double largest = std::max({std::abs(input), kinetic, strain, std::abs(damping),
                                    std::abs(links), initial});
   const double residual = kinetic + strain + damping + links - input - initial;
-  return largest > 0.0 ? std::abs(residual) / largest : 0.0;
+  return largest > 0.0 ? residual / largest : 0.0;
 }
+
+double EnergyTerms::balance_error() const { return std::abs(created_fraction()); }
 
 void EnergyBalance::record(const State& state) {
   const Index n = system_.size();

@@ -22,7 +22,14 @@ struct EnergyTerms {
   double initial = 0.0;  // kinetic + strain at the start
   // |kinetic + strain + damping + links - input - initial| over the largest term.
   double balance_error() const;
+  // The same without the absolute value: > 0 when the structure holds or has dissipated more
+  // energy than was put in, i.e. the integration created energy.
+  double created_fraction() const;
 };
+
+// A run whose created energy passes this fraction of the largest term stops as failed (the
+// stability map's definition of an unstable cell, DESIGN 3.1).
+inline constexpr double kEnergyGrowthLimit = 0.10;
 
 class EnergyBalance {
  public:

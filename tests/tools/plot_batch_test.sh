@@ -1,0 +1,145 @@
+#!/usr/bin/env bash
+# tools/plot_batch.py on a real batch: the figures exist and are PNGs; bad input exits 2 cleanly.
+# usage: plot_batch_test.sh POUND_BINARY REPO_ROOT
+set -euo pipefail
+if [ $# -ne 2 ]; then
+  echo "usage: $0 POUND_BINARY REPO_ROOT" >&2
+  exit 1
+fi
+pound=$1
+root=$2
+script="$root/tools/plot_batch.py"
+
+fail() {
+  echo "FAIL: $*" >&2
+  exit 1
+}
+
+# Debian's python3-matplotlib is seen by /usr/bin/python3, not necessarily by the python3 on PATH
+# (pyenv, a venv): take the first of the two that can import it.
+python=""
+for candidate in /usr/bin/python3 python3; do
+  if command -v "$candidate" >/dev/null 2>&1 && "$candidate" -c "import matplotlib" >/dev/null 2>&1; then
+    python=$(command -v "$candidate")
+    break
+  fi
+done
+[ -n "$python" ] || fail "matplotlib is not importable by /usr/bin/python3 nor by python3 on PATH; \
+install it with tools/install_dependencies.sh (Debian package python3-matplotlib)"
+echo "using $python"
+
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+export MPLCONFIGDIR="$tmp/matplotlib"
+
+is_png() {  # a PNG signature and more than a blank canvas
+  local file=$1
+  [ -f "$file" ] || fail "$file was not written"
+  [ "$(head -c 8 "$file" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] ||
+    fail "$file is not a PNG"
+  [ "$(stat -c %s "$file")" -gt 10000 ] || fail "$file is only $(stat -c %s "$file") bytes"
+}
+
+check_folder() {  # folder, expected PNGs...: each written and printed, one line per PNG, no leftovers
+  local folder=$1
+  shift
+  local png
+  for png in "$@"; do
+    is_png "$folder/$png"
+    grep -qx "$folder/$png" "$tmp/stdout" || fail "plot_batch.py did not print $folder/$png"
+  done
+  local written
+  written=$(find "$folder" -maxdepth 1 -name '*.png' | wc -l)
+  [ "$(wc -l <"$tmp/stdout")" -eq "$written" ] ||
+    fail "expected one line per PNG written ($written), got: $(cat "$tmp/stdout")"
+  ! ls -A "$folder" | grep -q '\.tmp\.' || fail "temporary files left in $folder"
+}
+
+# 1. A real batch: the three-span bridge under four records at four scales, two limits.
+batch="$tmp/batch"
+"$pound" batch "$root/sets/three_span_bridge_ida.json" --out "$batch" -q ||
+  fail "pound batch sets/three_span_bridge_ida.json failed"
+[ -f "$batch/batch_summary.csv" ] && [ -f "$batch/batch_stats.json" ] ||
+  fail "pound batch wrote no batch_summary.csv or batch_stats.json"
+status=0
+"$python" "$script" "$batch" --dpi 70 >"$tmp/stdout" 2>"$tmp/stderr" || status=$?
+[ "$status" -eq 0 ] || fail "plot_batch.py exited $status on a good batch folder: $(cat "$tmp/stderr")"
+! grep -q Traceback "$tmp/stderr" || fail "traceback on a good batch folder: $(cat "$tmp/stderr")"
+expected=()
+header=$(head -n 1 "$batch/batch_summary.csv")
+for quantity in impacts max_pounding_force max_restrainer_force max_joint_opening \
+                max_seat_movement max_drift_ratio max_ductility; do
+  case ",$header," in *",$quantity,"*) expected+=("ida_$quantity.png") ;; esac
+done
+grep -q '"fitted"' "$batch/batch_stats.json" && expected+=(fragility.png)  # a fragility entry
+[ "${#expected[@]}" -ge 2 ] || fail "expected IDA and fragility figures, header: $header"
+check_folder "$batch" "${expected[@]}"
+
+# 2. --quantity restricts the IDA figures; the python3 on PATH works too (it starts
+#    /usr/bin/python3 if it has no matplotlib); failed cases and input errors are left out.
+only="$tmp/only"
+mkdir "$only"
+cp "$batch/batch_stats.json" "$only/"
+{
+  cat "$batch/batch_summary.csv"
+  echo 'extra/failed/x1,three_span_bridge,synthetic_firm_01,1,failed,"stopped: ""diverged"", at t = 3",0.3,0.3,3,,,,,,,,,,,,,,'
+  echo 'extra/missing/x1,three_span_bridge,missing,1,input_error,"cannot read record, no such file",,,,,,,,,,,,,,,,,'
+} >"$only/batch_summary.csv"
+interpreter=$python
+command -v python3 >/dev/null 2>&1 && interpreter=python3
+status=0
+"$interpreter" "$script" "$only" --dpi 60 --quantity max_joint_opening >"$tmp/stdout" 2>"$tmp/stderr" || status=$?
+[ "$status" -eq 0 ] || fail "$interpreter plot_batch.py --quantity exited $status: $(cat "$tmp/stderr")"
+only_expected=(ida_max_joint_opening.png)
+[[ " ${expected[*]} " == *" fragility.png "* ]] && only_expected+=(fragility.png)
+check_folder "$only" "${only_expected[@]}"
+
+status=0
+"$python" "$script" "$only" --quantity max_joint_openin >/dev/null 2>"$tmp/stderr" || status=$?
+[ "$status" -eq 1 ] || fail "expected exit 1 for an unknown --quantity, got $status: $(cat "$tmp/stderr")"
+grep -q 'max_joint_opening' "$tmp/stderr" || fail "no suggestion for --quantity max_joint_openin"
+
+# 3. Bad input: exit 2, a message naming the folder or file, never a traceback.
+expect_input_error() {  # folder, text the message must contain
+  local status=0
+  "$python" "$script" "$1" >/dev/null 2>"$tmp/stderr" || status=$?
+  [ "$status" -eq 2 ] || fail "expected exit 2 for $1, got $status: $(cat "$tmp/stderr")"
+  grep -qF "$2" "$tmp/stderr" || fail "message for $1 does not name $2: $(cat "$tmp/stderr")"
+  ! grep -q Traceback "$tmp/stderr" || fail "traceback for $1: $(cat "$tmp/stderr")"
+  ! find "$1" -maxdepth 1 -name '*.png' 2>/dev/null | grep -q . || fail "PNGs written into $1"
+}
+expect_input_error "$tmp/does_not_exist" "$tmp/does_not_exist"
+
+mkdir "$tmp/no_summary"
+cp "$batch/batch_stats.json" "$tmp/no_summary/"
+expect_input_error "$tmp/no_summary" "$tmp/no_summary"
+
+mkdir "$tmp/ragged"
+cp "$batch/batch_stats.json" "$tmp/ragged/"
+{ head -n 3 "$batch/batch_summary.csv"; echo 'a/b/x1,three_span_bridge,b,1,completed,,0.3'; } \
+  >"$tmp/ragged/batch_summary.csv"
+expect_input_error "$tmp/ragged" "$tmp/ragged/batch_summary.csv"
+
+mkdir "$tmp/not_a_number"
+cp "$batch/batch_stats.json" "$tmp/not_a_number/"
+head -n 2 "$batch/batch_summary.csv" >"$tmp/not_a_number/batch_summary.csv"
+sed -n 3p "$batch/batch_summary.csv" | sed 's/,completed,,\([^,]*\),[^,]*,/,completed,,\1,abc,/' \
+  >>"$tmp/not_a_number/batch_summary.csv"
+grep -q ',abc,' "$tmp/not_a_number/batch_summary.csv" || fail "could not corrupt the intensity cell"
+expect_input_error "$tmp/not_a_number" "$tmp/not_a_number/batch_summary.csv"
+
+mkdir "$tmp/not_a_summary"
+printf 'time,girder.u_x\n0,0\n' >"$tmp/not_a_summary/batch_summary.csv"
+expect_input_error "$tmp/not_a_summary" "$tmp/not_a_summary/batch_summary.csv"
+
+mkdir "$tmp/bad_json"
+cp "$batch/batch_summary.csv" "$tmp/bad_json/"
+printf '{"groups": [' >"$tmp/bad_json/batch_stats.json"
+expect_input_error "$tmp/bad_json" "$tmp/bad_json/batch_stats.json"
+
+mkdir "$tmp/bad_stats"
+cp "$batch/batch_summary.csv" "$tmp/bad_stats/"
+printf '{"groups": [{"model": "m", "scale": "big"}]}' >"$tmp/bad_stats/batch_stats.json"
+expect_input_error "$tmp/bad_stats" "$tmp/bad_stats/batch_stats.json"
+
+echo "plot_batch_test: ok (${expected[*]})"
