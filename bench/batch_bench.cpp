@@ -27,7 +27,8 @@ void batch_three_span_bridge(benchmark::State& state) {
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   for (std::size_t at = text.find("\"../"); at != std::string::npos; at = text.find("\"../", at))
     text.replace(at, 1, "\"" + bench + "/");
-  text.insert(text.rfind('}'), state.range(1) ? ", \"histories\": true\n" : ", \"histories\": false\n");
+  text.insert(text.rfind('}'),
+              state.range(1) ? ", \"histories\": true\n" : ", \"histories\": false\n");
   const std::string set = (folder / "set.json").string();
   std::ofstream(set) << text;
 

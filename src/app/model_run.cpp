@@ -81,12 +81,12 @@ void check_histories_fit(const std::vector<std::unique_ptr<results::Recorder>>& 
   const std::optional<std::size_t> available = io::available_memory_bytes();
   constexpr double gib = 1024.0 * 1024.0 * 1024.0;
   if (available && needed > static_cast<double>(*available))
-    throw InputError(model_path, "/recorders",
-                     fmt::format("recording {} columns over {:.0f} steps needs about {:.1f} GiB, "
-                                 "more than the {:.1f} GiB of memory available: record fewer "
-                                 "links or nodes, or a shorter duration",
-                                 columns, steps, needed / gib,
-                                 static_cast<double>(*available) / gib));
+    throw InputError(
+        model_path, "/recorders",
+        fmt::format("recording {} columns over {:.0f} steps needs about {:.1f} GiB, "
+                    "more than the {:.1f} GiB of memory available: record fewer "
+                    "links or nodes, or a shorter duration",
+                    columns, steps, needed / gib, static_cast<double>(*available) / gib));
 }
 
 // The numbers a batch row needs, from what the run recorded.
@@ -247,6 +247,13 @@ RunOutcome run_model(const RunRequest& request) {
       .set("step_cuts", stats.step_cuts)
       .set("max_unbalanced_force", stats.max_unbalanced_force)
       .set("run_time_s", run_time);
+  if (built.analysis.adaptive)
+    summary.set("adaptive", io::Document()
+                                .set("tolerance", built.analysis.adaptive->tolerance)
+                                .set("rejected_steps", stats.rejected_steps)
+                                .set("located_contacts", stats.located_contacts)
+                                .set("smallest_step", stats.smallest_step)
+                                .set("largest_step", stats.largest_step));
   std::vector<io::Document> link_documents;
   for (std::size_t k = 0; k < built.model.links.size(); ++k)
     link_documents.push_back(link_document(built.model.links[k], links.summaries()[k]));

@@ -266,7 +266,8 @@ TransientSettings make_transient_settings(const AnalysisSpec& analysis) {
           .end_time = analysis.duration,
           .max_step_cuts = analysis.max_step_cuts,
           .max_steps = analysis.max_steps,
-          .time_limit = analysis.time_limit};
+          .time_limit = analysis.time_limit,
+          .adaptive = analysis.adaptive};
 }
 
 namespace {

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "integrators/transient_analysis.hpp"
+
 namespace pound::builder {
 
 // A contact law, by name with its parameters (builder/law_catalog.hpp lists them; the reader
@@ -258,6 +260,7 @@ struct AnalysisSpec {
   int max_step_cuts = 10;
   long max_steps = 0;       // 0: no limit
   double time_limit = 0.0;  // wall-clock seconds, 0: no limit; set by `pound run --time-limit`
+  std::optional<AdaptiveStepping> adaptive;  // implicit integrators only
 };
 
 // Time histories written as CSV: "link" records force and penetration of the named links (all

@@ -54,7 +54,7 @@ Newmark Newmark::linear_acceleration(ConvergenceTest test) { return {1.0 / 6.0, 
 Newmark Newmark::hht(double alpha, ConvergenceTest test) {
   if (!(alpha >= -1.0 / 3.0 && alpha <= 0.0))
     throw std::invalid_argument("HHT needs alpha in [-1/3, 0]");
-  return {0.25 * (1.0 - alpha) * (1.0 - alpha), 0.5 - alpha, 0.0, -alpha,
+  return {0.25 * (1.0 - alpha) * (1.0 - alpha),  0.5 - alpha, 0.0, -alpha,
           fmt::format("hht(alpha={:g})", alpha), test};
 }
 
@@ -64,7 +64,7 @@ Newmark Newmark::generalized_alpha(double rho, ConvergenceTest test) {
   const double alpha_m = (2.0 * rho - 1.0) / (rho + 1.0), alpha_f = rho / (rho + 1.0);
   const double gamma = 0.5 - alpha_m + alpha_f;
   return {0.25 * (1.0 - alpha_m + alpha_f) * (1.0 - alpha_m + alpha_f), gamma, alpha_m, alpha_f,
-          fmt::format("generalized_alpha(rho_inf={:g})", rho), test};
+          fmt::format("generalized_alpha(rho_inf={:g})", rho),          test};
 }
 
 std::string Newmark::name() const {
@@ -76,6 +76,7 @@ std::string Newmark::name() const {
 
 void Newmark::initialize(SecondOrderSystem& system, State& state) {
   factorizations_.by_step.clear();
+  factorizations_.uses.clear();
   const Index n = system.size();
   LinkSet& links = system.links();
   if (state.displacement.size() != n) state.displacement = Vector::Zero(n);
@@ -106,15 +107,26 @@ void Newmark::initialize(SecondOrderSystem& system, State& state) {
   state.acceleration.resize(n);
   if (const Vector* mass = system.lumped_mass()) {
     // Massless DOFs (rotations without rotary inertia) have static equations: no acceleration.
-    for (Index i = 0; i < n; ++i) state.acceleration[i] = (*mass)[i] > 0.0 ? rhs[i] / (*mass)[i] : 0.0;
+    for (Index i = 0; i < n; ++i)
+      state.acceleration[i] = (*mass)[i] > 0.0 ? rhs[i] / (*mass)[i] : 0.0;
   } else {
     system.factor(1.0, 0.0, 0.0)->solve(rhs, state.acceleration);
   }
 }
 
 const Newmark::Factorization& Newmark::factorization(SecondOrderSystem& system, double dt) {
+  ++factorizations_.uses[dt];
   auto found = factorizations_.by_step.find(dt);
   if (found != factorizations_.by_step.end()) return found->second;
+  // Adaptive stepping and step cuts ask for a few step sizes over and over, contact location
+  // for one-off ones: keep a handful, dropping the least used.
+  if (factorizations_.by_step.size() >= 8) {
+    auto least = factorizations_.by_step.begin();
+    for (auto it = factorizations_.by_step.begin(); it != factorizations_.by_step.end(); ++it)
+      if (factorizations_.uses[it->first] < factorizations_.uses[least->first]) least = it;
+    factorizations_.uses.erase(least->first);
+    factorizations_.by_step.erase(least);
+  }
   // With alpha_m, alpha_f the mass term weighs (1 - a_m) / (1 - a_f).
   const double c_m = (1.0 - alpha_m_) / (1.0 - alpha_f_) / (beta_ * dt * dt);
   const double c_c = gamma_ / (beta_ * dt);
@@ -150,11 +162,12 @@ StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double
   predicted_velocity_.resize(n);
   rhs_.resize(n);
   if (const Vector* mass = system.lumped_mass()) {
-    predict(n, dt, displacement_factor, velocity_factor, mass_weight * c_m, from.displacement.data(),
-            from.velocity.data(), from.acceleration.data(), mass->data(),
+    predict(n, dt, displacement_factor, velocity_factor, mass_weight * c_m,
+            from.displacement.data(), from.velocity.data(), from.acceleration.data(), mass->data(),
             predicted_displacement_.data(), predicted_velocity_.data(), rhs_.data());
   } else {
-    predicted_displacement_ = from.displacement + dt * from.velocity + displacement_factor * from.acceleration;
+    predicted_displacement_ =
+        from.displacement + dt * from.velocity + displacement_factor * from.acceleration;
     predicted_velocity_ = from.velocity + velocity_factor * from.acceleration;
     work_ = mass_weight * c_m * predicted_displacement_;
     system.multiply_mass(work_, rhs_);
@@ -220,7 +233,8 @@ StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double
       }
       result.unbalanced_force = links.nodal_norm(residual_);
       const double reference = std::max(external_norm, links.nodal_norm(law_force_));
-      if (result.unbalanced_force <= test_.relative_tolerance * reference + test_.absolute_tolerance)
+      if (result.unbalanced_force <=
+          test_.relative_tolerance * reference + test_.absolute_tolerance)
         break;
       if (iteration == test_.max_iterations) {
         result.failure = fmt::format(

@@ -40,8 +40,7 @@ class Newmark final : public Integrator {
 
   std::string name() const override;
   void initialize(SecondOrderSystem& system, State& state) override;
-  StepResult advance(SecondOrderSystem& system, const State& from, double dt,
-                     State& to) override;
+  StepResult advance(SecondOrderSystem& system, const State& from, double dt, State& to) override;
 
   double beta() const { return beta_; }
   double gamma() const { return gamma_; }
@@ -71,9 +70,11 @@ class Newmark final : public Integrator {
     FactorCache(const FactorCache&) {}
     FactorCache& operator=(const FactorCache&) {
       by_step.clear();
+      uses.clear();
       return *this;
     }
     std::map<double, Factorization> by_step;
+    std::map<double, long> uses;  // how often each was asked for
   } factorizations_;
   // Work vectors, kept to avoid allocation inside the time loop.
   Vector predicted_displacement_, predicted_velocity_, rhs_, work_, external_, damping_force_;

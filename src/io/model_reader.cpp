@@ -564,6 +564,25 @@ AnalysisSpec read_analysis(JsonObject& object) {
   if (analysis.max_step_cuts > 30)
     object.at("max_step_cuts").fail(fmt::format("must be <= 30, got {}", analysis.max_step_cuts));
   analysis.max_steps = object.optional<long>("max_steps", analysis.max_steps, non_negative);
+  if (const std::optional<JsonValue> adaptive = object.find("adaptive")) {
+    if (analysis.integrator.type == "central_difference")
+      adaptive->fail("adaptive stepping is for the implicit integrators; central difference "
+                     "takes its stable step (\"time_step\": \"auto\")");
+    AdaptiveStepping settings;
+    if (adaptive->json().is_boolean()) {
+      if (adaptive->as<bool>()) analysis.adaptive = settings;
+    } else {
+      read_object(*adaptive, [&](JsonObject& a) {
+        settings.tolerance = a.optional<double>("tolerance", settings.tolerance, positive);
+        settings.min_time_step = a.optional<double>("min_time_step", 0.0, positive);
+        settings.max_time_step = a.optional<double>("max_time_step", 0.0, positive);
+        if (settings.min_time_step > 0.0 && settings.max_time_step > 0.0 &&
+            settings.min_time_step > settings.max_time_step)
+          a.at("min_time_step").fail("must be <= max_time_step");
+      });
+      analysis.adaptive = settings;
+    }
+  }
   return analysis;
 }
 

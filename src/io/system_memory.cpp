@@ -22,10 +22,12 @@ std::optional<std::size_t> mem_available() {
 
 // cgroup v2: memory.max ("max" when unlimited) less memory.current.
 std::optional<std::size_t> cgroup_room() {
-  std::ifstream max_file("/sys/fs/cgroup/memory.max"), current_file("/sys/fs/cgroup/memory.current");
+  std::ifstream max_file("/sys/fs/cgroup/memory.max"),
+      current_file("/sys/fs/cgroup/memory.current");
   std::string max_text;
   std::size_t current = 0;
-  if (!(max_file >> max_text) || max_text == "max" || !(current_file >> current)) return std::nullopt;
+  if (!(max_file >> max_text) || max_text == "max" || !(current_file >> current))
+    return std::nullopt;
   try {
     const std::size_t max = std::stoull(max_text);
     return max > current ? max - current : 0;
@@ -49,7 +51,8 @@ std::optional<std::size_t> address_space_room() {
 
 std::optional<std::size_t> available_memory_bytes() {
   std::optional<std::size_t> least;
-  for (const std::optional<std::size_t>& bound : {mem_available(), cgroup_room(), address_space_room()})
+  for (const std::optional<std::size_t>& bound :
+       {mem_available(), cgroup_room(), address_space_room()})
     if (bound) least = least ? std::min(*least, *bound) : *bound;
   return least;
 }

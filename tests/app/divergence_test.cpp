@@ -37,7 +37,8 @@ class Divergence : public PoundProcess {};
 // the numbers overflow.
 TEST_F(Divergence, EnergyCreatedByAnUnstableStepStopsTheRun) {
   std::ofstream(path("model.json")) << oscillator("newmark_linear_acceleration", 0.7);
-  const Outcome outcome = pound({"run", path("model.json").string(), "--out", path("out").string()});
+  const Outcome outcome =
+      pound({"run", path("model.json").string(), "--out", path("out").string()});
   EXPECT_EQ(outcome.exit_code, 3) << outcome.err;
   EXPECT_NE(outcome.err.find("analysis failed at t = "), std::string::npos) << outcome.err;
   EXPECT_NE(outcome.err.find("the integration is creating energy"), std::string::npos)
@@ -63,13 +64,14 @@ TEST_F(Divergence, EnergyCreatedByAnUnstableStepStopsTheRun) {
 // stable, energy conserving) runs to the end.
 TEST_F(Divergence, AStableIntegratorAtTheSameStepRunsToTheEnd) {
   std::ofstream(path("model.json")) << oscillator("newmark_average_acceleration", 0.7);
-  const Outcome outcome = pound({"run", path("model.json").string(), "--out", path("out").string()});
+  const Outcome outcome =
+      pound({"run", path("model.json").string(), "--out", path("out").string()});
   EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
   const nlohmann::json summary = nlohmann::json::parse(read_text(path("out/summary.json")));
   EXPECT_EQ(summary["status"], "completed");
   const double error = summary["energy"]["worst_balance_error"].get<double>();
-  std::cout << fmt::format("average acceleration at dt = 0.7 T: worst energy balance error {:.1e}\n",
-                           error);
+  std::cout << fmt::format(
+      "average acceleration at dt = 0.7 T: worst energy balance error {:.1e}\n", error);
   EXPECT_LT(error, 1e-12);
 }
 

@@ -25,8 +25,8 @@ class Resources : public PoundProcess {
   // `pound run MODEL` with at most `kilobytes` of address space.
   Outcome run_limited(const std::string& model, long kilobytes) {
     std::ofstream(path("run.sh")) << fmt::format(
-        "ulimit -v {} && exec {} run {} --out {} >{} 2>{}\n", kilobytes,
-        shell_quoted(POUND_BINARY), shell_quoted(model), shell_quoted(path("out").string()),
+        "ulimit -v {} && exec {} run {} --out {} >{} 2>{}\n", kilobytes, shell_quoted(POUND_BINARY),
+        shell_quoted(model), shell_quoted(path("out").string()),
         shell_quoted(path("stdout.txt").string()), shell_quoted(path("stderr.txt").string()));
     const int status = std::system(("bash " + shell_quoted(path("run.sh").string())).c_str());
     Outcome outcome;
@@ -68,8 +68,8 @@ TEST_F(Resources, HistoriesTooLargeForMemoryAreRefusedBeforeTheRun) {
   std::string nodes;
   for (int k = 0; k <= 1000; ++k)
     nodes += fmt::format("{}\"rods.left.{}\", \"rods.right.{}\"", k ? ", " : "", k, k);
-  const std::string model =
-      rods(1000, 100.0, fmt::format(R"(, "recorders": [{{"type": "node", "nodes": [{}]}}])", nodes));
+  const std::string model = rods(
+      1000, 100.0, fmt::format(R"(, "recorders": [{{"type": "node", "nodes": [{}]}}])", nodes));
   const Outcome outcome = run_limited(model, 2000000);
   EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
   EXPECT_NE(outcome.err.find("model.json: /recorders: recording 6007 columns over"),
@@ -82,7 +82,8 @@ TEST_F(Resources, HistoriesTooLargeForMemoryAreRefusedBeforeTheRun) {
 // resident memory 90 MB for 200 steps).
 TEST_F(Resources, ATenToTheFiveDofModelRunsInALimitedAddressSpace) {
   POUND_SKIP_UNDER_ASAN();
-  const Outcome outcome = run_limited(rods(50000, 200 * 10.0 / 50000 / 31.622776601683793, ""), 600000);
+  const Outcome outcome =
+      run_limited(rods(50000, 200 * 10.0 / 50000 / 31.622776601683793, ""), 600000);
   EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
 }
 
@@ -92,9 +93,11 @@ TEST_F(Resources, ARecordMuchLongerThanTheAnalysisIsPointedOut) {
   std::string model = read_text(std::string(POUND_SOURCE_DIR) + "/models/two_sdof_girders.json");
   const std::string step = "\"time_step\": 0.002", records = "../ground_motions";
   model.replace(model.find(step), step.size(), step + ", \"duration\": 1.5");
-  model.replace(model.find(records), records.size(), std::string(POUND_SOURCE_DIR) + "/ground_motions");
+  model.replace(model.find(records), records.size(),
+                std::string(POUND_SOURCE_DIR) + "/ground_motions");
   std::ofstream(path("model.json")) << model;
-  const Outcome outcome = pound({"run", path("model.json").string(), "--out", path("out").string()});
+  const Outcome outcome =
+      pound({"run", path("model.json").string(), "--out", path("out").string()});
   EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
   EXPECT_NE(outcome.err.find("lasts 30 s but the analysis stops at 1.5 s: only its first 5.0 %"),
             std::string::npos)
