@@ -2,7 +2,8 @@
 # Installs the Debian packages pound builds with, skipping those already present.
 set -euo pipefail
 packages=(g++ cmake ninja-build libeigen3-dev libboost-program-options-dev libfmt-dev
-          nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev python3-matplotlib)
+          nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev python3-matplotlib
+          clang libclang-rt-dev)  # clang and its libFuzzer runtime, for tools/fuzz.sh
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||

@@ -647,9 +647,13 @@ std::string_view without_markers(std::string_view text) {
 
 model::GroundMotion read_ground_motion(const std::string& path, const RecordFormat& format,
                                        double g_in_model_units) {
+  return parse_ground_motion(read_text_file(path), path, format, g_in_model_units);
+}
+
+model::GroundMotion parse_ground_motion(const std::string& text, const std::string& path,
+                                        const RecordFormat& format, double g_in_model_units) {
   if (!(g_in_model_units > 0.0) || !std::isfinite(g_in_model_units))
     throw std::invalid_argument("the acceleration of gravity in model units must be positive");
-  const std::string text = read_text_file(path);
   const std::vector<Line> lines = split_lines(without_markers(text));
   reject_binary(path, lines);
   if (std::all_of(lines.begin(), lines.end(), [](const Line& line) { return is_blank(line.text); }))

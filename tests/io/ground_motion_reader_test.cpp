@@ -405,6 +405,25 @@ INSTANTIATE_TEST_SUITE_P(GroundMotionReader, GroundMotionBadRecord,
                            return test.param.name;
                          });
 
+// The text entry point (used by the fuzz targets) reads exactly what the file reader reads, and
+// takes "auto" from the name it is given.
+TEST(GroundMotionReader, ParsesTextAsTheFileReaderReadsTheFile) {
+  const model::GroundMotion from_file = read_in_g(kNgaWest2, RecordFormat{});
+  const model::GroundMotion from_text =
+      parse_ground_motion(read_text(kNgaWest2), kNgaWest2, RecordFormat{}, 1.0);
+  EXPECT_EQ(from_text.name, from_file.name);
+  EXPECT_EQ(from_text.time_step, from_file.time_step);
+  EXPECT_EQ(from_text.acceleration, from_file.acceleration);
+  try {
+    parse_ground_motion("0.1\n0.2\n", "memory.txt", RecordFormat{}, 1.0);
+    ADD_FAILURE() << "a columns text without dt was read";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.file(), "memory.txt");
+    EXPECT_NE(error.reason().find("does not give its time step"), std::string::npos)
+        << error.what();
+  }
+}
+
 TEST_F(GroundMotionReaderFiles, MissingFileAndFolderAreInputErrors) {
   expect_input_error((folder_ / "no_such.AT2").string(), at2(), "", "no such file");
   expect_input_error(folder_.string(), at2(), "", "is a folder");
