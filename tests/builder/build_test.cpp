@@ -334,8 +334,7 @@ TEST(BuildLaws, RestitutionWithoutAnyMassAtTheLinkIsAnError) {
 
 TEST(BuildLaws, ExtendedPenaltyBuildsItsNumbersFromTheModel) {
   const BuiltModel built = build(spec_of(patched(
-      kModel,
-      R"([{"op": "replace", "path": "/links/0/law", "value": {"type": "extended_penalty"}}])")));
+      kModel, R"([{"op": "replace", "path": "/links/0/law", "value": {"type": "extended_penalty"}}])")));
   assembly::StructuralSystem system(built.model);
   const auto& law = dynamic_cast<const contact::ExtendedPenalty&>(system.links().law(0));
   const contact::LinkContext context = system.link_context(built.model.links[0]);
