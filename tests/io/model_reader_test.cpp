@@ -363,6 +363,10 @@ INSTANTIATE_TEST_SUITE_P(
                     BadCase{"repeated_key_in_array",
                             R"({"nodes": [{"id": "a"}, {"id": "b", "id": "c"}]})", "/nodes/1/id",
                             "field given twice"},
+                    BadCase{"utf16_text", std::string("\xFF\xFE{\0}\0", 6), "",
+                            "UTF-16 text; save it as UTF-8"},
+                    BadCase{"binary", std::string("\177ELF\2\1\1\0\0", 9), "line 1, column 8",
+                            "a NUL byte: binary data or UTF-16 text"},
                     BadCase{"empty_text", "", "", "empty"},  // where "": the whole file
                     BadCase{"blank_text", " \n\t\r\n", "", "empty"},
                     BadCase{"top_level_array", "[]", "", "expected an object, got an array"},
