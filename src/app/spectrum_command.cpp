@@ -4,7 +4,6 @@
 #include <cmath>
 #include <iostream>
 #include <numbers>
-#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -123,7 +122,6 @@ int spectrum_command(const Arguments& arguments) {
   std::string format = "auto", units = "g", periods_text, csv;
   int column = 1;
   double damping_ratio = 0.05;
-  std::optional<double> time_step;
   options.add_options()("help,h", "show this help")(
       "format", po::value(&format)->default_value(format),
       "at2 | columns | auto (.AT2 or an NPTS header line: at2; else columns)")(

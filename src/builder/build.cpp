@@ -224,6 +224,24 @@ std::unique_ptr<Integrator> make_integrator(const AnalysisSpec& analysis) {
   return std::make_unique<Newmark>(integrator.beta, integrator.gamma, test);
 }
 
+namespace {
+
+// More steps than this cannot be counted (the step loop's count would overflow, and a double no
+// longer holds every whole number) and would take decades anyway.
+constexpr double kMostSteps = 1e15;
+
+// A time step of 1e-300 or a duration of 1e300 would otherwise "complete" with no step taken.
+void check_step_count(const AnalysisSpec& analysis, const std::string& source) {
+  const double steps = analysis.duration / analysis.time_step;
+  if (!(steps <= kMostSteps))
+    throw InputError(source, "/analysis/time_step",
+                     fmt::format("{:g} over a duration of {:g} is {:.3g} steps, more than the "
+                                 "{:g} a run can take",
+                                 analysis.time_step, analysis.duration, steps, kMostSteps));
+}
+
+}  // namespace
+
 void settle_time_step(AnalysisSpec& analysis, const model::Model& model,
                       assembly::StructuralSystem& system, const std::string& source) {
   if (analysis.integrator.type != "central_difference") return;
@@ -252,6 +270,7 @@ void settle_time_step(AnalysisSpec& analysis, const model::Model& model,
   }
   if (analysis.time_step_auto) {
     analysis.time_step = analysis.safety_factor * limit;
+    check_step_count(analysis, source);
   } else if (analysis.time_step > limit) {
     throw InputError(source, "/analysis/time_step",
                      fmt::format("{:.6g} is above the stable limit {:.6g} of central difference "
@@ -403,6 +422,14 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
       resolve.fail(path + "/nodes", fmt::format("element '{}' has zero length (nodes '{}' and '{}' "
                                                 "are at the same place)",
                                                 element.id, element.node_i, element.node_j));
+    // Coordinates of ±1e308 are each finite, their distance is not (and the element's stiffness
+    // would be 0, reported later as a node without stiffness).
+    if (!std::isfinite(model.length(node_i, node_j)))
+      resolve.fail(
+          path + "/nodes",
+          fmt::format("element '{}' is infinitely long (nodes '{}' and '{}' are {:g} "
+                      "apart)",
+                      element.id, element.node_i, element.node_j, model.length(node_i, node_j)));
     std::optional<model::RayleighDamping> own;
     if (element.rayleigh)
       own = model::RayleighDamping{(*element.rayleigh)[0], (*element.rayleigh)[1]};
@@ -512,6 +539,7 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
       for (const auto& [node, delay] : excitation.supports)
         built.analysis.duration =
             std::max(built.analysis.duration, excitation.motion.duration() + delay);
+  if (!built.analysis.time_step_auto) check_step_count(built.analysis, spec.source);
   if (spec.damping) model.damping = rayleigh_damping(*spec.damping, model, spec.source);
   if (!spec.recorders_given && !model.links.empty()) {
     ResolvedRecorder every_link{"link", {}, "links.csv"};

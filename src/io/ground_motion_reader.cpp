@@ -343,7 +343,9 @@ RecordSize read_size_line(const std::string& path, const Line& line) {
                                       npts.data() + npts.size(), points);
   if (!is_whole_number(npts) || parsed.ec != std::errc())
     fail(path, line.number, fmt::format("NPTS must be a whole number of points; found '{}'", npts));
-  if (points < 1) fail(path, line.number, fmt::format("NPTS must be at least 1; found '{}'", npts));
+  if (points < 2)
+    fail(path, line.number,
+         fmt::format("NPTS must be at least 2 (one sample lasts no time); found '{}'", npts));
   const double time_step = number_value(dt);
   if (!(time_step > 0.0) || !std::isfinite(time_step))
     fail(path, line.number, fmt::format("DT must be a positive time step; found '{}'", dt));
@@ -510,8 +512,13 @@ std::vector<double> read_at2(const std::string& path, const std::vector<Line>& l
   require_stated_units(path, header, format.units);
   time_step = size.time_step;
 
+  // NPTS is only the file's claim: a corrupt one (10^18) must end as "the file ends after n of
+  // the values", not exhaust memory. Each value takes at least one character of the file.
+  std::size_t characters_left = 0;
+  for (std::size_t i = size_index + 1; i < lines.size(); ++i)
+    characters_left += lines[i].text.size();
   std::vector<double> values;
-  values.reserve(size.points);
+  values.reserve(std::min(size.points, characters_left));
   for (std::size_t i = size_index + 1; i < lines.size(); ++i) {
     const Line& line = lines[i];
     // Text between the size line and the data ("*** Begin data ***") is header too.
@@ -619,6 +626,9 @@ std::vector<double> read_columns(const std::string& path, const std::vector<Line
   }
   if (!first_row)
     fail(path, lines.back().number, "no data: expected rows of numbers after the header lines");
+  // One sample lasts no time: a run under it would end before its first step.
+  if (values.size() < 2)
+    fail(path, rows.back(), "only 1 row of data: a record needs at least 2 samples");
   require_stated_units(path, header, format.units);
   time_step = columns_time_step(path, header, format, times, rows);
   return values;
@@ -647,9 +657,13 @@ std::string_view without_markers(std::string_view text) {
 
 model::GroundMotion read_ground_motion(const std::string& path, const RecordFormat& format,
                                        double g_in_model_units) {
+  return parse_ground_motion(read_text_file(path), path, format, g_in_model_units);
+}
+
+model::GroundMotion parse_ground_motion(const std::string& text, const std::string& path,
+                                        const RecordFormat& format, double g_in_model_units) {
   if (!(g_in_model_units > 0.0) || !std::isfinite(g_in_model_units))
     throw std::invalid_argument("the acceleration of gravity in model units must be positive");
-  const std::string text = read_text_file(path);
   const std::vector<Line> lines = split_lines(without_markers(text));
   reject_binary(path, lines);
   if (std::all_of(lines.begin(), lines.end(), [](const Line& line) { return is_blank(line.text); }))

@@ -36,6 +36,11 @@ struct RecordFormat {
 model::GroundMotion read_ground_motion(const std::string& path, const RecordFormat& format,
                                        double g_in_model_units);
 
+// Same from the file's text; `path` names it in messages and in the motion, and its extension
+// counts for "auto" as the file's would.
+model::GroundMotion parse_ground_motion(const std::string& text, const std::string& path,
+                                        const RecordFormat& format, double g_in_model_units);
+
 // "g", "m/s2", "cm/s2" or "model"; throws std::invalid_argument listing the valid names.
 AccelerationUnit parse_acceleration_unit(const std::string& text);
 

@@ -206,6 +206,13 @@ std::string read_text_file(const std::string& path) {
 Json parse_json(const std::string& text, const std::string& source) {
   if (text.find_first_not_of(" \t\r\n") == std::string::npos)
     throw InputError(source, "", "the file is empty (expected JSON)");
+  // A model saved as UTF-16 (some Windows editors) or a binary file named by mistake: say so,
+  // rather than "invalid literal" at its first byte.
+  if (text.starts_with("\xFF\xFE") || text.starts_with("\xFE\xFF"))
+    throw InputError(source, "", "the file is UTF-16 text; save it as UTF-8");
+  if (const std::size_t nul = text.find('\0'); nul != std::string::npos)
+    throw InputError(source, line_and_column(text, nul + 1),
+                     "a NUL byte: binary data or UTF-16 text, not UTF-8 JSON");
   SyntaxChecker checker(text, source);
   if (!Json::sax_parse(text, &checker)) {
     if (checker.error()) throw *checker.error();

@@ -291,6 +291,8 @@ LinkSpec read_link(JsonObject& object, int dimension, UniqueNames& ids) {
   return link;
 }
 
+constexpr int kMostRodElements = 100000;
+
 RodSpec read_rod(JsonObject& object) {
   RodSpec rod;
   rod.youngs_modulus = object.required<double>("youngs_modulus", positive);
@@ -298,6 +300,11 @@ RodSpec read_rod(JsonObject& object) {
   rod.area = object.required<double>("area", positive);
   rod.length = object.required<double>("length", positive);
   rod.elements = object.required<int>("elements", at_least(1));
+  // 100 times the finest mesh of the benchmarks; 2e9 elements ran out of memory (std::bad_alloc,
+  // a crash rather than a message).
+  if (rod.elements > kMostRodElements)
+    object.at("elements")
+        .fail(fmt::format("must be <= {}, got {}", kMostRodElements, rod.elements));
   rod.initial_velocity = object.optional<double>("initial_velocity", rod.initial_velocity);
   rod.far_end_fixed = object.one_of("far_end", {"free", "fixed"}, "free") == "fixed";
   return rod;

@@ -115,6 +115,24 @@ TEST(Build, ZeroLengthElement) {
                "/elements/0/nodes", "zero length");
 }
 
+TEST(Build, InfinitelyLongElement) {
+  expect_error(R"([{"op": "replace", "path": "/nodes/0/x", "value": -1e308},
+                   {"op": "replace", "path": "/nodes/1/x", "value": 1e308}])",
+               "/elements/0/nodes",
+               "element 'e0' is infinitely long (nodes 'a' and 'b' are inf apart)");
+}
+
+// duration / time_step steps overflowed the step count: the run "completed" with no step taken.
+TEST(Build, UncountablyManySteps) {
+  expect_error(R"([{"op": "replace", "path": "/analysis/time_step", "value": 1e-300}])",
+               "/analysis/time_step",
+               "1e-300 over a duration of 1 is 1e+300 steps, more than the 1e+15");
+  expect_error(R"([{"op": "replace", "path": "/analysis/duration", "value": 1e300}])",
+               "/analysis/time_step", "is 1e+302 steps");
+  EXPECT_FALSE(build_error(spec_of(
+      patched(kModel, R"([{"op": "replace", "path": "/analysis/time_step", "value": 1e-14}])"))));
+}
+
 TEST(Build, LinkJoiningANodeToItself) {
   // The reader already refuses ["b", "b"] (a repeated name); the builder checks it again for
   // specs made in code.

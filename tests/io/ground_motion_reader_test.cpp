@@ -328,6 +328,21 @@ const std::vector<BadRecord>& bad_records() {
        at2(), "line 4", "DT must be a positive time step; found '.0000'"},
       {"at2_too_few_values", [] { return without_last_lines(kNgaWest2, 3); }, at2(), "line 1076",
        "the file ends after 5360 of the 5372 values NPTS gives (line 4)"},
+      // Found by fuzz_at2: the reader reserved NPTS values before reading them.
+      {"at2_npts_beyond_memory",
+       [] {
+         return std::string(
+             "PEER\nEVENT\nACCELERATION IN G\nNPTS= 999999999999999999, DT= .01\n.1 .2 .3\n");
+       },
+       at2(), "line 5",
+       "the file ends after 3 of the 999999999999999999 values NPTS gives (line 4)"},
+      // One sample lasts no time: `pound run` completed with no step taken.
+      {"at2_single_sample",
+       [] { return std::string("PEER\nEVENT\nACCELERATION IN G\nNPTS= 1, DT= .01\n.1\n"); }, at2(),
+       "line 4", "NPTS must be at least 2 (one sample lasts no time); found '1'"},
+      {"columns_single_sample", [] { return std::string("% dt=0.01\n0.1\n"); },
+       columns(1, AccelerationUnit::g), "line 2",
+       "only 1 row of data: a record needs at least 2 samples"},
       {"at2_too_many_values",
        [] { return read_text(kNgaWest2) + "   .1000000E-02   .1000000E-02\n"; }, at2(), "line 1080",
        "more values than NPTS = 5372 (line 4): value 5373 is on this line"},
@@ -404,6 +419,25 @@ INSTANTIATE_TEST_SUITE_P(GroundMotionReader, GroundMotionBadRecord,
                          [](const ::testing::TestParamInfo<BadRecord>& test) {
                            return test.param.name;
                          });
+
+// The text entry point (used by the fuzz targets) reads exactly what the file reader reads, and
+// takes "auto" from the name it is given.
+TEST(GroundMotionReader, ParsesTextAsTheFileReaderReadsTheFile) {
+  const model::GroundMotion from_file = read_in_g(kNgaWest2, RecordFormat{});
+  const model::GroundMotion from_text =
+      parse_ground_motion(read_text(kNgaWest2), kNgaWest2, RecordFormat{}, 1.0);
+  EXPECT_EQ(from_text.name, from_file.name);
+  EXPECT_EQ(from_text.time_step, from_file.time_step);
+  EXPECT_EQ(from_text.acceleration, from_file.acceleration);
+  try {
+    parse_ground_motion("0.1\n0.2\n", "memory.txt", RecordFormat{}, 1.0);
+    ADD_FAILURE() << "a columns text without dt was read";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.file(), "memory.txt");
+    EXPECT_NE(error.reason().find("does not give its time step"), std::string::npos)
+        << error.what();
+  }
+}
 
 TEST_F(GroundMotionReaderFiles, MissingFileAndFolderAreInputErrors) {
   expect_input_error((folder_ / "no_such.AT2").string(), at2(), "", "no such file");
