@@ -291,7 +291,7 @@ LinkSpec read_link(JsonObject& object, int dimension, UniqueNames& ids) {
   return link;
 }
 
-constexpr int kMostRodElements = 100000;
+constexpr int kMostRodElements = 100000000;
 
 RodSpec read_rod(JsonObject& object) {
   RodSpec rod;
@@ -300,8 +300,8 @@ RodSpec read_rod(JsonObject& object) {
   rod.area = object.required<double>("area", positive);
   rod.length = object.required<double>("length", positive);
   rod.elements = object.required<int>("elements", at_least(1));
-  // 100 times the finest mesh of the benchmarks; 2e9 elements ran out of memory (std::bad_alloc,
-  // a crash rather than a message).
+  // A bound on counting (2e9 elements ran out of memory: std::bad_alloc, a crash rather than a
+  // message); what a machine can hold is checked against its memory before building.
   if (rod.elements > kMostRodElements)
     object.at("elements")
         .fail(fmt::format("must be <= {}, got {}", kMostRodElements, rod.elements));

@@ -464,7 +464,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"fractional_elements", replaced("/generators/0/right/elements", "2.5"),
                 "/generators/0/right/elements", "expected an integer, got 2.5"},
         BadCase{"too_many_elements", replaced("/generators/0/right/elements", "2000000000"),
-                "/generators/0/right/elements", "must be <= 100000, got 2000000000"},
+                "/generators/0/right/elements", "must be <= 100000000, got 2000000000"},
         BadCase{"huge_elements", replaced("/generators/0/right/elements", "1e12"),
                 "/generators/0/right/elements",
                 "expected an integer from -2147483648 to 2147483647, got 1000000000000"},
