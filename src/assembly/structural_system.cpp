@@ -239,6 +239,11 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
     for (Index col = 0; col < stiffness_.outerSize(); ++col)
       for (Eigen::SparseMatrix<double>::InnerIterator it(stiffness_, col); it; ++it)
         stiffness_band_(it.row(), b + col - it.row()) = it.value();
+    // Symmetric to the last bit (elements assemble K(i, j) and K(j, i) from the same terms):
+    // the product then streams one off-diagonal, a sixth less memory traffic per explicit step.
+    stiffness_symmetric_ = b == 1;
+    for (Index i = 1; i < n && stiffness_symmetric_; ++i)
+      stiffness_symmetric_ = stiffness_band_(i, 0) == stiffness_band_(i - 1, 2);
   } else {
     stiffness_rows_ = stiffness_;
   }
@@ -485,9 +490,10 @@ void StructuralSystem::multiply_band(const Vector& x, Vector& y, Index first, In
   double* __restrict__ out = y.data();
   // Each row's terms are added in column order, as the product by rows adds them.
   if (b == 1) {
-    const double* __restrict__ lower = stiffness_band_.col(0).data();
     const double* __restrict__ diagonal = stiffness_band_.col(1).data();
     const double* __restrict__ upper = stiffness_band_.col(2).data();
+    const double* __restrict__ lower =
+        stiffness_symmetric_ ? upper - 1 : stiffness_band_.col(0).data();
     if (first == 0) out[0] = diagonal[0] * in[0] + upper[0] * in[1];
     const Index end = std::min(last, n - 1);
     for (Index i = std::max<Index>(first, 1); i < end; ++i)
