@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <Eigen/SparseCholesky>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -231,7 +232,21 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
   stiffness_.resize(n, n);
   stiffness_.setFromTriplets(stiffness.begin(), stiffness.end());
   stiffness_.prune(0.0);
-  stiffness_rows_ = stiffness_;
+  if (const Index b = BandedLdlt::bandwidth_of(stiffness_);
+      n > 0 && (2 * b + 1) * n <= 2 * stiffness_.nonZeros()) {
+    stiffness_bandwidth_ = b;
+    stiffness_band_ = Matrix::Zero(n, 2 * b + 1);
+    for (Index col = 0; col < stiffness_.outerSize(); ++col)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(stiffness_, col); it; ++it)
+        stiffness_band_(it.row(), b + col - it.row()) = it.value();
+    // Symmetric to the last bit (elements assemble K(i, j) and K(j, i) from the same terms):
+    // the product then streams one off-diagonal, a sixth less memory traffic per explicit step.
+    stiffness_symmetric_ = b == 1;
+    for (Index i = 1; i < n && stiffness_symmetric_; ++i)
+      stiffness_symmetric_ = stiffness_band_(i, 0) == stiffness_band_(i - 1, 2);
+  } else {
+    stiffness_rows_ = stiffness_;
+  }
 
   if (model.damping) damping_ = *model.damping;
   if (own_damping) {
@@ -426,13 +441,72 @@ void StructuralSystem::multiply_damping(const Vector& x, Vector& y) const {
     return;
   }
   // C = a0 M + a1 K
+  const double a0 = damping_.mass_coefficient, a1 = damping_.stiffness_coefficient;
+  if (mass_matrix_.size() == 0) {
+    multiply_stiffness(x, y);
+    y = a0 * mass_.cwiseProduct(x) + a1 * y;
+    return;
+  }
+  Vector stiffness_force;
+  multiply_stiffness(x, stiffness_force);
   multiply_mass(x, y);
-  y *= damping_.mass_coefficient;
-  y.noalias() += damping_.stiffness_coefficient * (stiffness_rows_ * x);
+  y = a0 * y + a1 * stiffness_force;
 }
 
 void StructuralSystem::multiply_stiffness(const Vector& x, Vector& y) const {
-  y.noalias() = stiffness_rows_ * x;
+  if (stiffness_bandwidth_ < 0) {
+    y.noalias() = stiffness_rows_ * x;
+    return;
+  }
+  y.resize(x.size());
+  multiply_band(x, y, 0, x.size());
+}
+
+void StructuralSystem::multiply_stiffness_by_blocks(Vector& x, Vector& y, const BlockFunction& make,
+                                                    const BlockFunction& use) const {
+  if (stiffness_bandwidth_ < 0) {
+    SecondOrderSystem::multiply_stiffness_by_blocks(x, y, make, use);
+    return;
+  }
+  // 256 rows: the blocks of an explicit step's ten or so vectors stay in L1 between its passes.
+  constexpr Index kBlock = 256;
+  const Index n = size();
+  y.resize(n);
+  Index made = 0;
+  for (Index first = 0; first < n; first += kBlock) {
+    const Index last = std::min(n, first + kBlock);
+    if (const Index needed = std::min(n, last + stiffness_bandwidth_); needed > made) {
+      make(made, needed);
+      made = needed;
+    }
+    multiply_band(x, y, first, last);
+    use(first, last);
+  }
+}
+
+void StructuralSystem::multiply_band(const Vector& x, Vector& y, Index first, Index last) const {
+  const Index n = x.size(), b = stiffness_bandwidth_;
+  const double* __restrict__ in = x.data();
+  double* __restrict__ out = y.data();
+  // Each row's terms are added in column order, as the product by rows adds them.
+  if (b == 1) {
+    const double* __restrict__ diagonal = stiffness_band_.col(1).data();
+    const double* __restrict__ upper = stiffness_band_.col(2).data();
+    const double* __restrict__ lower =
+        stiffness_symmetric_ ? upper - 1 : stiffness_band_.col(0).data();
+    if (first == 0) out[0] = diagonal[0] * in[0] + upper[0] * in[1];
+    const Index end = std::min(last, n - 1);
+    for (Index i = std::max<Index>(first, 1); i < end; ++i)
+      out[i] = lower[i] * in[i - 1] + diagonal[i] * in[i] + upper[i] * in[i + 1];
+    if (last == n) out[n - 1] = lower[n - 1] * in[n - 2] + diagonal[n - 1] * in[n - 1];
+    return;
+  }
+  std::fill(out + first, out + last, 0.0);
+  for (Index k = -b; k <= b; ++k) {
+    const double* __restrict__ band = stiffness_band_.col(b + k).data();
+    const Index end = std::min(last, n - k);
+    for (Index i = std::max(first, -k); i < end; ++i) out[i] += band[i] * in[i + k];
+  }
 }
 
 void StructuralSystem::external_force(double time, Vector& force) const {

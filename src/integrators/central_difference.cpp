@@ -1,9 +1,12 @@
 #include "integrators/central_difference.hpp"
 
 #include <Eigen/LU>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 namespace pound {
 namespace {
@@ -15,21 +18,83 @@ const Vector& diagonal_mass(const SecondOrderSystem& system) {
   return *mass;
 }
 
-// a = (M + B^T diag(m) B)^-1 r for diagonal M, by Woodbury over the rows with m != 0.
-void solve_with_link_mass(const Vector& inverse_mass, const LinkSet::SparseRowMatrix& b,
-                          const Vector& link_mass, const Vector& rhs, Vector& solution) {
-  solution = inverse_mass.cwiseProduct(rhs);
-  std::vector<Index> rows;
-  for (Index r = 0; r < link_mass.size(); ++r)
-    if (link_mass[r] != 0.0) rows.push_back(r);
-  if (rows.empty()) return;
-  const auto k = static_cast<Index>(rows.size());
-  Matrix active(k, b.cols());
-  for (Index i = 0; i < k; ++i) active.row(i) = b.row(rows[static_cast<std::size_t>(i)]);
-  Matrix small = active * inverse_mass.asDiagonal() * active.transpose();
-  for (Index i = 0; i < k; ++i) small(i, i) += 1.0 / link_mass[rows[static_cast<std::size_t>(i)]];
-  const Vector correction = small.partialPivLu().solve(active * solution);
-  solution.noalias() -= inverse_mass.asDiagonal() * (active.transpose() * correction);
+// a = (M + B^T diag(m) B)^-1 r for diagonal M, by Woodbury over the rows with m != 0; the small
+// matrix is factored once, as the power iteration solves with it every iteration.
+class LinkMassSolver {
+ public:
+  LinkMassSolver(const Vector& inverse_mass, const LinkSet::SparseRowMatrix& b,
+                 const Vector& link_mass)
+      : inverse_mass_(inverse_mass) {
+    std::vector<Index> rows;
+    for (Index r = 0; r < link_mass.size(); ++r)
+      if (link_mass[r] != 0.0) rows.push_back(r);
+    if (rows.empty()) return;
+    const auto k = static_cast<Index>(rows.size());
+    active_.resize(k, b.cols());
+    for (Index i = 0; i < k; ++i) active_.row(i) = b.row(rows[static_cast<std::size_t>(i)]);
+    Matrix small = active_ * inverse_mass.asDiagonal() * active_.transpose();
+    for (Index i = 0; i < k; ++i) small(i, i) += 1.0 / link_mass[rows[static_cast<std::size_t>(i)]];
+    small_lu_.compute(small);
+  }
+  void solve(const Vector& rhs, Vector& solution) const {
+    solution = inverse_mass_.cwiseProduct(rhs);
+    if (active_.rows() == 0) return;
+    const Vector correction = small_lu_.solve(active_ * solution);
+    solution.noalias() -= inverse_mass_.asDiagonal() * (active_.transpose() * correction);
+  }
+
+ private:
+  const Vector& inverse_mass_;
+  Matrix active_;  // the rows of B with a link mass
+  Eigen::PartialPivLU<Matrix> small_lu_;
+};
+
+// Bit 63 set when x is an infinity or NaN (every exponent bit set: adding one to the exponent
+// carries out of it). OR-ed over a pass, it vectorises as integer operations; a sum of the
+// values (the other way to test them) would add a serial floating-point reduction to the pass.
+inline std::uint64_t not_finite(double x) {
+  constexpr std::uint64_t exponent = 0x7ff0000000000000, one = 0x0010000000000000;
+  return (std::bit_cast<std::uint64_t>(x) & exponent) + one;
+}
+inline bool all_finite(std::uint64_t flags) { return (flags >> 63) == 0; }
+
+// u_{n+1} = u_n + dt v_n + dt^2/2 a_n over [first, last), and v* = v_n + dt a_n when damping
+// needs it. Returns whether every u_{n+1} is finite.
+bool predict(Index first, Index last, double dt, const double* __restrict__ u,
+             const double* __restrict__ v, const double* __restrict__ a,
+             double* __restrict__ next_u, double* __restrict__ predicted_v) {
+  const double displacement_factor = 0.5 * dt * dt;
+  std::uint64_t flags = 0;
+  for (Index i = first; i < last; ++i) {
+    next_u[i] = u[i] + dt * v[i] + displacement_factor * a[i];
+    flags |= not_finite(next_u[i]);
+  }
+  if (predicted_v)
+    for (Index i = first; i < last; ++i) predicted_v[i] = v[i] + dt * a[i];
+  return all_finite(flags);
+}
+
+// a_{n+1} = M^-1 (f - r) (f: nullptr for none) and v_{n+1} = v_n + dt/2 (a_n + a_{n+1}) over
+// [first, last), in one pass. Returns whether every v_{n+1} is finite.
+bool accelerate(Index first, Index last, double half_dt, const double* __restrict__ inverse_mass,
+                const double* __restrict__ r, const double* __restrict__ f,
+                const double* __restrict__ v, const double* __restrict__ a,
+                double* __restrict__ next_a, double* __restrict__ next_v) {
+  std::uint64_t flags = 0;
+  if (f) {
+    for (Index i = first; i < last; ++i) {
+      next_a[i] = inverse_mass[i] * (-r[i] + f[i]);
+      next_v[i] = v[i] + half_dt * (a[i] + next_a[i]);
+      flags |= not_finite(next_v[i]);
+    }
+    return all_finite(flags);
+  }
+  for (Index i = first; i < last; ++i) {
+    next_a[i] = inverse_mass[i] * -r[i];
+    next_v[i] = v[i] + half_dt * (a[i] + next_a[i]);
+    flags |= not_finite(next_v[i]);
+  }
+  return all_finite(flags);
 }
 
 }  // namespace
@@ -37,7 +102,7 @@ void solve_with_link_mass(const Vector& inverse_mass, const LinkSet::SparseRowMa
 void CentralDifference::initialize(SecondOrderSystem& system, State& state) {
   const Index n = system.size();
   inverse_mass_ = diagonal_mass(system).cwiseInverse();
-  coupling_.resize(0, 0);  // G = B M^-1 B^T, built at the first step with links
+  coupling_.resize(0, 0);  // G = B M^-1 B^T and B by columns, built at the first step with links
   LinkSet& links = system.links();
   if (state.displacement.size() != n) state.displacement = Vector::Zero(n);
   if (state.velocity.size() != n) state.velocity = Vector::Zero(n);
@@ -48,7 +113,8 @@ void CentralDifference::initialize(SecondOrderSystem& system, State& state) {
     state.link_penetration += offset_;
     rate_ += offset_rate_;
   }
-  links.set_trial(state.link_penetration, rate_, Vector::Zero(links.size()), 0.0, 0.0, state.link_force, tangent_);
+  links.set_trial(state.link_penetration, rate_, Vector::Zero(links.size()), 0.0, 0.0,
+                  state.link_force, tangent_);
   links.commit();
   Vector rhs = Vector::Zero(n);
   if (system.has_external_force()) system.external_force(state.time, rhs);
@@ -68,53 +134,83 @@ StepResult CentralDifference::advance(SecondOrderSystem& system, const State& fr
   const Index n = system.size(), m = links.size();
   if (inverse_mass_.size() != n) inverse_mass_ = diagonal_mass(system).cwiseInverse();
   to.time = from.time + dt;
-  to.displacement = from.displacement + dt * from.velocity + (0.5 * dt * dt) * from.acceleration;
-
-  // rhs = f - C v* - K u, with v* = v_n + dt a_n for damping: it differs from v_{n+1} by O(dt^2)
-  // and keeps the scheme second order (the half-step velocity would not).
-  system.multiply_stiffness(to.displacement, rhs_);
-  rhs_ = -rhs_;
-  if (system.has_external_force()) {
-    system.external_force(to.time, work_);
-    rhs_ += work_;
+  const double half_dt = 0.5 * dt;
+  to.displacement.resize(n);
+  to.acceleration.resize(n);
+  to.velocity.resize(n);
+  const bool external = system.has_external_force();
+  if (external) system.external_force(to.time, work_);
+  // The vector passes (predict, K u, accelerate) go block by block when the system can, each
+  // testing the values it writes for the finiteness check.
+  bool finite_state = true;
+  if (!system.has_damping()) {
+    const auto make = [&](Index first, Index last) {
+      finite_state &= predict(first, last, dt, from.displacement.data(), from.velocity.data(),
+                              from.acceleration.data(), to.displacement.data(), nullptr);
+    };
+    const auto use = [&](Index first, Index last) {
+      finite_state &=
+          accelerate(first, last, half_dt, inverse_mass_.data(), rhs_.data(),
+                     external ? work_.data() : nullptr, from.velocity.data(),
+                     from.acceleration.data(), to.acceleration.data(), to.velocity.data());
+    };
+    system.multiply_stiffness_by_blocks(to.displacement, rhs_, make, use);
+  } else {
+    // With damping, C v* with v* = v_n + dt a_n: it differs from v_{n+1} by O(dt^2) and keeps the
+    // scheme second order (the half-step velocity would not).
+    predicted_velocity_.resize(n);
+    finite_state =
+        predict(0, n, dt, from.displacement.data(), from.velocity.data(), from.acceleration.data(),
+                to.displacement.data(), predicted_velocity_.data());
+    // r = (K u - f) + C v*: its negative is the unfused step's (f - K u) - C v*, exactly.
+    system.multiply_stiffness(to.displacement, rhs_);
+    if (external) rhs_ -= work_;
+    system.multiply_damping(predicted_velocity_, damping_force_);
+    rhs_ += damping_force_;
+    finite_state &=
+        accelerate(0, n, half_dt, inverse_mass_.data(), rhs_.data(), nullptr, from.velocity.data(),
+                   from.acceleration.data(), to.acceleration.data(), to.velocity.data());
   }
-  if (system.has_damping()) {
-    predicted_velocity_ = from.velocity + dt * from.acceleration;
-    system.multiply_damping(predicted_velocity_, work_);
-    rhs_ -= work_;
-  }
-  const Vector& rhs = rhs_;
 
   StepResult result;
-  to.acceleration = inverse_mass_.cwiseProduct(rhs);  // without the links
   if (m > 0) {
-    // Link rates at the half step: the extended penalty's critical dashpot on its stiff relative
-    // mode is stable there at the Courant limit, not with the forward-predicted velocity.
+    const LinkSet::SparseRowMatrix& b = links.connectivity();
+    if (coupling_.rows() != m) {
+      coupling_ = Matrix(b * inverse_mass_.asDiagonal() * b.transpose());
+      link_columns_ = b;
+      link_dofs_.clear();
+      for (Index j = 0; j < link_columns_.outerSize(); ++j)
+        if (Eigen::SparseMatrix<double>::InnerIterator(link_columns_, j)) link_dofs_.push_back(j);
+    }
     links.penetration(to.displacement, to.link_penetration);
-    half_step_velocity_ = from.velocity + (0.5 * dt) * from.acceleration;
-    links.project(half_step_velocity_, rate_);
-    Vector free_acceleration;
-    links.project(to.acceleration, free_acceleration);
+    // Link rates at the half step B (v_n + dt/2 a_n): the extended penalty's critical dashpot on
+    // its stiff relative mode is stable there at the Courant limit, not with the forward-predicted
+    // velocity. Only the DOFs in B are visited.
+    rate_.resize(m);
+    for (Index r = 0; r < m; ++r) {
+      double sum = 0.0;
+      for (LinkSet::SparseRowMatrix::InnerIterator it(b, r); it; ++it)
+        sum += it.value() * (from.velocity[it.col()] + half_dt * from.acceleration[it.col()]);
+      rate_[r] = sum;
+    }
+    links.project(to.acceleration, free_acceleration_);
     if (system.has_link_motion()) {
       system.link_motion(to.time, offset_, offset_rate_, offset_acceleration_);
       to.link_penetration += offset_;
       rate_ += offset_rate_;
-      free_acceleration += offset_acceleration_;
+      free_acceleration_ += offset_acceleration_;
     }
     // The link forces F change the accelerations by -M^-1 B^T F, so the laws see
     // delta_ddot = free - G F (G = B M^-1 B^T). Solve F = F_law(delta, rate, free - G F): laws with
     // no mass term need one evaluation; the extended penalty's alpha2 makes it a small system.
-    const LinkSet::SparseRowMatrix& b = links.connectivity();
-    if (coupling_.rows() != m) coupling_ = Matrix(b * inverse_mass_.asDiagonal() * b.transpose());
     const Matrix& g = coupling_;
-    to.link_force = Vector::Zero(m);
-    Matrix stiffness_only;
+    to.link_force.setZero(m);
     for (int iteration = 0;; ++iteration) {
-      const Vector link_acceleration = free_acceleration - g * to.link_force;
-      links.set_trial(to.link_penetration, rate_, link_acceleration, 0.0, 0.0, force_, stiffness_only);
-      links.set_trial(to.link_penetration, rate_, link_acceleration, 0.0, 1.0, force_, tangent_);
+      link_acceleration_ = free_acceleration_;
+      link_acceleration_.noalias() -= g * to.link_force;
+      links.set_trial_mass(to.link_penetration, rate_, link_acceleration_, force_, tangent_);
       // Without a mass term the law's force does not depend on F: it is the answer.
-      if ((tangent_ - stiffness_only).cwiseAbs().maxCoeff() == 0.0) {
+      if (tangent_.cwiseAbs().maxCoeff() == 0.0) {
         to.link_force = force_;
         break;
       }
@@ -128,20 +224,29 @@ StepResult CentralDifference::advance(SecondOrderSystem& system, const State& fr
         result.failure = "the link forces of the explicit step did not settle in 25 iterations";
         return result;
       }
-      Matrix jacobian = (tangent_ - stiffness_only) * g;  // dF_law / d(delta_ddot) G
-      jacobian.diagonal().array() += 1.0;
-      const Vector correction = jacobian.partialPivLu().solve(residual_);
-      to.link_force -= correction;
+      jacobian_.noalias() = tangent_ * g;  // dF_law / d(delta_ddot) G
+      jacobian_.diagonal().array() += 1.0;
+      jacobian_lu_.compute(jacobian_);
+      correction_ = jacobian_lu_.solve(residual_);
+      to.link_force -= correction_;
       // At machine precision already (a very stiff penalty mass): stop as the implicit step does.
-      if (iteration > 0 && correction.norm() <= 1e-14 * std::max(to.link_force.norm(), 1e-300)) break;
+      if (iteration > 0 && correction_.norm() <= 1e-14 * std::max(to.link_force.norm(), 1e-300))
+        break;
     }
-    to.acceleration.noalias() -= inverse_mass_.asDiagonal() * (b.transpose() * to.link_force);
+    // a -= M^-1 B^T F and v_{n+1} again, at the DOFs the links touch.
+    for (const Index j : link_dofs_) {
+      double force = 0.0;
+      for (Eigen::SparseMatrix<double>::InnerIterator it(link_columns_, j); it; ++it)
+        force += it.value() * to.link_force[it.row()];
+      to.acceleration[j] -= inverse_mass_[j] * force;
+      to.velocity[j] = from.velocity[j] + half_dt * (from.acceleration[j] + to.acceleration[j]);
+      finite_state &= all_finite(not_finite(to.velocity[j]));
+    }
   } else {
     to.link_penetration.resize(0);
     to.link_force.resize(0);
   }
-  to.velocity = from.velocity + (0.5 * dt) * (from.acceleration + to.acceleration);
-  if (!std::isfinite(to.velocity.sum()) || !std::isfinite(to.displacement.sum())) {
+  if (!finite_state) {
     result.failure = "the state is not finite (is the time step above the stable limit?)";
     return result;
   }
@@ -155,7 +260,8 @@ double stable_time_step(SecondOrderSystem& system, bool contacts_active) {
   LinkSet& links = system.links();
   const Index m = links.size();
   // Link tangents: at first touch (closing) when contacts count, else at rest.
-  Vector link_stiffness = Vector::Zero(m), link_mass = Vector::Zero(m), link_damping = Vector::Zero(m);
+  Vector link_stiffness = Vector::Zero(m), link_mass = Vector::Zero(m),
+         link_damping = Vector::Zero(m);
   {
     const Vector delta = contacts_active ? Vector::Constant(m, 1e-12) : Vector(-links.gaps());
     const Vector rate = Vector::Constant(m, contacts_active ? 1e-12 : 0.0);
@@ -171,13 +277,14 @@ double stable_time_step(SecondOrderSystem& system, bool contacts_active) {
   }
   // Power iteration on (M + B^T m_l B)^-1 (K + B^T k_l B), from a fixed start (reproducible).
   Vector x = Vector::LinSpaced(n, 1.0, 2.0), y, kx, projected;
+  const LinkMassSolver mass_solver(inverse_mass, links.connectivity(), link_mass);
   double lambda = 0.0;
   for (int iteration = 0; iteration < 500; ++iteration) {
     x.normalize();
     system.multiply_stiffness(x, kx);
     links.project(x, projected);
     kx.noalias() += links.connectivity().transpose() * link_stiffness.cwiseProduct(projected);
-    solve_with_link_mass(inverse_mass, links.connectivity(), link_mass, kx, y);
+    mass_solver.solve(kx, y);
     const double next = x.dot(y);
     const bool settled = iteration > 20 && std::abs(next - lambda) <= 1e-10 * std::abs(next);
     lambda = next;
@@ -209,7 +316,8 @@ double stable_time_step(SecondOrderSystem& system, bool contacts_active) {
     const double modal_mass = relative_mass + link_mass[r];
     const double link_omega = std::sqrt(link_stiffness[r] / modal_mass);
     const double link_zeta = link_damping[r] / (2.0 * std::sqrt(link_stiffness[r] * modal_mass));
-    limit = std::min(limit, 2.0 / link_omega * (std::sqrt(1.0 + link_zeta * link_zeta) - link_zeta));
+    limit =
+        std::min(limit, 2.0 / link_omega * (std::sqrt(1.0 + link_zeta * link_zeta) - link_zeta));
   }
   return limit;
 }

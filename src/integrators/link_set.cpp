@@ -61,12 +61,27 @@ double LinkSet::nodal_norm(const Vector& row_values) const {
 void LinkSet::set_trial(const Vector& delta, const Vector& rate, const Vector& acceleration,
                         double rate_factor, double acceleration_factor, Vector& force,
                         Matrix& tangent) {
+  evaluate(
+      delta, rate, acceleration,
+      [rate_factor, acceleration_factor](const contact::LawResponse& r) {
+        return r.stiffness + r.damping * rate_factor + r.mass * acceleration_factor;
+      },
+      force, tangent);
+}
+
+void LinkSet::set_trial_mass(const Vector& delta, const Vector& rate, const Vector& acceleration,
+                             Vector& force, Matrix& mass_tangent) {
+  evaluate(
+      delta, rate, acceleration, [](const contact::LawResponse& r) { return r.mass; }, force,
+      mass_tangent);
+}
+
+template <typename Total>
+void LinkSet::evaluate(const Vector& delta, const Vector& rate, const Vector& acceleration,
+                       Total total, Vector& force, Matrix& tangent) {
   const Index rows = size();
   force.resize(rows);
   tangent.setZero(rows, rows);
-  auto total = [rate_factor, acceleration_factor](const contact::LawResponse& r) {
-    return r.stiffness + r.damping * rate_factor + r.mass * acceleration_factor;
-  };
   for (std::size_t k = 0; k < links_.size(); ++k) {
     const Index n = first_row_[k];
     const contact::LinkKinematics normal{delta[n], rate[n], acceleration[n]};
@@ -89,15 +104,19 @@ void LinkSet::set_trial(const Vector& delta, const Vector& rate, const Vector& a
 
 void LinkSet::commit() {
   for (Link& link : links_) {
-    if (link.friction) link.friction->commit();
-    else link.law->commit();
+    if (link.friction)
+      link.friction->commit();
+    else
+      link.law->commit();
   }
 }
 
 void LinkSet::revert() {
   for (Link& link : links_) {
-    if (link.friction) link.friction->revert();
-    else link.law->revert();
+    if (link.friction)
+      link.friction->revert();
+    else
+      link.law->revert();
   }
 }
 

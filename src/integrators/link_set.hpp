@@ -38,10 +38,12 @@ class LinkSet {
           std::vector<std::unique_ptr<contact::ContactLaw>> laws);
   explicit LinkSet(Index dofs = 0) : LinkSet(dofs, std::vector<Link>{}) {}
 
-  Index size() const { return connectivity_.rows(); }  // rows
+  Index size() const { return connectivity_.rows(); }                // rows
   Index count() const { return static_cast<Index>(links_.size()); }  // links
   Index row(Index link) const { return first_row_[static_cast<std::size_t>(link)]; }
-  bool has_friction(Index link) const { return links_[static_cast<std::size_t>(link)].friction != nullptr; }
+  bool has_friction(Index link) const {
+    return links_[static_cast<std::size_t>(link)].friction != nullptr;
+  }
   const SparseRowMatrix& connectivity() const { return connectivity_; }  // B (rows x n)
   const Vector& gaps() const { return gaps_; }
 
@@ -57,6 +59,10 @@ class LinkSet {
   // block diagonal (a 2 x 2 block, not symmetric, for a link with friction).
   void set_trial(const Vector& delta, const Vector& rate, const Vector& acceleration,
                  double rate_factor, double acceleration_factor, Vector& force, Matrix& tangent);
+  // The same with dF/d(delta_ddot) alone (the laws' mass terms, exactly), for an explicit step:
+  // its forces depend on the accelerations only through them.
+  void set_trial_mass(const Vector& delta, const Vector& rate, const Vector& acceleration,
+                      Vector& force, Matrix& mass_tangent);
   void commit();
   void revert();
 
@@ -67,6 +73,11 @@ class LinkSet {
   }
 
  private:
+  // Evaluates every law once; `total` makes the tangent entries of a LawResponse.
+  template <typename Total>
+  void evaluate(const Vector& delta, const Vector& rate, const Vector& acceleration, Total total,
+                Vector& force, Matrix& tangent);
+
   std::vector<Link> links_;
   std::vector<Index> first_row_;
   SparseRowMatrix connectivity_;

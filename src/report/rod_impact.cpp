@@ -15,8 +15,8 @@ namespace pound::report {
 namespace {
 
 ExactRod exact_rod(const builder::RodSpec& rod) {
-  return {rod.youngs_modulus, rod.density, rod.area, rod.length, rod.initial_velocity,
-          rod.far_end_fixed};
+  return {rod.youngs_modulus, rod.density,          rod.area,
+          rod.length,         rod.initial_velocity, rod.far_end_fixed};
 }
 
 double travel_time(const builder::RodSpec& rod) {
@@ -40,17 +40,24 @@ std::pair<double, double> exact_contact_window(const builder::RodPairSpec& pair)
   // Long enough for the approach across the gap and many wave transits.
   const double closing = pair.left.initial_velocity - pair.right.initial_velocity;
   const double approach = closing > 0.0 ? pair.gap / closing : 0.0;
-  const double horizon = approach + 20.0 * std::max(travel_time(pair.left), travel_time(pair.right));
+  const double horizon =
+      approach + 20.0 * std::max(travel_time(pair.left), travel_time(pair.right));
   const ExactRodImpact exact = exact_solution(pair, horizon);
   if (exact.contacts().empty()) return {approach, 0.0};
-  return {exact.contacts().front().start, exact.contacts().back().end - exact.contacts().front().start};
+  return {exact.contacts().front().start,
+          exact.contacts().back().end - exact.contacts().front().start};
 }
 
 builder::RodPairSpec kawashima_rod_pair(int elements, double stiffness_ratio) {
   builder::RodPairSpec pair;
   pair.id = "rods";
-  pair.left = {.youngs_modulus = 100.0, .density = 0.1, .area = 1.0, .length = 10.0,
-               .elements = elements, .initial_velocity = 0.1, .far_end_fixed = false};
+  pair.left = {.youngs_modulus = 100.0,
+               .density = 0.1,
+               .area = 1.0,
+               .length = 10.0,
+               .elements = elements,
+               .initial_velocity = 0.1,
+               .far_end_fixed = false};
   pair.right = pair.left;
   pair.right.initial_velocity = -0.1;
   pair.law.type = "gap_spring";
@@ -115,8 +122,10 @@ RodPairNodes::RodPairNodes(const builder::RodPairSpec& pair, const builder::Buil
     out.node_mass = rod.density * rod.area * out.element_length;
     out.mass = rod.density * rod.area * rod.length;
     for (int i = 0; i <= rod.elements; ++i) {
-      out.equation.push_back(dofs.equation(built.node_index.at(builder::rod_node_id(pair, r, i)), 0));
-      out.x.push_back(r == 0 ? -rod.length + i * out.element_length : pair.gap + i * out.element_length);
+      out.equation.push_back(
+          dofs.equation(built.node_index.at(builder::rod_node_id(pair, r, i)), 0));
+      out.x.push_back(r == 0 ? -rod.length + i * out.element_length
+                             : pair.gap + i * out.element_length);
     }
   }
 }
@@ -126,7 +135,8 @@ double RodPairNodes::centre_velocity(const State& state, int rod) const {
   double momentum = 0.0;
   for (std::size_t i = 0; i < r.equation.size(); ++i) {
     const bool end = i == 0 || i + 1 == r.equation.size();
-    if (r.equation[i] >= 0) momentum += (end ? 0.5 : 1.0) * r.node_mass * state.velocity[r.equation[i]];
+    if (r.equation[i] >= 0)
+      momentum += (end ? 0.5 : 1.0) * r.node_mass * state.velocity[r.equation[i]];
   }
   return momentum / r.mass;
 }
@@ -161,6 +171,10 @@ struct RodPairSimulation::Impl {
     spec.analysis.duration = first_contact + options.duration_ratio * exact_duration;
     spec.analysis.relative_tolerance = options.relative_tolerance;
     spec.analysis.integrator = options.integrator;
+    if (options.stable_fraction) {
+      spec.analysis.time_step_auto = true;
+      spec.analysis.safety_factor = *options.stable_fraction;
+    }
     built = builder::build(spec);
     system = std::make_unique<assembly::StructuralSystem>(built.model);
     builder::settle_time_step(built.analysis, built.model, *system, "rod-impact");
@@ -171,9 +185,11 @@ struct RodPairSimulation::Impl {
   TransientStatistics solve(RodImpactResult& result, std::vector<State>* snapshots,
                             State& final_state) {
     auto integrator = builder::make_integrator(built.analysis);
-    TransientAnalysis analysis(*system, *integrator, builder::make_transient_settings(built.analysis));
+    TransientAnalysis analysis(*system, *integrator,
+                               builder::make_transient_settings(built.analysis));
     std::vector<double> targets;
-    for (double label : options.profile_times) targets.push_back(first_contact + label * exact_duration);
+    for (double label : options.profile_times)
+      targets.push_back(first_contact + label * exact_duration);
     if (snapshots) snapshots->assign(targets.size(), State{});
     const std::size_t expected = static_cast<std::size_t>(built.analysis.duration / time_step) + 2;
     result.time.clear();
@@ -203,13 +219,14 @@ struct RodPairSimulation::Impl {
       const std::vector<Index>& equation = nodes->equations(r);
       const double h = nodes->element_length(r);
       for (std::size_t i = 0; i < equation.size(); ++i) {
-        RodProfile::Point point{r, nodes->positions(r)[i], value_at(s.velocity, equation[i]), 0.0,
-                                0.0, 0.0};
+        RodProfile::Point point{
+            r, nodes->positions(r)[i], value_at(s.velocity, equation[i]), 0.0, 0.0, 0.0};
         point.exact_velocity = exact.state(r, point.x, s.time).velocity;
         if (i > 0) {
           // Stress of the element ending at this node, compared at its midpoint.
           const double strain =
-              (value_at(s.displacement, equation[i]) - value_at(s.displacement, equation[i - 1])) / h;
+              (value_at(s.displacement, equation[i]) - value_at(s.displacement, equation[i - 1])) /
+              h;
           point.stress = rod.youngs_modulus * strain;
           point.exact_stress = exact.state(r, point.x - 0.5 * h, s.time).stress;
         }
@@ -234,7 +251,9 @@ RodPairSimulation::~RodPairSimulation() = default;
 double RodPairSimulation::time_step() const { return impl_->time_step; }
 double RodPairSimulation::first_contact() const { return impl_->first_contact; }
 double RodPairSimulation::exact_duration() const { return impl_->exact_duration; }
-std::size_t RodPairSimulation::dofs() const { return static_cast<std::size_t>(impl_->system->size()); }
+std::size_t RodPairSimulation::dofs() const {
+  return static_cast<std::size_t>(impl_->system->size());
+}
 TransientStatistics RodPairSimulation::solve(RodImpactResult& result) {
   State final_state;
   return impl_->solve(result, nullptr, final_state);
@@ -248,7 +267,8 @@ RodImpactResult run_rod_impact(const RodImpactOptions& options) {
   State final_state;
   const auto started = std::chrono::steady_clock::now();
   const TransientStatistics stats = simulation.solve(result, &snapshots, final_state);
-  const double run_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const double run_time =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
   result.metrics = rod_pair_metrics(options.pair, *simulation.nodes, result.time, result.force,
                                     result.penetration, final_state, &result.exact_force);
@@ -263,7 +283,8 @@ RodImpactResult run_rod_impact(const RodImpactOptions& options) {
     const double initial = 0.5 * initial_velocity.dot(mv);
     system.multiply_mass(final_state.velocity, mv);
     system.multiply_stiffness(final_state.displacement, ku);
-    const double final_energy = 0.5 * final_state.velocity.dot(mv) + 0.5 * final_state.displacement.dot(ku);
+    const double final_energy =
+        0.5 * final_state.velocity.dot(mv) + 0.5 * final_state.displacement.dot(ku);
     result.metrics.energy_ratio = initial > 0.0 ? final_energy / initial : 1.0;
   }
   const ExactRodImpact exact = exact_solution(options.pair, final_state.time * (1.0 + 1e-9));

@@ -28,9 +28,9 @@ struct RodImpactMetrics {
   double exact_duration = 0.0;
   double exact_peak_force = 0.0;
   double duration = 0.0;
-  int contact_episodes = 0;        // separate contact intervals of the FE solution in the window
+  int contact_episodes = 0;  // separate contact intervals of the FE solution in the window
   int exact_contact_episodes = 0;
-  double separation_velocity = 0.0;        // v_cm(right) - v_cm(left) at the end
+  double separation_velocity = 0.0;  // v_cm(right) - v_cm(left) at the end
   double exact_separation_velocity = 0.0;
   // Kinetic + strain energy of the rods at the end over the initial kinetic energy (1 for an
   // exact elastic collision; above 1 means the integration made energy).
@@ -39,11 +39,11 @@ struct RodImpactMetrics {
 
 // Velocity and stress along both rods at one instant, FE against exact (Kawashima Fig. 6).
 struct RodProfile {
-  double time = 0.0;  // absolute time of the step used
-  double label = 0.0; // requested time after first contact, in units of T_exact
+  double time = 0.0;   // absolute time of the step used
+  double label = 0.0;  // requested time after first contact, in units of T_exact
   struct Point {
-    int rod;     // 0 left, 1 right
-    double x;    // undeformed coordinate (right rod shifted by the gap, as in the exact solution)
+    int rod;   // 0 left, 1 right
+    double x;  // undeformed coordinate (right rod shifted by the gap, as in the exact solution)
     double velocity, exact_velocity;  // at nodes
     double stress, exact_stress;      // at element midpoints (for the element ending at x)
   };
@@ -55,10 +55,12 @@ struct RodImpactOptions {
   // Time step: dt_ratio * T_exact, or courant * h / C0 of the left rod when set.
   double dt_ratio = 0.01;
   std::optional<double> courant;
+  // Central difference only: this fraction (<= 1) of its computed stable limit instead.
+  std::optional<double> stable_fraction;
   double duration_ratio = 3.0;  // run to duration_ratio * T_exact after first contact
   double relative_tolerance = 1e-10;
   builder::IntegratorSpec integrator;  // average acceleration
-  std::vector<double> profile_times;  // in units of T_exact after first contact
+  std::vector<double> profile_times;   // in units of T_exact after first contact
 };
 
 struct RodImpactResult {
