@@ -539,6 +539,16 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
       for (const auto& [node, delay] : excitation.supports)
         built.analysis.duration =
             std::max(built.analysis.duration, excitation.motion.duration() + delay);
+  // Adaptive steps no longer than the records' sampling, so no peak of a record is stepped over.
+  if (built.analysis.adaptive && built.analysis.adaptive->max_time_step == 0.0) {
+    double sampling = INFINITY;
+    for (const model::UniformExcitation& excitation : model.excitations)
+      sampling = std::min(sampling, excitation.motion.time_step);
+    for (const model::SupportExcitation& excitation : model.support_excitations)
+      sampling = std::min(sampling, excitation.motion.time_step);
+    if (std::isfinite(sampling))
+      built.analysis.adaptive->max_time_step = std::max(sampling, built.analysis.time_step);
+  }
   if (!built.analysis.time_step_auto) check_step_count(built.analysis, spec.source);
   if (spec.damping) model.damping = rayleigh_damping(*spec.damping, model, spec.source);
   if (!spec.recorders_given && !model.links.empty()) {

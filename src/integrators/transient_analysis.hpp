@@ -19,7 +19,7 @@ namespace pound {
 // penetration: the step is redone to end there, so every contact starts on a step boundary
 // whatever the step size was (Kawashima's onset error of up to one step disappears).
 struct AdaptiveStepping {
-  double tolerance = 1e-4;     // e / max |u|
+  double tolerance = 1e-5;     // e / max |u|
   double min_time_step = 0.0;  // floor; a step that fails there stops the run
   double max_time_step = 0.0;  // ceiling (e.g. the record's sample interval x a few)
 };

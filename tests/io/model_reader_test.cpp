@@ -247,6 +247,39 @@ TEST(ModelReader, MessageNamesFilePathAndExpectation) {
   EXPECT_STREQ(error->what(), "x.json: /links/0/gap: must be >= 0, got -0.01");
 }
 
+TEST(ModelReader, ReadsAdaptiveStepping) {
+  const builder::ModelSpec on = parse_model(
+      edited_model(R"([{"op": "add", "path": "/analysis/adaptive", "value": true}])"), "x.json");
+  ASSERT_TRUE(on.analysis.adaptive);
+  EXPECT_EQ(on.analysis.adaptive->tolerance, 1e-5);
+  const builder::ModelSpec off = parse_model(
+      edited_model(R"([{"op": "add", "path": "/analysis/adaptive", "value": false}])"), "x.json");
+  EXPECT_FALSE(off.analysis.adaptive);
+  const builder::ModelSpec set =
+      parse_model(edited_model(R"([{"op": "add", "path": "/analysis/adaptive",
+                        "value": {"tolerance": 1e-3, "min_time_step": 1e-6, "max_time_step": 0.01}}])"),
+                  "x.json");
+  ASSERT_TRUE(set.analysis.adaptive);
+  EXPECT_EQ(set.analysis.adaptive->tolerance, 1e-3);
+  EXPECT_EQ(set.analysis.adaptive->min_time_step, 1e-6);
+  EXPECT_EQ(set.analysis.adaptive->max_time_step, 0.01);
+  for (
+      const auto& [patch, message] : std::vector<std::pair<std::string, std::string>>{
+          {R"([{"op": "add", "path": "/analysis/adaptive", "value": {"tolerence": 1e-3}}])",
+           "x.json: /analysis/adaptive/tolerence: unknown field (did you mean 'tolerance'?)"},
+          {R"([{"op": "add", "path": "/analysis/adaptive", "value": {"tolerance": -1}}])",
+           "x.json: /analysis/adaptive/tolerance: must be > 0, got -1"},
+          {R"([{"op": "add", "path": "/analysis/adaptive", "value": {"min_time_step": 1, "max_time_step": 0.1}}])",
+           "x.json: /analysis/adaptive/min_time_step: must be <= max_time_step"},
+          {R"([{"op": "add", "path": "/analysis/adaptive", "value": true},
+               {"op": "replace", "path": "/analysis/integrator", "value": "central_difference"}])",
+           "x.json: /analysis/adaptive: adaptive stepping is for the implicit integrators"}}) {
+    const std::optional<InputError> error = error_of(edited_model(patch));
+    ASSERT_TRUE(error) << patch;
+    EXPECT_EQ(std::string(error->what()).rfind(message, 0), 0u) << error->what();
+  }
+}
+
 TEST(ModelReader, SuggestsOnlyCloseNames) {
   const std::optional<InputError> error =
       error_of(edited_model(R"([{"op": "add", "path": "/nodes/0/colour", "value": "red"}])"));
@@ -527,8 +560,8 @@ INSTANTIATE_TEST_SUITE_P(
                 "expected a number, got a string"},
         BadCase{"beam_in_1d_scene", replaced("/elements/0/type", R"("beam")"), "/elements/0/type",
                 "a beam needs a 2-D scene"},
-        BadCase{"unknown_element_type", replaced("/elements/0/type", R"("bar")"), "/elements/0/type",
-                "expected one of 'truss', 'beam', got 'bar'"},
+        BadCase{"unknown_element_type", replaced("/elements/0/type", R"("bar")"),
+                "/elements/0/type", "expected one of 'truss', 'beam', got 'bar'"},
         BadCase{"bad_far_end", replaced("/generators/0/left/far_end", R"("hinged")"),
                 "/generators/0/left/far_end", "expected one of 'free', 'fixed', got 'hinged'"},
         BadCase{"unknown_generator_type", replaced("/generators/0/type", R"("rod_par")"),
@@ -540,15 +573,19 @@ INSTANTIATE_TEST_SUITE_P(
                 "expected one of 'newmark_average_acceleration', 'newmark_linear_acceleration'"},
         BadCase{"unknown_integrator_type", replaced("/analysis/integrator/type", R"("wilson")"),
                 "/analysis/integrator/type",
-                "expected one of 'newmark', 'hht', 'generalized_alpha', 'central_difference', got 'wilson'"},
-        BadCase{"auto_step_for_an_implicit_integrator", replaced("/analysis/time_step", R"("auto")"),
-                "/analysis/time_step", "implicit integrators need a number"},
+                "expected one of 'newmark', 'hht', 'generalized_alpha', 'central_difference', got "
+                "'wilson'"},
+        BadCase{"auto_step_for_an_implicit_integrator",
+                replaced("/analysis/time_step", R"("auto")"), "/analysis/time_step",
+                "implicit integrators need a number"},
         BadCase{"hht_with_newmark_beta", replaced("/analysis/integrator/type", R"("hht")"),
                 "/analysis/integrator/beta", "unknown field"},
-        BadCase{"hht_alpha_positive", replaced("/analysis/integrator", R"({"type": "hht", "alpha": 0.1})"),
+        BadCase{"hht_alpha_positive",
+                replaced("/analysis/integrator", R"({"type": "hht", "alpha": 0.1})"),
                 "/analysis/integrator/alpha", "must be <= 0"},
         BadCase{"rho_infinity_above_one",
-                replaced("/analysis/integrator", R"({"type": "generalized_alpha", "rho_infinity": 1.5})"),
+                replaced("/analysis/integrator",
+                         R"({"type": "generalized_alpha", "rho_infinity": 1.5})"),
                 "/analysis/integrator/rho_infinity", "must be <= 1"},
         // Contact laws.
         // The law catalog: every law's parameters, ranges and combinations.
@@ -602,10 +639,11 @@ INSTANTIATE_TEST_SUITE_P(
                 "/links/0/friction/coefficient", "required field is missing"},
         BadCase{"negative_friction", added("/links/0/friction", R"({"coefficient": -0.2})"),
                 "/links/0/friction/coefficient", "must be >= 0"},
-        BadCase{"friction_misspelt", added("/links/0/friction", R"({"coefficient": 0.2, "stik_stiffness": 1})"),
+        BadCase{"friction_misspelt",
+                added("/links/0/friction", R"({"coefficient": 0.2, "stik_stiffness": 1})"),
                 "/links/0/friction/stik_stiffness", "did you mean 'stick_stiffness'?"},
-        BadCase{"load_y_in_1d", added("/loads", R"([{"node": "b0", "y": -9.81}])"),
-                "/loads/0/y", "only allowed when dimension is 2"},
+        BadCase{"load_y_in_1d", added("/loads", R"([{"node": "b0", "y": -9.81}])"), "/loads/0/y",
+                "only allowed when dimension is 2"},
         BadCase{"load_is_string", added("/loads", R"([{"node": "b0", "x": "heavy"}])"),
                 "/loads/0/x", "expected a number"},
         BadCase{"unknown_law", replaced("/links/0/law/type", R"("gap_sprng")"), "/links/0/law/type",
