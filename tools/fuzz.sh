@@ -11,7 +11,7 @@ set -euo pipefail
 seconds=${1:-20}
 cd "$(dirname "$0")/.."
 build=build-fuzz
-targets=(model at2 columns)
+targets=(model set at2 columns)
 
 if [ ! -f "$build/build.ninja" ]; then
   CXX=clang++ cmake -S . -B "$build" -G Ninja -DPOUND_FUZZ=ON -DPOUND_BUILD_TESTS=OFF \
@@ -30,9 +30,9 @@ for target in "${targets[@]}"; do
   cp -r "fuzz/corpus/$target" "$work/corpus"  # libFuzzer adds what it finds to the first folder
   seeds=()
   # The real records are seeds for their headers; cut to 16 kB so mutating them stays fast.
-  if [ "$target" != model ]; then seeds=("${extra_seeds[@]}"); fi
+  if [ "$target" = at2 ] || [ "$target" = columns ]; then seeds=("${extra_seeds[@]}"); fi
   dict=fuzz/record.dict
-  if [ "$target" = model ]; then dict=fuzz/model.dict; fi
+  if [ "$target" = model ] || [ "$target" = set ]; then dict=fuzz/model.dict; fi
   echo "fuzz_$target: ${seconds} s"
   if "$build/fuzz/fuzz_$target" -max_total_time="$seconds" -timeout=5 -rss_limit_mb=2048 \
       -max_len=16384 -dict="$dict" -print_final_stats=1 -artifact_prefix="$build/findings/$target-" \
