@@ -53,6 +53,14 @@ std::vector<std::unique_ptr<results::Recorder>> make_recorders(const builder::Bu
   return recorders;
 }
 
+// What a link is for, from its law: the summary and the batch row treat them apart.
+enum class LinkRole { contact, tension, spring };
+LinkRole link_role(const std::string& law) {
+  if (law == "elastic_spring" || law == "bilinear_spring") return LinkRole::spring;
+  if (law == "restrainer" || law == "hook") return LinkRole::tension;
+  return LinkRole::contact;
+}
+
 io::Document link_document(const model::Link& link, const results::LinkSummary& s) {
   io::Document doc;
   doc.set("id", link.id)
@@ -117,10 +125,10 @@ void summarise_case(const LoadedModel& loaded, const assembly::StructuralSystem&
   c.steps = static_cast<double>(stats.steps);
   for (std::size_t k = 0; k < built.model.links.size(); ++k) {
     const results::LinkSummary& s = links.summaries()[k];
-    const std::string law = system.links().law(static_cast<Index>(k)).name();
+    const LinkRole role = link_role(system.links().law(static_cast<Index>(k)).name());
     const std::string& id = built.model.links[k].id;
-    if (law == "elastic_spring" || law == "bilinear_spring") continue;
-    if (law == "restrainer" || law == "hook") {
+    if (role == LinkRole::spring) continue;
+    if (role == LinkRole::tension) {
       if (!c.max_restrainer_force || s.peak_tension > *c.max_restrainer_force) {
         c.max_restrainer_force = s.peak_tension;
         c.max_restrainer_link = id;
@@ -365,10 +373,11 @@ RunOutcome run_model(const RunRequest& request) {
       const results::LinkSummary& s = links.summaries()[k];
       const std::string law = system->links().law(static_cast<Index>(k)).name();
       const std::string& id = built.model.links[k].id;
-      if (law == "elastic_spring" || law == "bilinear_spring") {
+      const LinkRole role = link_role(law);
+      if (role == LinkRole::spring) {
         ++springs;
         spring_force = std::max({spring_force, s.peak_force, s.peak_tension});
-      } else if (law == "restrainer" || law == "hook") {
+      } else if (role == LinkRole::tension) {
         report +=
             fmt::format("  {} {}: taut {} time(s), peak tension {:.6g}, peak opening {:.4g}\n", law,
                         id, s.impacts, s.peak_tension, s.peak_opening);

@@ -89,6 +89,11 @@ double masked_magnitude(const Vector& x, const Vector& mask) {
   return x.size() ? x.cwiseAbs().cwiseProduct(mask).maxCoeff() : 0.0;
 }
 
+// max |a - b| over the masked DOFs, without a temporary inside the time loop.
+double masked_difference(const Vector& a, const Vector& b, const Vector& mask) {
+  return a.size() ? (a - b).cwiseAbs().cwiseProduct(mask).maxCoeff() : 0.0;
+}
+
 // The contact instant inside a step, as a fraction of it, over the link rows that were open (no
 // force) and close in the trial. Before the contact the row moves freely, so its penetration is
 // extrapolated from the start of the step, delta_n + rate_n tau + accel_n tau^2 / 2 = 0 (the
@@ -141,6 +146,18 @@ void TransientAnalysis::run_adaptive(State& state, const StepObserver& observer)
   double displacement_scale = masked_magnitude(state.displacement, mask);
   Vector start_rate, start_acceleration;  // of the link rows at the start of a step
   stats.smallest_step = INFINITY;
+  // The trial in next_ becomes the state.
+  auto accept = [&](double step, const StepResult& result) {
+    system_.links().commit();
+    std::swap(state, next_);
+    ++stats.steps;
+    stats.newton_iterations += result.iterations;
+    stats.max_unbalanced_force = std::max(stats.max_unbalanced_force, result.unbalanced_force);
+    stats.smallest_step = std::min(stats.smallest_step, step);
+    stats.largest_step = std::max(stats.largest_step, step);
+    displacement_scale = std::max(displacement_scale, masked_magnitude(state.displacement, mask));
+    if (observer) observer(state, result);
+  };
   const double end = settings_.end_time;
   while (end - state.time > 1e-12 * std::max(1.0, std::abs(end))) {
     check_limits(state);
@@ -169,17 +186,7 @@ void TransientAnalysis::run_adaptive(State& state, const StepObserver& observer)
       const double to_contact_step = theta * (1.0 - 1e-9) * step;
       const StepResult to_contact = integrator_.advance(system_, state, to_contact_step, next_);
       if (to_contact.converged) {
-        system_.links().commit();
-        std::swap(state, next_);
-        ++stats.steps;
-        stats.newton_iterations += to_contact.iterations;
-        stats.max_unbalanced_force =
-            std::max(stats.max_unbalanced_force, to_contact.unbalanced_force);
-        stats.smallest_step = std::min(stats.smallest_step, to_contact_step);
-        stats.largest_step = std::max(stats.largest_step, to_contact_step);
-        displacement_scale =
-            std::max(displacement_scale, masked_magnitude(state.displacement, mask));
-        if (observer) observer(state, to_contact);
+        accept(to_contact_step, to_contact);
         dt = on_grid(std::max(floor, 0.5 * dt));  // the contact begins: look closer
         continue;
       }
@@ -191,10 +198,10 @@ void TransientAnalysis::run_adaptive(State& state, const StepObserver& observer)
     // (a massless DOF's "acceleration" is whatever keeps it in equilibrium, and rotations are in
     // other units).
     const double scale = std::max({displacement_scale, masked_magnitude(next_.displacement, mask),
-                                   masked_magnitude(next_.displacement - state.displacement, mask),
+                                   masked_difference(next_.displacement, state.displacement, mask),
                                    std::numeric_limits<double>::min()});
     const double error = step * step / 12.0 *
-                         masked_magnitude(next_.acceleration - state.acceleration, mask) / scale;
+                         masked_difference(next_.acceleration, state.acceleration, mask) / scale;
     if (error > 2.0 * adaptive.tolerance && step > floor * (1.0 + 1e-12)) {
       system_.links().revert();
       ++stats.rejected_steps;
@@ -204,15 +211,7 @@ void TransientAnalysis::run_adaptive(State& state, const StepObserver& observer)
                     on_grid(std::max(floor, 0.5 * step)));
       continue;
     }
-    system_.links().commit();
-    std::swap(state, next_);
-    ++stats.steps;
-    stats.newton_iterations += result.iterations;
-    stats.max_unbalanced_force = std::max(stats.max_unbalanced_force, result.unbalanced_force);
-    stats.smallest_step = std::min(stats.smallest_step, step);
-    stats.largest_step = std::max(stats.largest_step, step);
-    displacement_scale = std::max(displacement_scale, masked_magnitude(state.displacement, mask));
-    if (observer) observer(state, result);
+    accept(step, result);
     const double growth = error > 0.0 ? 0.9 * std::cbrt(adaptive.tolerance / error) : 2.0;
     dt = on_grid(std::clamp(step * growth, 0.5 * step, 2.0 * step));
   }
