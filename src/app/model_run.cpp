@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <limits>
 
+#include "assembly/static_equilibrium.hpp"
 #include "assembly/structural_system.hpp"
 #include "builder/build.hpp"
 #include "core/errors.hpp"
@@ -215,6 +216,8 @@ RunOutcome run_model(const RunRequest& request) {
   const auto started = std::chrono::steady_clock::now();
   const double setup_time = std::chrono::duration<double>(started - loading).count();
   try {
+    if (built.analysis.static_initial_state)
+      state.displacement = assembly::static_equilibrium(*system, state.time).displacement;
     stats = analysis.run(state, [&](const State& s, const StepResult&) {
       for (auto& recorder : recorders) recorder->record(s);
       links.record(s);

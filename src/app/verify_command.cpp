@@ -2,12 +2,16 @@
 
 #include <boost/program_options.hpp>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 
 #include "app/command_line.hpp"
 #include "app/commands.hpp"
 #include "core/errors.hpp"
 #include "io/output.hpp"
+#include "io/model_reader.hpp"
+#include "report/block_belt.hpp"
+#include "report/rod_impact_2d.hpp"
 #include "report/rod_impact_report.hpp"
 
 namespace pound::app {
@@ -23,6 +27,13 @@ benchmarks:
                 eqs. 4 and 23-24 over a sweep of alpha0/k, alpha2, k2/k1, m2/m1 (error <= 1e-10)
   restitution   two masses collide once through every impact law, e = 0.3, 0.5, 0.7, 0.9:
                 target and achieved restitution, peak force, contact time, penetration
+  rod-impact-2d Suzuki & Toi's rods (fixed-end case, 50 elements, extended penalty) as 2-D
+                strips of quads with mu = 0.6 at the interface: force_l2_error of the 2-D and the
+                1-D model against the exact 1-D solution (--n-across, --csv)
+  block-belt    Suzuki & Toi's elastic block on a moving belt (--model, default
+                models/block_on_belt.json) swept over Pi = V0 sqrt(m k_s) / (mu P): apparent
+                mu_dynamic / mu_static, stick-slip and tumbling per speed (--speeds, --periods,
+                --out DIR writes block_belt_sweep.csv and block_belt_histories.csv)
 
 rod-impact: two elastic rods collide; the finite element solution (lumped-mass rods, contact link, Newmark
 with Newton iteration) is compared with the exact solution of the wave equation computed by
@@ -34,6 +45,56 @@ peak_force_ratio, max_penetration, min_force, run_time_s (solve alone), steps, n
 
 options)";
 
+int verify_block_belt(const std::string& model_path, const std::string& speed_list, double periods,
+                      const std::string& out_folder, bool json) {
+  std::vector<double> speeds = report::block_belt_speeds();
+  if (!speed_list.empty()) {
+    speeds.clear();
+    std::size_t start = 0;
+    while (start <= speed_list.size()) {
+      const std::size_t end = std::min(speed_list.find(',', start), speed_list.size());
+      const std::string item = speed_list.substr(start, end - start);
+      std::size_t used = 0;
+      double value = 0.0;
+      try {
+        value = std::stod(item, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != item.size() || item.empty() || !(value > 0.0) || !std::isfinite(value)) {
+        std::cerr << fmt::format("pound verify: --speeds: '{}' is not a positive number\n", item);
+        return 1;
+      }
+      speeds.push_back(value);
+      start = end + 1;
+    }
+  }
+  if (!(periods > 0.0) || !std::isfinite(periods)) {
+    std::cerr << "pound verify: --periods must be > 0\n";
+    return 1;
+  }
+  const builder::ModelSpec spec = io::read_model_file(model_path);
+  const report::BlockBeltScene scene = report::block_belt_scene(spec);
+  report::BlockBeltOptions options;
+  options.periods = periods;
+  std::vector<report::BlockBeltPoint> points;
+  for (double speed : speeds) {
+    points.push_back(report::run_block_belt(spec, speed, options));
+    if (!json)
+      std::cerr << fmt::format("  Pi = {:.3g}: {} steps in {:.2f} s\n", speed, points.back().steps,
+                               points.back().run_time_s);
+  }
+  if (!out_folder.empty()) {
+    std::filesystem::create_directories(out_folder);
+    io::write_csv_atomic(out_folder + "/block_belt_sweep.csv", report::block_belt_sweep_table(points));
+    io::write_csv_atomic(out_folder + "/block_belt_histories.csv",
+                         report::block_belt_history_table(points));
+  }
+  std::cout << (json ? report::to_document(scene, points).dump() + "\n"
+                     : report::format_block_belt(scene, points));
+  return 0;
+}
+
 }  // namespace
 
 int verify_command(const Arguments& arguments) {
@@ -42,6 +103,9 @@ int verify_command(const Arguments& arguments) {
   double stiffness_ratio = 1.0, dt_ratio = 0.01, duration_ratio = 3.0, tolerance = 1e-10;
   std::string law = "gap_spring", case_name = "kawashima", csv, profiles_csv, study, integrator;
   double courant = 0.0, eta = 1.0, hht_alpha = -0.1, rho_infinity = 0.8;
+  std::string block_model = "models/block_on_belt.json", speeds, out_folder;
+  double periods = 4.0;
+  int elements_across = 4;
   options.add_options()("help,h", "show this help")(
       "case", po::value(&case_name)->default_value(case_name),
       "benchmark case: kawashima (free rods, +-V0), fixed-end (rod into a rod at rest with a fixed "
@@ -71,6 +135,15 @@ int verify_command(const Arguments& arguments) {
       "profiles-csv", po::value(&profiles_csv),
       "write velocity and stress along both rods at 0, T/4, T/2, 3T/4 after first contact, FE and "
       "exact (Kawashima Fig. 6)")(
+      "n-across", po::value(&elements_across)->default_value(elements_across),
+      "rod-impact-2d: elements across each strip")(
+      "model", po::value(&block_model)->default_value(block_model),
+      "block-belt: the block-on-belt model")(
+      "speeds", po::value(&speeds),
+      "block-belt: comma-separated values of Pi (default: 1e-3 ... 1e8)")(
+      "periods", po::value(&periods)->default_value(periods),
+      "block-belt: run length in spring periods 2 pi sqrt(m / k_s)")(
+      "out", po::value(&out_folder), "block-belt: folder for the sweep and history CSVs")(
       "study", po::value(&study),
       "kawashima: Kawashima's tables over k_I, n and dt; penalty: Suzuki & Toi's alpha0-only and "
       "extended-penalty cases (Figs. 7-8)");
@@ -93,11 +166,34 @@ int verify_command(const Arguments& arguments) {
     for (const auto& r : rows) met = met && (!r.calibrated || std::abs(r.achieved - r.target) <= 0.005);
     return met ? 0 : 1;
   }
+  if (benchmark == "rod-impact-2d") {
+    if (elements_across < 1) {
+      std::cerr << "pound verify: --n-across must be >= 1\n";
+      return 1;
+    }
+    report::RodImpact2dOptions run = report::suzuki_toi_rods_2d();
+    run.elements_across = elements_across;
+    const report::RodImpact2dResult r = report::run_rod_impact_2d(run);
+    if (!csv.empty()) io::write_csv_atomic(csv, report::rod_impact_2d_table(r));
+    std::cout << fmt::format(
+        "rod impact in 2-D (Suzuki & Toi 1987, Fig. 11): fixed-end case, 50 x {} quads per strip, "
+        "mu = {:g}, {} contact links\n"
+        "                 force_l2_error  peak/exact   steps\n"
+        "  2-D strips     {:>14.4f}  {:>10.4f}  {:>6}\n"
+        "  1-D rods       {:>14.4f}  {:>10.4f}  {:>6}\n"
+        "exact 1-D: peak force {:.6g}, contact duration {:.6g}\n",
+        run.elements_across, run.friction, r.contact_links, r.force_l2_error_2d,
+        r.peak_force_2d / r.exact_peak_force, r.steps_2d, r.force_l2_error_1d,
+        r.peak_force_1d / r.exact_peak_force, r.steps_1d, r.exact_peak_force, r.exact_duration);
+    return 0;
+  }
+  if (benchmark == "block-belt") return verify_block_belt(block_model, speeds, periods, out_folder, json);
   if (benchmark != "rod-impact") {
     std::cerr << (benchmark.empty()
-                      ? "pound verify: name a benchmark: rod-impact, two-element, restitution\n"
+                      ? "pound verify: name a benchmark: rod-impact, two-element, restitution, "
+                        "rod-impact-2d, block-belt\n"
                       : fmt::format("pound verify: unknown benchmark '{}' (known: rod-impact, "
-                                    "two-element, restitution)\n",
+                                    "two-element, restitution, rod-impact-2d, block-belt)\n",
                                     benchmark));
     return 1;
   }

@@ -9,6 +9,7 @@
 #include <map>
 
 #include "assembly/banded_ldlt.hpp"
+#include "assembly/quad_element.hpp"
 #include "assembly/twisted_tridiagonal.hpp"
 #include "core/errors.hpp"
 
@@ -196,6 +197,37 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
     }
   }
 
+  for (const model::Quad& quad : model.quads) {
+    QuadCorners corners;
+    std::vector<std::pair<Index, int>> dofs;
+    for (int a = 0; a < 4; ++a) {
+      const Index node = quad.nodes[static_cast<std::size_t>(a)];
+      corners[static_cast<std::size_t>(a)] = model.nodes[static_cast<std::size_t>(node)].position;
+      dofs.emplace_back(node, 0);
+      dofs.emplace_back(node, 1);
+    }
+    const Matrix8 element_stiffness = quad_stiffness(quad, corners);
+    scatter(stiffness, element_stiffness, dofs);
+    couple(element_stiffness, dofs);
+    const model::RayleighDamping c = coefficients(quad.damping);
+    if (c.stiffness_coefficient != 0.0)
+      scatter(damping, Matrix8(c.stiffness_coefficient * element_stiffness), dofs);
+    const Matrix8 element_mass = quad_consistent_mass(quad, corners);
+    if (quad.consistent_mass) {
+      consistent = true;
+      scatter(consistent_mass, element_mass, dofs);
+      if (c.mass_coefficient != 0.0)
+        scatter(damping, Matrix8(c.mass_coefficient * element_mass), dofs);
+    } else {
+      // Row sums: positive for the bilinear shapes, a quarter of the mass per node of a
+      // parallelogram.
+      const Eigen::Matrix<double, 8, 1> lumped = element_mass.rowwise().sum();
+      for (int k = 0; k < 8; ++k)
+        add_mass(dofs[static_cast<std::size_t>(k)].first, dofs[static_cast<std::size_t>(k)].second,
+                 lumped[k], c.mass_coefficient);
+    }
+  }
+
   for (const model::NodalMass& lumped : model.masses) {
     const double a0 = coefficients(lumped.damping).mass_coefficient;
     for (int d = 0; d < std::min(dpn, 2); ++d) add_mass(lumped.node, d, lumped.mass, a0);
@@ -283,6 +315,7 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
     std::array<double, 3> direction;
   };
   std::vector<RowGeometry> rows;
+  std::vector<std::size_t> row_links;  // the link of each row
   for (const model::Link& link : model.links) {
     // Row of a direction d: +d at node i, -d at node j (fixed DOFs dropped).
     auto row_along = [&](const std::array<double, 3>& direction) {
@@ -292,8 +325,12 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
         if (component == 0.0) continue;
         if (const Index eq = dofs_.equation(link.node_i, d); eq >= 0)
           row.push_back({eq, component});
-        if (const Index eq = dofs_.equation(link.node_j, d); eq >= 0)
-          row.push_back({eq, -component});
+        const double weight_j = link.segment_end ? 1.0 - link.segment_weight : 1.0;
+        if (const Index eq = dofs_.equation(link.node_j, d); eq >= 0 && weight_j != 0.0)
+          row.push_back({eq, -weight_j * component});
+        if (link.segment_end && link.segment_weight != 0.0)
+          if (const Index eq = dofs_.equation(*link.segment_end, d); eq >= 0)
+            row.push_back({eq, -link.segment_weight * component});
       }
       return row;
     };
@@ -303,6 +340,7 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
                         : std::array<double, 3>{link.axis[0], link.axis[1], 0.0};
     entry.normal_row = row_along(normal);
     rows.push_back({link.node_i, link.node_j, normal});
+    row_links.push_back(links.size());
     entry.gap = link.gap;
     std::unique_ptr<contact::ContactLaw> law = link.make_law(link_context(link));
     if (!link.friction) {
@@ -310,6 +348,7 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
     } else {
       entry.tangential_row = row_along({-link.axis[1], link.axis[0], 0.0});
       rows.push_back({link.node_i, link.node_j, {-link.axis[1], link.axis[0], 0.0}});
+      row_links.push_back(links.size());
       // The stick penalty defaults to the normal law's tangent at first touch.
       const auto probe = law->clone();
       const contact::LawResponse touch = probe->set_trial({1e-12, 1e-12, 0.0});
@@ -323,6 +362,13 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
     links.push_back(std::move(entry));
   }
   links_ = LinkSet(n, std::move(links));
+  // Rows whose j side moves on its own (a belt): delta gains -(velocity_j . direction) t.
+  surface_rate_ = Vector::Zero(links_.size());
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const model::Link& link = model.links[static_cast<std::size_t>(row_links[r])];
+    surface_rate_[static_cast<Index>(r)] = -(link.velocity_j[0] * rows[r].direction[0] +
+                                             link.velocity_j[1] * rows[r].direction[1]);
+  }
 
   if (!moving_supports) return;
   // Any influence matrix R gives exact equations if the static term -(K_ff R + K_fs) u_s(t) is
@@ -373,6 +419,7 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
 }
 
 bool StructuralSystem::has_link_motion() const {
+  if (surface_rate_.size() > 0 && surface_rate_.any()) return true;
   for (const MovingSupport& support : moving_supports_)
     if (support.link_coefficients.size() > 0 && support.link_coefficients.any()) return true;
   return false;
@@ -383,6 +430,10 @@ void StructuralSystem::link_motion(double time, Vector& offset, Vector& rate,
   offset.setZero(links_.size());
   rate.setZero(links_.size());
   acceleration.setZero(links_.size());
+  if (surface_rate_.size() > 0) {
+    offset += time * surface_rate_;
+    rate += surface_rate_;
+  }
   for (const MovingSupport& support : moving_supports_) {
     const model::GroundState ground = support.kinematics.at(time);
     offset += ground.displacement * support.link_coefficients;
@@ -412,6 +463,16 @@ contact::LinkContext StructuralSystem::link_context(const model::Link& link) con
   };
   end(link.node_i, context.mass_i, context.stiffness_i, context.fixed_i);
   end(link.node_j, context.mass_j, context.stiffness_j, context.fixed_j);
+  if (link.segment_end) {
+    // A point inside a segment: the ends' numbers interpolated like its displacement.
+    double mass_k = 0.0, stiffness_k = 0.0;
+    bool fixed_k = true;
+    end(*link.segment_end, mass_k, stiffness_k, fixed_k);
+    const double w = link.segment_weight;
+    context.mass_j = (1 - w) * context.mass_j + w * mass_k;
+    context.stiffness_j = (1 - w) * context.stiffness_j + w * stiffness_k;
+    context.fixed_j = context.fixed_j && fixed_k;
+  }
   return context;
 }
 

@@ -66,6 +66,7 @@ class StructuralSystem final : public SecondOrderSystem {
     Vector static_load;                  // -(K_ff r + K_fs): zero when r is K_ff's own
   };
   std::vector<MovingSupport> moving_supports_;
+  Vector surface_rate_;  // d(delta)/dt of each link row from its moving j side (belts)
   Eigen::SparseMatrix<double> stiffness_;
   // The same for K x, a large part of an explicit step. A band at least half full (chains
   // numbered in node order) is kept by diagonals, column b + k holding K(i, i + k): the product

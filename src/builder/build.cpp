@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -9,6 +10,7 @@
 #include <numbers>
 
 #include "assembly/modal_analysis.hpp"
+#include "assembly/quad_element.hpp"
 #include "assembly/structural_system.hpp"
 #include "builder/generators.hpp"
 #include "contact/backfill.hpp"
@@ -67,10 +69,10 @@ class Resolver {
 // Path of entry k of an expanded array: the user's own entries keep their path; generated ones
 // point at their generator.
 std::function<std::string(std::size_t)> origin_of(std::size_t user_count, const char* array,
-                                                  const std::vector<int>& generated_from) {
+                                                  const std::vector<std::string>& generated_from) {
   return [user_count, array, &generated_from](std::size_t k) {
     if (k < user_count) return fmt::format("/{}/{}", array, k);
-    return fmt::format("/generators/{}", generated_from[k - user_count]);
+    return generated_from[k - user_count];
   };
 }
 
@@ -418,6 +420,38 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
       resolve.fail(path + "/material",
                    fmt::format("material '{}' does not exist", element.material));
     const MaterialSpec& m = spec.materials[static_cast<std::size_t>(material->second)];
+    std::optional<model::RayleighDamping> own;
+    if (element.rayleigh)
+      own = model::RayleighDamping{(*element.rayleigh)[0], (*element.rayleigh)[1]};
+    if (element.type == "quad") {
+      model::Quad quad{element.id,      {node_i, node_j, 0, 0}, m.youngs_modulus,
+                       m.poisson_ratio.value_or(0.0),
+                       element.thickness, m.density, element.plane_strain,
+                       element.consistent_mass, own};
+      assembly::QuadCorners corners;
+      for (std::size_t a = 0; a < 4; ++a) {
+        if (a >= 2)
+          quad.nodes[a] = resolve.node(built.node_index, element.more_nodes[a - 2],
+                                       fmt::format("{}/nodes/{}", path, a));
+        for (std::size_t b = 0; b < a; ++b)
+          if (quad.nodes[a] == quad.nodes[b])
+            resolve.fail(path + "/nodes", fmt::format("quad '{}' names node '{}' twice",
+                                                      element.id, model.nodes[quad.nodes[a]].id));
+        corners[a] = model.nodes[static_cast<std::size_t>(quad.nodes[a])].position;
+      }
+      const double jacobian = assembly::quad_smallest_jacobian(corners);
+      if (!(jacobian > 0.0) || !std::isfinite(jacobian))
+        resolve.fail(path + "/nodes",
+                     fmt::format("quad '{}' is degenerate, inverted or numbered clockwise (its "
+                                 "nodes must go counter-clockwise round a convex quadrilateral)",
+                                 element.id));
+      if (!m.poisson_ratio)
+        resolve.fail(path + "/material",
+                     fmt::format("material '{}' needs a 'poisson_ratio' for a quad",
+                                 element.material));
+      model.quads.push_back(std::move(quad));
+      continue;
+    }
     if (!(model.length(node_i, node_j) > 0.0))
       resolve.fail(path + "/nodes", fmt::format("element '{}' has zero length (nodes '{}' and '{}' "
                                                 "are at the same place)",
@@ -430,9 +464,6 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
           fmt::format("element '{}' is infinitely long (nodes '{}' and '{}' are {:g} "
                       "apart)",
                       element.id, element.node_i, element.node_j, model.length(node_i, node_j)));
-    std::optional<model::RayleighDamping> own;
-    if (element.rayleigh)
-      own = model::RayleighDamping{(*element.rayleigh)[0], (*element.rayleigh)[1]};
     if (element.type == "beam") {
       model.beams.push_back({element.id, node_i, node_j, m.youngs_modulus, element.area,
                              element.inertia, m.density, element.extra_mass,
@@ -442,6 +473,11 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
           {element.id, node_i, node_j, m.youngs_modulus, element.area, m.density, own});
     }
   }
+  if (!model.quads.empty() && !model.beams.empty())
+    for (std::size_t k = 0; k < spec.elements.size(); ++k)
+      if (spec.elements[k].type == "quad")
+        resolve.fail(element_origin(k) + "/type",
+                     "quads (2 DOFs per node) cannot share a scene with beams (3 DOFs per node)");
 
   for (std::size_t k = 0; k < spec.masses.size(); ++k)
     model.masses.push_back(
@@ -458,9 +494,10 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
         {resolve.node(built.node_index, spec.supports[k].node, support_origin(k) + "/node"),
          {spec.supports[k].fix_x, spec.supports[k].fix_y, spec.supports[k].fix_rotation}});
 
+  const auto load_origin = origin_of(user_spec.loads.size(), "loads", spec.generated_from.loads);
   for (std::size_t k = 0; k < spec.loads.size(); ++k)
     model.loads.push_back(
-        {resolve.node(built.node_index, spec.loads[k].node, fmt::format("/loads/{}/node", k)),
+        {resolve.node(built.node_index, spec.loads[k].node, load_origin(k) + "/node"),
          {spec.loads[k].x, spec.loads[k].y}});
 
   const auto velocity_origin = origin_of(user_spec.initial_velocities.size(), "initial_velocities",
@@ -484,10 +521,35 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
       resolve.fail(path + "/nodes", "a link cannot join a node to itself");
     link.gap = spec_link.gap;
     link.rotational = spec_link.rotational;
+    link.velocity_j = {spec_link.velocity_j[0], spec_link.velocity_j[1]};
+    if (spec_link.segment_end) {
+      const Index k_node = resolve.node(built.node_index, *spec_link.segment_end, path + "/segment/1");
+      if (k_node == link.node_i || k_node == link.node_j)
+        resolve.fail(path + "/segment", "a segment needs two nodes other than the link's node i");
+      link.segment_end = k_node;
+      const auto& p = model.nodes[static_cast<std::size_t>(link.node_i)].position;
+      const auto& a = model.nodes[static_cast<std::size_t>(link.node_j)].position;
+      const auto& b = model.nodes[static_cast<std::size_t>(k_node)].position;
+      const double sx = b[0] - a[0], sy = b[1] - a[1], length2 = sx * sx + sy * sy;
+      if (!(length2 > 0.0) || !std::isfinite(length2))
+        resolve.fail(path + "/segment", "the segment's two nodes are at the same place");
+      link.segment_weight =
+          std::clamp(((p[0] - a[0]) * sx + (p[1] - a[1]) * sy) / length2, 0.0, 1.0);
+      if (!spec_link.axis) {
+        // The segment's normal, pointing from node i towards the segment.
+        const double length = std::sqrt(length2);
+        model::Coordinates normal{-sy / length, sx / length};
+        const double side = (a[0] - p[0]) * normal[0] + (a[1] - p[1]) * normal[1];
+        if (std::abs(side) <= 1e-12 * length)
+          resolve.fail(path, "node i lies on the segment: give the link an \"axis\"");
+        if (side < 0.0) normal = {-normal[0], -normal[1]};
+        link.axis = normal;
+      }
+    }
     if (spec_link.axis) {
       const auto& axis = *spec_link.axis;
       link.axis = {axis[0], axis.size() > 1 ? axis[1] : 0.0};
-    } else {
+    } else if (!spec_link.segment_end) {
       const auto& a = model.nodes[static_cast<std::size_t>(link.node_i)].position;
       const auto& b = model.nodes[static_cast<std::size_t>(link.node_j)].position;
       const double dx = b[0] - a[0], dy = spec.dimension == 2 ? b[1] - a[1] : 0.0;
@@ -633,6 +695,10 @@ ModelSize model_size(const ModelSpec& spec) {
             (spans + 1) * (static_cast<std::size_t>(bridge.pier.elements) + 3) + 8,
         fmt::format("/generators/{}", bridge.generator_index));
   }
+  for (const BlockSpec& block : spec.blocks)
+    add((static_cast<std::size_t>(block.columns) + 1) * (static_cast<std::size_t>(block.rows) + 1),
+        fmt::format("/generators/{}", block.generator_index));
+  for (const SurfaceSpec& surface : spec.surfaces) add(1, fmt::format("/surfaces/{}", surface.index));
   size.dofs = size.nodes * (spec.dimension == 1 ? 1 : 3);
   return size;
 }

@@ -50,9 +50,9 @@ ModelSpec expand(const ModelSpec& spec) {
   out.rod_pair_generator_index.clear();
   auto& from = out.generated_from;
   // Everything appended since the last call came from `generator`.
-  auto mark = [&out, &from, &spec](int generator) {
-    auto fill = [generator](std::vector<int>& origins, std::size_t total, std::size_t user) {
-      origins.resize(total - user, generator);
+  auto mark_path = [&out, &from, &spec](const std::string& path) {
+    auto fill = [&path](std::vector<std::string>& origins, std::size_t total, std::size_t user) {
+      origins.resize(total - user, path);
     };
     fill(from.nodes, out.nodes.size(), spec.nodes.size());
     fill(from.materials, out.materials.size(), spec.materials.size());
@@ -60,7 +60,9 @@ ModelSpec expand(const ModelSpec& spec) {
     fill(from.supports, out.supports.size(), spec.supports.size());
     fill(from.initial_velocities, out.initial_velocities.size(), spec.initial_velocities.size());
     fill(from.links, out.links.size(), spec.links.size());
+    fill(from.loads, out.loads.size(), spec.loads.size());
   };
+  auto mark = [&mark_path](int generator) { mark_path(fmt::format("/generators/{}", generator)); };
   for (std::size_t g = 0; g < spec.rod_pairs.size(); ++g) {
     const RodPairSpec& pair = spec.rod_pairs[g];
     add_rod(pair, 0, out);
@@ -89,6 +91,21 @@ ModelSpec expand(const ModelSpec& spec) {
   for (const GirderBridgeSpec& bridge : spec.bridges) {
     add_girder_bridge(bridge, out);
     mark(bridge.generator_index);
+  }
+  out.blocks.clear();
+  out.surfaces.clear();
+  out.contacts.clear();
+  for (const BlockSpec& block : spec.blocks) {
+    add_block(block, out);
+    mark(block.generator_index);
+  }
+  for (const SurfaceSpec& surface : spec.surfaces) {
+    add_surface(surface, out);
+    mark_path(fmt::format("/surfaces/{}", surface.index));
+  }
+  for (const ContactSpec& contact : spec.contacts) {
+    add_contact(contact, out);
+    mark_path(fmt::format("/contacts/{}", contact.index));
   }
   return out;
 }

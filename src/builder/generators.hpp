@@ -17,6 +17,10 @@ ModelSpec expand(const ModelSpec& spec);
 // Appends what one generator makes to `out` (used by expand()).
 void add_adjacent_buildings(const AdjacentBuildingsSpec& pair, ModelSpec& out);
 void add_girder_bridge(const GirderBridgeSpec& bridge, ModelSpec& out);
+void add_block(const BlockSpec& block, ModelSpec& out);
+void add_surface(const SurfaceSpec& surface, ModelSpec& out);
+void add_contact(const ContactSpec& contact, ModelSpec& out);
+std::string block_node_id(const BlockSpec& block, int column, int row);
 std::string building_node_id(const AdjacentBuildingsSpec& pair, int side, int floor);
 
 // Generated ids, shared with whoever looks the generated parts up again.

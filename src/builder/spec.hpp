@@ -42,20 +42,24 @@ struct MaterialSpec {
   std::string id;
   double youngs_modulus = 0.0;  // E [F/L^2], > 0
   double density = 0.0;         // rho [M/L^3], >= 0
+  std::optional<double> poisson_ratio;  // nu in [0, 0.5), needed by plane continua (quads)
 };
 
 struct ElementSpec {
   std::string id;
-  std::string type;  // "truss" | "beam" (2-D elastic beam-column, frame scenes)
+  std::string type;  // "truss" | "beam" (2-D elastic beam-column, frame scenes) | "quad"
   std::string node_i;
   std::string node_j;
   std::string material;
   double area = 0.0;             // [L^2], > 0
   double inertia = 0.0;          // beam: second moment of area [L^4], > 0
   double extra_mass = 0.0;       // beam: added mass per length [M/L] (deck, barriers, floor)
-  bool consistent_mass = false;  // beam: "mass": "consistent" (default "lumped")
+  bool consistent_mass = false;  // beam, quad: "mass": "consistent" (default "lumped")
   // Its own Rayleigh coefficients {a0, a1} instead of the model's ("damping" object).
   std::optional<std::array<double, 2>> rayleigh;
+  std::vector<std::string> more_nodes;  // quad: the third and fourth (counter-clockwise)
+  double thickness = 0.0;               // quad [L], > 0
+  bool plane_strain = false;            // quad: "plane": "strain" (default "stress")
 };
 
 struct MassSpec {
@@ -101,6 +105,52 @@ struct LinkSpec {
   LawSpec law;
   std::optional<FrictionSpec> friction;  // 2-D only
   bool rotational = false;  // "dof": "rotation": acts on theta_i - theta_j (hinge springs)
+  // Node-to-segment: the j side is the point of segment node_j - segment_end nearest node i.
+  std::optional<std::string> segment_end;
+  std::array<double, 2> velocity_j{0.0, 0.0};  // a rigid surface's own motion (generated)
+};
+
+// A rectangular plane body of quads ("block" generator): nodes "<id>.<column>.<row>" from the
+// lower left corner, elements "<id>.e<column>.<row>", node sets "<id>.bottom", ".top", ".left",
+// ".right" for surfaces, contacts and loads.
+struct BlockSpec {
+  std::string id;
+  std::array<double, 2> origin{0.0, 0.0};  // lower left corner
+  double width = 0.0, height = 0.0;        // [L] > 0
+  int columns = 0, rows = 0;               // elements along x and y
+  std::string material;
+  double thickness = 0.0;
+  bool plane_strain = false;
+  bool consistent_mass = false;
+  std::array<double, 2> initial_velocity{0.0, 0.0};
+  std::array<double, 4> pressure{0.0, 0.0, 0.0, 0.0};  // on bottom, right, top, left [F/L^2]
+  std::vector<std::string> fixed_edges;                // "bottom", "left", ...: all DOFs fixed
+  int generator_index = 0;
+};
+
+// A rigid flat surface (a floor, a belt) touching a set of nodes: one contact link per node to
+// a generated fixed node "<id>", along -normal, with gap = the node's clear distance.
+struct SurfaceSpec {
+  std::string id;
+  std::array<double, 2> point{0.0, 0.0};
+  std::array<double, 2> normal{0.0, 1.0};  // unit, pointing out of the surface to the nodes
+  std::array<double, 2> velocity{0.0, 0.0};
+  std::vector<std::string> nodes;  // node ids or node-set names
+  LawSpec law;
+  std::optional<FrictionSpec> friction;
+  int index = 0;
+};
+
+// Contact between two bodies' boundaries: each node of `nodes` against the segments of
+// `segments` (a chain of nodes in order), node-to-node where a node faces a segment end,
+// node-to-segment elsewhere; links "<id>.<node>".
+struct ContactSpec {
+  std::string id;
+  std::vector<std::string> nodes;     // contacting nodes (ids or node sets)
+  std::vector<std::string> segments;  // the facing boundary, a chain of nodes
+  LawSpec law;
+  std::optional<FrictionSpec> friction;
+  int index = 0;
 };
 
 // The model's units, for converting records: only length and time matter.
@@ -261,6 +311,9 @@ struct AnalysisSpec {
   long max_steps = 0;       // 0: no limit
   double time_limit = 0.0;  // wall-clock seconds, 0: no limit; set by `pound run --time-limit`
   std::optional<AdaptiveStepping> adaptive;  // implicit integrators only
+  // "initial_state": "static": the run starts from static equilibrium under the loads at t = 0
+  // (with the links), then moves with the initial velocities; default "unloaded" (u = 0).
+  bool static_initial_state = false;
 };
 
 // Time histories written as CSV: "link" records force and penetration of the named links (all
@@ -287,6 +340,11 @@ struct ModelSpec {
   std::vector<int> rod_pair_generator_index;  // their index in "/generators"
   std::vector<AdjacentBuildingsSpec> building_pairs;
   std::vector<GirderBridgeSpec> bridges;
+  std::vector<BlockSpec> blocks;
+  std::vector<SurfaceSpec> surfaces;
+  std::vector<ContactSpec> contacts;
+  // Named node sets from generators ("<block>.bottom" ...), filled by expand().
+  std::map<std::string, std::vector<std::string>> node_sets;
   std::vector<DriftMonitorSpec> drift_monitors;
   std::vector<JointMonitorSpec> joint_monitors;
   UnitsSpec units;
@@ -294,10 +352,11 @@ struct ModelSpec {
   std::vector<ExcitationSpec> excitations;
   AnalysisSpec analysis;
   std::vector<RecorderSpec> recorders;
-  // Filled by expand(): for entries a generator appended, the index of that generator in
-  // "/generators" (entry k of an array with u user entries came from generated_from[k - u]).
+  // Filled by expand(): for entries a generator, surface or contact appended, its JSON path
+  // ("/generators/2", "/surfaces/0"; entry k of an array with u user entries came from
+  // generated_from[k - u]).
   struct GeneratedFrom {
-    std::vector<int> nodes, materials, elements, supports, initial_velocities, links;
+    std::vector<std::string> nodes, materials, elements, supports, initial_velocities, links, loads;
   } generated_from;
   // Without a "recorders" field `run` records every link; "recorders": [] records nothing.
   bool recorders_given = false;

@@ -67,6 +67,11 @@ void CoulombFriction::commit() {
   committed_slide_ = trial_slide_;
 }
 
+void CoulombFriction::anchor_at_rest(double tangential_force) {
+  if (stick_.stiffness > 0.0) committed_anchor_ = committed_slide_ - tangential_force / stick_.stiffness;
+  trial_anchor_ = committed_anchor_;
+}
+
 void CoulombFriction::revert() {
   normal_->revert();
   trial_anchor_ = committed_anchor_;

@@ -42,6 +42,10 @@ class CoulombFriction {
   FrictionResponse set_trial(const LinkKinematics& normal, const LinkKinematics& tangential);
   void commit();
   void revert();
+  // After a static solve in which the surfaces slid (a belt moving under a held block), moves
+  // the committed anchor so that at rest the stick force equals `tangential_force`: the
+  // dynamics then starts from that friction force without the jump the stick dashpot would make.
+  void anchor_at_rest(double tangential_force);
 
   const ContactLaw& normal_law() const { return *normal_; }
   double coefficient() const { return coefficient_; }

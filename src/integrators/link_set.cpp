@@ -102,6 +102,12 @@ void LinkSet::evaluate(const Vector& delta, const Vector& rate, const Vector& ac
   }
 }
 
+void LinkSet::anchor_friction_at_rest(const Vector& force) {
+  for (std::size_t k = 0; k < links_.size(); ++k)
+    if (links_[k].friction)
+      links_[k].friction->anchor_at_rest(force[first_row_[k] + 1]);
+}
+
 void LinkSet::commit() {
   for (Link& link : links_) {
     if (link.friction)

@@ -65,6 +65,8 @@ class LinkSet {
                       Vector& force, Matrix& mass_tangent);
   void commit();
   void revert();
+  // Friction links: CoulombFriction::anchor_at_rest with their committed tangential forces.
+  void anchor_friction_at_rest(const Vector& force);
 
   // The normal law of a link (for a link with friction, the one inside it).
   const contact::ContactLaw& law(Index link) const;

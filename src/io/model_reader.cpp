@@ -116,18 +116,34 @@ MaterialSpec read_material(JsonObject& object, UniqueNames& ids) {
   material.id = read_unique_id(object, ids);
   material.youngs_modulus = object.required<double>("youngs_modulus", positive);
   material.density = object.required<double>("density", non_negative);
+  if (const std::optional<JsonValue> nu = object.find("poisson_ratio")) {
+    const double value = nu->as<double>(non_negative);
+    if (!(value < 0.5)) nu->fail(fmt::format("must be < 0.5 (incompressible), got {}", value));
+    material.poisson_ratio = value;
+  }
   return material;
 }
 
 ElementSpec read_element(JsonObject& object, int dimension, UniqueNames& ids) {
   ElementSpec element;
   element.id = read_unique_id(object, ids);
-  element.type = object.one_of("type", {"truss", "beam"});
-  const std::vector<std::string> nodes = read_names(object.at("nodes"), "node", 2, 2);
+  element.type = object.one_of("type", {"truss", "beam", "quad"});
+  const bool quad = element.type == "quad";
+  const std::size_t count = quad ? 4 : 2;
+  const std::vector<std::string> nodes = read_names(object.at("nodes"), "node", count, count);
   element.node_i = nodes[0];
   element.node_j = nodes[1];
   element.material = object.required<std::string>("material", non_empty);
-  element.area = object.required<double>("area", positive);
+  if (quad) {
+    if (dimension != 2) object.at("type").fail("a quad needs a 2-D scene (\"dimension\": 2)");
+    element.more_nodes = {nodes[2], nodes[3]};
+    element.thickness = object.required<double>("thickness", positive);
+    element.plane_strain = object.one_of("plane", {"stress", "strain"}, "stress") == "strain";
+    element.consistent_mass =
+        object.one_of("mass", {"lumped", "consistent"}, "lumped") == "consistent";
+  } else {
+    element.area = object.required<double>("area", positive);
+  }
   if (element.type == "beam") {
     if (dimension != 2) object.at("type").fail("a beam needs a 2-D scene (\"dimension\": 2)");
     element.inertia = object.required<double>("inertia", positive);
@@ -265,30 +281,120 @@ LawSpec read_law_in(const JsonValue& value, LawPlace place) {
   return read_object(value, [place](JsonObject& law) { return read_law(law, place); });
 }
 
+builder::FrictionSpec read_friction(const JsonValue& value) {
+  return read_object(value, [](JsonObject& f) {
+    builder::FrictionSpec spec;
+    spec.coefficient = f.required<double>("coefficient", non_negative);
+    spec.stick_stiffness = f.if_present<double>("stick_stiffness", positive);
+    spec.stick_damping = f.if_present<double>("stick_damping", non_negative);
+    spec.stick_mass = f.if_present<double>("stick_mass", non_negative);
+    return spec;
+  });
+}
+
 LinkSpec read_link(JsonObject& object, int dimension, UniqueNames& ids) {
   LinkSpec link;
   link.id = read_unique_id(object, ids);
-  const std::vector<std::string> nodes = read_names(object.at("nodes"), "node", 2, 2);
+  const std::vector<std::string> nodes = read_names(object.at("nodes"), "node", 1, 2);
   link.node_i = nodes[0];
-  link.node_j = nodes[1];
+  if (const std::optional<JsonValue> segment = object.find("segment")) {
+    if (nodes.size() != 1) object.at("nodes").fail("give one node with a 'segment'");
+    require_plane(*segment, dimension);
+    const std::vector<std::string> ends = read_names(*segment, "node", 2, 2);
+    link.node_j = ends[0];
+    link.segment_end = ends[1];
+  } else {
+    if (nodes.size() != 2) object.at("nodes").fail("needs 2 entries (or one with a 'segment')");
+    link.node_j = nodes[1];
+  }
   link.gap = object.optional<double>("gap", link.gap, non_negative);
   if (const std::optional<JsonValue> axis = object.find("axis"))
     link.axis = read_axis(*axis, dimension);
+  if (const std::optional<JsonValue> velocity = object.find("surface_velocity")) {
+    require_plane(*velocity, dimension);
+    const std::vector<JsonValue> components = velocity->elements(2, 2);
+    link.velocity_j = {components[0].as<double>(), components[1].as<double>()};
+  }
   link.law = read_law_in(object.at("law"), LawPlace::link);
   link.rotational = object.one_of("dof", {"translation", "rotation"}, "translation") == "rotation";
   if (link.rotational && dimension != 2)
     object.at("dof").fail("a rotational link needs a 2-D scene");
   if (link.rotational && link.axis) object.at("axis").fail("a rotational link has no axis");
   if (const std::optional<JsonValue> friction = object.find("friction"))
-    link.friction = read_object(*friction, [](JsonObject& f) {
-      builder::FrictionSpec spec;
-      spec.coefficient = f.required<double>("coefficient", non_negative);
-      spec.stick_stiffness = f.if_present<double>("stick_stiffness", positive);
-      spec.stick_damping = f.if_present<double>("stick_damping", non_negative);
-      spec.stick_mass = f.if_present<double>("stick_mass", non_negative);
-      return spec;
-    });
+    link.friction = read_friction(*friction);
   return link;
+}
+
+std::array<double, 2> read_pair(const JsonValue& value) {
+  const std::vector<JsonValue> components = value.elements(2, 2);
+  return {components[0].as<double>(), components[1].as<double>()};
+}
+
+// Node ids and node-set names ("block.bottom").
+std::vector<std::string> read_node_list(const JsonValue& value) { return read_names(value, "node", 1); }
+
+builder::SurfaceSpec read_surface(JsonObject& object, int index, UniqueNames& ids) {
+  builder::SurfaceSpec surface;
+  surface.index = index;
+  surface.id = read_unique_id(object, ids);
+  surface.point = read_pair(object.at("point"));
+  const JsonValue normal = object.at("normal");
+  const std::vector<double> unit = read_axis(normal, 2);
+  surface.normal = {unit[0], unit[1]};
+  if (const std::optional<JsonValue> velocity = object.find("velocity"))
+    surface.velocity = read_pair(*velocity);
+  surface.nodes = read_node_list(object.at("nodes"));
+  surface.law = read_law_in(object.at("law"), LawPlace::link);
+  if (const std::optional<JsonValue> friction = object.find("friction"))
+    surface.friction = read_friction(*friction);
+  return surface;
+}
+
+builder::ContactSpec read_contact(JsonObject& object, int index, UniqueNames& ids) {
+  builder::ContactSpec contact;
+  contact.index = index;
+  contact.id = read_unique_id(object, ids);
+  contact.nodes = read_node_list(object.at("nodes"));
+  contact.segments = read_node_list(object.at("segments"));
+  contact.law = read_law_in(object.at("law"), LawPlace::link);
+  if (const std::optional<JsonValue> friction = object.find("friction"))
+    contact.friction = read_friction(*friction);
+  return contact;
+}
+
+builder::BlockSpec read_block(JsonObject& object, UniqueNames& ids) {
+  builder::BlockSpec block;
+  block.id = read_unique_id(object, ids);
+  if (const std::optional<JsonValue> origin = object.find("origin")) block.origin = read_pair(*origin);
+  block.width = object.required<double>("width", positive);
+  block.height = object.required<double>("height", positive);
+  const std::vector<JsonValue> counts = object.at("elements").elements(2, 2);
+  block.columns = counts[0].as<int>(at_least(1));
+  block.rows = counts[1].as<int>(at_least(1));
+  constexpr int kMostSides = 10000;
+  for (const JsonValue& count : counts)
+    if (count.as<int>() > kMostSides)
+      count.fail(fmt::format("must be <= {} elements per side", kMostSides));
+  block.material = object.required<std::string>("material", non_empty);
+  block.thickness = object.required<double>("thickness", positive);
+  block.plane_strain = object.one_of("plane", {"stress", "strain"}, "stress") == "strain";
+  block.consistent_mass = object.one_of("mass", {"lumped", "consistent"}, "lumped") == "consistent";
+  if (const std::optional<JsonValue> velocity = object.find("initial_velocity"))
+    block.initial_velocity = read_pair(*velocity);
+  if (const std::optional<JsonValue> pressure = object.find("pressure"))
+    read_object(*pressure, [&block](JsonObject& p) {
+      constexpr const char* kEdges[] = {"bottom", "right", "top", "left"};
+      for (std::size_t e = 0; e < 4; ++e) block.pressure[e] = p.optional<double>(kEdges[e], 0.0);
+      return 0;
+    });
+  if (const std::optional<JsonValue> fixed = object.find("fixed_edges")) {
+    UniqueNames seen("edge");
+    for (const JsonValue& edge : fixed->elements(1, 4)) {
+      block.fixed_edges.push_back(edge.as_one_of({"bottom", "right", "top", "left"}));
+      seen.add(block.fixed_edges.back(), edge);
+    }
+  }
+  return block;
 }
 
 constexpr int kMostRodElements = 100000000;
@@ -405,8 +511,13 @@ void read_generators(JsonObject& top, ModelSpec& spec) {
     const int index = static_cast<int>(k);
     read_object(generators[k], [&](JsonObject& generator) {
       const std::string type =
-          generator.one_of("type", {"rod_pair", "adjacent_buildings", "girder_bridge"});
-      if (type == "rod_pair") {
+          generator.one_of("type", {"rod_pair", "adjacent_buildings", "girder_bridge", "block"});
+      if (type == "block") {
+        if (spec.dimension != 2)
+          generator.at("type").fail("a block needs a 2-D scene (\"dimension\": 2)");
+        spec.blocks.push_back(read_block(generator, ids));
+        spec.blocks.back().generator_index = index;
+      } else if (type == "rod_pair") {
         spec.rod_pairs.push_back(read_rod_pair(generator, ids));
         spec.rod_pair_generator_index.push_back(index);
       } else if (type == "adjacent_buildings") {
@@ -571,6 +682,8 @@ AnalysisSpec read_analysis(JsonObject& object) {
   if (analysis.max_step_cuts > 30)
     object.at("max_step_cuts").fail(fmt::format("must be <= 30, got {}", analysis.max_step_cuts));
   analysis.max_steps = object.optional<long>("max_steps", analysis.max_steps, non_negative);
+  analysis.static_initial_state =
+      object.one_of("initial_state", {"unloaded", "static"}, "unloaded") == "static";
   if (const std::optional<JsonValue> adaptive = object.find("adaptive")) {
     if (analysis.integrator.type == "central_difference")
       adaptive->fail("adaptive stepping is for the implicit integrators; central difference "
@@ -660,6 +773,21 @@ ModelSpec read_model(JsonObject& top) {
   spec.links = read_each(
       top, "links", [&](JsonObject& object) { return read_link(object, dimension, link_ids); });
   read_generators(top, spec);
+  UniqueNames surface_ids("id");
+  const std::vector<JsonValue> surfaces = top.array("surfaces");
+  for (std::size_t k = 0; k < surfaces.size(); ++k) {
+    require_plane(surfaces[k], dimension);
+    spec.surfaces.push_back(read_object(surfaces[k], [&](JsonObject& object) {
+      return read_surface(object, static_cast<int>(k), surface_ids);
+    }));
+  }
+  const std::vector<JsonValue> contacts = top.array("contacts");
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    require_plane(contacts[k], dimension);
+    spec.contacts.push_back(read_object(contacts[k], [&](JsonObject& object) {
+      return read_contact(object, static_cast<int>(k), link_ids);
+    }));
+  }
   if (const std::optional<JsonValue> monitors = top.find("monitors"))
     read_object(*monitors, [&spec](JsonObject& object) {
       read_monitors(object, spec);

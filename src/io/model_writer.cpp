@@ -122,6 +122,7 @@ Json material_json(const builder::MaterialSpec& material) {
   json["id"] = material.id;
   json["youngs_modulus"] = material.youngs_modulus;
   json["density"] = material.density;
+  set_if_present(json, "poisson_ratio", material.poisson_ratio);
   return json;
 }
 
@@ -136,6 +137,16 @@ Json element_json(const builder::ElementSpec& element) {
   Json json;
   json["id"] = element.id;
   json["type"] = element.type;
+  if (element.type == "quad") {
+    json["nodes"] = string_array(
+        {element.node_i, element.node_j, element.more_nodes.at(0), element.more_nodes.at(1)});
+    json["material"] = element.material;
+    json["thickness"] = element.thickness;
+    if (element.plane_strain) json["plane"] = "strain";
+    if (element.consistent_mass) json["mass"] = "consistent";
+    if (element.rayleigh) json["damping"] = rayleigh_coefficients_json(*element.rayleigh);
+    return json;
+  }
   json["nodes"] = string_array({element.node_i, element.node_j});
   json["material"] = element.material;
   json["area"] = element.area;
@@ -180,9 +191,16 @@ Json friction_json(const builder::FrictionSpec& friction) {
 Json link_json(const builder::LinkSpec& link) {
   Json json;
   json["id"] = link.id;
-  json["nodes"] = string_array({link.node_i, link.node_j});
+  if (link.segment_end) {
+    json["nodes"] = string_array({link.node_i});
+    json["segment"] = string_array({link.node_j, *link.segment_end});
+  } else {
+    json["nodes"] = string_array({link.node_i, link.node_j});
+  }
   json["gap"] = link.gap;  // written even when 0: the clear distance is what a reader looks for
   if (link.axis) json["axis"] = *link.axis;
+  if (link.velocity_j[0] != 0.0 || link.velocity_j[1] != 0.0)
+    json["surface_velocity"] = std::vector<double>{link.velocity_j[0], link.velocity_j[1]};
   if (link.rotational) json["dof"] = "rotation";
   json["law"] = law_json(link.law);
   if (link.friction) json["friction"] = friction_json(*link.friction);
@@ -283,6 +301,56 @@ Json girder_bridge_json(const builder::GirderBridgeSpec& bridge) {
 
 // All generators in the order of the file's "generators" array, which each kind remembers as
 // an index (a spec made in code may leave the rod pairs' indices out: then they come first).
+Json pair_json(const std::array<double, 2>& pair) {
+  return std::vector<double>{pair[0], pair[1]};
+}
+
+Json block_json(const builder::BlockSpec& block) {
+  Json json;
+  json["type"] = "block";
+  json["id"] = block.id;
+  json["origin"] = pair_json(block.origin);
+  json["width"] = block.width;
+  json["height"] = block.height;
+  json["elements"] = std::vector<int>{block.columns, block.rows};
+  json["material"] = block.material;
+  json["thickness"] = block.thickness;
+  if (block.plane_strain) json["plane"] = "strain";
+  if (block.consistent_mass) json["mass"] = "consistent";
+  if (block.initial_velocity[0] != 0.0 || block.initial_velocity[1] != 0.0)
+    json["initial_velocity"] = pair_json(block.initial_velocity);
+  constexpr const char* kEdges[] = {"bottom", "right", "top", "left"};
+  Json pressure;
+  for (std::size_t e = 0; e < 4; ++e)
+    if (block.pressure[e] != 0.0) pressure[kEdges[e]] = block.pressure[e];
+  if (!pressure.is_null()) json["pressure"] = std::move(pressure);
+  if (!block.fixed_edges.empty()) json["fixed_edges"] = string_array(block.fixed_edges);
+  return json;
+}
+
+Json surface_json(const builder::SurfaceSpec& surface) {
+  Json json;
+  json["id"] = surface.id;
+  json["point"] = pair_json(surface.point);
+  json["normal"] = pair_json(surface.normal);
+  if (surface.velocity[0] != 0.0 || surface.velocity[1] != 0.0)
+    json["velocity"] = pair_json(surface.velocity);
+  json["nodes"] = string_array(surface.nodes);
+  json["law"] = law_json(surface.law);
+  if (surface.friction) json["friction"] = friction_json(*surface.friction);
+  return json;
+}
+
+Json contact_json(const builder::ContactSpec& contact) {
+  Json json;
+  json["id"] = contact.id;
+  json["nodes"] = string_array(contact.nodes);
+  json["segments"] = string_array(contact.segments);
+  json["law"] = law_json(contact.law);
+  if (contact.friction) json["friction"] = friction_json(*contact.friction);
+  return json;
+}
+
 Json generators_json(const ModelSpec& spec) {
   std::vector<std::pair<int, Json>> generators;
   for (std::size_t k = 0; k < spec.rod_pairs.size(); ++k) {
@@ -295,6 +363,8 @@ Json generators_json(const ModelSpec& spec) {
     generators.emplace_back(pair.generator_index, adjacent_buildings_json(pair));
   for (const builder::GirderBridgeSpec& bridge : spec.bridges)
     generators.emplace_back(bridge.generator_index, girder_bridge_json(bridge));
+  for (const builder::BlockSpec& block : spec.blocks)
+    generators.emplace_back(block.generator_index, block_json(block));
   std::stable_sort(generators.begin(), generators.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
   Json json = Json::array();
@@ -406,6 +476,7 @@ Json analysis_json(const builder::AnalysisSpec& analysis) {
   json["convergence"] = std::move(convergence);
   json["max_step_cuts"] = analysis.max_step_cuts;
   set_unless_default(json, "max_steps", analysis.max_steps, 0L);
+  if (analysis.static_initial_state) json["initial_state"] = "static";
   return json;
 }
 
@@ -438,6 +509,8 @@ std::string model_to_json(const ModelSpec& spec) {
   set_array(json, "links", spec.links, link_json);
   if (Json generators = generators_json(spec); !generators.empty())
     json["generators"] = std::move(generators);
+  set_array(json, "surfaces", spec.surfaces, surface_json);
+  set_array(json, "contacts", spec.contacts, contact_json);
   Json monitors;
   set_array(monitors, "drifts", spec.drift_monitors, drift_monitor_json);
   set_array(monitors, "joints", spec.joint_monitors, joint_monitor_json);

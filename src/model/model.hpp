@@ -4,7 +4,8 @@
 //
 // Degrees of freedom follow the scene: a 1-D (axial) scene carries 1 DOF per node (u_x); a
 // plane truss scene carries 2 (u_x, u_y); a plane frame scene (any beam-column) carries 3
-// (u_x, u_y, theta_z). Nothing is padded to 3 or 6.
+// (u_x, u_y, theta_z); a plane continuum scene (quads, no beams) carries 2. Nothing is padded
+// to 3 or 6.
 #include <array>
 #include <functional>
 #include <memory>
@@ -59,6 +60,23 @@ struct Beam {
   std::optional<RayleighDamping> damping;  // its own, instead of the model's
 };
 
+// Four-node bilinear quadrilateral for plane continua (Suzuki & Toi's blocks and 2-D rods),
+// nodes counter-clockwise, 2 DOFs per node. Plane stress (thickness t) or plane strain (per
+// thickness t of the out-of-plane length). Stiffness by 2 x 2 Gauss points, exact for
+// parallelograms; mass lumped (the row sums of the consistent mass, rho t A / 4 per node of a
+// parallelogram) or consistent.
+struct Quad {
+  std::string id;
+  std::array<Index, 4> nodes{};
+  double youngs_modulus = 0.0;  // E [F/L^2]
+  double poisson_ratio = 0.0;   // nu, in [0, 0.5)
+  double thickness = 0.0;       // t [L]
+  double density = 0.0;         // rho [M/L^3]
+  bool plane_strain = false;
+  bool consistent_mass = false;
+  std::optional<RayleighDamping> damping;  // its own, instead of the model's
+};
+
 struct NodalMass {
   Index node = 0;
   double mass = 0.0;                       // [M], in every translational direction
@@ -100,6 +118,9 @@ using LawFactory = std::function<std::unique_ptr<contact::ContactLaw>(const cont
 // Contact link between node i and node j along the unit axis n (from i towards j):
 // penetration delta = (u_i - u_j) . n - gap.
 // Coulomb friction along the tangent t = n rotated by +90 degrees (2-D only).
+// Node-to-segment: the j side is the point (1 - w) u_j + w u_k of the segment j-k, w fixed at
+// t = 0 (small sliding). A rigid moving surface (a belt) is a fixed node j whose side of the
+// link moves at a constant velocity: u_j + velocity_j t.
 struct LinkFriction {
   double coefficient = 0.0;
   std::optional<double> stick_stiffness, stick_damping, stick_mass;  // default: the normal law's
@@ -114,6 +135,9 @@ struct Link {
   double gap = 0.0;         // initial clear distance [L], >= 0
   LawFactory make_law;
   std::optional<LinkFriction> friction;
+  std::optional<Index> segment_end;  // node k
+  double segment_weight = 0.0;       // w in [0, 1]
+  Coordinates velocity_j{0.0, 0.0};  // [L/T]
 };
 
 struct Model {
@@ -121,6 +145,7 @@ struct Model {
   std::vector<Node> nodes;
   std::vector<Truss> trusses;
   std::vector<Beam> beams;
+  std::vector<Quad> quads;
   std::vector<NodalMass> masses;
   std::vector<Support> supports;
   std::vector<NodalLoad> loads;

@@ -1,0 +1,103 @@
+#include "assembly/static_equilibrium.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/SparseLU>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/errors.hpp"
+
+namespace pound::assembly {
+
+StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
+                                     double relative_tolerance, int max_iterations) {
+  const Index n = system.size();
+  LinkSet& links = system.links();
+  const Index m = links.size();
+  Vector load = Vector::Zero(n);
+  if (system.has_external_force()) system.external_force(time, load);
+  Vector offset = Vector::Zero(m), offset_rate, offset_acceleration;
+  if (system.has_link_motion()) system.link_motion(time, offset, offset_rate, offset_acceleration);
+  const Eigen::SparseMatrix<double> b = links.connectivity();
+  const Vector zero = Vector::Zero(m);
+  // Links move at the rates their moving sides give them (a belt slides under the structure,
+  // which is at rest): friction there slips, in the belt's direction.
+  const Vector rate = offset_rate.size() == m ? offset_rate : zero;
+
+  StaticEquilibrium result;
+  Vector& u = result.displacement;
+  u = Vector::Zero(n);
+  Vector delta(m), force(m), stiffness_force(n);
+  Matrix tangent;
+  bool first = true;
+  // Unbalanced force at u under `applied`, leaving the links at that trial state.
+  auto unbalanced = [&](const Vector& at, const Vector& applied, Vector& residual) {
+    links.penetration(at, delta);
+    delta += offset;
+    // Links touching at the start (delta = 0: a block set on a floor) are taken as closed, so
+    // that the first tangent holds the structure; the force of that nudge is negligible.
+    if (first)
+      for (Index k = 0; k < links.count(); ++k)
+        if (delta[links.row(k)] == 0.0) delta[links.row(k)] = std::numeric_limits<double>::min();
+    first = false;
+    links.set_trial(delta, rate, zero, 0.0, 0.0, force, tangent);
+    system.multiply_stiffness(at, stiffness_force);
+    const Vector link_force = b.transpose() * force;
+    residual = applied - stiffness_force - link_force;
+    return std::max(applied.norm(), link_force.norm());
+  };
+  auto mechanism = [time]() {
+    return SolveError(time, "static equilibrium: the structure is not held under the initial "
+                            "loads (a mechanism: add supports, or links in contact)");
+  };
+
+  // The loads in increments, each committed: friction links follow the loading path, as in a
+  // structure loaded slowly; a line search keeps Newton from cycling between contact states.
+  // Under a moving belt the surfaces slide all along the loading, so friction is mu R_n
+  // wherever they touch: one increment, in which every such link slips.
+  const bool sliding = rate.size() > 0 && rate.any();
+  const int increments = sliding ? 1 : 10;
+  Vector residual(n), trial_residual(n), trial(n);
+  for (int increment = 1; increment <= increments; ++increment) {
+    const Vector applied = (static_cast<double>(increment) / increments) * load;
+    double scale = std::max(load.norm(), unbalanced(u, applied, residual));
+    for (int iteration = 0;; ++iteration) {
+      result.unbalanced_force = residual.norm();
+      if (result.unbalanced_force <= relative_tolerance * scale) break;
+      if (iteration == max_iterations)
+        throw SolveError(time, fmt::format("static equilibrium under the initial loads did not "
+                                           "converge in {} iterations at {} % of the loads "
+                                           "(unbalanced force {:.3g} of {:.3g})",
+                                           max_iterations, 100 * increment / increments,
+                                           result.unbalanced_force, scale));
+      Eigen::SparseMatrix<double> matrix =
+          system.stiffness() +
+          Eigen::SparseMatrix<double>(b.transpose() * tangent.sparseView() * b);
+      matrix.makeCompressed();
+      Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
+      solver.compute(matrix);
+      if (solver.info() != Eigen::Success) throw mechanism();
+      const Vector correction = solver.solve(residual);
+      if (!correction.allFinite()) throw mechanism();
+      double step = 1.0;
+      for (int halving = 0;; ++halving) {
+        trial = u + step * correction;
+        scale = std::max(load.norm(), unbalanced(trial, applied, trial_residual));
+        if (trial_residual.norm() < result.unbalanced_force || halving == 12) break;
+        step *= 0.5;
+      }
+      u = trial;
+      residual = trial_residual;
+      ++result.iterations;
+    }
+    links.commit();
+  }
+  // The dynamics starts with the structure moving as the belts do: the friction forces found
+  // here must hold at zero relative rate.
+  links.anchor_friction_at_rest(force);
+  return result;
+}
+
+}  // namespace pound::assembly

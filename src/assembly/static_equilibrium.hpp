@@ -1,0 +1,22 @@
+#pragma once
+// Static equilibrium under the loads at one instant, with the links:
+//   K u + B^T F(B u - gap + s(t)) = f(t),
+// solved by Newton on the assembled K + B^T (dF/d delta) B (sparse LU: a slipping friction link's
+// tangent is not symmetric). The links are at rest (zero rates), as in a structure loaded slowly
+// until t = 0 (OpenSees' gravity analysis before the dynamic one); their state at the solution
+// is committed, so a dynamic run started from u continues from that state. Throws SolveError
+// when Newton does not converge or the structure is a mechanism under the loads.
+#include "assembly/structural_system.hpp"
+
+namespace pound::assembly {
+
+struct StaticEquilibrium {
+  Vector displacement;
+  int iterations = 0;
+  double unbalanced_force = 0.0;  // ||f - K u - B^T F|| at the solution [F]
+};
+
+StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
+                                     double relative_tolerance = 1e-10, int max_iterations = 50);
+
+}  // namespace pound::assembly
