@@ -456,7 +456,7 @@ Json analysis_json(const builder::AnalysisSpec& analysis) {
     integrator["alpha"] = analysis.integrator.alpha;
   } else if (analysis.integrator.type == "generalized_alpha") {
     integrator["rho_infinity"] = analysis.integrator.rho_infinity;
-  } else {
+  } else if (analysis.integrator.type == "newmark") {
     integrator["beta"] = analysis.integrator.beta;
     integrator["gamma"] = analysis.integrator.gamma;
   }

@@ -12,6 +12,7 @@
 #include "builder/generators.hpp"
 #include "core/errors.hpp"
 #include "integrators/transient_analysis.hpp"
+#include "results/energy_balance.hpp"
 
 namespace pound::report {
 namespace {
@@ -120,7 +121,21 @@ BlockBeltPoint run_block_belt(const builder::ModelSpec& base, double dimensionle
   double previous_time = 0.0, stick_began = -1.0;
   bool stuck = false;
   long step = 0;
+  // A sweep point must not report numbers from a diverging run: the energy the integration
+  // makes is watched as in `pound run`, and the point fails with the time and the reason.
+  results::EnergyBalance energy(system);
   auto observe = [&](const State& s, const StepResult&) {
+    energy.record(s);
+    if (const double created = energy.terms().created_fraction();
+        created > results::kEnergyGrowthLimit || !std::isfinite(created))
+      throw SolveError(s.time, std::isfinite(created)
+                                   ? fmt::format("block on a belt at Pi = {:g}: the structure "
+                                                 "holds {:.1f} % more energy than was put in: "
+                                                 "the integration diverged",
+                                                 dimensionless_speed, 100.0 * created)
+                                   : fmt::format("block on a belt at Pi = {:g}: the energy is "
+                                                 "no longer finite: the integration diverged",
+                                                 dimensionless_speed));
     double spring_force = scene.pretension;
     for (Index row : spring_rows) spring_force -= s.link_force[row];
     int closed = 0, sticking = 0;

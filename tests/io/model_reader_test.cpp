@@ -561,7 +561,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"beam_in_1d_scene", replaced("/elements/0/type", R"("beam")"), "/elements/0/type",
                 "a beam needs a 2-D scene"},
         BadCase{"unknown_element_type", replaced("/elements/0/type", R"("bar")"),
-                "/elements/0/type", "expected one of 'truss', 'beam', got 'bar'"},
+                "/elements/0/type", "expected one of 'truss', 'beam', 'quad', got 'bar'"},
         BadCase{"bad_far_end", replaced("/generators/0/left/far_end", R"("hinged")"),
                 "/generators/0/left/far_end", "expected one of 'free', 'fixed', got 'hinged'"},
         BadCase{"unknown_generator_type", replaced("/generators/0/type", R"("rod_par")"),
