@@ -304,6 +304,16 @@ class Plotter:
         draw([p for p in points if p.tumbling and p.stick_slip], "s", "C1", True,
              "tumbling, stick-slip (ratio not meaningful)")
         ax.axhline(1.0, color="k", ls=":", lw=1.0, label="rigid block (Coulomb): 1")
+        # Tumbling ratios can be anything (the spring throws the block): the axis is set by the
+        # meaningful points, and tumbling points beyond it are drawn at its top edge.
+        top = max([1.2] + [1.1 * p.ratio for p in meaningful])
+        bottom = min([0.0] + [1.1 * p.ratio for p in meaningful])
+        ax.set_ylim(bottom, top)
+        beyond = [p for p in points if p.tumbling and not bottom <= p.ratio <= top]
+        if beyond:
+            ax.plot([p.speed for p in beyond], [0.98 * top] * len(beyond), "^", ms=8, color="C1",
+                    markerfacecolor="none", markeredgewidth=1.6, linestyle="none",
+                    label=f"tumbling, ratio beyond {top:.2g} (off the axis)", zorder=5)
         ax.set_xscale("log")
         ax.set_xlabel(PI_LABEL)
         ax.set_ylabel(r"$\mu_{dynamic} / \mu_{static}$ (mean spring force / $\mu P$)")

@@ -45,7 +45,9 @@ struct BlockBeltPoint {
   double belt_speed = 0.0;           // V0 [L/T]
   // Mean spring force over mu P in the steady part: mu_dynamic / mu_static (1 for a rigid block).
   double friction_ratio = 0.0;
-  // Whole-block stick: every closed belt contact sticking. Fraction of the steady part, and
+  // Mean fraction of the closed belt contacts that stick, over the steady part.
+  double stick_share = 0.0;
+  // The block sticks when 90 % of its closed belt contacts do. Fraction of the steady part, and
   // stick phases of at least 1 % of the spring period that end in slip (stick-slip cycles).
   double stick_fraction = 0.0;
   int stick_slip_cycles = 0;
@@ -67,7 +69,7 @@ struct BlockBeltPoint {
 BlockBeltPoint run_block_belt(const builder::ModelSpec& spec, double dimensionless_speed,
                               const BlockBeltOptions& options = {});
 
-// The default sweep: decades from 1e-3 to 1e8 with half decades where the curve turns.
+// The default sweep: decades from 1e-3 to 1e8, finer from 0.003 to 3 where the curve turns.
 std::vector<double> block_belt_speeds();
 
 // The table `pound verify block-belt` prints, and what it writes for tools/plot_block_belt.py.

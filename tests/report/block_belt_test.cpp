@@ -24,9 +24,9 @@ TEST(BlockBelt, ReadsTheScenesNumbersOffTheModel) {
   EXPECT_NEAR(scene.mass, 7.85e-9 * 40 * 20 * 10, 1e-18);
   EXPECT_NEAR(scene.spring_stiffness, 2451.66, 1e-9);
   EXPECT_NEAR(scene.pressing_force, 0.980665 * 40 * 10, 1e-9);
-  EXPECT_EQ(scene.friction_coefficient, 0.5);
+  EXPECT_EQ(scene.friction_coefficient, 0.1);
   // The springs pull mu P at t = 0 (Suzuki & Toi's initial state).
-  EXPECT_NEAR(scene.pretension, 0.5 * scene.pressing_force, 1e-9);
+  EXPECT_NEAR(scene.pretension, 0.1 * scene.pressing_force, 1e-9);
   EXPECT_NEAR(scene.belt_speed(1.0) * std::sqrt(scene.mass * scene.spring_stiffness) /
                   (scene.friction_coefficient * scene.pressing_force),
               1.0, 1e-15);
@@ -61,6 +61,26 @@ TEST(BlockBelt, TheBlockOscillatesOnItsSpringAsARigidBlockWouldAtHighSpeed) {
     EXPECT_LT(worst, 0.01);
     EXPECT_NEAR(point.friction_ratio, 1.0, 0.05);
   }
+}
+
+// The curve's first half (Suzuki & Toi's Fig. 16): at very low speed the block hardly vibrates
+// and the apparent friction is the local mu; at Pi = 0.1 the block vibrates normal to the belt,
+// part of its contacts stick while the rest slip, and the spring settles below mu P.
+TEST(BlockBelt, ApparentFrictionIsMuAtLowSpeedAndFallsWhereTheBlockVibrates) {
+  BlockBeltOptions options;
+  options.periods = 2.0;
+  const BlockBeltPoint slow = run_block_belt(belt_model(), 0.001, options);
+  const BlockBeltPoint faster = run_block_belt(belt_model(), 0.1, options);
+  std::cout << fmt::format("Pi = 0.001: mu_dyn/mu_st {:.4f}, lift {:.3f}; Pi = 0.1: {:.4f}, lift "
+                           "{:.3f}, sticking share {:.3f}\n",
+                           slow.friction_ratio, slow.lift_fraction, faster.friction_ratio,
+                           faster.lift_fraction, faster.stick_share);
+  EXPECT_GT(slow.friction_ratio, 0.95);
+  EXPECT_LT(slow.lift_fraction, 0.01);
+  EXPECT_FALSE(slow.tumbling);
+  EXPECT_LT(faster.friction_ratio, 0.9);
+  EXPECT_GT(faster.lift_fraction, 0.1);
+  EXPECT_GT(faster.stick_share, 0.05);
 }
 
 }  // namespace
