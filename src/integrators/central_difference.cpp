@@ -181,6 +181,35 @@ StepResult CentralDifference::advance(SecondOrderSystem& system, const State& fr
       link_dofs_.clear();
       for (Index j = 0; j < link_columns_.outerSize(); ++j)
         if (Eigen::SparseMatrix<double>::InnerIterator(link_columns_, j)) link_dofs_.push_back(j);
+      // Groups of rows by union-find: G(r, s) != 0, or r and s rows of one link.
+      std::vector<Index> parent(static_cast<std::size_t>(m));
+      for (Index r = 0; r < m; ++r) parent[static_cast<std::size_t>(r)] = r;
+      auto root = [&parent](Index r) {
+        while (parent[static_cast<std::size_t>(r)] != r)
+          r = parent[static_cast<std::size_t>(r)] =
+              parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(r)])];
+        return r;
+      };
+      auto join = [&](Index first, Index second) {
+        parent[static_cast<std::size_t>(root(first))] = root(second);
+      };
+      for (Index r = 0; r < m; ++r)
+        for (Index c = r + 1; c < m; ++c)
+          if (coupling_(r, c) != 0.0 || coupling_(c, r) != 0.0) join(r, c);
+      for (Index k = 0; k < links.count(); ++k)
+        if (links.has_friction(k)) join(links.row(k), links.row(k) + 1);
+      std::vector<Index> group_of(static_cast<std::size_t>(m), -1);
+      link_groups_.clear();
+      for (Index r = 0; r < m; ++r) {
+        Index& group = group_of[static_cast<std::size_t>(root(r))];
+        if (group < 0) {
+          group = static_cast<Index>(link_groups_.size());
+          link_groups_.emplace_back();
+        }
+        link_groups_[static_cast<std::size_t>(group)].push_back(r);
+      }
+      group_jacobians_.resize(link_groups_.size());
+      group_lus_.resize(link_groups_.size());
     }
     links.penetration(to.displacement, to.link_penetration);
     // Link rates at the half step B (v_n + dt/2 a_n): the extended penalty's critical dashpot on
@@ -224,10 +253,27 @@ StepResult CentralDifference::advance(SecondOrderSystem& system, const State& fr
         result.failure = "the link forces of the explicit step did not settle in 25 iterations";
         return result;
       }
-      jacobian_.noalias() = tangent_ * g;  // dF_law / d(delta_ddot) G
-      jacobian_.diagonal().array() += 1.0;
-      jacobian_lu_.compute(jacobian_);
-      correction_ = jacobian_lu_.solve(residual_);
+      // I + (dF_law / d(delta_ddot)) G, block by block: T and G tie rows only within a group.
+      correction_.resize(m);
+      for (std::size_t k = 0; k < link_groups_.size(); ++k) {
+        const std::vector<Index>& rows = link_groups_[k];
+        const Index size = static_cast<Index>(rows.size());
+        Matrix& jacobian = group_jacobians_[k];
+        jacobian.resize(size, size);
+        group_residual_.resize(size);
+        for (Index a = 0; a < size; ++a) {
+          const Index r = rows[static_cast<std::size_t>(a)];
+          group_residual_[a] = residual_[r];
+          for (Index c = 0; c < size; ++c) {
+            double sum = a == c ? 1.0 : 0.0;
+            for (Index q : rows) sum += tangent_(r, q) * g(q, rows[static_cast<std::size_t>(c)]);
+            jacobian(a, c) = sum;
+          }
+        }
+        group_lus_[k].compute(jacobian);
+        const Vector solved = group_lus_[k].solve(group_residual_);
+        for (Index a = 0; a < size; ++a) correction_[rows[static_cast<std::size_t>(a)]] = solved[a];
+      }
       to.link_force -= correction_;
       // At machine precision already (a very stiff penalty mass): stop as the implicit step does.
       if (iteration > 0 && correction_.norm() <= 1e-14 * std::max(to.link_force.norm(), 1e-300))

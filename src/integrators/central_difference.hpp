@@ -34,6 +34,12 @@ class CentralDifference final : public Integrator {
   Eigen::PartialPivLU<Matrix> jacobian_lu_;
   // Constant for the system given to initialize() (B is), built at its first step with links.
   Matrix coupling_;                           // G = B M^-1 B^T
+  // Rows of B that G or a link's own rows tie together (links sharing a node): the link-force
+  // system is block diagonal over these groups, so it is solved group by group.
+  std::vector<std::vector<Index>> link_groups_;
+  std::vector<Matrix> group_jacobians_;
+  std::vector<Eigen::PartialPivLU<Matrix>> group_lus_;
+  Vector group_residual_;
   Eigen::SparseMatrix<double> link_columns_;  // B by columns, for B^T F at the DOFs it touches
   std::vector<Index> link_dofs_;              // the columns of B that have entries
 };
