@@ -74,7 +74,8 @@ RodImpact2dResult run_rod_impact_2d(const RodImpact2dOptions& options) {
     block.width = rod.length;
     block.height = side;
     block.columns = rod.elements;
-    block.rows = options.elements_across;
+    block.rows = r == 1 && options.elements_across_struck > 0 ? options.elements_across_struck
+                                                             : options.elements_across;
     block.material = names[r];
     block.thickness = side;
     block.initial_velocity = {rod.initial_velocity, 0.0};

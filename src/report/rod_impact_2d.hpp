@@ -14,6 +14,10 @@ namespace pound::report {
 struct RodImpact2dOptions {
   builder::RodPairSpec pair;  // the 1-D pair; its element counts are the strips' along the axis
   int elements_across = 4;
+  // Elements across the struck (right) strip; 0: as many as the striking one (matching meshes,
+  // node-to-node contact). Otherwise the striking strip's interface nodes meet the struck
+  // strip's segments between its nodes: node-to-segment contact.
+  int elements_across_struck = 0;
   double poisson_ratio = 0.3;
   double friction = 0.6;
   double stable_fraction = 0.5;  // central difference at this fraction of its stable step (both)

@@ -52,5 +52,24 @@ TEST(RodImpact2d, LateralInertiaAddsToTheErrorAgainstThe1DTheory) {
   EXPECT_NEAR(impulse / exact_impulse, 1.0, 0.03);
 }
 
+// Non-matching meshes: the striking strip's 5 interface nodes (4 elements across) meet a struck
+// strip of 3 elements across, so 3 of them land inside its segments (node-to-segment, the
+// segment's ends sharing the force by their weights) and 2 on its corners (node-to-node). With
+// nu = 0 the 1-D physics holds exactly, so the force must match the matching-mesh run's.
+TEST(RodImpact2d, NodeToSegmentContactCarriesTheSameForceAsMatchingMeshes) {
+  RodImpact2dOptions options = suzuki_toi_rods_2d();
+  options.poisson_ratio = 0.0;
+  const RodImpact2dResult matching = run_rod_impact_2d(options);
+  options.elements_across_struck = 3;
+  const RodImpact2dResult segments = run_rod_impact_2d(options);
+  print("node-to-segment, nu = 0", segments);
+  EXPECT_EQ(segments.contact_links, 5);
+  std::cout << fmt::format("force_l2_error: matching {:.4f}, node-to-segment {:.4f}\n",
+                           matching.force_l2_error_2d, segments.force_l2_error_2d);
+  EXPECT_NEAR(segments.force_l2_error_2d, matching.force_l2_error_2d, 0.02);
+  EXPECT_NEAR(segments.peak_force_2d / segments.exact_peak_force,
+              matching.peak_force_2d / matching.exact_peak_force, 0.15);
+}
+
 }  // namespace
 }  // namespace pound::report
