@@ -26,21 +26,18 @@ Exit codes: 0 ok, 1 usage error or matplotlib missing, 2 bad input (no batch_sum
 malformed CSV or batch_stats.json; message names the file), 4 a figure could not be written.
 """
 
-import argparse
-import csv
 import difflib
-import json
 import math
 import os
 import sys
 import textwrap
-import warnings
 
-EXIT_USAGE = 1
-EXIT_INPUT = 2
-EXIT_OUTPUT = 4
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_common import (InputError, Parser, PlotError, check_folder, check_width,  # noqa: E402
+                         csv_reader, import_matplotlib, not_a_number, read_header, read_json,
+                         report, save_png)
 
-SYSTEM_PYTHON = "/usr/bin/python3"
+PROG = "plot_batch.py"
 REEXEC_MARK = "POUND_PLOT_BATCH_REEXEC"
 
 SUMMARY_FILE = "batch_summary.csv"
@@ -65,39 +62,6 @@ MARKERS = "osD^vP"   # observed fractions, one per model
 PER_PAGE = 8        # fragility panels per page
 MODELS_PER_ROW = 3  # IDA panels side by side
 LEGEND_RECORDS = 12  # more records than this: one legend entry for all of them
-
-
-class InputError(Exception):
-    """Bad input: the message names the file and what is wrong."""
-
-
-class OutputError(Exception):
-    """A figure could not be written."""
-
-
-def import_matplotlib():
-    """Returns matplotlib's Figure class (Agg backend), or exits with a clear message."""
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        from matplotlib.figure import Figure
-        import numpy  # noqa: F401  (matplotlib depends on it)
-        return Figure
-    except ImportError as error:
-        missing = error
-    # A pyenv or venv python3 does not see Debian's python3-matplotlib: use the system one.
-    if (not os.environ.get(REEXEC_MARK) and os.access(SYSTEM_PYTHON, os.X_OK)
-            and os.path.realpath(sys.executable) != os.path.realpath(SYSTEM_PYTHON)):
-        os.environ[REEXEC_MARK] = "1"
-        try:
-            os.execv(SYSTEM_PYTHON, [SYSTEM_PYTHON, os.path.abspath(__file__)] + sys.argv[1:])
-        except OSError:
-            pass
-    sys.stderr.write(
-        f"plot_batch.py: matplotlib is not available to {sys.executable} ({missing}); install it "
-        "with tools/install_dependencies.sh (Debian package python3-matplotlib) or run this "
-        f"script with a python3 that has it\n")
-    sys.exit(EXIT_USAGE)
 
 
 # ----------------------------------------------------------------------------------------------
@@ -126,57 +90,37 @@ class Case:
 
 def read_summary(folder):
     """The cases of DIR/batch_summary.csv and the quantities its header has."""
-    if not os.path.isdir(folder):
-        raise InputError(f"{folder}: {'not a folder' if os.path.exists(folder) else 'no such folder'}")
+    check_folder(folder)
     path = os.path.join(folder, SUMMARY_FILE)
     if not os.path.isfile(path):
         raise InputError(f"{folder}: no {SUMMARY_FILE} here (is it the --out folder of `pound batch`?)")
     cases = []
-    try:
-        with open(path, encoding="utf-8", newline="") as file:
-            reader = csv.reader(file)
-            header = next(reader, None)
-            if header is None:
-                raise InputError(f"{path}: empty file (no header line)")
-            header = [column.strip() for column in header]
-            if any(not column for column in header):
-                raise InputError(f"{path}: header has an empty column name")
-            duplicates = sorted({column for column in header if header.count(column) > 1})
-            if duplicates:
-                raise InputError(f"{path}: header repeats column(s) {', '.join(duplicates)}")
-            missing = [column for column in REQUIRED_COLUMNS if column not in header]
-            if missing:
-                raise InputError(f"{path}: header has no column(s) {', '.join(missing)} "
-                                 f"(is it a `pound batch` summary?)")
-            index = {name: i for i, name in enumerate(header)}
-            quantities = [q for q in QUANTITIES if q in index]
-            width = len(header)
-            for row in reader:
-                if not row:
-                    continue
-                line = reader.line_num
-                if len(row) != width:
-                    raise InputError(f"{path}: line {line}: {len(row)} fields, expected {width} "
-                                     "(the header's)")
-                status = row[index["status"]].strip()
-                if status not in STATUSES:
-                    raise InputError(f"{path}: line {line}, column 'status': {status!r} is not one "
-                                     f"of {', '.join(STATUSES)}")
+    with csv_reader(path) as reader:
+        header = read_header(path, reader, REQUIRED_COLUMNS, "(is it a `pound batch` summary?)")
+        index = {name: i for i, name in enumerate(header)}
+        quantities = [q for q in QUANTITIES if q in index]
+        width = len(header)
+        for row in reader:
+            if not row:
+                continue
+            line = reader.line_num
+            check_width(path, line, row, width)
+            status = row[index["status"]].strip()
+            if status not in STATUSES:
+                raise InputError(f"{path}: line {line}, column 'status': {status!r} is not one "
+                                 f"of {', '.join(STATUSES)}")
 
-                def cell(column):
-                    try:
-                        return parse_number(row[index[column]])
-                    except ValueError:
-                        raise InputError(f"{path}: line {line}, column '{column}': not a number: "
-                                         f"{row[index[column]]!r}") from None
+            def cell(column):
+                try:
+                    return parse_number(row[index[column]])
+                except ValueError:
+                    raise not_a_number(path, line, column, row[index[column]]) from None
 
-                scale = cell("scale")
-                if scale is None:
-                    raise InputError(f"{path}: line {line}, column 'scale': empty")
-                cases.append(Case(row[index["model"]].strip(), row[index["record"]].strip(), scale,
-                                  status, cell("intensity"), {q: cell(q) for q in quantities}))
-    except (OSError, UnicodeDecodeError, csv.Error) as error:
-        raise InputError(f"{path}: cannot read: {error}") from None
+            scale = cell("scale")
+            if scale is None:
+                raise InputError(f"{path}: line {line}, column 'scale': empty")
+            cases.append(Case(row[index["model"]].strip(), row[index["record"]].strip(), scale,
+                              status, cell("intensity"), {q: cell(q) for q in quantities}))
     return path, cases, quantities
 
 
@@ -205,12 +149,7 @@ def read_stats(folder):
         sys.stderr.write(f"note: {folder}: no {STATS_FILE}: no median curves, no fragility figure\n")
         return Stats()
     try:
-        with open(path, encoding="utf-8") as file:
-            document = json.load(file)
-    except (OSError, UnicodeDecodeError) as error:
-        raise InputError(f"{path}: cannot read: {error}") from None
-    except json.JSONDecodeError as error:
-        raise InputError(f"{path}: not valid JSON: {error}") from None
+        document = read_json(path)
     except RecursionError:
         raise InputError(f"{path}: not valid JSON: nested too deeply") from None
 
@@ -380,20 +319,8 @@ class Plotter:
     # -- saving ---------------------------------------------------------------------------------
 
     def save(self, fig, name):
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            fig.tight_layout()
         path = os.path.join(self.folder, name)
-        temporary = f"{path}.tmp.{os.getpid()}"
-        try:
-            fig.savefig(temporary, format="png", dpi=self.dpi)
-            os.replace(temporary, path)
-        except (OSError, ValueError) as error:
-            try:
-                os.remove(temporary)
-            except OSError:
-                pass
-            raise OutputError(f"{path}: cannot write: {error}") from None
+        save_png(fig, path, self.dpi)
         print(path)
         self.written.append(path)
 
@@ -588,24 +515,16 @@ def normal_cdf(z, np):
 
 # ----------------------------------------------------------------------------------------------
 
-class Parser(argparse.ArgumentParser):
-    def error(self, message):
-        self.print_usage(sys.stderr)
-        sys.stderr.write(f"{self.prog}: {message}\n")
-        sys.exit(EXIT_USAGE)
-
-
 def main(argv):
-    parser = Parser(prog="plot_batch.py", description=__doc__.split("\n\n")[0],
+    parser = Parser(prog=PROG, description=__doc__.split("\n\n")[0],
                     epilog="Units on the axes are the model's own, intensities in g.")
     parser.add_argument("folder", metavar="DIR", help="the --out folder of `pound batch`")
-    parser.add_argument("--dpi", type=int, default=120, help="resolution of the PNGs (default 120)")
+    parser.add_dpi()
     parser.add_argument("--quantity", metavar="NAME", nargs="+", action="extend",
                         help="plot the IDA curves of these quantities only (default: "
                              + ", ".join(DEFAULT_QUANTITIES) + ")")
     args = parser.parse_args(argv)
-    if not 20 <= args.dpi <= 1200:
-        parser.error(f"--dpi must be between 20 and 1200, got {args.dpi}")
+    parser.check_dpi(args)
     for name in args.quantity or []:
         if name not in QUANTITIES:
             close = difflib.get_close_matches(name, QUANTITIES, n=1)
@@ -614,7 +533,7 @@ def main(argv):
                          + f"; one of {', '.join(QUANTITIES)}")
     wanted = list(dict.fromkeys(args.quantity)) if args.quantity else DEFAULT_QUANTITIES
 
-    figure_class = import_matplotlib()
+    figure_class = import_matplotlib(PROG, REEXEC_MARK, __file__)
     import numpy
 
     try:
@@ -630,14 +549,10 @@ def main(argv):
                 sys.stderr.write(f"note: {path}: no completed case reports {quantity}: "
                                  f"ida_{quantity}.png not drawn\n")
         plotter.plot_fragility()
-    except InputError as error:
-        sys.stderr.write(f"plot_batch.py: {error}\n")
-        return EXIT_INPUT
-    except OutputError as error:
-        sys.stderr.write(f"plot_batch.py: {error}\n")
-        return EXIT_OUTPUT
+    except PlotError as error:
+        return report(PROG, error)
     if not plotter.written:
-        sys.stderr.write(f"plot_batch.py: {args.folder}: no completed cases to plot\n")
+        sys.stderr.write(f"{PROG}: {args.folder}: no completed cases to plot\n")
     return 0
 
 

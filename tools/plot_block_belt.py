@@ -31,17 +31,15 @@ figure is.
 """
 
 import argparse
-import csv
 import math
 import os
 import sys
-import warnings
 
-EXIT_USAGE = 1
-EXIT_INPUT = 2
-EXIT_OUTPUT = 4
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_common import (InputError, OutputError, Parser, PlotError, check_folder,  # noqa: E402
+                         check_width, csv_reader, import_matplotlib, not_a_number, read_header,
+                         report, tight_layout)
 
-SYSTEM_PYTHON = "/usr/bin/python3"
 REEXEC_MARK = "POUND_PLOT_BLOCK_BELT_REEXEC"
 PROG = "plot_block_belt.py"
 
@@ -71,39 +69,6 @@ HISTORY_FIGURES = (
 FRICTION_FIGURE = "fig16_friction_ratio.png"
 
 
-class InputError(Exception):
-    """Bad input: the message names the file and what is wrong."""
-
-
-class OutputError(Exception):
-    """A figure could not be written."""
-
-
-def import_matplotlib():
-    """Returns matplotlib's Figure class (Agg backend), or exits with a clear message."""
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        from matplotlib.figure import Figure
-        import numpy  # noqa: F401  (matplotlib depends on it)
-        return Figure
-    except ImportError as error:
-        missing = error
-    # A pyenv or venv python3 does not see Debian's python3-matplotlib: use the system one.
-    if (not os.environ.get(REEXEC_MARK) and os.access(SYSTEM_PYTHON, os.X_OK)
-            and os.path.realpath(sys.executable) != os.path.realpath(SYSTEM_PYTHON)):
-        os.environ[REEXEC_MARK] = "1"
-        try:
-            os.execv(SYSTEM_PYTHON, [SYSTEM_PYTHON, os.path.abspath(__file__)] + sys.argv[1:])
-        except OSError:
-            pass
-    sys.stderr.write(
-        f"{PROG}: matplotlib is not available to {sys.executable} ({missing}); install it "
-        "with tools/install_dependencies.sh (Debian package python3-matplotlib) or run this "
-        f"script with a python3 that has it\n")
-    sys.exit(EXIT_USAGE)
-
-
 # ----------------------------------------------------------------------------------------------
 # Input
 
@@ -113,44 +78,26 @@ def read_table(path, required):
         raise InputError(f"{path}: {'not a file' if os.path.exists(path) else 'no such file'} "
                          "(is the folder the --out of `pound verify block-belt`?)")
     columns = {name: [] for name in required}
-    try:
-        with open(path, encoding="utf-8", newline="") as file:
-            reader = csv.reader(file)
-            header = next(reader, None)
-            if header is None:
-                raise InputError(f"{path}: empty file (no header line)")
-            header = [column.strip() for column in header]
-            if any(not column for column in header):
-                raise InputError(f"{path}: header has an empty column name")
-            duplicates = sorted({column for column in header if header.count(column) > 1})
-            if duplicates:
-                raise InputError(f"{path}: header repeats column(s) {', '.join(duplicates)}")
-            missing = [column for column in required if column not in header]
-            if missing:
-                raise InputError(f"{path}: header has no column(s) {', '.join(missing)} "
-                                 "(is it written by `pound verify block-belt`?)")
-            index = {name: header.index(name) for name in required}
-            width = len(header)
-            for row in reader:
-                if not row or (len(row) == 1 and not row[0].strip()):
-                    continue
-                line = reader.line_num
-                if len(row) != width:
-                    raise InputError(f"{path}: line {line}: {len(row)} fields, expected {width} "
-                                     "(the header's)")
-                for name, i in index.items():
-                    text = row[i].strip()
-                    try:
-                        value = float(text)
-                    except ValueError:
-                        raise InputError(f"{path}: line {line}, column '{name}': not a number: "
-                                         f"{row[i]!r}") from None
-                    if not math.isfinite(value):
-                        raise InputError(f"{path}: line {line}, column '{name}': not a finite "
-                                         f"number: {row[i]!r}")
-                    columns[name].append(value)
-    except (OSError, UnicodeDecodeError, csv.Error) as error:
-        raise InputError(f"{path}: cannot read: {error}") from None
+    with csv_reader(path) as reader:
+        header = read_header(path, reader, required,
+                             "(is it written by `pound verify block-belt`?)")
+        index = {name: header.index(name) for name in required}
+        width = len(header)
+        for row in reader:
+            if not row or (len(row) == 1 and not row[0].strip()):
+                continue
+            line = reader.line_num
+            check_width(path, line, row, width)
+            for name, i in index.items():
+                text = row[i].strip()
+                try:
+                    value = float(text)
+                except ValueError:
+                    raise not_a_number(path, line, name, row[i]) from None
+                if not math.isfinite(value):
+                    raise InputError(f"{path}: line {line}, column '{name}': not a finite "
+                                     f"number: {row[i]!r}")
+                columns[name].append(value)
     if not columns[required[0]]:
         raise InputError(f"{path}: no data rows (only a header)")
     return columns
@@ -333,9 +280,7 @@ class Plotter:
         temporaries = []
         try:
             for name, fig in self.figures:
-                with warnings.catch_warnings():
-                    warnings.simplefilter("ignore")
-                    fig.tight_layout()
+                tight_layout(fig)
                 path = os.path.join(self.out_folder, name)
                 temporary = f"{path}.tmp.{os.getpid()}"
                 temporaries.append((temporary, path))
@@ -360,13 +305,6 @@ class Plotter:
 
 # ----------------------------------------------------------------------------------------------
 
-class Parser(argparse.ArgumentParser):
-    def error(self, message):
-        self.print_usage(sys.stderr)
-        sys.stderr.write(f"{self.prog}: {message}\n")
-        sys.exit(EXIT_USAGE)
-
-
 def main(argv):
     parser = Parser(prog=PROG, description=__doc__.split("\n\n")[0])
     parser.add_argument("folder", metavar="DIR", help="the --out folder of `pound verify block-belt`")
@@ -374,17 +312,15 @@ def main(argv):
     parser.add_argument("--speeds", metavar="a,b,c", type=parse_speeds,
                         help="values of Pi to plot in Figs. 13-15 (default: up to five, one per "
                              "decade)")
-    parser.add_argument("--dpi", type=int, default=120, help="resolution of the PNGs (default 120)")
+    parser.add_dpi()
     args = parser.parse_args(argv)
-    if not 20 <= args.dpi <= 1200:
-        parser.error(f"--dpi must be between 20 and 1200, got {args.dpi}")
+    parser.check_dpi(args)
 
-    figure_class = import_matplotlib()
+    figure_class = import_matplotlib(PROG, REEXEC_MARK, __file__)
 
     try:
         folder = args.folder
-        if not os.path.isdir(folder):
-            raise InputError(f"{folder}: {'not a folder' if os.path.exists(folder) else 'no such folder'}")
+        check_folder(folder)
         _, points = read_sweep(folder)
         histories_path, histories = read_histories(folder)
         speeds = choose_speeds(list(histories), args.speeds, histories_path)
@@ -393,12 +329,8 @@ def main(argv):
             plotter.history_figure(name, column, ylabel, title, reference, speeds, histories)
         plotter.friction_figure(points)
         plotter.save_all()
-    except InputError as error:
-        sys.stderr.write(f"{PROG}: {error}\n")
-        return EXIT_INPUT
-    except OutputError as error:
-        sys.stderr.write(f"{PROG}: {error}\n")
-        return EXIT_OUTPUT
+    except PlotError as error:
+        return report(PROG, error)
     return 0
 
 

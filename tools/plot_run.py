@@ -22,20 +22,17 @@ Exit codes: 0 ok, 1 usage error or matplotlib missing, 2 bad input (no summary.j
 malformed summary or CSV; message names the file), 4 a figure could not be written.
 """
 
-import argparse
-import csv
-import json
 import math
 import os
 import sys
-import warnings
 from array import array
 
-EXIT_USAGE = 1
-EXIT_INPUT = 2
-EXIT_OUTPUT = 4
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_common import (InputError, Parser, PlotError, check_column_names,  # noqa: E402
+                         check_folder, check_width, csv_reader, import_matplotlib, not_a_number,
+                         read_json, report, save_png, strip_header)
 
-SYSTEM_PYTHON = "/usr/bin/python3"
+PROG = "plot_run.py"
 REEXEC_MARK = "POUND_PLOT_RUN_REEXEC"
 
 PER_PAGE = 8          # subplots per page of the per-link and per-joint figures
@@ -46,55 +43,15 @@ LINK_QUANTITIES = ("force", "penetration", "tangential_force", "slide")
 ENERGY_TERMS = ("kinetic", "strain", "damping", "links")
 
 
-class InputError(Exception):
-    """Bad input: the message names the file and what is wrong."""
-
-
-class OutputError(Exception):
-    """A figure could not be written."""
-
-
-def import_matplotlib():
-    """Returns matplotlib's Figure class (Agg backend), or exits with a clear message."""
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        from matplotlib.figure import Figure
-        import numpy  # noqa: F401  (matplotlib depends on it)
-        return Figure
-    except ImportError as error:
-        missing = error
-    # A pyenv or venv python3 does not see Debian's python3-matplotlib: use the system one.
-    if (not os.environ.get(REEXEC_MARK) and os.access(SYSTEM_PYTHON, os.X_OK)
-            and os.path.realpath(sys.executable) != os.path.realpath(SYSTEM_PYTHON)):
-        os.environ[REEXEC_MARK] = "1"
-        try:
-            os.execv(SYSTEM_PYTHON, [SYSTEM_PYTHON, os.path.abspath(__file__)] + sys.argv[1:])
-        except OSError:
-            pass
-    sys.stderr.write(
-        f"plot_run.py: matplotlib is not available to {sys.executable} ({missing}); install it "
-        "with tools/install_dependencies.sh (Debian package python3-matplotlib) or run this "
-        f"script with a python3 that has it\n")
-    sys.exit(EXIT_USAGE)
-
-
 # ----------------------------------------------------------------------------------------------
 # Input
 
 def load_summary(folder):
-    if not os.path.isdir(folder):
-        raise InputError(f"{folder}: {'not a folder' if os.path.exists(folder) else 'no such folder'}")
+    check_folder(folder)
     path = os.path.join(folder, "summary.json")
     if not os.path.isfile(path):
         raise InputError(f"{folder}: no summary.json here (is it the --out folder of `pound run`?)")
-    try:
-        with open(path, encoding="utf-8") as file:
-            summary = json.load(file)
-    except (OSError, UnicodeDecodeError) as error:
-        raise InputError(f"{path}: cannot read: {error}") from None
-    except json.JSONDecodeError as error:
-        raise InputError(f"{path}: not valid JSON: {error}") from None
+    summary = read_json(path)
     if not isinstance(summary, dict):
         raise InputError(f"{path}: expected a JSON object at the top level")
     summary["__path__"] = path
@@ -180,25 +137,19 @@ class History:
         indices = [self.index[name] for name in names]
         arrays = [array("d") for _ in names]
         width = len(self.columns)
-        try:
-            with open(self.path, encoding="utf-8", newline="") as file:
-                reader = csv.reader(file)
-                next(reader)
-                for row in reader:
-                    if not row:
-                        continue
-                    if len(row) != width:
-                        raise InputError(f"{self.path}: line {reader.line_num}: {len(row)} fields, "
-                                         f"expected {width} (the header's)")
-                    try:
-                        for values, i in zip(arrays, indices):
-                            values.append(float(row[i]))
-                    except ValueError:
-                        bad = next(i for i in indices if not is_float(row[i]))
-                        raise InputError(f"{self.path}: line {reader.line_num}, column "
-                                         f"'{self.columns[bad]}': not a number: {row[bad]!r}") from None
-        except (OSError, UnicodeDecodeError, csv.Error) as error:
-            raise InputError(f"{self.path}: cannot read: {error}") from None
+        with csv_reader(self.path) as reader:
+            next(reader)
+            for row in reader:
+                if not row:
+                    continue
+                check_width(self.path, reader.line_num, row, width)
+                try:
+                    for values, i in zip(arrays, indices):
+                        values.append(float(row[i]))
+                except ValueError:
+                    bad = next(i for i in indices if not is_float(row[i]))
+                    raise not_a_number(self.path, reader.line_num, self.columns[bad],
+                                       row[bad]) from None
         self.values = {name: numpy.frombuffer(values, dtype=float) if len(values) else
                        numpy.zeros(0) for name, values in zip(names, arrays)}
         self.rows = len(arrays[0])
@@ -222,22 +173,12 @@ def read_histories(folder, numpy):
         path = os.path.join(folder, name)
         if not name.lower().endswith(".csv") or not os.path.isfile(path):
             continue
-        try:
-            with open(path, encoding="utf-8", newline="") as file:
-                header = next(csv.reader(file), None)
-        except (OSError, UnicodeDecodeError, csv.Error) as error:
-            raise InputError(f"{path}: cannot read: {error}") from None
-        if header is None:
-            raise InputError(f"{path}: empty file (no header line)")
-        header = [column.strip() for column in header]
+        with csv_reader(path) as reader:
+            header = strip_header(path, next(reader, None))
         if header[0] != "time":
             sys.stderr.write(f"note: {path}: first column is not 'time', not a pound history: skipped\n")
             continue
-        if any(not column for column in header):
-            raise InputError(f"{path}: header has an empty column name")
-        duplicates = sorted({column for column in header if header.count(column) > 1})
-        if duplicates:
-            raise InputError(f"{path}: header repeats column(s) {', '.join(duplicates)}")
+        check_column_names(path, header)
         history = History(path, header)
         if not history.kinds():
             continue
@@ -282,20 +223,8 @@ class Plotter:
 
     def save(self, fig, name, title):
         fig.suptitle(f"{title}: {self.model}")
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            fig.tight_layout()
         path = os.path.join(self.folder, name)
-        temporary = f"{path}.tmp.{os.getpid()}"
-        try:
-            fig.savefig(temporary, format="png", dpi=self.dpi)
-            os.replace(temporary, path)
-        except (OSError, ValueError) as error:
-            try:
-                os.remove(temporary)
-            except OSError:
-                pass
-            raise OutputError(f"{path}: cannot write: {error}") from None
+        save_png(fig, path, self.dpi)
         print(path)
         self.written.append(path)
 
@@ -588,23 +517,15 @@ class Plotter:
 
 # ----------------------------------------------------------------------------------------------
 
-class Parser(argparse.ArgumentParser):
-    def error(self, message):
-        self.print_usage(sys.stderr)
-        sys.stderr.write(f"{self.prog}: {message}\n")
-        sys.exit(EXIT_USAGE)
-
-
 def main(argv):
-    parser = Parser(prog="plot_run.py", description=__doc__.split("\n\n")[0],
+    parser = Parser(prog=PROG, description=__doc__.split("\n\n")[0],
                     epilog="Units on the axes are the model's own.")
     parser.add_argument("folder", metavar="DIR", help="the --out folder of `pound run`")
-    parser.add_argument("--dpi", type=int, default=120, help="resolution of the PNGs (default 120)")
+    parser.add_dpi()
     args = parser.parse_args(argv)
-    if not 20 <= args.dpi <= 1200:
-        parser.error(f"--dpi must be between 20 and 1200, got {args.dpi}")
+    parser.check_dpi(args)
 
-    figure_class = import_matplotlib()
+    figure_class = import_matplotlib(PROG, REEXEC_MARK, __file__)
     import numpy
 
     try:
@@ -619,14 +540,10 @@ def main(argv):
         plotter.plot_drift_envelopes()
         plotter.plot_energy(histories)
         plotter.plot_displacements(histories)
-    except InputError as error:
-        sys.stderr.write(f"plot_run.py: {error}\n")
-        return EXIT_INPUT
-    except OutputError as error:
-        sys.stderr.write(f"plot_run.py: {error}\n")
-        return EXIT_OUTPUT
+    except PlotError as error:
+        return report(PROG, error)
     if not plotter.written:
-        sys.stderr.write(f"plot_run.py: {args.folder}: no time histories to plot\n")
+        sys.stderr.write(f"{PROG}: {args.folder}: no time histories to plot\n")
     return 0
 
 

@@ -2,43 +2,11 @@
 # tools/plot_batch.py on a real batch: the figures exist and are PNGs; bad input exits 2 cleanly.
 # usage: plot_batch_test.sh POUND_BINARY REPO_ROOT
 set -euo pipefail
-if [ $# -ne 2 ]; then
-  echo "usage: $0 POUND_BINARY REPO_ROOT" >&2
-  exit 1
-fi
+# shellcheck source-path=SCRIPTDIR source=plot_test_common.sh
+source "$(dirname "${BASH_SOURCE[0]}")/plot_test_common.sh"  # fail, $python, $tmp, is_png
 pound=$1
 root=$2
 script="$root/tools/plot_batch.py"
-
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
-
-# Debian's python3-matplotlib is seen by /usr/bin/python3, not necessarily by the python3 on PATH
-# (pyenv, a venv): take the first of the two that can import it.
-python=""
-for candidate in /usr/bin/python3 python3; do
-  if command -v "$candidate" >/dev/null 2>&1 && "$candidate" -c "import matplotlib" >/dev/null 2>&1; then
-    python=$(command -v "$candidate")
-    break
-  fi
-done
-[ -n "$python" ] || fail "matplotlib is not importable by /usr/bin/python3 nor by python3 on PATH; \
-install it with tools/install_dependencies.sh (Debian package python3-matplotlib)"
-echo "using $python"
-
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-export MPLCONFIGDIR="$tmp/matplotlib"
-
-is_png() {  # a PNG signature and more than a blank canvas
-  local file=$1
-  [ -f "$file" ] || fail "$file was not written"
-  [ "$(head -c 8 "$file" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] ||
-    fail "$file is not a PNG"
-  [ "$(stat -c %s "$file")" -gt 10000 ] || fail "$file is only $(stat -c %s "$file") bytes"
-}
 
 check_folder() {  # folder, expected PNGs...: each written and printed, one line per PNG, no leftovers
   local folder=$1
