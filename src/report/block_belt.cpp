@@ -119,6 +119,8 @@ BlockBeltPoint run_block_belt(const builder::ModelSpec& base, double dimensionle
   const long stride = std::max<long>(1, expected / static_cast<long>(std::max<std::size_t>(options.samples, 1)));
   double force_sum = 0.0, steady_time = 0.0, stick_time = 0.0, lift_time = 0.0;
   double stick_share_sum = 0.0;
+  std::vector<char> was_sticking(belt_links.size(), 0);
+  long switches = 0;
   double previous_time = 0.0, stick_began = -1.0;
   bool stuck = false;
   long step = 0;
@@ -140,11 +142,15 @@ BlockBeltPoint run_block_belt(const builder::ModelSpec& base, double dimensionle
     double spring_force = scene.pretension;
     for (Index row : spring_rows) spring_force -= s.link_force[row];
     int closed = 0, sticking = 0;
-    for (Index k : belt_links) {
+    for (std::size_t c = 0; c < belt_links.size(); ++c) {
+      const Index k = belt_links[c];
       const Index row = links.row(k);
       const bool contact = links.law(k).in_contact();
+      const bool sticks = contact && !links.friction(k)->slipping();
       closed += contact;
-      if (contact && !links.friction(k)->slipping()) ++sticking;
+      sticking += sticks;
+      if (contact && !sticks && was_sticking[c] && s.time > steady_from) ++switches;
+      was_sticking[c] = sticks;
       point.peak_lift = std::max(point.peak_lift, -s.link_penetration[row]);
     }
     if (closed == 0) point.tumbling = true;
@@ -190,6 +196,10 @@ BlockBeltPoint run_block_belt(const builder::ModelSpec& base, double dimensionle
   point.friction_ratio = steady_time > 0.0 ? force_sum / steady_time / force_unit : 0.0;
   point.stick_fraction = steady_time > 0.0 ? stick_time / steady_time : 0.0;
   point.stick_share = steady_time > 0.0 ? stick_share_sum / steady_time : 0.0;
+  point.stick_slip_rate = steady_time > 0.0 ? static_cast<double>(switches) /
+                                                  static_cast<double>(belt_links.size()) /
+                                                  (steady_time / period)
+                                            : 0.0;
   point.lift_fraction = steady_time > 0.0 ? lift_time / steady_time : 0.0;
   point.stick_slip = point.stick_slip_cycles >= 2;
   return point;
@@ -201,35 +211,38 @@ std::string format_block_belt(const BlockBeltScene& scene,
       "block on a moving belt (Suzuki & Toi 1987, 3.2): m = {:.4g}, k_s = {:.4g}, mu = {:g}, "
       "P = {:.4g}, springs at t = 0: {:.4g} (mu P = {:.4g}), spring period {:.4g}\n"
       "mu_dyn/mu_st: mean spring force / (mu P) over the whole spring periods of the second half; share: mean fraction of the closed "
-      "contacts sticking; stick: fraction of the time the block sticks (90 % of its closed "
+      "contacts sticking; switches: stick-to-slip switches per contact per spring period; stick: fraction of the time the block sticks (90 % of its closed "
       "contacts); cycles: such stick phases >= 1 % of the spring period ending in slip\n\n",
       scene.mass, scene.spring_stiffness, scene.friction_coefficient, scene.pressing_force,
       scene.pretension, scene.friction_coefficient * scene.pressing_force,
       scene.spring_period());
-  text += fmt::format("{:>10} {:>11} {:>12} {:>7} {:>7} {:>7} {:>11} {:>6} {:>9} {:>10} {:>7} {:>8}\n",
-                      "Pi", "V0", "mu_dyn/mu_st", "share", "stick", "cycles", "stick-slip",
-                      "lift", "tumbling", "peak_lift", "steps", "run_s");
+  text += fmt::format(
+      "{:>10} {:>11} {:>12} {:>7} {:>8} {:>7} {:>7} {:>11} {:>6} {:>9} {:>10} {:>7} {:>8}\n", "Pi",
+      "V0", "mu_dyn/mu_st", "share", "switches", "stick", "cycles", "stick-slip", "lift",
+      "tumbling", "peak_lift", "steps", "run_s");
   for (const BlockBeltPoint& p : points)
     text += fmt::format(
-        "{:>10.3g} {:>11.4g} {:>12.4f} {:>7.3f} {:>7.3f} {:>7} {:>11} {:>6.3f} {:>9} {:>10.3g} "
-        "{:>7} {:>8.2f}\n",
-        p.dimensionless_speed, p.belt_speed, p.friction_ratio, p.stick_share, p.stick_fraction,
+        "{:>10.3g} {:>11.4g} {:>12.4f} {:>7.3f} {:>8.3g} {:>7.3f} {:>7} {:>11} {:>6.3f} {:>9} "
+        "{:>10.3g} {:>7} {:>8.2f}\n",
+        p.dimensionless_speed, p.belt_speed, p.friction_ratio, p.stick_share, p.stick_slip_rate,
+        p.stick_fraction,
         p.stick_slip_cycles, p.stick_slip ? "yes" : "no", p.lift_fraction,
         p.tumbling ? "yes" : "no", p.peak_lift, p.steps, p.run_time_s);
   return text;
 }
 
 Table block_belt_sweep_table(const std::vector<BlockBeltPoint>& points) {
-  Table table{{"dimensionless_speed", "belt_speed", "friction_ratio", "stick_share", "stick_fraction",
+  Table table{{"dimensionless_speed", "belt_speed", "friction_ratio", "stick_share",
+               "stick_slip_rate", "stick_fraction",
                "stick_slip_cycles", "stick_slip", "lift_fraction", "tumbling", "peak_lift",
                "steps", "time_step", "run_time_s"},
-              std::vector<std::vector<double>>(13)};
+              std::vector<std::vector<double>>(14)};
   for (const BlockBeltPoint& p : points) {
     const double row[] = {p.dimensionless_speed, p.belt_speed, p.friction_ratio, p.stick_share,
-                          p.stick_fraction, static_cast<double>(p.stick_slip_cycles),
+                          p.stick_slip_rate, p.stick_fraction, static_cast<double>(p.stick_slip_cycles),
                           p.stick_slip ? 1.0 : 0.0, p.lift_fraction, p.tumbling ? 1.0 : 0.0,
                           p.peak_lift, static_cast<double>(p.steps), p.time_step, p.run_time_s};
-    for (std::size_t c = 0; c < 13; ++c) table.values[c].push_back(row[c]);
+    for (std::size_t c = 0; c < 14; ++c) table.values[c].push_back(row[c]);
   }
   return table;
 }
@@ -261,6 +274,7 @@ io::Document to_document(const BlockBeltScene& scene, const std::vector<BlockBel
         .set("belt_speed", p.belt_speed)
         .set("friction_ratio", p.friction_ratio)
         .set("stick_share", p.stick_share)
+        .set("stick_slip_rate", p.stick_slip_rate)
         .set("stick_fraction", p.stick_fraction)
         .set("stick_slip_cycles", p.stick_slip_cycles)
         .set("stick_slip", p.stick_slip)

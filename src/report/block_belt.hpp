@@ -45,8 +45,10 @@ struct BlockBeltPoint {
   double belt_speed = 0.0;           // V0 [L/T]
   // Mean spring force over mu P in the steady part: mu_dynamic / mu_static (1 for a rigid block).
   double friction_ratio = 0.0;
-  // Mean fraction of the closed belt contacts that stick, over the steady part.
+  // Mean fraction of the closed belt contacts that stick, over the steady part, and how often a
+  // contact goes from sticking to slipping: switches per contact per spring period.
   double stick_share = 0.0;
+  double stick_slip_rate = 0.0;
   // The block sticks when 90 % of its closed belt contacts do. Fraction of the steady part, and
   // stick phases of at least 1 % of the spring period that end in slip (stick-slip cycles).
   double stick_fraction = 0.0;

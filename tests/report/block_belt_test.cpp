@@ -81,6 +81,11 @@ TEST(BlockBelt, ApparentFrictionIsMuAtLowSpeedAndFallsWhereTheBlockVibrates) {
   EXPECT_LT(faster.friction_ratio, 0.9);
   EXPECT_GT(faster.lift_fraction, 0.1);
   EXPECT_GT(faster.stick_share, 0.05);
+  // Contacts keep switching from stick to slip (at the block's own high frequencies).
+  std::cout << fmt::format("stick-to-slip switches per contact per spring period: {:.0f} at "
+                           "Pi = 0.1\n",
+                           faster.stick_slip_rate);
+  EXPECT_GT(faster.stick_slip_rate, 10.0);
 }
 
 }  // namespace
