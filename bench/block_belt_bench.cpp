@@ -8,7 +8,7 @@
 #include <ctime>
 
 #include "io/model_reader.hpp"
-#include "report/block_belt.hpp"
+#include "verification/block_belt.hpp"
 
 namespace {
 
@@ -21,13 +21,14 @@ double thread_cpu_seconds() {
 void block_belt_sweep_point(benchmark::State& state) {
   const pound::builder::ModelSpec spec =
       pound::io::read_model_file(POUND_SOURCE_DIR "/models/block_on_belt.json");
-  pound::report::BlockBeltOptions options;
+  pound::verification::BlockBeltOptions options;
   options.periods = 1.0;
   long steps = 0;
   double seconds = 0.0;
   for (auto _ : state) {
     const double start = thread_cpu_seconds();
-    const pound::report::BlockBeltPoint point = pound::report::run_block_belt(spec, 1.0, options);
+    const pound::verification::BlockBeltPoint point =
+        pound::verification::run_block_belt(spec, 1.0, options);
     seconds += thread_cpu_seconds() - start;
     steps += point.steps;
     benchmark::DoNotOptimize(point.friction_ratio);

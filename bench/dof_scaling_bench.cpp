@@ -11,8 +11,8 @@
 #include <iostream>
 #include <vector>
 
-#include "report/rod_impact.hpp"
-#include "report/rod_impact_report.hpp"
+#include "verification/rod_impact.hpp"
+#include "verification/rod_impact_report.hpp"
 
 namespace {
 
@@ -34,14 +34,14 @@ void dof_scaling(benchmark::State& state) {
     dofs.clear();
     seconds_per_step.clear();
     for (const int n : elements) {
-      pound::report::RodImpactOptions options;
-      options.pair = pound::report::rod_impact_case("kawashima", n, 1.0, "extended_penalty");
+      pound::verification::RodImpactOptions options;
+      options.pair = pound::verification::rod_impact_case("kawashima", n, 1.0, "extended_penalty");
       options.courant = explicit_method ? 0.5 : 1.0;
       if (explicit_method) options.integrator.type = "central_difference";
       // Steps in 3 T are 6 n / courant: ask for kSteps of them.
       options.duration_ratio = 3.0 * kSteps / (6.0 * n / *options.courant);
-      pound::report::RodPairSimulation simulation(options);
-      pound::report::RodImpactResult result;
+      pound::verification::RodPairSimulation simulation(options);
+      pound::verification::RodImpactResult result;
       double best = INFINITY;
       for (int repeat = 0; repeat < (n < 50000 ? 5 : 2); ++repeat) {
         const double start = thread_cpu_seconds();

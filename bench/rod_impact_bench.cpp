@@ -3,8 +3,8 @@
 // each iteration integrates from the initial state, factorisation included.
 #include <benchmark/benchmark.h>
 
-#include "report/rod_impact.hpp"
-#include "report/rod_impact_report.hpp"
+#include "verification/rod_impact.hpp"
+#include "verification/rod_impact_report.hpp"
 
 namespace {
 
@@ -13,18 +13,18 @@ namespace {
 // stable_time_step computes it (0.586 h/C0 with the extended penalty in contact, its link's
 // relative mode binding): dt = 0.527 h/C0, 11,380 steps.
 void rod_impact_fine_mesh(benchmark::State& state) {
-  pound::report::RodImpactOptions options;
+  pound::verification::RodImpactOptions options;
   options.pair =
-      pound::report::rod_impact_case("kawashima", static_cast<int>(state.range(0)), 1.0,
-                                     state.range(1) == 0 ? "gap_spring" : "extended_penalty");
+      pound::verification::rod_impact_case("kawashima", static_cast<int>(state.range(0)), 1.0,
+                                           state.range(1) == 0 ? "gap_spring" : "extended_penalty");
   const bool explicit_method = state.range(2) == 1;
   options.courant = 1.0;
   if (explicit_method) {
     options.integrator.type = "central_difference";
     options.stable_fraction = 0.9;
   }
-  pound::report::RodPairSimulation simulation(options);
-  pound::report::RodImpactResult result;
+  pound::verification::RodPairSimulation simulation(options);
+  pound::verification::RodImpactResult result;
   long steps = 0;
   for (auto _ : state) {
     steps = simulation.solve(result).steps;

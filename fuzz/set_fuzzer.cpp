@@ -12,7 +12,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text = pound::fuzz::as_text(data, size);
   pound::fuzz::expect_input_error_only("set", [&text] {
-    const pound::builder::SetSpec set = pound::io::parse_set(text, "/nonexistent/pound_fuzz/set.json");
+    const pound::builder::SetSpec set =
+        pound::io::parse_set(text, "/nonexistent/pound_fuzz/set.json");
     (void)pound::builder::plan_cases(set);
   });
   return 0;

@@ -19,6 +19,7 @@
 #include "io/model_reader.hpp"
 #include "io/output.hpp"
 #include "io/set_reader.hpp"
+#include "io/statistics_document.hpp"
 
 namespace pound::app {
 namespace {
@@ -280,10 +281,10 @@ BatchReport run_batch(const BatchOptions& options, const Cluster& cluster) {
     report.completed += summaries.back().status == "completed";
   }
   report.failed = cases.size() - report.completed;
-  report.statistics = report::batch_statistics(set, summaries);
+  report.statistics = results::batch_statistics(set, summaries);
   io::write_text_atomic((fs::path(out) / "batch_summary.csv").string(), csv);
   io::write_text_atomic((fs::path(out) / "batch_stats.json").string(),
-                        report::to_document(report.statistics, set).dump() + "\n");
+                        io::to_document(report.statistics, set).dump() + "\n");
   return report;
 }
 

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "app/cluster.hpp"
-#include "report/batch_statistics.hpp"
+#include "results/batch_statistics.hpp"
 #include "results/case_summary.hpp"
 
 namespace pound::app {
@@ -40,7 +40,7 @@ struct BatchReport {
   double solve_s = 0.0;   // of that, in the time-step loop (recording included)
   double setup_s = 0.0;   // reading the model and record, building and assembling
   double write_s = 0.0;   // writing the case folders
-  report::BatchStatistics statistics;  // root only
+  results::BatchStatistics statistics;  // root only
 };
 
 // Throws InputError (bad set, model or --out) before any case runs; io::OutputError if results

@@ -119,7 +119,7 @@ int batch_command(const Arguments& arguments) {
           100.0 * report.setup_s / report.worker_s, 100.0 * report.write_s / report.worker_s,
           100.0 * (report.worker_s - report.solve_s - report.setup_s - report.write_s) /
               report.worker_s);
-    for (const report::FragilityFit& f : report.statistics.fragilities)
+    for (const results::FragilityFit& f : report.statistics.fragilities)
       std::cout << (f.fitted ? fmt::format("  fragility {} {} > {:.4g}: median {:.4g} g, "
                                            "dispersion {:.3f} ({} of {} cases exceed)\n",
                                            f.model, f.quantity, f.limit, f.median, f.dispersion,

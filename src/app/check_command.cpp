@@ -9,10 +9,10 @@
 #include "app/commands.hpp"
 #include "app/model_loading.hpp"
 #include "assembly/modal_analysis.hpp"
-#include "contact/extended_penalty.hpp"
 #include "core/errors.hpp"
 #include "integrators/central_difference.hpp"
 #include "io/document.hpp"
+#include "links/extended_penalty.hpp"
 
 namespace pound::app {
 namespace po = boost::program_options;
@@ -33,7 +33,7 @@ options)";
 struct LinkCheck {
   std::string id, law;
   double stiffness = 0.0, adjacent = 0.0, contact_duration = 0.0;
-  contact::ExtendedPenalty::Numbers automatic{};
+  links::ExtendedPenalty::Numbers automatic{};
 };
 
 }  // namespace
@@ -41,8 +41,8 @@ struct LinkCheck {
 int check_command(const Arguments& arguments) {
   po::options_description options(kCheckUsage);
   std::string model_path;
-  options.add_options()("help,h", "show this help")("json", "print the findings as one JSON object")(
-      "strict", "exit 1 when there are warnings");
+  options.add_options()("help,h", "show this help")(
+      "json", "print the findings as one JSON object")("strict", "exit 1 when there are warnings");
   const auto parsed = parse_command_line(arguments, options, "model", model_path);
   if (!parsed) return 0;
   const po::variables_map& vm = *parsed;
@@ -59,8 +59,9 @@ int check_command(const Arguments& arguments) {
   }
   const builder::AnalysisSpec& analysis = loaded.built.analysis;
   std::vector<std::string> warnings;
-  std::string text = fmt::format("{}: {} DOFs ({} per node), {} links\n", model_path, system->size(),
-                                 system->dofs().dofs_per_node(), system->links().count());
+  std::string text =
+      fmt::format("{}: {} DOFs ({} per node), {} links\n", model_path, system->size(),
+                  system->dofs().dofs_per_node(), system->links().count());
 
   std::vector<double> periods;
   if (system->size() <= 4000) {
@@ -72,34 +73,39 @@ int check_command(const Arguments& arguments) {
   double open_limit = 0.0, contact_limit = 0.0;
   const bool lumped = system->lumped_mass() && (system->lumped_mass()->array() > 0.0).all();
   if (lumped) {
-    open_limit = stable_time_step(*system, false);
-    contact_limit = stable_time_step(*system, true);
-    text += fmt::format("  central difference stable step: {:.4g} with contacts open, {:.4g} in contact\n",
-                        open_limit, contact_limit);
+    open_limit = integrators::stable_time_step(*system, false);
+    contact_limit = integrators::stable_time_step(*system, true);
+    text += fmt::format(
+        "  central difference stable step: {:.4g} with contacts open, {:.4g} in contact\n",
+        open_limit, contact_limit);
     if (analysis.integrator.type == "central_difference" && !analysis.time_step_auto &&
         analysis.time_step > contact_limit)
-      warnings.push_back(fmt::format("time step {:.4g} is above the explicit stable limit {:.4g}: the "
-                                     "run will be refused",
-                                     analysis.time_step, contact_limit));
+      warnings.push_back(
+          fmt::format("time step {:.4g} is above the explicit stable limit {:.4g}: the "
+                      "run will be refused",
+                      analysis.time_step, contact_limit));
   } else {
     text += "  central difference: not available (a DOF has no lumped mass)\n";
   }
 
   // Contact links: how stiff against the adjacent elements, and how long a contact lasts.
   std::vector<LinkCheck> checks;
-  const LinkSet& links = system->links();
+  const integrators::LinkSet& links = system->links();
   for (Index k = 0; k < links.count(); ++k) {
     const model::Link& link = loaded.built.model.links[static_cast<std::size_t>(k)];
     const std::string law = links.law(k).name();
-    if (law == "restrainer" || law == "hook" || law == "elastic_spring" || law == "bilinear_spring") continue;
-    const contact::LinkContext context = system->link_context(link);
+    if (law == "restrainer" || law == "hook" || law == "elastic_spring" || law == "bilinear_spring")
+      continue;
+    const links::LinkContext context = system->link_context(link);
     LinkCheck c{link.id, law};
     // Hertz-type laws stiffen with penetration: no stiffness or duration before the impact.
-    const bool hertzian = law == "hertz" || law == "hertz_damp" || law == "jankowski" || law == "bilinear_impact";
+    const bool hertzian =
+        law == "hertz" || law == "hertz_damp" || law == "jankowski" || law == "bilinear_impact";
     if (!hertzian) c.stiffness = links.law(k).clone()->set_trial({1e-9, 1e-9, 0.0}).stiffness;
-    const double k_i = context.fixed_i ? 0.0 : context.stiffness_i, k_j = context.fixed_j ? 0.0 : context.stiffness_j;
+    const double k_i = context.fixed_i ? 0.0 : context.stiffness_i,
+                 k_j = context.fixed_j ? 0.0 : context.stiffness_j;
     c.adjacent = (k_i > 0.0 && k_j > 0.0) ? std::min(k_i, k_j) : std::max(k_i, k_j);
-    if (c.adjacent > 0.0) c.automatic = contact::ExtendedPenalty::automatic(context, 1e-3, 1.0);
+    if (c.adjacent > 0.0) c.automatic = links::ExtendedPenalty::automatic(context, 1e-3, 1.0);
     const double m_eff = context.effective_mass();
     // When the link is much stiffer than what holds its nodes (or they are bare masses), a
     // contact is the two end masses on the link: it lasts half a period of that pair. Against
@@ -115,50 +121,65 @@ int check_command(const Arguments& arguments) {
       text += fmt::format(", k-ratio {:.3g} (adjacent {:.4g})", ratio, c.adjacent);
       if (law == "gap_spring" || law == "kelvin_voigt") {
         if (ratio > 100.0)
-          warnings.push_back(fmt::format("link {}: k-ratio {:.3g}: a link this stiff against its neighbours "
-                                         "separates and recontacts inside the true contact with peaks many "
-                                         "times the exact force (Kawashima); use k-ratio ~1 or the extended "
-                                         "penalty",
-                                         c.id, ratio));
+          warnings.push_back(
+              fmt::format("link {}: k-ratio {:.3g}: a link this stiff against its neighbours "
+                          "separates and recontacts inside the true contact with peaks many "
+                          "times the exact force (Kawashima); use k-ratio ~1 or the extended "
+                          "penalty",
+                          c.id, ratio));
         if (ratio < 0.1)
-          warnings.push_back(fmt::format("link {}: k-ratio {:.3g}: a link this soft lets the bodies overlap "
-                                         "and holds contact far too long (Kawashima)",
-                                         c.id, ratio));
+          warnings.push_back(
+              fmt::format("link {}: k-ratio {:.3g}: a link this soft lets the bodies overlap "
+                          "and holds contact far too long (Kawashima)",
+                          c.id, ratio));
       }
     }
     if (c.adjacent > 0.0)
-      text += fmt::format("; automatic extended penalty alpha0 {:.4g}, alpha1 {:.4g}, alpha2 {:.4g}",
-                          c.automatic.alpha0, c.automatic.alpha1, c.automatic.alpha2);
+      text +=
+          fmt::format("; automatic extended penalty alpha0 {:.4g}, alpha1 {:.4g}, alpha2 {:.4g}",
+                      c.automatic.alpha0, c.automatic.alpha1, c.automatic.alpha2);
     if (c.contact_duration > 0.0) {
       text += fmt::format("; contact lasts ~{:.4g}", c.contact_duration);
       if (!analysis.time_step_auto && analysis.time_step > 0.5 * c.contact_duration)
-        warnings.push_back(fmt::format("link {}: the time step {:.4g} is more than half the contact duration "
-                                       "{:.4g}: the impact is not resolved and the result is meaningless",
-                                       c.id, analysis.time_step, c.contact_duration));
+        warnings.push_back(
+            fmt::format("link {}: the time step {:.4g} is more than half the contact duration "
+                        "{:.4g}: the impact is not resolved and the result is meaningless",
+                        c.id, analysis.time_step, c.contact_duration));
       else if (!analysis.time_step_auto && analysis.time_step > c.contact_duration / 20.0)
-        warnings.push_back(fmt::format("link {}: the time step {:.4g} gives fewer than 20 steps per contact "
-                                       "({:.4g}); Kawashima asks dt <= T_contact / 20",
-                                       c.id, analysis.time_step, c.contact_duration));
+        warnings.push_back(
+            fmt::format("link {}: the time step {:.4g} gives fewer than 20 steps per contact "
+                        "({:.4g}); Kawashima asks dt <= T_contact / 20",
+                        c.id, analysis.time_step, c.contact_duration));
     }
     text += "\n";
     checks.push_back(c);
   }
   if (!periods.empty() && !analysis.time_step_auto && analysis.time_step > periods.back() / 10.0)
-    warnings.push_back(fmt::format("the time step {:.4g} resolves the {}th period {:.4g} with fewer than 10 "
-                                   "steps",
-                                   analysis.time_step, periods.size(), periods.back()));
+    warnings.push_back(
+        fmt::format("the time step {:.4g} resolves the {}th period {:.4g} with fewer than 10 "
+                    "steps",
+                    analysis.time_step, periods.size(), periods.back()));
 
   if (vm.count("json")) {
     io::Document doc;
-    doc.set("model", model_path).set("dofs", static_cast<long>(system->size()))
-        .set("dofs_per_node", system->dofs().dofs_per_node()).set("periods", periods);
-    if (lumped) doc.set("explicit_stable_step_open", open_limit).set("explicit_stable_step_contact", contact_limit);
+    doc.set("model", model_path)
+        .set("dofs", static_cast<long>(system->size()))
+        .set("dofs_per_node", system->dofs().dofs_per_node())
+        .set("periods", periods);
+    if (lumped)
+      doc.set("explicit_stable_step_open", open_limit)
+          .set("explicit_stable_step_contact", contact_limit);
     std::vector<io::Document> link_documents;
     for (const LinkCheck& c : checks) {
       io::Document l;
-      l.set("id", c.id).set("law", c.law).set("stiffness", c.stiffness).set("adjacent_stiffness", c.adjacent)
-          .set("contact_duration", c.contact_duration).set("automatic_alpha0", c.automatic.alpha0)
-          .set("automatic_alpha1", c.automatic.alpha1).set("automatic_alpha2", c.automatic.alpha2);
+      l.set("id", c.id)
+          .set("law", c.law)
+          .set("stiffness", c.stiffness)
+          .set("adjacent_stiffness", c.adjacent)
+          .set("contact_duration", c.contact_duration)
+          .set("automatic_alpha0", c.automatic.alpha0)
+          .set("automatic_alpha1", c.automatic.alpha1)
+          .set("automatic_alpha2", c.automatic.alpha2);
       link_documents.push_back(l);
     }
     doc.set("links", link_documents);

@@ -11,7 +11,8 @@
 namespace pound::app {
 namespace {
 
-constexpr const char* kUsage = R"(pound: seismic pounding analysis (girders, abutments, adjacent buildings)
+constexpr const char* kUsage =
+    R"(pound: seismic pounding analysis (girders, abutments, adjacent buildings)
 
 usage: pound <command> [options]
 
@@ -45,14 +46,10 @@ int main_entry(int argc, char** argv) {
   Arguments rest(all.begin() + 1, all.end());
   try {
     using Command = int (*)(const Arguments&);
-    const std::map<std::string, Command> commands = {{"run", run_command},
-                                                     {"batch", batch_command},
-                                                     {"verify", verify_command},
-                                                     {"modes", modes_command},
-                                                     {"check", check_command},
-                                                     {"study", study_command},
-                                                     {"expand", expand_command},
-                                                     {"spectrum", spectrum_command}};
+    const std::map<std::string, Command> commands = {
+        {"run", run_command},       {"batch", batch_command},      {"verify", verify_command},
+        {"modes", modes_command},   {"check", check_command},      {"study", study_command},
+        {"expand", expand_command}, {"spectrum", spectrum_command}};
     if (auto found = commands.find(command); found != commands.end()) return found->second(rest);
     if (command == "help" || command == "--help" || command == "-h") {
       if (!rest.empty())
@@ -73,7 +70,8 @@ int main_entry(int argc, char** argv) {
     std::cerr << "error: " << error.what() << "\n";
     return 4;
   } catch (const boost::program_options::error& error) {
-    std::cerr << fmt::format("pound {}: {}\n(see `pound {} --help`)\n", command, error.what(), command);
+    std::cerr << fmt::format("pound {}: {}\n(see `pound {} --help`)\n", command, error.what(),
+                             command);
     return 1;
   }
 }

@@ -15,11 +15,11 @@
 #include "io/output.hpp"
 #include "io/system_memory.hpp"
 #include "model/ground_motion.hpp"
-#include "report/rod_impact.hpp"
-#include "report/rod_impact_report.hpp"
 #include "results/energy_balance.hpp"
 #include "results/monitors.hpp"
 #include "results/recorders.hpp"
+#include "verification/rod_impact.hpp"
+#include "verification/rod_impact_report.hpp"
 
 namespace pound::app {
 
@@ -27,7 +27,7 @@ namespace {
 
 std::vector<std::unique_ptr<results::Recorder>> make_recorders(const builder::BuiltModel& built,
                                                                const model::DofMap& dofs,
-                                                               const LinkSet& links) {
+                                                               const integrators::LinkSet& links) {
   std::vector<std::unique_ptr<results::Recorder>> recorders;
   for (const builder::ResolvedRecorder& spec : built.recorders) {
     std::vector<std::string> ids;
@@ -102,8 +102,9 @@ void check_histories_fit(const std::vector<std::unique_ptr<results::Recorder>>& 
 void summarise_case(const LoadedModel& loaded, const assembly::StructuralSystem& system,
                     const RunRequest& request, const results::LinkSummaries& links,
                     const results::DriftMonitors& drifts, const results::JointMonitors& joints,
-                    const results::EnergyBalance& energy, const TransientStatistics& stats,
-                    double end_time, double run_time, RunOutcome& outcome) {
+                    const results::EnergyBalance& energy,
+                    const integrators::TransientStatistics& stats, double end_time, double run_time,
+                    RunOutcome& outcome) {
   const builder::BuiltModel& built = loaded.built;
   results::CaseSummary& c = outcome.case_summary;
   c.status = outcome.failure.empty() ? "completed" : "failed";
@@ -185,8 +186,8 @@ RunOutcome run_model(const RunRequest& request) {
   }
   builder::settle_time_step(built.analysis, built.model, *system, model_path);
   auto integrator = builder::make_integrator(built.analysis);
-  TransientAnalysis analysis(*system, *integrator,
-                             builder::make_transient_settings(built.analysis));
+  integrators::TransientAnalysis analysis(*system, *integrator,
+                                          builder::make_transient_settings(built.analysis));
   // Without histories nothing is recorded, not just not written.
   auto recorders = request.histories ? make_recorders(built, system->dofs(), system->links())
                                      : std::vector<std::unique_ptr<results::Recorder>>();
@@ -207,9 +208,9 @@ RunOutcome run_model(const RunRequest& request) {
                             dofs.equation(m.girder, 0), dofs.equation(m.seat, 0)});
   results::JointMonitors joints(std::move(joint_places));
 
-  State state;
+  integrators::State state;
   state.velocity = system->initial_velocity(built.model);
-  TransientStatistics stats;
+  integrators::TransientStatistics stats;
   RunOutcome outcome;
   std::string& failure = outcome.failure;
   double& failure_time = outcome.failure_time;
@@ -218,7 +219,7 @@ RunOutcome run_model(const RunRequest& request) {
   try {
     if (built.analysis.static_initial_state)
       state.displacement = assembly::static_equilibrium(*system, state.time).displacement;
-    stats = analysis.run(state, [&](const State& s, const StepResult&) {
+    stats = analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
       for (auto& recorder : recorders) recorder->record(s);
       links.record(s);
       energy.record(s);
@@ -348,14 +349,14 @@ RunOutcome run_model(const RunRequest& request) {
     if (link_recorder && link_recorder->table().columns.size() >= 3 &&
         dynamic_cast<const results::LinkRecorder*>(link_recorder)) {
       const Table& history = link_recorder->table();
-      const report::RodPairNodes nodes(*built.sole_rod_pair, built, system->dofs());
-      report::RodImpactMetrics metrics =
-          report::rod_pair_metrics(*built.sole_rod_pair, nodes, history.values[0],
-                                   history.values[1], history.values[2], state);
+      const verification::RodPairNodes nodes(*built.sole_rod_pair, built, system->dofs());
+      verification::RodImpactMetrics metrics =
+          verification::rod_pair_metrics(*built.sole_rod_pair, nodes, history.values[0],
+                                         history.values[1], history.values[2], state);
       metrics.run_time_s = run_time;
       metrics.steps = stats.steps;
       metrics.newton_iterations = stats.newton_iterations;
-      summary.set("verification", report::to_document(metrics));
+      summary.set("verification", verification::to_document(metrics));
       verification_line = fmt::format(
           "  against the exact solution: force_l2_error {:.4f}, duration_error {:+.4f}, "
           "separation_velocity_error {:+.4f}, peak_force_ratio {:.3f}\n",

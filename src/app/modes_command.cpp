@@ -60,8 +60,9 @@ int modes_command(const Arguments& arguments) {
 
   const double largest = modes.omega_squared.size() ? modes.omega_squared.maxCoeff() : 0.0;
   std::vector<io::Document> rows;
-  std::string table = fmt::format("{}: {} DOFs\n{:>5} {:>12} {:>12} {:>10} {:>10}\n", model_path,
-                                  system->size(), "mode", "period", "frequency", "mass x", "mass y");
+  std::string table =
+      fmt::format("{}: {} DOFs\n{:>5} {:>12} {:>12} {:>10} {:>10}\n", model_path, system->size(),
+                  "mode", "period", "frequency", "mass x", "mass y");
   int listed = 0;
   for (Index k = 0; k < modes.omega_squared.size() && listed < count; ++k) {
     if (!(modes.omega_squared[k] > 1e-10 * largest)) continue;  // rigid-body motion
@@ -75,8 +76,11 @@ int modes_command(const Arguments& arguments) {
     table += fmt::format("{:>5} {:>12.5g} {:>12.5g} {:>10.4f} {:>10.4f}\n", listed, period,
                          1.0 / period, share[0], share[1]);
     io::Document row;
-    row.set("mode", listed).set("period", period).set("frequency", 1.0 / period)
-        .set("mass_ratio_x", share[0]).set("mass_ratio_y", share[1]);
+    row.set("mode", listed)
+        .set("period", period)
+        .set("frequency", 1.0 / period)
+        .set("mass_ratio_x", share[0])
+        .set("mass_ratio_y", share[1]);
     rows.push_back(row);
   }
   if (vm.count("json")) {

@@ -7,21 +7,22 @@
 #include "app/command_line.hpp"
 #include "app/commands.hpp"
 #include "io/output.hpp"
-#include "report/error_study.hpp"
-#include "report/stability_map.hpp"
+#include "verification/error_study.hpp"
+#include "verification/stability_map.hpp"
 
 namespace pound::app {
 namespace po = boost::program_options;
 
 namespace {
-constexpr const char* kStudyUsage = R"(usage: pound study rod-impact|stability [--out DIR] [--repeats N] [--quick]
+constexpr const char* kStudyUsage =
+    R"(usage: pound study rod-impact|stability [--out DIR] [--repeats N] [--quick]
 
 stability: the stability map of the rod benchmark (n = 200 per rod): every integrator x law over
 link stiffness ratio 1e-2 .. 1e8 and dt / T 1e-3 .. 0.5, each cell accurate, inaccurate, unstable
 (NaN/Inf or energy growth over 10 %) or refused before running; --out writes stability_map.csv.
 
 rod-impact:
-Error against run time on the rod benchmark: integrators (Newmark average acceleration, HHT
+Error against run time on the rod benchmark: integrators (integrators::Newmark average acceleration, HHT
 alpha = -0.1, generalised-alpha rho_inf = 0.5, explicit central difference) x contact laws (gap
 spring at k-ratio 1, extended penalty on automatic numbers) x elements per rod (50, 200, 1000) x
 Courant numbers dt C0 / h (1, 0.5, 0.25), on Kawashima's case and the fixed-end A2 = 3 A1 case.
@@ -37,45 +38,47 @@ int study_command(const Arguments& arguments) {
   po::options_description options(kStudyUsage);
   std::string benchmark, out;
   int repeats = 3;
-  options.add_options()("help,h", "show this help")("out,o", po::value(&out), "write error_study.csv/.json here")(
+  options.add_options()("help,h", "show this help")("out,o", po::value(&out),
+                                                    "write error_study.csv/.json here")(
       "repeats", po::value(&repeats)->default_value(repeats), "timed solves per run (median)")(
       "quick", "a reduced grid (n = 50, 200; Courant 1, 0.5)");
   const auto parsed = parse_command_line(arguments, options, "benchmark", benchmark);
   if (!parsed) return 0;
   const po::variables_map& vm = *parsed;
   if (benchmark == "stability") {
-    report::StabilityOptions map;
+    verification::StabilityOptions map;
     if (vm.count("quick")) {
       map.stiffness_ratios = {1e-2, 1, 1e4, 1e8};
       map.step_ratios = {1e-2, 0.1, 0.5};
     }
-    const auto cells = report::stability_map(map);
-    std::cout << report::format_stability_map(cells);
+    const auto cells = verification::stability_map(map);
+    std::cout << verification::format_stability_map(cells);
     if (!out.empty()) {
       io::create_output_folder(out);
       io::write_text_atomic((std::filesystem::path(out) / "stability_map.csv").string(),
-                            io::to_csv(report::stability_table(cells)));
+                            io::to_csv(verification::stability_table(cells)));
     }
     return 0;
   }
   if (benchmark != "rod-impact" || repeats < 1) {
-    std::cerr << "pound study: name the study (rod-impact or stability) and --repeats >= 1 (see `pound study --help`)\n";
+    std::cerr << "pound study: name the study (rod-impact or stability) and --repeats >= 1 (see "
+                 "`pound study --help`)\n";
     return 1;
   }
-  report::ErrorStudyOptions study;
+  verification::ErrorStudyOptions study;
   study.repeats = repeats;
   if (vm.count("quick")) {
     study.elements = {50, 200};
     study.courants = {1.0, 0.5};
   }
-  const auto results = report::error_study(study);
-  std::cout << report::format_error_study(results);
+  const auto results = verification::error_study(study);
+  std::cout << verification::format_error_study(results);
   if (!out.empty()) {
     io::create_output_folder(out);
     io::write_text_atomic((std::filesystem::path(out) / "error_study.csv").string(),
-                          io::to_csv(report::error_study_table(results)));
+                          io::to_csv(verification::error_study_table(results)));
     io::write_text_atomic((std::filesystem::path(out) / "error_study.json").string(),
-                          report::to_document(results).dump() + "\n");
+                          verification::to_document(results).dump() + "\n");
   }
   return 0;
 }

@@ -8,11 +8,11 @@
 #include "app/command_line.hpp"
 #include "app/commands.hpp"
 #include "core/errors.hpp"
-#include "io/output.hpp"
 #include "io/model_reader.hpp"
-#include "report/block_belt.hpp"
-#include "report/rod_impact_2d.hpp"
-#include "report/rod_impact_report.hpp"
+#include "io/output.hpp"
+#include "verification/block_belt.hpp"
+#include "verification/rod_impact_2d.hpp"
+#include "verification/rod_impact_report.hpp"
 
 namespace pound::app {
 namespace po = boost::program_options;
@@ -35,7 +35,7 @@ benchmarks:
                 mu_dynamic / mu_static, stick-slip and tumbling per speed (--speeds, --periods,
                 --out DIR writes block_belt_sweep.csv and block_belt_histories.csv)
 
-rod-impact: two elastic rods collide; the finite element solution (lumped-mass rods, contact link, Newmark
+rod-impact: two elastic rods collide; the finite element solution (lumped-mass rods, contact link, integrators::Newmark
 with Newton iteration) is compared with the exact solution of the wave equation computed by
 characteristics. Defaults: Kawashima (1980): E = 100, A = 1, rho = 0.1, L = 10, V0 = 0.1 each
 way, n = 10 elements per rod, link as stiff as the adjacent element, dt = T_I/100.
@@ -47,7 +47,7 @@ options)";
 
 int verify_block_belt(const std::string& model_path, const std::string& speed_list, double periods,
                       const std::string& out_folder, bool json) {
-  std::vector<double> speeds = report::block_belt_speeds();
+  std::vector<double> speeds = verification::block_belt_speeds();
   if (!speed_list.empty()) {
     speeds.clear();
     std::size_t start = 0;
@@ -74,24 +74,25 @@ int verify_block_belt(const std::string& model_path, const std::string& speed_li
     return 1;
   }
   const builder::ModelSpec spec = io::read_model_file(model_path);
-  const report::BlockBeltScene scene = report::block_belt_scene(spec);
-  report::BlockBeltOptions options;
+  const verification::BlockBeltScene scene = verification::block_belt_scene(spec);
+  verification::BlockBeltOptions options;
   options.periods = periods;
-  std::vector<report::BlockBeltPoint> points;
+  std::vector<verification::BlockBeltPoint> points;
   for (double speed : speeds) {
-    points.push_back(report::run_block_belt(spec, speed, options));
+    points.push_back(verification::run_block_belt(spec, speed, options));
     if (!json)
       std::cerr << fmt::format("  Pi = {:.3g}: {} steps in {:.2f} s\n", speed, points.back().steps,
                                points.back().run_time_s);
   }
   if (!out_folder.empty()) {
     std::filesystem::create_directories(out_folder);
-    io::write_csv_atomic(out_folder + "/block_belt_sweep.csv", report::block_belt_sweep_table(points));
+    io::write_csv_atomic(out_folder + "/block_belt_sweep.csv",
+                         verification::block_belt_sweep_table(points));
     io::write_csv_atomic(out_folder + "/block_belt_histories.csv",
-                         report::block_belt_history_table(points));
+                         verification::block_belt_history_table(points));
   }
-  std::cout << (json ? report::to_document(scene, points).dump() + "\n"
-                     : report::format_block_belt(scene, points));
+  std::cout << (json ? verification::to_document(scene, points).dump() + "\n"
+                     : verification::format_block_belt(scene, points));
   return 0;
 }
 
@@ -113,15 +114,16 @@ int verify_command(const Arguments& arguments) {
       "n", po::value(&elements)->default_value(elements), "elements per rod")(
       "k-ratio", po::value(&stiffness_ratio)->default_value(stiffness_ratio),
       "link stiffness / axial stiffness E A / h of the softer adjacent element")(
-      "dt-ratio", po::value(&dt_ratio)->default_value(dt_ratio), "time step / exact contact duration")(
+      "dt-ratio", po::value(&dt_ratio)->default_value(dt_ratio),
+      "time step / exact contact duration")(
       "courant", po::value(&courant),
       "time step as a Courant number dt C0 / h of the striking rod (overrides --dt-ratio)")(
       "duration-ratio", po::value(&duration_ratio)->default_value(duration_ratio),
       "run length after first contact / exact contact duration")(
       "law", po::value(&law)->default_value(law),
       "contact law: gap_spring (stiffness from --k-ratio) or extended_penalty (Suzuki & Toi's "
-      "automatic numbers)")(
-      "eta", po::value(&eta)->default_value(eta), "extended_penalty: damping factor of alpha1")(
+      "automatic numbers)")("eta", po::value(&eta)->default_value(eta),
+                            "extended_penalty: damping factor of alpha1")(
       "integrator", po::value(&integrator)->default_value("newmark_average_acceleration"),
       "newmark_average_acceleration | newmark_linear_acceleration | hht | generalized_alpha | "
       "central_difference (explicit: refused above its stable step)")(
@@ -134,9 +136,9 @@ int verify_command(const Arguments& arguments) {
       "csv", po::value(&csv), "write time, force, exact_force, penetration to this CSV file")(
       "profiles-csv", po::value(&profiles_csv),
       "write velocity and stress along both rods at 0, T/4, T/2, 3T/4 after first contact, FE and "
-      "exact (Kawashima Fig. 6)")(
-      "n-across", po::value(&elements_across)->default_value(elements_across),
-      "rod-impact-2d: elements across each strip")(
+      "exact (Kawashima Fig. 6)")("n-across",
+                                  po::value(&elements_across)->default_value(elements_across),
+                                  "rod-impact-2d: elements across each strip")(
       "model", po::value(&block_model)->default_value(block_model),
       "block-belt: the block-on-belt model")(
       "speeds", po::value(&speeds),
@@ -153,17 +155,20 @@ int verify_command(const Arguments& arguments) {
   const po::variables_map& vm = *parsed;
   const bool json = vm.count("json") > 0;
   if (benchmark == "two-element") {
-    const auto results = report::two_element_sweep();
-    std::cout << (json ? report::to_document(results).dump() + "\n" : report::format_two_element(results));
+    const auto results = verification::two_element_sweep();
+    std::cout << (json ? verification::to_document(results).dump() + "\n"
+                       : verification::format_two_element(results));
     double worst = 0.0;
     for (const auto& r : results) worst = std::max(worst, r.relative_error);
     return worst <= 1e-10 ? 0 : 1;
   }
   if (benchmark == "restitution") {
-    const auto rows = report::restitution_study();
-    std::cout << (json ? report::to_document(rows).dump() + "\n" : report::format_restitution(rows));
+    const auto rows = verification::restitution_study();
+    std::cout << (json ? verification::to_document(rows).dump() + "\n"
+                       : verification::format_restitution(rows));
     bool met = true;
-    for (const auto& r : rows) met = met && (!r.calibrated || std::abs(r.achieved - r.target) <= 0.005);
+    for (const auto& r : rows)
+      met = met && (!r.calibrated || std::abs(r.achieved - r.target) <= 0.005);
     return met ? 0 : 1;
   }
   if (benchmark == "rod-impact-2d") {
@@ -171,10 +176,10 @@ int verify_command(const Arguments& arguments) {
       std::cerr << "pound verify: --n-across must be >= 1\n";
       return 1;
     }
-    report::RodImpact2dOptions run = report::suzuki_toi_rods_2d();
+    verification::RodImpact2dOptions run = verification::suzuki_toi_rods_2d();
     run.elements_across = elements_across;
-    const report::RodImpact2dResult r = report::run_rod_impact_2d(run);
-    if (!csv.empty()) io::write_csv_atomic(csv, report::rod_impact_2d_table(r));
+    const verification::RodImpact2dResult r = verification::run_rod_impact_2d(run);
+    if (!csv.empty()) io::write_csv_atomic(csv, verification::rod_impact_2d_table(r));
     std::cout << fmt::format(
         "rod impact in 2-D (Suzuki & Toi 1987, Fig. 11): fixed-end case, 50 x {} quads per strip, "
         "mu = {:g}, {} contact links\n"
@@ -187,7 +192,8 @@ int verify_command(const Arguments& arguments) {
         r.peak_force_1d / r.exact_peak_force, r.steps_1d, r.exact_peak_force, r.exact_duration);
     return 0;
   }
-  if (benchmark == "block-belt") return verify_block_belt(block_model, speeds, periods, out_folder, json);
+  if (benchmark == "block-belt")
+    return verify_block_belt(block_model, speeds, periods, out_folder, json);
   if (benchmark != "rod-impact") {
     std::cerr << (benchmark.empty()
                       ? "pound verify: name a benchmark: rod-impact, two-element, restitution, "
@@ -205,24 +211,26 @@ int verify_command(const Arguments& arguments) {
   if (!(stiffness_ratio > 0.0)) return usage_error("--k-ratio must be > 0");
   if (!(dt_ratio > 0.0)) return usage_error("--dt-ratio must be > 0");
   if (vm.count("courant") && !(courant > 0.0)) return usage_error("--courant must be > 0");
-  if (!(duration_ratio >= 1.5)) return usage_error("--duration-ratio must be >= 1.5 (the error window)");
+  if (!(duration_ratio >= 1.5))
+    return usage_error("--duration-ratio must be >= 1.5 (the error window)");
   if (!(tolerance > 0.0)) return usage_error("--tolerance must be > 0");
 
   if (study == "kawashima" || study == "penalty") {
-    const auto studies = study == "kawashima" ? report::kawashima_study() : report::penalty_study();
+    const auto studies =
+        study == "kawashima" ? verification::kawashima_study() : verification::penalty_study();
     if (json) {
-      std::cout << report::to_document(studies).dump() << "\n";
+      std::cout << verification::to_document(studies).dump() << "\n";
     } else {
-      for (const auto& s : studies) std::cout << report::format_study(s) << "\n";
+      for (const auto& s : studies) std::cout << verification::format_study(s) << "\n";
     }
     return 0;
   }
   if (!study.empty())
     return usage_error(fmt::format("unknown study '{}' (known: kawashima, penalty)", study));
 
-  report::RodImpactOptions run;
+  verification::RodImpactOptions run;
   try {
-    run.pair = report::rod_impact_case(case_name, elements, stiffness_ratio, law, eta);
+    run.pair = verification::rod_impact_case(case_name, elements, stiffness_ratio, law, eta);
   } catch (const std::invalid_argument& error) {
     return usage_error(error.what());
   }
@@ -238,23 +246,26 @@ int verify_command(const Arguments& arguments) {
     run.integrator.type = integrator;
     run.integrator.alpha = hht_alpha;
     run.integrator.rho_infinity = rho_infinity;
-    if (!(hht_alpha >= -1.0 / 3.0 && hht_alpha <= 0.0)) return usage_error("--alpha must be in [-1/3, 0]");
-    if (!(rho_infinity >= 0.0 && rho_infinity <= 1.0)) return usage_error("--rho-inf must be in [0, 1]");
+    if (!(hht_alpha >= -1.0 / 3.0 && hht_alpha <= 0.0))
+      return usage_error("--alpha must be in [-1/3, 0]");
+    if (!(rho_infinity >= 0.0 && rho_infinity <= 1.0))
+      return usage_error("--rho-inf must be in [0, 1]");
   } else if (integrator != "newmark_average_acceleration") {
     return usage_error(fmt::format("unknown integrator '{}'", integrator));
   } else if (integrator != "newmark_average_acceleration") {
     return usage_error(fmt::format("unknown integrator '{}'", integrator));
   }
   if (!profiles_csv.empty()) run.profile_times = {0.0, 0.25, 0.5, 0.75};
-  const report::RodImpactResult result = report::run_rod_impact(run);
-  if (!csv.empty()) io::write_csv_atomic(csv, report::force_history_table(result));
-  if (!profiles_csv.empty()) io::write_csv_atomic(profiles_csv, report::profile_table(result));
+  const verification::RodImpactResult result = verification::run_rod_impact(run);
+  if (!csv.empty()) io::write_csv_atomic(csv, verification::force_history_table(result));
+  if (!profiles_csv.empty())
+    io::write_csv_atomic(profiles_csv, verification::profile_table(result));
   if (vm.count("json")) {
-    std::cout << report::to_document(result.metrics).dump() << "\n";
+    std::cout << verification::to_document(result.metrics).dump() << "\n";
   } else {
-    std::cout << fmt::format("rod impact, case {}, n = {}, k-ratio {:g}, dt = {:.4e}, {}\n", case_name,
-                             elements, stiffness_ratio, result.time_step, integrator)
-              << report::format_metrics(result.metrics);
+    std::cout << fmt::format("rod impact, case {}, n = {}, k-ratio {:g}, dt = {:.4e}, {}\n",
+                             case_name, elements, stiffness_ratio, result.time_step, integrator)
+              << verification::format_metrics(result.metrics);
   }
   return 0;
 }

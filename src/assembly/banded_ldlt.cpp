@@ -35,10 +35,11 @@ BandedLdlt::BandedLdlt(const Eigen::SparseMatrix<double>& matrix)
       lower_(i - j - 1, i) = value / pivot[j];
     }
     double diagonal = band(0, i);
-    for (Index k = first; k < i; ++k) diagonal -= lower_(i - k - 1, i) * lower_(i - k - 1, i) * pivot[k];
+    for (Index k = first; k < i; ++k)
+      diagonal -= lower_(i - k - 1, i) * lower_(i - k - 1, i) * pivot[k];
     if (!(diagonal > 0.0))
-      throw std::domain_error(
-          fmt::format("matrix is not positive definite at equation {} (pivot {:.3e})", i, diagonal));
+      throw std::domain_error(fmt::format(
+          "matrix is not positive definite at equation {} (pivot {:.3e})", i, diagonal));
     pivot[i] = diagonal;
   }
   inverse_pivot_ = pivot.cwiseInverse();

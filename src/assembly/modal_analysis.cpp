@@ -12,13 +12,14 @@ namespace pound::assembly {
 Modes modal_analysis(const StructuralSystem& system, Index max_dofs) {
   const Index n = system.size();
   if (n > max_dofs)
-    throw std::length_error(fmt::format("modal analysis of {} DOFs: the dense eigen-solver is "
-                                        "limited to {} DOFs",
-                                        n, max_dofs));
+    throw std::length_error(
+        fmt::format("modal analysis of {} DOFs: the dense eigen-solver is "
+                    "limited to {} DOFs",
+                    n, max_dofs));
   Matrix stiffness = Matrix(system.stiffness());
   const Matrix mass = Matrix(system.mass_matrix());
   // Links at their initial tangent (penetration -gap, at rest), on copies of their laws.
-  const LinkSet& links = system.links();
+  const integrators::LinkSet& links = system.links();
   const Matrix connectivity = Matrix(links.connectivity());
   for (Index k = 0; k < links.count(); ++k) {
     const Index row = links.row(k);
@@ -29,8 +30,10 @@ Modes modal_analysis(const StructuralSystem& system, Index max_dofs) {
   }
   // Split DOFs with and without mass; condense the massless ones statically.
   std::vector<Index> with_mass, massless;
-  for (Index i = 0; i < n; ++i) (mass.row(i).cwiseAbs().maxCoeff() > 0.0 ? with_mass : massless).push_back(i);
-  const auto m_count = static_cast<Index>(with_mass.size()), z_count = static_cast<Index>(massless.size());
+  for (Index i = 0; i < n; ++i)
+    (mass.row(i).cwiseAbs().maxCoeff() > 0.0 ? with_mass : massless).push_back(i);
+  const auto m_count = static_cast<Index>(with_mass.size()),
+             z_count = static_cast<Index>(massless.size());
   auto block = [](const Matrix& a, const std::vector<Index>& rows, const std::vector<Index>& cols) {
     Matrix out(rows.size(), cols.size());
     for (std::size_t r = 0; r < rows.size(); ++r)
@@ -45,7 +48,7 @@ Modes modal_analysis(const StructuralSystem& system, Index max_dofs) {
     reduced += block(stiffness, with_mass, massless) * recovery;
   }
   const Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> solver(reduced,
-                                                               block(mass, with_mass, with_mass));
+                                                                block(mass, with_mass, with_mass));
   if (solver.info() != Eigen::Success) throw std::runtime_error("modal analysis did not converge");
   Modes modes;
   modes.omega_squared = solver.eigenvalues();

@@ -93,7 +93,8 @@ Eigen::Vector3d quad_strain(const QuadCorners& corners, const Eigen::Matrix<doub
 
 double quad_smallest_jacobian(const QuadCorners& corners) {
   double smallest = shape_at(corners, kXi[0], kEta[0]).jacobian;
-  for (int a = 1; a < 4; ++a) smallest = std::min(smallest, shape_at(corners, kXi[a], kEta[a]).jacobian);
+  for (int a = 1; a < 4; ++a)
+    smallest = std::min(smallest, shape_at(corners, kXi[a], kEta[a]).jacobian);
   return smallest;
 }
 

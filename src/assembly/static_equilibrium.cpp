@@ -14,7 +14,7 @@ namespace pound::assembly {
 StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
                                      double relative_tolerance, int max_iterations) {
   const Index n = system.size();
-  LinkSet& links = system.links();
+  integrators::LinkSet& links = system.links();
   const Index m = links.size();
   Vector load = Vector::Zero(n);
   if (system.has_external_force()) system.external_force(time, load);
@@ -49,8 +49,9 @@ StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
     return std::max(applied.norm(), link_force.norm());
   };
   auto mechanism = [time]() {
-    return SolveError(time, "static equilibrium: the structure is not held under the initial "
-                            "loads (a mechanism: add supports, or links in contact)");
+    return SolveError(time,
+                      "static equilibrium: the structure is not held under the initial "
+                      "loads (a mechanism: add supports, or links in contact)");
   };
 
   // The loads in increments, each committed: friction links follow the loading path, as in a

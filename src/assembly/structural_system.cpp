@@ -17,7 +17,7 @@ namespace pound::assembly {
 namespace {
 
 template <typename Factor>
-class FactorSolver final : public LinearSolver {
+class FactorSolver final : public integrators::LinearSolver {
  public:
   explicit FactorSolver(const Eigen::SparseMatrix<double>& matrix) : factor_(matrix) {}
   void solve(const Vector& rhs, Vector& solution) const override { factor_.solve(rhs, solution); }
@@ -27,7 +27,7 @@ class FactorSolver final : public LinearSolver {
 };
 
 // Wide bands (unlucky numbering) go to a general sparse LDL^T with fill-reducing ordering.
-class SparseSolver final : public LinearSolver {
+class SparseSolver final : public integrators::LinearSolver {
  public:
   explicit SparseSolver(const Eigen::SparseMatrix<double>& matrix) : factor_(matrix) {
     if (factor_.info() != Eigen::Success)
@@ -308,7 +308,7 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
     excitations_.push_back({excitation.motion, std::move(inertia)});
   }
 
-  std::vector<LinkSet::Link> links;
+  std::vector<integrators::LinkSet::Link> links;
   // For each link row: its nodes and direction, to see how moving supports deform it.
   struct RowGeometry {
     Index node_i, node_j;
@@ -319,7 +319,7 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
   for (const model::Link& link : model.links) {
     // Row of a direction d: +d at node i, -d at node j (fixed DOFs dropped).
     auto row_along = [&](const std::array<double, 3>& direction) {
-      std::vector<LinkSet::Term> row;
+      std::vector<integrators::LinkSet::Term> row;
       for (int d = 0; d < dpn; ++d) {
         const double component = direction[static_cast<std::size_t>(d)];
         if (component == 0.0) continue;
@@ -334,7 +334,7 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
       }
       return row;
     };
-    LinkSet::Link entry;
+    integrators::LinkSet::Link entry;
     const std::array<double, 3> normal =
         link.rotational ? std::array<double, 3>{0.0, 0.0, 1.0}
                         : std::array<double, 3>{link.axis[0], link.axis[1], 0.0};
@@ -342,7 +342,7 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
     rows.push_back({link.node_i, link.node_j, normal});
     row_links.push_back(links.size());
     entry.gap = link.gap;
-    std::unique_ptr<contact::ContactLaw> law = link.make_law(link_context(link));
+    std::unique_ptr<links::LinkLaw> law = link.make_law(link_context(link));
     if (!link.friction) {
       entry.law = std::move(law);
     } else {
@@ -351,23 +351,23 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
       row_links.push_back(links.size());
       // The stick penalty defaults to the normal law's tangent at first touch.
       const auto probe = law->clone();
-      const contact::LawResponse touch = probe->set_trial({1e-12, 1e-12, 0.0});
+      const links::LawResponse touch = probe->set_trial({1e-12, 1e-12, 0.0});
       const model::LinkFriction& f = *link.friction;
-      const contact::StickPenalty stick{f.stick_stiffness.value_or(touch.stiffness),
-                                        f.stick_damping.value_or(touch.damping),
-                                        f.stick_mass.value_or(touch.mass)};
+      const links::StickPenalty stick{f.stick_stiffness.value_or(touch.stiffness),
+                                      f.stick_damping.value_or(touch.damping),
+                                      f.stick_mass.value_or(touch.mass)};
       entry.friction =
-          std::make_unique<contact::CoulombFriction>(std::move(law), f.coefficient, stick);
+          std::make_unique<links::CoulombFriction>(std::move(law), f.coefficient, stick);
     }
     links.push_back(std::move(entry));
   }
-  links_ = LinkSet(n, std::move(links));
+  links_ = integrators::LinkSet(n, std::move(links));
   // Rows whose j side moves on its own (a belt): delta gains -(velocity_j . direction) t.
   surface_rate_ = Vector::Zero(links_.size());
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const model::Link& link = model.links[static_cast<std::size_t>(row_links[r])];
-    surface_rate_[static_cast<Index>(r)] = -(link.velocity_j[0] * rows[r].direction[0] +
-                                             link.velocity_j[1] * rows[r].direction[1]);
+    surface_rate_[static_cast<Index>(r)] =
+        -(link.velocity_j[0] * rows[r].direction[0] + link.velocity_j[1] * rows[r].direction[1]);
   }
 
   if (!moving_supports) return;
@@ -442,8 +442,8 @@ void StructuralSystem::link_motion(double time, Vector& offset, Vector& rate,
   }
 }
 
-contact::LinkContext StructuralSystem::link_context(const model::Link& link) const {
-  contact::LinkContext context;
+links::LinkContext StructuralSystem::link_context(const model::Link& link) const {
+  links::LinkContext context;
   const std::array<double, 3> direction =
       link.rotational ? std::array<double, 3>{0.0, 0.0, 1.0}
                       : std::array<double, 3>{link.axis[0], link.axis[1], 0.0};
@@ -523,10 +523,11 @@ void StructuralSystem::multiply_stiffness(const Vector& x, Vector& y) const {
   multiply_band(x, y, 0, x.size());
 }
 
-void StructuralSystem::multiply_stiffness_by_blocks(Vector& x, Vector& y, const BlockFunction& make,
-                                                    const BlockFunction& use) const {
+void StructuralSystem::multiply_stiffness_by_blocks(Vector& x, Vector& y,
+                                                    const integrators::BlockFunction& make,
+                                                    const integrators::BlockFunction& use) const {
   if (stiffness_bandwidth_ < 0) {
-    SecondOrderSystem::multiply_stiffness_by_blocks(x, y, make, use);
+    integrators::SecondOrderSystem::multiply_stiffness_by_blocks(x, y, make, use);
     return;
   }
   // 256 rows: the blocks of an explicit step's ten or so vectors stay in L1 between its passes.
@@ -581,7 +582,8 @@ void StructuralSystem::external_force(double time, Vector& force) const {
   }
 }
 
-std::unique_ptr<LinearSolver> StructuralSystem::factor(double c_m, double c_c, double c_k) const {
+std::unique_ptr<integrators::LinearSolver> StructuralSystem::factor(double c_m, double c_c,
+                                                                    double c_k) const {
   Eigen::SparseMatrix<double> effective;
   if (damping_matrix_.size() > 0) {
     effective = c_k * stiffness_ + c_m * mass_matrix() + c_c * damping_matrix_;

@@ -10,7 +10,7 @@
 
 namespace pound::assembly {
 
-class StructuralSystem final : public SecondOrderSystem {
+class StructuralSystem final : public integrators::SecondOrderSystem {
  public:
   // Throws InputError when a free DOF has no mass (the equations of motion would be singular).
   explicit StructuralSystem(const model::Model& model);
@@ -24,17 +24,18 @@ class StructuralSystem final : public SecondOrderSystem {
   void multiply_damping(const Vector& x, Vector& y) const override;
   void multiply_stiffness(const Vector& x, Vector& y) const override;
   // By blocks of rows when K is banded (the rows of a block need x only up to b past it).
-  void multiply_stiffness_by_blocks(Vector& x, Vector& y, const BlockFunction& make,
-                                    const BlockFunction& use) const override;
+  void multiply_stiffness_by_blocks(Vector& x, Vector& y, const integrators::BlockFunction& make,
+                                    const integrators::BlockFunction& use) const override;
   bool has_external_force() const override {
     return has_loads_ || !excitations_.empty() || !moving_supports_.empty();
   }
   bool has_link_motion() const override;
   void link_motion(double time, Vector& offset, Vector& rate, Vector& acceleration) const override;
   void external_force(double time, Vector& force) const override;
-  std::unique_ptr<LinearSolver> factor(double c_m, double c_c, double c_k) const override;
-  LinkSet& links() override { return links_; }
-  const LinkSet& links() const { return links_; }
+  std::unique_ptr<integrators::LinearSolver> factor(double c_m, double c_c,
+                                                    double c_k) const override;
+  integrators::LinkSet& links() override { return links_; }
+  const integrators::LinkSet& links() const { return links_; }
 
   const model::DofMap& dofs() const { return dofs_; }
   const Vector* lumped_mass() const override;
@@ -42,7 +43,7 @@ class StructuralSystem final : public SecondOrderSystem {
   const model::RayleighDamping& damping() const { return damping_; }
   const Eigen::SparseMatrix<double>& stiffness() const { return stiffness_; }
   // What a link's law may need of the bodies it joins (masses and stiffnesses at its ends).
-  contact::LinkContext link_context(const model::Link& link) const;
+  links::LinkContext link_context(const model::Link& link) const;
   // u, v at t = 0 from the model's initial velocities (displacements zero).
   Vector initial_velocity(const model::Model& model) const;
 
@@ -77,7 +78,7 @@ class StructuralSystem final : public SecondOrderSystem {
   bool stiffness_symmetric_ = false;  // tridiagonal with K(i, i - 1) = K(i - 1, i)
   void multiply_band(const Vector& x, Vector& y, Index first, Index last) const;  // y[first, last)
   Eigen::SparseMatrix<double, Eigen::RowMajor> stiffness_rows_;
-  LinkSet links_;
+  integrators::LinkSet links_;
 };
 
 }  // namespace pound::assembly

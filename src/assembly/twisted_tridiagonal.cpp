@@ -12,8 +12,10 @@ TwistedTridiagonal::TwistedTridiagonal(const Eigen::SparseMatrix<double>& matrix
   std::vector<double> diagonal(n, 0.0), off(n, 0.0);  // off[i] = A(i, i-1)
   for (Index col = 0; col < matrix.outerSize(); ++col)
     for (Eigen::SparseMatrix<double>::InnerIterator it(matrix, col); it; ++it) {
-      if (it.row() == col) diagonal[col] += it.value();
-      else if (it.row() == col + 1) off[col + 1] += it.value();
+      if (it.row() == col)
+        diagonal[col] += it.value();
+      else if (it.row() == col + 1)
+        off[col + 1] += it.value();
       else if (it.row() != col - 1 && it.value() != 0.0)
         throw std::domain_error("TwistedTridiagonal needs a tridiagonal matrix");
     }
@@ -52,8 +54,8 @@ TwistedTridiagonal::TwistedTridiagonal(const Eigen::SparseMatrix<double>& matrix
       block.from_below = off[k + 1] / pivot;
       chains_.push_back({b - 1, -1, b - 1 - k});
     }
-    const double twist = diagonal[k] - block.from_above * off[k] -
-                         (k + 1 < b ? block.from_below * off[k + 1] : 0.0);
+    const double twist =
+        diagonal[k] - block.from_above * off[k] - (k + 1 < b ? block.from_below * off[k + 1] : 0.0);
     inverse_pivot_[k] = inverse(twist, k);
     blocks_.push_back(block);
     a = b;

@@ -23,9 +23,9 @@ class TwistedTridiagonal {
 
  private:
   struct Block {
-    Index first;  // a
-    Index twist;  // k, a <= k < b
-    Index end;    // b
+    Index first;        // a
+    Index twist;        // k, a <= k < b
+    Index end;          // b
     double from_above;  // l_k (0 when k == a)
     double from_below;  // u_k (0 when k == b - 1)
   };

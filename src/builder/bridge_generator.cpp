@@ -52,12 +52,14 @@ void add_girder_bridge(const GirderBridgeSpec& b, ModelSpec& out) {
   // A girder node sits on a seat: a horizontal bearing (the user's law) and a vertical one.
   auto add_bearing = [&](const std::string& girder, const std::string& seat) {
     add_link(girder + ".bearing_x", girder, seat, {1.0, 0.0}, 0.0, b.bearing);
-    add_link(girder + ".bearing_y", girder, seat, {0.0, 1.0}, 0.0, elastic(b.bearing_vertical_stiffness));
+    add_link(girder + ".bearing_y", girder, seat, {0.0, 1.0}, 0.0,
+             elastic(b.bearing_vertical_stiffness));
   };
 
   // Piers: fixed at the base, their top is the seat of the girder nodes above.
   for (int p = 1; p < spans; ++p) {
-    const std::string base = fmt::format("{}.p{}.base", id, p), top = fmt::format("{}.p{}.top", id, p);
+    const std::string base = fmt::format("{}.p{}.base", id, p),
+                      top = fmt::format("{}.p{}.top", id, p);
     out.nodes.push_back({base, x[p], 0.0});
     out.supports.push_back({base, true, true, true});
     std::string previous = base;
@@ -67,8 +69,8 @@ void add_girder_bridge(const GirderBridgeSpec& b, ModelSpec& out) {
       add_beam(fmt::format("{}.p{}.e{}", id, p, e), previous, node, pier_material, b.pier);
       previous = node;
     }
-    out.drift_monitors.push_back({fmt::format("{}.p{}", id, p), "pier", id, base, top, deck,
-                                  b.pier_yield_drift});
+    out.drift_monitors.push_back(
+        {fmt::format("{}.p{}", id, p), "pier", id, base, top, deck, b.pier_yield_drift});
   }
 
   // Girder segments between cuts (the abutments and the expansion joints).
@@ -87,7 +89,8 @@ void add_girder_bridge(const GirderBridgeSpec& b, ModelSpec& out) {
         const std::string node = fmt::format("{}.g{}.n{}", id, g, counter++);
         out.nodes.push_back({node, at, deck});
         if (!previous.empty())
-          add_beam(fmt::format("{}.g{}.e{}", id, g, counter - 1), previous, node, girder_material, b.girder);
+          add_beam(fmt::format("{}.g{}.e{}", id, g, counter - 1), previous, node, girder_material,
+                   b.girder);
         else
           starts.push_back(node);
         previous = node;
@@ -106,7 +109,8 @@ void add_girder_bridge(const GirderBridgeSpec& b, ModelSpec& out) {
     add_bearing(right, seat);
     const std::string joint = fmt::format("{}.joint{}", id, cuts[g]);
     add_link(joint, left, right, {1.0, 0.0}, b.joint.gap, b.joint.law);
-    if (b.joint.restrainer) add_link(joint + ".restrainer", left, right, {1.0, 0.0}, 0.0, *b.joint.restrainer);
+    if (b.joint.restrainer)
+      add_link(joint + ".restrainer", left, right, {1.0, 0.0}, 0.0, *b.joint.restrainer);
     out.joint_monitors.push_back({joint + ".left_end", joint, left, seat, b.joint.seat_width});
     out.joint_monitors.push_back({joint + ".right_end", joint, right, seat, b.joint.seat_width});
   }
@@ -136,7 +140,8 @@ void add_girder_bridge(const GirderBridgeSpec& b, ModelSpec& out) {
     add_link(joint, girder, wall, {outward, 0.0}, b.abutment.gap, b.abutment.law);
     if (b.abutment.restrainer)
       add_link(joint + ".restrainer", girder, wall, {outward, 0.0}, 0.0, *b.abutment.restrainer);
-    out.joint_monitors.push_back({joint + ".girder_end", joint, girder, seat, b.abutment.seat_width});
+    out.joint_monitors.push_back(
+        {joint + ".girder_end", joint, girder, seat, b.abutment.seat_width});
   }
 }
 

@@ -13,22 +13,22 @@
 #include "assembly/quad_element.hpp"
 #include "assembly/structural_system.hpp"
 #include "builder/generators.hpp"
-#include "contact/backfill.hpp"
-#include "contact/bilinear_impact.hpp"
-#include "contact/bilinear_spring.hpp"
-#include "contact/elastic_spring.hpp"
-#include "contact/extended_penalty.hpp"
-#include "contact/gap_spring.hpp"
-#include "contact/hertz.hpp"
-#include "contact/hertz_damp.hpp"
-#include "contact/jankowski.hpp"
-#include "contact/kelvin_voigt.hpp"
-#include "contact/restitution.hpp"
-#include "contact/restitution_calibration.hpp"
-#include "contact/restrainer.hpp"
 #include "core/errors.hpp"
 #include "integrators/central_difference.hpp"
 #include "integrators/newmark.hpp"
+#include "links/backfill.hpp"
+#include "links/bilinear_impact.hpp"
+#include "links/bilinear_spring.hpp"
+#include "links/elastic_spring.hpp"
+#include "links/extended_penalty.hpp"
+#include "links/gap_spring.hpp"
+#include "links/hertz.hpp"
+#include "links/hertz_damp.hpp"
+#include "links/jankowski.hpp"
+#include "links/kelvin_voigt.hpp"
+#include "links/restitution.hpp"
+#include "links/restitution_calibration.hpp"
+#include "links/restrainer.hpp"
 
 namespace pound::builder {
 namespace {
@@ -79,7 +79,7 @@ std::function<std::string(std::size_t)> origin_of(std::size_t user_count, const 
 }  // namespace
 
 model::LawFactory make_law(const LawSpec& law, const std::string& source, const std::string& path) {
-  using contact::LinkContext;
+  using links::LinkContext;
   const auto number = [law](const std::string& name) { return law.number(name); };
   // The effective mass a law calibrates with: given, or from the model.
   const auto effective_mass = [law, source, path](const LinkContext& context) {
@@ -94,10 +94,10 @@ model::LawFactory make_law(const LawSpec& law, const std::string& source, const 
   // Damping from a target restitution: exact (calibrated on the nondimensional impact) or the
   // source's published formula.
   const bool exact = law.choice("calibration", "exact") == "exact";
-  const auto calibrated = [&](contact::DampedImpact kind, double (*published)(double)) {
+  const auto calibrated = [&](links::DampedImpact kind, double (*published)(double)) {
     const double e = *law.number("restitution");
     try {
-      return exact ? contact::damping_for_restitution(kind, e) : published(e);
+      return exact ? links::damping_for_restitution(kind, e) : published(e);
     } catch (const std::domain_error& error) {
       throw InputError(source, path + "/restitution", error.what());
     }
@@ -105,47 +105,46 @@ model::LawFactory make_law(const LawSpec& law, const std::string& source, const 
   const std::string& type = law.type;
   if (type == "gap_spring") {
     const double k = *number("stiffness");
-    return [k](const LinkContext&) { return std::make_unique<contact::GapSpring>(k); };
+    return [k](const LinkContext&) { return std::make_unique<links::GapSpring>(k); };
   }
   if (type == "kelvin_voigt") {
     const double k = *number("stiffness");
     const bool clip = law.choice("tension", "clip") == "clip";
     const std::optional<double> damping = number("damping");
     const double ratio = damping ? 0.0
-                                 : calibrated(clip ? contact::DampedImpact::kelvin_voigt_clipped
-                                                   : contact::DampedImpact::kelvin_voigt,
-                                              contact::kelvin_voigt_damping_ratio);
+                                 : calibrated(clip ? links::DampedImpact::kelvin_voigt_clipped
+                                                   : links::DampedImpact::kelvin_voigt,
+                                              links::kelvin_voigt_damping_ratio);
     return [=](const LinkContext& context) {
       const double c = damping ? *damping : 2.0 * ratio * std::sqrt(k * effective_mass(context));
-      return std::make_unique<contact::KelvinVoigt>(k, c, clip);
+      return std::make_unique<links::KelvinVoigt>(k, c, clip);
     };
   }
   if (type == "hertz") {
     const double k = *number("stiffness");
-    return [k](const LinkContext&) { return std::make_unique<contact::Hertz>(k); };
+    return [k](const LinkContext&) { return std::make_unique<links::Hertz>(k); };
   }
   if (type == "hertz_damp") {
     const double k = *number("stiffness");
     const double ratio = number("damping_ratio") ? *number("damping_ratio")
-                                                 : calibrated(contact::DampedImpact::hertz_damp,
-                                                              contact::hertz_damp_ratio_ye);
-    return
-        [k, ratio](const LinkContext&) { return std::make_unique<contact::HertzDamp>(k, ratio); };
+                                                 : calibrated(links::DampedImpact::hertz_damp,
+                                                              links::hertz_damp_ratio_ye);
+    return [k, ratio](const LinkContext&) { return std::make_unique<links::HertzDamp>(k, ratio); };
   }
   if (type == "jankowski") {
     const double k = *number("stiffness");
     const double ratio = number("damping_ratio") ? *number("damping_ratio")
-                                                 : calibrated(contact::DampedImpact::jankowski,
-                                                              contact::jankowski_damping_ratio);
+                                                 : calibrated(links::DampedImpact::jankowski,
+                                                              links::jankowski_damping_ratio);
     return [=](const LinkContext& context) {
-      return std::make_unique<contact::Jankowski>(k, ratio, effective_mass(context));
+      return std::make_unique<links::Jankowski>(k, ratio, effective_mass(context));
     };
   }
   if (type == "bilinear_impact") {
     if (number("k1"))
-      return [loop = contact::BilinearImpact::Loop{
+      return [loop = links::BilinearImpact::Loop{
                   *number("k1"), *number("k2"), *number("yield_penetration")}](const LinkContext&) {
-        return std::make_unique<contact::BilinearImpact>(loop);
+        return std::make_unique<links::BilinearImpact>(loop);
       };
     const double k = *number("stiffness"), e = *number("restitution");
     const double fraction = number("yield_fraction").value_or(0.1);
@@ -155,8 +154,8 @@ model::LawFactory make_law(const LawSpec& law, const std::string& source, const 
                                    "would need K2 <= 0 (raise e or lower yield_fraction)",
                                    e, fraction));
     return [=](const LinkContext& context) {
-      return std::make_unique<contact::BilinearImpact>(
-          contact::BilinearImpact::Calibration{k, e, effective_mass(context), fraction});
+      return std::make_unique<links::BilinearImpact>(
+          links::BilinearImpact::Calibration{k, e, effective_mass(context), fraction});
     };
   }
   if (type == "extended_penalty") {
@@ -164,9 +163,9 @@ model::LawFactory make_law(const LawSpec& law, const std::string& source, const 
     const std::optional<double> alpha0 = number("alpha0"), alpha1 = number("alpha1"),
                                 alpha2 = number("alpha2");
     return [=](const LinkContext& context) {
-      contact::ExtendedPenalty::Numbers numbers{alpha0.value_or(0.0), 0.0, alpha2.value_or(0.0)};
+      links::ExtendedPenalty::Numbers numbers{alpha0.value_or(0.0), 0.0, alpha2.value_or(0.0)};
       if (!alpha0 || !alpha2) {
-        const auto automatic = contact::ExtendedPenalty::automatic(context, tolerance, eta);
+        const auto automatic = links::ExtendedPenalty::automatic(context, tolerance, eta);
         if (!(automatic.alpha0 > 0.0) || !std::isfinite(automatic.alpha2))
           throw InputError(source, path,
                            "extended_penalty cannot take its numbers from the model: no "
@@ -176,7 +175,7 @@ model::LawFactory make_law(const LawSpec& law, const std::string& source, const 
         if (!alpha2) numbers.alpha2 = automatic.alpha2 * numbers.alpha0 / automatic.alpha0;
       }
       numbers.alpha1 = alpha1.value_or(2.0 * eta * std::sqrt(numbers.alpha0 * numbers.alpha2));
-      return std::make_unique<contact::ExtendedPenalty>(numbers);
+      return std::make_unique<links::ExtendedPenalty>(numbers);
     };
   }
   if (type == "restrainer" || type == "hook") {
@@ -184,46 +183,49 @@ model::LawFactory make_law(const LawSpec& law, const std::string& source, const 
     const double yield = number("yield_force").value_or(std::numeric_limits<double>::infinity());
     const double hardening = number("hardening_ratio").value_or(0.0);
     return [=](const LinkContext&) {
-      return std::make_unique<contact::Restrainer>(type, k, slack, yield, hardening);
+      return std::make_unique<links::Restrainer>(type, k, slack, yield, hardening);
     };
   }
   if (type == "elastic_spring") {
     const double k = *number("stiffness");
-    return [k](const LinkContext&) { return std::make_unique<contact::ElasticSpring>(k); };
+    return [k](const LinkContext&) { return std::make_unique<links::ElasticSpring>(k); };
   }
   if (type == "bilinear_spring") {
     const double k = *number("stiffness"), yield = *number("yield_force");
     const double hardening = number("hardening_ratio").value_or(0.0);
     return [=](const LinkContext&) {
-      return std::make_unique<contact::BilinearSpring>(k, yield, hardening);
+      return std::make_unique<links::BilinearSpring>(k, yield, hardening);
     };
   }
   if (type == "backfill") {
     const double k = *number("initial_stiffness"), ultimate_force = *number("ultimate_force");
     const double ultimate_deformation = *number("ultimate_deformation");
-    if (!(contact::Backfill::hyperbola_curvature(k, ultimate_force, ultimate_deformation) > 0.0))
+    if (!(links::Backfill::hyperbola_curvature(k, ultimate_force, ultimate_deformation) > 0.0))
       throw InputError(source, path,
                        fmt::format("backfill: ultimate_force / initial_stiffness = {} must be "
                                    "below ultimate_deformation = {} (the hyperbola through "
                                    "(delta_ult, F_ult) needs D = K / F_ult - 1 / delta_ult > 0)",
                                    ultimate_force / k, ultimate_deformation));
     return [=](const LinkContext&) {
-      return std::make_unique<contact::Backfill>(k, ultimate_force, ultimate_deformation);
+      return std::make_unique<links::Backfill>(k, ultimate_force, ultimate_deformation);
     };
   }
   throw std::invalid_argument("unknown contact law " + type);
 }
 
-std::unique_ptr<Integrator> make_integrator(const AnalysisSpec& analysis) {
-  const ConvergenceTest test{analysis.relative_tolerance, analysis.absolute_tolerance,
-                             analysis.max_iterations};
+std::unique_ptr<integrators::Integrator> make_integrator(const AnalysisSpec& analysis) {
+  const integrators::ConvergenceTest test{analysis.relative_tolerance, analysis.absolute_tolerance,
+                                          analysis.max_iterations};
   const IntegratorSpec& integrator = analysis.integrator;
-  if (integrator.type == "central_difference") return std::make_unique<CentralDifference>();
+  if (integrator.type == "central_difference")
+    return std::make_unique<integrators::CentralDifference>();
   if (integrator.type == "hht")
-    return std::make_unique<Newmark>(Newmark::hht(integrator.alpha, test));
+    return std::make_unique<integrators::Newmark>(
+        integrators::Newmark::hht(integrator.alpha, test));
   if (integrator.type == "generalized_alpha")
-    return std::make_unique<Newmark>(Newmark::generalized_alpha(integrator.rho_infinity, test));
-  return std::make_unique<Newmark>(integrator.beta, integrator.gamma, test);
+    return std::make_unique<integrators::Newmark>(
+        integrators::Newmark::generalized_alpha(integrator.rho_infinity, test));
+  return std::make_unique<integrators::Newmark>(integrator.beta, integrator.gamma, test);
 }
 
 namespace {
@@ -266,7 +268,7 @@ void settle_time_step(AnalysisSpec& analysis, const model::Model& model,
                         model.nodes[static_cast<std::size_t>(node)].id, model::direction_name(d)));
   double limit = 0.0;
   try {
-    limit = stable_time_step(system, true);
+    limit = integrators::stable_time_step(system, true);
   } catch (const std::domain_error& error) {
     throw InputError(source, "/analysis/integrator", error.what());
   }
@@ -282,7 +284,7 @@ void settle_time_step(AnalysisSpec& analysis, const model::Model& model,
   }
 }
 
-TransientSettings make_transient_settings(const AnalysisSpec& analysis) {
+integrators::TransientSettings make_transient_settings(const AnalysisSpec& analysis) {
   return {.time_step = analysis.time_step,
           .end_time = analysis.duration,
           .max_step_cuts = analysis.max_step_cuts,
@@ -424,10 +426,15 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
     if (element.rayleigh)
       own = model::RayleighDamping{(*element.rayleigh)[0], (*element.rayleigh)[1]};
     if (element.type == "quad") {
-      model::Quad quad{element.id,      {node_i, node_j, 0, 0}, m.youngs_modulus,
+      model::Quad quad{element.id,
+                       {node_i, node_j, 0, 0},
+                       m.youngs_modulus,
                        m.poisson_ratio.value_or(0.0),
-                       element.thickness, m.density, element.plane_strain,
-                       element.consistent_mass, own};
+                       element.thickness,
+                       m.density,
+                       element.plane_strain,
+                       element.consistent_mass,
+                       own};
       assembly::QuadCorners corners;
       for (std::size_t a = 0; a < 4; ++a) {
         if (a >= 2)
@@ -435,8 +442,8 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
                                        fmt::format("{}/nodes/{}", path, a));
         for (std::size_t b = 0; b < a; ++b)
           if (quad.nodes[a] == quad.nodes[b])
-            resolve.fail(path + "/nodes", fmt::format("quad '{}' names node '{}' twice",
-                                                      element.id, model.nodes[quad.nodes[a]].id));
+            resolve.fail(path + "/nodes", fmt::format("quad '{}' names node '{}' twice", element.id,
+                                                      model.nodes[quad.nodes[a]].id));
         corners[a] = model.nodes[static_cast<std::size_t>(quad.nodes[a])].position;
       }
       const double jacobian = assembly::quad_smallest_jacobian(corners);
@@ -446,9 +453,9 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
                                  "nodes must go counter-clockwise round a convex quadrilateral)",
                                  element.id));
       if (!m.poisson_ratio)
-        resolve.fail(path + "/material",
-                     fmt::format("material '{}' needs a 'poisson_ratio' for a quad",
-                                 element.material));
+        resolve.fail(
+            path + "/material",
+            fmt::format("material '{}' needs a 'poisson_ratio' for a quad", element.material));
       model.quads.push_back(std::move(quad));
       continue;
     }
@@ -523,7 +530,8 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
     link.rotational = spec_link.rotational;
     link.velocity_j = {spec_link.velocity_j[0], spec_link.velocity_j[1]};
     if (spec_link.segment_end) {
-      const Index k_node = resolve.node(built.node_index, *spec_link.segment_end, path + "/segment/1");
+      const Index k_node =
+          resolve.node(built.node_index, *spec_link.segment_end, path + "/segment/1");
       if (k_node == link.node_i || k_node == link.node_j)
         resolve.fail(path + "/segment", "a segment needs two nodes other than the link's node i");
       link.segment_end = k_node;
@@ -698,7 +706,8 @@ ModelSize model_size(const ModelSpec& spec) {
   for (const BlockSpec& block : spec.blocks)
     add((static_cast<std::size_t>(block.columns) + 1) * (static_cast<std::size_t>(block.rows) + 1),
         fmt::format("/generators/{}", block.generator_index));
-  for (const SurfaceSpec& surface : spec.surfaces) add(1, fmt::format("/surfaces/{}", surface.index));
+  for (const SurfaceSpec& surface : spec.surfaces)
+    add(1, fmt::format("/surfaces/{}", surface.index));
   size.dofs = size.nodes * (spec.dimension == 1 ? 1 : 3);
   return size;
 }

@@ -70,8 +70,8 @@ BuiltModel build(const ModelSpec& spec, const std::vector<model::GroundMotion>& 
 // that needs a mass where the model has none).
 model::LawFactory make_law(const LawSpec& law, const std::string& source, const std::string& path);
 
-std::unique_ptr<Integrator> make_integrator(const AnalysisSpec& analysis);
-TransientSettings make_transient_settings(const AnalysisSpec& analysis);
+std::unique_ptr<integrators::Integrator> make_integrator(const AnalysisSpec& analysis);
+integrators::TransientSettings make_transient_settings(const AnalysisSpec& analysis);
 // For central difference: sets an "auto" step from the stable limit (links in contact), or
 // refuses one above it with the limit in the message, before any step is taken. A free DOF
 // without lumped mass is refused naming its node.

@@ -16,7 +16,8 @@ constexpr const char* kSide[] = {"left", "right"};
 
 std::vector<double> floor_heights(const BuildingSpec& building) {
   std::vector<double> heights{0.0};
-  for (const StoreySpec& storey : building.storeys) heights.push_back(heights.back() + storey.height);
+  for (const StoreySpec& storey : building.storeys)
+    heights.push_back(heights.back() + storey.height);
   return heights;
 }
 
@@ -58,9 +59,10 @@ void add_adjacent_buildings(const AdjacentBuildingsSpec& pair, ModelSpec& out) {
     for (std::size_t f = 1; f < side.size(); ++f)
       if (side[f] <= top * (1 + 1e-12)) contacts.push_back(side[f]);
   std::sort(contacts.begin(), contacts.end());
-  contacts.erase(std::unique(contacts.begin(), contacts.end(),
-                             [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(a, b); }),
-                 contacts.end());
+  contacts.erase(
+      std::unique(contacts.begin(), contacts.end(),
+                  [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(a, b); }),
+      contacts.end());
 
   std::vector<std::string> contact_nodes[2];  // per contact height
   for (int side = 0; side < 2; ++side) {
@@ -116,7 +118,8 @@ void add_adjacent_buildings(const AdjacentBuildingsSpec& pair, ModelSpec& out) {
     for (double h : contacts) {
       std::string node;
       for (std::size_t f = 1; f < heights[side].size(); ++f)
-        if (std::abs(heights[side][f] - h) <= 1e-9 * h) node = building_node_id(pair, side, static_cast<int>(f));
+        if (std::abs(heights[side][f] - h) <= 1e-9 * h)
+          node = building_node_id(pair, side, static_cast<int>(f));
       if (node.empty())
         for (std::size_t s = 0; s < building.storeys.size(); ++s)
           if (h > heights[side][s] && h < heights[side][s + 1])

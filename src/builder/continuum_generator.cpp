@@ -31,8 +31,10 @@ std::map<std::string, std::size_t> node_positions(const ModelSpec& out) {
 }
 
 // Node ids of a list of ids and node-set names, in order.
-std::vector<std::string> resolve_nodes(const ModelSpec& out, const std::map<std::string, std::size_t>& at,
-                                       const std::vector<std::string>& names, const std::string& path) {
+std::vector<std::string> resolve_nodes(const ModelSpec& out,
+                                       const std::map<std::string, std::size_t>& at,
+                                       const std::vector<std::string>& names,
+                                       const std::string& path) {
   std::vector<std::string> ids;
   for (std::size_t k = 0; k < names.size(); ++k) {
     const std::string& name = names[k];
@@ -43,7 +45,8 @@ std::vector<std::string> resolve_nodes(const ModelSpec& out, const std::map<std:
       ids.push_back(name);
     } else {
       std::string known;
-      for (const auto& [set_name, nodes] : out.node_sets) known += (known.empty() ? "" : ", ") + set_name;
+      for (const auto& [set_name, nodes] : out.node_sets)
+        known += (known.empty() ? "" : ", ") + set_name;
       throw InputError(out.source, fmt::format("{}/{}", path, k),
                        fmt::format("node or node set '{}' does not exist{}", name,
                                    known.empty() ? "" : " (node sets: " + known + ")"));
@@ -134,8 +137,8 @@ void add_surface(const SurfaceSpec& surface, ModelSpec& out) {
     const auto p = position(out, at, ids[k], fmt::format("{}/nodes", path));
     const double height = (p[0] - surface.point[0]) * surface.normal[0] +
                           (p[1] - surface.point[1]) * surface.normal[1];
-    const double scale = std::max({std::abs(p[0]), std::abs(p[1]), std::abs(surface.point[0]),
-                                   std::abs(surface.point[1])});
+    const double scale = std::max(
+        {std::abs(p[0]), std::abs(p[1]), std::abs(surface.point[0]), std::abs(surface.point[1])});
     if (height < -1e-12 * scale)
       throw InputError(out.source, fmt::format("{}/nodes", path),
                        fmt::format("node '{}' is {:g} below the surface (behind its normal): "
@@ -158,7 +161,8 @@ void add_contact(const ContactSpec& contact, ModelSpec& out) {
   const std::string path = fmt::format("/contacts/{}", contact.index);
   const std::map<std::string, std::size_t> at = node_positions(out);
   const std::vector<std::string> nodes = resolve_nodes(out, at, contact.nodes, path + "/nodes");
-  const std::vector<std::string> chain = resolve_nodes(out, at, contact.segments, path + "/segments");
+  const std::vector<std::string> chain =
+      resolve_nodes(out, at, contact.segments, path + "/segments");
   if (chain.size() < 2)
     throw InputError(out.source, path + "/segments",
                      "needs a chain of at least two nodes (one segment)");
@@ -172,9 +176,9 @@ void add_contact(const ContactSpec& contact, ModelSpec& out) {
       const auto b = position(out, at, chain[s + 1], path + "/segments");
       const double sx = b[0] - a[0], sy = b[1] - a[1], length = std::hypot(sx, sy);
       if (!(length > 0.0))
-        throw InputError(out.source, path + "/segments",
-                         fmt::format("nodes '{}' and '{}' are at the same place", chain[s],
-                                     chain[s + 1]));
+        throw InputError(
+            out.source, path + "/segments",
+            fmt::format("nodes '{}' and '{}' are at the same place", chain[s], chain[s + 1]));
       const double w =
           std::clamp(((p[0] - a[0]) * sx + (p[1] - a[1]) * sy) / (length * length), 0.0, 1.0);
       const double cx = a[0] + w * sx - p[0], cy = a[1] + w * sy - p[1];

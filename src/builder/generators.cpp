@@ -21,7 +21,8 @@ void add_rod(const RodPairSpec& pair, int side, ModelSpec& out) {
   const double h = rod.length / rod.elements;
   for (int i = 0; i <= rod.elements; ++i) {
     const double x = side == 0 ? -rod.length + i * h : i * h;
-    out.nodes.push_back({rod_node_id(pair, side, i), side == 0 && i == rod.elements ? 0.0 : x, 0.0});
+    out.nodes.push_back(
+        {rod_node_id(pair, side, i), side == 0 && i == rod.elements ? 0.0 : x, 0.0});
     if (rod.initial_velocity != 0.0)
       out.initial_velocities.push_back({rod_node_id(pair, side, i), rod.initial_velocity, 0.0});
   }

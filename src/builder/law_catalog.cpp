@@ -8,7 +8,8 @@ std::vector<LawType> make_catalog() {
   const LawParameter restitution{"restitution", Range::restitution,
                                  "target coefficient of restitution e, 0 < e <= 1"};
   const LawChoice calibration{
-      "calibration", {"exact", "published"},
+      "calibration",
+      {"exact", "published"},
       "how 'restitution' becomes damping: exact (the two-mass impact reaches e) or published (the "
       "source's formula, approximate)"};
   const LawParameter mass{"mass", Range::positive,
@@ -31,7 +32,8 @@ std::vector<LawType> make_catalog() {
                       {"damping", Range::non_negative, "c [F T/L]"},
                       restitution,
                       mass},
-       .choices = {{"tension", {"clip", "allow"},
+       .choices = {{"tension",
+                    {"clip", "allow"},
                     "clip: a tensile force is set to 0; allow: the force may pull near separation"},
                    calibration},
        .required = {"stiffness"},
@@ -66,7 +68,8 @@ std::vector<LawType> make_catalog() {
        .formula = "hysteretic loop between F = K1 dy + K2 (delta - dy) and F = K2 delta, slope K1 "
                   "inside; from e: calibrated at every impact so the two-mass restitution is e",
        .source = "Muthukumar (2003); OpenSees ImpactMaterial",
-       .parameters = {{"stiffness", Range::positive, "k_h of the Hertz law it approximates [F/L^1.5]"},
+       .parameters = {{"stiffness", Range::positive,
+                       "k_h of the Hertz law it approximates [F/L^1.5]"},
                       restitution,
                       {"yield_fraction", Range::fraction, "a = delta_y / delta_m (default 0.1)"},
                       mass,

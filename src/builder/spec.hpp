@@ -40,8 +40,8 @@ struct NodeSpec {
 
 struct MaterialSpec {
   std::string id;
-  double youngs_modulus = 0.0;  // E [F/L^2], > 0
-  double density = 0.0;         // rho [M/L^3], >= 0
+  double youngs_modulus = 0.0;          // E [F/L^2], > 0
+  double density = 0.0;                 // rho [M/L^3], >= 0
   std::optional<double> poisson_ratio;  // nu in [0, 0.5), needed by plane continua (quads)
 };
 
@@ -89,7 +89,7 @@ struct LoadSpec {
   double y = 0.0;
 };
 
-// Coulomb friction on a 2-D link (contact/coulomb_friction.hpp). The stick penalty defaults to
+// Coulomb friction on a 2-D link (links/coulomb_friction.hpp). The stick penalty defaults to
 // the normal law's own tangent (k, c, m of a linear law; alpha0..2 of the extended penalty).
 struct FrictionSpec {
   double coefficient = 0.0;  // mu >= 0, static = kinetic
@@ -310,7 +310,7 @@ struct AnalysisSpec {
   int max_step_cuts = 10;
   long max_steps = 0;       // 0: no limit
   double time_limit = 0.0;  // wall-clock seconds, 0: no limit; set by `pound run --time-limit`
-  std::optional<AdaptiveStepping> adaptive;  // implicit integrators only
+  std::optional<integrators::AdaptiveStepping> adaptive;  // implicit integrators only
   // "initial_state": "static": the run starts from static equilibrium under the loads at t = 0
   // (with the links), then moves with the initial velocities; default "unloaded" (u = 0).
   bool static_initial_state = false;

@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace pound {
+namespace pound::integrators {
 namespace {
 
 const Vector& diagonal_mass(const SecondOrderSystem& system) {
@@ -368,4 +368,4 @@ double stable_time_step(SecondOrderSystem& system, bool contacts_active) {
   return limit;
 }
 
-}  // namespace pound
+}  // namespace pound::integrators

@@ -16,7 +16,7 @@
 
 #include "integrators/integrator.hpp"
 
-namespace pound {
+namespace pound::integrators {
 
 class CentralDifference final : public Integrator {
  public:
@@ -33,7 +33,7 @@ class CentralDifference final : public Integrator {
   Matrix tangent_, jacobian_;
   Eigen::PartialPivLU<Matrix> jacobian_lu_;
   // Constant for the system given to initialize() (B is), built at its first step with links.
-  Matrix coupling_;                           // G = B M^-1 B^T
+  Matrix coupling_;  // G = B M^-1 B^T
   // Rows of B that G or a link's own rows tie together (links sharing a node): the link-force
   // system is block diagonal over these groups, so it is solved group by group.
   std::vector<std::vector<Index>> link_groups_;
@@ -52,4 +52,4 @@ class CentralDifference final : public Integrator {
 // when M has a zero on its diagonal (explicit needs lumped mass on every DOF).
 double stable_time_step(SecondOrderSystem& system, bool contacts_active);
 
-}  // namespace pound
+}  // namespace pound::integrators

@@ -6,7 +6,7 @@
 #include "core/types.hpp"
 #include "integrators/second_order_system.hpp"
 
-namespace pound {
+namespace pound::integrators {
 
 struct State {
   double time = 0.0;
@@ -31,9 +31,9 @@ struct ConvergenceTest {
 
 struct StepResult {
   bool converged = false;
-  int iterations = 0;            // linearised corrections made
-  double unbalanced_force = 0;   // ||R|| at the accepted iterate [F]
-  std::string failure;           // why not, when !converged
+  int iterations = 0;           // linearised corrections made
+  double unbalanced_force = 0;  // ||R|| at the accepted iterate [F]
+  std::string failure;          // why not, when !converged
 };
 
 class Integrator {
@@ -47,4 +47,4 @@ class Integrator {
                              State& to) = 0;
 };
 
-}  // namespace pound
+}  // namespace pound::integrators

@@ -3,12 +3,12 @@
 #include <cassert>
 #include <cmath>
 
-namespace pound {
+namespace pound::integrators {
 namespace {
 
 std::vector<LinkSet::Link> scalar_links(const std::vector<std::vector<LinkSet::Term>>& rows,
                                         const std::vector<double>& gaps,
-                                        std::vector<std::unique_ptr<contact::ContactLaw>> laws) {
+                                        std::vector<std::unique_ptr<links::LinkLaw>> laws) {
   assert(rows.size() == laws.size() && gaps.size() == laws.size());
   std::vector<LinkSet::Link> links(rows.size());
   for (std::size_t k = 0; k < rows.size(); ++k) {
@@ -22,7 +22,7 @@ std::vector<LinkSet::Link> scalar_links(const std::vector<std::vector<LinkSet::T
 }  // namespace
 
 LinkSet::LinkSet(Index dofs, const std::vector<std::vector<Term>>& rows, std::vector<double> gaps,
-                 std::vector<std::unique_ptr<contact::ContactLaw>> laws)
+                 std::vector<std::unique_ptr<links::LinkLaw>> laws)
     : LinkSet(dofs, scalar_links(rows, gaps, std::move(laws))) {}
 
 LinkSet::LinkSet(Index dofs, std::vector<Link> links) : links_(std::move(links)) {
@@ -63,7 +63,7 @@ void LinkSet::set_trial(const Vector& delta, const Vector& rate, const Vector& a
                         Matrix& tangent) {
   evaluate(
       delta, rate, acceleration,
-      [rate_factor, acceleration_factor](const contact::LawResponse& r) {
+      [rate_factor, acceleration_factor](const links::LawResponse& r) {
         return r.stiffness + r.damping * rate_factor + r.mass * acceleration_factor;
       },
       force, tangent);
@@ -72,7 +72,7 @@ void LinkSet::set_trial(const Vector& delta, const Vector& rate, const Vector& a
 void LinkSet::set_trial_mass(const Vector& delta, const Vector& rate, const Vector& acceleration,
                              Vector& force, Matrix& mass_tangent) {
   evaluate(
-      delta, rate, acceleration, [](const contact::LawResponse& r) { return r.mass; }, force,
+      delta, rate, acceleration, [](const links::LawResponse& r) { return r.mass; }, force,
       mass_tangent);
 }
 
@@ -84,15 +84,15 @@ void LinkSet::evaluate(const Vector& delta, const Vector& rate, const Vector& ac
   tangent.setZero(rows, rows);
   for (std::size_t k = 0; k < links_.size(); ++k) {
     const Index n = first_row_[k];
-    const contact::LinkKinematics normal{delta[n], rate[n], acceleration[n]};
+    const links::LinkKinematics normal{delta[n], rate[n], acceleration[n]};
     if (!links_[k].friction) {
-      const contact::LawResponse response = links_[k].law->set_trial(normal);
+      const links::LawResponse response = links_[k].law->set_trial(normal);
       force[n] = response.force;
       tangent(n, n) = total(response);
       continue;
     }
     const Index t = n + 1;
-    const contact::FrictionResponse response =
+    const links::FrictionResponse response =
         links_[k].friction->set_trial(normal, {delta[t], rate[t], acceleration[t]});
     force[n] = response.normal.force;
     force[t] = response.tangential_force;
@@ -104,8 +104,7 @@ void LinkSet::evaluate(const Vector& delta, const Vector& rate, const Vector& ac
 
 void LinkSet::anchor_friction_at_rest(const Vector& force) {
   for (std::size_t k = 0; k < links_.size(); ++k)
-    if (links_[k].friction)
-      links_[k].friction->anchor_at_rest(force[first_row_[k] + 1]);
+    if (links_[k].friction) links_[k].friction->anchor_at_rest(force[first_row_[k] + 1]);
 }
 
 void LinkSet::commit() {
@@ -126,9 +125,9 @@ void LinkSet::revert() {
   }
 }
 
-const contact::ContactLaw& LinkSet::law(Index link) const {
+const links::LinkLaw& LinkSet::law(Index link) const {
   const Link& entry = links_[static_cast<std::size_t>(link)];
   return entry.friction ? entry.friction->normal_law() : *entry.law;
 }
 
-}  // namespace pound
+}  // namespace pound::integrators

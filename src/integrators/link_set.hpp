@@ -10,11 +10,11 @@
 #include <memory>
 #include <vector>
 
-#include "contact/contact_law.hpp"
-#include "contact/coulomb_friction.hpp"
 #include "core/types.hpp"
+#include "links/coulomb_friction.hpp"
+#include "links/link_law.hpp"
 
-namespace pound {
+namespace pound::integrators {
 
 class LinkSet {
  public:
@@ -26,16 +26,16 @@ class LinkSet {
   struct Link {
     std::vector<Term> normal_row;
     double gap = 0.0;
-    std::unique_ptr<contact::ContactLaw> law;  // without friction
+    std::unique_ptr<links::LinkLaw> law;  // without friction
     // With friction: the tangential row and the friction law, which owns the normal law.
     std::vector<Term> tangential_row;
-    std::unique_ptr<contact::CoulombFriction> friction;
+    std::unique_ptr<links::CoulombFriction> friction;
   };
 
   LinkSet(Index dofs, std::vector<Link> links);
   // Links without friction, one row each.
   LinkSet(Index dofs, const std::vector<std::vector<Term>>& rows, std::vector<double> gaps,
-          std::vector<std::unique_ptr<contact::ContactLaw>> laws);
+          std::vector<std::unique_ptr<links::LinkLaw>> laws);
   explicit LinkSet(Index dofs = 0) : LinkSet(dofs, std::vector<Link>{}) {}
 
   Index size() const { return connectivity_.rows(); }                // rows
@@ -69,8 +69,8 @@ class LinkSet {
   void anchor_friction_at_rest(const Vector& force);
 
   // The normal law of a link (for a link with friction, the one inside it).
-  const contact::ContactLaw& law(Index link) const;
-  const contact::CoulombFriction* friction(Index link) const {
+  const links::LinkLaw& law(Index link) const;
+  const links::CoulombFriction* friction(Index link) const {
     return links_[static_cast<std::size_t>(link)].friction.get();
   }
 
@@ -87,4 +87,4 @@ class LinkSet {
   Vector gaps_;
 };
 
-}  // namespace pound
+}  // namespace pound::integrators

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace pound {
+namespace pound::integrators {
 namespace {
 
 // The fused vector passes of a step, as functions so the restrict qualifiers on their
@@ -278,4 +278,4 @@ StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double
   return result;
 }
 
-}  // namespace pound
+}  // namespace pound::integrators

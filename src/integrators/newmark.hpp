@@ -14,7 +14,7 @@
 
 #include "integrators/integrator.hpp"
 
-namespace pound {
+namespace pound::integrators {
 
 //
 // With alpha_m, alpha_f the same step is the generalised-alpha family (Chung & Hulbert 1993):
@@ -85,4 +85,4 @@ class Newmark final : public Integrator {
   Vector link_offset_, link_offset_rate_, link_offset_acceleration_;
 };
 
-}  // namespace pound
+}  // namespace pound::integrators

@@ -10,7 +10,7 @@
 #include "core/types.hpp"
 #include "integrators/link_set.hpp"
 
-namespace pound {
+namespace pound::integrators {
 
 // A factored matrix of the linear part.
 class LinearSolver {
@@ -79,4 +79,4 @@ class SecondOrderSystem {
   const LinkSet& links() const { return const_cast<SecondOrderSystem*>(this)->links(); }
 };
 
-}  // namespace pound
+}  // namespace pound::integrators

@@ -9,7 +9,7 @@
 
 #include "core/errors.hpp"
 
-namespace pound {
+namespace pound::integrators {
 
 TransientAnalysis::TransientAnalysis(SecondOrderSystem& system, Integrator& integrator,
                                      TransientSettings settings)
@@ -218,4 +218,4 @@ void TransientAnalysis::run_adaptive(State& state, const StepObserver& observer)
   if (stats.steps == 0) stats.smallest_step = 0.0;
 }
 
-}  // namespace pound
+}  // namespace pound::integrators

@@ -8,7 +8,7 @@
 
 #include "integrators/integrator.hpp"
 
-namespace pound {
+namespace pound::integrators {
 
 // Adaptive time stepping for the implicit integrators. Each step's local error is estimated
 // from the change of acceleration, e = dt^2/12 |a_{n+1} - a_n| (the trapezoidal rule's, as in
@@ -69,4 +69,4 @@ class TransientAnalysis {
   State next_;
 };
 
-}  // namespace pound
+}  // namespace pound::integrators

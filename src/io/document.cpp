@@ -50,7 +50,8 @@ Document& Document::set(const std::string& key, const std::vector<Document>& ite
 }
 Document& Document::set(const std::string& key, const std::vector<double>& values) {
   auto array = nlohmann::ordered_json::array();
-  for (double value : values) array.push_back(std::isfinite(value) ? nlohmann::ordered_json(value) : nullptr);
+  for (double value : values)
+    array.push_back(std::isfinite(value) ? nlohmann::ordered_json(value) : nullptr);
   impl_->json[key] = std::move(array);
   return *this;
 }

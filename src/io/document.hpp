@@ -1,5 +1,5 @@
 #pragma once
-// An ordered JSON object built by code that must not know JSON (report/, app/): keys keep the
+// An ordered JSON object built by code that must not know JSON (verification/, app/): keys keep the
 // order they were set in, numbers print in full precision, NaN/Inf print as null.
 #include <memory>
 #include <string>

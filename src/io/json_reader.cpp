@@ -372,13 +372,11 @@ JsonValue JsonObject::at(std::string_view key) {
   throw InputError(value_.file(), child_path(path(), key), "required field is missing");
 }
 
-std::string JsonObject::one_of(std::string_view key,
-                               const std::vector<std::string>& options) {
+std::string JsonObject::one_of(std::string_view key, const std::vector<std::string>& options) {
   return at(key).as_one_of(options);
 }
 
-std::string JsonObject::one_of(std::string_view key,
-                               const std::vector<std::string>& options,
+std::string JsonObject::one_of(std::string_view key, const std::vector<std::string>& options,
                                std::string_view fallback) {
   const std::optional<JsonValue> value = find(key);
   return value ? value->as_one_of(options) : std::string(fallback);

@@ -331,7 +331,9 @@ std::array<double, 2> read_pair(const JsonValue& value) {
 }
 
 // Node ids and node-set names ("block.bottom").
-std::vector<std::string> read_node_list(const JsonValue& value) { return read_names(value, "node", 1); }
+std::vector<std::string> read_node_list(const JsonValue& value) {
+  return read_names(value, "node", 1);
+}
 
 builder::SurfaceSpec read_surface(JsonObject& object, int index, UniqueNames& ids) {
   builder::SurfaceSpec surface;
@@ -365,7 +367,8 @@ builder::ContactSpec read_contact(JsonObject& object, int index, UniqueNames& id
 builder::BlockSpec read_block(JsonObject& object, UniqueNames& ids) {
   builder::BlockSpec block;
   block.id = read_unique_id(object, ids);
-  if (const std::optional<JsonValue> origin = object.find("origin")) block.origin = read_pair(*origin);
+  if (const std::optional<JsonValue> origin = object.find("origin"))
+    block.origin = read_pair(*origin);
   block.width = object.required<double>("width", positive);
   block.height = object.required<double>("height", positive);
   const std::vector<JsonValue> counts = object.at("elements").elements(2, 2);
@@ -686,9 +689,10 @@ AnalysisSpec read_analysis(JsonObject& object) {
       object.one_of("initial_state", {"unloaded", "static"}, "unloaded") == "static";
   if (const std::optional<JsonValue> adaptive = object.find("adaptive")) {
     if (analysis.integrator.type == "central_difference")
-      adaptive->fail("adaptive stepping is for the implicit integrators; central difference "
-                     "takes its stable step (\"time_step\": \"auto\")");
-    AdaptiveStepping settings;
+      adaptive->fail(
+          "adaptive stepping is for the implicit integrators; central difference "
+          "takes its stable step (\"time_step\": \"auto\")");
+    integrators::AdaptiveStepping settings;
     if (adaptive->json().is_boolean()) {
       if (adaptive->as<bool>()) analysis.adaptive = settings;
     } else {

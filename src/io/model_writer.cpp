@@ -301,9 +301,7 @@ Json girder_bridge_json(const builder::GirderBridgeSpec& bridge) {
 
 // All generators in the order of the file's "generators" array, which each kind remembers as
 // an index (a spec made in code may leave the rod pairs' indices out: then they come first).
-Json pair_json(const std::array<double, 2>& pair) {
-  return std::vector<double>{pair[0], pair[1]};
-}
+Json pair_json(const std::array<double, 2>& pair) { return std::vector<double>{pair[0], pair[1]}; }
 
 Json block_json(const builder::BlockSpec& block) {
   Json json;
@@ -354,9 +352,8 @@ Json contact_json(const builder::ContactSpec& contact) {
 Json generators_json(const ModelSpec& spec) {
   std::vector<std::pair<int, Json>> generators;
   for (std::size_t k = 0; k < spec.rod_pairs.size(); ++k) {
-    const int index = k < spec.rod_pair_generator_index.size()
-                          ? spec.rod_pair_generator_index[k]
-                          : static_cast<int>(k);
+    const int index = k < spec.rod_pair_generator_index.size() ? spec.rod_pair_generator_index[k]
+                                                               : static_cast<int>(k);
     generators.emplace_back(index, rod_pair_json(spec.rod_pairs[k]));
   }
   for (const builder::AdjacentBuildingsSpec& pair : spec.building_pairs)

@@ -138,7 +138,8 @@ GroundKinematics::GroundKinematics(const GroundMotion& motion, double delay)
   displacement_.assign(a.size(), 0.0);
   for (std::size_t k = 1; k < a.size(); ++k) {
     velocity_[k] = velocity_[k - 1] + 0.5 * dt * (a[k - 1] + a[k]);
-    displacement_[k] = displacement_[k - 1] + dt * velocity_[k - 1] + dt * dt * (a[k - 1] / 3.0 + a[k] / 6.0);
+    displacement_[k] =
+        displacement_[k - 1] + dt * velocity_[k - 1] + dt * dt * (a[k - 1] / 3.0 + a[k] / 6.0);
   }
 }
 
@@ -155,8 +156,9 @@ GroundState GroundKinematics::at(double time) const {
   const double tau = t - static_cast<double>(k) * dt;
   const double a0 = motion_.acceleration[k], a1 = motion_.acceleration[k + 1];
   const double slope = (a1 - a0) / dt;
-  return {a0 + slope * tau, velocity_[k] + a0 * tau + 0.5 * slope * tau * tau,
-          displacement_[k] + velocity_[k] * tau + 0.5 * a0 * tau * tau + slope * tau * tau * tau / 6.0};
+  return {
+      a0 + slope * tau, velocity_[k] + a0 * tau + 0.5 * slope * tau * tau,
+      displacement_[k] + velocity_[k] * tau + 0.5 * a0 * tau * tau + slope * tau * tau * tau / 6.0};
 }
 
 double GroundMotion::peak() const {

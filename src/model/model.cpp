@@ -10,7 +10,9 @@ double Model::length(Index node_i, Index node_j) const {
   return std::hypot(b[0] - a[0], dimension == 2 ? b[1] - a[1] : 0.0);
 }
 
-double Model::element_length(const Truss& truss) const { return length(truss.node_i, truss.node_j); }
+double Model::element_length(const Truss& truss) const {
+  return length(truss.node_i, truss.node_j);
+}
 
 DofMap::DofMap(const Model& model) : dofs_per_node_(model.dofs_per_node()) {
   equations_.assign(model.nodes.size() * static_cast<std::size_t>(dofs_per_node_), 0);
@@ -19,10 +21,12 @@ DofMap::DofMap(const Model& model) : dofs_per_node_(model.dofs_per_node()) {
   if (dofs_per_node_ == 3) {
     std::vector<bool> turns(model.nodes.size(), false);
     for (const Beam& beam : model.beams)
-      turns[static_cast<std::size_t>(beam.node_i)] = turns[static_cast<std::size_t>(beam.node_j)] = true;
+      turns[static_cast<std::size_t>(beam.node_i)] = turns[static_cast<std::size_t>(beam.node_j)] =
+          true;
     for (const Link& link : model.links)
       if (link.rotational)
-        turns[static_cast<std::size_t>(link.node_i)] = turns[static_cast<std::size_t>(link.node_j)] = true;
+        turns[static_cast<std::size_t>(link.node_i)] =
+            turns[static_cast<std::size_t>(link.node_j)] = true;
     for (std::size_t node = 0; node < turns.size(); ++node)
       if (!turns[node]) equations_[node * 3 + 2] = -1;
   }

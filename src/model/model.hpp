@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "contact/contact_law.hpp"
-#include "contact/link_context.hpp"
 #include "core/types.hpp"
+#include "links/link_context.hpp"
+#include "links/link_law.hpp"
 #include "model/ground_motion.hpp"
 
 namespace pound::model {
@@ -113,7 +113,7 @@ struct SupportExcitation {
 // Makes a link's law once the assembled model can tell the law about the bodies it joins
 // (masses and stiffnesses at the two ends, for automatic numbers). Throws InputError when the
 // model cannot supply what the law needs.
-using LawFactory = std::function<std::unique_ptr<contact::ContactLaw>(const contact::LinkContext&)>;
+using LawFactory = std::function<std::unique_ptr<links::LinkLaw>(const links::LinkContext&)>;
 
 // Contact link between node i and node j along the unit axis n (from i towards j):
 // penetration delta = (u_i - u_j) . n - gap.

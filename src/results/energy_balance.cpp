@@ -6,15 +6,15 @@
 namespace pound::results {
 
 double EnergyTerms::created_fraction() const {
-  const double largest = std::max({std::abs(input), kinetic, strain, std::abs(damping),
-                                   std::abs(links), initial});
+  const double largest =
+      std::max({std::abs(input), kinetic, strain, std::abs(damping), std::abs(links), initial});
   const double residual = kinetic + strain + damping + links - input - initial;
   return largest > 0.0 ? residual / largest : 0.0;
 }
 
 double EnergyTerms::balance_error() const { return std::abs(created_fraction()); }
 
-void EnergyBalance::record(const State& state) {
+void EnergyBalance::record(const integrators::State& state) {
   const Index n = system_.size();
   external_ = Vector::Zero(n);
   if (system_.has_external_force()) system_.external_force(state.time, external_);

@@ -3,10 +3,11 @@
 //   kinetic + strain + damping + links = input + (kinetic + strain at the start)
 // kinetic 1/2 v^T M v, strain 1/2 u^T K u of the linear elements, damping sum du^T C v_avg,
 // links sum F_avg . B du over every link row (impact, spring and friction work on the
-// structure, elastic or dissipated; the same as F d(delta) unless supports move the links), input sum du^T f_avg with f = loads - M iota a_g (relative formulation). Work
-// terms use step averages, which makes the balance exact for the trapezoidal rule (Newmark
-// beta = 1/4, gamma = 1/2) up to the Newton tolerance, so a large error means a step was not
-// resolved (or another integrator's own dissipation).
+// structure, elastic or dissipated; the same as F d(delta) unless supports move the links), input
+// sum du^T f_avg with f = loads - M iota a_g (relative formulation). Work terms use step averages,
+// which makes the balance exact for the trapezoidal rule (Newmark beta = 1/4, gamma = 1/2) up to
+// the Newton tolerance, so a large error means a step was not resolved (or another integrator's own
+// dissipation).
 #include "core/types.hpp"
 #include "integrators/integrator.hpp"
 #include "integrators/second_order_system.hpp"
@@ -33,18 +34,18 @@ inline constexpr double kEnergyGrowthLimit = 0.10;
 
 class EnergyBalance {
  public:
-  explicit EnergyBalance(const SecondOrderSystem& system) : system_(system) {}
-  void record(const State& state);
+  explicit EnergyBalance(const integrators::SecondOrderSystem& system) : system_(system) {}
+  void record(const integrators::State& state);
   const EnergyTerms& terms() const { return terms_; }
   // The largest balance error seen over the run (not only at the end).
   double worst_balance_error() const { return worst_; }
 
  private:
-  const SecondOrderSystem& system_;
+  const integrators::SecondOrderSystem& system_;
   EnergyTerms terms_;
   double worst_ = 0.0;
   bool started_ = false;
-  State previous_;
+  integrators::State previous_;
   Vector previous_external_, external_, work_, average_;
 };
 

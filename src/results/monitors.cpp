@@ -8,7 +8,7 @@ namespace {
 double value_at(const Vector& v, Index equation) { return equation < 0 ? 0.0 : v[equation]; }
 }  // namespace
 
-void DriftMonitors::record(const State& state) {
+void DriftMonitors::record(const integrators::State& state) {
   for (std::size_t k = 0; k < equations_.size(); ++k) {
     const double drift = std::abs(value_at(state.displacement, equations_[k].second) -
                                   value_at(state.displacement, equations_[k].first));
@@ -16,15 +16,16 @@ void DriftMonitors::record(const State& state) {
   }
 }
 
-void JointMonitors::record(const State& state) {
+void JointMonitors::record(const integrators::State& state) {
   for (std::size_t k = 0; k < joints_.size(); ++k) {
     const Where& w = joints_[k];
     const double closing = state.link_penetration[w.link_row] + w.gap;
     JointPeak& p = peaks_[k];
     p.peak_closing = std::max(p.peak_closing, closing);
     p.peak_opening = std::max(p.peak_opening, -closing);
-    p.peak_seat_movement = std::max(p.peak_seat_movement, std::abs(value_at(state.displacement, w.girder_x) -
-                                                                   value_at(state.displacement, w.seat_x)));
+    p.peak_seat_movement =
+        std::max(p.peak_seat_movement, std::abs(value_at(state.displacement, w.girder_x) -
+                                                value_at(state.displacement, w.seat_x)));
   }
 }
 

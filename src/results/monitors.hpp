@@ -20,7 +20,7 @@ class DriftMonitors {
   // For each monitor: x equations of its bottom and top node (-1 where fixed).
   explicit DriftMonitors(std::vector<std::pair<Index, Index>> equations)
       : equations_(std::move(equations)), peaks_(equations_.size()) {}
-  void record(const State& state);
+  void record(const integrators::State& state);
   const std::vector<DriftPeak>& peaks() const { return peaks_; }
 
  private:
@@ -37,12 +37,13 @@ struct JointPeak {
 class JointMonitors {
  public:
   struct Where {
-    Index link_row;   // the pounding link's normal row
+    Index link_row;  // the pounding link's normal row
     double gap;
     Index girder_x, seat_x;  // equations, -1 where fixed
   };
-  explicit JointMonitors(std::vector<Where> joints) : joints_(std::move(joints)), peaks_(joints_.size()) {}
-  void record(const State& state);
+  explicit JointMonitors(std::vector<Where> joints)
+      : joints_(std::move(joints)), peaks_(joints_.size()) {}
+  void record(const integrators::State& state);
   const std::vector<JointPeak>& peaks() const { return peaks_; }
 
  private:

@@ -19,7 +19,7 @@ LinkRecorder::LinkRecorder(std::string file, std::vector<LinkRows> links,
   table_.values.resize(table_.columns.size());
 }
 
-void LinkRecorder::record(const State& state) {
+void LinkRecorder::record(const integrators::State& state) {
   std::size_t column = 0;
   table_.values[column++].push_back(state.time);
   for (const LinkRows& link : links_) {
@@ -43,7 +43,7 @@ NodeRecorder::NodeRecorder(std::string file, std::vector<std::vector<Index>> equ
   table_.values.resize(table_.columns.size());
 }
 
-void NodeRecorder::record(const State& state) {
+void NodeRecorder::record(const integrators::State& state) {
   std::size_t column = 0;
   table_.values[column++].push_back(state.time);
   for (const auto& node : equations_)
@@ -52,7 +52,7 @@ void NodeRecorder::record(const State& state) {
         table_.values[column++].push_back(equation < 0 ? 0.0 : (*quantity)[equation]);
 }
 
-void LinkSummaries::record(const State& state) {
+void LinkSummaries::record(const integrators::State& state) {
   for (std::size_t k = 0; k < summaries_.size(); ++k) {
     LinkSummary& s = summaries_[k];
     const Index link = rows_[k];

@@ -12,7 +12,7 @@ namespace pound::results {
 class Recorder {
  public:
   virtual ~Recorder() = default;
-  virtual void record(const State& state) = 0;
+  virtual void record(const integrators::State& state) = 0;
   virtual const Table& table() const = 0;
   virtual const std::string& file() const = 0;
 };
@@ -29,7 +29,7 @@ struct LinkRows {
 class LinkRecorder final : public Recorder {
  public:
   LinkRecorder(std::string file, std::vector<LinkRows> links, const std::vector<std::string>& ids);
-  void record(const State& state) override;
+  void record(const integrators::State& state) override;
   const Table& table() const override { return table_; }
   const std::string& file() const override { return file_; }
 
@@ -45,7 +45,7 @@ class NodeRecorder final : public Recorder {
   // equations[k][d]: equation of node k in direction d, or -1 where fixed.
   NodeRecorder(std::string file, std::vector<std::vector<Index>> equations,
                const std::vector<std::string>& ids);
-  void record(const State& state) override;
+  void record(const integrators::State& state) override;
   const Table& table() const override { return table_; }
   const std::string& file() const override { return file_; }
 
@@ -57,29 +57,29 @@ class NodeRecorder final : public Recorder {
 
 // Pounding summary of one link over the run.
 struct LinkSummary {
-  int impacts = 0;                  // engagements: open -> force (contact, or a taut restrainer)
-  double peak_force = 0.0;          // largest compression [F]
-  double peak_tension = 0.0;        // largest tension (restrainers, hooks) [F]
-  double peak_penetration = 0.0;    // [L]
-  double peak_opening = 0.0;        // largest -delta: how far the joint opened [L]
-  double impulse = 0.0;             // integral of F dt [F T]
-  double work = 0.0;                // integral of F d(delta) [F L]: energy left in or taken by
-                                    // the link; after separation, the energy it dissipated
-  double first_contact = -1.0;      // time of the first step in contact, -1 if never
-  double last_contact = -1.0;       // time of the last step in contact
+  int impacts = 0;                // engagements: open -> force (contact, or a taut restrainer)
+  double peak_force = 0.0;        // largest compression [F]
+  double peak_tension = 0.0;      // largest tension (restrainers, hooks) [F]
+  double peak_penetration = 0.0;  // [L]
+  double peak_opening = 0.0;      // largest -delta: how far the joint opened [L]
+  double impulse = 0.0;           // integral of F dt [F T]
+  double work = 0.0;              // integral of F d(delta) [F L]: energy left in or taken by
+                                  // the link; after separation, the energy it dissipated
+  double first_contact = -1.0;    // time of the first step in contact, -1 if never
+  double last_contact = -1.0;     // time of the last step in contact
 };
 
 class LinkSummaries {
  public:
   explicit LinkSummaries(std::vector<Index> normal_rows)
       : rows_(std::move(normal_rows)), summaries_(rows_.size()) {}
-  void record(const State& state);
+  void record(const integrators::State& state);
   const std::vector<LinkSummary>& summaries() const { return summaries_; }
 
  private:
   std::vector<Index> rows_;
   std::vector<LinkSummary> summaries_;
-  State previous_;
+  integrators::State previous_;
   bool started_ = false;
 };
 

@@ -156,12 +156,12 @@ TEST_F(Batch, UnderMpirunWithTwoRanksGivesTheThreadedResults) {
   // Open MPI leaks at exit (its operation tables and plugins, which LeakSanitizer reports in
   // the sanitizer build): leak checking is off for the ranks only. The threaded runs above and
   // the other tests keep it.
-  const std::string command =
-      fmt::format("ASAN_OPTIONS=detect_leaks=0 {} --oversubscribe --allow-run-as-root "
-                  "-x ASAN_OPTIONS -np 2 {} batch {} --out {} >{} 2>{}",
-                  shell_quoted(POUND_TEST_MPIRUN), shell_quoted(POUND_BINARY), shell_quoted(set),
-                  shell_quoted(path("ranks").string()), shell_quoted(path("mpi_out.txt").string()),
-                  shell_quoted(path("mpi_err.txt").string()));
+  const std::string command = fmt::format(
+      "ASAN_OPTIONS=detect_leaks=0 {} --oversubscribe --allow-run-as-root "
+      "-x ASAN_OPTIONS -np 2 {} batch {} --out {} >{} 2>{}",
+      shell_quoted(POUND_TEST_MPIRUN), shell_quoted(POUND_BINARY), shell_quoted(set),
+      shell_quoted(path("ranks").string()), shell_quoted(path("mpi_out.txt").string()),
+      shell_quoted(path("mpi_err.txt").string()));
   const int status = std::system(command.c_str());
   const std::string out = read_text(path("mpi_out.txt"));
   // mpirun passes on the highest exit code of its ranks: rank 0 reports the failed cases.

@@ -73,11 +73,12 @@ TEST_P(ExtremeCollision, LeavesWithTheElasticCollisionVelocities) {
   assembly::StructuralSystem system(built.model);
   builder::settle_time_step(built.analysis, built.model, system, "collision.json");
   auto integrator = builder::make_integrator(built.analysis);
-  TransientAnalysis analysis(system, *integrator, builder::make_transient_settings(built.analysis));
-  State state;
+  integrators::TransientAnalysis analysis(system, *integrator,
+                                          builder::make_transient_settings(built.analysis));
+  integrators::State state;
   state.velocity = system.initial_velocity(built.model);
   bool finite = true;
-  analysis.run(state, [&](const State& s, const StepResult&) {
+  analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
     finite = finite && s.velocity.allFinite() && s.displacement.allFinite();
   });
   ASSERT_TRUE(finite);

@@ -23,9 +23,10 @@ std::string cantilever(int elements, const std::string& mass, double dx, double 
     nodes += fmt::format("{}{{\"id\": \"n{}\", \"x\": {}, \"y\": {}}}", i ? ", " : "", i,
                          dx * kLength * i / elements, dy * kLength * i / elements);
   for (int e = 0; e < elements; ++e)
-    beams += fmt::format("{}{{\"id\": \"b{}\", \"type\": \"beam\", \"nodes\": [\"n{}\", \"n{}\"], "
-                         "\"material\": \"steel\", \"area\": {}, \"inertia\": {}, \"mass\": \"{}\"}}",
-                         e ? ", " : "", e, e, e + 1, kArea, kInertia, mass);
+    beams += fmt::format(
+        "{}{{\"id\": \"b{}\", \"type\": \"beam\", \"nodes\": [\"n{}\", \"n{}\"], "
+        "\"material\": \"steel\", \"area\": {}, \"inertia\": {}, \"mass\": \"{}\"}}",
+        e ? ", " : "", e, e, e + 1, kArea, kInertia, mass);
   return fmt::format(R"({{"dimension": 2, "nodes": [{}],
     "materials": [{{"id": "steel", "youngs_modulus": {}, "density": {}}}],
     "elements": [{}], "supports": [{{"node": "n0", "fix": ["x", "y", "rz"]}}],
@@ -45,7 +46,8 @@ struct CantileverFrequencies {
 CantileverFrequencies exact_cantilever() {
   const double m = kDensity * kArea;
   const double scale = std::sqrt(kE * kInertia / (m * std::pow(kLength, 4)));
-  return {1.875104068711961 * 1.875104068711961 * scale, 4.694091132974175 * 4.694091132974175 * scale,
+  return {1.875104068711961 * 1.875104068711961 * scale,
+          4.694091132974175 * 4.694091132974175 * scale,
           std::numbers::pi / 2 * std::sqrt(kE * kArea / (m * kLength * kLength))};
 }
 
@@ -59,7 +61,8 @@ double frequency_error(const assembly::Modes& modes, double exact) {
 TEST(Frame, ConsistentMassCantileverFrequencies) {
   const CantileverFrequencies exact = exact_cantilever();
   for (auto [dx, dy] : {std::pair{1.0, 0.0}, std::pair{0.0, 1.0}, std::pair{0.6, 0.8}}) {
-    const assembly::Modes modes = assembly::modal_analysis(system_of(cantilever(10, "consistent", dx, dy)));
+    const assembly::Modes modes =
+        assembly::modal_analysis(system_of(cantilever(10, "consistent", dx, dy)));
     const double first = std::abs(std::sqrt(modes.omega_squared[0]) / exact.bending_1 - 1.0);
     const double second = frequency_error(modes, exact.bending_2);
     const double axial = frequency_error(modes, exact.axial);
@@ -75,7 +78,8 @@ TEST(Frame, LumpedMassCantileverConverges) {
   const CantileverFrequencies exact = exact_cantilever();
   double previous = 1.0;
   for (int elements : {5, 10, 20}) {
-    const assembly::Modes modes = assembly::modal_analysis(system_of(cantilever(elements, "lumped", 1, 0)));
+    const assembly::Modes modes =
+        assembly::modal_analysis(system_of(cantilever(elements, "lumped", 1, 0)));
     const double error = std::abs(std::sqrt(modes.omega_squared[0]) / exact.bending_1 - 1.0);
     std::cout << elements << " lumped elements: first frequency error " << error << "\n";
     EXPECT_LT(error, previous);
@@ -115,8 +119,8 @@ TEST(Frame, PortalFrameWithRigidBeamHasTheShearBuildingStiffness) {
     "masses": [{{"node": "b", "mass": 1000}}, {{"node": "c", "mass": 1000}}],
     "supports": [{{"node": "a", "fix": ["x", "y", "rz"]}}, {{"node": "d", "fix": ["x", "y", "rz"]}}],
     "analysis": {{"time_step": 0.001, "duration": 1}}}})",
-                                       fmt::arg("h", h), fmt::arg("E", kE), fmt::arg("rigid", kE * 1e6),
-                                       fmt::arg("I", kInertia));
+                                       fmt::arg("h", h), fmt::arg("E", kE),
+                                       fmt::arg("rigid", kE * 1e6), fmt::arg("I", kInertia));
   const assembly::Modes modes = assembly::modal_analysis(system_of(text));
   const double expected = std::sqrt(24 * kE * kInertia / std::pow(h, 3) / 2000.0);
   const double error = std::sqrt(modes.omega_squared[0]) / expected - 1.0;
@@ -134,7 +138,8 @@ TEST(Frame, RayleighDampingMatchesTheRatioAtBothPeriods) {
   const std::vector<double> periods = assembly::natural_periods(system, 3);
   for (int mode : {0, 2}) {
     const double w = 2 * std::numbers::pi / periods[static_cast<std::size_t>(mode)];
-    const double ratio = system.damping().mass_coefficient / (2 * w) + system.damping().stiffness_coefficient * w / 2;
+    const double ratio = system.damping().mass_coefficient / (2 * w) +
+                         system.damping().stiffness_coefficient * w / 2;
     EXPECT_NEAR(ratio, 0.05, 1e-12) << "mode " << mode + 1;
   }
   EXPECT_TRUE(system.has_damping());

@@ -44,12 +44,13 @@ Slide run(const std::string& text) {
   const builder::BuiltModel built = builder::build(io::parse_model(text, "block.json"));
   assembly::StructuralSystem system(built.model);
   auto integrator = builder::make_integrator(built.analysis);
-  TransientAnalysis analysis(system, *integrator, builder::make_transient_settings(built.analysis));
+  integrators::TransientAnalysis analysis(system, *integrator,
+                                          builder::make_transient_settings(built.analysis));
   const Index x = system.dofs().equation(built.node_index.at("block"), 0);
   Slide slide;
-  State state;
+  integrators::State state;
   state.velocity = system.initial_velocity(built.model);
-  analysis.run(state, [&](const State& s, const StepResult&) {
+  analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
     slide.time.push_back(s.time);
     slide.position.push_back(s.displacement[x]);
     slide.velocity.push_back(s.velocity[x]);
@@ -60,7 +61,8 @@ Slide run(const std::string& text) {
 
 TEST(FrictionBlock, DeceleratesAtMuGAndStopsWhereTheClosedFormSays) {
   const Slide slide = run(block_model(0.0, kSpeed));
-  const double stop_time = kSpeed / (kMu * kGravity), stop_distance = kSpeed * kSpeed / (2 * kMu * kGravity);
+  const double stop_time = kSpeed / (kMu * kGravity),
+               stop_distance = kSpeed * kSpeed / (2 * kMu * kGravity);
   // Deceleration from the velocity between 0.05 s and 0.35 s (after the start-up transient).
   const auto at = [&](double t) { return static_cast<std::size_t>(std::lround(t / 1e-4)); };
   const double deceleration = (slide.velocity[at(0.05)] - slide.velocity[at(0.35)]) / 0.30;
@@ -70,7 +72,7 @@ TEST(FrictionBlock, DeceleratesAtMuGAndStopsWhereTheClosedFormSays) {
             << distance_error << ", final velocity " << slide.velocity.back() << "\n";
   EXPECT_LT(std::abs(deceleration_error), 1e-3);
   EXPECT_LT(std::abs(distance_error), 5e-3);
-  EXPECT_LT(std::abs(slide.velocity.back()), 1e-3);   // stuck, not creeping
+  EXPECT_LT(std::abs(slide.velocity.back()), 1e-3);  // stuck, not creeping
   EXPECT_GT(slide.time.back(), stop_time + 0.1);
   EXPECT_LT(std::abs(slide.tangential_force.back()), 1e-3 * kMu * kMass * kGravity);
 }
@@ -83,7 +85,6 @@ TEST(FrictionBlock, APushBelowTheFrictionLimitDoesNotMoveTheBlock) {
   EXPECT_NEAR(slide.position.back(), push / 1e7, 1e-6);
   EXPECT_NEAR(slide.tangential_force.back(), push, 1e-3 * push);
 }
-
 
 // The same closed form for an elastic block of quads (2 x 2 elements, 1 m x 0.5 m, E = 10 MPa)
 // sliding on a rigid floor: gravity as nodal loads (the lumped masses times g), the floor a
@@ -115,14 +116,15 @@ TEST(FrictionBlock, AnElasticBlockOfQuadsDeceleratesAtMuGToo) {
   builder::BuiltModel settled = built;
   builder::settle_time_step(settled.analysis, settled.model, system, "quads.json");
   auto integrator = builder::make_integrator(settled.analysis);
-  TransientAnalysis analysis(system, *integrator, builder::make_transient_settings(settled.analysis));
+  integrators::TransientAnalysis analysis(system, *integrator,
+                                          builder::make_transient_settings(settled.analysis));
   const Vector mass_vector = system.mass_matrix().diagonal();
   // Centroid velocity and position along x.
   std::vector<double> time, velocity, position;
-  State state;
+  integrators::State state;
   state.velocity = system.initial_velocity(built.model);
   state.displacement = assembly::static_equilibrium(system, 0.0).displacement;
-  analysis.run(state, [&](const State& s, const StepResult&) {
+  analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
     double momentum = 0.0, moment = 0.0, total = 0.0;
     for (Index node = 0; node < static_cast<Index>(built.model.nodes.size()); ++node)
       if (const Index x = system.dofs().equation(node, 0); x >= 0) {
@@ -145,9 +147,10 @@ TEST(FrictionBlock, AnElasticBlockOfQuadsDeceleratesAtMuGToo) {
   const double deceleration = -(count * stv - st * sv) / (count * stt - st * st);
   const double deceleration_error = deceleration / (mu * g) - 1.0;
   const double distance_error = position.back() / stop_distance - 1.0;
-  std::cout << fmt::format("quad block: deceleration error {:.2e}, stopping distance error {:.2e}, "
-                           "final velocity {:.2e} m/s (stops at {:.3f} s)\n",
-                           deceleration_error, distance_error, velocity.back(), stop_time);
+  std::cout << fmt::format(
+      "quad block: deceleration error {:.2e}, stopping distance error {:.2e}, "
+      "final velocity {:.2e} m/s (stops at {:.3f} s)\n",
+      deceleration_error, distance_error, velocity.back(), stop_time);
   // The block rocks a little on the penalty contact as it brakes (front nodes loaded more):
   // the mean deceleration is mu g within 0.5 %, the stopping distance within 2 %.
   EXPECT_LT(std::abs(deceleration_error), 0.005);

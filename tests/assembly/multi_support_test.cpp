@@ -19,7 +19,8 @@ model::GroundMotion el_centro() {
   io::RecordFormat format;
   format.format = "at2";
   model::GroundMotion motion = io::read_ground_motion(
-      POUND_SOURCE_DIR "/../shared/ground_motions/ImperialValley1940_ElCentroArray9_180_PEER2000.AT2",
+      POUND_SOURCE_DIR
+      "/../shared/ground_motions/ImperialValley1940_ElCentroArray9_180_PEER2000.AT2",
       format, 9.80665);
   motion.acceleration.resize(600);
   // From rest: a nonzero first sample is a jump at t = 0, which a delayed support meets as a ramp
@@ -40,10 +41,10 @@ Histories run(const std::string& text, double end_time) {
   auto integrator = builder::make_integrator(built.analysis);
   auto settings = builder::make_transient_settings(built.analysis);
   settings.end_time = end_time;
-  TransientAnalysis analysis(system, *integrator, settings);
+  integrators::TransientAnalysis analysis(system, *integrator, settings);
   Histories h;
-  State state;
-  analysis.run(state, [&](const State& s, const StepResult&) {
+  integrators::State state;
+  analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
     h.time.push_back(s.time);
     h.displacement.push_back(s.displacement);
     h.link_penetration.push_back(s.link_penetration);
@@ -73,7 +74,8 @@ TEST(MultiSupport, AllSupportsTogetherIsTheUniformExcitation) {
   const Histories moving = run(portal(R"({"record": "r.AT2", "supports": ["a0", "b0"]})"), 5.0);
   double difference = 0.0, peak = 0.0;
   for (std::size_t k = 0; k < uniform.displacement.size(); ++k) {
-    difference = std::max(difference, (uniform.displacement[k] - moving.displacement[k]).cwiseAbs().maxCoeff());
+    difference = std::max(difference,
+                          (uniform.displacement[k] - moving.displacement[k]).cwiseAbs().maxCoeff());
     peak = std::max(peak, uniform.displacement[k].cwiseAbs().maxCoeff());
   }
   std::cout << "largest difference " << difference << " of peak " << peak << "\n";
@@ -97,11 +99,13 @@ TEST(MultiSupport, ADelayedSupportShiftsTheResponse) {
   };
   const Histories now = run(with(R"({"record": "r.AT2"})"), 5.0);
   const Histories late = run(with(R"({"record": "r.AT2", "supports": ["ground"],
-                                      "wave_passage": {"apparent_velocity": 200, "origin": 0}})"), 5.5);
+                                      "wave_passage": {"apparent_velocity": 200, "origin": 0}})"),
+                             5.5);
   const std::size_t shift = 100;  // 100 m / 200 m/s = 0.5 s = 100 steps
   double difference = 0.0, peak = 0.0;
   for (std::size_t k = 0; k < now.displacement.size(); ++k) {
-    difference = std::max(difference, std::abs(now.displacement[k][0] - late.displacement[k + shift][0]));
+    difference =
+        std::max(difference, std::abs(now.displacement[k][0] - late.displacement[k + shift][0]));
     peak = std::max(peak, std::abs(now.displacement[k][0]));
   }
   for (std::size_t k = 0; k < shift; ++k) EXPECT_EQ(late.displacement[k][0], 0.0);

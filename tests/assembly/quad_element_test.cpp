@@ -20,8 +20,12 @@ namespace {
 constexpr double kE = 210000.0, kNu = 0.3, kThickness = 2.0, kDensity = 7.8e-9;
 
 model::Quad steel(bool plane_strain = false) {
-  return {.id = "q", .youngs_modulus = kE, .poisson_ratio = kNu, .thickness = kThickness,
-          .density = kDensity, .plane_strain = plane_strain};
+  return {.id = "q",
+          .youngs_modulus = kE,
+          .poisson_ratio = kNu,
+          .thickness = kThickness,
+          .density = kDensity,
+          .plane_strain = plane_strain};
 }
 
 const QuadCorners kDistorted{{{0.0, 0.0}, {2.2, 0.3}, {1.9, 1.7}, {-0.2, 1.2}}};
@@ -80,8 +84,8 @@ std::string patch_model(double sigma, bool plane_strain) {
   std::string nodes, elements;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
-      nodes += fmt::format("{}{{\"id\": \"n{}{}\", \"x\": {}, \"y\": {}}}", nodes.empty() ? "" : ",", i, j,
-                           x[i][j], y[i][j]);
+      nodes += fmt::format("{}{{\"id\": \"n{}{}\", \"x\": {}, \"y\": {}}}",
+                           nodes.empty() ? "" : ",", i, j, x[i][j], y[i][j]);
   for (int i = 0; i < 2; ++i)
     for (int j = 0; j < 2; ++j)
       elements += fmt::format(
@@ -122,8 +126,9 @@ TEST(QuadElement, PassesThePatchTestOnADistortedMesh) {
         if (const Index eq = system.dofs().equation(node, d); eq >= 0)
           worst = std::max(worst, std::abs(u[eq] - exact[d]) / (sigma / e_eff * 4.0));
     }
-    std::cout << fmt::format("patch test ({}): largest nodal error / largest displacement = {:.2e}\n",
-                             plane_strain ? "plane strain" : "plane stress", worst);
+    std::cout << fmt::format(
+        "patch test ({}): largest nodal error / largest displacement = {:.2e}\n",
+        plane_strain ? "plane strain" : "plane stress", worst);
     EXPECT_LT(worst, 1e-12);
   }
 }
@@ -156,8 +161,10 @@ TEST(QuadElement, AClockwiseOrInvertedQuadIsRefusedNamingIt) {
     builder::build(io::parse_model(text, "q.json"));
     FAIL() << "a clockwise quad was accepted";
   } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("/elements/0/nodes"), std::string::npos) << error.what();
-    EXPECT_NE(std::string(error.what()).find("counter-clockwise"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("/elements/0/nodes"), std::string::npos)
+        << error.what();
+    EXPECT_NE(std::string(error.what()).find("counter-clockwise"), std::string::npos)
+        << error.what();
   }
 }
 

@@ -30,11 +30,12 @@ double largest_opening(const std::string& law) {
   const builder::BuiltModel built = builder::build(io::parse_model(text, "cable.json"));
   assembly::StructuralSystem system(built.model);
   auto integrator = builder::make_integrator(built.analysis);
-  TransientAnalysis analysis(system, *integrator, builder::make_transient_settings(built.analysis));
-  State state;
+  integrators::TransientAnalysis analysis(system, *integrator,
+                                          builder::make_transient_settings(built.analysis));
+  integrators::State state;
   state.velocity = system.initial_velocity(built.model);
   double opening = 0.0;
-  analysis.run(state, [&](const State& s, const StepResult&) {
+  analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
     opening = std::max(opening, -s.link_penetration[0]);
   });
   return opening;
@@ -50,9 +51,9 @@ TEST(Restrainer, ElasticCableStretchesByVSqrtMOverK) {
 
 TEST(Restrainer, YieldingCableAbsorbsTheKineticEnergyPlastically) {
   const double yield = 1.0e6;  // below the elastic peak k v sqrt(m/k) = 1.26e6
-  const double opening = largest_opening(fmt::format(
-      R"({{"type": "restrainer", "stiffness": {}, "slack": {}, "yield_force": {}}})", kStiffness,
-      kSlack, yield));
+  const double opening = largest_opening(
+      fmt::format(R"({{"type": "restrainer", "stiffness": {}, "slack": {}, "yield_force": {}}})",
+                  kStiffness, kSlack, yield));
   // 1/2 m v^2 = 1/2 T_y^2 / k + T_y x_p
   const double energy = 0.5 * kMass * kSpeed * kSpeed;
   const double plastic = (energy - 0.5 * yield * yield / kStiffness) / yield;

@@ -22,7 +22,8 @@ model::GroundMotion el_centro() {
   io::RecordFormat format;
   format.format = "at2";
   model::GroundMotion motion = io::read_ground_motion(
-      POUND_SOURCE_DIR "/../shared/ground_motions/ImperialValley1940_ElCentroArray9_180_PEER2000.AT2",
+      POUND_SOURCE_DIR
+      "/../shared/ground_motions/ImperialValley1940_ElCentroArray9_180_PEER2000.AT2",
       format, 9.80665);
   motion.acceleration.resize(1000);  // the strong part, 10 s
   return motion;
@@ -38,13 +39,13 @@ std::vector<double> response(const std::string& text, const model::GroundMotion&
   auto integrator = builder::make_integrator(built.analysis);
   auto settings = builder::make_transient_settings(built.analysis);
   settings.time_step = dt;
-  TransientAnalysis analysis(system, *integrator, settings);
+  integrators::TransientAnalysis analysis(system, *integrator, settings);
   const Index x = system.dofs().equation(built.node_index.at(node), 0);
   const long per_sample = std::lround(motion.time_step / dt);
   std::vector<double> history;
   long step = 0;
-  State state;
-  analysis.run(state, [&](const State& s, const StepResult&) {
+  integrators::State state;
+  analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
     if (step++ % per_sample == 0) history.push_back(s.displacement[x]);
   });
   return history;
@@ -88,13 +89,21 @@ TEST(SeismicResponse, DampedFrameMatchesModalSuperposition) {
   const model::GroundMotion motion = el_centro();
   // A three-storey, one-bay frame (fixed bases, lumped floor masses) with Rayleigh damping;
   // Rayleigh damping is classical, so each mode is an independent SDOF.
-  std::string nodes = R"({"id": "a0", "x": 0, "y": 0}, {"id": "b0", "x": 6, "y": 0})", elements, masses;
+  std::string nodes = R"({"id": "a0", "x": 0, "y": 0}, {"id": "b0", "x": 6, "y": 0})", elements,
+              masses;
   for (int floor = 1; floor <= 3; ++floor) {
-    nodes += fmt::format(R"(, {{"id": "a{0}", "x": 0, "y": {1}}}, {{"id": "b{0}", "x": 6, "y": {1}}})", floor, 3.5 * floor);
+    nodes +=
+        fmt::format(R"(, {{"id": "a{0}", "x": 0, "y": {1}}}, {{"id": "b{0}", "x": 6, "y": {1}}})",
+                    floor, 3.5 * floor);
     for (const char* column : {"a", "b"})
-      elements += fmt::format(R"({{"id": "{0}c{1}", "type": "beam", "nodes": ["{0}{2}", "{0}{1}"], "material": "concrete", "area": 0.25, "inertia": 5.2e-3}}, )", column, floor, floor - 1);
-    elements += fmt::format(R"({{"id": "beam{0}", "type": "beam", "nodes": ["a{0}", "b{0}"], "material": "concrete", "area": 0.3, "inertia": 9e-3}}{1})", floor, floor < 3 ? ", " : "");
-    masses += fmt::format(R"({{"node": "a{0}", "mass": 3e4}}, {{"node": "b{0}", "mass": 3e4}}{1})", floor, floor < 3 ? ", " : "");
+      elements += fmt::format(
+          R"({{"id": "{0}c{1}", "type": "beam", "nodes": ["{0}{2}", "{0}{1}"], "material": "concrete", "area": 0.25, "inertia": 5.2e-3}}, )",
+          column, floor, floor - 1);
+    elements += fmt::format(
+        R"({{"id": "beam{0}", "type": "beam", "nodes": ["a{0}", "b{0}"], "material": "concrete", "area": 0.3, "inertia": 9e-3}}{1})",
+        floor, floor < 3 ? ", " : "");
+    masses += fmt::format(R"({{"node": "a{0}", "mass": 3e4}}, {{"node": "b{0}", "mass": 3e4}}{1})",
+                          floor, floor < 3 ? ", " : "");
   }
   const std::string text = fmt::format(R"({{"dimension": 2, "nodes": [{}],
     "materials": [{{"id": "concrete", "youngs_modulus": 3e10, "density": 0}}],
@@ -125,7 +134,8 @@ TEST(SeismicResponse, DampedFrameMatchesModalSuperposition) {
   const double coarse = relative_error(response(text, motion, "a3", 0.002), superposed);
   const double fine = relative_error(response(text, motion, "a3", 0.001), superposed);
   std::cout << modes.omega_squared.size() << " modes; roof max error / peak: dt = 0.002 -> "
-            << coarse << ", dt = 0.001 -> " << fine << ", order " << std::log2(coarse / fine) << "\n";
+            << coarse << ", dt = 0.001 -> " << fine << ", order " << std::log2(coarse / fine)
+            << "\n";
   EXPECT_LT(fine, 5e-3);
   EXPECT_NEAR(std::log2(coarse / fine), 2.0, 0.3);
 }

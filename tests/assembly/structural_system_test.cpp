@@ -11,8 +11,8 @@
 #include <string>
 
 #include "assembly/banded_ldlt.hpp"
-#include "contact/gap_spring.hpp"
 #include "core/errors.hpp"
+#include "links/gap_spring.hpp"
 
 namespace pound::assembly {
 namespace {
@@ -32,8 +32,8 @@ model::Link link(Index i, Index j, model::Coordinates axis, double gap = 0.0) {
           .node_j = j,
           .axis = axis,
           .gap = gap,
-          .make_law = [](const contact::LinkContext&) {
-            return std::make_unique<contact::GapSpring>(1.0);
+          .make_law = [](const links::LinkContext&) {
+            return std::make_unique<links::GapSpring>(1.0);
           }};
 }
 
@@ -190,7 +190,7 @@ TEST(StructuralSystem, LinkRowsCarryTheAxisWithOppositeSigns) {
   m.links = {link(0, 1, {0.6, 0.8}, 0.01), link(1, 2, {1.0, 0.0}), link(2, 0, {0.0, 1.0})};
   StructuralSystem system(m);
   ASSERT_EQ(system.size(), 4);
-  const LinkSet& links = system.links();
+  const integrators::LinkSet& links = system.links();
   ASSERT_EQ(links.size(), 3);
   Matrix expected(3, 4);
   expected << 0.6, 0.8, -0.6, -0.8,  // +n at i, -n at j

@@ -8,10 +8,10 @@
 #include <string>
 
 #include "assembly/structural_system.hpp"
-#include "contact/extended_penalty.hpp"
-#include "contact/gap_spring.hpp"
 #include "core/errors.hpp"
 #include "io/model_reader.hpp"
+#include "links/extended_penalty.hpp"
+#include "links/gap_spring.hpp"
 
 namespace pound::builder {
 namespace {
@@ -77,8 +77,8 @@ void expect_error(const std::string& json_patch, const std::string& where,
 }
 
 double law_stiffness(const model::Link& link) {
-  const auto law = link.make_law(contact::LinkContext{});
-  return dynamic_cast<const contact::GapSpring&>(*law).stiffness();
+  const auto law = link.make_law(links::LinkContext{});
+  return dynamic_cast<const links::GapSpring&>(*law).stiffness();
 }
 
 TEST(Build, UnchangedModelBuilds) {
@@ -334,11 +334,12 @@ TEST(BuildLaws, RestitutionWithoutAnyMassAtTheLinkIsAnError) {
 
 TEST(BuildLaws, ExtendedPenaltyBuildsItsNumbersFromTheModel) {
   const BuiltModel built = build(spec_of(patched(
-      kModel, R"([{"op": "replace", "path": "/links/0/law", "value": {"type": "extended_penalty"}}])")));
+      kModel,
+      R"([{"op": "replace", "path": "/links/0/law", "value": {"type": "extended_penalty"}}])")));
   assembly::StructuralSystem system(built.model);
-  const auto& law = dynamic_cast<const contact::ExtendedPenalty&>(system.links().law(0));
-  const contact::LinkContext context = system.link_context(built.model.links[0]);
-  const auto expected = contact::ExtendedPenalty::automatic(context, 1e-3, 1.0);
+  const auto& law = dynamic_cast<const links::ExtendedPenalty&>(system.links().law(0));
+  const links::LinkContext context = system.link_context(built.model.links[0]);
+  const auto expected = links::ExtendedPenalty::automatic(context, 1e-3, 1.0);
   EXPECT_DOUBLE_EQ(law.numbers().alpha0, expected.alpha0);
   EXPECT_DOUBLE_EQ(law.numbers().alpha1, expected.alpha1);
   EXPECT_DOUBLE_EQ(law.numbers().alpha2, expected.alpha2);

@@ -66,7 +66,8 @@ TEST(ContinuumScene, BlocksSurfacesAndContactsExpandAsDocumented) {
   EXPECT_EQ(node_to_segment, 3);
   // The built model: the node at y = 0.5 sits halfway along b's segment (1/3, 2/3).
   const BuiltModel built = build(io::parse_model(kTwoBlocks, "two.json"));
-  const model::Link& middle = built.model.links.at(static_cast<std::size_t>(built.link_index.at("c.a.2.2")));
+  const model::Link& middle =
+      built.model.links.at(static_cast<std::size_t>(built.link_index.at("c.a.2.2")));
   ASSERT_TRUE(middle.segment_end.has_value());
   EXPECT_NEAR(middle.segment_weight, 0.5, 1e-12);
   EXPECT_EQ(built.model.quads.size(), 8u + 6u);

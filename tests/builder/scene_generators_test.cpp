@@ -2,11 +2,11 @@
 // exactly as the same bridge without those links.
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
-#include <iostream>
-#include <Eigen/Eigenvalues>
 #include <fstream>
+#include <iostream>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -40,10 +40,12 @@ std::vector<Vector> run(const ModelSpec& spec) {
   auto integrator = make_integrator(built.analysis);
   auto settings = make_transient_settings(built.analysis);
   settings.end_time = 8.0;
-  TransientAnalysis analysis(system, *integrator, settings);
+  integrators::TransientAnalysis analysis(system, *integrator, settings);
   std::vector<Vector> history;
-  State state;
-  analysis.run(state, [&](const State& s, const StepResult&) { history.push_back(s.displacement); });
+  integrators::State state;
+  analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
+    history.push_back(s.displacement);
+  });
   return history;
 }
 
@@ -57,8 +59,10 @@ TEST(SceneGenerators, BridgeWithGapsTooWideToCloseEqualsTheGapFreeBridge) {
   const ModelSpec wide = io::parse_model(model.dump(), "bridge.json");
   // The same bridge expanded, without the pounding links.
   ModelSpec without = expand(wide);
-  const std::set<std::string> joints = {"bridge.joint1", "bridge.joint2", "bridge.a0.joint", "bridge.a1.joint"};
-  std::erase_if(without.links, [&joints](const LinkSpec& link) { return joints.count(link.id) > 0; });
+  const std::set<std::string> joints = {"bridge.joint1", "bridge.joint2", "bridge.a0.joint",
+                                        "bridge.a1.joint"};
+  std::erase_if(without.links,
+                [&joints](const LinkSpec& link) { return joints.count(link.id) > 0; });
   without.joint_monitors.clear();
   ASSERT_EQ(expand(wide).links.size() - without.links.size(), 4u);  // two joints, two abutments
   const std::vector<Vector> a = run(wide), b = run(without);
@@ -77,10 +81,10 @@ TEST(SceneGenerators, BuildingsMeetAtEveryFloorOfEither) {
   std::vector<std::string> links;
   for (const LinkSpec& link : spec.links) links.push_back(link.id);
   // Left floors at 3.5 k (k <= 5), right floors at 3 k, up to the lower roof at 17.5.
-  const std::vector<std::string> expected = {"pair.pounding.at3",  "pair.pounding.at3.5", "pair.pounding.at6",
-                                             "pair.pounding.at7",  "pair.pounding.at9",   "pair.pounding.at10.5",
-                                             "pair.pounding.at12", "pair.pounding.at14",  "pair.pounding.at15",
-                                             "pair.pounding.at17.5"};
+  const std::vector<std::string> expected = {
+      "pair.pounding.at3",  "pair.pounding.at3.5",  "pair.pounding.at6",  "pair.pounding.at7",
+      "pair.pounding.at9",  "pair.pounding.at10.5", "pair.pounding.at12", "pair.pounding.at14",
+      "pair.pounding.at15", "pair.pounding.at17.5"};
   EXPECT_EQ(links, expected);
   EXPECT_EQ(spec.drift_monitors.size(), 13u);
 }
@@ -93,9 +97,11 @@ TEST(SceneGenerators, CutColumnsKeepTheShearBuildingPeriods) {
   built.model.links.clear();
   const assembly::Modes modes = assembly::modal_analysis(assembly::StructuralSystem(built.model));
   std::vector<double> generated;
-  for (Index k = 0; k < modes.omega_squared.size(); ++k) generated.push_back(modes.omega_squared[k]);
+  for (Index k = 0; k < modes.omega_squared.size(); ++k)
+    generated.push_back(modes.omega_squared[k]);
   std::vector<double> expected;
-  for (const BuildingSpec* building : {&spec.building_pairs[0].left, &spec.building_pairs[0].right}) {
+  for (const BuildingSpec* building :
+       {&spec.building_pairs[0].left, &spec.building_pairs[0].right}) {
     const auto n = static_cast<Index>(building->storeys.size());
     Matrix k = Matrix::Zero(n, n), m = Matrix::Zero(n, n);
     for (Index s = 0; s < n; ++s) {

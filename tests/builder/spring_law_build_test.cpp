@@ -7,11 +7,11 @@
 #include <string>
 
 #include "builder/build.hpp"
-#include "contact/backfill.hpp"
-#include "contact/bilinear_spring.hpp"
-#include "contact/elastic_spring.hpp"
 #include "core/errors.hpp"
 #include "io/model_reader.hpp"
+#include "links/backfill.hpp"
+#include "links/bilinear_spring.hpp"
+#include "links/elastic_spring.hpp"
 
 namespace pound::builder {
 namespace {
@@ -33,9 +33,9 @@ BuiltModel built(const std::string& law, double gap = 0.0) {
 }
 
 // The law object the model's only link makes.
-std::unique_ptr<contact::ContactLaw> law_of(const BuiltModel& model) {
+std::unique_ptr<links::LinkLaw> law_of(const BuiltModel& model) {
   EXPECT_EQ(model.model.links.size(), 1u);
-  return model.model.links.at(0).make_law(contact::LinkContext{});
+  return model.model.links.at(0).make_law(links::LinkContext{});
 }
 
 // Reading or building the model must fail at `where` with a reason containing `part`.
@@ -54,7 +54,7 @@ void expect_error(const std::string& law, const std::string& where, const std::s
 
 TEST(SpringLawBuild, ElasticSpringBuilds) {
   const auto law = law_of(built(R"({"type": "elastic_spring", "stiffness": 2e7})"));
-  const auto& spring = dynamic_cast<const contact::ElasticSpring&>(*law);
+  const auto& spring = dynamic_cast<const links::ElasticSpring&>(*law);
   EXPECT_EQ(spring.stiffness(), 2e7);
   EXPECT_DOUBLE_EQ(law->set_trial({.penetration = -0.01}).force, -2e5);  // pulls too
 }
@@ -62,8 +62,8 @@ TEST(SpringLawBuild, ElasticSpringBuilds) {
 TEST(SpringLawBuild, BilinearSpringBuilds) {
   const auto law = law_of(built(R"({"type": "bilinear_spring", "stiffness": 2e7,
                                     "yield_force": 1e5, "hardening_ratio": 0.05})"));
-  ASSERT_NE(dynamic_cast<contact::BilinearSpring*>(law.get()), nullptr);
-  const contact::LawResponse yielded = law->set_trial({.penetration = -0.01});
+  ASSERT_NE(dynamic_cast<links::BilinearSpring*>(law.get()), nullptr);
+  const links::LawResponse yielded = law->set_trial({.penetration = -0.01});
   EXPECT_DOUBLE_EQ(yielded.force, -(0.05 * 2e7 * 0.01 + 0.95 * 1e5));
   EXPECT_DOUBLE_EQ(yielded.stiffness, 0.05 * 2e7);
 }
@@ -80,7 +80,7 @@ TEST(SpringLawBuild, BackfillBuildsBehindAnExpansionJoint) {
                                  0.05);
   EXPECT_EQ(model.model.links.at(0).gap, 0.05);
   const auto law = law_of(model);
-  const auto& soil = dynamic_cast<const contact::Backfill&>(*law);
+  const auto& soil = dynamic_cast<const links::Backfill&>(*law);
   EXPECT_NEAR(soil.envelope(0.085).force, 4.06e5, 1e-6);
   EXPECT_EQ(law->set_trial({.penetration = -0.01}).force, 0.0);
 }
@@ -114,8 +114,9 @@ TEST(SpringLawBuild, BackfillReachingItsUltimateForceElastically) {
   // F_ult / K = 0.1 >= delta_ult = 0.08: no hyperbola through (delta_ult, F_ult) softens.
   expect_error(R"({"type": "backfill", "initial_stiffness": 1e6, "ultimate_force": 1e5,
                    "ultimate_deformation": 0.08})",
-               "/links/0/law", "backfill: ultimate_force / initial_stiffness = 0.1 must be below "
-                               "ultimate_deformation = 0.08");
+               "/links/0/law",
+               "backfill: ultimate_force / initial_stiffness = 0.1 must be below "
+               "ultimate_deformation = 0.08");
 }
 
 }  // namespace

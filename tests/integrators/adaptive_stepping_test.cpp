@@ -6,9 +6,9 @@
 #include <iostream>
 #include <numbers>
 
-#include "contact/gap_spring.hpp"
 #include "integrators/newmark.hpp"
 #include "integrators/transient_analysis.hpp"
+#include "links/gap_spring.hpp"
 #include "support/oscillator.hpp"
 
 namespace pound {
@@ -29,19 +29,19 @@ struct WallImpact {
 // contact starts at t = 0.02 exactly, lasts pi sqrt(m/k), and the rebound is elastic.
 WallImpact wall_impact(double dt, bool adaptive) {
   const double mass = 1.0, wall_stiffness = 1.0e4, speed = 0.5, gap = 0.01;
-  std::vector<std::unique_ptr<contact::ContactLaw>> laws;
-  laws.push_back(std::make_unique<contact::GapSpring>(wall_stiffness));
-  LinkSet links(1, {{{0, 1.0}}}, {gap}, std::move(laws));
+  std::vector<std::unique_ptr<links::LinkLaw>> laws;
+  laws.push_back(std::make_unique<links::GapSpring>(wall_stiffness));
+  integrators::LinkSet links(1, {{{0, 1.0}}}, {gap}, std::move(laws));
   Oscillator system(mass, 0.0, 0.0, std::move(links));
-  Newmark newmark = Newmark::average_acceleration();
-  TransientSettings settings{.time_step = dt, .end_time = 0.1};
-  if (adaptive) settings.adaptive = AdaptiveStepping{.tolerance = 1e-5};
-  TransientAnalysis analysis(system, newmark, settings);
-  State state;
+  integrators::Newmark newmark = integrators::Newmark::average_acceleration();
+  integrators::TransientSettings settings{.time_step = dt, .end_time = 0.1};
+  if (adaptive) settings.adaptive = integrators::AdaptiveStepping{.tolerance = 1e-5};
+  integrators::TransientAnalysis analysis(system, newmark, settings);
+  integrators::State state;
   state.velocity = Vector::Constant(1, speed);
   WallImpact impact;
   double previous_time = 0.0, previous_force = 0.0;
-  analysis.run(state, [&](const State& s, const StepResult&) {
+  analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
     if (s.link_force[0] > 0) {
       // The contact spans from the last step without force to the first without it again.
       if (impact.first_contact < 0) impact.first_contact = previous_time;
@@ -96,17 +96,17 @@ TEST(AdaptiveStepping, LocatesTheContactInstantWhateverTheStep) {
 TEST(AdaptiveStepping, KeepsAFreeVibrationAccurateAndGrowsTheStep) {
   const double omega = 2.0 * kPi;
   Oscillator system(1.0, 0.0, omega * omega);
-  Newmark newmark = Newmark::average_acceleration();
-  TransientSettings settings{.time_step = 1e-3, .end_time = 5.0};
-  settings.adaptive = AdaptiveStepping{.tolerance = 1e-5, .max_time_step = 0.1};
-  TransientAnalysis analysis(system, newmark, settings);
-  State state;
+  integrators::Newmark newmark = integrators::Newmark::average_acceleration();
+  integrators::TransientSettings settings{.time_step = 1e-3, .end_time = 5.0};
+  settings.adaptive = integrators::AdaptiveStepping{.tolerance = 1e-5, .max_time_step = 0.1};
+  integrators::TransientAnalysis analysis(system, newmark, settings);
+  integrators::State state;
   state.velocity = Vector::Constant(1, omega);  // u = sin(w t)
   double worst = 0.0;
-  analysis.run(state, [&](const State& s, const StepResult&) {
+  analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
     worst = std::max(worst, std::abs(s.displacement[0] - std::sin(omega * s.time)));
   });
-  const TransientStatistics& stats = analysis.statistics();
+  const integrators::TransientStatistics& stats = analysis.statistics();
   std::cout << fmt::format(
       "free vibration: {} steps ({} rejected), dt {:.2e} .. {:.2e}, worst error {:.2e}\n",
       stats.steps, stats.rejected_steps, stats.smallest_step, stats.largest_step, worst);

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <iostream>
 
-#include "contact/extended_penalty.hpp"
 #include "integrators/transient_analysis.hpp"
+#include "links/extended_penalty.hpp"
 #include "support/oscillator.hpp"
 
 namespace pound {
@@ -18,24 +18,27 @@ using testing::Oscillator;
 
 TEST(CentralDifference, StableStepOfAnOscillatorIsTwoOverOmega) {
   Oscillator system(2.0, 0.0, 800.0);  // omega = 20
-  const double limit = stable_time_step(system, true);
+  const double limit = integrators::stable_time_step(system, true);
   std::cout << "stable step " << limit << ", exact 0.1\n";
   EXPECT_NEAR(limit, 0.1, 1e-10);
   // With damping the limit shrinks to (2 / w)(sqrt(1 + z^2) - z); z = 0.2 here.
   Oscillator damped(2.0, 2.0 * 0.2 * 20.0 * 2.0, 800.0);
-  EXPECT_NEAR(stable_time_step(damped, true), 0.1 * (std::sqrt(1.04) - 0.2), 1e-10);
+  EXPECT_NEAR(integrators::stable_time_step(damped, true), 0.1 * (std::sqrt(1.04) - 0.2), 1e-10);
 }
 
 // Below the limit a free vibration stays bounded; just above it grows without bound.
 TEST(CentralDifference, BoundedBelowTheLimitAndDivergesAbove) {
   for (const double factor : {0.99, 1.01}) {
     Oscillator system(2.0, 0.0, 800.0);
-    CentralDifference integrator;
-    TransientAnalysis analysis(system, integrator, {.time_step = factor * 0.1, .end_time = 60.0});
-    State state;
+    integrators::CentralDifference integrator;
+    integrators::TransientAnalysis analysis(system, integrator,
+                                            {.time_step = factor * 0.1, .end_time = 60.0});
+    integrators::State state;
     state.displacement = Vector::Constant(1, 1.0);
     double largest = 0.0;
-    analysis.run(state, [&](const State& s, const StepResult&) { largest = std::max(largest, std::abs(s.displacement[0])); });
+    analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
+      largest = std::max(largest, std::abs(s.displacement[0]));
+    });
     std::cout << factor << " x limit: largest |u| " << largest << "\n";
     if (factor < 1.0) {
       EXPECT_LT(largest, 20.0);
@@ -48,22 +51,24 @@ TEST(CentralDifference, BoundedBelowTheLimitAndDivergesAbove) {
 TEST(CentralDifference, ForcedDampedOscillatorConvergesAtSecondOrder) {
   auto error = [](double dt) {
     const double mass = 1.0, stiffness = 40.0, zeta = 0.05, omega = std::sqrt(stiffness / mass);
-    Oscillator system(mass, 2.0 * zeta * omega * mass, stiffness, LinkSet(1),
+    Oscillator system(mass, 2.0 * zeta * omega * mass, stiffness, integrators::LinkSet(1),
                       [](double t) { return 3.0 * std::sin(4.0 * t); });
-    CentralDifference integrator;
-    TransientAnalysis analysis(system, integrator, {.time_step = dt, .end_time = 4.0});
+    integrators::CentralDifference integrator;
+    integrators::TransientAnalysis analysis(system, integrator, {.time_step = dt, .end_time = 4.0});
     // Reference: the same problem with a tiny step (the closed form is in newmark_test.cpp).
-    CentralDifference fine_integrator;
-    Oscillator fine_system(mass, 2.0 * zeta * omega * mass, stiffness, LinkSet(1),
+    integrators::CentralDifference fine_integrator;
+    Oscillator fine_system(mass, 2.0 * zeta * omega * mass, stiffness, integrators::LinkSet(1),
                            [](double t) { return 3.0 * std::sin(4.0 * t); });
-    TransientAnalysis fine(fine_system, fine_integrator, {.time_step = dt / 64.0, .end_time = 4.0});
-    State a, b;
+    integrators::TransientAnalysis fine(fine_system, fine_integrator,
+                                        {.time_step = dt / 64.0, .end_time = 4.0});
+    integrators::State a, b;
     analysis.run(a);
     fine.run(b);
     return std::abs(a.displacement[0] - b.displacement[0]);
   };
   const double coarse = error(0.01), finer = error(0.005);
-  std::cout << "error " << coarse << " -> " << finer << ", order " << std::log2(coarse / finer) << "\n";
+  std::cout << "error " << coarse << " -> " << finer << ", order " << std::log2(coarse / finer)
+            << "\n";
   EXPECT_NEAR(std::log2(coarse / finer), 2.0, 0.15);
 }
 
@@ -73,11 +78,12 @@ TEST(CentralDifference, ContactActiveLimitFollowsSuzukiToiEquation4) {
   const double k1 = 100.0, k2 = 300.0, m1 = 2.0, m2 = 1.0;
   for (double ratio : {1.0, 10.0, 1000.0}) {
     const double alpha0 = ratio * k1;
-    std::vector<std::unique_ptr<contact::ContactLaw>> laws;
-    laws.push_back(std::make_unique<contact::ExtendedPenalty>(contact::ExtendedPenalty::Numbers{alpha0, 0.0, 0.0}));
+    std::vector<std::unique_ptr<links::LinkLaw>> laws;
+    laws.push_back(std::make_unique<links::ExtendedPenalty>(
+        links::ExtendedPenalty::Numbers{alpha0, 0.0, 0.0}));
     // A two-DOF system: masses m1, m2 on springs k1, k2 to ground, the link between them.
-    struct TwoMasses final : SecondOrderSystem {
-      TwoMasses(double k1_, double k2_, double m1_, double m2_, LinkSet l)
+    struct TwoMasses final : integrators::SecondOrderSystem {
+      TwoMasses(double k1_, double k2_, double m1_, double m2_, integrators::LinkSet l)
           : mass(Vector(2)), stiffness(Vector(2)), link_set(std::move(l)) {
         mass << m1_, m2_;
         stiffness << k1_, k2_;
@@ -86,20 +92,28 @@ TEST(CentralDifference, ContactActiveLimitFollowsSuzukiToiEquation4) {
       void multiply_mass(const Vector& x, Vector& y) const override { y = mass.cwiseProduct(x); }
       const Vector* lumped_mass() const override { return &mass; }
       bool has_damping() const override { return false; }
-      void multiply_damping(const Vector& x, Vector& y) const override { y = Vector::Zero(x.size()); }
-      void multiply_stiffness(const Vector& x, Vector& y) const override { y = stiffness.cwiseProduct(x); }
+      void multiply_damping(const Vector& x, Vector& y) const override {
+        y = Vector::Zero(x.size());
+      }
+      void multiply_stiffness(const Vector& x, Vector& y) const override {
+        y = stiffness.cwiseProduct(x);
+      }
       bool has_external_force() const override { return false; }
       void external_force(double, Vector& f) const override { f = Vector::Zero(2); }
-      std::unique_ptr<LinearSolver> factor(double, double, double) const override { return nullptr; }
-      LinkSet& links() override { return link_set; }
+      std::unique_ptr<integrators::LinearSolver> factor(double, double, double) const override {
+        return nullptr;
+      }
+      integrators::LinkSet& links() override { return link_set; }
       Vector mass, stiffness;
-      LinkSet link_set;
-    } system(k1, k2, m1, m2, LinkSet(2, {{{0, 1.0}, {1, -1.0}}}, {0.0}, std::move(laws)));
+      integrators::LinkSet link_set;
+    } system(k1, k2, m1, m2,
+             integrators::LinkSet(2, {{{0, 1.0}, {1, -1.0}}}, {0.0}, std::move(laws)));
     const double sum = (k1 + alpha0) / m1 + (k2 + alpha0) / m2;
     const double product = (k1 * k2 + alpha0 * (k1 + k2)) / (m1 * m2);
     const double larger = 0.5 * (sum + std::sqrt(sum * sum - 4.0 * product));
-    const double limit = stable_time_step(system, true), exact = 2.0 / std::sqrt(larger);
-    const double open = stable_time_step(system, false);
+    const double limit = integrators::stable_time_step(system, true),
+                 exact = 2.0 / std::sqrt(larger);
+    const double open = integrators::stable_time_step(system, false);
     std::cout << "alpha0 / k1 = " << ratio << ": stable step " << limit << ", eq. 4 gives " << exact
               << ", without contact " << open << "\n";
     EXPECT_NEAR(limit / exact, 1.0, 1e-8);

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "contact/gap_spring.hpp"
 #include "integrators/transient_analysis.hpp"
+#include "links/gap_spring.hpp"
 #include "support/oscillator.hpp"
 
 namespace pound {
@@ -21,14 +21,14 @@ constexpr double kPi = std::numbers::pi;
 TEST(Newmark, AverageAccelerationMatchesItsExactDiscreteSolution) {
   const double mass = 2.0, stiffness = 50.0, omega = std::sqrt(stiffness / mass), dt = 0.05;
   Oscillator system(mass, 0.0, stiffness);
-  Newmark newmark = Newmark::average_acceleration();
-  TransientAnalysis analysis(system, newmark, {.time_step = dt, .end_time = 10.0});
-  State state;
+  integrators::Newmark newmark = integrators::Newmark::average_acceleration();
+  integrators::TransientAnalysis analysis(system, newmark, {.time_step = dt, .end_time = 10.0});
+  integrators::State state;
   state.displacement = Vector::Constant(1, 1.0);
   state.velocity = Vector::Zero(1);
   const double discrete = 2.0 * std::atan(omega * dt / 2.0) / dt;
   double worst = 0.0;
-  analysis.run(state, [&](const State& s, const StepResult&) {
+  analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
     worst = std::max(worst, std::abs(s.displacement[0] - std::cos(discrete * s.time)));
   });
   std::cout << "max |u - cos(w~ t)| = " << worst << "\n";
@@ -37,11 +37,11 @@ TEST(Newmark, AverageAccelerationMatchesItsExactDiscreteSolution) {
 
 // Damped, harmonically forced oscillator against the closed-form response; the error must fall
 // as dt^2 (second order), measured between dt and dt/2.
-double forced_error(const Newmark& prototype, double dt) {
+double forced_error(const integrators::Newmark& prototype, double dt) {
   const double mass = 1.0, stiffness = 40.0, zeta = 0.05;
   const double omega = std::sqrt(stiffness / mass), damping = 2.0 * zeta * omega * mass;
   const double force_amplitude = 3.0, forcing = 4.0;
-  Oscillator system(mass, damping, stiffness, LinkSet(1),
+  Oscillator system(mass, damping, stiffness, integrators::LinkSet(1),
                     [&](double t) { return force_amplitude * std::sin(forcing * t); });
   // Steady state X sin(W t - phi) plus the free part fitted to u(0) = v(0) = 0.
   const double r = forcing / omega;
@@ -55,20 +55,21 @@ double forced_error(const Newmark& prototype, double dt) {
     return amplitude * std::sin(forcing * t - phase) +
            std::exp(-zeta * omega * t) * (a * std::cos(omega_d * t) + b * std::sin(omega_d * t));
   };
-  Newmark newmark = prototype;
-  TransientAnalysis analysis(system, newmark, {.time_step = dt, .end_time = 4.0});
-  State state;
+  integrators::Newmark newmark = prototype;
+  integrators::TransientAnalysis analysis(system, newmark, {.time_step = dt, .end_time = 4.0});
+  integrators::State state;
   double worst = 0.0;
-  analysis.run(state, [&](const State& s, const StepResult&) {
+  analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
     worst = std::max(worst, std::abs(s.displacement[0] - exact(s.time)));
   });
   return worst;
 }
 
 TEST(Newmark, ForcedDampedOscillatorConvergesAtSecondOrder) {
-  for (const Newmark& method : {Newmark::average_acceleration(), Newmark::linear_acceleration(),
-                                Newmark::hht(-0.1), Newmark::generalized_alpha(0.8),
-                                Newmark::generalized_alpha(0.0)}) {
+  for (const integrators::Newmark& method :
+       {integrators::Newmark::average_acceleration(), integrators::Newmark::linear_acceleration(),
+        integrators::Newmark::hht(-0.1), integrators::Newmark::generalized_alpha(0.8),
+        integrators::Newmark::generalized_alpha(0.0)}) {
     const double coarse = forced_error(method, 0.01), fine = forced_error(method, 0.005);
     const double order = std::log2(coarse / fine);
     std::cout << method.name() << ": error(dt=0.01) = " << coarse << ", error(dt=0.005) = " << fine
@@ -83,20 +84,25 @@ TEST(Newmark, ForcedDampedOscillatorConvergesAtSecondOrder) {
 // there, so u_k ~ (a + b k) rho^k ~ b k rho^k: the rate is that of u_k / k, steps 100 to 200.)
 TEST(Newmark, AlphaMethodsDampTheHighestModesAtTheirSpectralRadius) {
   struct Case {
-    Newmark method;
+    integrators::Newmark method;
     double radius;
   };
-  for (const Case& c : {Case{Newmark::generalized_alpha(0.5), 0.5}, Case{Newmark::generalized_alpha(0.8), 0.8},
-                        Case{Newmark::hht(-0.1), 0.9 / 1.1}, Case{Newmark::hht(-1.0 / 3.0), 0.5}}) {
+  for (const Case& c : {Case{integrators::Newmark::generalized_alpha(0.5), 0.5},
+                        Case{integrators::Newmark::generalized_alpha(0.8), 0.8},
+                        Case{integrators::Newmark::hht(-0.1), 0.9 / 1.1},
+                        Case{integrators::Newmark::hht(-1.0 / 3.0), 0.5}}) {
     Oscillator system(1.0, 0.0, 1.0e12);  // omega dt = 1e6 with dt = 1
-    Newmark newmark = c.method;
-    TransientAnalysis analysis(system, newmark, {.time_step = 1.0, .end_time = 200.0});
-    State state;
+    integrators::Newmark newmark = c.method;
+    integrators::TransientAnalysis analysis(system, newmark, {.time_step = 1.0, .end_time = 200.0});
+    integrators::State state;
     state.displacement = Vector::Constant(1, 1.0);
     std::vector<double> u;
-    analysis.run(state, [&](const State& s, const StepResult&) { u.push_back(std::abs(s.displacement[0])); });
+    analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
+      u.push_back(std::abs(s.displacement[0]));
+    });
     const double rate = std::pow((u[200] / 200.0) / (u[100] / 100.0), 1.0 / 100.0);
-    std::cout << newmark.name() << ": decay per step " << rate << ", spectral radius " << c.radius << "\n";
+    std::cout << newmark.name() << ": decay per step " << rate << ", spectral radius " << c.radius
+              << "\n";
     EXPECT_NEAR(rate / c.radius, 1.0, 0.01);
   }
 }
@@ -105,18 +111,18 @@ TEST(Newmark, AlphaMethodsDampTheHighestModesAtTheirSpectralRadius) {
 // linear oscillator, so the contact lasts pi sqrt(m/k) and the rebound is elastic (e = 1).
 TEST(Newmark, GapSpringAgainstRigidWallGivesHalfCycleContact) {
   const double mass = 1.0, wall_stiffness = 1.0e4, speed = 0.5, gap = 0.01;
-  std::vector<std::unique_ptr<contact::ContactLaw>> laws;
-  laws.push_back(std::make_unique<contact::GapSpring>(wall_stiffness));
-  LinkSet links(1, {{{0, 1.0}}}, {gap}, std::move(laws));
+  std::vector<std::unique_ptr<links::LinkLaw>> laws;
+  laws.push_back(std::make_unique<links::GapSpring>(wall_stiffness));
+  integrators::LinkSet links(1, {{{0, 1.0}}}, {gap}, std::move(laws));
   Oscillator system(mass, 0.0, 0.0, std::move(links));
   const double contact_time = kPi * std::sqrt(mass / wall_stiffness);
   const double dt = contact_time / 2000.0;
-  Newmark newmark = Newmark::average_acceleration();
-  TransientAnalysis analysis(system, newmark, {.time_step = dt, .end_time = 0.1});
-  State state;
+  integrators::Newmark newmark = integrators::Newmark::average_acceleration();
+  integrators::TransientAnalysis analysis(system, newmark, {.time_step = dt, .end_time = 0.1});
+  integrators::State state;
   state.velocity = Vector::Constant(1, speed);
   double first_contact = -1, last_contact = -1, peak_force = 0;
-  analysis.run(state, [&](const State& s, const StepResult&) {
+  analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
     if (s.link_force[0] > 0) {
       if (first_contact < 0) first_contact = s.time;
       last_contact = s.time;

@@ -17,14 +17,14 @@ namespace {
 // F = k delta^3 in contact, but reporting a zero tangent: Newton becomes the fixed-point
 // iteration F <- F(delta_lin - G F), which converges only while |3 k delta^2 G| < 1, and
 // G = beta dt^2 / m shrinks with the step. So large steps fail and cut steps succeed.
-class CubicWithoutTangent final : public contact::ContactLaw {
+class CubicWithoutTangent final : public links::LinkLaw {
  public:
   explicit CubicWithoutTangent(double stiffness) : stiffness_(stiffness) {}
   std::string name() const override { return "cubic_without_tangent"; }
-  std::unique_ptr<contact::ContactLaw> clone() const override {
+  std::unique_ptr<links::LinkLaw> clone() const override {
     return std::make_unique<CubicWithoutTangent>(*this);
   }
-  contact::LawResponse set_trial(const contact::LinkKinematics& trial) override {
+  links::LawResponse set_trial(const links::LinkKinematics& trial) override {
     const double delta = std::max(0.0, trial.penetration);
     return {.force = stiffness_ * delta * delta * delta};
   }
@@ -37,13 +37,11 @@ class CubicWithoutTangent final : public contact::ContactLaw {
 };
 
 // A law whose force is NaN once it is in contact (a model gone wrong).
-class Poisoned final : public contact::ContactLaw {
+class Poisoned final : public links::LinkLaw {
  public:
   std::string name() const override { return "poisoned"; }
-  std::unique_ptr<contact::ContactLaw> clone() const override {
-    return std::make_unique<Poisoned>();
-  }
-  contact::LawResponse set_trial(const contact::LinkKinematics& trial) override {
+  std::unique_ptr<links::LinkLaw> clone() const override { return std::make_unique<Poisoned>(); }
+  links::LawResponse set_trial(const links::LinkKinematics& trial) override {
     if (trial.penetration <= 0.0) return {};
     return {.force = std::numeric_limits<double>::quiet_NaN(), .stiffness = 1.0};
   }
@@ -52,30 +50,32 @@ class Poisoned final : public contact::ContactLaw {
   bool in_contact() const override { return false; }
 };
 
-testing::Oscillator mass_against_wall(std::unique_ptr<contact::ContactLaw> law) {
-  std::vector<std::unique_ptr<contact::ContactLaw>> laws;
+testing::Oscillator mass_against_wall(std::unique_ptr<links::LinkLaw> law) {
+  std::vector<std::unique_ptr<links::LinkLaw>> laws;
   laws.push_back(std::move(law));
-  return testing::Oscillator(1.0, 0.0, 0.0, LinkSet(1, {{{0, 1.0}}}, {0.0}, std::move(laws)));
+  return testing::Oscillator(1.0, 0.0, 0.0,
+                             integrators::LinkSet(1, {{{0, 1.0}}}, {0.0}, std::move(laws)));
 }
 
 TEST(TransientAnalysis, CutsStepsThatDoNotConvergeAndFinishes) {
   auto system = mass_against_wall(std::make_unique<CubicWithoutTangent>(1.0e14));
-  Newmark newmark =
-      Newmark::average_acceleration({.relative_tolerance = 1e-10, .max_iterations = 30});
-  TransientAnalysis analysis(system, newmark,
-                             {.time_step = 1e-3, .end_time = 0.02, .max_step_cuts = 12});
-  State state;
+  integrators::Newmark newmark = integrators::Newmark::average_acceleration(
+      {.relative_tolerance = 1e-10, .max_iterations = 30});
+  integrators::TransientAnalysis analysis(
+      system, newmark, {.time_step = 1e-3, .end_time = 0.02, .max_step_cuts = 12});
+  integrators::State state;
   state.velocity = Vector::Constant(1, 1.0);
   // Every accepted step, cut or not, satisfied m a = -F; with gamma = 1/2 the velocity is the
   // trapezoidal integral of the acceleration, so the impulse of the recorded forces must equal
   // the momentum change to rounding.
   double impulse = 0.0, previous_time = 0.0, previous_force = 0.0, peak_force = 0.0;
-  const TransientStatistics stats = analysis.run(state, [&](const State& s, const StepResult&) {
-    impulse += 0.5 * (s.link_force[0] + previous_force) * (s.time - previous_time);
-    previous_time = s.time;
-    previous_force = s.link_force[0];
-    peak_force = std::max(peak_force, s.link_force[0]);
-  });
+  const integrators::TransientStatistics stats =
+      analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
+        impulse += 0.5 * (s.link_force[0] + previous_force) * (s.time - previous_time);
+        previous_time = s.time;
+        previous_force = s.link_force[0];
+        peak_force = std::max(peak_force, s.link_force[0]);
+      });
   const double momentum_error = std::abs((1.0 - state.velocity[0]) - impulse) / impulse;
   std::cout << "step cuts " << stats.step_cuts << ", steps " << stats.steps << ", impulse "
             << impulse << ", momentum error " << momentum_error << ", rebound velocity "
@@ -91,11 +91,11 @@ TEST(TransientAnalysis, CutsStepsThatDoNotConvergeAndFinishes) {
 
 TEST(TransientAnalysis, FailsLoudlyWithTimeAndReasonWhenCuttingIsNotEnough) {
   auto system = mass_against_wall(std::make_unique<CubicWithoutTangent>(1.0e14));
-  Newmark newmark =
-      Newmark::average_acceleration({.relative_tolerance = 1e-10, .max_iterations = 30});
-  TransientAnalysis analysis(system, newmark,
-                             {.time_step = 1e-3, .end_time = 0.02, .max_step_cuts = 0});
-  State state;
+  integrators::Newmark newmark = integrators::Newmark::average_acceleration(
+      {.relative_tolerance = 1e-10, .max_iterations = 30});
+  integrators::TransientAnalysis analysis(
+      system, newmark, {.time_step = 1e-3, .end_time = 0.02, .max_step_cuts = 0});
+  integrators::State state;
   state.velocity = Vector::Constant(1, 1.0);
   try {
     analysis.run(state);
@@ -110,10 +110,10 @@ TEST(TransientAnalysis, FailsLoudlyWithTimeAndReasonWhenCuttingIsNotEnough) {
 
 TEST(TransientAnalysis, NonFiniteForcesStopTheRun) {
   auto system = mass_against_wall(std::make_unique<Poisoned>());
-  Newmark newmark = Newmark::average_acceleration();
-  TransientAnalysis analysis(system, newmark,
-                             {.time_step = 0.01, .end_time = 1.0, .max_step_cuts = 3});
-  State state;
+  integrators::Newmark newmark = integrators::Newmark::average_acceleration();
+  integrators::TransientAnalysis analysis(system, newmark,
+                                          {.time_step = 0.01, .end_time = 1.0, .max_step_cuts = 3});
+  integrators::State state;
   state.velocity = Vector::Constant(1, 1.0);
   EXPECT_THROW(
       {
@@ -130,23 +130,24 @@ TEST(TransientAnalysis, NonFiniteForcesStopTheRun) {
 
 TEST(TransientAnalysis, StepLimitStopsARunawayRun) {
   testing::Oscillator system(1.0, 0.0, 1.0);
-  Newmark newmark = Newmark::average_acceleration();
-  TransientAnalysis analysis(system, newmark,
-                             {.time_step = 0.01, .end_time = 1.0, .max_steps = 10});
-  State state;
+  integrators::Newmark newmark = integrators::Newmark::average_acceleration();
+  integrators::TransientAnalysis analysis(system, newmark,
+                                          {.time_step = 0.01, .end_time = 1.0, .max_steps = 10});
+  integrators::State state;
   long recorded = 0;
-  EXPECT_THROW(analysis.run(state, [&](const State&, const StepResult&) { ++recorded; }),
+  EXPECT_THROW(analysis.run(state, [&](const integrators::State&,
+                                       const integrators::StepResult&) { ++recorded; }),
                SolveError);
   EXPECT_EQ(recorded, 11);  // the initial state and ten steps
 }
 
 TEST(TransientAnalysis, TimeLimitStopsARunawayRunWithTheTimeAndTheReason) {
   testing::Oscillator system(1.0, 0.0, 1.0);
-  Newmark newmark = Newmark::average_acceleration();
+  integrators::Newmark newmark = integrators::Newmark::average_acceleration();
   // 1e9 steps would take minutes; a limit of 20 ms stops it after a few thousand.
-  TransientAnalysis analysis(system, newmark,
-                             {.time_step = 1e-9, .end_time = 1.0, .time_limit = 0.02});
-  State state;
+  integrators::TransientAnalysis analysis(system, newmark,
+                                          {.time_step = 1e-9, .end_time = 1.0, .time_limit = 0.02});
+  integrators::State state;
   try {
     analysis.run(state);
     FAIL() << "the run was not stopped";
@@ -162,18 +163,18 @@ TEST(TransientAnalysis, TimeLimitStopsARunawayRunWithTheTimeAndTheReason) {
 
 TEST(TransientAnalysis, NegativeTimeLimitIsRefused) {
   testing::Oscillator system(1.0, 0.0, 1.0);
-  Newmark newmark = Newmark::average_acceleration();
-  EXPECT_THROW(
-      TransientAnalysis(system, newmark, {.time_step = 0.1, .end_time = 1.0, .time_limit = -1.0}),
-      std::invalid_argument);
+  integrators::Newmark newmark = integrators::Newmark::average_acceleration();
+  EXPECT_THROW(integrators::TransientAnalysis(
+                   system, newmark, {.time_step = 0.1, .end_time = 1.0, .time_limit = -1.0}),
+               std::invalid_argument);
 }
 
 TEST(TransientAnalysis, EndTimeIsReachedExactlyWithoutDrift) {
   testing::Oscillator system(1.0, 0.0, 1.0);
-  Newmark newmark = Newmark::average_acceleration();
-  TransientAnalysis analysis(system, newmark, {.time_step = 0.1, .end_time = 1.05});
-  State state;
-  const TransientStatistics stats = analysis.run(state);
+  integrators::Newmark newmark = integrators::Newmark::average_acceleration();
+  integrators::TransientAnalysis analysis(system, newmark, {.time_step = 0.1, .end_time = 1.05});
+  integrators::State state;
+  const integrators::TransientStatistics stats = analysis.run(state);
   EXPECT_EQ(stats.steps, 11);  // ten steps of 0.1 and a last one of 0.05
   EXPECT_EQ(state.time, 1.05);
 }

@@ -6,12 +6,17 @@
 
 namespace pound::testing {
 
-class Oscillator final : public SecondOrderSystem {
+class Oscillator final : public integrators::SecondOrderSystem {
  public:
-  Oscillator(double mass, double damping, double stiffness, LinkSet links = LinkSet(1),
+  Oscillator(double mass, double damping, double stiffness,
+             integrators::LinkSet links = integrators::LinkSet(1),
              std::function<double(double)> force = {})
-      : mass_(mass), damping_(damping), stiffness_(stiffness), links_(std::move(links)),
-        force_(std::move(force)), lumped_(Vector::Constant(1, mass)) {}
+      : mass_(mass),
+        damping_(damping),
+        stiffness_(stiffness),
+        links_(std::move(links)),
+        force_(std::move(force)),
+        lumped_(Vector::Constant(1, mass)) {}
 
   Index size() const override { return 1; }
   void multiply_mass(const Vector& x, Vector& y) const override { y = mass_ * x; }
@@ -23,19 +28,20 @@ class Oscillator final : public SecondOrderSystem {
   void external_force(double time, Vector& force) const override {
     force = Vector::Constant(1, force_(time));
   }
-  std::unique_ptr<LinearSolver> factor(double c_m, double c_c, double c_k) const override {
+  std::unique_ptr<integrators::LinearSolver> factor(double c_m, double c_c,
+                                                    double c_k) const override {
     return std::make_unique<Scalar>(c_m * mass_ + c_c * damping_ + c_k * stiffness_);
   }
-  LinkSet& links() override { return links_; }
+  integrators::LinkSet& links() override { return links_; }
 
  private:
-  struct Scalar final : LinearSolver {
+  struct Scalar final : integrators::LinearSolver {
     explicit Scalar(double diagonal) : value(diagonal) {}
     void solve(const Vector& rhs, Vector& solution) const override { solution = rhs / value; }
     double value;
   };
   double mass_, damping_, stiffness_;
-  LinkSet links_;
+  integrators::LinkSet links_;
   std::function<double(double)> force_;
   Vector lumped_;
 };

@@ -1,0 +1,70 @@
+#include "io/statistics_document.hpp"
+
+namespace pound::io {
+
+Document to_document(const results::BatchStatistics& statistics, const builder::SetSpec& set) {
+  Document doc;
+  doc.set("set", set.source)
+      .set("title", set.title)
+      .set("cases", static_cast<long>(statistics.cases))
+      .set("completed", static_cast<long>(statistics.completed))
+      .set("failed", static_cast<long>(statistics.failed))
+      .set("input_errors", static_cast<long>(statistics.input_errors))
+      .set("statistics",
+           "per model and scale over the completed cases: median and 84th percentile "
+           "interpolated between order statistics (type 7), maximum");
+  Document intensity;
+  intensity.set("type", set.intensity.type).set("units", "g");
+  if (set.intensity.type == "sa")
+    intensity.set("period", set.intensity.period).set("damping", set.intensity.damping);
+  doc.set("intensity_measure", intensity);
+  std::vector<Document> groups;
+  for (const results::ScaleGroup& g : statistics.groups) {
+    Document group;
+    group.set("model", g.model)
+        .set("scale", g.scale)
+        .set("cases", static_cast<long>(g.cases))
+        .set("completed", static_cast<long>(g.completed));
+    Document responses;
+    for (const results::ResponseStatistics& r : g.responses)
+      responses.set(r.quantity, Document()
+                                    .set("count", static_cast<long>(r.count))
+                                    .set("median", r.median)
+                                    .set("p84", r.p84)
+                                    .set("max", r.max));
+    group.set("responses", responses);
+    if (!g.exceedances.empty()) {
+      Document exceedances;
+      for (const results::Exceedance& e : g.exceedances)
+        exceedances.set(e.quantity, Document()
+                                        .set("limit", e.limit)
+                                        .set("count", static_cast<long>(e.count))
+                                        .set("exceeded", static_cast<long>(e.exceeded))
+                                        .set("fraction", e.fraction));
+      group.set("exceedance", exceedances);
+    }
+    groups.push_back(group);
+  }
+  doc.set("groups", groups);
+  std::vector<Document> fragilities;
+  for (const results::FragilityFit& f : statistics.fragilities) {
+    Document fit;
+    fit.set("model", f.model)
+        .set("quantity", f.quantity)
+        .set("limit", f.limit)
+        .set("observations", static_cast<long>(f.observations))
+        .set("exceeded", static_cast<long>(f.exceeded))
+        .set("fitted", f.fitted);
+    if (f.fitted)
+      fit.set("median", f.median)
+          .set("dispersion", f.dispersion)
+          .set("log_likelihood", f.log_likelihood);
+    else
+      fit.set("reason", f.reason);
+    fragilities.push_back(fit);
+  }
+  doc.set("fragility", fragilities);
+  return doc;
+}
+
+}  // namespace pound::io

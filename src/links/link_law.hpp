@@ -1,0 +1,46 @@
+#pragma once
+// The force-deformation law of a link, in OpenSees' trial -> commit / revert protocol: a law is
+// given a trial deformation (any number of times within a step), answers with its force and
+// tangents, and is told at the end of the step whether the trial became the committed state.
+//
+// Sign convention, shared by every law: the deformation is the penetration
+//   delta = (u_i - u_j) . n - gap
+// along the unit axis n from node i to node j (contact while delta > 0), and the force F is
+// positive in compression (it pushes node i back along -n and node j along +n).
+#include <memory>
+#include <string>
+
+namespace pound::links {
+
+// Penetration and its rates at the trial state.
+struct LinkKinematics {
+  double penetration = 0.0;               // delta [L]
+  double penetration_rate = 0.0;          // d(delta)/dt [L/T]
+  double penetration_acceleration = 0.0;  // d2(delta)/dt2 [L/T^2]
+};
+
+// Force and its partial derivatives at the trial state (consistent tangent for Newton).
+struct LawResponse {
+  double force = 0.0;      // F [F], > 0 compression
+  double stiffness = 0.0;  // dF/d(delta) [F/L]
+  double damping = 0.0;    // dF/d(delta_dot) [F T/L]
+  double mass = 0.0;       // dF/d(delta_ddot) [F T^2/L]
+};
+
+class LinkLaw {
+ public:
+  virtual ~LinkLaw() = default;
+
+  virtual std::string name() const = 0;
+  // A fresh copy in the committed state of this one (each analysis owns its laws).
+  virtual std::unique_ptr<LinkLaw> clone() const = 0;
+
+  virtual LawResponse set_trial(const LinkKinematics& trial) = 0;
+  virtual void commit() = 0;
+  virtual void revert() = 0;
+
+  // True while the committed state is in contact (for impact counting and recorders).
+  virtual bool in_contact() const = 0;
+};
+
+}  // namespace pound::links

@@ -1,0 +1,117 @@
+#include "verification/restitution.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "assembly/structural_system.hpp"
+#include "builder/build.hpp"
+#include "integrators/transient_analysis.hpp"
+#include "links/restitution.hpp"
+
+namespace pound::verification {
+
+RestitutionRow simulate_impact(const ImpactSetup& s, const builder::LawSpec& law,
+                               double contact_estimate) {
+  const double closing = s.velocity_1 - s.velocity_2;
+  builder::ModelSpec spec;
+  spec.source = "restitution";
+  spec.nodes = {{"a", 0.0, 0.0}, {"b", 0.0, 0.0}};
+  spec.masses = {{"a", s.mass_1}, {"b", s.mass_2}};
+  spec.initial_velocities = {{"a", s.velocity_1, 0.0}, {"b", s.velocity_2, 0.0}};
+  builder::LinkSpec link;
+  link.id = "impact";
+  link.node_i = "a";
+  link.node_j = "b";
+  link.gap = s.gap;
+  link.axis = std::vector<double>{1.0};
+  link.law = law;
+  spec.links = {link};
+  spec.analysis.time_step = contact_estimate / s.steps_per_contact;
+  spec.analysis.duration = s.gap / closing + 4.0 * contact_estimate;
+  spec.recorders_given = true;
+  const builder::BuiltModel built = builder::build(spec);
+  assembly::StructuralSystem system(built.model);
+  auto integrator = builder::make_integrator(built.analysis);
+  integrators::TransientAnalysis analysis(system, *integrator,
+                                          builder::make_transient_settings(built.analysis));
+
+  RestitutionRow row;
+  double start = -1.0, end = -1.0, previous_time = 0.0, previous_force = 0.0,
+         previous_penetration = 0.0;
+  integrators::State state;
+  state.velocity = system.initial_velocity(built.model);
+  analysis.run(state, [&](const integrators::State& x, const integrators::StepResult&) {
+    const double force = x.link_force[0], penetration = x.link_penetration[0];
+    const bool contact = force != 0.0;  // tension counts as contact (Kelvin-Voigt, allowed)
+    if (contact && start < 0.0) {
+      // Contact began where the penetration crossed zero inside the step.
+      start = previous_time + (x.time - previous_time) * (-previous_penetration) /
+                                  (penetration - previous_penetration);
+    }
+    if (!contact && previous_force != 0.0 && end < 0.0) {
+      // Ended where the penetration crossed zero, or where the force did.
+      end = penetration <= 0.0 ? previous_time + (x.time - previous_time) * previous_penetration /
+                                                     (previous_penetration - penetration)
+                               : x.time;
+    }
+    row.peak_force = std::max(row.peak_force, force);
+    row.max_penetration = std::max(row.max_penetration, penetration);
+    previous_time = x.time;
+    previous_force = force;
+    previous_penetration = penetration;
+  });
+  row.contact_time = end - start;
+  row.achieved = (state.velocity[1] - state.velocity[0]) / closing;
+  return row;
+}
+
+std::vector<RestitutionRow> restitution_study(const ImpactSetup& s) {
+  const double effective_mass = s.mass_1 * s.mass_2 / (s.mass_1 + s.mass_2);
+  const double closing = s.velocity_1 - s.velocity_2;
+  const double linear_contact = std::numbers::pi * std::sqrt(effective_mass / s.linear_stiffness);
+  const double hertz_contact =
+      links::hertz_impact(s.hertz_stiffness, effective_mass, closing).duration;
+  std::vector<RestitutionRow> rows;
+  auto add = [&](const std::string& label, builder::LawSpec law, double target, bool calibrated,
+                 double contact_estimate) {
+    RestitutionRow row = simulate_impact(s, law, contact_estimate);
+    row.law = label;
+    row.target = target;
+    row.calibrated = calibrated;
+    rows.push_back(row);
+  };
+  add("gap_spring", {.type = "gap_spring", .parameters = {{"stiffness", s.linear_stiffness}}}, 1.0,
+      false, linear_contact);
+  add("hertz", {.type = "hertz", .parameters = {{"stiffness", s.hertz_stiffness}}}, 1.0, false,
+      hertz_contact);
+  for (double e : {0.3, 0.5, 0.7, 0.9}) {
+    // The published conversions are shown beside the exact calibration they approximate
+    // (Anagnostopoulos' is exact when tension is allowed).
+    for (const char* calibration : {"published", "exact"}) {
+      const bool exact = std::string(calibration) == "exact";
+      for (const char* tension : {"allow", "clip"}) {
+        if (exact && std::string(tension) == "allow") continue;
+        add(fmt::format("kelvin_voigt ({}, {})", tension, calibration),
+            {.type = "kelvin_voigt",
+             .parameters = {{"stiffness", s.linear_stiffness}, {"restitution", e}},
+             .choices = {{"tension", tension}, {"calibration", calibration}}},
+            e, exact || std::string(tension) == "allow", linear_contact);
+      }
+      for (const char* type : {"hertz_damp", "jankowski"})
+        add(fmt::format("{} ({})", type, calibration),
+            {.type = type,
+             .parameters = {{"stiffness", s.hertz_stiffness}, {"restitution", e}},
+             .choices = {{"calibration", calibration}}},
+            e, exact, hertz_contact);
+    }
+    add("bilinear_impact",
+        {.type = "bilinear_impact",
+         .parameters = {{"stiffness", s.hertz_stiffness}, {"restitution", e}}},
+        e, true, hertz_contact);
+  }
+  return rows;
+}
+
+}  // namespace pound::verification

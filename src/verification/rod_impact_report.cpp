@@ -1,0 +1,251 @@
+#include "verification/rod_impact_report.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace pound::verification {
+
+std::vector<std::string> rod_impact_case_names() {
+  return {"kawashima", "fixed-end", "area-ratio-3"};
+}
+
+std::vector<std::string> rod_impact_law_names() { return {"gap_spring", "extended_penalty"}; }
+
+builder::RodPairSpec rod_impact_case(const std::string& name, int elements, double stiffness_ratio,
+                                     const std::string& law, double eta) {
+  builder::RodPairSpec pair = kawashima_rod_pair(elements, stiffness_ratio);
+  if (law == "extended_penalty") {
+    pair.law = {.type = "extended_penalty", .parameters = {{"eta", eta}}};
+  } else if (law != "gap_spring") {
+    throw std::invalid_argument(
+        fmt::format("unknown law '{}' for the rod pair (expected one of: {})", law,
+                    fmt::join(rod_impact_law_names(), ", ")));
+  }
+  if (name == "kawashima") return pair;
+  pair.right.initial_velocity = 0.0;
+  pair.right.far_end_fixed = true;
+  if (name == "fixed-end") return pair;
+  if (name == "area-ratio-3") {
+    pair.left.area = 3.0 * pair.right.area;
+    return pair;
+  }
+  throw std::invalid_argument(fmt::format("unknown rod-impact case '{}' (expected one of: {})",
+                                          name, fmt::join(rod_impact_case_names(), ", ")));
+}
+
+io::Document to_document(const RodImpactMetrics& m) {
+  io::Document doc;
+  doc.set("force_l2_error", m.force_l2_error)
+      .set("duration_error", m.duration_error)
+      .set("separation_velocity_error", m.separation_velocity_error)
+      .set("peak_force_ratio", m.peak_force_ratio)
+      .set("max_penetration", m.max_penetration)
+      .set("min_force", m.min_force)
+      .set("run_time_s", m.run_time_s)
+      .set("steps", m.steps)
+      .set("newton_iterations", m.newton_iterations)
+      .set("contact_duration", m.duration)
+      .set("exact_contact_duration", m.exact_duration)
+      .set("exact_peak_force", m.exact_peak_force)
+      .set("contact_episodes", m.contact_episodes)
+      .set("exact_contact_episodes", m.exact_contact_episodes)
+      .set("separation_velocity", m.separation_velocity)
+      .set("exact_separation_velocity", m.exact_separation_velocity)
+      .set("energy_ratio", m.energy_ratio);
+  return doc;
+}
+
+io::Table force_history_table(const RodImpactResult& r) {
+  return {{"time", "force", "exact_force", "penetration"},
+          {r.time, r.force, r.exact_force, r.penetration}};
+}
+
+io::Table profile_table(const RodImpactResult& r) {
+  io::Table table{
+      {"time_over_T", "time", "rod", "x", "velocity", "exact_velocity", "stress", "exact_stress"},
+      std::vector<std::vector<double>>(8)};
+  for (const RodProfile& profile : r.profiles)
+    for (const RodProfile::Point& p : profile.points) {
+      const double row[] = {profile.label, profile.time,  static_cast<double>(p.rod),
+                            p.x,           p.velocity,    p.exact_velocity,
+                            p.stress,      p.exact_stress};
+      for (std::size_t c = 0; c < 8; ++c) table.values[c].push_back(row[c]);
+    }
+  return table;
+}
+
+std::vector<Study> kawashima_study() {
+  std::vector<Study> studies;
+  auto run = [](int elements, double stiffness_ratio, double dt_ratio) {
+    RodImpactOptions options;
+    options.pair = kawashima_rod_pair(elements, stiffness_ratio);
+    options.dt_ratio = dt_ratio;
+    return run_rod_impact(options).metrics;
+  };
+  // Kawashima's k_I is absolute; with n = 10, E A / h = 100, so k-ratio = k_I / 100.
+  Study stiffness{"link stiffness k_I (n = 10, dt = T_I/1000)", {}};
+  for (double k : {10.0, 100.0, 1e3, 1e4, 1e5})
+    stiffness.rows.push_back(
+        {fmt::format("k_I = {:g} (k-ratio {:g})", k, k / 100.0), run(10, k / 100.0, 1e-3)});
+  studies.push_back(std::move(stiffness));
+  Study mesh{"elements per rod n (k-ratio 1, dt = T_I/100)", {}};
+  for (int n : {2, 10, 40}) mesh.rows.push_back({fmt::format("n = {}", n), run(n, 1.0, 1e-2)});
+  studies.push_back(std::move(mesh));
+  Study step{"time step dt (n = 10, k-ratio 1)", {}};
+  for (double ratio : {0.5, 0.05, 0.01})
+    step.rows.push_back({fmt::format("dt = {:g} T_I", ratio), run(10, 1.0, ratio)});
+  studies.push_back(std::move(step));
+  return studies;
+}
+
+std::vector<Study> penalty_study() {
+  auto run = [](builder::LawSpec law) {
+    RodImpactOptions options;
+    options.pair = rod_impact_case("fixed-end", 50, 1.0);
+    options.pair.law = std::move(law);
+    options.courant = 1.0;
+    return run_rod_impact(options).metrics;
+  };
+  const double adjacent = 100.0 * 1.0 / (10.0 / 50.0);  // E A / h of Kawashima's rod, n = 50
+  Study spring_only{"alpha0 only (Suzuki & Toi Fig. 7), fixed-end rods, n = 50, dt = h/C0", {}};
+  for (double xi : {1.0, 10.0, 1e3})
+    spring_only.rows.push_back(
+        {fmt::format("xi = alpha0/k = {:g}", xi),
+         run({.type = "extended_penalty",
+              .parameters = {{"alpha0", xi * adjacent}, {"alpha1", 0.0}, {"alpha2", 0.0}}})});
+  Study extended{"extended penalty, e* = 1e-3 (Fig. 8), fixed-end rods, n = 50, dt = h/C0", {}};
+  for (double eta : {0.0, 1.0, 10.0})
+    extended.rows.push_back({fmt::format("eta = {:g}", eta),
+                             run({.type = "extended_penalty", .parameters = {{"eta", eta}}})});
+  extended.rows.push_back({"gap spring, k-ratio 1",
+                           run({.type = "gap_spring", .parameters = {{"stiffness_ratio", 1.0}}})});
+  return {spring_only, extended};
+}
+
+std::string format_two_element(const std::vector<TwoElementResult>& results) {
+  std::string text =
+      fmt::format("{:>6} {:>6} {:>9} {:>9} {:>13} {:>13} {:>10} {:>10}\n", "k2/k1", "m2/m1",
+                  "alpha0/k1", "alpha2*", "w1/w_exact", "w2/w_exact", "error", "");
+  double worst = 0.0;
+  for (const TwoElementResult& r : results) {
+    const TwoElementCase& c = r.input;
+    const double reference_mass = c.alpha0 * (c.m1 + c.m2) / (c.k1 + c.k2);
+    text += fmt::format("{:>6g} {:>6g} {:>9g} {:>9g} {:>13.6f} {:>13.6f} {:>10.2e}\n", c.k2 / c.k1,
+                        c.m2 / c.m1, c.alpha0 / c.k1, c.alpha2 / reference_mass,
+                        std::sqrt(r.omega1_squared / r.exact_omega_squared),
+                        std::sqrt(r.omega2_squared / r.exact_omega_squared), r.relative_error);
+    worst = std::max(worst, r.relative_error);
+  }
+  return text +
+         fmt::format(
+             "alpha2* = alpha2 / (alpha0 (m1 + m2) / (k1 + k2)), eq. 29 at 1; error: largest "
+             "relative difference of w^2 from eq. 4 / eqs. 23-24\n{} cases, largest error {:.2e}\n",
+             results.size(), worst);
+}
+
+io::Document to_document(const std::vector<TwoElementResult>& results) {
+  std::vector<io::Document> rows;
+  double worst = 0.0;
+  for (const TwoElementResult& r : results) {
+    io::Document row;
+    row.set("k1", r.input.k1)
+        .set("k2", r.input.k2)
+        .set("m1", r.input.m1)
+        .set("m2", r.input.m2)
+        .set("alpha0", r.input.alpha0)
+        .set("alpha2", r.input.alpha2)
+        .set("omega1_squared", r.omega1_squared)
+        .set("omega2_squared", r.omega2_squared)
+        .set("closed_omega1_squared", r.closed_omega1_squared)
+        .set("closed_omega2_squared", r.closed_omega2_squared)
+        .set("exact_omega_squared", r.exact_omega_squared)
+        .set("relative_error", r.relative_error);
+    rows.push_back(row);
+    worst = std::max(worst, r.relative_error);
+  }
+  io::Document doc;
+  doc.set("cases", rows).set("max_relative_error", worst);
+  return doc;
+}
+
+std::string format_restitution(const std::vector<RestitutionRow>& rows) {
+  std::string text = fmt::format("{:<32} {:>7} {:>9} {:>9} {:>12} {:>11} {:>12}\n", "law", "target",
+                                 "achieved", "error", "peak force", "contact", "penetration");
+  for (const RestitutionRow& r : rows)
+    text += fmt::format(
+        "{:<32} {:>7.3f} {:>9.5f} {:>+9.5f} {:>12.5g} {:>11.5g} {:>12.5g}{}\n", r.law, r.target,
+        r.achieved, r.achieved - r.target, r.peak_force, r.contact_time, r.max_penetration,
+        r.calibrated ? "" : (r.target == 1.0 ? "  (elastic)" : "  (published formula)"));
+  return text;
+}
+
+io::Document to_document(const std::vector<RestitutionRow>& rows) {
+  std::vector<io::Document> items;
+  for (const RestitutionRow& r : rows) {
+    io::Document row;
+    row.set("law", r.law)
+        .set("target", r.target)
+        .set("achieved", r.achieved)
+        .set("peak_force", r.peak_force)
+        .set("contact_time", r.contact_time)
+        .set("max_penetration", r.max_penetration)
+        .set("calibrated", r.calibrated);
+    items.push_back(row);
+  }
+  io::Document doc;
+  doc.set("rows", items);
+  return doc;
+}
+
+std::string format_metrics(const RodImpactMetrics& m) {
+  return fmt::format(
+      "  force_l2_error             {:>12.4e}\n"
+      "  duration_error             {:>12.4e}   (contact {:.6g}, exact {:.6g})\n"
+      "  separation_velocity_error  {:>12.4e}   (relative v_cm {:.6g}, exact {:.6g})\n"
+      "  peak_force_ratio           {:>12.4f}   (exact peak {:.6g})\n"
+      "  max_penetration            {:>12.4e}\n"
+      "  min_force                  {:>12.4e}\n"
+      "  contact episodes           {:>12}   (exact {})\n"
+      "  steps                      {:>12}\n"
+      "  newton_iterations          {:>12}\n"
+      "  run_time_s                 {:>12.4e}\n",
+      m.force_l2_error, m.duration_error, m.duration, m.exact_duration, m.separation_velocity_error,
+      m.separation_velocity, m.exact_separation_velocity, m.peak_force_ratio, m.exact_peak_force,
+      m.max_penetration, m.min_force, m.contact_episodes, m.exact_contact_episodes, m.steps,
+      m.newton_iterations, m.run_time_s);
+}
+
+std::string format_study(const Study& study) {
+  std::string text =
+      fmt::format("{}\n{:<26} {:>10} {:>10} {:>10} {:>8} {:>11} {:>8} {:>7}\n", study.title, "case",
+                  "force_L2", "duration", "sep_vel", "peak", "penetration", "contacts", "steps");
+  for (const StudyRow& row : study.rows) {
+    const RodImpactMetrics& m = row.metrics;
+    text += fmt::format("{:<26} {:>10.4f} {:>+10.4f} {:>+10.4f} {:>8.3f} {:>11.3e} {:>8} {:>7}\n",
+                        row.label, m.force_l2_error, m.duration_error, m.separation_velocity_error,
+                        m.peak_force_ratio, m.max_penetration, m.contact_episodes, m.steps);
+  }
+  return text;
+}
+
+io::Document to_document(const std::vector<Study>& studies) {
+  std::vector<io::Document> items;
+  for (const Study& study : studies) {
+    std::vector<io::Document> rows;
+    for (const StudyRow& row : study.rows) {
+      io::Document doc;
+      doc.set("case", row.label).set("metrics", to_document(row.metrics));
+      rows.push_back(std::move(doc));
+    }
+    io::Document doc;
+    doc.set("study", study.title).set("rows", rows);
+    items.push_back(std::move(doc));
+  }
+  io::Document root;
+  root.set("studies", items);
+  return root;
+}
+
+}  // namespace pound::verification

@@ -1,0 +1,239 @@
+// The rod-impact benchmark: Kawashima's (1980) findings as numbers, the fine-mesh accuracy
+// the foundation issue asks for, and the metric code checked on the exact solution itself.
+#include "verification/rod_impact.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+#include "core/errors.hpp"
+#include "verification/rod_impact_report.hpp"
+
+namespace pound::verification {
+namespace {
+
+RodImpactMetrics run(const builder::RodPairSpec& pair, double dt_ratio) {
+  RodImpactOptions options;
+  options.pair = pair;
+  options.dt_ratio = dt_ratio;
+  return run_rod_impact(options).metrics;
+}
+
+RodImpactMetrics kawashima(int elements, double link_stiffness, double dt_ratio) {
+  // With L = 10, E A = 100: E A / h = 10 n, so k-ratio = k_I / (10 n).
+  return run(kawashima_rod_pair(elements, link_stiffness / (10.0 * elements)), dt_ratio);
+}
+
+void print(const std::string& label, const RodImpactMetrics& m) {
+  std::cout << format_study({label, {{label, m}}});
+}
+
+// Kawashima Fig. 3: a soft link (k_I = 10, n = 10) lets the rods overlap and stay in contact
+// far too long.
+TEST(RodImpact, SoftLinkOverlapsAndContactsTooLong) {
+  const RodImpactMetrics soft = kawashima(10, 10.0, 1e-3);
+  const RodImpactMetrics balanced = kawashima(10, 100.0, 1e-3);
+  print("k_I = 10", soft);
+  EXPECT_GT(soft.duration_error, 0.3);
+  EXPECT_GT(soft.max_penetration, 5.0 * balanced.max_penetration);
+}
+
+// A very stiff link (k_I = 1e5) separates and recontacts many times inside the true contact,
+// and its force peaks at many times the exact one.
+TEST(RodImpact, StiffLinkChattersWithHugePeaks) {
+  const RodImpactMetrics stiff = kawashima(10, 1e5, 1e-3);
+  print("k_I = 1e5", stiff);
+  EXPECT_GE(stiff.contact_episodes, 5);
+  EXPECT_EQ(stiff.exact_contact_episodes, 1);
+  EXPECT_GT(stiff.peak_force_ratio, 10.0);
+  EXPECT_GT(stiff.force_l2_error, 2.0);
+}
+
+// k_I L / (n E A) = 1: one contact of about the right length and rebound.
+TEST(RodImpact, LinkAsStiffAsTheAdjacentElementBalancesBoth) {
+  const RodImpactMetrics balanced = kawashima(10, 100.0, 1e-3);
+  print("k-ratio 1", balanced);
+  EXPECT_EQ(balanced.contact_episodes, 1);
+  EXPECT_LT(std::abs(balanced.duration_error), 0.1);
+  EXPECT_LT(std::abs(balanced.separation_velocity_error), 0.05);
+  EXPECT_LT(balanced.peak_force_ratio, 1.5);
+  EXPECT_EQ(balanced.min_force, 0.0);
+}
+
+// dt = T_I / 2 cannot resolve the contact: the result is meaningless.
+TEST(RodImpact, HalfTheContactDurationAsTimeStepIsMeaningless) {
+  const RodImpactMetrics coarse = kawashima(10, 100.0, 0.5);
+  const RodImpactMetrics fine = kawashima(10, 100.0, 0.01);
+  print("dt = T/2", coarse);
+  EXPECT_GT(coarse.force_l2_error, 0.8);
+  EXPECT_GT(std::abs(coarse.duration_error), 0.2);
+  EXPECT_GT(std::abs(coarse.separation_velocity_error), 0.2);
+  EXPECT_LT(std::abs(fine.duration_error), 0.1);
+}
+
+// Kawashima: finer meshes come closer (dt = T/100, k-ratio 1).
+TEST(RodImpact, FinerMeshesComeCloser) {
+  double previous = 1e9;
+  for (int n : {2, 10, 40}) {
+    const RodImpactMetrics m = run(kawashima_rod_pair(n, 1.0), 0.01);
+    print("n = " + std::to_string(n), m);
+    EXPECT_LT(std::abs(m.duration_error), previous);
+    previous = std::abs(m.duration_error);
+  }
+  EXPECT_LT(previous, 0.02);
+}
+
+// The foundation issue's accuracy target: n = 1000 per rod, k-ratio 1, dt = h / C0, to 3 T_I.
+TEST(RodImpact, FineMeshMeetsDurationAndSeparationTargets) {
+  for (const std::string& name : rod_impact_case_names()) {
+    RodImpactOptions options;
+    options.pair = rod_impact_case(name, 1000, 1.0);
+    options.courant = 1.0;
+    const RodImpactMetrics m = run_rod_impact(options).metrics;
+    print(name + ", n = 1000, Courant 1", m);
+    EXPECT_LE(std::abs(m.duration_error), 0.005) << name;
+    EXPECT_LE(std::abs(m.separation_velocity_error), 0.01) << name;
+    EXPECT_GE(m.min_force, 0.0) << name;
+    if (name == "kawashima") {
+      EXPECT_EQ(m.steps, 6000);
+      // The gap spring's known spurious oscillation (Suzuki & Toi): about 0.31.
+      EXPECT_NEAR(m.force_l2_error, 0.31, 0.03);
+    }
+  }
+}
+
+// The contact-laws issue's targets for the extended penalty on automatic numbers (n = 1000,
+// dt = h / C0): the oscillation of the gap spring (force error ~0.31) is gone.
+TEST(RodImpact, ExtendedPenaltyRemovesTheSpuriousOscillation) {
+  for (const std::string& name : {std::string("kawashima"), std::string("area-ratio-3")}) {
+    RodImpactOptions options;
+    options.pair = rod_impact_case(name, 1000, 1.0, "extended_penalty");
+    options.courant = 1.0;
+    const RodImpactMetrics penalty = run_rod_impact(options).metrics;
+    options.pair = rod_impact_case(name, 1000, 1.0, "gap_spring");
+    const RodImpactMetrics spring = run_rod_impact(options).metrics;
+    print(name + ", extended penalty", penalty);
+    print(name + ", gap spring", spring);
+    EXPECT_GE(penalty.min_force, 0.0) << name;
+    EXPECT_GT(spring.force_l2_error, 3.0 * penalty.force_l2_error) << name;
+    if (name == "kawashima") {
+      EXPECT_LE(penalty.force_l2_error, 0.05);
+      EXPECT_LE(std::abs(penalty.duration_error), 0.003);
+      EXPECT_LE(std::abs(penalty.separation_velocity_error), 0.005);
+    } else {
+      EXPECT_LE(penalty.force_l2_error, 0.06);
+    }
+  }
+}
+
+// Numerical damping of the highest modes (HHT, generalised-alpha) also removes most of the gap
+// spring's spurious oscillation on the fine mesh, keeping the duration and rebound.
+TEST(RodImpact, AlphaMethodsDampTheGapSpringOscillation) {
+  RodImpactOptions options;
+  options.pair = rod_impact_case("kawashima", 1000, 1.0);
+  options.courant = 1.0;
+  const double trapezoidal = run_rod_impact(options).metrics.force_l2_error;
+  for (const auto& [type, label] :
+       {std::pair{"hht", "HHT alpha = -0.1"},
+        std::pair{"generalized_alpha", "generalised-alpha rho = 0.5"}}) {
+    options.integrator = {.type = type, .alpha = -0.1, .rho_infinity = 0.5};
+    const RodImpactMetrics m = run_rod_impact(options).metrics;
+    print(label, m);
+    EXPECT_LT(m.force_l2_error, 0.05) << label;
+    EXPECT_LT(m.force_l2_error, trapezoidal / 5.0) << label;
+    EXPECT_LE(std::abs(m.duration_error), 0.005) << label;
+    EXPECT_LE(std::abs(m.separation_velocity_error), 0.01) << label;
+  }
+}
+
+// Suzuki & Toi's own scheme: central difference with the extended penalty at a fraction of the
+// stable step. The gap spring at Courant 1 is refused (its contact raises omega_max).
+TEST(RodImpact, CentralDifferenceWithTheExtendedPenalty) {
+  RodImpactOptions options;
+  options.pair = rod_impact_case("kawashima", 1000, 1.0, "extended_penalty");
+  options.integrator.type = "central_difference";
+  options.courant = 0.5;
+  const RodImpactMetrics m = run_rod_impact(options).metrics;
+  print("central difference, extended penalty, Courant 0.5", m);
+  EXPECT_LT(m.force_l2_error, 0.05);
+  EXPECT_LE(std::abs(m.duration_error), 0.003);
+  EXPECT_LE(std::abs(m.separation_velocity_error), 0.005);
+  EXPECT_GE(m.min_force, 0.0);
+  options.pair = rod_impact_case("kawashima", 1000, 1.0, "gap_spring");
+  options.courant = 1.0;
+  EXPECT_THROW(run_rod_impact(options), InputError);
+}
+
+// Suzuki & Toi Figs. 7-8: a stiff alpha0 alone chatters; eta = 1 beats eta = 0 and eta = 10.
+TEST(RodImpact, PenaltyStudyReproducesSuzukiToi) {
+  const std::vector<Study> studies = penalty_study();
+  for (const Study& study : studies) std::cout << format_study(study);
+  const auto& alone = studies[0].rows;
+  const auto& extended = studies[1].rows;
+  EXPECT_EQ(alone[0].metrics.contact_episodes, 1);   // xi = 1
+  EXPECT_GT(alone[2].metrics.contact_episodes, 10);  // xi = 1e3
+  // The stiffer the spring, the larger the oscillation of the contact force.
+  for (std::size_t k = 1; k < alone.size(); ++k) {
+    EXPECT_GT(alone[k].metrics.force_l2_error, alone[k - 1].metrics.force_l2_error);
+    EXPECT_GT(alone[k].metrics.peak_force_ratio, alone[k - 1].metrics.peak_force_ratio);
+  }
+  EXPECT_GT(alone[2].metrics.peak_force_ratio, 5.0);
+  EXPECT_LT(extended[1].metrics.force_l2_error, extended[0].metrics.force_l2_error);  // eta 1 < 0
+  EXPECT_LT(extended[1].metrics.force_l2_error, extended[2].metrics.force_l2_error);  // eta 1 < 10
+  EXPECT_GT(extended[2].metrics.peak_force_ratio, extended[1].metrics.peak_force_ratio);
+}
+
+// Kawashima Fig. 6: velocity and stress along the rods during contact follow the exact waves.
+TEST(RodImpact, ProfilesAlongTheRodsFollowTheExactWaves) {
+  RodImpactOptions options;
+  options.pair = kawashima_rod_pair(1000, 1.0);
+  options.courant = 1.0;
+  options.profile_times = {0.0, 0.25, 0.5, 0.75};
+  const RodImpactResult result = run_rod_impact(options);
+  ASSERT_EQ(result.profiles.size(), 4u);
+  for (const RodProfile& profile : result.profiles) {
+    // Mean absolute error over the rods, relative to V0 and to rho C0 V0: the discrete front is
+    // smeared over a few elements, so the mean (not the maximum) is the meaningful measure.
+    double velocity_error = 0.0, stress_error = 0.0;
+    for (const RodProfile::Point& p : profile.points) {
+      velocity_error += std::abs(p.velocity - p.exact_velocity) / 0.1;
+      stress_error += std::abs(p.stress - p.exact_stress) / 0.316227766016838;
+    }
+    velocity_error /= static_cast<double>(profile.points.size());
+    stress_error /= static_cast<double>(profile.points.size());
+    std::cout << "t = " << profile.label << " T: mean velocity error " << velocity_error
+              << " V0, mean stress error " << stress_error << " rho C0 V0\n";
+    EXPECT_LT(velocity_error, 0.05);
+    EXPECT_LT(stress_error, 0.05);
+  }
+}
+
+// The metric code on the exact force sampled at the steps: no force error, and duration and
+// separation velocity exact up to the sampling.
+TEST(RodImpact, MetricsOfTheExactSolutionItselfAreZero) {
+  const builder::RodPairSpec pair = rod_impact_case("area-ratio-3", 10, 1.0);
+  const auto [first_contact, duration] = exact_contact_window(pair);
+  const double end = first_contact + 3.0 * duration, dt = duration / 1000.0;
+  const ExactRodImpact exact = exact_solution(pair, end);
+  std::vector<double> time, force, penetration;
+  for (int k = 0; k * dt <= end; ++k) {
+    time.push_back(k * dt);
+    force.push_back(exact.contact_force(k * dt));
+    // A penetration that crosses zero where the exact contact starts and ends.
+    penetration.push_back(force.back() > 0.0 ? force.back() : -1e-9);
+  }
+  const double separation =
+      exact.centre_of_mass_velocity(1, time.back()) - exact.centre_of_mass_velocity(0, time.back());
+  const RodImpactMetrics m = compare_with_exact(exact, first_contact, duration, time, force,
+                                                penetration, separation, nullptr);
+  std::cout << "force_l2_error " << m.force_l2_error << ", duration_error " << m.duration_error
+            << "\n";
+  EXPECT_EQ(m.force_l2_error, 0.0);
+  EXPECT_LT(std::abs(m.duration_error), 2e-3);  // two samples of 1/1000
+  EXPECT_EQ(m.separation_velocity_error, 0.0);
+  EXPECT_DOUBLE_EQ(m.peak_force_ratio, 1.0);
+}
+
+}  // namespace
+}  // namespace pound::verification
