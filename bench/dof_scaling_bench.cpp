@@ -37,7 +37,8 @@ void dof_scaling(benchmark::State& state) {
       pound::verification::RodImpactOptions options;
       options.pair = pound::verification::rod_impact_case("kawashima", n, 1.0, "extended_penalty");
       options.courant = explicit_method ? 0.5 : 1.0;
-      if (explicit_method) options.integrator.type = "central_difference";
+      if (explicit_method)
+        options.integrator = pound::integrators::IntegratorChoice::preset("central_difference");
       // Steps in 3 T are 6 n / courant: ask for kSteps of them.
       options.duration_ratio = 3.0 * kSteps / (6.0 * n / *options.courant);
       pound::verification::RodPairSimulation simulation(options);

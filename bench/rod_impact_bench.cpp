@@ -20,7 +20,7 @@ void rod_impact_fine_mesh(benchmark::State& state) {
   const bool explicit_method = state.range(2) == 1;
   options.courant = 1.0;
   if (explicit_method) {
-    options.integrator.type = "central_difference";
+    options.integrator = pound::integrators::IntegratorChoice::preset("central_difference");
     options.stable_fraction = 0.9;
   }
   pound::verification::RodPairSimulation simulation(options);

@@ -54,14 +54,6 @@ std::vector<std::unique_ptr<results::Recorder>> make_recorders(const builder::Bu
   return recorders;
 }
 
-// What a link is for, from its law: the summary and the batch row treat them apart.
-enum class LinkRole { contact, tension, spring };
-LinkRole link_role(const std::string& law) {
-  if (law == "elastic_spring" || law == "bilinear_spring") return LinkRole::spring;
-  if (law == "restrainer" || law == "hook") return LinkRole::tension;
-  return LinkRole::contact;
-}
-
 io::Document link_document(const model::Link& link, const results::LinkSummary& s) {
   io::Document doc;
   doc.set("id", link.id)
@@ -99,10 +91,9 @@ void check_histories_fit(const std::vector<std::unique_ptr<results::Recorder>>& 
 }
 
 // The numbers a batch row needs, from what the run recorded.
-void summarise_case(const LoadedModel& loaded, const assembly::StructuralSystem& system,
-                    const RunRequest& request, const results::LinkSummaries& links,
-                    const results::DriftMonitors& drifts, const results::JointMonitors& joints,
-                    const results::EnergyBalance& energy,
+void summarise_case(const LoadedModel& loaded, const RunRequest& request,
+                    const results::LinkSummaries& links, const results::DriftMonitors& drifts,
+                    const results::JointMonitors& joints, const results::EnergyBalance& energy,
                     const integrators::TransientStatistics& stats, double end_time, double run_time,
                     RunOutcome& outcome) {
   const builder::BuiltModel& built = loaded.built;
@@ -127,10 +118,10 @@ void summarise_case(const LoadedModel& loaded, const assembly::StructuralSystem&
   c.steps = static_cast<double>(stats.steps);
   for (std::size_t k = 0; k < built.model.links.size(); ++k) {
     const results::LinkSummary& s = links.summaries()[k];
-    const LinkRole role = link_role(system.links().law(static_cast<Index>(k)).name());
+    const links::LinkRole role = built.model.links[k].role();
     const std::string& id = built.model.links[k].id;
-    if (role == LinkRole::spring) continue;
-    if (role == LinkRole::tension) {
+    if (role == links::LinkRole::spring) continue;
+    if (role == links::LinkRole::tension) {
       if (!c.max_restrainer_force || s.peak_tension > *c.max_restrainer_force) {
         c.max_restrainer_force = s.peak_tension;
         c.max_restrainer_link = id;
@@ -377,11 +368,11 @@ RunOutcome run_model(const RunRequest& request) {
       const results::LinkSummary& s = links.summaries()[k];
       const std::string law = system->links().law(static_cast<Index>(k)).name();
       const std::string& id = built.model.links[k].id;
-      const LinkRole role = link_role(law);
-      if (role == LinkRole::spring) {
+      const links::LinkRole role = built.model.links[k].role();
+      if (role == links::LinkRole::spring) {
         ++springs;
         spring_force = std::max({spring_force, s.peak_force, s.peak_tension});
-      } else if (role == LinkRole::tension) {
+      } else if (role == links::LinkRole::tension) {
         report +=
             fmt::format("  {} {}: taut {} time(s), peak tension {:.6g}, peak opening {:.4g}\n", law,
                         id, s.impacts, s.peak_tension, s.peak_opening);
@@ -423,7 +414,7 @@ RunOutcome run_model(const RunRequest& request) {
   for (const auto& recorder : recorders)
     outcome.histories.emplace_back(recorder->file(), recorder->table());
   outcome.setup_s = setup_time;
-  summarise_case(loaded, *system, request, links, drifts, joints, energy, stats,
+  summarise_case(loaded, request, links, drifts, joints, energy, stats,
                  failure.empty() ? state.time : failure_time, run_time, outcome);
   return outcome;
 }

@@ -22,7 +22,7 @@ link stiffness ratio 1e-2 .. 1e8 and dt / T 1e-3 .. 0.5, each cell accurate, ina
 (NaN/Inf or energy growth over 10 %) or refused before running; --out writes stability_map.csv.
 
 rod-impact:
-Error against run time on the rod benchmark: integrators (integrators::Newmark average acceleration, HHT
+Error against run time on the rod benchmark: integrators (Newmark average acceleration, HHT
 alpha = -0.1, generalised-alpha rho_inf = 0.5, explicit central difference) x contact laws (gap
 spring at k-ratio 1, extended penalty on automatic numbers) x elements per rod (50, 200, 1000) x
 Courant numbers dt C0 / h (1, 0.5, 0.25), on Kawashima's case and the fixed-end A2 = 3 A1 case.

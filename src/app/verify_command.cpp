@@ -8,6 +8,7 @@
 #include "app/command_line.hpp"
 #include "app/commands.hpp"
 #include "core/errors.hpp"
+#include "integrators/integrator_catalog.hpp"
 #include "io/model_reader.hpp"
 #include "io/output.hpp"
 #include "verification/block_belt.hpp"
@@ -35,7 +36,7 @@ benchmarks:
                 mu_dynamic / mu_static, stick-slip and tumbling per speed (--speeds, --periods,
                 --out DIR writes block_belt_sweep.csv and block_belt_histories.csv)
 
-rod-impact: two elastic rods collide; the finite element solution (lumped-mass rods, contact link, integrators::Newmark
+rod-impact: two elastic rods collide; the finite element solution (lumped-mass rods, contact link, Newmark
 with Newton iteration) is compared with the exact solution of the wave equation computed by
 characteristics. Defaults: Kawashima (1980): E = 100, A = 1, rho = 0.1, L = 10, V0 = 0.1 each
 way, n = 10 elements per rod, link as stiff as the adjacent element, dt = T_I/100.
@@ -96,6 +97,14 @@ int verify_block_belt(const std::string& model_path, const std::string& speed_li
   return 0;
 }
 
+// The integrators `--integrator` takes, from the catalog.
+std::string integrator_option_help() {
+  std::string names;
+  for (const std::string& name : integrators::preset_names())
+    names += (names.empty() ? "" : " | ") + name;
+  return names + " (explicit ones: refused above their stable step)";
+}
+
 }  // namespace
 
 int verify_command(const Arguments& arguments) {
@@ -125,9 +134,8 @@ int verify_command(const Arguments& arguments) {
       "automatic numbers)")("eta", po::value(&eta)->default_value(eta),
                             "extended_penalty: damping factor of alpha1")(
       "integrator", po::value(&integrator)->default_value("newmark_average_acceleration"),
-      "newmark_average_acceleration | newmark_linear_acceleration | hht | generalized_alpha | "
-      "central_difference (explicit: refused above its stable step)")(
-      "alpha", po::value(&hht_alpha)->default_value(hht_alpha), "hht: alpha in [-1/3, 0]")(
+      integrator_option_help().c_str())("alpha", po::value(&hht_alpha)->default_value(hht_alpha),
+                                        "hht: alpha in [-1/3, 0]")(
       "rho-inf", po::value(&rho_infinity)->default_value(rho_infinity),
       "generalized_alpha: spectral radius at infinite frequency, in [0, 1]")(
       "tolerance", po::value(&tolerance)->default_value(tolerance),
@@ -238,23 +246,21 @@ int verify_command(const Arguments& arguments) {
   if (vm.count("courant")) run.courant = courant;
   run.duration_ratio = duration_ratio;
   run.relative_tolerance = tolerance;
-  if (integrator == "newmark_linear_acceleration") {
-    run.integrator.beta = 1.0 / 6.0;
-  } else if (integrator == "central_difference") {
-    run.integrator.type = integrator;
-  } else if (integrator == "hht" || integrator == "generalized_alpha") {
-    run.integrator.type = integrator;
-    run.integrator.alpha = hht_alpha;
-    run.integrator.rho_infinity = rho_infinity;
-    if (!(hht_alpha >= -1.0 / 3.0 && hht_alpha <= 0.0))
-      return usage_error("--alpha must be in [-1/3, 0]");
-    if (!(rho_infinity >= 0.0 && rho_infinity <= 1.0))
-      return usage_error("--rho-inf must be in [0, 1]");
-  } else if (integrator != "newmark_average_acceleration") {
-    return usage_error(fmt::format("unknown integrator '{}'", integrator));
-  } else if (integrator != "newmark_average_acceleration") {
-    return usage_error(fmt::format("unknown integrator '{}'", integrator));
+  try {
+    run.integrator = integrators::IntegratorChoice::preset(integrator);
+  } catch (const std::invalid_argument& error) {
+    return usage_error(error.what());
   }
+  // The options that set a method's parameters, where the method has them.
+  for (const auto& [option, name, value] : {std::tuple{"--alpha", "alpha", hht_alpha},
+                                            std::tuple{"--rho-inf", "rho_infinity", rho_infinity}})
+    if (const integrators::IntegratorParameter* parameter =
+            run.integrator.method().parameter(name)) {
+      if (!parameter->admits(value))
+        return usage_error(fmt::format("{} must be in [{:g}, {:g}]", option, parameter->minimum,
+                                       parameter->maximum.value_or(INFINITY)));
+      run.integrator.set(name, value);
+    }
   if (!profiles_csv.empty()) run.profile_times = {0.0, 0.25, 0.5, 0.75};
   const verification::RodImpactResult result = verification::run_rod_impact(run);
   if (!csv.empty()) io::write_csv_atomic(csv, verification::force_history_table(result));

@@ -16,19 +16,7 @@
 #include "core/errors.hpp"
 #include "integrators/central_difference.hpp"
 #include "integrators/newmark.hpp"
-#include "links/backfill.hpp"
-#include "links/bilinear_impact.hpp"
-#include "links/bilinear_spring.hpp"
-#include "links/elastic_spring.hpp"
-#include "links/extended_penalty.hpp"
-#include "links/gap_spring.hpp"
-#include "links/hertz.hpp"
-#include "links/hertz_damp.hpp"
-#include "links/jankowski.hpp"
-#include "links/kelvin_voigt.hpp"
-#include "links/restitution.hpp"
-#include "links/restitution_calibration.hpp"
-#include "links/restrainer.hpp"
+#include "links/law_registry.hpp"
 
 namespace pound::builder {
 namespace {
@@ -78,154 +66,10 @@ std::function<std::string(std::size_t)> origin_of(std::size_t user_count, const 
 
 }  // namespace
 
-model::LawFactory make_law(const LawSpec& law, const std::string& source, const std::string& path) {
-  using links::LinkContext;
-  const auto number = [law](const std::string& name) { return law.number(name); };
-  // The effective mass a law calibrates with: given, or from the model.
-  const auto effective_mass = [law, source, path](const LinkContext& context) {
-    const double mass = law.number("mass").value_or(context.effective_mass());
-    if (!(mass > 0.0) || !std::isfinite(mass))
-      throw InputError(source, path + "/mass",
-                       fmt::format("{} needs the effective mass of the bodies it joins, and the "
-                                   "model gives {} (both ends fixed or massless): give 'mass'",
-                                   law.type, mass));
-    return mass;
-  };
-  // Damping from a target restitution: exact (calibrated on the nondimensional impact) or the
-  // source's published formula.
-  const bool exact = law.choice("calibration", "exact") == "exact";
-  const auto calibrated = [&](links::DampedImpact kind, double (*published)(double)) {
-    const double e = *law.number("restitution");
-    try {
-      return exact ? links::damping_for_restitution(kind, e) : published(e);
-    } catch (const std::domain_error& error) {
-      throw InputError(source, path + "/restitution", error.what());
-    }
-  };
-  const std::string& type = law.type;
-  if (type == "gap_spring") {
-    const double k = *number("stiffness");
-    return [k](const LinkContext&) { return std::make_unique<links::GapSpring>(k); };
-  }
-  if (type == "kelvin_voigt") {
-    const double k = *number("stiffness");
-    const bool clip = law.choice("tension", "clip") == "clip";
-    const std::optional<double> damping = number("damping");
-    const double ratio = damping ? 0.0
-                                 : calibrated(clip ? links::DampedImpact::kelvin_voigt_clipped
-                                                   : links::DampedImpact::kelvin_voigt,
-                                              links::kelvin_voigt_damping_ratio);
-    return [=](const LinkContext& context) {
-      const double c = damping ? *damping : 2.0 * ratio * std::sqrt(k * effective_mass(context));
-      return std::make_unique<links::KelvinVoigt>(k, c, clip);
-    };
-  }
-  if (type == "hertz") {
-    const double k = *number("stiffness");
-    return [k](const LinkContext&) { return std::make_unique<links::Hertz>(k); };
-  }
-  if (type == "hertz_damp") {
-    const double k = *number("stiffness");
-    const double ratio = number("damping_ratio") ? *number("damping_ratio")
-                                                 : calibrated(links::DampedImpact::hertz_damp,
-                                                              links::hertz_damp_ratio_ye);
-    return [k, ratio](const LinkContext&) { return std::make_unique<links::HertzDamp>(k, ratio); };
-  }
-  if (type == "jankowski") {
-    const double k = *number("stiffness");
-    const double ratio = number("damping_ratio") ? *number("damping_ratio")
-                                                 : calibrated(links::DampedImpact::jankowski,
-                                                              links::jankowski_damping_ratio);
-    return [=](const LinkContext& context) {
-      return std::make_unique<links::Jankowski>(k, ratio, effective_mass(context));
-    };
-  }
-  if (type == "bilinear_impact") {
-    if (number("k1"))
-      return [loop = links::BilinearImpact::Loop{
-                  *number("k1"), *number("k2"), *number("yield_penetration")}](const LinkContext&) {
-        return std::make_unique<links::BilinearImpact>(loop);
-      };
-    const double k = *number("stiffness"), e = *number("restitution");
-    const double fraction = number("yield_fraction").value_or(0.1);
-    if ((1.0 - e * e) / (1.0 + e * e) >= 1.0 - fraction)
-      throw InputError(source, path + "/restitution",
-                       fmt::format("e = {} cannot be reached with yield_fraction {}: the loop "
-                                   "would need K2 <= 0 (raise e or lower yield_fraction)",
-                                   e, fraction));
-    return [=](const LinkContext& context) {
-      return std::make_unique<links::BilinearImpact>(
-          links::BilinearImpact::Calibration{k, e, effective_mass(context), fraction});
-    };
-  }
-  if (type == "extended_penalty") {
-    const double tolerance = number("tolerance").value_or(1e-3), eta = number("eta").value_or(1.0);
-    const std::optional<double> alpha0 = number("alpha0"), alpha1 = number("alpha1"),
-                                alpha2 = number("alpha2");
-    return [=](const LinkContext& context) {
-      links::ExtendedPenalty::Numbers numbers{alpha0.value_or(0.0), 0.0, alpha2.value_or(0.0)};
-      if (!alpha0 || !alpha2) {
-        const auto automatic = links::ExtendedPenalty::automatic(context, tolerance, eta);
-        if (!(automatic.alpha0 > 0.0) || !std::isfinite(automatic.alpha2))
-          throw InputError(source, path,
-                           "extended_penalty cannot take its numbers from the model: no "
-                           "stiffness at either contact node; give 'alpha0' and 'alpha2'");
-        if (!alpha0) numbers.alpha0 = automatic.alpha0;
-        // eq. 29 with the alpha0 actually used
-        if (!alpha2) numbers.alpha2 = automatic.alpha2 * numbers.alpha0 / automatic.alpha0;
-      }
-      numbers.alpha1 = alpha1.value_or(2.0 * eta * std::sqrt(numbers.alpha0 * numbers.alpha2));
-      return std::make_unique<links::ExtendedPenalty>(numbers);
-    };
-  }
-  if (type == "restrainer" || type == "hook") {
-    const double k = *number("stiffness"), slack = number("slack").value_or(0.0);
-    const double yield = number("yield_force").value_or(std::numeric_limits<double>::infinity());
-    const double hardening = number("hardening_ratio").value_or(0.0);
-    return [=](const LinkContext&) {
-      return std::make_unique<links::Restrainer>(type, k, slack, yield, hardening);
-    };
-  }
-  if (type == "elastic_spring") {
-    const double k = *number("stiffness");
-    return [k](const LinkContext&) { return std::make_unique<links::ElasticSpring>(k); };
-  }
-  if (type == "bilinear_spring") {
-    const double k = *number("stiffness"), yield = *number("yield_force");
-    const double hardening = number("hardening_ratio").value_or(0.0);
-    return [=](const LinkContext&) {
-      return std::make_unique<links::BilinearSpring>(k, yield, hardening);
-    };
-  }
-  if (type == "backfill") {
-    const double k = *number("initial_stiffness"), ultimate_force = *number("ultimate_force");
-    const double ultimate_deformation = *number("ultimate_deformation");
-    if (!(links::Backfill::hyperbola_curvature(k, ultimate_force, ultimate_deformation) > 0.0))
-      throw InputError(source, path,
-                       fmt::format("backfill: ultimate_force / initial_stiffness = {} must be "
-                                   "below ultimate_deformation = {} (the hyperbola through "
-                                   "(delta_ult, F_ult) needs D = K / F_ult - 1 / delta_ult > 0)",
-                                   ultimate_force / k, ultimate_deformation));
-    return [=](const LinkContext&) {
-      return std::make_unique<links::Backfill>(k, ultimate_force, ultimate_deformation);
-    };
-  }
-  throw std::invalid_argument("unknown contact law " + type);
-}
-
 std::unique_ptr<integrators::Integrator> make_integrator(const AnalysisSpec& analysis) {
   const integrators::ConvergenceTest test{analysis.relative_tolerance, analysis.absolute_tolerance,
                                           analysis.max_iterations};
-  const IntegratorSpec& integrator = analysis.integrator;
-  if (integrator.type == "central_difference")
-    return std::make_unique<integrators::CentralDifference>();
-  if (integrator.type == "hht")
-    return std::make_unique<integrators::Newmark>(
-        integrators::Newmark::hht(integrator.alpha, test));
-  if (integrator.type == "generalized_alpha")
-    return std::make_unique<integrators::Newmark>(
-        integrators::Newmark::generalized_alpha(integrator.rho_infinity, test));
-  return std::make_unique<integrators::Newmark>(integrator.beta, integrator.gamma, test);
+  return analysis.integrator.make(test);
 }
 
 namespace {
@@ -248,7 +92,7 @@ void check_step_count(const AnalysisSpec& analysis, const std::string& source) {
 
 void settle_time_step(AnalysisSpec& analysis, const model::Model& model,
                       assembly::StructuralSystem& system, const std::string& source) {
-  if (analysis.integrator.type != "central_difference") return;
+  if (!analysis.integrator.is_explicit()) return;
   // Implicit methods carry massless DOFs (contact points, rotations) as static equations; the
   // explicit update divides by each DOF's own mass.
   const Vector* lumped = system.lumped_mass();
@@ -569,12 +413,17 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
                                  spec_link.node_i, spec_link.node_j));
       link.axis = {dx / length, dy / length};
     }
-    const bool tension_law = spec_link.law.type == "restrainer" || spec_link.law.type == "hook";
+    const links::LawEntry* found_law = links::find_law(spec_link.law.type);
+    if (!found_law)
+      resolve.fail(path + "/law/type", fmt::format("unknown law '{}'", spec_link.law.type));
+    const links::LawEntry& law = *found_law;
+    const bool tension_law = law.traits.role == links::LinkRole::tension;
     if (tension_law && spec_link.gap != 0.0)
       resolve.fail(path + "/gap", fmt::format("a {} has 'slack' in its law, not a gap: the link's "
                                               "gap must be 0, got {}",
                                               spec_link.law.type, spec_link.gap));
-    link.make_law = make_law(spec_link.law, spec.source, path + "/law");
+    link.law = &law;
+    link.make_law = links::make_law(spec_link.law, {spec.source, path + "/law"});
     if (spec_link.friction) {
       if (spec.dimension != 2)
         resolve.fail(path + "/friction",
@@ -584,10 +433,7 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
             path + "/friction",
             fmt::format("a {} carries no normal contact force to rub with", spec_link.law.type));
       const FrictionSpec& f = *spec_link.friction;
-      const bool nonlinear_normal =
-          spec_link.law.type == "hertz" || spec_link.law.type == "hertz_damp" ||
-          spec_link.law.type == "jankowski" || spec_link.law.type == "bilinear_impact";
-      if (nonlinear_normal && !f.stick_stiffness)
+      if (!law.traits.stiff_at_first_touch && !f.stick_stiffness)
         resolve.fail(
             path + "/friction",
             fmt::format(

@@ -65,11 +65,6 @@ ModelSize model_size(const ModelSpec& spec);
 // builder scales them as the spec says.
 BuiltModel build(const ModelSpec& spec, const std::vector<model::GroundMotion>& motions = {});
 
-// The factory of the law a LawSpec names (a rod pair's stiffness_ratio already resolved);
-// `source` and `path` locate the law in its file for errors the model reveals later (a law
-// that needs a mass where the model has none).
-model::LawFactory make_law(const LawSpec& law, const std::string& source, const std::string& path);
-
 std::unique_ptr<integrators::Integrator> make_integrator(const AnalysisSpec& analysis);
 integrators::TransientSettings make_transient_settings(const AnalysisSpec& analysis);
 // For central difference: sets an "auto" step from the stable limit (links in contact), or

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "builder/generators.hpp"
+#include "links/law_registry.hpp"
 
 namespace pound::builder {
 namespace {
@@ -135,8 +136,8 @@ void add_adjacent_buildings(const AdjacentBuildingsSpec& pair, ModelSpec& out) {
       if (h <= heights[side][s + 1] * (1 + 1e-12)) return building.storeys[s].mass;
     return building.storeys.back().mass;
   };
-  const bool uses_mass = pair.law.type == "jankowski" || pair.law.type == "bilinear_impact" ||
-                         (pair.law.type == "kelvin_voigt" && pair.law.number("restitution"));
+  const links::LawEntry* law = links::find_law(pair.law.type);
+  const bool uses_mass = law && law->accepts("mass", pair.law);
   for (std::size_t c = 0; c < contacts.size(); ++c) {
     LinkSpec link;
     link.id = fmt::format("{}.pounding.at{:g}", pair.id, contacts[c]);

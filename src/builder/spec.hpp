@@ -11,26 +11,15 @@
 #include <string>
 #include <vector>
 
+#include "integrators/integrator_catalog.hpp"
 #include "integrators/transient_analysis.hpp"
+#include "links/law_registry.hpp"
 
 namespace pound::builder {
 
-// A contact law, by name with its parameters (builder/law_catalog.hpp lists them; the reader
-// has checked names, ranges and combinations against it).
-struct LawSpec {
-  std::string type;
-  std::map<std::string, double> parameters;
-  std::map<std::string, std::string> choices;
-
-  std::optional<double> number(const std::string& name) const {
-    auto found = parameters.find(name);
-    return found == parameters.end() ? std::nullopt : std::optional<double>(found->second);
-  }
-  std::string choice(const std::string& name, const std::string& fallback) const {
-    auto found = choices.find(name);
-    return found == choices.end() ? fallback : found->second;
-  }
-};
+// A link law, by name with its parameters (links/law_registry.hpp describes each; the reader has
+// checked names, ranges and combinations against it).
+using LawSpec = links::LawSpec;
 
 struct NodeSpec {
   std::string id;
@@ -286,16 +275,8 @@ struct JointMonitorSpec {
   double seat_width = 0.0;   // 0: unseating not checked
 };
 
-// "newmark" (beta, gamma), "hht" (alpha in [-1/3, 0]) or "generalized_alpha" (rho_infinity in
-// [0, 1]), integrators/newmark.hpp; or "central_difference" (explicit, lumped mass),
-// integrators/central_difference.hpp.
-struct IntegratorSpec {
-  std::string type = "newmark";
-  double beta = 0.25;
-  double gamma = 0.5;
-  double alpha = -0.1;
-  double rho_infinity = 0.8;
-};
+// The time integrator and its parameters (integrators/integrator_catalog.hpp lists them).
+using IntegratorSpec = integrators::IntegratorChoice;
 
 struct AnalysisSpec {
   IntegratorSpec integrator;

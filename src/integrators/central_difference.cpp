@@ -99,6 +99,19 @@ bool accelerate(Index first, Index last, double half_dt, const double* __restric
 
 }  // namespace
 
+const IntegratorEntry& CentralDifference::entry() {
+  static const IntegratorEntry entry{
+      .name = "central_difference",
+      .description =
+          "explicit central difference with lumped mass; stable below its computed "
+          "step, which \"time_step\": \"auto\" takes",
+      .is_explicit = true,
+      .presets = {{"central_difference", {}}},
+      .make = [](const std::map<std::string, double>&, const ConvergenceTest&)
+          -> std::unique_ptr<Integrator> { return std::make_unique<CentralDifference>(); }};
+  return entry;
+}
+
 void CentralDifference::initialize(SecondOrderSystem& system, State& state) {
   const Index n = system.size();
   inverse_mass_ = diagonal_mass(system).cwiseInverse();

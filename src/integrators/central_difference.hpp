@@ -15,12 +15,15 @@
 #include <vector>
 
 #include "integrators/integrator.hpp"
+#include "integrators/integrator_catalog.hpp"
 
 namespace pound::integrators {
 
 class CentralDifference final : public Integrator {
  public:
   std::string name() const override { return "central_difference"; }
+  // Its catalog entry (integrators/integrator_catalog.hpp).
+  static const IntegratorEntry& entry();
   void initialize(SecondOrderSystem& system, State& state) override;
   StepResult advance(SecondOrderSystem& system, const State& from, double dt, State& to) override;
 

@@ -67,6 +67,53 @@ Newmark Newmark::generalized_alpha(double rho, ConvergenceTest test) {
           fmt::format("generalized_alpha(rho_inf={:g})", rho),          test};
 }
 
+const IntegratorEntry& Newmark::newmark_entry() {
+  static const IntegratorEntry entry{
+      .name = "newmark",
+      .description =
+          "Newmark's method with Newton equilibrium iteration condensed onto the link "
+          "rows; unconditionally stable for gamma >= 1/2, beta >= (gamma + 1/2)^2 / 4",
+      .parameters = {{"beta", 0.25, 0.0, true, std::nullopt, "beta > 0"},
+                     {"gamma", 0.5, 0.5, false, std::nullopt, "gamma >= 1/2 (above: damps)"}},
+      .presets = {{"newmark_average_acceleration", {{"beta", 0.25}, {"gamma", 0.5}}},
+                  {"newmark_linear_acceleration", {{"beta", 1.0 / 6.0}, {"gamma", 0.5}}}},
+      .make = [](const std::map<std::string, double>& p,
+                 const ConvergenceTest& test) -> std::unique_ptr<Integrator> {
+        return std::make_unique<Newmark>(p.at("beta"), p.at("gamma"), test);
+      }};
+  return entry;
+}
+
+const IntegratorEntry& Newmark::hht_entry() {
+  static const IntegratorEntry entry{
+      .name = "hht",
+      .description = "Hilber-Hughes-Taylor alpha: second order, damps the high modes",
+      .parameters = {{"alpha", -0.1, -1.0 / 3.0, false, 0.0, "alpha in [-1/3, 0]"}},
+      .presets = {{"hht", {}}},
+      .make = [](const std::map<std::string, double>& p,
+                 const ConvergenceTest& test) -> std::unique_ptr<Integrator> {
+        return std::make_unique<Newmark>(Newmark::hht(p.at("alpha"), test));
+      }};
+  return entry;
+}
+
+const IntegratorEntry& Newmark::generalized_alpha_entry() {
+  static const IntegratorEntry entry{
+      .name = "generalized_alpha",
+      .description =
+          "generalised-alpha (Chung & Hulbert 1993): second order, high-frequency "
+          "damping set by the spectral radius at infinite frequency",
+      .parameters = {{"rho_infinity", 0.8, 0.0, false, 1.0,
+                      "spectral radius at infinite frequency, in [0, 1]"}},
+      .presets = {{"generalized_alpha", {}}},
+      .study_parameters = {{"rho_infinity", 0.5}},
+      .make = [](const std::map<std::string, double>& p,
+                 const ConvergenceTest& test) -> std::unique_ptr<Integrator> {
+        return std::make_unique<Newmark>(Newmark::generalized_alpha(p.at("rho_infinity"), test));
+      }};
+  return entry;
+}
+
 std::string Newmark::name() const {
   if (!name_.empty()) return name_;
   if (beta_ == 0.25 && gamma_ == 0.5) return "newmark_average_acceleration";

@@ -13,6 +13,7 @@
 #include <map>
 
 #include "integrators/integrator.hpp"
+#include "integrators/integrator_catalog.hpp"
 
 namespace pound::integrators {
 
@@ -37,6 +38,11 @@ class Newmark final : public Integrator {
   // a_m = (2 rho - 1)/(rho + 1), a_f = rho/(rho + 1), gamma = 1/2 - a_m + a_f,
   // beta = (1 - a_m + a_f)^2 / 4. rho_inf = 1: no damping; 0: the high modes die in one step.
   static Newmark generalized_alpha(double rho_infinity, ConvergenceTest test = {});
+
+  // The catalog entries of the three variants (integrators/integrator_catalog.hpp).
+  static const IntegratorEntry& newmark_entry();
+  static const IntegratorEntry& hht_entry();
+  static const IntegratorEntry& generalized_alpha_entry();
 
   std::string name() const override;
   void initialize(SecondOrderSystem& system, State& state) override;

@@ -12,8 +12,8 @@
 #include <type_traits>
 #include <vector>
 
-#include "builder/law_catalog.hpp"
 #include "io/json_reader.hpp"
+#include "links/law_registry.hpp"
 
 namespace pound::io {
 
@@ -214,8 +214,8 @@ std::vector<double> read_axis(const JsonValue& value, int dimension) {
   return axis;
 }
 
-Minimum lower_bound(builder::LawParameter::Range range) {
-  using Range = builder::LawParameter::Range;
+Minimum lower_bound(links::LawParameter::Range range) {
+  using Range = links::LawParameter::Range;
   return range == Range::positive || range == Range::restitution ? positive : non_negative;
 }
 
@@ -226,14 +226,14 @@ std::string quoted_list(const std::vector<std::string>& names) {
   return text;
 }
 
-// A law object checked against its entry in the law catalog.
+// A law object checked against its entry in the law registry.
 LawSpec read_law(JsonObject& object, LawPlace place) {
-  using Range = builder::LawParameter::Range;
+  using Range = links::LawParameter::Range;
   LawSpec law;
-  law.type = object.one_of("type", builder::law_type_names());
-  const builder::LawType& type = *builder::find_law_type(law.type);
+  law.type = object.one_of("type", links::law_names());
+  const links::LawEntry& type = *links::find_law(law.type);
   for (const std::string& name : type.required) (void)object.at(name);
-  for (const builder::LawParameter& parameter : type.parameters) {
+  for (const links::LawParameter& parameter : type.parameters) {
     const std::optional<JsonValue> value = object.find(parameter.name);
     if (!value) continue;
     const double number = value->as<double>(lower_bound(parameter.range));
@@ -241,13 +241,11 @@ LawSpec read_law(JsonObject& object, LawPlace place) {
       value->fail(fmt::format("must be <= 1 (a coefficient of restitution), got {}", number));
     if (parameter.range == Range::fraction && number >= 1.0)
       value->fail(fmt::format("must be < 1, got {}", number));
-    const bool generator_only = std::find(type.generator_only.begin(), type.generator_only.end(),
-                                          parameter.name) != type.generator_only.end();
-    if (generator_only && place == LawPlace::link)
+    if (parameter.generator_only && place == LawPlace::link)
       value->fail("only allowed inside a rod_pair generator");
     law.parameters[parameter.name] = number;
   }
-  for (const builder::LawChoice& choice : type.choices)
+  for (const links::LawChoice& choice : type.choices)
     law.choices[choice.name] = object.one_of(choice.name, choice.values, choice.values.front());
   object.finish();  // so that a misspelt parameter is reported as such, not as a missing one
   auto given = [&law](const std::string& name) { return law.parameters.count(name) > 0; };
@@ -261,8 +259,7 @@ LawSpec read_law(JsonObject& object, LawPlace place) {
       std::vector<std::string> allowed = group;
       if (place == LawPlace::link)
         std::erase_if(allowed, [&type](const std::string& name) {
-          return std::find(type.generator_only.begin(), type.generator_only.end(), name) !=
-                 type.generator_only.end();
+          return type.parameter(name)->generator_only;
         });
       object.fail(fmt::format("{} needs {}", law.type, quoted_list(allowed)));
     }
@@ -560,36 +557,22 @@ void read_monitors(JsonObject& object, ModelSpec& spec) {
     }));
 }
 
-// A Newmark object or the name of a preset.
+// A method's object ({"type": "hht", "alpha": -0.05}) or the name of a preset.
 IntegratorSpec read_integrator(const JsonValue& value) {
-  IntegratorSpec integrator;  // average acceleration
-  if (value.json().is_string()) {
-    const std::string preset =
-        value.as_one_of({"newmark_average_acceleration", "newmark_linear_acceleration", "hht",
-                         "generalized_alpha", "central_difference"});
-    if (preset == "newmark_linear_acceleration") integrator.beta = 1.0 / 6.0;
-    if (preset == "hht" || preset == "generalized_alpha" || preset == "central_difference")
-      integrator.type = preset;
-    return integrator;
-  }
+  if (value.json().is_string())
+    return IntegratorSpec::preset(value.as_one_of(integrators::preset_names()));
   if (!value.json().is_object())
     value.fail("expected an object or a preset name string, got " + value.kind());
-  return read_object(value, [&integrator](JsonObject& object) {
-    integrator.type =
-        object.one_of("type", {"newmark", "hht", "generalized_alpha", "central_difference"});
-    if (integrator.type == "newmark") {
-      integrator.beta = object.optional<double>("beta", integrator.beta, positive);
-      integrator.gamma = object.optional<double>("gamma", integrator.gamma, at_least(0.5));
-    } else if (integrator.type == "hht") {
-      integrator.alpha = object.optional<double>("alpha", integrator.alpha, at_least(-1.0 / 3.0));
-      if (integrator.alpha > 0.0)
-        object.at("alpha").fail(fmt::format("must be <= 0, got {}", integrator.alpha));
-    } else {
-      integrator.rho_infinity =
-          object.optional<double>("rho_infinity", integrator.rho_infinity, non_negative);
-      if (integrator.rho_infinity > 1.0)
-        object.at("rho_infinity")
-            .fail(fmt::format("must be <= 1, got {}", integrator.rho_infinity));
+  return read_object(value, [](JsonObject& object) {
+    IntegratorSpec integrator(
+        *integrators::find_integrator(object.one_of("type", integrators::integrator_names())));
+    for (const integrators::IntegratorParameter& parameter : integrator.method().parameters) {
+      const std::optional<JsonValue> given = object.find(parameter.name);
+      if (!given) continue;
+      const double number = given->as<double>(Minimum{parameter.minimum, parameter.minimum_strict});
+      if (parameter.maximum && number > *parameter.maximum)
+        given->fail(fmt::format("must be <= {}, got {}", *parameter.maximum, number));
+      integrator.set(parameter.name, number);
     }
     return integrator;
   });
@@ -658,7 +641,7 @@ AnalysisSpec read_analysis(JsonObject& object) {
     analysis.integrator = read_integrator(*integrator);
   if (const JsonValue step = object.at("time_step"); step.json().is_string()) {
     (void)step.as_one_of({"auto"});
-    if (analysis.integrator.type != "central_difference")
+    if (!analysis.integrator.is_explicit())
       step.fail(
           "\"auto\" is the stable step of central difference; implicit integrators need a number");
     analysis.time_step_auto = true;
@@ -688,7 +671,7 @@ AnalysisSpec read_analysis(JsonObject& object) {
   analysis.static_initial_state =
       object.one_of("initial_state", {"unloaded", "static"}, "unloaded") == "static";
   if (const std::optional<JsonValue> adaptive = object.find("adaptive")) {
-    if (analysis.integrator.type == "central_difference")
+    if (analysis.integrator.is_explicit())
       adaptive->fail(
           "adaptive stepping is for the implicit integrators; central difference "
           "takes its stable step (\"time_step\": \"auto\")");

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "builder/law_catalog.hpp"
+#include "links/law_registry.hpp"
 
 namespace pound::io {
 namespace {
@@ -86,15 +86,15 @@ Json nodal_vector(const Spec& item, int dimension) {
   return json;
 }
 
-// Parameters in the catalog's order (then any the catalog does not list); choices only where
-// they differ from the catalog's default, which the reader fills in for every law.
+// Parameters in the registry's order (then any it does not list); choices only where they
+// differ from the registry's default, which the reader fills in for every law.
 Json law_json(const LawSpec& law) {
   Json json;
   json["type"] = law.type;
-  const builder::LawType* type = builder::find_law_type(law.type);
+  const links::LawEntry* type = links::find_law(law.type);
   std::vector<std::string> order;
   if (type)
-    for (const builder::LawParameter& parameter : type->parameters) order.push_back(parameter.name);
+    for (const links::LawParameter& parameter : type->parameters) order.push_back(parameter.name);
   for (const auto& [name, value] : law.parameters)
     if (std::find(order.begin(), order.end(), name) == order.end()) order.push_back(name);
   for (const std::string& name : order)
@@ -102,7 +102,7 @@ Json law_json(const LawSpec& law) {
   for (const auto& [name, value] : law.choices) {
     std::optional<std::string> fallback;
     if (type)
-      for (const builder::LawChoice& choice : type->choices)
+      for (const links::LawChoice& choice : type->choices)
         if (choice.name == name) fallback = choice.values.front();
     if (value != fallback) json[name] = value;
   }
@@ -447,16 +447,9 @@ Json excitation_json(const builder::ExcitationSpec& excitation) {
 
 Json analysis_json(const builder::AnalysisSpec& analysis) {
   Json json;
-  Json integrator;  // always the object: a preset name reads back as its beta and gamma
-  integrator["type"] = analysis.integrator.type;
-  if (analysis.integrator.type == "hht") {
-    integrator["alpha"] = analysis.integrator.alpha;
-  } else if (analysis.integrator.type == "generalized_alpha") {
-    integrator["rho_infinity"] = analysis.integrator.rho_infinity;
-  } else if (analysis.integrator.type == "newmark") {
-    integrator["beta"] = analysis.integrator.beta;
-    integrator["gamma"] = analysis.integrator.gamma;
-  }
+  Json integrator;  // always the object: a preset name reads back as its parameters
+  integrator["type"] = analysis.integrator.method().name;
+  for (const auto& [name, value] : analysis.integrator.values()) integrator[name] = value;
   json["integrator"] = std::move(integrator);
   if (analysis.time_step_auto) {
     json["time_step"] = "auto";

@@ -1,6 +1,11 @@
 #include "links/backfill.hpp"
 
+#include <fmt/format.h>
+
 #include <stdexcept>
+
+#include "core/errors.hpp"
+#include "links/law_registry.hpp"
 
 namespace pound::links {
 
@@ -45,6 +50,40 @@ void Backfill::commit() {
 void Backfill::revert() {
   trial_permanent_ = committed_permanent_;
   trial_contact_ = committed_contact_;
+}
+
+const LawEntry& Backfill::entry() {
+  using Range = LawParameter::Range;
+  static const LawEntry entry{
+      .name = "backfill",
+      .formula =
+          "compression only: `F = K·δ/(1 + D·δ)` up to δ_ult, `F_ult` beyond, "
+          "`D = K/F_ult − 1/δ_ult > 0`; unloads with K, leaving a gap, never tensile",
+      .source =
+          "abutment backfill, hyperbolic force-displacement: Shamsabadi et al. (2007, "
+          "2010); Caltrans SDC",
+      .parameters = {{"initial_stiffness", Range::positive, "F/L", "K_max"},
+                     {"ultimate_force", Range::positive, "F", "F_ult, the passive capacity"},
+                     {"ultimate_deformation", Range::positive, "L",
+                      "δ_ult at which F_ult is reached, > F_ult / K_max"}},
+      .required = {"initial_stiffness", "ultimate_force", "ultimate_deformation"},
+      .traits = {.penalty = false},
+      .make = [](const LawSpec& law, const LawSource& where) -> LawFactory {
+        const double k = *law.number("initial_stiffness");
+        const double ultimate_force = *law.number("ultimate_force");
+        const double ultimate_deformation = *law.number("ultimate_deformation");
+        if (!(hyperbola_curvature(k, ultimate_force, ultimate_deformation) > 0.0))
+          throw InputError(
+              where.file, where.path,
+              fmt::format("backfill: ultimate_force / initial_stiffness = {} must be "
+                          "below ultimate_deformation = {} (the hyperbola through "
+                          "(delta_ult, F_ult) needs D = K / F_ult - 1 / delta_ult > 0)",
+                          ultimate_force / k, ultimate_deformation));
+        return [=](const LinkContext&) {
+          return std::make_unique<Backfill>(k, ultimate_force, ultimate_deformation);
+        };
+      }};
+  return entry;
 }
 
 }  // namespace pound::links

@@ -42,6 +42,8 @@ class Backfill final : public LinkLaw {
   }
 
   std::string name() const override { return "backfill"; }
+  // Its registry entry: parameters, traits, factory (links/law_registry.hpp).
+  static const LawEntry& entry();
   std::unique_ptr<LinkLaw> clone() const override { return std::make_unique<Backfill>(*this); }
   LawResponse set_trial(const LinkKinematics& trial) override;
   void commit() override;

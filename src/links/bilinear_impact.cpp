@@ -1,7 +1,12 @@
 #include "links/bilinear_impact.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+
+#include "core/errors.hpp"
+#include "links/law_registry.hpp"
 
 namespace pound::links {
 
@@ -79,6 +84,46 @@ void BilinearImpact::revert() {
   trial_ = onset_.committed();
   trial_force_ = committed_force_;
   trial_loop_ = committed_loop_;
+}
+
+const LawEntry& BilinearImpact::entry() {
+  using Range = LawParameter::Range;
+  static const LawEntry entry{
+      .name = "bilinear_impact",
+      .formula =
+          "hysteretic loop between `F = K1·δy + K2·(δ − δy)` and `F = K2·δ`, slope K1 "
+          "inside; from e: calibrated at every impact so that the two-mass restitution is e",
+      .source = "Muthukumar (2003); OpenSees ImpactMaterial",
+      .parameters = {{"stiffness", Range::positive, "F/L^1.5",
+                      "k_h of the Hertz law it approximates"},
+                     restitution_parameter(),
+                     {"yield_fraction", Range::fraction, "-", "a = δy/δm (default 0.1)"},
+                     effective_mass_parameter(),
+                     {"k1", Range::positive, "F/L", "K1"},
+                     {"k2", Range::positive, "F/L", "K2"},
+                     {"yield_penetration", Range::positive, "L", "δy"}},
+      .exactly_one_of = {{"restitution", "k1"}},
+      .needs = {{"restitution", {"stiffness"}}, {"k1", {"k2", "yield_penetration"}}},
+      .excludes = {{"k1", {"stiffness", "yield_fraction", "mass"}}},
+      .traits = {.stiff_at_first_touch = false, .uses_approach_velocity = true},
+      .make = [](const LawSpec& law, const LawSource& where) -> LawFactory {
+        if (law.number("k1")) {
+          const Loop loop{*law.number("k1"), *law.number("k2"), *law.number("yield_penetration")};
+          return [loop](const LinkContext&) { return std::make_unique<BilinearImpact>(loop); };
+        }
+        const double k = *law.number("stiffness"), e = *law.number("restitution");
+        const double fraction = law.number("yield_fraction").value_or(0.1);
+        if ((1.0 - e * e) / (1.0 + e * e) >= 1.0 - fraction)
+          throw InputError(where.file, where.path + "/restitution",
+                           fmt::format("e = {} cannot be reached with yield_fraction {}: the loop "
+                                       "would need K2 <= 0 (raise e or lower yield_fraction)",
+                                       e, fraction));
+        return [=](const LinkContext& context) {
+          return std::make_unique<BilinearImpact>(
+              Calibration{k, e, effective_mass(law, where, context), fraction});
+        };
+      }};
+  return entry;
 }
 
 }  // namespace pound::links

@@ -37,6 +37,8 @@ class BilinearImpact final : public LinkLaw {
   explicit BilinearImpact(Loop loop);
 
   std::string name() const override { return "bilinear_impact"; }
+  // Its registry entry: parameters, traits, factory (links/law_registry.hpp).
+  static const LawEntry& entry();
   std::unique_ptr<LinkLaw> clone() const override {
     return std::make_unique<BilinearImpact>(*this);
   }

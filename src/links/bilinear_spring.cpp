@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "links/law_registry.hpp"
+
 namespace pound::links {
 
 BilinearSpring::BilinearSpring(double stiffness, double yield_force, double hardening_ratio)
@@ -33,6 +35,32 @@ void BilinearSpring::commit() {
 void BilinearSpring::revert() {
   trial_plastic_ = committed_plastic_;
   trial_force_ = committed_force_;
+}
+
+const LawEntry& BilinearSpring::entry() {
+  using Range = LawParameter::Range;
+  static const LawEntry entry{
+      .name = "bilinear_spring",
+      .formula =
+          "`F = k·(δ − p)`, yield at `|F − H·p| = F_y`, `H = b·k/(1 − b)`: elastic-plastic "
+          "both ways, kinematic hardening, post-yield slope `b·k`",
+      .source =
+          "bilinear hysteretic model (OpenSees Steel01 without isotropic hardening; "
+          "Caltrans SDC bilinear bearing)",
+      .parameters = {{"stiffness", Range::positive, "F/L", "elastic stiffness k"},
+                     {"yield_force", Range::positive, "F", "F_y"},
+                     {"hardening_ratio", Range::fraction, "-",
+                      "b, post-yield stiffness / k, 0 <= b < 1 (default 0)"}},
+      .required = {"stiffness", "yield_force"},
+      .traits = {.role = LinkRole::spring, .penalty = false},
+      .make = [](const LawSpec& law, const LawSource&) -> LawFactory {
+        const double k = *law.number("stiffness"), yield = *law.number("yield_force");
+        const double hardening = law.number("hardening_ratio").value_or(0.0);
+        return [=](const LinkContext&) {
+          return std::make_unique<BilinearSpring>(k, yield, hardening);
+        };
+      }};
+  return entry;
 }
 
 }  // namespace pound::links

@@ -24,6 +24,8 @@ class BilinearSpring final : public LinkLaw {
   BilinearSpring(double stiffness, double yield_force, double hardening_ratio);
 
   std::string name() const override { return "bilinear_spring"; }
+  // Its registry entry: parameters, traits, factory (links/law_registry.hpp).
+  static const LawEntry& entry();
   std::unique_ptr<LinkLaw> clone() const override {
     return std::make_unique<BilinearSpring>(*this);
   }

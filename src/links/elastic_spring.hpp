@@ -15,6 +15,8 @@ class ElasticSpring final : public LinkLaw {
   explicit ElasticSpring(double stiffness) : stiffness_(stiffness) {}
 
   std::string name() const override { return "elastic_spring"; }
+  // Its registry entry: parameters, traits, factory (links/law_registry.hpp).
+  static const LawEntry& entry();
   std::unique_ptr<LinkLaw> clone() const override { return std::make_unique<ElasticSpring>(*this); }
   LawResponse set_trial(const LinkKinematics& trial) override;
   void commit() override { committed_loaded_ = trial_loaded_; }

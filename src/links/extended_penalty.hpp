@@ -31,6 +31,8 @@ class ExtendedPenalty final : public LinkLaw {
   static Numbers automatic(const LinkContext& context, double tolerance, double eta);
 
   std::string name() const override { return "extended_penalty"; }
+  // Its registry entry: parameters, traits, factory (links/law_registry.hpp).
+  static const LawEntry& entry();
   std::unique_ptr<LinkLaw> clone() const override {
     return std::make_unique<ExtendedPenalty>(*this);
   }

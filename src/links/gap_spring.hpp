@@ -20,6 +20,8 @@ class GapSpring final : public LinkLaw {
   explicit GapSpring(double stiffness);
 
   std::string name() const override { return "gap_spring"; }
+  // Its registry entry: parameters, traits, factory (links/law_registry.hpp).
+  static const LawEntry& entry();
   std::unique_ptr<LinkLaw> clone() const override;
   LawResponse set_trial(const LinkKinematics& trial) override;
   void commit() override { committed_contact_ = trial_contact_; }

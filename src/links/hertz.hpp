@@ -10,6 +10,8 @@ class Hertz final : public LinkLaw {
  public:
   explicit Hertz(double stiffness) : stiffness_(stiffness) {}
   std::string name() const override { return "hertz"; }
+  // Its registry entry: parameters, traits, factory (links/law_registry.hpp).
+  static const LawEntry& entry();
   std::unique_ptr<LinkLaw> clone() const override { return std::make_unique<Hertz>(*this); }
   LawResponse set_trial(const LinkKinematics& trial) override;
   void commit() override { committed_contact_ = trial_contact_; }

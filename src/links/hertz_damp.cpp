@@ -2,6 +2,10 @@
 
 #include <cmath>
 
+#include "links/law_registry.hpp"
+#include "links/restitution.hpp"
+#include "links/restitution_calibration.hpp"
+
 namespace pound::links {
 
 HertzDamp::HertzDamp(double stiffness, double damping_ratio)
@@ -23,6 +27,35 @@ LawResponse HertzDamp::set_trial(const LinkKinematics& trial) {
   return {.force = elastic * factor,
           .stiffness = elastic_slope * factor + elastic * d_factor_d_v0 * v0.d_penetration,
           .damping = elastic * (damping_ratio_ / v0.velocity + d_factor_d_v0 * v0.d_rate)};
+}
+
+const LawEntry& HertzDamp::entry() {
+  using Range = LawParameter::Range;
+  static const LawEntry entry{
+      .name = "hertz_damp",
+      .formula = "`F = k_h·δ^1.5·(1 + ξ̄·δ̇/v0)`, never tensile; from e: `ξ̄ = 8(1−e)/(5e)`",
+      .source = "Muthukumar & DesRoches (2006); ξ̄ from e after Ye, Li & Zhu (2009)",
+      .parameters = {{"stiffness", Range::positive, "F/L^1.5", "k_h"},
+                     {"damping_ratio", Range::non_negative, "-", "ξ̄"},
+                     restitution_parameter()},
+      .choices = {calibration_choice()},
+      .required = {"stiffness"},
+      .exactly_one_of = {{"damping_ratio", "restitution"}},
+      .traits = {.stiff_at_first_touch = false, .uses_approach_velocity = true},
+      .calibration = RestitutionCalibration{.unit_law =
+                                                [](double ratio, const LawSpec&) {
+                                                  return std::make_unique<HertzDamp>(1.0, ratio);
+                                                },
+                                            .published = hertz_damp_ratio_ye},
+      .make = [](const LawSpec& law, const LawSource& where) -> LawFactory {
+        const double k = *law.number("stiffness");
+        const double ratio = law.number("damping_ratio").value_or(0.0);
+        const double damping = law.number("damping_ratio")
+                                   ? ratio
+                                   : calibrated_damping(HertzDamp::entry(), law, where);
+        return [k, damping](const LinkContext&) { return std::make_unique<HertzDamp>(k, damping); };
+      }};
+  return entry;
 }
 
 }  // namespace pound::links

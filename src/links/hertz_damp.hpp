@@ -18,6 +18,8 @@ class HertzDamp final : public LinkLaw {
  public:
   HertzDamp(double stiffness, double damping_ratio);
   std::string name() const override { return "hertz_damp"; }
+  // Its registry entry: parameters, traits, factory (links/law_registry.hpp).
+  static const LawEntry& entry();
   std::unique_ptr<LinkLaw> clone() const override { return std::make_unique<HertzDamp>(*this); }
   LawResponse set_trial(const LinkKinematics& trial) override;
   void commit() override { onset_.commit(trial_, trial_.penetration > 0.0); }

@@ -2,6 +2,10 @@
 
 #include <cmath>
 
+#include "links/law_registry.hpp"
+#include "links/restitution.hpp"
+#include "links/restitution_calibration.hpp"
+
 namespace pound::links {
 
 Jankowski::Jankowski(double stiffness, double damping_ratio, double effective_mass)
@@ -21,6 +25,40 @@ LawResponse Jankowski::set_trial(const LinkKinematics& trial) {
     response.damping = damping;
   }
   return response;
+}
+
+const LawEntry& Jankowski::entry() {
+  using Range = LawParameter::Range;
+  static const LawEntry entry{
+      .name = "jankowski",
+      .formula =
+          "`F = β·δ^1.5 + c·δ̇` approaching, `β·δ^1.5` separating; "
+          "`c = 2ξ·√(β·√δ·m_eff)`",
+      .source = "Jankowski (2005)",
+      .parameters = {{"stiffness", Range::positive, "F/L^1.5", "β"},
+                     {"damping_ratio", Range::non_negative, "-", "ξ"},
+                     restitution_parameter(),
+                     effective_mass_parameter()},
+      .choices = {calibration_choice()},
+      .required = {"stiffness"},
+      .exactly_one_of = {{"damping_ratio", "restitution"}},
+      .traits = {.stiff_at_first_touch = false},
+      .calibration = RestitutionCalibration{.unit_law =
+                                                [](double ratio, const LawSpec&) {
+                                                  return std::make_unique<Jankowski>(1.0, ratio,
+                                                                                     1.0);
+                                                },
+                                            .published = jankowski_damping_ratio},
+      .make = [](const LawSpec& law, const LawSource& where) -> LawFactory {
+        const double k = *law.number("stiffness");
+        const double ratio = law.number("damping_ratio")
+                                 ? *law.number("damping_ratio")
+                                 : calibrated_damping(Jankowski::entry(), law, where);
+        return [=](const LinkContext& context) {
+          return std::make_unique<Jankowski>(k, ratio, effective_mass(law, where, context));
+        };
+      }};
+  return entry;
 }
 
 }  // namespace pound::links

@@ -17,6 +17,8 @@ class Jankowski final : public LinkLaw {
  public:
   Jankowski(double stiffness, double damping_ratio, double effective_mass);
   std::string name() const override { return "jankowski"; }
+  // Its registry entry: parameters, traits, factory (links/law_registry.hpp).
+  static const LawEntry& entry();
   std::unique_ptr<LinkLaw> clone() const override { return std::make_unique<Jankowski>(*this); }
   LawResponse set_trial(const LinkKinematics& trial) override;
   void commit() override { committed_contact_ = trial_contact_; }

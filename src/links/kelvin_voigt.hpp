@@ -17,6 +17,8 @@ class KelvinVoigt final : public LinkLaw {
  public:
   KelvinVoigt(double stiffness, double damping, bool clip_tension);
   std::string name() const override { return "kelvin_voigt"; }
+  // Its registry entry: parameters, traits, factory (links/law_registry.hpp).
+  static const LawEntry& entry();
   std::unique_ptr<LinkLaw> clone() const override { return std::make_unique<KelvinVoigt>(*this); }
   LawResponse set_trial(const LinkKinematics& trial) override;
   void commit() override { committed_contact_ = trial_contact_; }

@@ -12,6 +12,8 @@
 
 namespace pound::links {
 
+struct LawEntry;  // links/law_registry.hpp: what each law is, for readers, writers and docs
+
 // Penetration and its rates at the trial state.
 struct LinkKinematics {
   double penetration = 0.0;               // delta [L]

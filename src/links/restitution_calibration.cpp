@@ -4,84 +4,116 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <stdexcept>
 
-#include "links/restitution.hpp"
+#include "core/errors.hpp"
 
 namespace pound::links {
 namespace {
 
-// Contact force of the nondimensional impact (compression positive, never tensile when clipped).
-double force(DampedImpact law, double damping, double x, double v) {
-  if (x <= 0.0) return 0.0;
-  switch (law) {
-    case DampedImpact::kelvin_voigt:
-      return x + 2.0 * damping * v;
-    case DampedImpact::kelvin_voigt_clipped:
-      return std::max(0.0, x + 2.0 * damping * v);
-    case DampedImpact::hertz_damp:
-      return std::max(0.0, x * std::sqrt(x) * (1.0 + damping * v));
-    case DampedImpact::jankowski:
-      return x * std::sqrt(x) + (v > 0.0 ? 2.0 * damping * std::sqrt(std::sqrt(x)) * v : 0.0);
-  }
-  return 0.0;
+// The cache key of a law's knob for e: its name and choices (its numbers do not matter in unit
+// form).
+std::string calibration_key(const LawEntry& entry, const LawSpec& law, double restitution) {
+  std::string key = entry.name;
+  for (const auto& [name, value] : law.choices) key += fmt::format(";{}={}", name, value);
+  return key + fmt::format(";e={}", restitution);
+}
+
+// x and x' of the unit impact.
+struct Phase {
+  double position, velocity;
+};
+
+// One classical Runge-Kutta step of x'' = -F(x, x') with the law's trial forces.
+Phase runge_kutta_step(LinkLaw& law, const Phase& s, double h) {
+  const auto acceleration = [&law](double x, double v) {
+    return -law.set_trial({x, v, 0.0}).force;
+  };
+  const double k1x = s.velocity, k1v = acceleration(s.position, s.velocity);
+  const double k2x = s.velocity + 0.5 * h * k1v,
+               k2v = acceleration(s.position + 0.5 * h * k1x, s.velocity + 0.5 * h * k1v);
+  const double k3x = s.velocity + 0.5 * h * k2v,
+               k3v = acceleration(s.position + 0.5 * h * k2x, s.velocity + 0.5 * h * k2v);
+  const double k4x = s.velocity + h * k3v,
+               k4v = acceleration(s.position + h * k3x, s.velocity + h * k3v);
+  return {s.position + h / 6.0 * (k1x + 2 * k2x + 2 * k3x + k4x),
+          s.velocity + h / 6.0 * (k1v + 2 * k2v + 2 * k3v + k4v)};
 }
 
 }  // namespace
 
-double impact_restitution(DampedImpact law, double damping) {
-  const double h = 1e-4;
-  double x = 0.0, v = 1.0;
-  const bool tension_allowed = law == DampedImpact::kelvin_voigt;
+double impact_restitution(LinkLaw& law) {
+  // The committed state just before contact, approaching at 1 (the approach velocity at first
+  // contact is then 1 whatever the law interpolates), and the start just inside contact, so that
+  // a force that jumps at contact (a dashpot's) acts from the first stage on.
+  law.set_trial({-std::numeric_limits<double>::min(), 1.0, 0.0});
+  law.commit();
+  Phase state{std::numeric_limits<double>::min(), 1.0};
+  double step = 1e-4, time = 0.0;
   // Over-damped impacts creep back without separating: after 200 units (an elastic impact lasts
   // about 3) there is no rebound to speak of.
-  for (long step = 0; step < static_cast<long>(200.0 / h); ++step) {
-    auto a = [&](double position, double velocity) {
-      return -force(law, damping, position, velocity);
-    };
-    const double k1x = v, k1v = a(x, v);
-    const double k2x = v + 0.5 * h * k1v, k2v = a(x + 0.5 * h * k1x, v + 0.5 * h * k1v);
-    const double k3x = v + 0.5 * h * k2v, k3v = a(x + 0.5 * h * k2x, v + 0.5 * h * k2v);
-    const double k4x = v + h * k3v, k4v = a(x + h * k3x, v + h * k3v);
-    const double next_x = x + h / 6.0 * (k1x + 2 * k2x + 2 * k3x + k4x);
-    const double next_v = v + h / 6.0 * (k1v + 2 * k2v + 2 * k3v + k4v);
-    if (next_x <= 0.0) return -(v + (next_v - v) * x / (x - next_x));  // back at x = 0
-    // Clipped laws: once separating with zero force the bodies fly apart at constant speed.
-    if (!tension_allowed && next_v < 0.0 && force(law, damping, next_x, next_v) == 0.0)
-      return -next_v;
-    x = next_x;
-    v = next_v;
+  while (time < 200.0) {
+    const Phase next = runge_kutta_step(law, state, step);
+    if (next.position <= 0.0) {
+      // Back at x = 0 within this step. Stages past x = 0 would see no force where the law still
+      // acts (a dashpot's tension as it lets go): close in on x = 0 with halved steps instead,
+      // and interpolate the last, tiny one.
+      if (step > 1e-12) {
+        step *= 0.5;
+        continue;
+      }
+      return -(state.velocity + (next.velocity - state.velocity) * state.position /
+                                    (state.position - next.position));
+    }
+    // A law that lets go while separating (its force clipped at 0) stays let go: the bodies fly
+    // apart at constant speed.
+    const double force = law.set_trial({next.position, next.velocity, 0.0}).force;
+    if (next.velocity < 0.0 && force == 0.0) return -next.velocity;
+    law.commit();
+    state = next;
+    time += step;
   }
-  return std::max(0.0, -v);
+  return std::max(0.0, -state.velocity);
 }
 
-double damping_for_restitution(DampedImpact law, double restitution) {
+double damping_for_restitution(const LawEntry& entry, const LawSpec& law, double restitution) {
   static std::mutex mutex;
-  static std::map<std::pair<int, double>, double> cache;
+  static std::map<std::string, double> cache;
   const std::lock_guard lock(mutex);
-  const auto key = std::make_pair(static_cast<int>(law), restitution);
+  const std::string key = calibration_key(entry, law, restitution);
   if (auto found = cache.find(key); found != cache.end()) return found->second;
   if (restitution >= 1.0) return cache[key] = 0.0;
-  // With tension allowed the linear impact has a closed form (Anagnostopoulos' formula).
-  if (law == DampedImpact::kelvin_voigt)
-    return cache[key] = kelvin_voigt_damping_ratio(restitution);
+  const auto reached = [&](double damping) {
+    return impact_restitution(*entry.calibration->unit_law(damping, law));
+  };
   double low = 0.0, high = 1.0;
-  while (impact_restitution(law, high) > restitution) {
+  while (reached(high) > restitution) {
     low = high;
     high *= 2.0;
     if (high > 1e4)
       throw std::domain_error(
-          fmt::format("restitution {} cannot be reached by this law", restitution));
+          fmt::format("restitution {} cannot be reached by {}", restitution, entry.name));
   }
   for (int iteration = 0; iteration < 60 && high - low > 1e-12 * high; ++iteration) {
     const double middle = 0.5 * (low + high);
-    const double reached = impact_restitution(law, middle);
-    if (std::abs(reached - restitution) < 1e-9) return cache[key] = middle;
-    (reached > restitution ? low : high) = middle;
+    const double e = reached(middle);
+    if (std::abs(e - restitution) < 1e-9) return cache[key] = middle;
+    (e > restitution ? low : high) = middle;
   }
   return cache[key] = 0.5 * (low + high);
+}
+
+double calibrated_damping(const LawEntry& entry, const LawSpec& law, const LawSource& where) {
+  const double e = *law.number("restitution");
+  if (law.choice("calibration", "exact") != "exact") return entry.calibration->published(e);
+  try {
+    return damping_for_restitution(entry, law, e);
+  } catch (const std::domain_error& error) {
+    throw InputError(where.file, where.path + "/restitution", error.what());
+  }
 }
 
 }  // namespace pound::links

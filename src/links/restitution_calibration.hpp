@@ -1,22 +1,30 @@
 #pragma once
-// Damping that makes a law reach a target coefficient of restitution exactly. For these laws
-// the restitution of a two-mass impact depends on the damping parameter alone: scaling delta by
-// delta* = (m_eff v0^2 / k)^(1/(p+1)) and time by delta*/v0 turns every impact into
-//   kelvin_voigt:  x'' = -(x + 2 xi x')              (optionally clipped at 0)
-//   hertz_damp:    x'' = -x^1.5 (1 + xi_bar x')        (clipped at 0)
-//   jankowski:     x'' = -(x^1.5 + 2 xi x^0.25 x')     (damping only while x' > 0)
-// with x(0) = 0, x'(0) = 1 and e = -x' when contact ends. The published conversions
-// (links/restitution.hpp) are approximations of this inverse: Ye's xi_bar gives e = 0.256
-// for a target 0.3, Jankowski's 0.292; clipping Kelvin-Voigt's tension gives 0.397. Here the
-// impact is integrated (RK4, 10^4 steps per unit time) and the damping found by bisection.
+// Damping that makes a law reach a target coefficient of restitution e exactly. For the damped
+// impact laws the restitution of a two-mass impact depends on their damping knob alone: scaling
+// delta by (m_eff v0^2 / k)^(1/(p+1)) and time accordingly turns every impact into the law's own
+// at unit stiffness, effective mass and approach velocity,
+//   x'' = -F_unit(x, x'),  x(0) = 0,  x'(0) = 1,  e = -x' when contact ends,
+// (Kelvin-Voigt: F = x + 2 xi x'; Hertz-damp: x^1.5 (1 + xi_bar x'); Jankowski:
+// x^1.5 + 2 xi x^0.25 x' while approaching). The law object itself is run on it (RK4, 10^4 steps
+// per unit time, trial -> commit at every step, halved steps onto x = 0 at the end, so that a
+// force that jumps at contact or at release costs no accuracy), and the knob is found by
+// bisection. The published
+// conversions (links/restitution.hpp) approximate this inverse: Ye's xi_bar gives e = 0.256 for a
+// target 0.3, Jankowski's 0.292; clipping Kelvin-Voigt's tension gives 0.397.
+#include "links/law_registry.hpp"
+
 namespace pound::links {
 
-enum class DampedImpact { kelvin_voigt, kelvin_voigt_clipped, hertz_damp, jankowski };
+// Restitution of the unit impact of `law` (a law at unit stiffness, mass and approach velocity,
+// in its committed state before contact).
+double impact_restitution(LinkLaw& law);
 
-// Restitution of the nondimensional impact with damping parameter `damping`.
-double impact_restitution(DampedImpact law, double damping);
-// The damping parameter (xi for Kelvin-Voigt and Jankowski, xi_bar for Hertz-damp) giving e;
-// throws std::domain_error when e cannot be reached.
-double damping_for_restitution(DampedImpact law, double restitution);
+// The damping knob of `entry`'s unit law (for the choices of `law`) that gives e; cached. Throws
+// std::domain_error when e cannot be reached.
+double damping_for_restitution(const LawEntry& entry, const LawSpec& law, double restitution);
+
+// The knob for `law`'s own "restitution", as its "calibration" choice says: "exact" (by the law's
+// impact) or "published" (the source's formula). Errors name `where`'s restitution.
+double calibrated_damping(const LawEntry& entry, const LawSpec& law, const LawSource& where);
 
 }  // namespace pound::links

@@ -1,5 +1,9 @@
 #include "links/restrainer.hpp"
 
+#include <limits>
+
+#include "links/law_registry.hpp"
+
 namespace pound::links {
 
 Restrainer::Restrainer(std::string name, double stiffness, double slack, double yield_force,
@@ -35,6 +39,54 @@ void Restrainer::commit() {
 void Restrainer::revert() {
   trial_plastic_ = committed_plastic_;
   trial_taut_ = committed_taut_;
+}
+
+namespace {
+
+// A restrainer and a hook are one class: the hook never yields.
+LawFactory make_restrainer(const LawSpec& law) {
+  const double k = *law.number("stiffness"), slack = law.number("slack").value_or(0.0);
+  const double yield = law.number("yield_force").value_or(std::numeric_limits<double>::infinity());
+  const double hardening = law.number("hardening_ratio").value_or(0.0);
+  return [=](const LinkContext&) {
+    return std::make_unique<Restrainer>(law.type, k, slack, yield, hardening);
+  };
+}
+
+}  // namespace
+
+const LawEntry& Restrainer::restrainer_entry() {
+  using Range = LawParameter::Range;
+  static const LawEntry entry{
+      .name = "restrainer",
+      .formula =
+          "tension `T = k·(o − slack − p)` when positive, yield at `T_y + H·p`, "
+          "`H = b·k/(1 − b)`; `F = −T`, `o = −δ` the opening",
+      .source = "cable restrainers (Caltrans SDC; FHWA)",
+      .parameters = {{"stiffness", Range::positive, "F/L", "k"},
+                     {"slack", Range::non_negative, "L", "(default 0)"},
+                     {"yield_force", Range::positive, "F", "T_y (default: elastic)"},
+                     {"hardening_ratio", Range::fraction, "-",
+                      "b, post-yield stiffness / k (default 0)"}},
+      .required = {"stiffness"},
+      .needs = {{"hardening_ratio", {"yield_force"}}},
+      .traits = {.role = LinkRole::tension, .penalty = false},
+      .make = [](const LawSpec& law, const LawSource&) { return make_restrainer(law); }};
+  return entry;
+}
+
+const LawEntry& Restrainer::hook_entry() {
+  using Range = LawParameter::Range;
+  static const LawEntry entry{
+      .name = "hook",
+      .formula = "tension `T = k·(o − slack)` when positive; `F = −T`",
+      .source = "tension gap (OpenSees ElasticPPGap used as a hook)",
+      .parameters = {{"stiffness", Range::positive, "F/L", "k"},
+                     {"slack", Range::non_negative, "L", "(default 0)"}},
+      .required = {"stiffness"},
+      .traits = {.role = LinkRole::tension, .penalty = false},
+      .make = [](const LawSpec& law, const LawSource&) { return make_restrainer(law); }};
+  return entry;
 }
 
 }  // namespace pound::links

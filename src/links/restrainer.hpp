@@ -22,6 +22,10 @@ class Restrainer final : public LinkLaw {
              double yield_force = std::numeric_limits<double>::infinity(),
              double hardening_ratio = 0.0);
   std::string name() const override { return name_; }
+  // The registry entries of the yielding restrainer and of the elastic hook
+  // (links/law_registry.hpp).
+  static const LawEntry& restrainer_entry();
+  static const LawEntry& hook_entry();
   std::unique_ptr<LinkLaw> clone() const override { return std::make_unique<Restrainer>(*this); }
   LawResponse set_trial(const LinkKinematics& trial) override;
   void commit() override;

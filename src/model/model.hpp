@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "links/law_registry.hpp"
 #include "links/link_context.hpp"
-#include "links/link_law.hpp"
 #include "model/ground_motion.hpp"
 
 namespace pound::model {
@@ -110,11 +110,6 @@ struct SupportExcitation {
   std::vector<std::pair<Index, double>> supports;  // node, delay [T]
 };
 
-// Makes a link's law once the assembled model can tell the law about the bodies it joins
-// (masses and stiffnesses at the two ends, for automatic numbers). Throws InputError when the
-// model cannot supply what the law needs.
-using LawFactory = std::function<std::unique_ptr<links::LinkLaw>(const links::LinkContext&)>;
-
 // Contact link between node i and node j along the unit axis n (from i towards j):
 // penetration delta = (u_i - u_j) . n - gap.
 // Coulomb friction along the tangent t = n rotated by +90 degrees (2-D only).
@@ -133,11 +128,15 @@ struct Link {
   Coordinates axis{1.0, 0.0};
   bool rotational = false;  // acts on theta_i - theta_j (frame scenes), e.g. a plastic hinge
   double gap = 0.0;         // initial clear distance [L], >= 0
-  LawFactory make_law;
+  const links::LawEntry* law = nullptr;  // its law's registry entry (role, traits); none in code
+  links::LawFactory make_law;
   std::optional<LinkFriction> friction;
   std::optional<Index> segment_end;  // node k
   double segment_weight = 0.0;       // w in [0, 1]
   Coordinates velocity_j{0.0, 0.0};  // [L/T]
+
+  // What the link is for; a law made in code (no registry entry) counts as a contact.
+  links::LinkRole role() const { return law ? law->traits.role : links::LinkRole::contact; }
 };
 
 struct Model {

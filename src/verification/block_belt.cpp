@@ -12,12 +12,16 @@
 #include "builder/generators.hpp"
 #include "core/errors.hpp"
 #include "integrators/transient_analysis.hpp"
+#include "links/law_registry.hpp"
 #include "results/energy_balance.hpp"
 
 namespace pound::verification {
 namespace {
 
-bool is_spring(const builder::LinkSpec& link) { return link.law.type == "elastic_spring"; }
+bool is_spring(const builder::LinkSpec& link) {
+  const links::LawEntry* law = links::find_law(link.law.type);
+  return law && law->traits.role == links::LinkRole::spring;
+}
 
 }  // namespace
 

@@ -13,18 +13,15 @@ namespace pound::verification {
 std::vector<StudyResult> error_study(const ErrorStudyOptions& options) {
   std::vector<StudyResult> results;
   for (const std::string& benchmark : options.benchmarks)
-    for (const std::string& integrator : options.integrators)
+    for (const integrators::IntegratorChoice& integrator : options.methods)
       for (const std::string& law : options.laws)
         for (int elements : options.elements)
           for (double courant : options.courants) {
-            StudyResult r{{benchmark, integrator, law, elements, courant}};
+            StudyResult r{{benchmark, integrator.label(), law, elements, courant}};
             RodImpactOptions run;
             run.pair = rod_impact_case(benchmark, elements, 1.0, law);
             run.courant = courant;
-            run.integrator.type =
-                integrator == "newmark_average_acceleration" ? "newmark" : integrator;
-            run.integrator.alpha = -0.1;
-            run.integrator.rho_infinity = 0.5;
+            run.integrator = integrator;
             try {
               // The metrics once; the solve timed alone over the repeats (median).
               r.metrics = run_rod_impact(run).metrics;

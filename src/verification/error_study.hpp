@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "integrators/integrator_catalog.hpp"
 #include "io/document.hpp"
 #include "io/output.hpp"
 #include "verification/rod_impact.hpp"
@@ -31,8 +32,8 @@ struct StudyResult {
 
 struct ErrorStudyOptions {
   std::vector<std::string> benchmarks{"kawashima", "area-ratio-3"};
-  std::vector<std::string> integrators{"newmark_average_acceleration", "hht", "generalized_alpha",
-                                       "central_difference"};
+  // Every method of the catalog with its study parameters.
+  std::vector<integrators::IntegratorChoice> methods = integrators::IntegratorChoice::studied();
   std::vector<std::string> laws{"gap_spring", "extended_penalty"};
   std::vector<int> elements{50, 200, 1000};
   std::vector<double> courants{1.0, 0.5, 0.25};

@@ -3,11 +3,13 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <map>
 #include <numbers>
 
 #include "assembly/structural_system.hpp"
 #include "builder/build.hpp"
 #include "integrators/transient_analysis.hpp"
+#include "links/law_registry.hpp"
 #include "links/restitution.hpp"
 
 namespace pound::verification {
@@ -67,6 +69,34 @@ RestitutionRow simulate_impact(const ImpactSetup& s, const builder::LawSpec& law
   return row;
 }
 
+namespace {
+
+// Every combination of a law's choices, each a value per choice (the defaults first).
+std::vector<std::map<std::string, std::string>> choice_combinations(const links::LawEntry& law) {
+  std::vector<std::map<std::string, std::string>> combinations{{}};
+  for (const links::LawChoice& choice : law.choices) {
+    std::vector<std::map<std::string, std::string>> extended;
+    for (const auto& combination : combinations)
+      for (const std::string& value : choice.values) {
+        extended.push_back(combination);
+        extended.back()[choice.name] = value;
+      }
+    combinations = std::move(extended);
+  }
+  return combinations;
+}
+
+// "kelvin_voigt (clip, exact)": the law and its choices in the registry's order.
+std::string variant_label(const links::LawEntry& law,
+                          const std::map<std::string, std::string>& choices) {
+  std::string values;
+  for (const links::LawChoice& choice : law.choices)
+    values += (values.empty() ? "" : ", ") + choices.at(choice.name);
+  return values.empty() ? law.name : fmt::format("{} ({})", law.name, values);
+}
+
+}  // namespace
+
 std::vector<RestitutionRow> restitution_study(const ImpactSetup& s) {
   const double effective_mass = s.mass_1 * s.mass_2 / (s.mass_1 + s.mass_2);
   const double closing = s.velocity_1 - s.velocity_2;
@@ -74,43 +104,32 @@ std::vector<RestitutionRow> restitution_study(const ImpactSetup& s) {
   const double hertz_contact =
       links::hertz_impact(s.hertz_stiffness, effective_mass, closing).duration;
   std::vector<RestitutionRow> rows;
-  auto add = [&](const std::string& label, builder::LawSpec law, double target, bool calibrated,
-                 double contact_estimate) {
+  auto add = [&](const std::string& label, const builder::LawSpec& law, double target,
+                 bool calibrated, double contact_estimate) {
     RestitutionRow row = simulate_impact(s, law, contact_estimate);
     row.law = label;
     row.target = target;
     row.calibrated = calibrated;
     rows.push_back(row);
   };
-  add("gap_spring", {.type = "gap_spring", .parameters = {{"stiffness", s.linear_stiffness}}}, 1.0,
-      false, linear_contact);
-  add("hertz", {.type = "hertz", .parameters = {{"stiffness", s.hertz_stiffness}}}, 1.0, false,
-      hertz_contact);
-  for (double e : {0.3, 0.5, 0.7, 0.9}) {
-    // The published conversions are shown beside the exact calibration they approximate
-    // (Anagnostopoulos' is exact when tension is allowed).
-    for (const char* calibration : {"published", "exact"}) {
-      const bool exact = std::string(calibration) == "exact";
-      for (const char* tension : {"allow", "clip"}) {
-        if (exact && std::string(tension) == "allow") continue;
-        add(fmt::format("kelvin_voigt ({}, {})", tension, calibration),
-            {.type = "kelvin_voigt",
-             .parameters = {{"stiffness", s.linear_stiffness}, {"restitution", e}},
-             .choices = {{"tension", tension}, {"calibration", calibration}}},
-            e, exact || std::string(tension) == "allow", linear_contact);
+  // Every contact law made from a stiffness alone: once if elastic, at each e in every variant
+  // of its choices if it takes a restitution (calibrated: exactly, when not "published").
+  for (const double e : {1.0, 0.3, 0.5, 0.7, 0.9})
+    for (const links::LawEntry* law : links::law_registry()) {
+      if (law->traits.role != links::LinkRole::contact || !law->parameter("stiffness")) continue;
+      if (law->calibratable() == (e == 1.0)) continue;
+      const bool hertzian = !law->traits.stiff_at_first_touch;
+      builder::LawSpec spec{
+          .type = law->name,
+          .parameters = {{"stiffness", hertzian ? s.hertz_stiffness : s.linear_stiffness}}};
+      if (e < 1.0) spec.parameters["restitution"] = e;
+      for (const auto& choices : choice_combinations(*law)) {
+        spec.choices = choices;
+        add(variant_label(*law, choices), spec, e,
+            e < 1.0 && spec.choice("calibration", "exact") == "exact",
+            hertzian ? hertz_contact : linear_contact);
       }
-      for (const char* type : {"hertz_damp", "jankowski"})
-        add(fmt::format("{} ({})", type, calibration),
-            {.type = type,
-             .parameters = {{"stiffness", s.hertz_stiffness}, {"restitution", e}},
-             .choices = {{"calibration", calibration}}},
-            e, exact, hertz_contact);
     }
-    add("bilinear_impact",
-        {.type = "bilinear_impact",
-         .parameters = {{"stiffness", s.hertz_stiffness}, {"restitution", e}}},
-        e, true, hertz_contact);
-  }
   return rows;
 }
 

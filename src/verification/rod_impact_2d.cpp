@@ -51,7 +51,7 @@ RodImpact2dResult run_rod_impact_2d(const RodImpact2dOptions& options) {
   // The 1-D model, central difference like the strips.
   RodImpactOptions one_d;
   one_d.pair = pair;
-  one_d.integrator.type = "central_difference";
+  one_d.integrator = integrators::IntegratorChoice::preset("central_difference");
   one_d.stable_fraction = options.stable_fraction;
   one_d.duration_ratio = options.duration_ratio;
   const RodImpactResult rods = run_rod_impact(one_d);
@@ -89,7 +89,7 @@ RodImpact2dResult run_rod_impact_2d(const RodImpact2dOptions& options) {
   contact.law = pair.law;
   contact.friction = builder::FrictionSpec{options.friction, {}, {}, {}};
   spec.contacts.push_back(contact);
-  spec.analysis.integrator.type = "central_difference";
+  spec.analysis.integrator = integrators::IntegratorChoice::preset("central_difference");
   spec.analysis.time_step_auto = true;
   spec.analysis.safety_factor = options.stable_fraction;
   spec.analysis.duration = end_time;

@@ -13,11 +13,11 @@ namespace pound::verification {
 
 std::vector<StabilityCell> stability_map(const StabilityOptions& options) {
   std::vector<StabilityCell> cells;
-  for (const std::string& integrator : options.integrators)
+  for (const integrators::IntegratorChoice& integrator : options.methods)
     for (const std::string& law : options.laws)
       for (double ratio : options.stiffness_ratios)
         for (double step : options.step_ratios) {
-          StabilityCell cell{integrator, law, ratio, step};
+          StabilityCell cell{integrator.label(), law, ratio, step};
           RodImpactOptions run;
           run.pair = rod_impact_case("kawashima", options.elements, ratio, law);
           if (law == "extended_penalty") {
@@ -27,10 +27,7 @@ std::vector<StabilityCell> stability_map(const StabilityOptions& options) {
             run.pair.law.parameters["alpha0"] = ratio * adjacent;
           }
           run.dt_ratio = step;
-          run.integrator.type =
-              integrator == "newmark_average_acceleration" ? "newmark" : integrator;
-          run.integrator.alpha = -0.1;
-          run.integrator.rho_infinity = 0.5;
+          run.integrator = integrator;
           try {
             const RodImpactMetrics m = run_rod_impact(run).metrics;
             cell.force_l2_error = m.force_l2_error;

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "integrators/integrator_catalog.hpp"
 #include "io/document.hpp"
 #include "io/output.hpp"
 
@@ -26,8 +27,8 @@ struct StabilityCell {
 };
 
 struct StabilityOptions {
-  std::vector<std::string> integrators{"newmark_average_acceleration", "hht", "generalized_alpha",
-                                       "central_difference"};
+  // Every method of the catalog with its study parameters.
+  std::vector<integrators::IntegratorChoice> methods = integrators::IntegratorChoice::studied();
   std::vector<std::string> laws{"gap_spring", "extended_penalty"};
   std::vector<double> stiffness_ratios{1e-2, 1e-1, 1, 10, 1e2, 1e4, 1e6, 1e8};
   std::vector<double> step_ratios{1e-3, 1e-2, 0.05, 0.1, 0.5};

@@ -133,9 +133,9 @@ TEST(ModelReader, ReadsEveryField) {
   EXPECT_EQ(pair.law.number("stiffness_ratio"), 1.5);
 
   const builder::AnalysisSpec& analysis = spec.analysis;
-  EXPECT_EQ(analysis.integrator.type, "newmark");
-  EXPECT_EQ(analysis.integrator.beta, 0.3);
-  EXPECT_EQ(analysis.integrator.gamma, 0.6);
+  EXPECT_EQ(analysis.integrator.method().name, "newmark");
+  EXPECT_EQ(analysis.integrator.parameter("beta"), 0.3);
+  EXPECT_EQ(analysis.integrator.parameter("gamma"), 0.6);
   EXPECT_EQ(analysis.time_step, 6.32456e-4);
   EXPECT_EQ(analysis.duration, 1.0);
   EXPECT_EQ(analysis.relative_tolerance, 1e-8);
@@ -186,8 +186,8 @@ TEST(ModelReader, AppliesDefaults) {
   EXPECT_TRUE(spec.links.empty());
   EXPECT_TRUE(spec.rod_pairs.empty());
   EXPECT_TRUE(spec.recorders.empty());
-  EXPECT_EQ(spec.analysis.integrator.beta, 0.25);
-  EXPECT_EQ(spec.analysis.integrator.gamma, 0.5);
+  EXPECT_EQ(spec.analysis.integrator.parameter("beta"), 0.25);
+  EXPECT_EQ(spec.analysis.integrator.parameter("gamma"), 0.5);
   EXPECT_EQ(spec.analysis.relative_tolerance, defaults.analysis.relative_tolerance);
   EXPECT_EQ(spec.analysis.absolute_tolerance, 0.0);
   EXPECT_EQ(spec.analysis.max_iterations, 25);
@@ -220,15 +220,15 @@ TEST(ModelReader, ReadsIntegratorPresets) {
         .analysis.integrator;
   };
   const builder::IntegratorSpec linear = with_integrator(R"("newmark_linear_acceleration")");
-  EXPECT_EQ(linear.type, "newmark");
-  EXPECT_EQ(linear.beta, 1.0 / 6.0);
-  EXPECT_EQ(linear.gamma, 0.5);
+  EXPECT_EQ(linear.method().name, "newmark");
+  EXPECT_EQ(linear.parameter("beta"), 1.0 / 6.0);
+  EXPECT_EQ(linear.parameter("gamma"), 0.5);
   const builder::IntegratorSpec average = with_integrator(R"("newmark_average_acceleration")");
-  EXPECT_EQ(average.beta, 0.25);
-  EXPECT_EQ(average.gamma, 0.5);
+  EXPECT_EQ(average.parameter("beta"), 0.25);
+  EXPECT_EQ(average.parameter("gamma"), 0.5);
   const builder::IntegratorSpec plain = with_integrator(R"({"type": "newmark"})");
-  EXPECT_EQ(plain.beta, 0.25);
-  EXPECT_EQ(plain.gamma, 0.5);
+  EXPECT_EQ(plain.parameter("beta"), 0.25);
+  EXPECT_EQ(plain.parameter("gamma"), 0.5);
 }
 
 TEST(ModelReader, AcceptsIntegralFloatsAndNearlyUnitAxes) {

@@ -242,8 +242,8 @@ TEST(ModelWriter, ReadsBackTheSameValues) {
   EXPECT_EQ(spec.excitations[2].sa_damping, 0.02);
   EXPECT_EQ(spec.excitations[3].units, "model");
 
-  EXPECT_EQ(spec.analysis.integrator.beta, 0.3);
-  EXPECT_EQ(spec.analysis.integrator.gamma, 0.6);
+  EXPECT_EQ(spec.analysis.integrator.parameter("beta"), 0.3);
+  EXPECT_EQ(spec.analysis.integrator.parameter("gamma"), 0.6);
   EXPECT_EQ(spec.analysis.time_step, 6.32456e-4);
   EXPECT_EQ(spec.analysis.absolute_tolerance, 1e-12);
   EXPECT_EQ(spec.analysis.max_iterations, 30);
@@ -286,8 +286,8 @@ TEST(ModelWriter, WritesAnIntegratorPresetAsItsParameters) {
   const builder::ModelSpec spec =
       round_trip(parse(patched(kRichModel, R"([{"op": "replace", "path": "/analysis/integrator",
                        "value": "newmark_linear_acceleration"}])")));
-  EXPECT_EQ(spec.analysis.integrator.beta, 1.0 / 6.0);  // bit for bit
-  EXPECT_EQ(spec.analysis.integrator.gamma, 0.5);
+  EXPECT_EQ(spec.analysis.integrator.parameter("beta"), 1.0 / 6.0);  // bit for bit
+  EXPECT_EQ(spec.analysis.integrator.parameter("gamma"), 0.5);
 }
 
 TEST(ModelWriter, NumbersReadBackBitForBit) {

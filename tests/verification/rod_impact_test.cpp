@@ -134,10 +134,11 @@ TEST(RodImpact, AlphaMethodsDampTheGapSpringOscillation) {
   options.pair = rod_impact_case("kawashima", 1000, 1.0);
   options.courant = 1.0;
   const double trapezoidal = run_rod_impact(options).metrics.force_l2_error;
-  for (const auto& [type, label] :
-       {std::pair{"hht", "HHT alpha = -0.1"},
-        std::pair{"generalized_alpha", "generalised-alpha rho = 0.5"}}) {
-    options.integrator = {.type = type, .alpha = -0.1, .rho_infinity = 0.5};
+  for (const auto& [method, parameter, value, label] :
+       {std::tuple{"hht", "alpha", -0.1, "HHT alpha = -0.1"},
+        std::tuple{"generalized_alpha", "rho_infinity", 0.5, "generalised-alpha rho = 0.5"}}) {
+    options.integrator =
+        integrators::IntegratorChoice(*integrators::find_integrator(method), {{parameter, value}});
     const RodImpactMetrics m = run_rod_impact(options).metrics;
     print(label, m);
     EXPECT_LT(m.force_l2_error, 0.05) << label;
@@ -152,7 +153,7 @@ TEST(RodImpact, AlphaMethodsDampTheGapSpringOscillation) {
 TEST(RodImpact, CentralDifferenceWithTheExtendedPenalty) {
   RodImpactOptions options;
   options.pair = rod_impact_case("kawashima", 1000, 1.0, "extended_penalty");
-  options.integrator.type = "central_difference";
+  options.integrator = integrators::IntegratorChoice::preset("central_difference");
   options.courant = 0.5;
   const RodImpactMetrics m = run_rod_impact(options).metrics;
   print("central difference, extended penalty, Courant 0.5", m);

@@ -1,0 +1,103 @@
+#include "links/law_registry.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "links/backfill.hpp"
+#include "links/bilinear_impact.hpp"
+#include "links/bilinear_spring.hpp"
+#include "core/errors.hpp"
+#include "links/elastic_spring.hpp"
+#include "links/extended_penalty.hpp"
+#include "links/gap_spring.hpp"
+#include "links/hertz.hpp"
+#include "links/hertz_damp.hpp"
+#include "links/jankowski.hpp"
+#include "links/kelvin_voigt.hpp"
+#include "links/restrainer.hpp"
+
+namespace pound::links {
+
+std::optional<double> LawSpec::number(const std::string& name) const {
+  auto found = parameters.find(name);
+  return found == parameters.end() ? std::nullopt : std::optional<double>(found->second);
+}
+
+std::string LawSpec::choice(const std::string& name, const std::string& fallback) const {
+  auto found = choices.find(name);
+  return found == choices.end() ? fallback : found->second;
+}
+
+const LawParameter* LawEntry::parameter(std::string_view wanted) const {
+  for (const LawParameter& p : parameters)
+    if (p.name == wanted) return &p;
+  return nullptr;
+}
+
+bool LawEntry::accepts(const std::string& wanted, const LawSpec& law) const {
+  if (!parameter(wanted)) return false;
+  for (const auto& [given, excluded] : excludes)
+    if (law.number(given) && std::find(excluded.begin(), excluded.end(), wanted) != excluded.end())
+      return false;
+  return true;
+}
+
+LawParameter restitution_parameter() {
+  return {"restitution", LawParameter::Range::restitution, "-",
+          "target coefficient of restitution e, 0 < e <= 1"};
+}
+
+LawChoice calibration_choice() {
+  return {"calibration",
+          {"exact", "published"},
+          "how 'restitution' becomes damping: exact (the two-mass impact reaches e) or published (the "
+          "source's formula, approximate)"};
+}
+
+LawParameter effective_mass_parameter() {
+  return {"mass", LawParameter::Range::positive, "M",
+          "effective mass m1 m2 / (m1 + m2); default: from the model's lumped masses at the two "
+          "nodes"};
+}
+
+double effective_mass(const LawSpec& law, const LawSource& where, const LinkContext& context) {
+  const double mass = law.number("mass").value_or(context.effective_mass());
+  if (!(mass > 0.0) || !std::isfinite(mass))
+    throw InputError(where.file, where.path + "/mass",
+                     fmt::format("{} needs the effective mass of the bodies it joins, and the "
+                                 "model gives {} (both ends fixed or massless): give 'mass'",
+                                 law.type, mass));
+  return mass;
+}
+
+const std::vector<const LawEntry*>& law_registry() {
+  static const std::vector<const LawEntry*> entries{
+      &GapSpring::entry(),      &KelvinVoigt::entry(),        &Hertz::entry(),
+      &HertzDamp::entry(),      &Jankowski::entry(),          &BilinearImpact::entry(),
+      &ExtendedPenalty::entry(), &Restrainer::restrainer_entry(), &Restrainer::hook_entry(),
+      &ElasticSpring::entry(),  &BilinearSpring::entry(),     &Backfill::entry(),
+  };
+  return entries;
+}
+
+const LawEntry* find_law(std::string_view name) {
+  for (const LawEntry* entry : law_registry())
+    if (entry->name == name) return entry;
+  return nullptr;
+}
+
+std::vector<std::string> law_names() {
+  std::vector<std::string> names;
+  for (const LawEntry* entry : law_registry()) names.push_back(entry->name);
+  return names;
+}
+
+LawFactory make_law(const LawSpec& law, const LawSource& where) {
+  const LawEntry* entry = find_law(law.type);
+  if (!entry) throw std::invalid_argument("unknown link law " + law.type);
+  return entry->make(law, where);
+}
+
+}  // namespace pound::links
