@@ -11,19 +11,23 @@
 #include <string>
 
 #include "assembly/banded_ldlt.hpp"
+#include "assembly/truss.hpp"
 #include "core/errors.hpp"
 #include "links/gap_spring.hpp"
 
 namespace pound::assembly {
 namespace {
 
-model::Truss truss(Index i, Index j, double youngs_modulus, double area, double density) {
-  return {.id = fmt::format("e{}_{}", i, j),
-          .node_i = i,
-          .node_j = j,
-          .youngs_modulus = youngs_modulus,
-          .area = area,
-          .density = density};
+// A truss between nodes i and j of `m` (already placed).
+std::shared_ptr<const model::Element> truss(const model::Model& m, Index i, Index j,
+                                            double youngs_modulus, double area, double density) {
+  const auto end = [&m](Index node) {
+    return model::ElementNode{node, m.nodes[static_cast<std::size_t>(node)].position};
+  };
+  return std::make_shared<const Truss>(
+      fmt::format("e{}_{}", i, j), std::array{end(i), end(j)}, m.dimension,
+      Truss::Section{.youngs_modulus = youngs_modulus, .area = area, .density = density},
+      std::nullopt);
 }
 
 model::Link link(Index i, Index j, model::Coordinates axis, double gap = 0.0) {
@@ -44,8 +48,8 @@ model::Model chain() {
   m.dimension = 1;
   for (double x : {0.0, 1.0, 3.0, 4.5})
     m.nodes.push_back({fmt::format("n{}", m.nodes.size()), {x, 0.0}});
-  m.trusses = {truss(0, 1, 100.0, 2.0, 1.0), truss(1, 2, 200.0, 1.0, 0.5),
-               truss(2, 3, 50.0, 3.0, 2.0)};
+  m.elements = {truss(m, 0, 1, 100.0, 2.0, 1.0), truss(m, 1, 2, 200.0, 1.0, 0.5),
+                truss(m, 2, 3, 50.0, 3.0, 2.0)};
   m.supports = {{.node = 0, .fixed = {true, false}}};
   m.masses = {{.node = 3, .mass = 7.0}};
   return m;
@@ -59,7 +63,7 @@ model::Model inclined_truss() {
   model::Model m;
   m.dimension = 2;
   m.nodes = {{"a", {0.0, 0.0}}, {"b", {2.0 * kCos, 2.0 * kSin}}};
-  m.trusses = {truss(0, 1, 10.0, 3.0, 0.5)};
+  m.elements = {truss(m, 0, 1, 10.0, 3.0, 0.5)};
   return m;
 }
 
@@ -162,7 +166,7 @@ TEST(StructuralSystem, FreeNodeWithoutMassIsAnInputError) {
 // A massless end of an element has a static equation (its stiffness), which is fine...
 TEST(StructuralSystem, MasslessElementEndIsAStaticDof) {
   model::Model m = chain();
-  m.trusses[2].density = 0.0;
+  m.elements[2] = truss(m, 2, 3, 50.0, 3.0, 0.0);
   m.masses.clear();
   EXPECT_NO_THROW(StructuralSystem{m});
 }
@@ -206,13 +210,14 @@ TEST(StructuralSystem, FactorSolvesTheEffectiveMatrix) {
   model::Model ring;
   ring.dimension = 1;
   for (int i = 0; i < 40; ++i) ring.nodes.push_back({fmt::format("r{}", i), {1.0 * i, 0.0}});
-  for (Index i = 0; i + 1 < 40; ++i) ring.trusses.push_back(truss(i, i + 1, 100.0, 1.0, 0.1));
-  ring.trusses.push_back(truss(0, 39, 100.0, 1.0, 0.1));
+  for (Index i = 0; i + 1 < 40; ++i)
+    ring.elements.push_back(truss(ring, i, i + 1, 100.0, 1.0, 0.1));
+  ring.elements.push_back(truss(ring, 0, 39, 100.0, 1.0, 0.1));
   ring.supports = {{.node = 20, .fixed = {true, false}}};
 
   model::Model plane = inclined_truss();
   plane.nodes.push_back({"c", {4.0, 0.0}});
-  plane.trusses.push_back(truss(1, 2, 10.0, 3.0, 0.5));
+  plane.elements.push_back(truss(plane, 1, 2, 10.0, 3.0, 0.5));
   plane.supports = {{.node = 0, .fixed = {true, true}}};
 
   const model::Model models[] = {chain(), plane, ring};
