@@ -70,6 +70,18 @@ TEST(Quad, MassSumsToTheElementsMassAndLumpsAQuarterOnAParallelogram) {
   EXPECT_NEAR(m(0, 4), total * 1 / 36, 1e-14 * total);
 }
 
+TEST(Quad, LumpsTheRowSumsOrKeepsTheConsistentMassAndReportsNoEndForces) {
+  const Matrix8 consistent = steel().consistent_mass();
+  const model::ElementMass lumped = steel().mass();
+  ASSERT_FALSE(lumped.is_consistent());
+  EXPECT_EQ(lumped.lumped, Vector(consistent.rowwise().sum()));
+  const model::ElementMass kept = steel(kDistorted, false, true).mass();
+  ASSERT_TRUE(kept.is_consistent());
+  EXPECT_EQ(kept.consistent, Matrix(consistent));
+  EXPECT_TRUE(steel().end_force_names().empty());
+  EXPECT_EQ(steel().end_forces(Vector::Ones(8)).size(), 0);
+}
+
 TEST(Quad, PlaneStrainIsStifferThanPlaneStressByTheClosedForm) {
   const Eigen::Matrix3d stress = steel(kDistorted, false).elasticity();
   const Eigen::Matrix3d strain = steel(kDistorted, true).elasticity();
