@@ -9,7 +9,6 @@
 #include <map>
 
 #include "assembly/banded_ldlt.hpp"
-#include "assembly/quad_element.hpp"
 #include "assembly/twisted_tridiagonal.hpp"
 #include "core/errors.hpp"
 
@@ -39,55 +38,126 @@ class SparseSolver final : public integrators::LinearSolver {
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor_;
 };
 
-using Matrix6 = Eigen::Matrix<double, 6, 6>;
+// The elements' and nodal masses' share of the equations, gathered over the free DOFs (fixed
+// ones dropped) in the model's order: K, M (lumped and consistent parts) and the damping of
+// those that damp on their own, C = sum a0_e M_e + a1_e K_e (the model's a0, a1 for the others).
+struct ElementAssembly {
+  ElementAssembly(const model::DofMap& dofs, const model::Model& model);
+  void add(const model::Element& element);
+  void add(const model::NodalMass& mass);
 
-// 2-D Euler-Bernoulli beam-column in local coordinates (u1, v1, theta1, u2, v2, theta2).
-Matrix6 beam_local_stiffness(const model::Beam& beam, double length) {
-  const double ea = beam.youngs_modulus * beam.area / length;
-  const double ei = beam.youngs_modulus * beam.inertia;
-  const double l2 = length * length, l3 = l2 * length;
-  Matrix6 k = Matrix6::Zero();
-  k(0, 0) = k(3, 3) = ea;
-  k(0, 3) = k(3, 0) = -ea;
-  k(1, 1) = k(4, 4) = 12 * ei / l3;
-  k(1, 4) = k(4, 1) = -12 * ei / l3;
-  k(1, 2) = k(2, 1) = k(1, 5) = k(5, 1) = 6 * ei / l2;
-  k(4, 2) = k(2, 4) = k(4, 5) = k(5, 4) = -6 * ei / l2;
-  k(2, 2) = k(5, 5) = 4 * ei / length;
-  k(2, 5) = k(5, 2) = 2 * ei / length;
-  return k;
-}
+  std::vector<Eigen::Triplet<double>> stiffness, consistent_mass, damping;
+  Vector lumped_mass, damping_diagonal;  // damping_diagonal: a0 m of the lumped masses
+  bool has_consistent_mass = false;
+  bool own_damping = false;  // some element or mass has its own coefficients
+  // K_fs, stiffness between free DOFs and fixed ones, by fixed DOF (node * dpn + direction):
+  // only gathered when supports move differently (multi-support excitation).
+  std::map<Index, std::vector<std::pair<Index, double>>> support_coupling;
 
-// Consistent mass of the same element: linear axial, cubic Hermitian transverse shapes.
-Matrix6 beam_consistent_mass(double mass_per_length, double length) {
-  const double m = mass_per_length * length, l = length;
-  Matrix6 mass = Matrix6::Zero();
-  mass(0, 0) = mass(3, 3) = m / 3.0;
-  mass(0, 3) = mass(3, 0) = m / 6.0;
-  const double c = m / 420.0;
-  mass(1, 1) = mass(4, 4) = 156 * c;
-  mass(1, 4) = mass(4, 1) = 54 * c;
-  mass(1, 2) = mass(2, 1) = 22 * l * c;
-  mass(4, 5) = mass(5, 4) = -22 * l * c;
-  mass(1, 5) = mass(5, 1) = -13 * l * c;
-  mass(2, 4) = mass(4, 2) = 13 * l * c;
-  mass(2, 2) = mass(5, 5) = 4 * l * l * c;
-  mass(2, 5) = mass(5, 2) = -3 * l * l * c;
-  return mass;
-}
+ private:
+  model::RayleighDamping coefficients(const std::optional<model::RayleighDamping>& own);
+  void scatter(std::vector<Eigen::Triplet<double>>& into, const Matrix& block,
+               const std::vector<Index>& rows) const;
+  void couple(const Matrix& block, const std::vector<model::ElementDof>& dofs,
+              const std::vector<Index>& rows);
+  void add_mass(Index row, double value, double mass_coefficient);
 
-// Local -> global: u_local = T u_global.
-Matrix6 beam_rotation(double cosine, double sine) {
-  Matrix6 t = Matrix6::Zero();
-  for (int node = 0; node < 2; ++node) {
-    const int o = 3 * node;
-    t(o, o) = cosine;
-    t(o, o + 1) = sine;
-    t(o + 1, o) = -sine;
-    t(o + 1, o + 1) = cosine;
-    t(o + 2, o + 2) = 1.0;
+  const model::DofMap& dofs_;
+  model::RayleighDamping model_damping_;
+  bool gather_coupling_;
+};
+
+ElementAssembly::ElementAssembly(const model::DofMap& dofs, const model::Model& model)
+    : lumped_mass(Vector::Zero(dofs.size())),
+      damping_diagonal(Vector::Zero(dofs.size())),
+      dofs_(dofs),
+      model_damping_(model.damping.value_or(model::RayleighDamping{})),
+      gather_coupling_(!model.support_excitations.empty()) {}
+
+void ElementAssembly::add(const model::Element& element) {
+  const std::vector<model::ElementDof> dofs = element.dofs();
+  std::vector<Index> rows;  // equation of each element DOF, -1 where fixed
+  for (const model::ElementDof& dof : dofs) rows.push_back(dofs_.equation(dof.node, dof.direction));
+  const Matrix element_stiffness = element.stiffness();
+  scatter(stiffness, element_stiffness, rows);
+  if (gather_coupling_) couple(element_stiffness, dofs, rows);
+  const model::RayleighDamping c = coefficients(element.damping());
+  if (c.stiffness_coefficient != 0.0)
+    scatter(damping, c.stiffness_coefficient * element_stiffness, rows);
+  const model::ElementMass mass = element.mass();
+  if (mass.is_consistent()) {
+    has_consistent_mass = true;
+    scatter(consistent_mass, mass.consistent, rows);
+    if (c.mass_coefficient != 0.0) scatter(damping, c.mass_coefficient * mass.consistent, rows);
+  } else {
+    for (std::size_t k = 0; k < rows.size(); ++k)
+      add_mass(rows[k], mass.lumped[static_cast<Index>(k)], c.mass_coefficient);
   }
-  return t;
+}
+
+void ElementAssembly::add(const model::NodalMass& mass) {
+  const double a0 = coefficients(mass.damping).mass_coefficient;
+  const int dpn = dofs_.dofs_per_node();
+  for (int d = 0; d < std::min(dpn, 2); ++d) add_mass(dofs_.equation(mass.node, d), mass.mass, a0);
+  if (dpn == 3) add_mass(dofs_.equation(mass.node, 2), mass.rotary_inertia, a0);
+}
+
+model::RayleighDamping ElementAssembly::coefficients(
+    const std::optional<model::RayleighDamping>& own) {
+  own_damping = own_damping || own.has_value();
+  return own.value_or(model_damping_);
+}
+
+void ElementAssembly::scatter(std::vector<Eigen::Triplet<double>>& into, const Matrix& block,
+                              const std::vector<Index>& rows) const {
+  for (std::size_t a = 0; a < rows.size(); ++a) {
+    if (rows[a] < 0) continue;
+    for (std::size_t b = 0; b < rows.size(); ++b) {
+      const double value = block(static_cast<Index>(a), static_cast<Index>(b));
+      if (rows[b] >= 0 && value != 0.0) into.emplace_back(rows[a], rows[b], value);
+    }
+  }
+}
+
+void ElementAssembly::couple(const Matrix& block, const std::vector<model::ElementDof>& dofs,
+                             const std::vector<Index>& rows) {
+  for (std::size_t a = 0; a < rows.size(); ++a) {
+    if (rows[a] < 0) continue;
+    for (std::size_t b = 0; b < rows.size(); ++b)
+      if (rows[b] < 0)
+        support_coupling[dofs[b].node * dofs_.dofs_per_node() + dofs[b].direction].emplace_back(
+            rows[a], block(static_cast<Index>(a), static_cast<Index>(b)));
+  }
+}
+
+void ElementAssembly::add_mass(Index row, double value, double mass_coefficient) {
+  if (row < 0) return;
+  lumped_mass[row] += value;
+  damping_diagonal[row] += mass_coefficient * value;
+}
+
+// A free DOF needs mass or element stiffness: massless DOFs with stiffness (rotations
+// without rotary inertia, contact points on a column) have static equations; one with neither
+// would make the equations singular.
+void check_every_free_dof_is_held(const model::Model& model, const model::DofMap& dofs,
+                                  const ElementAssembly& elements) {
+  Vector diagonal_mass = elements.lumped_mass;
+  if (elements.has_consistent_mass) {
+    for (const auto& entry : elements.consistent_mass)
+      if (entry.row() == entry.col()) diagonal_mass[entry.row()] += entry.value();
+  }
+  Vector diagonal_stiffness = Vector::Zero(dofs.size());
+  for (const auto& entry : elements.stiffness)
+    if (entry.row() == entry.col()) diagonal_stiffness[entry.row()] += entry.value();
+  for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
+    for (int d = 0; d < std::min(dofs.dofs_per_node(), 2); ++d)
+      if (const Index row = dofs.equation(node, d);
+          row >= 0 && !(diagonal_mass[row] > 0.0) && !(diagonal_stiffness[row] > 0.0))
+        throw InputError(
+            "", fmt::format("/nodes/{}", node),
+            fmt::format("node '{}' has neither mass nor stiffness in direction {} (add "
+                        "a mass, an element, or a support)",
+                        model.nodes[static_cast<std::size_t>(node)].id, model::direction_name(d)));
 }
 
 }  // namespace
@@ -95,166 +165,13 @@ Matrix6 beam_rotation(double cosine, double sine) {
 StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
   const Index n = dofs_.size();
   const int dpn = dofs_.dofs_per_node();
-  mass_ = Vector::Zero(n);
-  std::vector<Eigen::Triplet<double>> stiffness, consistent_mass, damping;
-  // Each element's own Rayleigh coefficients, or the model's: C = sum a0_e M_e + a1_e K_e.
-  bool own_damping = false;
-  const model::RayleighDamping global = model.damping.value_or(model::RayleighDamping{});
-  auto coefficients = [&](const std::optional<model::RayleighDamping>& own) {
-    own_damping = own_damping || own.has_value();
-    return own.value_or(global);
-  };
-  Vector damping_diagonal = Vector::Zero(n);
-
-  // Scatter a block over (node, direction) pairs, dropping fixed DOFs.
-  auto scatter = [&](std::vector<Eigen::Triplet<double>>& into, const auto& block,
-                     const std::vector<std::pair<Index, int>>& dofs) {
-    for (std::size_t a = 0; a < dofs.size(); ++a) {
-      const Index row = dofs_.equation(dofs[a].first, dofs[a].second);
-      if (row < 0) continue;
-      for (std::size_t b = 0; b < dofs.size(); ++b) {
-        const Index col = dofs_.equation(dofs[b].first, dofs[b].second);
-        const double value = block(static_cast<Index>(a), static_cast<Index>(b));
-        if (col >= 0 && value != 0.0) into.emplace_back(row, col, value);
-      }
-    }
-  };
-  // K_fs, stiffness between free DOFs and fixed ones, by fixed DOF (node * dpn + direction):
-  // only needed when supports move differently (multi-support excitation).
-  const bool moving_supports = !model.support_excitations.empty();
-  std::map<Index, std::vector<std::pair<Index, double>>> support_coupling;
-  auto couple = [&](const auto& block, const std::vector<std::pair<Index, int>>& dofs) {
-    if (!moving_supports) return;
-    for (std::size_t a = 0; a < dofs.size(); ++a) {
-      const Index row = dofs_.equation(dofs[a].first, dofs[a].second);
-      if (row < 0) continue;
-      for (std::size_t b = 0; b < dofs.size(); ++b)
-        if (dofs_.equation(dofs[b].first, dofs[b].second) < 0)
-          support_coupling[dofs[b].first * dpn + dofs[b].second].emplace_back(
-              row, block(static_cast<Index>(a), static_cast<Index>(b)));
-    }
-  };
-  auto add_mass = [&](Index node, int direction, double value, double mass_coefficient) {
-    if (const Index row = dofs_.equation(node, direction); row >= 0) {
-      mass_[row] += value;
-      damping_diagonal[row] += mass_coefficient * value;
-    }
-  };
-
-  for (const model::Truss& truss : model.trusses) {
-    const double length = model.element_length(truss);
-    const auto& a = model.nodes[static_cast<std::size_t>(truss.node_i)].position;
-    const auto& b = model.nodes[static_cast<std::size_t>(truss.node_j)].position;
-    const double cosines[2] = {(b[0] - a[0]) / length, (b[1] - a[1]) / length};
-    const double axial = truss.youngs_modulus * truss.area / length;
-    const int translations = std::min(dpn, 2);
-    std::vector<std::pair<Index, int>> dofs;
-    for (Index node : {truss.node_i, truss.node_j})
-      for (int d = 0; d < translations; ++d) dofs.emplace_back(node, d);
-    Matrix block(dofs.size(), dofs.size());
-    for (std::size_t p = 0; p < dofs.size(); ++p)
-      for (std::size_t q = 0; q < dofs.size(); ++q) {
-        const double sign = (p / translations == q / translations) ? 1.0 : -1.0;
-        block(p, q) = sign * axial * cosines[dofs[p].second] * cosines[dofs[q].second];
-      }
-    scatter(stiffness, block, dofs);
-    couple(block, dofs);
-    const model::RayleighDamping c = coefficients(truss.damping);
-    if (c.stiffness_coefficient != 0.0)
-      scatter(damping, Matrix(c.stiffness_coefficient * block), dofs);
-    for (Index node : {truss.node_i, truss.node_j})
-      for (int d = 0; d < translations; ++d)
-        add_mass(node, d, 0.5 * truss.density * truss.area * length, c.mass_coefficient);
-  }
-
-  bool consistent = false;
-  for (const model::Beam& beam : model.beams) {
-    const double length = model.length(beam.node_i, beam.node_j);
-    const auto& a = model.nodes[static_cast<std::size_t>(beam.node_i)].position;
-    const auto& b = model.nodes[static_cast<std::size_t>(beam.node_j)].position;
-    const Matrix6 t = beam_rotation((b[0] - a[0]) / length, (b[1] - a[1]) / length);
-    const std::vector<std::pair<Index, int>> dofs = {{beam.node_i, 0}, {beam.node_i, 1},
-                                                     {beam.node_i, 2}, {beam.node_j, 0},
-                                                     {beam.node_j, 1}, {beam.node_j, 2}};
-    const Matrix6 element_stiffness = t.transpose() * beam_local_stiffness(beam, length) * t;
-    scatter(stiffness, element_stiffness, dofs);
-    couple(element_stiffness, dofs);
-    const model::RayleighDamping c = coefficients(beam.damping);
-    if (c.stiffness_coefficient != 0.0)
-      scatter(damping, Matrix6(c.stiffness_coefficient * element_stiffness), dofs);
-    const double mass_per_length = beam.density * beam.area + beam.extra_mass;
-    if (beam.consistent_mass) {
-      consistent = true;
-      const Matrix6 element_mass =
-          t.transpose() * beam_consistent_mass(mass_per_length, length) * t;
-      scatter(consistent_mass, element_mass, dofs);
-      if (c.mass_coefficient != 0.0)
-        scatter(damping, Matrix6(c.mass_coefficient * element_mass), dofs);
-    } else {
-      for (Index node : {beam.node_i, beam.node_j})
-        for (int d = 0; d < 2; ++d)
-          add_mass(node, d, 0.5 * mass_per_length * length, c.mass_coefficient);
-    }
-  }
-
-  for (const model::Quad& quad : model.quads) {
-    QuadCorners corners;
-    std::vector<std::pair<Index, int>> dofs;
-    for (int a = 0; a < 4; ++a) {
-      const Index node = quad.nodes[static_cast<std::size_t>(a)];
-      corners[static_cast<std::size_t>(a)] = model.nodes[static_cast<std::size_t>(node)].position;
-      dofs.emplace_back(node, 0);
-      dofs.emplace_back(node, 1);
-    }
-    const Matrix8 element_stiffness = quad_stiffness(quad, corners);
-    scatter(stiffness, element_stiffness, dofs);
-    couple(element_stiffness, dofs);
-    const model::RayleighDamping c = coefficients(quad.damping);
-    if (c.stiffness_coefficient != 0.0)
-      scatter(damping, Matrix8(c.stiffness_coefficient * element_stiffness), dofs);
-    const Matrix8 element_mass = quad_consistent_mass(quad, corners);
-    if (quad.consistent_mass) {
-      consistent = true;
-      scatter(consistent_mass, element_mass, dofs);
-      if (c.mass_coefficient != 0.0)
-        scatter(damping, Matrix8(c.mass_coefficient * element_mass), dofs);
-    } else {
-      // Row sums: positive for the bilinear shapes, a quarter of the mass per node of a
-      // parallelogram.
-      const Eigen::Matrix<double, 8, 1> lumped = element_mass.rowwise().sum();
-      for (int k = 0; k < 8; ++k)
-        add_mass(dofs[static_cast<std::size_t>(k)].first, dofs[static_cast<std::size_t>(k)].second,
-                 lumped[k], c.mass_coefficient);
-    }
-  }
-
-  for (const model::NodalMass& lumped : model.masses) {
-    const double a0 = coefficients(lumped.damping).mass_coefficient;
-    for (int d = 0; d < std::min(dpn, 2); ++d) add_mass(lumped.node, d, lumped.mass, a0);
-    if (dpn == 3) add_mass(lumped.node, 2, lumped.rotary_inertia, a0);
-  }
-
-  // A free DOF needs mass or element stiffness: massless DOFs with stiffness (rotations
-  // without rotary inertia, contact points on a column) have static equations; one with neither
-  // would make the equations singular.
-  Vector diagonal_mass = mass_;
-  if (consistent) {
-    for (const auto& entry : consistent_mass)
-      if (entry.row() == entry.col()) diagonal_mass[entry.row()] += entry.value();
-  }
-  Vector diagonal_stiffness = Vector::Zero(n);
-  for (const auto& entry : stiffness)
-    if (entry.row() == entry.col()) diagonal_stiffness[entry.row()] += entry.value();
-  for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
-    for (int d = 0; d < std::min(dpn, 2); ++d)
-      if (const Index row = dofs_.equation(node, d);
-          row >= 0 && !(diagonal_mass[row] > 0.0) && !(diagonal_stiffness[row] > 0.0))
-        throw InputError(
-            "", fmt::format("/nodes/{}", node),
-            fmt::format("node '{}' has neither mass nor stiffness in direction {} (add "
-                        "a mass, an element, or a support)",
-                        model.nodes[static_cast<std::size_t>(node)].id, model::direction_name(d)));
-  if (consistent) {
+  ElementAssembly elements(dofs_, model);
+  for (const auto& element : model.elements) elements.add(*element);
+  for (const model::NodalMass& mass : model.masses) elements.add(mass);
+  check_every_free_dof_is_held(model, dofs_, elements);
+  mass_ = std::move(elements.lumped_mass);
+  if (elements.has_consistent_mass) {
+    std::vector<Eigen::Triplet<double>>& consistent_mass = elements.consistent_mass;
     for (Index i = 0; i < n; ++i)
       if (mass_[i] != 0.0) consistent_mass.emplace_back(i, i, mass_[i]);
     mass_matrix_.resize(n, n);
@@ -262,7 +179,7 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
   }
 
   stiffness_.resize(n, n);
-  stiffness_.setFromTriplets(stiffness.begin(), stiffness.end());
+  stiffness_.setFromTriplets(elements.stiffness.begin(), elements.stiffness.end());
   stiffness_.prune(0.0);
   if (const Index b = BandedLdlt::bandwidth_of(stiffness_);
       n > 0 && (2 * b + 1) * n <= 2 * stiffness_.nonZeros()) {
@@ -281,10 +198,12 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
   }
 
   if (model.damping) damping_ = *model.damping;
-  if (own_damping) {
+  if (elements.own_damping) {
     // Elements damp with their own coefficients: C is assembled, not a0 M + a1 K.
+    std::vector<Eigen::Triplet<double>>& damping = elements.damping;
     for (Index i = 0; i < n; ++i)
-      if (damping_diagonal[i] != 0.0) damping.emplace_back(i, i, damping_diagonal[i]);
+      if (elements.damping_diagonal[i] != 0.0)
+        damping.emplace_back(i, i, elements.damping_diagonal[i]);
     damping_matrix_.resize(n, n);
     damping_matrix_.setFromTriplets(damping.begin(), damping.end());
     damping_matrix_.prune(0.0);
@@ -370,7 +289,7 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
         -(link.velocity_j[0] * rows[r].direction[0] + link.velocity_j[1] * rows[r].direction[1]);
   }
 
-  if (!moving_supports) return;
+  if (model.support_excitations.empty()) return;
   // Any influence matrix R gives exact equations if the static term -(K_ff R + K_fs) u_s(t) is
   // loaded too; R is chosen as the quasi-static influence of the supports on the structure with
   // its links at their initial tangent (bearings hold the girders), so that u_dyn stays small.
@@ -397,7 +316,8 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
       // K_fs for the support moving along the direction.
       Vector coupling = Vector::Zero(n);
       for (int d = 0; d < std::min(dpn, 2); ++d)
-        if (auto found = support_coupling.find(node * dpn + d); found != support_coupling.end())
+        if (auto found = elements.support_coupling.find(node * dpn + d);
+            found != elements.support_coupling.end())
           for (const auto& [row, value] : found->second)
             coupling[row] += excitation.direction[static_cast<std::size_t>(d)] * value;
       // Links attached to the support itself move with it.

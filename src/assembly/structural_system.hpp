@@ -1,6 +1,6 @@
 #pragma once
 // The assembled equations of a Model: mass M (a diagonal when every element lumps its mass,
-// sparse with consistent beam masses), stiffness K of the linear elements, Rayleigh damping
+// sparse with consistent element masses), stiffness K of the linear elements, Rayleigh damping
 // C = a0 M + a1 K only when the model has damping, loads and uniform ground excitation
 // -M iota a_g(t), and the links as a LinkSet. Only the free DOFs of the scene are numbered.
 #include <Eigen/SparseCore>

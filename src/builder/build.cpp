@@ -10,8 +10,8 @@
 #include <numbers>
 
 #include "assembly/modal_analysis.hpp"
-#include "assembly/quad_element.hpp"
 #include "assembly/structural_system.hpp"
+#include "builder/element_resolver.hpp"
 #include "builder/generators.hpp"
 #include "core/errors.hpp"
 #include "integrators/central_difference.hpp"
@@ -253,82 +253,12 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
 
   for (const NodeSpec& node : spec.nodes) model.nodes.push_back({node.id, {node.x, node.y}});
 
-  const auto element_origin =
-      origin_of(user_spec.elements.size(), "elements", spec.generated_from.elements);
-  for (std::size_t k = 0; k < spec.elements.size(); ++k) {
-    const ElementSpec& element = spec.elements[k];
-    const std::string path = element_origin(k);
-    const Index node_i = resolve.node(built.node_index, element.node_i, path + "/nodes/0");
-    const Index node_j = resolve.node(built.node_index, element.node_j, path + "/nodes/1");
-    if (node_i == node_j) resolve.fail(path + "/nodes", "an element needs two different nodes");
-    auto material = materials.find(element.material);
-    if (material == materials.end())
-      resolve.fail(path + "/material",
-                   fmt::format("material '{}' does not exist", element.material));
-    const MaterialSpec& m = spec.materials[static_cast<std::size_t>(material->second)];
-    std::optional<model::RayleighDamping> own;
-    if (element.rayleigh)
-      own = model::RayleighDamping{(*element.rayleigh)[0], (*element.rayleigh)[1]};
-    if (element.type == "quad") {
-      model::Quad quad{element.id,
-                       {node_i, node_j, 0, 0},
-                       m.youngs_modulus,
-                       m.poisson_ratio.value_or(0.0),
-                       element.thickness,
-                       m.density,
-                       element.plane_strain,
-                       element.consistent_mass,
-                       own};
-      assembly::QuadCorners corners;
-      for (std::size_t a = 0; a < 4; ++a) {
-        if (a >= 2)
-          quad.nodes[a] = resolve.node(built.node_index, element.more_nodes[a - 2],
-                                       fmt::format("{}/nodes/{}", path, a));
-        for (std::size_t b = 0; b < a; ++b)
-          if (quad.nodes[a] == quad.nodes[b])
-            resolve.fail(path + "/nodes", fmt::format("quad '{}' names node '{}' twice", element.id,
-                                                      model.nodes[quad.nodes[a]].id));
-        corners[a] = model.nodes[static_cast<std::size_t>(quad.nodes[a])].position;
-      }
-      const double jacobian = assembly::quad_smallest_jacobian(corners);
-      if (!(jacobian > 0.0) || !std::isfinite(jacobian))
-        resolve.fail(path + "/nodes",
-                     fmt::format("quad '{}' is degenerate, inverted or numbered clockwise (its "
-                                 "nodes must go counter-clockwise round a convex quadrilateral)",
-                                 element.id));
-      if (!m.poisson_ratio)
-        resolve.fail(
-            path + "/material",
-            fmt::format("material '{}' needs a 'poisson_ratio' for a quad", element.material));
-      model.quads.push_back(std::move(quad));
-      continue;
-    }
-    if (!(model.length(node_i, node_j) > 0.0))
-      resolve.fail(path + "/nodes", fmt::format("element '{}' has zero length (nodes '{}' and '{}' "
-                                                "are at the same place)",
-                                                element.id, element.node_i, element.node_j));
-    // Coordinates of ±1e308 are each finite, their distance is not (and the element's stiffness
-    // would be 0, reported later as a node without stiffness).
-    if (!std::isfinite(model.length(node_i, node_j)))
-      resolve.fail(
-          path + "/nodes",
-          fmt::format("element '{}' is infinitely long (nodes '{}' and '{}' are {:g} "
-                      "apart)",
-                      element.id, element.node_i, element.node_j, model.length(node_i, node_j)));
-    if (element.type == "beam") {
-      model.beams.push_back({element.id, node_i, node_j, m.youngs_modulus, element.area,
-                             element.inertia, m.density, element.extra_mass,
-                             element.consistent_mass, own});
-    } else {
-      model.trusses.push_back(
-          {element.id, node_i, node_j, m.youngs_modulus, element.area, m.density, own});
-    }
-  }
-  if (!model.quads.empty() && !model.beams.empty())
-    for (std::size_t k = 0; k < spec.elements.size(); ++k)
-      if (spec.elements[k].type == "quad")
-        resolve.fail(element_origin(k) + "/type",
-                     "quads (2 DOFs per node) cannot share a scene with beams (3 DOFs per node)");
+  model.elements = resolve_elements(
+      spec, model, materials,
+      origin_of(user_spec.elements.size(), "elements", spec.generated_from.elements),
+      [&](const std::string& id, const std::string& path) {
+        return resolve.node(built.node_index, id, path);
+      });
 
   for (std::size_t k = 0; k < spec.masses.size(); ++k)
     model.masses.push_back(

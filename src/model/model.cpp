@@ -1,28 +1,25 @@
 #include "model/model.hpp"
 
-#include <cmath>
+#include <algorithm>
 
 namespace pound::model {
 
-double Model::length(Index node_i, Index node_j) const {
-  const Coordinates& a = nodes[static_cast<std::size_t>(node_i)].position;
-  const Coordinates& b = nodes[static_cast<std::size_t>(node_j)].position;
-  return std::hypot(b[0] - a[0], dimension == 2 ? b[1] - a[1] : 0.0);
-}
-
-double Model::element_length(const Truss& truss) const {
-  return length(truss.node_i, truss.node_j);
+int Model::dofs_per_node() const {
+  int count = dimension;
+  for (const auto& element : elements)
+    for (int direction : element->directions()) count = std::max(count, direction + 1);
+  return count;
 }
 
 DofMap::DofMap(const Model& model) : dofs_per_node_(model.dofs_per_node()) {
   equations_.assign(model.nodes.size() * static_cast<std::size_t>(dofs_per_node_), 0);
-  // In a frame scene only nodes that a beam or a rotational link touches turn; the others
-  // (truss joints, lumped masses, contact points) have no rotation to solve for.
+  // In a frame scene only nodes that an element or a rotational link turns have a rotation;
+  // the others (truss joints, lumped masses, contact points) have none to solve for.
   if (dofs_per_node_ == 3) {
     std::vector<bool> turns(model.nodes.size(), false);
-    for (const Beam& beam : model.beams)
-      turns[static_cast<std::size_t>(beam.node_i)] = turns[static_cast<std::size_t>(beam.node_j)] =
-          true;
+    for (const auto& element : model.elements)
+      if (std::ranges::find(element->directions(), 2) != element->directions().end())
+        for (Index node : element->nodes()) turns[static_cast<std::size_t>(node)] = true;
     for (const Link& link : model.links)
       if (link.rotational)
         turns[static_cast<std::size_t>(link.node_i)] =

@@ -5,7 +5,7 @@
 // Degrees of freedom follow the scene: a 1-D (axial) scene carries 1 DOF per node (u_x); a
 // plane truss scene carries 2 (u_x, u_y); a plane frame scene (any beam-column) carries 3
 // (u_x, u_y, theta_z); a plane continuum scene (quads, no beams) carries 2. Nothing is padded
-// to 3 or 6.
+// to 3 or 6: each element says which directions it needs (model/element.hpp).
 #include <array>
 #include <functional>
 #include <memory>
@@ -16,65 +16,14 @@
 #include "core/types.hpp"
 #include "links/law_registry.hpp"
 #include "links/link_context.hpp"
+#include "model/element.hpp"
 #include "model/ground_motion.hpp"
 
 namespace pound::model {
 
-using Coordinates = std::array<double, 2>;  // (x, y); y unused in 1-D scenes
-
 struct Node {
   std::string id;
   Coordinates position{};
-};
-
-// Rayleigh damping C = a0 M + a1 K of the linear elements (links are never part of it).
-struct RayleighDamping {
-  double mass_coefficient = 0.0;       // a0 [1/T]
-  double stiffness_coefficient = 0.0;  // a1 [T]
-};
-
-// Two-node axial element (rod / truss), linear elastic, lumped mass rho A L / 2 per node.
-struct Truss {
-  std::string id;
-  Index node_i = 0;
-  Index node_j = 0;
-  double youngs_modulus = 0.0;             // E [F/L^2]
-  double area = 0.0;                       // A [L^2]
-  double density = 0.0;                    // rho [M/L^3]
-  std::optional<RayleighDamping> damping;  // its own, instead of the model's
-};
-
-// Two-node 2-D elastic beam-column (Euler-Bernoulli, axial and bending), for girders, piers
-// and storey columns. Mass rho A per length (plus any extra mass per length), lumped (rho A L / 2
-// per end, no rotary inertia) or consistent.
-struct Beam {
-  std::string id;
-  Index node_i = 0;
-  Index node_j = 0;
-  double youngs_modulus = 0.0;  // E [F/L^2]
-  double area = 0.0;            // A [L^2]
-  double inertia = 0.0;         // I [L^4]
-  double density = 0.0;         // rho [M/L^3]
-  double extra_mass = 0.0;      // [M/L], e.g. deck, barriers, tributary floor
-  bool consistent_mass = false;
-  std::optional<RayleighDamping> damping;  // its own, instead of the model's
-};
-
-// Four-node bilinear quadrilateral for plane continua (Suzuki & Toi's blocks and 2-D rods),
-// nodes counter-clockwise, 2 DOFs per node. Plane stress (thickness t) or plane strain (per
-// thickness t of the out-of-plane length). Stiffness by 2 x 2 Gauss points, exact for
-// parallelograms; mass lumped (the row sums of the consistent mass, rho t A / 4 per node of a
-// parallelogram) or consistent.
-struct Quad {
-  std::string id;
-  std::array<Index, 4> nodes{};
-  double youngs_modulus = 0.0;  // E [F/L^2]
-  double poisson_ratio = 0.0;   // nu, in [0, 0.5)
-  double thickness = 0.0;       // t [L]
-  double density = 0.0;         // rho [M/L^3]
-  bool plane_strain = false;
-  bool consistent_mass = false;
-  std::optional<RayleighDamping> damping;  // its own, instead of the model's
 };
 
 struct NodalMass {
@@ -142,9 +91,8 @@ struct Link {
 struct Model {
   int dimension = 1;  // 1 or 2
   std::vector<Node> nodes;
-  std::vector<Truss> trusses;
-  std::vector<Beam> beams;
-  std::vector<Quad> quads;
+  // Shared, so that a Model stays copyable: an element never changes once made.
+  std::vector<std::shared_ptr<const Element>> elements;
   std::vector<NodalMass> masses;
   std::vector<Support> supports;
   std::vector<NodalLoad> loads;
@@ -154,9 +102,8 @@ struct Model {
   std::vector<UniformExcitation> excitations;
   std::vector<SupportExcitation> support_excitations;
 
-  int dofs_per_node() const { return dimension == 1 ? 1 : (beams.empty() ? 2 : 3); }
-  double length(Index node_i, Index node_j) const;
-  double element_length(const Truss& truss) const;
+  // The scene's translations, or more where an element needs more (a beam's rotation).
+  int dofs_per_node() const;
 };
 
 // A DOF direction as messages name it: 0 x, 1 y, 2 rotation.

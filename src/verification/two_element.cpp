@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "assembly/structural_system.hpp"
+#include "assembly/truss.hpp"
 #include "links/extended_penalty.hpp"
 
 namespace pound::verification {
@@ -23,7 +24,15 @@ model::Model two_element_model(const TwoElementCase& c) {
              {"mass_2", {0.0, 0.0}},
              {"support_2", {1.0, 0.0}}};
   // Unit-length massless trusses with E A = k.
-  m.trusses = {{"spring_1", 0, 1, c.k1, 1.0, 0.0}, {"spring_2", 2, 3, c.k2, 1.0, 0.0}};
+  auto spring = [&m](const char* id, Index i, Index j, double k) {
+    return std::make_shared<const assembly::Truss>(
+        id,
+        std::array<model::ElementNode, 2>{{{i, m.nodes[static_cast<std::size_t>(i)].position},
+                                           {j, m.nodes[static_cast<std::size_t>(j)].position}}},
+        1, assembly::Truss::Section{.youngs_modulus = k, .area = 1.0, .density = 0.0},
+        std::nullopt);
+  };
+  m.elements = {spring("spring_1", 0, 1, c.k1), spring("spring_2", 2, 3, c.k2)};
   m.masses = {{1, c.m1}, {2, c.m2}};
   m.supports = {{0, {true, false}}, {3, {true, false}}};
   const links::ExtendedPenalty::Numbers numbers{c.alpha0, 0.0, c.alpha2};

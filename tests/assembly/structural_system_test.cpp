@@ -11,19 +11,25 @@
 #include <string>
 
 #include "assembly/banded_ldlt.hpp"
+#include "assembly/beam.hpp"
+#include "assembly/truss.hpp"
 #include "core/errors.hpp"
 #include "links/gap_spring.hpp"
+#include "support/elements.hpp"
 
 namespace pound::assembly {
 namespace {
 
-model::Truss truss(Index i, Index j, double youngs_modulus, double area, double density) {
-  return {.id = fmt::format("e{}_{}", i, j),
-          .node_i = i,
-          .node_j = j,
-          .youngs_modulus = youngs_modulus,
-          .area = area,
-          .density = density};
+// A truss between nodes i and j of `m` (already placed).
+std::shared_ptr<const model::Element> truss(const model::Model& m, Index i, Index j,
+                                            double youngs_modulus, double area, double density) {
+  const auto end = [&m](Index node) {
+    return model::ElementNode{node, m.nodes[static_cast<std::size_t>(node)].position};
+  };
+  return std::make_shared<const Truss>(
+      fmt::format("e{}_{}", i, j), std::array{end(i), end(j)}, m.dimension,
+      Truss::Section{.youngs_modulus = youngs_modulus, .area = area, .density = density},
+      std::nullopt);
 }
 
 model::Link link(Index i, Index j, model::Coordinates axis, double gap = 0.0) {
@@ -44,8 +50,8 @@ model::Model chain() {
   m.dimension = 1;
   for (double x : {0.0, 1.0, 3.0, 4.5})
     m.nodes.push_back({fmt::format("n{}", m.nodes.size()), {x, 0.0}});
-  m.trusses = {truss(0, 1, 100.0, 2.0, 1.0), truss(1, 2, 200.0, 1.0, 0.5),
-               truss(2, 3, 50.0, 3.0, 2.0)};
+  m.elements = {truss(m, 0, 1, 100.0, 2.0, 1.0), truss(m, 1, 2, 200.0, 1.0, 0.5),
+                truss(m, 2, 3, 50.0, 3.0, 2.0)};
   m.supports = {{.node = 0, .fixed = {true, false}}};
   m.masses = {{.node = 3, .mass = 7.0}};
   return m;
@@ -59,7 +65,7 @@ model::Model inclined_truss() {
   model::Model m;
   m.dimension = 2;
   m.nodes = {{"a", {0.0, 0.0}}, {"b", {2.0 * kCos, 2.0 * kSin}}};
-  m.trusses = {truss(0, 1, 10.0, 3.0, 0.5)};
+  m.elements = {truss(m, 0, 1, 10.0, 3.0, 0.5)};
   return m;
 }
 
@@ -162,7 +168,7 @@ TEST(StructuralSystem, FreeNodeWithoutMassIsAnInputError) {
 // A massless end of an element has a static equation (its stiffness), which is fine...
 TEST(StructuralSystem, MasslessElementEndIsAStaticDof) {
   model::Model m = chain();
-  m.trusses[2].density = 0.0;
+  m.elements[2] = truss(m, 2, 3, 50.0, 3.0, 0.0);
   m.masses.clear();
   EXPECT_NO_THROW(StructuralSystem{m});
 }
@@ -206,13 +212,14 @@ TEST(StructuralSystem, FactorSolvesTheEffectiveMatrix) {
   model::Model ring;
   ring.dimension = 1;
   for (int i = 0; i < 40; ++i) ring.nodes.push_back({fmt::format("r{}", i), {1.0 * i, 0.0}});
-  for (Index i = 0; i + 1 < 40; ++i) ring.trusses.push_back(truss(i, i + 1, 100.0, 1.0, 0.1));
-  ring.trusses.push_back(truss(0, 39, 100.0, 1.0, 0.1));
+  for (Index i = 0; i + 1 < 40; ++i)
+    ring.elements.push_back(truss(ring, i, i + 1, 100.0, 1.0, 0.1));
+  ring.elements.push_back(truss(ring, 0, 39, 100.0, 1.0, 0.1));
   ring.supports = {{.node = 20, .fixed = {true, false}}};
 
   model::Model plane = inclined_truss();
   plane.nodes.push_back({"c", {4.0, 0.0}});
-  plane.trusses.push_back(truss(1, 2, 10.0, 3.0, 0.5));
+  plane.elements.push_back(truss(plane, 1, 2, 10.0, 3.0, 0.5));
   plane.supports = {{.node = 0, .fixed = {true, true}}};
 
   const model::Model models[] = {chain(), plane, ring};
@@ -229,6 +236,98 @@ TEST(StructuralSystem, FactorSolvesTheEffectiveMatrix) {
       EXPECT_LE(error, 1e-12) << names[k];
     }
   }
+}
+
+// A braced portal with an outrigger, nothing supported: columns 0-1 and 2-3 (lumped mass), a
+// girder 1-2 (consistent mass, extra mass per length), a brace 0-2 and an outrigger 2-4
+// (trusses; node 4 does not turn), point masses on nodes 1 and 4. The damping is every part's
+// own, the same a0 and a1 everywhere.
+constexpr double kA0 = 0.3, kA1 = 0.002;
+model::Model free_portal() {
+  model::Model m;
+  m.dimension = 2;
+  m.nodes = {{"0", {0.0, 0.0}},
+             {"1", {0.0, 3.0}},
+             {"2", {4.0, 3.0}},
+             {"3", {4.0, 0.0}},
+             {"4", {6.0, 3.0}}};
+  const model::RayleighDamping damping{kA0, kA1};
+  const auto end = [&m](Index node) {
+    return model::ElementNode{node, m.nodes[static_cast<std::size_t>(node)].position};
+  };
+  const auto member = [&](Index i, Index j, double extra_mass, bool consistent) {
+    return std::make_shared<const Beam>(fmt::format("b{}_{}", i, j), std::array{end(i), end(j)},
+                                        Beam::Section{.youngs_modulus = 3.0e4,
+                                                      .area = 0.2,
+                                                      .inertia = 0.004,
+                                                      .density = 2.5,
+                                                      .extra_mass = extra_mass},
+                                        consistent, damping);
+  };
+  const auto bar = [&](Index i, Index j) {
+    return std::make_shared<const Truss>(
+        fmt::format("t{}_{}", i, j), std::array{end(i), end(j)}, 2,
+        Truss::Section{.youngs_modulus = 2.0e5, .area = 0.01, .density = 7.8}, damping);
+  };
+  m.elements = {member(0, 1, 0.0, false), member(1, 2, 1.5, true), member(2, 3, 0.0, false),
+                bar(0, 2), bar(2, 4)};
+  m.masses = {{.node = 1, .mass = 5.0, .rotary_inertia = 1.0, .damping = damping},
+              {.node = 4, .mass = 2.0, .damping = damping}};
+  return m;
+}
+
+// The rigid motions of the portal's free DOFs: translations along x and y, and a rotation about
+// the origin (u = -theta y, v = theta x, theta where the node turns).
+std::vector<Vector> rigid_motions(const model::Model& m, const model::DofMap& dofs) {
+  std::vector<Vector> motions(3, Vector::Zero(dofs.size()));
+  for (Index node = 0; node < static_cast<Index>(m.nodes.size()); ++node) {
+    const model::Coordinates& p = m.nodes[static_cast<std::size_t>(node)].position;
+    const double rotation[3] = {-p[1], p[0], 1.0};
+    for (int d = 0; d < 3; ++d)
+      if (const Index row = dofs.equation(node, d); row >= 0) {
+        if (d < 2) motions[static_cast<std::size_t>(d)][row] = 1.0;
+        motions[2][row] = rotation[d];
+      }
+  }
+  return motions;
+}
+
+TEST(StructuralSystem, AssemblyLosesNothing) {
+  const model::Model m = free_portal();
+  const StructuralSystem system(m);
+  ASSERT_EQ(system.size(), 5 * 3 - 1);  // node 4 does not turn
+  const Matrix k = Matrix(system.stiffness()), mass = Matrix(system.mass_matrix());
+  EXPECT_LE((k - k.transpose()).norm(), 1e-15 * k.norm());
+  EXPECT_LE((mass - mass.transpose()).norm(), 1e-15 * mass.norm());
+
+  // Rigid motions strain nothing, and carry the whole mass: rho A L of each element, the
+  // girder's extra mass per length, the point masses.
+  const std::vector<Vector> rigid = rigid_motions(m, system.dofs());
+  for (const Vector& u : rigid) EXPECT_LE((k * u).norm(), 1e-13 * k.norm() * u.norm());
+  const double total =
+      2.5 * 0.2 * (3.0 + 4.0 + 3.0) + 1.5 * 4.0 + 7.8 * 0.01 * (5.0 + 2.0) + 5.0 + 2.0;
+  for (int d = 0; d < 2; ++d) {
+    const Vector& u = rigid[static_cast<std::size_t>(d)];
+    EXPECT_NEAR(u.dot(mass * u), total, 1e-14 * total) << model::direction_name(d);
+  }
+
+  // The assembled energy is the elements' own, for any displacements.
+  const Vector u = random_vector(system.size(), 7);
+  double element_energy = 0.0;
+  for (const auto& element : m.elements) {
+    const Vector u_e = testing::element_displacements(system.dofs(), *element, u);
+    element_energy += u_e.dot(element->stiffness() * u_e);
+  }
+  EXPECT_NEAR(u.dot(k * u), element_energy, 1e-13 * element_energy);
+
+  // Every part damps with its own a0, a1, all equal: C = a0 M + a1 K.
+  ASSERT_TRUE(system.has_damping());
+  Vector c_u, k_u, m_u;
+  system.multiply_damping(u, c_u);
+  system.multiply_stiffness(u, k_u);
+  system.multiply_mass(u, m_u);
+  const Vector expected = kA0 * m_u + kA1 * k_u;
+  EXPECT_LE((c_u - expected).norm(), 1e-14 * expected.norm());
 }
 
 }  // namespace

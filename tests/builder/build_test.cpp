@@ -8,10 +8,12 @@
 #include <string>
 
 #include "assembly/structural_system.hpp"
+#include "assembly/truss.hpp"
 #include "core/errors.hpp"
 #include "io/model_reader.hpp"
 #include "links/extended_penalty.hpp"
 #include "links/gap_spring.hpp"
+#include "support/elements.hpp"
 
 namespace pound::builder {
 namespace {
@@ -84,7 +86,7 @@ double law_stiffness(const model::Link& link) {
 TEST(Build, UnchangedModelBuilds) {
   const BuiltModel built = build(spec_of(kModel));
   EXPECT_EQ(built.model.nodes.size(), 3u);
-  EXPECT_EQ(built.model.trusses.size(), 1u);
+  EXPECT_EQ(testing::element_count<assembly::Truss>(built.model), 1u);
   ASSERT_EQ(built.model.links.size(), 1u);
   EXPECT_EQ(built.model.links[0].node_i, built.node_index.at("b"));
   EXPECT_EQ(built.model.links[0].node_j, built.node_index.at("c"));
@@ -197,7 +199,7 @@ TEST(Build, RodPairExpandsIntoNodesElementsAndOneLink) {
   const model::Model& model = built.model;
   const int n = 10;
   EXPECT_EQ(model.nodes.size(), static_cast<std::size_t>(2 * (n + 1)));
-  EXPECT_EQ(model.trusses.size(), static_cast<std::size_t>(2 * n));
+  EXPECT_EQ(testing::element_count<assembly::Truss>(model), static_cast<std::size_t>(2 * n));
   EXPECT_TRUE(model.supports.empty());
   ASSERT_EQ(model.links.size(), 1u);
   const model::Link& link = model.links[0];
@@ -227,7 +229,7 @@ TEST(Build, StiffnessRatioIsTakenFromTheSofterAdjacentElement) {
     {"op": "replace", "path": "/generators/0/law/stiffness_ratio", "value": 1.5}])");
   const BuiltModel built = build(spec_of(unequal));
   EXPECT_EQ(built.model.nodes.size(), 11u + 5u);
-  EXPECT_EQ(built.model.trusses.size(), 10u + 4u);
+  EXPECT_EQ(testing::element_count<assembly::Truss>(built.model), 10u + 4u);
   ASSERT_EQ(built.model.links.size(), 1u);
   EXPECT_DOUBLE_EQ(law_stiffness(built.model.links[0]), 1.5 * 100.0);
 

@@ -3,9 +3,11 @@
 
 #include <cmath>
 
+#include "assembly/quad.hpp"
 #include "builder/build.hpp"
 #include "builder/generators.hpp"
 #include "io/model_reader.hpp"
+#include "support/elements.hpp"
 
 namespace pound::builder {
 namespace {
@@ -70,7 +72,7 @@ TEST(ContinuumScene, BlocksSurfacesAndContactsExpandAsDocumented) {
       built.model.links.at(static_cast<std::size_t>(built.link_index.at("c.a.2.2")));
   ASSERT_TRUE(middle.segment_end.has_value());
   EXPECT_NEAR(middle.segment_weight, 0.5, 1e-12);
-  EXPECT_EQ(built.model.quads.size(), 8u + 6u);
+  EXPECT_EQ(testing::element_count<assembly::Quad>(built.model), 8u + 6u);
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-#include "assembly/quad_element.hpp"
+#include "assembly/quad.hpp"
 
 #include <cmath>
 
@@ -43,12 +43,25 @@ Eigen::Matrix<double, 3, 8> strain_matrix(const ShapeAt& s) {
   return b;
 }
 
+constexpr int kDirections[] = {0, 1};
+
 }  // namespace
 
-Eigen::Matrix3d quad_elasticity(const model::Quad& quad) {
-  const double e = quad.youngs_modulus, nu = quad.poisson_ratio;
+Quad::Quad(std::string id, const std::array<model::ElementNode, 4>& corners,
+           const Material& material, bool consistent_mass,
+           std::optional<model::RayleighDamping> damping)
+    : Element(std::move(id),
+              {corners[0].index, corners[1].index, corners[2].index, corners[3].index}, damping),
+      corners_{corners[0].position, corners[1].position, corners[2].position, corners[3].position},
+      material_(material),
+      consistent_mass_(consistent_mass) {}
+
+std::span<const int> Quad::directions() const { return kDirections; }
+
+Eigen::Matrix3d Quad::elasticity() const {
+  const double e = material_.youngs_modulus, nu = material_.poisson_ratio;
   Eigen::Matrix3d d = Eigen::Matrix3d::Zero();
-  if (quad.plane_strain) {
+  if (material_.plane_strain) {
     const double f = e / ((1 + nu) * (1 - 2 * nu));
     d << 1 - nu, nu, 0, nu, 1 - nu, 0, 0, 0, (1 - 2 * nu) / 2;
     return f * d;
@@ -58,25 +71,33 @@ Eigen::Matrix3d quad_elasticity(const model::Quad& quad) {
   return f * d;
 }
 
-Matrix8 quad_stiffness(const model::Quad& quad, const QuadCorners& corners) {
-  const Eigen::Matrix3d d = quad_elasticity(quad);
+Matrix Quad::stiffness() const {
+  const Eigen::Matrix3d d = elasticity();
   Matrix8 k = Matrix8::Zero();
   for (double xi : {-kGauss, kGauss})
     for (double eta : {-kGauss, kGauss}) {
-      const ShapeAt s = shape_at(corners, xi, eta);
+      const ShapeAt s = shape_at(corners_, xi, eta);
       const Eigen::Matrix<double, 3, 8> b = strain_matrix(s);
-      k.noalias() += b.transpose() * d * b * (s.jacobian * quad.thickness);
+      k.noalias() += b.transpose() * d * b * (s.jacobian * material_.thickness);
     }
   // Exactly symmetric, so that K x by rows and the factorisations see one matrix.
-  return 0.5 * (k + k.transpose());
+  const Matrix8 symmetric = 0.5 * (k + k.transpose());
+  return symmetric;
 }
 
-Matrix8 quad_consistent_mass(const model::Quad& quad, const QuadCorners& corners) {
+model::ElementMass Quad::mass() const {
+  const Matrix8 m = consistent_mass();
+  if (consistent_mass_) return {.consistent = m};
+  const Eigen::Matrix<double, 8, 1> row_sums = m.rowwise().sum();
+  return {.lumped = row_sums};
+}
+
+Matrix8 Quad::consistent_mass() const {
   Matrix8 m = Matrix8::Zero();
   for (double xi : {-kGauss, kGauss})
     for (double eta : {-kGauss, kGauss}) {
-      const ShapeAt s = shape_at(corners, xi, eta);
-      const double w = quad.density * quad.thickness * s.jacobian;
+      const ShapeAt s = shape_at(corners_, xi, eta);
+      const double w = material_.density * material_.thickness * s.jacobian;
       for (int a = 0; a < 4; ++a)
         for (int b = 0; b < 4; ++b) {
           m(2 * a, 2 * b) += w * s.n[a] * s.n[b];

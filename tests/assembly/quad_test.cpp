@@ -1,6 +1,6 @@
-// The four-node quadrilateral (assembly/quad_element): rigid-body modes, the patch test on a
+// The four-node quadrilateral (assembly/quad): rigid-body modes, the patch test on a
 // distorted mesh (displacement and force forms), the mass, and plane stress against plane strain.
-#include "assembly/quad_element.hpp"
+#include "assembly/quad.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -19,28 +19,32 @@ namespace {
 
 constexpr double kE = 210000.0, kNu = 0.3, kThickness = 2.0, kDensity = 7.8e-9;
 
-model::Quad steel(bool plane_strain = false) {
-  return {.id = "q",
-          .youngs_modulus = kE,
-          .poisson_ratio = kNu,
-          .thickness = kThickness,
-          .density = kDensity,
-          .plane_strain = plane_strain};
-}
-
 const QuadCorners kDistorted{{{0.0, 0.0}, {2.2, 0.3}, {1.9, 1.7}, {-0.2, 1.2}}};
 
-TEST(QuadElement, HasExactlyThreeRigidBodyModes) {
-  const Matrix8 k = quad_stiffness(steel(), kDistorted);
+Quad steel(const QuadCorners& corners = kDistorted, bool plane_strain = false,
+           bool consistent_mass = false) {
+  std::array<model::ElementNode, 4> nodes;
+  for (std::size_t a = 0; a < 4; ++a) nodes[a] = {static_cast<Index>(a), corners[a]};
+  return Quad("q", nodes,
+              {.youngs_modulus = kE,
+               .poisson_ratio = kNu,
+               .thickness = kThickness,
+               .density = kDensity,
+               .plane_strain = plane_strain},
+              consistent_mass, std::nullopt);
+}
+
+TEST(Quad, HasExactlyThreeRigidBodyModes) {
+  const Matrix k = steel().stiffness();
   EXPECT_LT((k - k.transpose()).norm(), 1e-12 * k.norm());
-  const Eigen::VectorXd eigenvalues = Eigen::SelfAdjointEigenSolver<Matrix8>(k).eigenvalues();
+  const Eigen::VectorXd eigenvalues = Eigen::SelfAdjointEigenSolver<Matrix>(k).eigenvalues();
   const double largest = eigenvalues.maxCoeff();
   int zero = 0;
   for (int i = 0; i < 8; ++i) zero += std::abs(eigenvalues[i]) < 1e-12 * largest;
   EXPECT_EQ(zero, 3);
   EXPECT_GT(eigenvalues[3], 1e-6 * largest);  // no spurious zero-energy (hourglass) mode
   // Translations and the rotation (u = -theta y, v = theta x) carry no force.
-  Eigen::Matrix<double, 8, 1> rotation;
+  Vector rotation(8);
   for (int a = 0; a < 4; ++a) {
     rotation[2 * a] = -kDistorted[a][1];
     rotation[2 * a + 1] = kDistorted[a][0];
@@ -50,9 +54,9 @@ TEST(QuadElement, HasExactlyThreeRigidBodyModes) {
   EXPECT_LT(error, 1e-14);
 }
 
-TEST(QuadElement, MassSumsToTheElementsMassAndLumpsAQuarterOnAParallelogram) {
+TEST(Quad, MassSumsToTheElementsMassAndLumpsAQuarterOnAParallelogram) {
   const QuadCorners parallelogram{{{0.0, 0.0}, {2.0, 0.0}, {2.5, 1.0}, {0.5, 1.0}}};
-  const Matrix8 m = quad_consistent_mass(steel(), parallelogram);
+  const Matrix8 m = steel(parallelogram).consistent_mass();
   const double total = kDensity * kThickness * quad_area(parallelogram);  // area 2
   EXPECT_NEAR(quad_area(parallelogram), 2.0, 1e-15);
   double sum_x = 0.0;
@@ -66,9 +70,21 @@ TEST(QuadElement, MassSumsToTheElementsMassAndLumpsAQuarterOnAParallelogram) {
   EXPECT_NEAR(m(0, 4), total * 1 / 36, 1e-14 * total);
 }
 
-TEST(QuadElement, PlaneStrainIsStifferThanPlaneStressByTheClosedForm) {
-  const Eigen::Matrix3d stress = quad_elasticity(steel(false));
-  const Eigen::Matrix3d strain = quad_elasticity(steel(true));
+TEST(Quad, LumpsTheRowSumsOrKeepsTheConsistentMassAndReportsNoEndForces) {
+  const Matrix8 consistent = steel().consistent_mass();
+  const model::ElementMass lumped = steel().mass();
+  ASSERT_FALSE(lumped.is_consistent());
+  EXPECT_EQ(lumped.lumped, Vector(consistent.rowwise().sum()));
+  const model::ElementMass kept = steel(kDistorted, false, true).mass();
+  ASSERT_TRUE(kept.is_consistent());
+  EXPECT_EQ(kept.consistent, Matrix(consistent));
+  EXPECT_TRUE(steel().end_force_names().empty());
+  EXPECT_EQ(steel().end_forces(Vector::Ones(8)).size(), 0);
+}
+
+TEST(Quad, PlaneStrainIsStifferThanPlaneStressByTheClosedForm) {
+  const Eigen::Matrix3d stress = steel(kDistorted, false).elasticity();
+  const Eigen::Matrix3d strain = steel(kDistorted, true).elasticity();
   EXPECT_NEAR(stress(0, 0), kE / (1 - kNu * kNu), 1e-9);
   EXPECT_NEAR(strain(0, 0), kE * (1 - kNu) / ((1 + kNu) * (1 - 2 * kNu)), 1e-9);
   EXPECT_NEAR(stress(2, 2), strain(2, 2), 1e-9);  // the shear modulus G in both
@@ -108,7 +124,7 @@ std::string patch_model(double sigma, bool plane_strain) {
                      sigma * kThickness * (lower + upper) / 2, sigma * kThickness * upper / 2);
 }
 
-TEST(QuadElement, PassesThePatchTestOnADistortedMesh) {
+TEST(Quad, PassesThePatchTestOnADistortedMesh) {
   for (bool plane_strain : {false, true}) {
     const double sigma = 100.0;
     const builder::BuiltModel built =
@@ -133,7 +149,7 @@ TEST(QuadElement, PassesThePatchTestOnADistortedMesh) {
   }
 }
 
-TEST(QuadElement, ReproducesALinearFieldsConstantStrainAtEveryGaussPoint) {
+TEST(Quad, ReproducesALinearFieldsConstantStrainAtEveryGaussPoint) {
   // u = 1e-3 (2 + 3x - y), v = 1e-3 (1 + 0.5x + 2y): strain (3e-3, 2e-3, -0.5e-3).
   Eigen::Matrix<double, 8, 1> u;
   for (int a = 0; a < 4; ++a) {
@@ -147,7 +163,7 @@ TEST(QuadElement, ReproducesALinearFieldsConstantStrainAtEveryGaussPoint) {
       EXPECT_LT((quad_strain(kDistorted, u, xi, eta) - exact).norm(), 1e-15);
 }
 
-TEST(QuadElement, AClockwiseOrInvertedQuadIsRefusedNamingIt) {
+TEST(Quad, AClockwiseOrInvertedQuadIsRefusedNamingIt) {
   const std::string text = R"({
     "dimension": 2,
     "nodes": [{"id": "a", "x": 0, "y": 0}, {"id": "b", "x": 1, "y": 0},

@@ -1,0 +1,92 @@
+#include "assembly/beam.hpp"
+
+namespace pound::assembly {
+namespace {
+
+constexpr int kDirections[] = {0, 1, 2};
+constexpr std::string_view kEndForces[] = {"N_i", "V_i", "M_i", "N_j", "V_j", "M_j"};
+
+}  // namespace
+
+Beam::Beam(std::string id, const std::array<model::ElementNode, 2>& ends, const Section& section,
+           bool consistent_mass, std::optional<model::RayleighDamping> damping)
+    : Element(std::move(id), {ends[0].index, ends[1].index}, damping),
+      section_(section),
+      consistent_mass_(consistent_mass),
+      length_(model::distance(ends[0].position, ends[1].position, 2)),
+      cosine_((ends[1].position[0] - ends[0].position[0]) / length_),
+      sine_((ends[1].position[1] - ends[0].position[1]) / length_) {}
+
+std::span<const int> Beam::directions() const { return kDirections; }
+
+Beam::Matrix6 Beam::local_stiffness() const {
+  const double ea = section_.youngs_modulus * section_.area / length_;
+  const double ei = section_.youngs_modulus * section_.inertia;
+  const double l2 = length_ * length_, l3 = l2 * length_;
+  Matrix6 k = Matrix6::Zero();
+  k(0, 0) = k(3, 3) = ea;
+  k(0, 3) = k(3, 0) = -ea;
+  k(1, 1) = k(4, 4) = 12 * ei / l3;
+  k(1, 4) = k(4, 1) = -12 * ei / l3;
+  k(1, 2) = k(2, 1) = k(1, 5) = k(5, 1) = 6 * ei / l2;
+  k(4, 2) = k(2, 4) = k(4, 5) = k(5, 4) = -6 * ei / l2;
+  k(2, 2) = k(5, 5) = 4 * ei / length_;
+  k(2, 5) = k(5, 2) = 2 * ei / length_;
+  return k;
+}
+
+Beam::Matrix6 Beam::local_consistent_mass() const {
+  const double m = mass_per_length() * length_, l = length_;
+  Matrix6 mass = Matrix6::Zero();
+  mass(0, 0) = mass(3, 3) = m / 3.0;
+  mass(0, 3) = mass(3, 0) = m / 6.0;
+  const double c = m / 420.0;
+  mass(1, 1) = mass(4, 4) = 156 * c;
+  mass(1, 4) = mass(4, 1) = 54 * c;
+  mass(1, 2) = mass(2, 1) = 22 * l * c;
+  mass(4, 5) = mass(5, 4) = -22 * l * c;
+  mass(1, 5) = mass(5, 1) = -13 * l * c;
+  mass(2, 4) = mass(4, 2) = 13 * l * c;
+  mass(2, 2) = mass(5, 5) = 4 * l * l * c;
+  mass(2, 5) = mass(5, 2) = -3 * l * l * c;
+  return mass;
+}
+
+Beam::Matrix6 Beam::rotation() const {
+  Matrix6 t = Matrix6::Zero();
+  for (int node = 0; node < 2; ++node) {
+    const int o = 3 * node;
+    t(o, o) = cosine_;
+    t(o, o + 1) = sine_;
+    t(o + 1, o) = -sine_;
+    t(o + 1, o + 1) = cosine_;
+    t(o + 2, o + 2) = 1.0;
+  }
+  return t;
+}
+
+// The products at fixed size, as the assembly has always rounded them.
+Matrix Beam::stiffness() const {
+  const Matrix6 t = rotation();
+  const Matrix6 k = t.transpose() * local_stiffness() * t;
+  return k;
+}
+
+model::ElementMass Beam::mass() const {
+  if (consistent_mass_) {
+    const Matrix6 t = rotation();
+    const Matrix6 m = t.transpose() * local_consistent_mass() * t;
+    return {.consistent = m};
+  }
+  const double half = 0.5 * mass_per_length() * length_;
+  return {.lumped = Vector{{half, half, 0.0, half, half, 0.0}}};
+}
+
+std::span<const std::string_view> Beam::end_force_names() const { return kEndForces; }
+
+Vector Beam::end_forces(const Vector& u) const {
+  const Eigen::Matrix<double, 6, 1> local = local_stiffness() * (rotation() * u);
+  return local;
+}
+
+}  // namespace pound::assembly

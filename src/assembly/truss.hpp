@@ -1,0 +1,43 @@
+#pragma once
+// Two-node axial element (rod, truss bar), linear elastic, in a 1-D scene (DOF u_x at each node)
+// or a plane one (u_x, u_y at each node). DOFs (u_x,i [, u_y,i], u_x,j [, u_y,j]), global axes.
+//
+//   K = (E A / L) [[c c^T, -c c^T], [-c c^T, c c^T]],  c = (x_j - x_i) / L  (1-D: c = +-1)
+//   M lumped: rho A L / 2 at each node in each direction
+//   end force N = (E A / L) (u_j - u_i) . c, tension positive
+//
+// Units: E [F/L^2], A [L^2], rho [M/L^3], N [F]. Source: the pin-jointed bar of matrix
+// structural analysis, e.g. Przemieniecki, "Theory of Matrix Structural Analysis" (1968),
+// chapter 5 (stiffness) and chapter 11 (lumped mass).
+#include <array>
+
+#include "model/element.hpp"
+
+namespace pound::assembly {
+
+class Truss final : public model::Element {
+ public:
+  struct Section {
+    double youngs_modulus = 0.0;  // E [F/L^2]
+    double area = 0.0;            // A [L^2]
+    double density = 0.0;         // rho [M/L^3]
+  };
+  // `dimension` 1 (y ignored) or 2; the ends are apart (the builder checks the length).
+  Truss(std::string id, const std::array<model::ElementNode, 2>& ends, int dimension,
+        const Section& section, std::optional<model::RayleighDamping> damping);
+
+  std::span<const int> directions() const override;
+  Matrix stiffness() const override;
+  model::ElementMass mass() const override;
+  std::span<const std::string_view> end_force_names() const override;
+  Vector end_forces(const Vector& u) const override;
+
+ private:
+  int dimension_;
+  Section section_;
+  double length_;
+  std::array<double, 2> cosines_;
+  double axial_stiffness_;  // E A / L
+};
+
+}  // namespace pound::assembly

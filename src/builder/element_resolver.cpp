@@ -1,0 +1,137 @@
+#include "builder/element_resolver.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+
+#include "assembly/beam.hpp"
+#include "assembly/quad.hpp"
+#include "assembly/truss.hpp"
+#include "core/errors.hpp"
+
+namespace pound::builder {
+namespace {
+
+// What making one element needs besides its own spec.
+struct Scene {
+  const ModelSpec& spec;
+  const model::Model& model;
+  const NodeLookup& node;
+
+  [[noreturn]] void fail(const std::string& path, const std::string& what) const {
+    throw InputError(spec.source, path, what);
+  }
+  model::ElementNode at(Index index) const {
+    return {index, model.nodes[static_cast<std::size_t>(index)].position};
+  }
+};
+
+std::shared_ptr<const model::Element> make_quad(const Scene& scene, const ElementSpec& element,
+                                                const std::string& path,
+                                                const std::array<Index, 2>& first_nodes,
+                                                const MaterialSpec& material,
+                                                std::optional<model::RayleighDamping> damping) {
+  std::array<Index, 4> nodes{first_nodes[0], first_nodes[1], 0, 0};
+  std::array<model::ElementNode, 4> corners;
+  assembly::QuadCorners positions;
+  for (std::size_t a = 0; a < 4; ++a) {
+    if (a >= 2)
+      nodes[a] = scene.node(element.more_nodes[a - 2], fmt::format("{}/nodes/{}", path, a));
+    for (std::size_t b = 0; b < a; ++b)
+      if (nodes[a] == nodes[b])
+        scene.fail(path + "/nodes",
+                   fmt::format("quad '{}' names node '{}' twice", element.id,
+                               scene.model.nodes[static_cast<std::size_t>(nodes[a])].id));
+    corners[a] = scene.at(nodes[a]);
+    positions[a] = corners[a].position;
+  }
+  const double jacobian = assembly::quad_smallest_jacobian(positions);
+  if (!(jacobian > 0.0) || !std::isfinite(jacobian))
+    scene.fail(path + "/nodes",
+               fmt::format("quad '{}' is degenerate, inverted or numbered clockwise (its "
+                           "nodes must go counter-clockwise round a convex quadrilateral)",
+                           element.id));
+  if (!material.poisson_ratio)
+    scene.fail(path + "/material",
+               fmt::format("material '{}' needs a 'poisson_ratio' for a quad", element.material));
+  return std::make_shared<const assembly::Quad>(
+      element.id, corners,
+      assembly::Quad::Material{.youngs_modulus = material.youngs_modulus,
+                               .poisson_ratio = *material.poisson_ratio,
+                               .thickness = element.thickness,
+                               .density = material.density,
+                               .plane_strain = element.plane_strain},
+      element.consistent_mass, damping);
+}
+
+// A truss or a beam.
+std::shared_ptr<const model::Element> make_two_node(const Scene& scene, const ElementSpec& element,
+                                                    const std::string& path,
+                                                    const std::array<Index, 2>& nodes,
+                                                    const MaterialSpec& material,
+                                                    std::optional<model::RayleighDamping> damping) {
+  const std::array<model::ElementNode, 2> ends{scene.at(nodes[0]), scene.at(nodes[1])};
+  const double length = model::distance(ends[0].position, ends[1].position, scene.model.dimension);
+  if (!(length > 0.0))
+    scene.fail(path + "/nodes", fmt::format("element '{}' has zero length (nodes '{}' and '{}' "
+                                            "are at the same place)",
+                                            element.id, element.node_i, element.node_j));
+  // Coordinates of ±1e308 are each finite, their distance is not (and the element's stiffness
+  // would be 0, reported later as a node without stiffness).
+  if (!std::isfinite(length))
+    scene.fail(path + "/nodes", fmt::format("element '{}' is infinitely long (nodes '{}' and '{}' "
+                                            "are {:g} apart)",
+                                            element.id, element.node_i, element.node_j, length));
+  if (element.type == "beam")
+    return std::make_shared<const assembly::Beam>(
+        element.id, ends,
+        assembly::Beam::Section{.youngs_modulus = material.youngs_modulus,
+                                .area = element.area,
+                                .inertia = element.inertia,
+                                .density = material.density,
+                                .extra_mass = element.extra_mass},
+        element.consistent_mass, damping);
+  return std::make_shared<const assembly::Truss>(
+      element.id, ends, scene.model.dimension,
+      assembly::Truss::Section{.youngs_modulus = material.youngs_modulus,
+                               .area = element.area,
+                               .density = material.density},
+      damping);
+}
+
+}  // namespace
+
+std::vector<std::shared_ptr<const model::Element>> resolve_elements(
+    const ModelSpec& spec, const model::Model& model, const std::map<std::string, Index>& materials,
+    const std::function<std::string(std::size_t)>& origin, const NodeLookup& node) {
+  const Scene scene{spec, model, node};
+  std::vector<std::shared_ptr<const model::Element>> elements;
+  bool quads = false, beams = false;
+  for (std::size_t k = 0; k < spec.elements.size(); ++k) {
+    const ElementSpec& element = spec.elements[k];
+    const std::string path = origin(k);
+    const std::array<Index, 2> nodes{node(element.node_i, path + "/nodes/0"),
+                                     node(element.node_j, path + "/nodes/1")};
+    if (nodes[0] == nodes[1]) scene.fail(path + "/nodes", "an element needs two different nodes");
+    auto material = materials.find(element.material);
+    if (material == materials.end())
+      scene.fail(path + "/material", fmt::format("material '{}' does not exist", element.material));
+    const MaterialSpec& m = spec.materials[static_cast<std::size_t>(material->second)];
+    std::optional<model::RayleighDamping> own;
+    if (element.rayleigh)
+      own = model::RayleighDamping{(*element.rayleigh)[0], (*element.rayleigh)[1]};
+    quads = quads || element.type == "quad";
+    beams = beams || element.type == "beam";
+    elements.push_back(element.type == "quad" ? make_quad(scene, element, path, nodes, m, own)
+                                              : make_two_node(scene, element, path, nodes, m, own));
+  }
+  if (quads && beams)
+    for (std::size_t k = 0; k < spec.elements.size(); ++k)
+      if (spec.elements[k].type == "quad")
+        scene.fail(origin(k) + "/type",
+                   "quads (2 DOFs per node) cannot share a scene with beams (3 DOFs per node)");
+  return elements;
+}
+
+}  // namespace pound::builder

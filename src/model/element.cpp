@@ -1,0 +1,19 @@
+#include "model/element.hpp"
+
+#include <cmath>
+
+namespace pound::model {
+
+std::vector<ElementDof> Element::dofs() const {
+  std::vector<ElementDof> dofs;
+  dofs.reserve(nodes_.size() * directions().size());
+  for (Index node : nodes_)
+    for (int direction : directions()) dofs.push_back({node, direction});
+  return dofs;
+}
+
+double distance(const Coordinates& a, const Coordinates& b, int dimension) {
+  return std::hypot(b[0] - a[0], dimension == 2 ? b[1] - a[1] : 0.0);
+}
+
+}  // namespace pound::model

@@ -1,0 +1,86 @@
+#pragma once
+// What the model and its assembly need of an element, whatever its kind (dependency
+// inversion: the model holds elements through this interface, the kinds live in assembly/, the
+// builder makes them). An element keeps what its matrices need (node indices and coordinates,
+// section, material, mass option) from its construction, so none of them needs the Model.
+//
+// DOFs: an element names the directions it needs at each of its nodes (0 x, 1 y, 2 rotation
+// theta_z), the same at every node; its blocks are over its DOFs node by node, each node's
+// directions in that order, in global axes. A scene carries at each node as many DOFs as its
+// elements ask for (Model::dofs_per_node).
+#include <array>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace pound::model {
+
+using Coordinates = std::array<double, 2>;  // (x, y); y unused in 1-D scenes
+
+// Rayleigh damping C = a0 M + a1 K of the linear elements (links are never part of it).
+struct RayleighDamping {
+  double mass_coefficient = 0.0;       // a0 [1/T]
+  double stiffness_coefficient = 0.0;  // a1 [T]
+};
+
+// A node of an element: its index in Model::nodes and where it is.
+struct ElementNode {
+  Index index = 0;
+  Coordinates position{};
+};
+
+// One DOF of an element: a node (index in Model::nodes) and a direction (0 x, 1 y, 2 rotation).
+struct ElementDof {
+  Index node = 0;
+  int direction = 0;
+};
+
+// An element's mass over its DOFs: lumped (one value per DOF) or a consistent block.
+struct ElementMass {
+  Vector lumped;      // empty when consistent
+  Matrix consistent;  // empty when lumped
+  bool is_consistent() const { return consistent.size() > 0; }
+};
+
+class Element {
+ public:
+  virtual ~Element() = default;
+
+  const std::string& id() const { return id_; }
+  const std::vector<Index>& nodes() const { return nodes_; }
+  // Its own Rayleigh coefficients, or none (then the model's apply):
+  // C = sum over elements of a0_e M_e + a1_e K_e.
+  const std::optional<RayleighDamping>& damping() const { return damping_; }
+
+  // Directions it needs at each node (0 x, 1 y, 2 rotation), increasing.
+  virtual std::span<const int> directions() const = 0;
+  // Its DOFs, the rows and columns of its blocks: each node's directions, node by node.
+  std::vector<ElementDof> dofs() const;
+  // Stiffness K_e over dofs() in global axes, symmetric.
+  virtual Matrix stiffness() const = 0;
+  virtual ElementMass mass() const = 0;
+
+  // Names of its end forces (none when it reports none), and their values for displacements u
+  // over dofs(): in the element's local axes, units of force (moments force x length).
+  virtual std::span<const std::string_view> end_force_names() const = 0;
+  virtual Vector end_forces(const Vector& u) const = 0;
+
+ protected:
+  Element(std::string id, std::vector<Index> nodes, std::optional<RayleighDamping> damping)
+      : id_(std::move(id)), nodes_(std::move(nodes)), damping_(damping) {}
+
+ private:
+  std::string id_;
+  std::vector<Index> nodes_;
+  std::optional<RayleighDamping> damping_;
+};
+
+// Distance between two points of a scene of `dimension` 1 (along x only) or 2.
+double distance(const Coordinates& a, const Coordinates& b, int dimension);
+
+}  // namespace pound::model
