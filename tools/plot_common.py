@@ -1,6 +1,7 @@
 """Helpers shared by the Python tools (plot_run.py, plot_batch.py, plot_block_belt.py,
-plot_pareto.py, adaptive_saving.py): matplotlib, the command line, CSV and JSON input, errors and
-PNG output.
+plot_pareto.py, adaptive_saving.py, generate_motion.py): the command line, errors and their exit
+codes, CSV and JSON input, matplotlib and PNG output. Standard library only until a script asks
+for matplotlib.
 
 Not a script of its own. Every message is prefixed by the calling script's name (its `prog`), so
 it reads as that script's. The scripts import this module from their own folder:
