@@ -28,10 +28,15 @@ Example:
         --ground firm --out ground_motions/synthetic_firm_01.AT2
 """
 
-import argparse
 import math
+import os
 import random
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_common import OutputError, Parser, report  # noqa: E402
+
+PROG = "generate_motion.py"
 
 # Kanai-Tajimi (wg [rad/s], zg) and Clough-Penzien (wf [rad/s], zf) parameters,
 # Der Kiureghian & Neuenhofer (1992).
@@ -129,7 +134,7 @@ def at2_text(values, args):
 
 
 def main(argv):
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser = Parser(prog=PROG, description=__doc__.split("\n\n")[0])
     parser.add_argument("--seed", type=int, required=True, help="random seed")
     parser.add_argument("--duration", type=float, default=25.0, help="record length [s]")
     parser.add_argument("--dt", type=float, default=0.01, help="time step [s]")
@@ -141,8 +146,11 @@ def main(argv):
     if not (args.duration > 0 and args.dt > 0 and args.pga > 0 and args.duration > 10 * args.dt):
         parser.error("--duration, --dt and --pga must be positive, and the record >= 10 steps")
     values = generate(args.seed, args.duration, args.dt, args.pga, args.ground)
-    with open(args.out, "w", newline="\n") as out:
-        out.write(at2_text(values, args))
+    try:
+        with open(args.out, "w", newline="\n") as out:
+            out.write(at2_text(values, args))
+    except OSError as error:
+        return report(PROG, OutputError(f"{args.out}: cannot write: {error}"))
     written = [float(x) * 9.80665 for line in at2_text(values, args).splitlines()[4:]
                for x in line.split()]  # the values as rounded in the file, in m/s^2
     v, d = final_velocity_and_displacement(written, args.dt)

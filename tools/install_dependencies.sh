@@ -5,7 +5,8 @@ packages=(g++ cmake ninja-build libeigen3-dev libboost-program-options-dev libfm
           nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev python3-matplotlib
           libboost-mpi-dev openmpi-bin libopenmpi-dev  # pound batch under mpirun
           clang libclang-rt-dev  # clang and its libFuzzer runtime, for tools/fuzz.sh
-          clang-format)  # tools/check_format.sh, run by CI
+          clang-format  # tools/check_format.sh, run by CI
+          python3-pyflakes)  # tools/check_python.sh, run by CI
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||

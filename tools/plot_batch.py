@@ -12,11 +12,11 @@ DIR, each when its data is there (one line printed per file):
   fragility.png       fraction of the cases exceeding each limit at every intensity stripe, and
                       the fitted lognormal fragility curve; the fits pound could not make are
                       listed with their reason
-Quantities (default all but energy_balance_error, each when a completed case reports it):
-impacts, max_pounding_force, max_restrainer_force, max_joint_opening, max_seat_movement,
-max_drift_ratio, max_ductility, energy_balance_error; --quantity restricts to the named ones.
-One panel per model. Failed cases and input errors are left out and counted on the figures.
-Units are the model's own, intensities in g.
+Quantities are the ones batch_stats.json lists under "quantities", with their axis labels
+(pound's own table: impacts, peak forces, joint openings, drifts, ...): by default every response
+among them that a completed case reports, leaving out checks of the analysis such as
+energy_balance_error; --quantity names the ones to draw. One panel per model. Failed cases and
+input errors are left out and counted on the figures. Units are the model's own, intensities in g.
 
 Needs matplotlib (Debian: python3-matplotlib, installed by tools/install_dependencies.sh).
 Run it with the interpreter that has it; if `python3` is another one (pyenv, a venv) without
@@ -44,19 +44,6 @@ SUMMARY_FILE = "batch_summary.csv"
 STATS_FILE = "batch_stats.json"
 STATUSES = ("completed", "failed", "input_error")
 REQUIRED_COLUMNS = ("name", "model", "record", "scale", "status", "intensity")
-
-# The response quantities of `pound batch` (builder::batch_quantities), with axis labels.
-QUANTITIES = {
-    "impacts": "number of impacts [-]",
-    "max_pounding_force": "peak pounding force [model force units]",
-    "max_restrainer_force": "peak restrainer force [model force units]",
-    "max_joint_opening": "peak joint opening [model length units]",
-    "max_seat_movement": "peak seat movement [model length units]",
-    "max_drift_ratio": "peak drift ratio [-]",
-    "max_ductility": "peak displacement ductility [-]",
-    "energy_balance_error": "energy balance error [-]",
-}
-DEFAULT_QUANTITIES = [q for q in QUANTITIES if q != "energy_balance_error"]
 
 MARKERS = "osD^vP"   # observed fractions, one per model
 PER_PAGE = 8        # fragility panels per page
@@ -88,9 +75,8 @@ class Case:
         self.values = values  # {quantity: float or None}
 
 
-def read_summary(folder):
-    """The cases of DIR/batch_summary.csv and the quantities its header has."""
-    check_folder(folder)
+def read_summary(folder, known_quantities):
+    """The cases of DIR/batch_summary.csv and those of the known quantities its header has."""
     path = os.path.join(folder, SUMMARY_FILE)
     if not os.path.isfile(path):
         raise InputError(f"{folder}: no {SUMMARY_FILE} here (is it the --out folder of `pound batch`?)")
@@ -98,7 +84,7 @@ def read_summary(folder):
     with csv_reader(path) as reader:
         header = read_header(path, reader, REQUIRED_COLUMNS, "(is it a `pound batch` summary?)")
         index = {name: i for i, name in enumerate(header)}
-        quantities = [q for q in QUANTITIES if q in index]
+        quantities = [q for q in known_quantities if q in index]
         width = len(header)
         for row in reader:
             if not row:
@@ -140,13 +126,19 @@ class Stats:
         self.groups = []      # [{"model", "scale", "responses": {q: {"median", "p84"}}, "limits"}]
         self.fragility = []   # [{"model", "quantity", "limit", "fitted", "median", "dispersion", "reason"}]
         self.counts = {}      # cases, completed, failed, input_errors (when given)
+        self.quantities = {}  # {name: {"axis_label", "response"}}, in pound's order
+
+    def label(self, quantity):
+        """The axis label of a quantity ("name [?]" for one pound did not describe)."""
+        return self.quantities.get(quantity, {}).get("axis_label", f"{quantity} [?]")
 
 
 def read_stats(folder):
     """DIR/batch_stats.json (a Stats without groups when the file is absent)."""
     path = os.path.join(folder, STATS_FILE)
     if not os.path.isfile(path):
-        sys.stderr.write(f"note: {folder}: no {STATS_FILE}: no median curves, no fragility figure\n")
+        sys.stderr.write(f"note: {folder}: no {STATS_FILE}, which lists the quantities: no "
+                         "figures (`pound batch SET --out DIR --resume` writes it again)\n")
         return Stats()
     try:
         document = read_json(path)
@@ -185,6 +177,12 @@ def read_stats(folder):
             raise bad(f"{where}.{key}", "must be a string")
         return value
 
+    def flag(parent, key, where):
+        value = parent.get(key)
+        if not isinstance(value, bool):
+            raise bad(f"{where}.{key}", "must be true or false")
+        return value
+
     stats = Stats(path)
     top = obj(document, "the top level")
     stats.set_name = text(top, "set", '"set"', required=False)
@@ -198,6 +196,15 @@ def read_stats(folder):
         stats.im_type = text(measure, "type", "intensity_measure", required=False) or "pga"
         stats.period = num(measure, "period", "intensity_measure", required=False)
         stats.damping = num(measure, "damping", "intensity_measure", required=False)
+    quantities = top.get("quantities")
+    if quantities is None:
+        sys.stderr.write(f"note: {path}: no \"quantities\" (written by an older pound?): no IDA "
+                         "figures (`pound batch SET --out DIR --resume` writes it again)\n")
+    for quantity, entry in obj({} if quantities is None else quantities, '"quantities"').items():
+        at = f"quantities.{quantity}"
+        entry = obj(entry, at)
+        stats.quantities[quantity] = {"axis_label": text(entry, "axis_label", at),
+                                      "response": flag(entry, "response", at)}
     for i, group in enumerate(items(top, "groups", '"groups"')):
         where = f"groups[{i}]"
         entry = {"model": text(group, "model", where), "scale": num(group, "scale", where),
@@ -387,7 +394,7 @@ class Plotter:
 
         ax.set_xlim(left=0.0)
         ax.set_ylim(bottom=0.0)
-        ax.set_xlabel(QUANTITIES[quantity])
+        ax.set_xlabel(self.stats.label(quantity))
         ax.set_ylabel(f"intensity: {self.im_label()}")
         model_cases = [c for c in self.cases if c.model == model]
         title = f"{model}: {plural(len(records), 'record')}"
@@ -501,7 +508,7 @@ class Plotter:
         ax.set_ylim(-0.03, 1.05)
         ax.set_xlabel(f"intensity: {self.im_label()}")
         ax.set_ylabel("probability of exceeding the limit [-]")
-        ax.set_title(f"{QUANTITIES.get(quantity, quantity + ' []').split(' [')[0]} > {limit:.4g}",
+        ax.set_title(f"{self.stats.label(quantity).split(' [')[0]} > {limit:.4g}",
                      fontsize="medium")
         ax.grid(alpha=0.3)
         ax.legend(loc="lower right", fontsize="small", framealpha=0.9)
@@ -515,30 +522,39 @@ def normal_cdf(z, np):
 
 # ----------------------------------------------------------------------------------------------
 
+def wanted_quantities(parser, names, stats):
+    """The quantities to draw: those named (each one batch_stats.json lists), or its responses."""
+    known = stats.quantities
+    if not names:
+        return [q for q, entry in known.items() if entry["response"]]
+    for name in names:
+        if known and name not in known:
+            close = difflib.get_close_matches(name, known, n=1)
+            parser.error(f"--quantity: unknown quantity {name!r}"
+                         + (f" (did you mean {close[0]}?)" if close else "")
+                         + f"; one of {', '.join(known)}")
+    return list(dict.fromkeys(names))
+
+
 def main(argv):
     parser = Parser(prog=PROG, description=__doc__.split("\n\n")[0],
                     epilog="Units on the axes are the model's own, intensities in g.")
     parser.add_argument("folder", metavar="DIR", help="the --out folder of `pound batch`")
     parser.add_dpi()
     parser.add_argument("--quantity", metavar="NAME", nargs="+", action="extend",
-                        help="plot the IDA curves of these quantities only (default: "
-                             + ", ".join(DEFAULT_QUANTITIES) + ")")
+                        help="plot the IDA curves of these quantities only (default: every "
+                             "response quantity batch_stats.json lists)")
     args = parser.parse_args(argv)
     parser.check_dpi(args)
-    for name in args.quantity or []:
-        if name not in QUANTITIES:
-            close = difflib.get_close_matches(name, QUANTITIES, n=1)
-            parser.error(f"--quantity: unknown quantity {name!r}"
-                         + (f" (did you mean {close[0]}?)" if close else "")
-                         + f"; one of {', '.join(QUANTITIES)}")
-    wanted = list(dict.fromkeys(args.quantity)) if args.quantity else DEFAULT_QUANTITIES
 
     figure_class = import_matplotlib(PROG, REEXEC_MARK, __file__)
     import numpy
 
     try:
-        path, cases, columns = read_summary(args.folder)
+        check_folder(args.folder)
         stats = read_stats(args.folder)
+        path, cases, columns = read_summary(args.folder, stats.quantities)
+        wanted = wanted_quantities(parser, args.quantity, stats)
         plotter = Plotter(args.folder, cases, stats, args.dpi, figure_class, numpy)
         for quantity in wanted:
             if quantity not in columns:

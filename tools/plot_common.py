@@ -1,4 +1,7 @@
-"""Helpers shared by the plotting scripts (plot_run.py, plot_batch.py, plot_block_belt.py).
+"""Helpers shared by the Python tools (plot_run.py, plot_batch.py, plot_block_belt.py,
+plot_pareto.py, adaptive_saving.py, generate_motion.py): the command line, errors and their exit
+codes, CSV and JSON input, matplotlib and PNG output. Standard library only until a script asks
+for matplotlib.
 
 Not a script of its own. Every message is prefixed by the calling script's name (its `prog`), so
 it reads as that script's. The scripts import this module from their own folder:
@@ -8,6 +11,7 @@ it reads as that script's. The scripts import this module from their own folder:
 import argparse
 import contextlib
 import csv
+import importlib
 import json
 import os
 import sys
@@ -54,7 +58,7 @@ def import_matplotlib(prog, reexec_mark, script):
         import matplotlib
         matplotlib.use("Agg")
         from matplotlib.figure import Figure
-        import numpy  # noqa: F401  (matplotlib depends on it)
+        importlib.import_module("numpy")  # the scripts use it too
         return Figure
     except ImportError as error:
         missing = error

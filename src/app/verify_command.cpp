@@ -36,13 +36,14 @@ benchmarks:
                 mu_dynamic / mu_static, stick-slip and tumbling per speed (--speeds, --periods,
                 --out DIR writes block_belt_sweep.csv and block_belt_histories.csv)
 
-rod-impact: two elastic rods collide; the finite element solution (lumped-mass rods, contact link, Newmark
-with Newton iteration) is compared with the exact solution of the wave equation computed by
+rod-impact: two elastic rods collide; the finite element solution (lumped-mass rods, contact link,
+Newmark with Newton iteration) is compared with the exact solution of the wave equation computed by
 characteristics. Defaults: Kawashima (1980): E = 100, A = 1, rho = 0.1, L = 10, V0 = 0.1 each
 way, n = 10 elements per rod, link as stiff as the adjacent element, dt = T_I/100.
 
-Metrics (DESIGN.md 3.1): force_l2_error over [0, 1.5 T], duration_error, separation_velocity_error,
-peak_force_ratio, max_penetration, min_force, run_time_s (solve alone), steps, newton_iterations.
+Metrics (docs/design.md section 3.1): force_l2_error over [0, 1.5 T], duration_error,
+separation_velocity_error, peak_force_ratio, max_penetration, min_force, run_time_s (solve alone),
+steps, newton_iterations.
 
 options)";
 

@@ -19,11 +19,4 @@ std::vector<BatchCase> plan_cases(const SetSpec& set) {
   return cases;
 }
 
-const std::vector<std::string>& batch_quantities() {
-  static const std::vector<std::string> names = {
-      "impacts",           "max_pounding_force", "max_restrainer_force", "max_joint_opening",
-      "max_seat_movement", "max_drift_ratio",    "max_ductility",        "energy_balance_error"};
-  return names;
-}
-
 }  // namespace pound::builder

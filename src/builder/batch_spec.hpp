@@ -33,7 +33,7 @@ struct IntensityMeasure {
 
 // A response quantity of the summary rows, and the value above which it counts as exceeded.
 struct ResponseLimit {
-  std::string quantity;  // a column of batch_summary.csv (batch_quantities())
+  std::string quantity;  // a column of batch_summary.csv (results/batch_quantities.hpp)
   double value = 0.0;
 };
 
@@ -60,9 +60,5 @@ struct BatchCase {
 
 // The cases model by model, record by record, scale by scale.
 std::vector<BatchCase> plan_cases(const SetSpec& set);
-
-// The response quantities a batch summarises (the numeric columns of a summary row that the
-// statistics and limits may name).
-const std::vector<std::string>& batch_quantities();
 
 }  // namespace pound::builder

@@ -1,6 +1,6 @@
 #pragma once
 // The nonlinear part of a system: link elements whose deformations are linear in u,
-//   delta = b_n . u - gap     (penetration, DESIGN.md section 2)
+//   delta = b_n . u - gap     (penetration, docs/design.md §2)
 //   s     = b_t . u           (tangential slide, only for links with friction)
 // and whose forces, F (normal) and R_t (tangential), enter the equations of motion as B^T F.
 // Each link has one row of B, or two with friction. B is constant (small displacements), so

@@ -8,6 +8,7 @@
 
 #include "core/errors.hpp"
 #include "io/json_reader.hpp"
+#include "results/batch_quantities.hpp"
 
 namespace pound::io {
 namespace {
@@ -28,13 +29,6 @@ std::string quoted(const std::string& text) {
   return out + "\"";
 }
 
-// The columns, each with how it prints and how it reads back.
-struct Column {
-  const char* name;
-  std::function<std::string(const CaseSummary&)> print;
-  std::function<void(CaseSummary&, const std::string&)> read;  // throws std::invalid_argument
-};
-
 std::optional<double> parse_number(const std::string& cell) {
   if (cell.empty()) return std::nullopt;
   double value = 0.0;
@@ -44,67 +38,85 @@ std::optional<double> parse_number(const std::string& cell) {
   return value;
 }
 
-#define POUND_NUMBER_COLUMN(field)                                                                \
-  Column {                                                                                        \
-#field, [](const CaseSummary&                                                                 \
-                   c) { return number(c.field); }, [](CaseSummary & c,                            \
-                                                      const std::string&                          \
-                                                          cell) { c.field = parse_number(cell); } \
-  }
-#define POUND_TEXT_COLUMN(field)                                                                   \
-  Column {                                                                                         \
-#field, [](const CaseSummary& c) { return quoted(c.field); }, [](CaseSummary & c,              \
-                                                                     const std::string&            \
-                                                                         cell) { c.field = cell; } \
-  }
+// A column, with how it prints and how it reads back.
+struct Column {
+  std::string name;
+  std::function<std::string(const CaseSummary&)> print;
+  std::function<void(CaseSummary&, const std::string&)> read;  // throws std::invalid_argument
+};
 
-const std::vector<Column>& columns() {
-  static const std::vector<Column> all = {
-      POUND_TEXT_COLUMN(name),
-      POUND_TEXT_COLUMN(model),
-      POUND_TEXT_COLUMN(record),
-      Column{"scale", [](const CaseSummary& c) { return fmt::format("{}", c.scale); },
-             [](CaseSummary& c, const std::string& cell) {
-               const std::optional<double> value = parse_number(cell);
-               if (!value) throw std::invalid_argument("the scale is missing");
-               c.scale = *value;
-             }},
-      POUND_TEXT_COLUMN(status),
-      POUND_TEXT_COLUMN(reason),
-      POUND_NUMBER_COLUMN(pga_g),
-      POUND_NUMBER_COLUMN(intensity),
-      POUND_NUMBER_COLUMN(end_time),
-      POUND_NUMBER_COLUMN(steps),
-      POUND_NUMBER_COLUMN(impacts),
-      POUND_NUMBER_COLUMN(max_pounding_force),
-      POUND_TEXT_COLUMN(max_pounding_link),
-      POUND_NUMBER_COLUMN(max_restrainer_force),
-      POUND_TEXT_COLUMN(max_restrainer_link),
-      POUND_NUMBER_COLUMN(max_joint_opening),
-      POUND_NUMBER_COLUMN(max_seat_movement),
-      POUND_NUMBER_COLUMN(min_unseating_margin),
-      Column{"unseated",
-             [](const CaseSummary& c) {
-               return c.unseated ? std::string(*c.unseated ? "true" : "false") : std::string();
-             },
-             [](CaseSummary& c, const std::string& cell) {
-               if (cell.empty())
-                 c.unseated.reset();
-               else if (cell == "true" || cell == "false")
-                 c.unseated = cell == "true";
-               else
-                 throw std::invalid_argument(fmt::format("'{}' is not true or false", cell));
-             }},
-      POUND_NUMBER_COLUMN(max_drift_ratio),
-      POUND_NUMBER_COLUMN(max_ductility),
-      POUND_NUMBER_COLUMN(energy_balance_error),
-      POUND_NUMBER_COLUMN(run_time_s),
-  };
+Column text_column(std::string name, std::string CaseSummary::*field) {
+  return {std::move(name), [field](const CaseSummary& c) { return quoted(c.*field); },
+          [field](CaseSummary& c, const std::string& cell) { c.*field = cell; }};
+}
+
+Column number_column(std::string name, std::optional<double> CaseSummary::*field) {
+  return {std::move(name), [field](const CaseSummary& c) { return number(c.*field); },
+          [field](CaseSummary& c, const std::string& cell) { c.*field = parse_number(cell); }};
+}
+
+Column scale_column() {
+  return {"scale", [](const CaseSummary& c) { return fmt::format("{}", c.scale); },
+          [](CaseSummary& c, const std::string& cell) {
+            const std::optional<double> value = parse_number(cell);
+            if (!value) throw std::invalid_argument("the scale is missing");
+            c.scale = *value;
+          }};
+}
+
+Column unseated_column() {
+  return {"unseated",
+          [](const CaseSummary& c) {
+            return c.unseated ? std::string(*c.unseated ? "true" : "false") : std::string();
+          },
+          [](CaseSummary& c, const std::string& cell) {
+            if (cell.empty())
+              c.unseated.reset();
+            else if (cell == "true" || cell == "false")
+              c.unseated = cell == "true";
+            else
+              throw std::invalid_argument(fmt::format("'{}' is not true or false", cell));
+          }};
+}
+
+// The columns that follow a quantity's own and qualify it: the link that carried a peak force,
+// the margin left on the seats and whether a girder came off one.
+std::vector<Column> qualifiers(const results::BatchQuantity& quantity) {
+  if (quantity.value == &CaseSummary::max_pounding_force)
+    return {text_column("max_pounding_link", &CaseSummary::max_pounding_link)};
+  if (quantity.value == &CaseSummary::max_restrainer_force)
+    return {text_column("max_restrainer_link", &CaseSummary::max_restrainer_link)};
+  if (quantity.value == &CaseSummary::max_seat_movement)
+    return {number_column("min_unseating_margin", &CaseSummary::min_unseating_margin),
+            unseated_column()};
+  return {};
+}
+
+// The case, its record and how far it went; each response quantity in the table's order with
+// its qualifiers; the run time last.
+std::vector<Column> make_columns() {
+  std::vector<Column> all = {text_column("name", &CaseSummary::name),
+                             text_column("model", &CaseSummary::model),
+                             text_column("record", &CaseSummary::record),
+                             scale_column(),
+                             text_column("status", &CaseSummary::status),
+                             text_column("reason", &CaseSummary::reason),
+                             number_column("pga_g", &CaseSummary::pga_g),
+                             number_column("intensity", &CaseSummary::intensity),
+                             number_column("end_time", &CaseSummary::end_time),
+                             number_column("steps", &CaseSummary::steps)};
+  for (const results::BatchQuantity& quantity : results::batch_quantities()) {
+    all.push_back(number_column(std::string(quantity.name), quantity.value));
+    for (Column& qualifier : qualifiers(quantity)) all.push_back(std::move(qualifier));
+  }
+  all.push_back(number_column("run_time_s", &CaseSummary::run_time_s));
   return all;
 }
 
-#undef POUND_NUMBER_COLUMN
-#undef POUND_TEXT_COLUMN
+const std::vector<Column>& columns() {
+  static const std::vector<Column> all = make_columns();
+  return all;
+}
 
 // Splits one CSV line into cells, undoing the quoting of quoted().
 std::vector<std::string> split_cells(const std::string& row) {
@@ -137,8 +149,7 @@ std::vector<std::string> split_cells(const std::string& row) {
 
 std::string case_row_header() {
   std::string header;
-  for (const Column& column : columns())
-    header += (header.empty() ? "" : ",") + std::string(column.name);
+  for (const Column& column : columns()) header += (header.empty() ? "" : ",") + column.name;
   return header;
 }
 

@@ -10,6 +10,7 @@
 
 #include "io/json_reader.hpp"
 #include "io/model_reader.hpp"
+#include "results/batch_quantities.hpp"
 
 namespace pound::io {
 namespace {
@@ -157,9 +158,9 @@ builder::SetSpec read_set(JsonObject& top) {
     set.intensity = read_object(*intensity, read_intensity);
   if (const std::optional<JsonValue> limits = top.find("limits")) {
     JsonObject object(*limits);
-    for (const std::string& quantity : builder::batch_quantities())
-      if (const std::optional<double> value = object.if_present<double>(quantity, positive))
-        set.limits.push_back({quantity, *value});
+    for (const results::BatchQuantity& quantity : results::batch_quantities())
+      if (const std::optional<double> value = object.if_present<double>(quantity.name, positive))
+        set.limits.push_back({std::string(quantity.name), *value});
     object.finish();  // a name that is not a quantity, with the closest one suggested
   }
   return set;

@@ -1,6 +1,20 @@
 #include "io/statistics_document.hpp"
 
 namespace pound::io {
+namespace {
+
+// What each response quantity is, so that readers (tools/plot_batch.py) need no list of their own.
+Document quantities_document() {
+  Document quantities;
+  for (const results::BatchQuantity& q : results::batch_quantities())
+    quantities.set(std::string(q.name), Document()
+                                            .set("meaning", std::string(q.meaning))
+                                            .set("axis_label", std::string(q.axis_label))
+                                            .set("response", q.response));
+  return quantities;
+}
+
+}  // namespace
 
 Document to_document(const results::BatchStatistics& statistics, const builder::SetSpec& set) {
   Document doc;
@@ -18,6 +32,7 @@ Document to_document(const results::BatchStatistics& statistics, const builder::
   if (set.intensity.type == "sa")
     intensity.set("period", set.intensity.period).set("damping", set.intensity.damping);
   doc.set("intensity_measure", intensity);
+  doc.set("quantities", quantities_document());
   std::vector<Document> groups;
   for (const results::ScaleGroup& g : statistics.groups) {
     Document group;

@@ -49,6 +49,13 @@ Likelihood likelihood(const std::vector<FragilityObservation>& data, double a, d
   return l;
 }
 
+// The quantity a limit is on. The set reader accepts no other names, so a stranger is a bug.
+const BatchQuantity& limited_quantity(const builder::ResponseLimit& limit) {
+  const BatchQuantity* quantity = find_batch_quantity(limit.quantity);
+  if (!quantity) throw std::logic_error("a limit on an unknown quantity: " + limit.quantity);
+  return *quantity;
+}
+
 }  // namespace
 
 FragilityFit fit_lognormal_fragility(const std::vector<FragilityObservation>& observations) {
@@ -145,19 +152,20 @@ BatchStatistics batch_statistics(const builder::SetSpec& set,
           if (c.status == "completed") completed.push_back(&c);
         }
       group.completed = completed.size();
-      for (const std::string& quantity : builder::batch_quantities()) {
+      for (const BatchQuantity& quantity : batch_quantities()) {
         std::vector<double> values;
         for (const results::CaseSummary* c : completed)
-          if (const std::optional<double> value = c->quantity(quantity)) values.push_back(*value);
+          if (const std::optional<double> value = c->*quantity.value) values.push_back(*value);
         if (values.empty()) continue;
-        group.responses.push_back({quantity, values.size(), quantile(values, 0.5),
+        group.responses.push_back({std::string(quantity.name), values.size(), quantile(values, 0.5),
                                    quantile(values, 0.84),
                                    *std::max_element(values.begin(), values.end())});
       }
       for (const builder::ResponseLimit& limit : set.limits) {
         Exceedance e{limit.quantity, limit.value};
+        const auto value_of = limited_quantity(limit).value;
         for (const results::CaseSummary* c : completed)
-          if (const std::optional<double> value = c->quantity(limit.quantity)) {
+          if (const std::optional<double> value = c->*value_of) {
             ++e.count;
             e.exceeded += *value > limit.value;
           }
@@ -168,9 +176,10 @@ BatchStatistics batch_statistics(const builder::SetSpec& set,
     }
     for (const builder::ResponseLimit& limit : set.limits) {
       std::vector<FragilityObservation> observations;
+      const auto value_of = limited_quantity(limit).value;
       for (const results::CaseSummary& c : cases)
         if (c.model == model.id && c.status == "completed" && c.intensity && *c.intensity > 0.0)
-          if (const std::optional<double> value = c.quantity(limit.quantity))
+          if (const std::optional<double> value = c.*value_of)
             observations.push_back({*c.intensity, *value > limit.value});
       FragilityFit fit;
       if (observations.empty())

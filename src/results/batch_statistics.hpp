@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "builder/batch_spec.hpp"
+#include "results/batch_quantities.hpp"
 #include "results/case_summary.hpp"
 
 namespace pound::results {

@@ -1,7 +1,8 @@
 #pragma once
-// The pounding summary of one analysis in a batch: one row of batch_summary.csv. Quantities a
-// model does not have (no joints, no storeys) are absent rather than zero, so statistics never
-// mix "no joint" with "a joint that did not open".
+// The pounding summary of one analysis in a batch: one row of batch_summary.csv (the response
+// quantities among its members are listed in results/batch_quantities.hpp). Quantities a model
+// does not have (no joints, no storeys) are absent rather than zero, so statistics never mix
+// "no joint" with "a joint that did not open".
 #include <optional>
 #include <string>
 
@@ -38,19 +39,6 @@ struct CaseSummary {
   std::optional<double> max_ductility;
   std::optional<double> energy_balance_error;  // worst over the run
   std::optional<double> run_time_s;  // of the solve; the one column that varies run to run
-
-  // A numeric response quantity by its column name (builder::batch_quantities()).
-  std::optional<double> quantity(const std::string& column) const {
-    if (column == "impacts") return impacts;
-    if (column == "max_pounding_force") return max_pounding_force;
-    if (column == "max_restrainer_force") return max_restrainer_force;
-    if (column == "max_joint_opening") return max_joint_opening;
-    if (column == "max_seat_movement") return max_seat_movement;
-    if (column == "max_drift_ratio") return max_drift_ratio;
-    if (column == "max_ductility") return max_ductility;
-    if (column == "energy_balance_error") return energy_balance_error;
-    return std::nullopt;
-  }
 };
 
 }  // namespace pound::results

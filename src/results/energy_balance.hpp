@@ -28,8 +28,8 @@ struct EnergyTerms {
   double created_fraction() const;
 };
 
-// A run whose created energy passes this fraction of the largest term stops as failed (the
-// stability map's definition of an unstable cell, DESIGN 3.1).
+// A run whose created energy passes this fraction of the largest term stops as failed
+// (docs/design.md §2.4; also the stability map's definition of an unstable cell).
 inline constexpr double kEnergyGrowthLimit = 0.10;
 
 class EnergyBalance {

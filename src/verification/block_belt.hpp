@@ -1,5 +1,5 @@
 #pragma once
-// The block on a moving belt (Suzuki & Toi 1987, section 3.2; DESIGN.md section 3.4): an
+// The block on a moving belt (Suzuki & Toi 1987, section 3.2; docs/design.md §3.4): an
 // elastic block of quads pressed on a belt by a pressure on its top, held back by springs on
 // its trailing face, with Coulomb friction of equal static and kinetic mu at the belt. At t = 0
 // the springs pull mu P (the most static friction can hold) and every node moves with the

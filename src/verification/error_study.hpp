@@ -1,8 +1,8 @@
 #pragma once
-// Error against run time on the rod benchmark (DESIGN.md 3.1): a grid of integrator x contact
-// law x mesh x time step on Kawashima's case and the fixed-end A2 = 3 A1 case, every metric plus
-// the run time of the solve alone (median of repeats), and the Pareto front per case: the runs
-// no other run beats on both force error and run time.
+// Error against run time on the rod benchmark (docs/design.md §3.1): a grid of integrator x
+// contact law x mesh x time step on Kawashima's case and the fixed-end A2 = 3 A1 case, every
+// metric plus the run time of the solve alone (median of repeats), and the Pareto front per case:
+// the runs no other run beats on both force error and run time.
 #include <string>
 #include <vector>
 

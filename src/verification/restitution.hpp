@@ -1,5 +1,5 @@
 #pragma once
-// Restitution achieved by each impact law (DESIGN.md section 3.2): two free masses collide once
+// Restitution achieved by each impact law (docs/design.md §3.2): two free masses collide once
 // through a link with a small initial gap (so contact begins inside a step), integrated with
 // Newmark (average acceleration, Newton) at 2,000 steps per contact. Achieved e is the relative
 // separation velocity over the relative approach velocity.

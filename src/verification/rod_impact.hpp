@@ -1,5 +1,5 @@
 #pragma once
-// The rod-impact benchmark (DESIGN.md section 3.1): a rod pair solved by the finite element
+// The rod-impact benchmark (docs/design.md §3.1): a rod pair solved by the finite element
 // model and compared with the exact solution, with the metrics every verification reports.
 #include <memory>
 #include <optional>

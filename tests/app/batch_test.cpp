@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "support/process.hpp"
+#include "support/shared_records.hpp"
 
 namespace pound::testing {
 namespace {
@@ -23,7 +24,6 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::string kSource = POUND_SOURCE_DIR;
-const std::string kShared = kSource + "/../shared/ground_motions";
 
 // Every line of a CSV without its last cell (run_time_s, the one column that may vary).
 std::string without_run_time(const std::string& csv) {
@@ -85,13 +85,14 @@ class Batch : public PoundProcess {
   "scales": [1, 2],
   "limits": {{"max_joint_opening": 0.05}}{2}
 }})",
-        kSource, kShared, extra);
+        kSource, kSharedRecordsFolder, extra);
     std::ofstream(path("set.json")) << set;
     return path("set.json").string();
   }
 };
 
 TEST_F(Batch, RunsRealRecordsInPlaceAndIsolatesABrokenRecord) {
+  POUND_SKIP_WITHOUT_SHARED_RECORDS();
   const std::string set = write_set();
   const Outcome outcome = pound({"batch", set, "--out", path("out").string(), "--jobs", "2"});
   EXPECT_EQ(outcome.exit_code, 3) << outcome.err;  // one record is broken
@@ -136,6 +137,7 @@ TEST_F(Batch, RunsRealRecordsInPlaceAndIsolatesABrokenRecord) {
 }
 
 TEST_F(Batch, GivesTheSameResultsWhateverTheNumberOfWorkers) {
+  POUND_SKIP_WITHOUT_SHARED_RECORDS();
   const std::string set = write_set();
   const Outcome one = pound({"batch", set, "--out", path("one").string(), "--jobs", "1", "-q"});
   const Outcome two = pound({"batch", set, "--out", path("two").string(), "--jobs", "3", "-q"});
@@ -150,6 +152,7 @@ TEST_F(Batch, GivesTheSameResultsWhateverTheNumberOfWorkers) {
 
 #ifdef POUND_TEST_MPIRUN
 TEST_F(Batch, UnderMpirunWithTwoRanksGivesTheThreadedResults) {
+  POUND_SKIP_WITHOUT_SHARED_RECORDS();
   const std::string set = write_set();
   const Outcome threads = pound({"batch", set, "--out", path("threads").string(), "-q"});
   ASSERT_EQ(threads.exit_code, 3) << threads.err;
@@ -238,6 +241,7 @@ TEST_F(Batch, SurvivesBeingKilledAndResumesToTheSameResults) {
 }
 
 TEST_F(Batch, RefusesAChangedSetOnResume) {
+  POUND_SKIP_WITHOUT_SHARED_RECORDS();
   const std::string set = write_set();
   ASSERT_EQ(pound({"batch", set, "--out", path("out").string(), "-q"}).exit_code, 3);
   write_set(R"(, "scales": [1, 3])");

@@ -11,6 +11,7 @@
 #include "builder/build.hpp"
 #include "io/ground_motion_reader.hpp"
 #include "io/model_reader.hpp"
+#include "support/shared_records.hpp"
 
 namespace pound {
 namespace {
@@ -19,9 +20,8 @@ model::GroundMotion el_centro() {
   io::RecordFormat format;
   format.format = "at2";
   model::GroundMotion motion = io::read_ground_motion(
-      POUND_SOURCE_DIR
-      "/../shared/ground_motions/ImperialValley1940_ElCentroArray9_180_PEER2000.AT2",
-      format, 9.80665);
+      testing::shared_record("ImperialValley1940_ElCentroArray9_180_PEER2000.AT2"), format,
+      9.80665);
   motion.acceleration.resize(600);
   // From rest: a nonzero first sample is a jump at t = 0, which a delayed support meets as a ramp
   // over one step instead, and the shifted responses would differ by that.
@@ -70,6 +70,7 @@ std::string portal(const std::string& excitation) {
 }
 
 TEST(MultiSupport, AllSupportsTogetherIsTheUniformExcitation) {
+  POUND_SKIP_WITHOUT_SHARED_RECORDS();
   const Histories uniform = run(portal(R"({"record": "r.AT2"})"), 5.0);
   const Histories moving = run(portal(R"({"record": "r.AT2", "supports": ["a0", "b0"]})"), 5.0);
   double difference = 0.0, peak = 0.0;
@@ -84,6 +85,7 @@ TEST(MultiSupport, AllSupportsTogetherIsTheUniformExcitation) {
 
 // An SDOF on one support that the wave reaches 0.5 s late answers 0.5 s late.
 TEST(MultiSupport, ADelayedSupportShiftsTheResponse) {
+  POUND_SKIP_WITHOUT_SHARED_RECORDS();
   const std::string sdof = R"({
     "nodes": [{"id": "ground", "x": 100}, {"id": "mass", "x": 101}],
     "materials": [{"id": "k", "youngs_modulus": 2e6, "density": 0}],
@@ -116,6 +118,7 @@ TEST(MultiSupport, ADelayedSupportShiftsTheResponse) {
 // Two stiff piers on supports the wave reaches 0.1 s apart, joined by a link that never closes:
 // the link's penetration follows the differential ground displacement.
 TEST(MultiSupport, LinksSeeTheDifferentialGroundDisplacement) {
+  POUND_SKIP_WITHOUT_SHARED_RECORDS();
   const std::string text = R"({
     "nodes": [{"id": "g1", "x": 0}, {"id": "m1", "x": 0.5}, {"id": "m2", "x": 40}, {"id": "g2", "x": 40.5}],
     "materials": [{"id": "k", "youngs_modulus": 4e10, "density": 0}],

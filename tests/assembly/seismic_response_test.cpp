@@ -14,6 +14,7 @@
 #include "io/ground_motion_reader.hpp"
 #include "io/model_reader.hpp"
 #include "model/ground_motion.hpp"
+#include "support/shared_records.hpp"
 
 namespace pound {
 namespace {
@@ -22,9 +23,8 @@ model::GroundMotion el_centro() {
   io::RecordFormat format;
   format.format = "at2";
   model::GroundMotion motion = io::read_ground_motion(
-      POUND_SOURCE_DIR
-      "/../shared/ground_motions/ImperialValley1940_ElCentroArray9_180_PEER2000.AT2",
-      format, 9.80665);
+      testing::shared_record("ImperialValley1940_ElCentroArray9_180_PEER2000.AT2"), format,
+      9.80665);
   motion.acceleration.resize(1000);  // the strong part, 10 s
   return motion;
 }
@@ -61,6 +61,7 @@ double relative_error(const std::vector<double>& a, const std::vector<double>& b
 }
 
 TEST(SeismicResponse, SdofMatchesNigamJenningsAtSecondOrder) {
+  POUND_SKIP_WITHOUT_SHARED_RECORDS();
   const model::GroundMotion motion = el_centro();
   const double mass = 1.0e5, period = 0.8, zeta = 0.05;
   const double omega = 2 * std::numbers::pi / period, stiffness = mass * omega * omega;
@@ -86,6 +87,7 @@ TEST(SeismicResponse, SdofMatchesNigamJenningsAtSecondOrder) {
 }
 
 TEST(SeismicResponse, DampedFrameMatchesModalSuperposition) {
+  POUND_SKIP_WITHOUT_SHARED_RECORDS();
   const model::GroundMotion motion = el_centro();
   // A three-storey, one-bay frame (fixed bases, lumped floor masses) with Rayleigh damping;
   // Rayleigh damping is classical, so each mode is an independent SDOF.

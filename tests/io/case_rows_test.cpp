@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/errors.hpp"
+#include "results/batch_quantities.hpp"
 
 namespace pound::io {
 namespace {
@@ -53,6 +54,26 @@ TEST(CaseRows, HeaderHasOneNamePerCell) {
   const std::string row = case_row(results::CaseSummary());
   EXPECT_EQ(std::count(header.begin(), header.end(), ','), std::count(row.begin(), row.end(), ','));
   EXPECT_EQ(header.rfind("name,model,record,scale,status,reason,", 0), 0u);
+}
+
+// The columns of batch_summary.csv, which users' scripts read by name and position.
+TEST(CaseRows, HeaderKeepsItsColumnsAndTheirOrder) {
+  EXPECT_EQ(case_row_header(),
+            "name,model,record,scale,status,reason,pga_g,intensity,end_time,steps,impacts,"
+            "max_pounding_force,max_pounding_link,max_restrainer_force,max_restrainer_link,"
+            "max_joint_opening,max_seat_movement,min_unseating_margin,unseated,max_drift_ratio,"
+            "max_ductility,energy_balance_error,run_time_s");
+}
+
+// Every quantity of the table is a column, and reads back into its own member.
+TEST(CaseRows, EveryBatchQuantityIsAColumnThatReadsBack) {
+  const std::string header = "," + case_row_header() + ",";
+  for (const results::BatchQuantity& q : results::batch_quantities()) {
+    EXPECT_NE(header.find("," + std::string(q.name) + ","), std::string::npos) << q.name;
+    results::CaseSummary c;
+    c.*q.value = 0.125;
+    EXPECT_EQ(parse_case_row(case_row(c), "case.csv").*q.value, 0.125) << q.name;
+  }
 }
 
 TEST(CaseRows, DamagedRowsAreInputErrors) {

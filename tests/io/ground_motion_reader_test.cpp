@@ -1,7 +1,7 @@
 // Reading ground-motion records as users download them. The real records live outside the
-// repository, in ../shared/ground_motions (PROVENANCE.md there says where each comes from); the
-// bad inputs are those files edited in memory and written to a temporary folder. The
-// `pound spectrum` command is tested here too, on the same files.
+// repository, in ../shared/ground_motions (support/shared_records.hpp; the tests that read them
+// skip without it); most bad inputs are those files edited in memory and written to a temporary
+// folder. The `pound spectrum` command is tested here too, on the same files.
 #include "io/ground_motion_reader.hpp"
 
 #include <fmt/format.h>
@@ -23,13 +23,14 @@
 
 #include "core/errors.hpp"
 #include "support/process.hpp"
+#include "support/shared_records.hpp"
 
 namespace pound::io {
 namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kShared = POUND_SOURCE_DIR "/../shared/ground_motions/";
+const std::string kShared = pound::testing::shared_record("");
 const std::string kShipped = POUND_SOURCE_DIR "/ground_motions/";
 const std::string kNgaWest2 = kShared + "ImperialValley1940_ElCentroArray9_180_NGAW2.AT2";
 const std::string kKobeColumns = kShared + "Kobe1995_JMA_NS-EW_cms2_dt0.005.txt";
@@ -121,7 +122,10 @@ std::size_t header_npts(const std::string& path) {
   return 0;
 }
 
-class GroundMotionSharedRecord : public ::testing::TestWithParam<SharedRecord> {};
+class GroundMotionSharedRecord : public ::testing::TestWithParam<SharedRecord> {
+ protected:
+  void SetUp() override { POUND_SKIP_WITHOUT_SHARED_RECORDS(); }
+};
 
 TEST_P(GroundMotionSharedRecord, ReadsWithTheStatedSizeStepAndPeak) {
   const SharedRecord& r = GetParam();
@@ -145,6 +149,7 @@ INSTANTIATE_TEST_SUITE_P(GroundMotionReader, GroundMotionSharedRecord,
                          ::testing::ValuesIn(kSharedRecords));
 
 TEST(GroundMotionReader, EveryFileInTheSharedFolderIsInTheTable) {
+  POUND_SKIP_WITHOUT_SHARED_RECORDS();
   std::size_t files = 0;
   for (const auto& entry : fs::directory_iterator(kShared)) {
     const std::string name = entry.path().filename().string();
@@ -158,11 +163,15 @@ TEST(GroundMotionReader, EveryFileInTheSharedFolderIsInTheTable) {
 }
 
 TEST(GroundMotionReader, AutoFormatAndUnitConversion) {
+  POUND_SKIP_WITHOUT_SHARED_RECORDS();
   const model::GroundMotion in_g = read_in_g(kNgaWest2, RecordFormat{});
   const model::GroundMotion in_si = read_ground_motion(kNgaWest2, RecordFormat{}, 9.80665);
   EXPECT_DOUBLE_EQ(in_si.peak(), 9.80665 * in_g.peak());
   const model::GroundMotion kobe_si = read_ground_motion(kKobeColumns, columns(1), 9.80665);
   EXPECT_NEAR(kobe_si.peak(), 0.841 * 9.80665, 0.0005 * 9.80665);
+}
+
+TEST(GroundMotionReader, AccelerationUnitNames) {
   EXPECT_EQ(parse_acceleration_unit("cm/s2"), AccelerationUnit::cm_per_s2);
   EXPECT_EQ(parse_acceleration_unit("m/s2"), AccelerationUnit::m_per_s2);
   EXPECT_EQ(parse_acceleration_unit("g"), AccelerationUnit::g);
@@ -176,6 +185,7 @@ TEST(GroundMotionReader, AutoFormatAndUnitConversion) {
 }
 
 TEST(GroundMotionReader, ColumnsTimeStepFromTheHeader) {
+  POUND_SKIP_WITHOUT_SHARED_RECORDS();
   RecordFormat format = columns(1);  // no dt given: "Acc. in cm/sec^2 and dt=0.005 sec."
   EXPECT_DOUBLE_EQ(read_in_g(kKobeColumns, format).time_step, 0.005);
 }
@@ -291,11 +301,15 @@ std::string without_last_lines(const std::string& file, std::size_t count) {
   return join_lines(lines);
 }
 
+// Whether a bad record is made here or edited from one of the real records.
+enum class Source { made_here, real_record };
+
 struct BadRecord {
   const char* name;
   std::function<std::string()> text;  // null: the file is not written (path given below)
   RecordFormat format;
   std::string where, phrase;
+  Source source = Source::made_here;
 };
 
 std::ostream& operator<<(std::ostream& out, const BadRecord& r) { return out << r.name; }
@@ -318,16 +332,17 @@ const std::vector<BadRecord>& bad_records() {
        "line 1", "binary data"},
       {"at2_npts_value_missing",
        [] { return with_line(kNgaWest2, 4, "NPTS=       , DT=   .0100 SEC,"); }, at2(), "line 4",
-       "expected the number of points and the time step, as in 'NPTS="},
+       "expected the number of points and the time step, as in 'NPTS=", Source::real_record},
       {"at2_size_line_missing",
        [] { return with_line(kNgaWest2, 4, "   .1000000E-02   .1000000E-02"); }, at2(), "line 4",
-       "found '.1000000E-02   .1000000E-02'"},
+       "found '.1000000E-02   .1000000E-02'", Source::real_record},
       {"at2_npts_not_whole", [] { return with_line(kNgaWest2, 4, "NPTS= 5372.5, DT= .0100 SEC"); },
-       at2(), "line 4", "NPTS must be a whole number of points; found '5372.5'"},
+       at2(), "line 4", "NPTS must be a whole number of points; found '5372.5'",
+       Source::real_record},
       {"at2_dt_zero", [] { return with_line(kNgaWest2, 4, "NPTS=   5372, DT=   .0000 SEC"); },
-       at2(), "line 4", "DT must be a positive time step; found '.0000'"},
+       at2(), "line 4", "DT must be a positive time step; found '.0000'", Source::real_record},
       {"at2_too_few_values", [] { return without_last_lines(kNgaWest2, 3); }, at2(), "line 1076",
-       "the file ends after 5360 of the 5372 values NPTS gives (line 4)"},
+       "the file ends after 5360 of the 5372 values NPTS gives (line 4)", Source::real_record},
       // Found by fuzz_at2: the reader reserved NPTS values before reading them.
       {"at2_npts_beyond_memory",
        [] {
@@ -345,35 +360,37 @@ const std::vector<BadRecord>& bad_records() {
        "only 1 row of data: a record needs at least 2 samples"},
       {"at2_too_many_values",
        [] { return read_text(kNgaWest2) + "   .1000000E-02   .1000000E-02\n"; }, at2(), "line 1080",
-       "more values than NPTS = 5372 (line 4): value 5373 is on this line"},
+       "more values than NPTS = 5372 (line 4): value 5373 is on this line", Source::real_record},
       {"at2_word_in_the_data",
        [] { return with_line(kNgaWest2, 100, "   .1000000E-02   .1O00000E-02   .1000000E-02"); },
-       at2(), "line 100", "'.1O00000E-02' is not a number"},
+       at2(), "line 100", "'.1O00000E-02' is not a number", Source::real_record},
       {"at2_nan", [] { return with_line(kNgaWest2, 200, "   .1000000E-02   NaN"); }, at2(),
-       "line 200", "'NaN' is not a finite number"},
+       "line 200", "'NaN' is not a finite number", Source::real_record},
       {"at2_overflow", [] { return with_line(kNgaWest2, 201, "   .1000000E+999"); }, at2(),
-       "line 201", "'.1000000E+999' is not a finite number"},
+       "line 201", "'.1000000E+999' is not a finite number", Source::real_record},
       {"at2_header_only", [] { return std::string("PEER NGA\nEVENT\n"); }, at2(), "line 2",
        "the file ends after 2 lines, before the NPTS and DT line"},
       {"at2_velocity_record",
        [] { return with_line(kNgaWest2, 3, "VELOCITY TIME SERIES IN UNITS OF CM/S"); }, at2(),
-       "line 3", "this is a velocity record"},
+       "line 3", "this is a velocity record", Source::real_record},
       {"at2_dt_disagrees", [] { return read_text(kNgaWest2); }, with_time_step(at2(), 0.02),
-       "line 4", "the file gives dt = 0.01 but the time step given is 0.02"},
+       "line 4", "the file gives dt = 0.01 but the time step given is 0.02", Source::real_record},
       {"columns_three_of_two", [] { return read_text(kKobeColumns); }, columns(3), "line 4",
-       "column 3 does not exist: this line has 2 values"},
+       "column 3 does not exist: this line has 2 values", Source::real_record},
       {"columns_garbage_in_the_data",
        [] { return with_line(kKobeColumns, 1000, "-1.05E-01\t\tn/a"); }, columns(1), "line 1000",
-       "'n/a' is not a number"},
+       "'n/a' is not a number", Source::real_record},
       {"columns_ragged_row", [] { return with_line(kKobeColumns, 500, "-1.05E-01"); }, columns(1),
-       "line 500", "this line has 1 value where the first data line (line 4) has 2"},
+       "line 500", "this line has 1 value where the first data line (line 4) has 2",
+       Source::real_record},
       {"columns_units_disagree", [] { return read_text(kKobeColumns); },
        columns(1, AccelerationUnit::g), "line 3",
        "the header says the values are in cm/s2 ('%component (JMA Station - E-W). Acc. in "
-       "cm/sec^2 and dt=0.005 sec.') but they are being read as g"},
+       "cm/sec^2 and dt=0.005 sec.') but they are being read as g",
+       Source::real_record},
       {"columns_dt_disagrees", [] { return read_text(kKobeColumns); },
        with_time_step(columns(1), 0.01), "line 3",
-       "the file gives dt = 0.005 but the time step given is 0.01"},
+       "the file gives dt = 0.005 but the time step given is 0.01", Source::real_record},
       {"columns_no_time_step", [] { return std::string("0.1\n0.2\n0.3\n"); },
        columns(1, AccelerationUnit::g), "", "the file does not give its time step"},
       {"columns_time_step_zero", [] { return std::string("0.1\n0.2\n"); },
@@ -411,6 +428,9 @@ void expect_input_error(const std::string& path, const RecordFormat& format,
 
 TEST_P(GroundMotionBadRecord, IsAnInputErrorWithItsLine) {
   const BadRecord& r = GetParam();
+  if (r.source == Source::real_record) {
+    POUND_SKIP_WITHOUT_SHARED_RECORDS();
+  }
   expect_input_error(write(std::string(r.name) + ".dat", r.text()), r.format, r.where, r.phrase);
 }
 
@@ -423,12 +443,16 @@ INSTANTIATE_TEST_SUITE_P(GroundMotionReader, GroundMotionBadRecord,
 // The text entry point (used by the fuzz targets) reads exactly what the file reader reads, and
 // takes "auto" from the name it is given.
 TEST(GroundMotionReader, ParsesTextAsTheFileReaderReadsTheFile) {
+  POUND_SKIP_WITHOUT_SHARED_RECORDS();
   const model::GroundMotion from_file = read_in_g(kNgaWest2, RecordFormat{});
   const model::GroundMotion from_text =
       parse_ground_motion(read_text(kNgaWest2), kNgaWest2, RecordFormat{}, 1.0);
   EXPECT_EQ(from_text.name, from_file.name);
   EXPECT_EQ(from_text.time_step, from_file.time_step);
   EXPECT_EQ(from_text.acceleration, from_file.acceleration);
+}
+
+TEST(GroundMotionReader, ParsedTextWithoutATimeStepIsAnInputErrorNamingItsSource) {
   try {
     parse_ground_motion("0.1\n0.2\n", "memory.txt", RecordFormat{}, 1.0);
     ADD_FAILURE() << "a columns text without dt was read";
@@ -458,6 +482,7 @@ class SpectrumCommand : public GroundMotionReaderFiles {
 };
 
 TEST_F(SpectrumCommand, JsonReportsTheRecordAndItsSpectrum) {
+  POUND_SKIP_WITHOUT_SHARED_RECORDS();
   const Outcome outcome = spectrum({kNgaWest2, "--json"});
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   const nlohmann::json result = nlohmann::json::parse(outcome.out);
@@ -475,6 +500,7 @@ TEST_F(SpectrumCommand, JsonReportsTheRecordAndItsSpectrum) {
 }
 
 TEST_F(SpectrumCommand, ColumnsFileAndCsv) {
+  POUND_SKIP_WITHOUT_SHARED_RECORDS();
   const fs::path csv = folder_ / "spectrum.csv";
   const Outcome outcome = spectrum({kKobeColumns, "--column", "2", "--units", "cm/s2", "--periods",
                                     "0,0.5,1", "--csv", csv.string()});
@@ -493,17 +519,19 @@ TEST_F(SpectrumCommand, MissingFileIsExitCode2) {
 }
 
 TEST_F(SpectrumCommand, BadRecordIsExitCode2WithItsLine) {
-  const std::string path = write("bad.AT2", with_line(kNgaWest2, 4, "NPTS= , DT= .01"));
+  const std::string path =
+      write("bad.AT2", with_line(kShipped + "synthetic_firm_01.AT2", 4, "NPTS= , DT= .01"));
   const Outcome outcome = spectrum({path});
   EXPECT_EQ(outcome.exit_code, 2);
   EXPECT_NE(outcome.err.find(path + ": line 4: expected"), std::string::npos) << outcome.err;
 }
 
 TEST_F(SpectrumCommand, BadOptionsAreUsageErrors) {
+  const std::string record = kShipped + "synthetic_firm_01.AT2";
   for (const std::vector<std::string>& arguments :
-       {std::vector<std::string>{kNgaWest2, "--units", "furlongs"},
-        std::vector<std::string>{kNgaWest2, "--periods", "0.1,x"},
-        std::vector<std::string>{kNgaWest2, "--damping", "1.5"}, std::vector<std::string>{}}) {
+       {std::vector<std::string>{record, "--units", "furlongs"},
+        std::vector<std::string>{record, "--periods", "0.1,x"},
+        std::vector<std::string>{record, "--damping", "1.5"}, std::vector<std::string>{}}) {
     const Outcome outcome = spectrum(arguments);
     EXPECT_EQ(outcome.exit_code, 1) << outcome.err;
     std::cout << "stderr: " << outcome.err;

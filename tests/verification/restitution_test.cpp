@@ -1,4 +1,4 @@
-// Restitution achieved by each impact law in a two-mass impact (DESIGN.md 3.2).
+// Restitution achieved by each impact law in a two-mass impact (docs/design.md §3.2).
 #include "verification/restitution.hpp"
 
 #include <gtest/gtest.h>
@@ -40,7 +40,7 @@ TEST(Restitution, PublishedConversionsMissTheTargetAtLowRestitution) {
   }
 }
 
-// Elastic Hertz against its closed forms (DESIGN.md 2.3): within 0.5 %.
+// Elastic Hertz against its closed forms (docs/design.md §2.3): within 0.5 %.
 TEST(Restitution, ElasticHertzMatchesTheClosedForms) {
   const ImpactSetup setup;
   const double effective_mass = setup.mass_1 * setup.mass_2 / (setup.mass_1 + setup.mass_2);

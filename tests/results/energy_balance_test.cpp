@@ -1,0 +1,139 @@
+// The energy balance on a one-DOF oscillator, fed the closed-form solution sampled at steps (so
+// the recorder alone is tested), and once through Newmark, whose trapezoidal rule it balances
+// exactly.
+#include "results/energy_balance.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+#include "integrators/newmark.hpp"
+#include "integrators/transient_analysis.hpp"
+#include "links/gap_spring.hpp"
+#include "support/oscillator.hpp"
+
+namespace pound::results {
+namespace {
+
+using testing::Oscillator;
+
+integrators::State sample(double time, double u, double v) {
+  integrators::State state;
+  state.time = time;
+  state.displacement = Vector::Constant(1, u);
+  state.velocity = Vector::Constant(1, v);
+  state.acceleration = Vector::Zero(1);
+  return state;
+}
+
+// Damped free vibration from u = 0, v = v0: u = v0/wd exp(-z w t) sin(wd t).
+struct FreeVibration {
+  double mass = 2.0, stiffness = 50.0, zeta = 0.1, v0 = 0.3;
+  double omega = std::sqrt(stiffness / mass), omega_d = omega * std::sqrt(1 - zeta * zeta);
+  double damping = 2.0 * zeta * omega * mass;
+  double u(double t) const {
+    return v0 / omega_d * std::exp(-zeta * omega * t) * std::sin(omega_d * t);
+  }
+  double v(double t) const {
+    return v0 * std::exp(-zeta * omega * t) *
+           (std::cos(omega_d * t) - zeta * omega / omega_d * std::sin(omega_d * t));
+  }
+};
+
+// |damping term - exact dissipation| / exact dissipation after 2 s sampled at dt.
+double dissipation_error(double dt) {
+  const FreeVibration f;
+  Oscillator system(f.mass, f.damping, f.stiffness);
+  EnergyBalance balance(system);
+  const double end = 2.0;
+  const int steps = static_cast<int>(std::lround(end / dt));
+  for (int k = 0; k <= steps; ++k) balance.record(sample(k * dt, f.u(k * dt), f.v(k * dt)));
+  const EnergyTerms& e = balance.terms();
+  // Kinetic and strain energy are exact at the samples; the initial energy is 1/2 m v0^2.
+  EXPECT_NEAR(e.kinetic, 0.5 * f.mass * f.v(end) * f.v(end), 1e-15);
+  EXPECT_NEAR(e.strain, 0.5 * f.stiffness * f.u(end) * f.u(end), 1e-15);
+  EXPECT_DOUBLE_EQ(e.initial, 0.5 * f.mass * f.v0 * f.v0);
+  EXPECT_EQ(e.input, 0.0);
+  const double dissipated =
+      e.initial - 0.5 * f.mass * f.v(end) * f.v(end) - 0.5 * f.stiffness * f.u(end) * f.u(end);
+  return std::abs(e.damping - dissipated) / dissipated;
+}
+
+TEST(EnergyBalance, DampingWorkConvergesToTheDissipationAtSecondOrder) {
+  const double coarse = dissipation_error(0.01), fine = dissipation_error(0.005);
+  std::cout << "dissipation error " << coarse << " at dt = 0.01, " << fine << " at 0.005\n";
+  EXPECT_LT(coarse, 1e-3);
+  EXPECT_NEAR(std::log2(coarse / fine), 2.0, 0.05);
+}
+
+// A constant force f from rest: u = f/k (1 - cos w t) = 2 f/k sin^2(w t/2) (free of cancellation
+// at small t). The input work f u(t) is what the trapezoidal sum gives exactly, and equals the
+// kinetic plus strain energy. Over 0.8 of a period: at its end every term vanishes, and the
+// balance error, relative to the largest term, is round-off over nothing.
+TEST(EnergyBalance, InputWorkOfAConstantForceIsForceTimesDisplacement) {
+  const double mass = 2.0, stiffness = 50.0, force = 3.0, omega = std::sqrt(stiffness / mass);
+  Oscillator system(mass, 0.0, stiffness, integrators::LinkSet(1), [&](double) { return force; });
+  auto u = [&](double t) { return 2.0 * force / stiffness * std::pow(std::sin(omega * t / 2), 2); };
+  EnergyBalance balance(system);
+  const double dt = 0.01;
+  for (int k = 0; k <= 100; ++k)
+    balance.record(sample(k * dt, u(k * dt), force / stiffness * omega * std::sin(omega * k * dt)));
+  const EnergyTerms& e = balance.terms();
+  EXPECT_NEAR(e.input, force * u(100 * dt), 1e-15);
+  EXPECT_NEAR(e.kinetic + e.strain, force * u(100 * dt), 1e-15);
+  EXPECT_LT(balance.worst_balance_error(), 1e-13);
+}
+
+// Work on a link: 1/2 sum (F_k + F_k+1) B (u_k+1 - u_k), with B = [1].
+TEST(EnergyBalance, LinkWorkIsTheTrapezoidalSumOfForceTimesDeformation) {
+  std::vector<std::unique_ptr<links::LinkLaw>> laws;
+  laws.push_back(std::make_unique<links::GapSpring>(1.0));
+  Oscillator system(1.0, 0.0, 0.0, integrators::LinkSet(1, {{{0, 1.0}}}, {0.0}, std::move(laws)));
+  EnergyBalance balance(system);
+  const double displacements[] = {0.0, 0.25, 0.75}, forces[] = {0.0, 2.0, 6.0};
+  for (int k = 0; k < 3; ++k) {
+    integrators::State state = sample(k, displacements[k], 0.0);
+    state.link_force = Vector::Constant(1, forces[k]);
+    state.link_penetration = Vector::Constant(1, displacements[k]);
+    balance.record(state);
+  }
+  EXPECT_EQ(balance.terms().links, 0.5 * 2.0 * 0.25 + 0.5 * 8.0 * 0.5);
+}
+
+TEST(EnergyBalance, CreatedFractionIsSignedAndTheBalanceErrorItsSize) {
+  EnergyTerms e;
+  EXPECT_EQ(e.created_fraction(), 0.0);  // nothing yet
+  e.input = 10.0;
+  e.kinetic = 4.0;
+  e.strain = 5.0;
+  e.damping = 2.0;
+  EXPECT_DOUBLE_EQ(e.created_fraction(), (11.0 - 10.0) / 10.0);  // more held than given
+  EXPECT_DOUBLE_EQ(e.balance_error(), 0.1);
+  e.damping = 0.0;
+  EXPECT_DOUBLE_EQ(e.created_fraction(), -0.1);  // energy lost by the integration
+  EXPECT_DOUBLE_EQ(e.balance_error(), 0.1);
+}
+
+// Newmark's average acceleration on a damped, forced oscillator: the balance holds to round-off
+// at every step, not only at the end.
+TEST(EnergyBalance, HoldsForTheTrapezoidalRuleAtEveryStep) {
+  const double mass = 1.0, stiffness = 40.0, damping = 0.6;
+  Oscillator system(mass, damping, stiffness, integrators::LinkSet(1),
+                    [](double t) { return 3.0 * std::sin(4.0 * t); });
+  integrators::Newmark newmark = integrators::Newmark::average_acceleration();
+  integrators::TransientAnalysis analysis(system, newmark, {.time_step = 0.01, .end_time = 5.0});
+  EnergyBalance balance(system);
+  integrators::State state;
+  state.displacement = Vector::Zero(1);
+  state.velocity = Vector::Constant(1, 0.5);
+  analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
+    balance.record(s);
+  });
+  std::cout << "worst balance error " << balance.worst_balance_error() << "\n";
+  EXPECT_GT(balance.terms().damping, 0.0);
+  EXPECT_LT(balance.worst_balance_error(), 1e-12);
+}
+
+}  // namespace
+}  // namespace pound::results

@@ -1,0 +1,61 @@
+// Drift and joint monitors on states made by hand: the peaks and when they happen.
+#include "results/monitors.hpp"
+
+#include <gtest/gtest.h>
+
+namespace pound::results {
+namespace {
+
+Vector entries(std::initializer_list<double> values) {
+  Vector v(static_cast<Index>(values.size()));
+  Index k = 0;
+  for (const double value : values) v[k++] = value;
+  return v;
+}
+
+integrators::State state(double time, const Vector& displacement, const Vector& penetration = {}) {
+  integrators::State s;
+  s.time = time;
+  s.displacement = displacement;
+  s.link_penetration = penetration;
+  return s;
+}
+
+TEST(DriftMonitors, KeepTheLargestDriftEitherWayAndItsTime) {
+  // Storey 1 from a fixed base (-1) to equation 0; storey 2 from equation 0 to equation 1.
+  DriftMonitors drifts({{-1, 0}, {0, 1}});
+  drifts.record(state(0.0, entries({0.0, 0.0})));
+  drifts.record(state(0.1, entries({0.25, 0.75})));     // drifts 0.25, 0.5
+  drifts.record(state(0.2, entries({-0.5, -0.25})));    // 0.5, 0.25
+  drifts.record(state(0.3, entries({0.125, -0.375})));  // 0.125, 0.5: a tie is no new peak
+  ASSERT_EQ(drifts.peaks().size(), 2u);
+  EXPECT_EQ(drifts.peaks()[0].peak_drift, 0.5);
+  EXPECT_EQ(drifts.peaks()[0].time, 0.2);
+  EXPECT_EQ(drifts.peaks()[1].peak_drift, 0.5);
+  EXPECT_EQ(drifts.peaks()[1].time, 0.1);
+}
+
+TEST(JointMonitors, OpeningClosingAndSeatMovementFromTheLinkAndTheGirder) {
+  // A joint whose link (row 1) has a 0.05 gap; the girder is equation 2, the seat fixed; a
+  // second joint on row 0 with its seat on equation 0.
+  JointMonitors joints({{.link_row = 1, .gap = 0.05, .girder_x = 2, .seat_x = -1},
+                        {.link_row = 0, .gap = 0.1, .girder_x = 1, .seat_x = 0}});
+  // delta = -(gap) is the joint as built: neither opened nor closed.
+  joints.record(state(0.0, entries({0.0, 0.0, 0.0}), entries({-0.1, -0.05})));
+  // Joint 1 closes by 0.03 (delta = -0.02), its girder 0.03 along -x; joint 2 opens by 0.01.
+  joints.record(state(0.1, entries({0.01, 0.02, -0.03}), entries({-0.11, -0.02})));
+  // Joint 1 opens by 0.04 (delta = -0.09), its girder 0.01 along +x.
+  joints.record(state(0.2, entries({0.0, 0.0, 0.01}), entries({-0.1, -0.09})));
+  ASSERT_EQ(joints.peaks().size(), 2u);
+  const JointPeak& first = joints.peaks()[0];
+  EXPECT_NEAR(first.peak_closing, 0.03, 1e-15);
+  EXPECT_NEAR(first.peak_opening, 0.04, 1e-15);
+  EXPECT_NEAR(first.peak_seat_movement, 0.03, 1e-15);
+  const JointPeak& second = joints.peaks()[1];
+  EXPECT_NEAR(second.peak_closing, 0.0, 1e-15);
+  EXPECT_NEAR(second.peak_opening, 0.01, 1e-15);
+  EXPECT_NEAR(second.peak_seat_movement, 0.01, 1e-15);  // |0.02 - 0.01|
+}
+
+}  // namespace
+}  // namespace pound::results
