@@ -19,12 +19,15 @@ const IntegratorParameter* IntegratorEntry::parameter(std::string_view wanted) c
 }
 
 const std::vector<const IntegratorEntry*>& integrator_catalog() {
+  // One integrator a line.
+  // clang-format off
   static const std::vector<const IntegratorEntry*> entries{
       &Newmark::newmark_entry(),
       &Newmark::hht_entry(),
       &Newmark::generalized_alpha_entry(),
       &CentralDifference::entry(),
   };
+  // clang-format on
   return entries;
 }
 

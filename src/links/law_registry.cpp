@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/errors.hpp"
 #include "links/backfill.hpp"
 #include "links/bilinear_impact.hpp"
 #include "links/bilinear_spring.hpp"
-#include "core/errors.hpp"
 #include "links/elastic_spring.hpp"
 #include "links/extended_penalty.hpp"
 #include "links/gap_spring.hpp"
@@ -50,10 +50,11 @@ LawParameter restitution_parameter() {
 }
 
 LawChoice calibration_choice() {
-  return {"calibration",
-          {"exact", "published"},
-          "how 'restitution' becomes damping: exact (the two-mass impact reaches e) or published (the "
-          "source's formula, approximate)"};
+  return {
+      "calibration",
+      {"exact", "published"},
+      "how 'restitution' becomes damping: exact (the two-mass impact reaches e) or published (the "
+      "source's formula, approximate)"};
 }
 
 LawParameter effective_mass_parameter() {
@@ -73,12 +74,23 @@ double effective_mass(const LawSpec& law, const LawSource& where, const LinkCont
 }
 
 const std::vector<const LawEntry*>& law_registry() {
+  // One law a line.
+  // clang-format off
   static const std::vector<const LawEntry*> entries{
-      &GapSpring::entry(),      &KelvinVoigt::entry(),        &Hertz::entry(),
-      &HertzDamp::entry(),      &Jankowski::entry(),          &BilinearImpact::entry(),
-      &ExtendedPenalty::entry(), &Restrainer::restrainer_entry(), &Restrainer::hook_entry(),
-      &ElasticSpring::entry(),  &BilinearSpring::entry(),     &Backfill::entry(),
+      &GapSpring::entry(),
+      &KelvinVoigt::entry(),
+      &Hertz::entry(),
+      &HertzDamp::entry(),
+      &Jankowski::entry(),
+      &BilinearImpact::entry(),
+      &ExtendedPenalty::entry(),
+      &Restrainer::restrainer_entry(),
+      &Restrainer::hook_entry(),
+      &ElasticSpring::entry(),
+      &BilinearSpring::entry(),
+      &Backfill::entry(),
   };
+  // clang-format on
   return entries;
 }
 

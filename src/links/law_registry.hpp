@@ -64,8 +64,8 @@ struct LawParameter {
   enum class Range { positive, non_negative, restitution, fraction };  // >0, >=0, (0,1], [0,1)
   std::string name;
   Range range;
-  std::string units;    // "F/L", "-": in the model's units
-  std::string meaning;  // with the default when there is one
+  std::string units;            // "F/L", "-": in the model's units
+  std::string meaning;          // with the default when there is one
   bool generator_only = false;  // only inside a rod_pair generator (scaled by its elements)
 };
 

@@ -1,6 +1,6 @@
 #pragma once
 // Published conversions from a coefficient of restitution e (0 < e <= 1) to a law's damping,
-// and the closed forms of an elastic Hertz impact. DESIGN.md section 2.3.
+// and the closed forms of an elastic Hertz impact. docs/design.md section 2.3.
 #include <cmath>
 #include <numbers>
 

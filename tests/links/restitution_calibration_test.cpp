@@ -29,9 +29,8 @@ TEST(RestitutionCalibration, TheKnobFoundForEReachesE) {
       for (double e : {0.3, 0.6, 0.9}) {
         const double knob = damping_for_restitution(*entry, law, e);
         const double reached = impact_restitution(*entry->calibration->unit_law(knob, law));
-        std::cout << entry->name << " (" << law.choice("tension", "-") << ") e = " << e
-                  << ": knob " << knob << ", reached " << reached << ", error "
-                  << reached - e << "\n";
+        std::cout << entry->name << " (" << law.choice("tension", "-") << ") e = " << e << ": knob "
+                  << knob << ", reached " << reached << ", error " << reached - e << "\n";
         EXPECT_NEAR(reached, e, 1e-8) << entry->name;
       }
     }
