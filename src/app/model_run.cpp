@@ -31,7 +31,7 @@ std::vector<std::unique_ptr<results::Recorder>> make_recorders(const builder::Bu
   std::vector<std::unique_ptr<results::Recorder>> recorders;
   for (const builder::ResolvedRecorder& spec : built.recorders) {
     std::vector<std::string> ids;
-    if (spec.type == "link") {
+    if (spec.kind == builder::RecorderKind::link) {
       std::vector<results::LinkRows> rows;
       for (Index link : spec.items) {
         ids.push_back(built.model.links[static_cast<std::size_t>(link)].id);
@@ -267,13 +267,13 @@ RunOutcome run_model(const RunRequest& request) {
     const results::DriftPeak& peak = drifts.peaks()[k];
     io::Document doc;
     doc.set("id", m.id)
-        .set(m.kind == "pier" ? "bridge" : "building", m.group)
+        .set(m.kind == builder::DriftKind::pier ? "bridge" : "building", m.group)
         .set("height", m.height)
         .set("peak_drift", peak.peak_drift)
         .set("drift_ratio", peak.peak_drift / m.height)
         .set("time", peak.time);
     if (m.yield_drift) doc.set("ductility", peak.peak_drift / *m.yield_drift);
-    (m.kind == "pier" ? pier_documents : storey_documents).push_back(doc);
+    (m.kind == builder::DriftKind::pier ? pier_documents : storey_documents).push_back(doc);
   }
   for (std::size_t k = 0; k < built.joint_monitors.size(); ++k) {
     const builder::JointMonitor& m = built.joint_monitors[k];
@@ -400,7 +400,8 @@ RunOutcome run_model(const RunRequest& request) {
       const auto& m = built.drift_monitors[k];
       const double drift = drifts.peaks()[k].peak_drift;
       report +=
-          fmt::format("  {} {}: peak drift {:.4g} ({:.3f} % of {:.4g}){}\n", m.kind, m.id, drift,
+          fmt::format("  {} {}: peak drift {:.4g} ({:.3f} % of {:.4g}){}\n",
+                      m.kind == builder::DriftKind::pier ? "pier" : "storey", m.id, drift,
                       100.0 * drift / m.height, m.height,
                       m.yield_drift ? fmt::format(", ductility {:.2f}", drift / *m.yield_drift)
                                     : std::string());

@@ -9,31 +9,13 @@
 #include <string>
 
 #include "assembly/structural_system.hpp"
+#include "builder/outputs.hpp"
 #include "builder/spec.hpp"
 #include "integrators/integrator.hpp"
 #include "integrators/transient_analysis.hpp"
 #include "model/model.hpp"
 
 namespace pound::builder {
-
-struct ResolvedRecorder {
-  std::string type;  // "link" | "node"
-  std::vector<Index> items;
-  std::string file;
-};
-
-struct DriftMonitor {
-  std::string id, kind, group;
-  Index bottom = 0, top = 0;  // nodes
-  double height = 0.0;
-  std::optional<double> yield_drift;
-};
-struct JointMonitor {
-  std::string id;
-  Index link = 0;              // the pounding link across the joint
-  Index girder = 0, seat = 0;  // nodes
-  double seat_width = 0.0;
-};
 
 struct BuiltModel {
   model::Model model;

@@ -15,12 +15,14 @@ namespace {
 
 // What making one element needs besides its own spec.
 struct Scene {
-  const ModelSpec& spec;
+  const Resolver& resolver;
   const model::Model& model;
-  const NodeLookup& node;
 
   [[noreturn]] void fail(const std::string& path, const std::string& what) const {
-    throw InputError(spec.source, path, what);
+    resolver.fail(path, what);
+  }
+  Index node(const std::string& id, const std::string& path) const {
+    return resolver.node(id, path);
   }
   model::ElementNode at(Index index) const {
     return {index, model.nodes[static_cast<std::size_t>(index)].position};
@@ -102,17 +104,20 @@ std::shared_ptr<const model::Element> make_two_node(const Scene& scene, const El
 
 }  // namespace
 
-std::vector<std::shared_ptr<const model::Element>> resolve_elements(
-    const ModelSpec& spec, const model::Model& model, const std::map<std::string, Index>& materials,
-    const std::function<std::string(std::size_t)>& origin, const NodeLookup& node) {
-  const Scene scene{spec, model, node};
+std::vector<std::shared_ptr<const model::Element>> resolve_elements(const Resolver& resolver,
+                                                                    const model::Model& model) {
+  const ModelSpec& spec = resolver.spec();
+  const Origin origin =
+      origin_of(resolver.user_spec().elements.size(), "elements", spec.generated_from.elements);
+  const std::map<std::string, Index>& materials = resolver.material_index();
+  const Scene scene{resolver, model};
   std::vector<std::shared_ptr<const model::Element>> elements;
   bool quads = false, beams = false;
   for (std::size_t k = 0; k < spec.elements.size(); ++k) {
     const ElementSpec& element = spec.elements[k];
     const std::string path = origin(k);
-    const std::array<Index, 2> nodes{node(element.node_i, path + "/nodes/0"),
-                                     node(element.node_j, path + "/nodes/1")};
+    const std::array<Index, 2> nodes{scene.node(element.node_i, path + "/nodes/0"),
+                                     scene.node(element.node_j, path + "/nodes/1")};
     if (nodes[0] == nodes[1]) scene.fail(path + "/nodes", "an element needs two different nodes");
     auto material = materials.find(element.material);
     if (material == materials.end())

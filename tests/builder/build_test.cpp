@@ -280,7 +280,7 @@ TEST(Build, WithoutRecordersEveryLinkIsRecordedToLinksCsv) {
      "value": {"id": "second", "nodes": ["a", "c"], "law": {"type": "gap_spring",
                                                             "stiffness": 1}}}])")));
   ASSERT_EQ(built.recorders.size(), 1u);
-  EXPECT_EQ(built.recorders[0].type, "link");
+  EXPECT_EQ(built.recorders[0].kind, RecorderKind::link);
   EXPECT_EQ(built.recorders[0].file, "links.csv");
   EXPECT_EQ(built.recorders[0].items, (std::vector<Index>{0, 1}));
 }

@@ -1,0 +1,136 @@
+#include "builder/link_resolver.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "links/law_registry.hpp"
+
+namespace pound::builder {
+namespace {
+
+// What resolving one link needs besides its spec.
+struct LinkPlace {
+  const Resolver& resolver;
+  const model::Model& model;
+  const LinkSpec& spec;
+  std::string path;
+
+  [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+    resolver.fail(path + where, what);
+  }
+  const model::Coordinates& position(Index node) const {
+    return model.nodes[static_cast<std::size_t>(node)].position;
+  }
+};
+
+void resolve_nodes(const LinkPlace& place, model::Link& link) {
+  link.node_i = place.resolver.node(place.spec.node_i, place.path + "/nodes/0");
+  link.node_j = place.resolver.node(place.spec.node_j, place.path + "/nodes/1");
+  if (link.node_i == link.node_j) place.fail("/nodes", "a link cannot join a node to itself");
+}
+
+// Node-to-segment: where node i projects onto the segment j-k (clamped to it), and the
+// segment's normal towards it as the axis unless one is given.
+void resolve_segment(const LinkPlace& place, model::Link& link) {
+  const Index k_node = place.resolver.node(*place.spec.segment_end, place.path + "/segment/1");
+  if (k_node == link.node_i || k_node == link.node_j)
+    place.fail("/segment", "a segment needs two nodes other than the link's node i");
+  link.segment_end = k_node;
+  const auto& p = place.position(link.node_i);
+  const auto& a = place.position(link.node_j);
+  const auto& b = place.position(k_node);
+  const double sx = b[0] - a[0], sy = b[1] - a[1], length2 = sx * sx + sy * sy;
+  if (!(length2 > 0.0) || !std::isfinite(length2))
+    place.fail("/segment", "the segment's two nodes are at the same place");
+  link.segment_weight = std::clamp(((p[0] - a[0]) * sx + (p[1] - a[1]) * sy) / length2, 0.0, 1.0);
+  if (place.spec.axis) return;
+  // The segment's normal, pointing from node i towards the segment.
+  const double length = std::sqrt(length2);
+  model::Coordinates normal{-sy / length, sx / length};
+  const double side = (a[0] - p[0]) * normal[0] + (a[1] - p[1]) * normal[1];
+  if (std::abs(side) <= 1e-12 * length)
+    place.fail("", "node i lies on the segment: give the link an \"axis\"");
+  if (side < 0.0) normal = {-normal[0], -normal[1]};
+  link.axis = normal;
+}
+
+// The given axis, or the unit vector from node i to node j.
+void resolve_axis(const LinkPlace& place, model::Link& link) {
+  if (place.spec.axis) {
+    const auto& axis = *place.spec.axis;
+    link.axis = {axis[0], axis.size() > 1 ? axis[1] : 0.0};
+    return;
+  }
+  if (place.spec.segment_end) return;
+  const auto& a = place.position(link.node_i);
+  const auto& b = place.position(link.node_j);
+  const double dx = b[0] - a[0], dy = place.model.dimension == 2 ? b[1] - a[1] : 0.0;
+  const double length = std::hypot(dx, dy);
+  if (!(length > 0.0))
+    place.fail("", fmt::format("nodes '{}' and '{}' are at the same place: give the link an "
+                               "\"axis\"",
+                               place.spec.node_i, place.spec.node_j));
+  link.axis = {dx / length, dy / length};
+}
+
+void resolve_law(const LinkPlace& place, model::Link& link) {
+  const std::string& type = place.spec.law.type;
+  link.law = links::find_law(type);
+  if (!link.law) place.fail("/law/type", fmt::format("unknown law '{}'", type));
+  if (link.role() == links::LinkRole::tension && place.spec.gap != 0.0)
+    place.fail("/gap", fmt::format("a {} has 'slack' in its law, not a gap: the link's gap must "
+                                   "be 0, got {}",
+                                   type, place.spec.gap));
+  link.make_law =
+      links::make_law(place.spec.law, {place.resolver.spec().source, place.path + "/law"});
+}
+
+// Coulomb friction needs a tangent (2-D), a normal force to rub with, and a stick stiffness (the
+// normal law's at first touch unless given).
+void resolve_friction(const LinkPlace& place, model::Link& link) {
+  const FrictionSpec& friction = *place.spec.friction;
+  const std::string& type = place.spec.law.type;
+  if (place.model.dimension != 2)
+    place.fail("/friction",
+               "friction needs a tangential direction: a 2-D scene (\"dimension\": 2)");
+  if (link.role() == links::LinkRole::tension)
+    place.fail("/friction", fmt::format("a {} carries no normal contact force to rub with", type));
+  if (!link.law->traits.stiff_at_first_touch && !friction.stick_stiffness)
+    place.fail("/friction",
+               fmt::format("give 'stick_stiffness': a {} law has no stiffness at first touch to "
+                           "stick with",
+                           type));
+  link.friction = model::LinkFriction{friction.coefficient, friction.stick_stiffness,
+                                      friction.stick_damping, friction.stick_mass};
+}
+
+model::Link resolve_link(const LinkPlace& place) {
+  const LinkSpec& spec = place.spec;
+  model::Link link;
+  link.id = spec.id;
+  resolve_nodes(place, link);
+  link.gap = spec.gap;
+  link.rotational = spec.rotational;
+  link.velocity_j = {spec.velocity_j[0], spec.velocity_j[1]};
+  if (spec.segment_end) resolve_segment(place, link);
+  resolve_axis(place, link);
+  resolve_law(place, link);
+  if (spec.friction) resolve_friction(place, link);
+  return link;
+}
+
+}  // namespace
+
+std::vector<model::Link> resolve_links(const Resolver& resolver, const model::Model& model) {
+  const ModelSpec& spec = resolver.spec();
+  const Origin origin =
+      origin_of(resolver.user_spec().links.size(), "links", spec.generated_from.links);
+  std::vector<model::Link> links;
+  for (std::size_t k = 0; k < spec.links.size(); ++k)
+    links.push_back(resolve_link({resolver, model, spec.links[k], origin(k)}));
+  return links;
+}
+
+}  // namespace pound::builder

@@ -1,0 +1,69 @@
+#include "builder/outputs.hpp"
+
+namespace pound::builder {
+namespace {
+
+std::vector<Index> every(std::size_t count) {
+  std::vector<Index> items(count);
+  for (std::size_t i = 0; i < count; ++i) items[i] = static_cast<Index>(i);
+  return items;
+}
+
+ResolvedRecorder resolve_recorder(const Resolver& resolver, const RecorderSpec& recorder,
+                                  std::size_t index, std::size_t link_count) {
+  const bool nodes = recorder.type == "node";
+  ResolvedRecorder resolved{nodes ? RecorderKind::node : RecorderKind::link, {}, recorder.file};
+  for (std::size_t i = 0; i < recorder.ids.size(); ++i) {
+    const std::string path =
+        fmt::format("/recorders/{}/{}/{}", index, nodes ? "nodes" : "links", i);
+    resolved.items.push_back(nodes ? resolver.node(recorder.ids[i], path)
+                                   : resolver.link(recorder.ids[i], path));
+  }
+  if (!nodes && recorder.ids.empty()) resolved.items = every(link_count);
+  return resolved;
+}
+
+// Where monitor k was given: the user's own, or a generator.
+std::string monitor_path(std::size_t k, std::size_t user_count, const char* kind) {
+  return k < user_count ? fmt::format("/monitors/{}/{}", kind, k) : "/generators";
+}
+
+}  // namespace
+
+std::vector<ResolvedRecorder> resolve_recorders(const Resolver& resolver, std::size_t link_count) {
+  const ModelSpec& spec = resolver.spec();
+  std::vector<ResolvedRecorder> recorders;
+  if (!spec.recorders_given && link_count > 0)
+    recorders.push_back({RecorderKind::link, every(link_count), "links.csv"});
+  for (std::size_t k = 0; k < spec.recorders.size(); ++k)
+    recorders.push_back(resolve_recorder(resolver, spec.recorders[k], k, link_count));
+  return recorders;
+}
+
+std::vector<DriftMonitor> resolve_drift_monitors(const Resolver& resolver) {
+  const std::vector<DriftMonitorSpec>& specs = resolver.spec().drift_monitors;
+  std::vector<DriftMonitor> monitors;
+  for (std::size_t k = 0; k < specs.size(); ++k) {
+    const DriftMonitorSpec& m = specs[k];
+    const std::string path = monitor_path(k, resolver.user_spec().drift_monitors.size(), "drifts");
+    monitors.push_back({m.id, m.kind == "pier" ? DriftKind::pier : DriftKind::storey, m.group,
+                        resolver.node(m.bottom, path + "/bottom"),
+                        resolver.node(m.top, path + "/top"), m.height, m.yield_drift});
+  }
+  return monitors;
+}
+
+std::vector<JointMonitor> resolve_joint_monitors(const Resolver& resolver) {
+  const std::vector<JointMonitorSpec>& specs = resolver.spec().joint_monitors;
+  std::vector<JointMonitor> monitors;
+  for (std::size_t k = 0; k < specs.size(); ++k) {
+    const JointMonitorSpec& m = specs[k];
+    const std::string path = monitor_path(k, resolver.user_spec().joint_monitors.size(), "joints");
+    const Index link = resolver.link(m.link, path + "/link");
+    monitors.push_back({m.id, link, resolver.node(m.girder, path + "/girder"),
+                        resolver.node(m.seat, path + "/seat"), m.seat_width});
+  }
+  return monitors;
+}
+
+}  // namespace pound::builder

@@ -1,0 +1,45 @@
+#pragma once
+// What a run records and watches, resolved against the model: recorders (the histories written
+// as CSV) and monitors (storey and pier drifts, joints), each naming nodes and links by index.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "builder/resolver.hpp"
+
+namespace pound::builder {
+
+enum class RecorderKind { link, node };
+
+struct ResolvedRecorder {
+  RecorderKind kind = RecorderKind::link;
+  std::vector<Index> items;  // links or nodes
+  std::string file;
+};
+
+enum class DriftKind { storey, pier };
+
+struct DriftMonitor {
+  std::string id;
+  DriftKind kind = DriftKind::storey;
+  std::string group;          // the building or bridge
+  Index bottom = 0, top = 0;  // nodes
+  double height = 0.0;
+  std::optional<double> yield_drift;
+};
+
+struct JointMonitor {
+  std::string id;
+  Index link = 0;              // the pounding link across the joint
+  Index girder = 0, seat = 0;  // nodes
+  double seat_width = 0.0;
+};
+
+// Without a "recorders" field every link is recorded into links.csv; a link recorder without ids
+// records every link.
+std::vector<ResolvedRecorder> resolve_recorders(const Resolver& resolver, std::size_t link_count);
+// The user's monitors first, then the generated ones (reported at "/generators").
+std::vector<DriftMonitor> resolve_drift_monitors(const Resolver& resolver);
+std::vector<JointMonitor> resolve_joint_monitors(const Resolver& resolver);
+
+}  // namespace pound::builder
