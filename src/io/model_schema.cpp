@@ -302,8 +302,7 @@ const Fields<LinkSpec>& link_fields() {
           object.at("nodes").fail("needs 2 entries (or one with a 'segment')");
       }),
       link_segment().in_plane(),
-      optional("gap", &LinkSpec::gap, Number<>{non_negative},
-               "clear distance at t = 0, never flipped [L]")
+      optional("gap", &LinkSpec::gap, Number<>{non_negative}, "clear distance at t = 0 [L]")
           .always_written(),
       optional("axis", &LinkSpec::axis, UnitVector<std::vector<double>>{},
                "from node i towards node j; needed when they are at the same place")
@@ -498,7 +497,7 @@ const Fields<GirderBridgeSpec>& girder_bridge_fields() {
 // "elements": [columns, rows].
 Field<BlockSpec> block_elements() {
   return custom<BlockSpec>(
-      {"elements", fmt::format("[a, b], each integer ≥ 1, ≤ {}", kMostBlockElementsPerSide),
+      {"elements", fmt::format("[integer, integer], each ≥ 1, ≤ {}", kMostBlockElementsPerSide),
        "required", "elements along x and along y"},
       [](JsonObject& object, BlockSpec& block, Context&) {
         const std::vector<JsonValue> counts = object.at("elements").elements(2, 2);
@@ -700,8 +699,8 @@ const Fields<DampingSpec>& damping_fields() {
           .default_text("`0`")
           .when(by_coefficients, "instead of a ratio"),
       required("ratio", &DampingSpec::ratio, Number<>{non_negative, below(1.0)},
-               "damping ratio ξ matched at two periods or modes")
-          .when(by_ratio, "without coefficients"),
+               "damping ratio ξ at two periods or two modes")
+          .when(by_ratio, "instead of coefficients"),
       rule<DampingSpec>([](JsonObject& object, DampingSpec& damping, Context&) {
         if (by_coefficients(damping)) return;
         if (object.has("periods") == object.has("modes"))
@@ -710,10 +709,10 @@ const Fields<DampingSpec>& damping_fields() {
               "(or 'mass_coefficient' and 'stiffness_coefficient')");
       }),
       optional("periods", &DampingSpec::periods, Pair<>{positive, "needs two different periods"},
-               "T1, T2 [T]")
+               "the periods T1, T2 it is matched at [T]")
           .when(by_ratio, "or modes"),
       optional("modes", &DampingSpec::modes, Pair<int>{at_least(1), "needs two different modes"},
-               "mode numbers, from 1 (`pound modes`)")
+               "the modes it is matched at, counted from 1 (`pound modes`)")
           .when(by_ratio, "or periods"),
   };
   return fields;

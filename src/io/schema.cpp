@@ -119,8 +119,7 @@ void Numbers::read(const JsonValue& value, value_type& target, Context&) const {
 }
 
 std::string Numbers::type() const {
-  return fmt::format("array of {}, {} to {}", number_type("numbers", minimum), min_count,
-                     max_count);
+  return fmt::format("array of {} to {} {}", min_count, max_count, number_type("numbers", minimum));
 }
 
 namespace detail {

@@ -16,6 +16,8 @@
 // A rule between fields (exactly one of, needs, excludes) is an entry of the list too: it runs
 // where it stands while reading, once the fields before it are read, so that of several faults
 // the one reported first stays the same.
+#include <fmt/format.h>
+
 #include <array>
 #include <concepts>
 #include <cstddef>
@@ -327,8 +329,10 @@ struct Pair {
     return OrderedJson::array({value[0], value[1]});
   }
   std::string type() const {
-    const std::string each = number_type(std::same_as<T, double> ? "number" : "integer", minimum);
-    return "[a, b], each " + each + (distinct ? ", different" : "");
+    const char* noun = std::same_as<T, double> ? "number" : "integer";
+    const std::string each = number_type("", minimum);
+    return fmt::format("[{0}, {0}]{1}{2}{3}", noun, each.empty() ? "" : ", each", each,
+                       distinct ? ", different" : "");
   }
 };
 
