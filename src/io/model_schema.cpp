@@ -449,7 +449,7 @@ Field<GirderBridgeSpec> expansion_joints() {
 }
 
 // Needed with expansion joints; a spec without it has a joint with no law.
-Field<GirderBridgeSpec> expansion_joint() {
+Field<GirderBridgeSpec> joint_at_expansion_joints() {
   const Object<JointSpec> joint{joint_fields(), Docs::own_table};
   return custom<GirderBridgeSpec>(
       {"joint", joint.type(), "–", "gap, law, restrainer and seat of the expansion joints"},
@@ -480,7 +480,7 @@ const Fields<GirderBridgeSpec>& girder_bridge_fields() {
       required("bearing_vertical_stiffness", &GirderBridgeSpec::bearing_vertical_stiffness,
                Number<>{positive}, "the bearings' elastic vertical stiffness [F/L]"),
       expansion_joints(),
-      expansion_joint(),
+      joint_at_expansion_joints(),
       required("abutment", &GirderBridgeSpec::abutment,
                Object<JointSpec>{joint_fields(), Docs::own_table},
                "girder end against the backwall"),
@@ -547,61 +547,66 @@ const Fields<BlockSpec>& block_fields() {
   return fields;
 }
 
-// The generators, one array whose "type" picks the kind. Each kind keeps its entries in a list of
-// its own with their index in the array, from which the writer restores the file's order.
+// One entry of "generators", whose "type" picks the kind; each kind keeps its entries in a list
+// of its own with their index in the array.
+void read_generator(JsonObject& generator, int index, ModelSpec& spec, Context& context) {
+  const std::string type =
+      generator.one_of("type", {"rod_pair", "adjacent_buildings", "girder_bridge", "block"});
+  if (type == "block") {
+    if (context.dimension != 2)
+      generator.at("type").fail("a block needs a 2-D scene (\"dimension\": 2)");
+    read_fields(generator, block_fields(), spec.blocks.emplace_back(), context);
+    spec.blocks.back().generator_index = index;
+  } else if (type == "rod_pair") {
+    read_fields(generator, rod_pair_fields(), spec.rod_pairs.emplace_back(), context);
+    spec.rod_pair_generator_index.push_back(index);
+  } else if (type == "adjacent_buildings") {
+    read_fields(generator, adjacent_buildings_fields(), spec.building_pairs.emplace_back(),
+                context);
+    spec.building_pairs.back().generator_index = index;
+  } else {
+    read_fields(generator, girder_bridge_fields(), spec.bridges.emplace_back(), context);
+    spec.bridges.back().generator_index = index;
+  }
+}
+
+void read_generators(JsonObject& top, ModelSpec& spec, Context& context) {
+  const std::vector<JsonValue> values = top.array("generators");
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    JsonObject generator(values[k]);
+    read_generator(generator, static_cast<int>(k), spec, context);
+    generator.finish();
+  }
+}
+
+// The generators in the file's order, restored from their indices (a spec made in code may leave
+// the rod pairs' out: then they come first).
+std::optional<OrderedJson> generators_json(const ModelSpec& spec, const Context& context) {
+  std::vector<std::pair<int, OrderedJson>> entries;
+  for (std::size_t k = 0; k < spec.rod_pairs.size(); ++k)
+    entries.emplace_back(k < spec.rod_pair_generator_index.size() ? spec.rod_pair_generator_index[k]
+                                                                  : static_cast<int>(k),
+                         write_object(spec.rod_pairs[k], rod_pair_fields(), context));
+  for (const AdjacentBuildingsSpec& pair : spec.building_pairs)
+    entries.emplace_back(pair.generator_index,
+                         write_object(pair, adjacent_buildings_fields(), context));
+  for (const GirderBridgeSpec& bridge : spec.bridges)
+    entries.emplace_back(bridge.generator_index,
+                         write_object(bridge, girder_bridge_fields(), context));
+  for (const BlockSpec& block : spec.blocks)
+    entries.emplace_back(block.generator_index, write_object(block, block_fields(), context));
+  if (entries.empty()) return std::nullopt;
+  std::stable_sort(entries.begin(), entries.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  OrderedJson json = OrderedJson::array();
+  for (auto& entry : entries) json.push_back(std::move(entry.second));
+  return json;
+}
+
 Field<ModelSpec> generators() {
-  return custom<ModelSpec>(
-      {"generators", "array of objects", "–",
-       "scene generators that add nodes, elements, links and monitors"},
-      [](JsonObject& top, ModelSpec& spec, Context& context) {
-        const std::vector<JsonValue> values = top.array("generators");
-        for (std::size_t k = 0; k < values.size(); ++k) {
-          const int index = static_cast<int>(k);
-          JsonObject generator(values[k]);
-          const std::string type = generator.one_of(
-              "type", {"rod_pair", "adjacent_buildings", "girder_bridge", "block"});
-          if (type == "block") {
-            if (context.dimension != 2)
-              generator.at("type").fail("a block needs a 2-D scene (\"dimension\": 2)");
-            read_fields(generator, block_fields(), spec.blocks.emplace_back(), context);
-            spec.blocks.back().generator_index = index;
-          } else if (type == "rod_pair") {
-            read_fields(generator, rod_pair_fields(), spec.rod_pairs.emplace_back(), context);
-            spec.rod_pair_generator_index.push_back(index);
-          } else if (type == "adjacent_buildings") {
-            read_fields(generator, adjacent_buildings_fields(), spec.building_pairs.emplace_back(),
-                        context);
-            spec.building_pairs.back().generator_index = index;
-          } else {
-            read_fields(generator, girder_bridge_fields(), spec.bridges.emplace_back(), context);
-            spec.bridges.back().generator_index = index;
-          }
-          generator.finish();
-        }
-      },
-      [](const ModelSpec& spec, const Context& context) -> std::optional<OrderedJson> {
-        // A spec made in code may leave the rod pairs' indices out: then they come first.
-        std::vector<std::pair<int, OrderedJson>> entries;
-        for (std::size_t k = 0; k < spec.rod_pairs.size(); ++k)
-          entries.emplace_back(k < spec.rod_pair_generator_index.size()
-                                   ? spec.rod_pair_generator_index[k]
-                                   : static_cast<int>(k),
-                               write_object(spec.rod_pairs[k], rod_pair_fields(), context));
-        for (const AdjacentBuildingsSpec& pair : spec.building_pairs)
-          entries.emplace_back(pair.generator_index,
-                               write_object(pair, adjacent_buildings_fields(), context));
-        for (const GirderBridgeSpec& bridge : spec.bridges)
-          entries.emplace_back(bridge.generator_index,
-                               write_object(bridge, girder_bridge_fields(), context));
-        for (const BlockSpec& block : spec.blocks)
-          entries.emplace_back(block.generator_index, write_object(block, block_fields(), context));
-        if (entries.empty()) return std::nullopt;
-        std::stable_sort(entries.begin(), entries.end(),
-                         [](const auto& a, const auto& b) { return a.first < b.first; });
-        OrderedJson json = OrderedJson::array();
-        for (auto& entry : entries) json.push_back(std::move(entry.second));
-        return json;
-      });
+  return custom<ModelSpec>({"generators", "array of objects", "–",
+                            "scene generators that add nodes, elements, links and monitors"},
+                           read_generators, generators_json);
 }
 
 // ---- Surfaces and contacts ----
