@@ -80,11 +80,29 @@ std::vector<Piece> split(const std::string& text, const GeneratedFile& file) {
   return pieces;
 }
 
+// A table row: a '|' in a cell would end it.
+std::string table_row(const std::vector<std::string>& cells) {
+  std::string row = "|";
+  for (const std::string& cell : cells) {
+    row += ' ';
+    for (const char c : cell) row += c == '|' ? std::string("\\|") : std::string(1, c);
+    row += " |";
+  }
+  return row + "\n";
+}
+
 std::string rendered(const GeneratedFile& file, const std::string& name) {
   return find_section(file, name, "").render();
 }
 
 }  // namespace
+
+std::string markdown_table(const std::vector<std::string>& header,
+                           const std::vector<std::vector<std::string>>& rows) {
+  std::string table = table_row(header) + table_row(std::vector<std::string>(header.size(), "---"));
+  for (const std::vector<std::string>& row : rows) table += table_row(row);
+  return table;
+}
 
 std::string regenerate(const std::string& text, const GeneratedFile& file) {
   std::string result;

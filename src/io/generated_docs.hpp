@@ -33,4 +33,8 @@ std::string regenerate(const std::string& text, const GeneratedFile& file);
 // The sections whose text in `text` differs from what they render, in the order of the file.
 std::vector<std::string> stale_sections(const std::string& text, const GeneratedFile& file);
 
+// A markdown table, for a section to render; a '|' in a cell is escaped.
+std::string markdown_table(const std::vector<std::string>& header,
+                           const std::vector<std::vector<std::string>>& rows);
+
 }  // namespace pound::io

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "io/generated_docs.hpp"
+
 namespace pound::io {
 namespace {
 
@@ -20,13 +22,6 @@ std::string shown(const OrderedJson& value) {
   return text + "]";
 }
 
-// A table cell: a '|' would end it.
-std::string cell(const std::string& text) {
-  std::string result;
-  for (const char c : text) result += c == '|' ? std::string("\\|") : std::string(1, c);
-  return result;
-}
-
 }  // namespace
 
 void require_plane(const JsonValue& value, const Context& context) {
@@ -37,12 +32,11 @@ UniqueNames& Context::unique(const std::string& scope, const std::string& what) 
   return scopes_.try_emplace(scope, what).first->second;
 }
 
-std::string markdown_table(const std::vector<FieldDoc>& rows) {
-  std::string table = "| field | type | default | meaning |\n|---|---|---|---|\n";
+std::string field_table(const std::vector<FieldDoc>& rows) {
+  std::vector<std::vector<std::string>> cells;
   for (const FieldDoc& row : rows)
-    table += fmt::format("| `{}` | {} | {} | {} |\n", row.key, cell(row.type),
-                         cell(row.default_text), cell(row.meaning));
-  return table;
+    cells.push_back({"`" + row.key + "`", row.type, row.default_text, row.meaning});
+  return markdown_table({"field", "type", "default", "meaning"}, cells);
 }
 
 void check_maximum(const JsonValue& where, double value, const Maximum& maximum) {

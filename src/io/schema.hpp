@@ -143,15 +143,15 @@ OrderedJson write_object(const Spec& spec, const Fields<Spec>& fields, const Con
   return json;
 }
 
-// A markdown table of the fields: key, type, default, meaning.
-std::string markdown_table(const std::vector<FieldDoc>& rows);
+// The docs table of rows: field, type, default, meaning.
+std::string field_table(const std::vector<FieldDoc>& rows);
 
 template <class Spec>
 std::string field_table(const Fields<Spec>& fields) {
   std::vector<FieldDoc> rows;
   for (const Field<Spec>& field : fields)
     rows.insert(rows.end(), field.docs.begin(), field.docs.end());
-  return markdown_table(rows);
+  return field_table(rows);
 }
 
 // ---- Reaching members ----

@@ -58,5 +58,10 @@ TEST(GeneratedDocs, MarkerMistakesNameTheLine) {
             "docs/x.md: line 2: an end marker that opens no section");
 }
 
+TEST(GeneratedDocs, MarkdownTableEscapesBars) {
+  EXPECT_EQ(markdown_table({"a", "b"}, {{"1", "|x|"}, {"2", ""}}),
+            "| a | b |\n| --- | --- |\n| 1 | \\|x\\| |\n| 2 |  |\n");
+}
+
 }  // namespace
 }  // namespace pound::io

@@ -222,7 +222,8 @@ TEST(Schema, IdsAreUniqueWithinTheirScope) {
 
 TEST(Schema, DocsTableListsEveryField) {
   const std::string table = field_table(part_fields());
-  EXPECT_EQ(table.find("| field | type | default | meaning |\n|---|---|---|---|\n"), 0u) << table;
+  EXPECT_EQ(table.find("| field | type | default | meaning |\n| --- | --- | --- | --- |\n"), 0u)
+      << table;
   for (const char* row : {
            "| `id` | string, unique | required | the part's name |",
            "| `length` | number > 0, < 100 | `1` | length [L] |",
