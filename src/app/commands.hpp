@@ -17,6 +17,7 @@ int modes_command(const Arguments& arguments);
 int check_command(const Arguments& arguments);
 int study_command(const Arguments& arguments);
 int expand_command(const Arguments& arguments);
+int docs_command(const Arguments& arguments);
 
 // Dispatches argv to a subcommand, turning errors into messages and exit codes.
 int main_entry(int argc, char** argv);

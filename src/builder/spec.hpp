@@ -244,7 +244,7 @@ struct GirderBridgeSpec {
   std::string id;
   int generator_index = 0;
   std::vector<double> spans;  // [L]
-  SectionSpec girder;
+  SectionSpec girder{.elements = 4};
   SectionSpec pier;
   double pier_height = 0.0;                 // [L]
   std::optional<double> pier_yield_drift;   // [L], for displacement ductility

@@ -194,12 +194,4 @@ auto read_object(const JsonValue& value, Read read) {
   }
 }
 
-// The objects of an optional array field, each read with `read`.
-template <class Read>
-auto read_each(JsonObject& parent, std::string_view key, Read read) {
-  std::vector<std::invoke_result_t<Read, JsonObject&>> specs;
-  for (const JsonValue& item : parent.array(key)) specs.push_back(read_object(item, read));
-  return specs;
-}
-
 }  // namespace pound::io

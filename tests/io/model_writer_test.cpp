@@ -290,6 +290,16 @@ TEST(ModelWriter, WritesAnIntegratorPresetAsItsParameters) {
   EXPECT_EQ(spec.analysis.integrator.parameter("gamma"), 0.5);
 }
 
+TEST(ModelWriter, WritesAdaptiveStepping) {
+  expect_written_as_given(
+      patched(kRichModel, R"([{"op": "add", "path": "/analysis/adaptive", "value": true}])"));
+  expect_written_as_given(patched(kRichModel, R"([{"op": "add", "path": "/analysis/adaptive",
+                       "value": {"tolerance": 1e-4, "max_time_step": 0.01}}])"));
+  const builder::ModelSpec off = round_trip(parse(
+      patched(kRichModel, R"([{"op": "add", "path": "/analysis/adaptive", "value": false}])")));
+  EXPECT_FALSE(off.analysis.adaptive);
+}
+
 TEST(ModelWriter, NumbersReadBackBitForBit) {
   builder::ModelSpec spec = parse(kRichModel);
   const std::vector<double> awkward = {0.1 + 0.2, 1.0 / 3.0, -2.0 / 7.0,

@@ -1,0 +1,1136 @@
+#include "io/model_schema.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <string>
+#include <utility>
+
+namespace pound::io {
+namespace {
+
+using builder::AdjacentBuildingsSpec;
+using builder::AnalysisSpec;
+using builder::BlockSpec;
+using builder::BuildingSpec;
+using builder::ContactSpec;
+using builder::DampingSpec;
+using builder::DriftMonitorSpec;
+using builder::ElementSpec;
+using builder::ExcitationSpec;
+using builder::FrictionSpec;
+using builder::GirderBridgeSpec;
+using builder::InitialVelocitySpec;
+using builder::JointMonitorSpec;
+using builder::JointSpec;
+using builder::LinkSpec;
+using builder::LoadSpec;
+using builder::MassSpec;
+using builder::MaterialSpec;
+using builder::ModelSpec;
+using builder::NodeSpec;
+using builder::RecorderSpec;
+using builder::RodPairSpec;
+using builder::RodSpec;
+using builder::SectionSpec;
+using builder::StoreySpec;
+using builder::SupportSpec;
+using builder::SurfaceSpec;
+using builder::UnitsSpec;
+using integrators::AdaptiveStepping;
+
+// A bound on counting (2e9 elements ran out of memory: std::bad_alloc, a crash rather than a
+// message); what a machine can hold is checked against its memory before building.
+constexpr double kMostRodElements = 1e8;
+constexpr int kMostBlockElementsPerSide = 10000;
+
+// ---- Kinds of values that model files have beyond io/schema.hpp ----
+
+// A contact law object, checked against the law catalog.
+struct Law {
+  using value_type = builder::LawSpec;
+  LawPlace place = LawPlace::link;
+
+  void read(const JsonValue& value, builder::LawSpec& target, Context&) const {
+    target = read_law_in(value, place);
+  }
+  OrderedJson write(const builder::LawSpec& law, const Context&) const { return law_json(law); }
+  std::string type() const { return "object"; }
+};
+
+// An integrator object or the name of a preset.
+struct Integrator {
+  using value_type = builder::IntegratorSpec;
+
+  void read(const JsonValue& value, builder::IntegratorSpec& target, Context&) const {
+    target = read_integrator(value);
+  }
+  OrderedJson write(const builder::IntegratorSpec& integrator, const Context&) const {
+    return integrator_json(integrator);
+  }
+  std::string type() const { return "object or string"; }
+};
+
+Choice<bool> mass_choice() { return {{{"lumped", false}, {"consistent", true}}}; }
+Choice<bool> plane_choice() { return {{{"stress", false}, {"strain", true}}}; }
+
+// ---- Nodes, materials, elements ----
+
+const Fields<NodeSpec>& node_fields() {
+  static const Fields<NodeSpec> fields = {
+      unique_id(&NodeSpec::id, "nodes", "the node's name"),
+      required("x", &NodeSpec::x, Number<>{}, "coordinate [L]"),
+      optional("y", &NodeSpec::y, Number<>{}, "coordinate [L]").in_plane().always_written(),
+  };
+  return fields;
+}
+
+const Fields<MaterialSpec>& material_fields() {
+  static const Fields<MaterialSpec> fields = {
+      unique_id(&MaterialSpec::id, "materials", "the material's name"),
+      required("youngs_modulus", &MaterialSpec::youngs_modulus, Number<>{positive},
+               "Young's modulus E [F/L²]"),
+      required("density", &MaterialSpec::density, Number<>{non_negative},
+               "ρ, mass per volume [M/L³]"),
+      optional("poisson_ratio", &MaterialSpec::poisson_ratio,
+               Number<>{non_negative, below(0.5, "must be < 0.5 (incompressible), got {}")},
+               "Poisson's ratio ν, needed by quads"),
+  };
+  return fields;
+}
+
+bool is_beam(const ElementSpec& element) { return element.type == "beam"; }
+bool is_quad(const ElementSpec& element) { return element.type == "quad"; }
+
+// Two nodes, or four counter-clockwise for a quad; the struct keeps the first two apart.
+Field<ElementSpec> element_nodes() {
+  return custom<ElementSpec>(
+      {"nodes", "2 node ids (4 for a quad)", "required", "its nodes; a quad's counter-clockwise"},
+      [](JsonObject& object, ElementSpec& element, Context& context) {
+        const std::size_t count = is_quad(element) ? 4 : 2;
+        std::vector<std::string> nodes;
+        Names{.min_count = count, .max_count = count}.read(object.at("nodes"), nodes, context);
+        element.node_i = nodes[0];
+        element.node_j = nodes[1];
+        element.more_nodes.assign(nodes.begin() + 2, nodes.end());
+      },
+      [](const ElementSpec& element, const Context&) -> std::optional<OrderedJson> {
+        std::vector<std::string> nodes = {element.node_i, element.node_j};
+        nodes.insert(nodes.end(), element.more_nodes.begin(), element.more_nodes.end());
+        return nodes;
+      });
+}
+
+using Coefficients = std::array<double, 2>;
+
+const Fields<Coefficients>& rayleigh_fields() {
+  static const Fields<Coefficients> fields = {
+      optional("mass_coefficient", Entry<Coefficients, 0>{}, Number<>{non_negative},
+               "a0 of C = a0·M + a1·K [1/T]")
+          .always_written(),
+      optional("stiffness_coefficient", Entry<Coefficients, 1>{}, Number<>{non_negative}, "a1 [T]")
+          .always_written(),
+  };
+  return fields;
+}
+
+const Fields<ElementSpec>& element_fields() {
+  static const Fields<ElementSpec> fields = {
+      unique_id(&ElementSpec::id, "elements", "the element's name"),
+      required("type", &ElementSpec::type, names_choice({"truss", "beam", "quad"}),
+               "an axial rod, a beam-column or a plane quadrilateral"),
+      element_nodes(),
+      required("material", &ElementSpec::material, Text{true}, "id of its material"),
+      required("area", &ElementSpec::area, Number<>{positive}, "cross-section area A [L²]")
+          .when(std::not_fn(is_quad), "truss and beam"),
+      rule<ElementSpec>([](JsonObject& object, ElementSpec& element, Context& context) {
+        if (element.type != "truss" && context.dimension != 2)
+          object.at("type").fail(
+              fmt::format("a {} needs a 2-D scene (\"dimension\": 2)", element.type));
+      }),
+      required("inertia", &ElementSpec::inertia, Number<>{positive}, "second moment of area I [L⁴]")
+          .when(is_beam, "beam only"),
+      optional("extra_mass", &ElementSpec::extra_mass, Number<>{non_negative},
+               "added mass per length: deck, barriers, floors [M/L]")
+          .when(is_beam, "beam only"),
+      required("thickness", &ElementSpec::thickness, Number<>{positive}, "thickness t [L]")
+          .when(is_quad, "quad only"),
+      optional("plane", &ElementSpec::plane_strain, plane_choice(),
+               "plane stress, or plane strain per thickness t")
+          .when(is_quad, "quad only"),
+      optional("mass", &ElementSpec::consistent_mass, mass_choice(), "lumped or consistent mass")
+          .when([](const ElementSpec& element) { return is_beam(element) || is_quad(element); },
+                "beam and quad"),
+      optional("damping", &ElementSpec::rayleigh, Object<Coefficients>{rayleigh_fields()},
+               "its own Rayleigh coefficients instead of the model's"),
+  };
+  return fields;
+}
+
+// ---- Masses, supports, loads, initial velocities ----
+
+const Fields<MassSpec>& mass_fields() {
+  static const Fields<MassSpec> fields = {
+      required("node", &MassSpec::node, Text{true}, "id of the node"),
+      required("mass", &MassSpec::mass, Number<>{positive},
+               "mass in every translational direction [M]"),
+      optional("rotary_inertia", &MassSpec::rotary_inertia, Number<>{non_negative},
+               "rotary inertia, frame scenes [M·L²]"),
+      optional("mass_damping", &MassSpec::mass_damping, Number<>{non_negative},
+               "its own a0 instead of the model's [1/T]"),
+  };
+  return fields;
+}
+
+// "fix": ["x", "rz"], each direction once.
+Field<SupportSpec> fixed_directions() {
+  return custom<SupportSpec>(
+      {"fix", quoted_names({"x", "y", "rz"}) + ", each once", "required",
+       "the fixed directions (y and rz only in 2-D)"},
+      [](JsonObject& object, SupportSpec& support, Context& context) {
+        UniqueNames directions("direction");
+        for (const JsonValue& value : object.at("fix").elements(1)) {
+          const std::string direction = value.as_one_of({"x", "y", "rz"});
+          directions.add(direction, value);
+          if (direction != "x") require_plane(value, context);
+          (direction == "x"   ? support.fix_x
+           : direction == "y" ? support.fix_y
+                              : support.fix_rotation) = true;
+        }
+      },
+      [](const SupportSpec& support, const Context&) -> std::optional<OrderedJson> {
+        const std::array<std::pair<const char*, bool>, 3> directions = {
+            {{"x", support.fix_x}, {"y", support.fix_y}, {"rz", support.fix_rotation}}};
+        OrderedJson fixed = OrderedJson::array();
+        for (const auto& [name, fixes] : directions)
+          if (fixes) fixed.push_back(name);
+        return fixed;
+      });
+}
+
+const Fields<SupportSpec>& support_fields() {
+  static const Fields<SupportSpec> fields = {
+      required("node", &SupportSpec::node, Text{true}, "id of the node"),
+      fixed_directions(),
+  };
+  return fields;
+}
+
+// Loads and initial velocities: a vector at a node.
+template <class Spec>
+Fields<Spec> nodal_vector_fields(const std::string& quantity) {
+  return {
+      required("node", &Spec::node, Text{true}, "id of the node"),
+      optional("x", &Spec::x, Number<>{}, quantity).always_written(),
+      optional("y", &Spec::y, Number<>{}, quantity).in_plane().always_written(),
+  };
+}
+
+const Fields<InitialVelocitySpec>& initial_velocity_fields() {
+  static const Fields<InitialVelocitySpec> fields =
+      nodal_vector_fields<InitialVelocitySpec>("velocity [L/T]");
+  return fields;
+}
+
+const Fields<LoadSpec>& load_fields() {
+  static const Fields<LoadSpec> fields = nodal_vector_fields<LoadSpec>("force [F]");
+  return fields;
+}
+
+// ---- Links ----
+
+const Fields<FrictionSpec>& friction_fields() {
+  static const Fields<FrictionSpec> fields = {
+      required("coefficient", &FrictionSpec::coefficient, Number<>{non_negative},
+               "μ, static = kinetic"),
+      optional("stick_stiffness", &FrictionSpec::stick_stiffness, Number<>{positive},
+               "stiffness while sticking; default: the normal law's [F/L]"),
+      optional("stick_damping", &FrictionSpec::stick_damping, Number<>{non_negative},
+               "damping while sticking; default: the normal law's [F·T/L]"),
+      optional("stick_mass", &FrictionSpec::stick_mass, Number<>{non_negative},
+               "mass while sticking; default: the normal law's [M]"),
+  };
+  return fields;
+}
+
+Object<FrictionSpec> friction_object() { return {friction_fields(), Docs::own_table}; }
+
+// Two nodes, or one with a "segment".
+Field<LinkSpec> link_nodes() {
+  return custom<LinkSpec>(
+      {"nodes", "1 or 2 node ids", "required", "node i and node j, or node i of a segment link"},
+      [](JsonObject& object, LinkSpec& link, Context& context) {
+        std::vector<std::string> nodes;
+        Names{.max_count = 2}.read(object.at("nodes"), nodes, context);
+        link.node_i = nodes[0];
+        if (nodes.size() == 2) link.node_j = nodes[1];
+      },
+      [](const LinkSpec& link, const Context&) -> std::optional<OrderedJson> {
+        if (link.segment_end) return std::vector<std::string>{link.node_i};
+        return std::vector<std::string>{link.node_i, link.node_j};
+      });
+}
+
+Field<LinkSpec> link_segment() {
+  return custom<LinkSpec>(
+      {"segment", "2 node ids", "–",
+       "instead of node j: the point of segment a–b nearest node i at t = 0"},
+      [](JsonObject& object, LinkSpec& link, Context& context) {
+        const std::optional<JsonValue> value = object.find("segment");
+        if (!value) return;
+        std::vector<std::string> ends;
+        Names{.min_count = 2, .max_count = 2}.read(*value, ends, context);
+        link.node_j = ends[0];
+        link.segment_end = ends[1];
+      },
+      [](const LinkSpec& link, const Context&) -> std::optional<OrderedJson> {
+        if (!link.segment_end) return std::nullopt;
+        return std::vector<std::string>{link.node_j, *link.segment_end};
+      });
+}
+
+const Fields<LinkSpec>& link_fields() {
+  static const Fields<LinkSpec> fields = {
+      unique_id(&LinkSpec::id, "links", "the link's name"),
+      link_nodes(),
+      rule<LinkSpec>([](JsonObject& object, LinkSpec&, Context&) {
+        const std::size_t nodes = object.at("nodes").json().size();
+        if (object.has("segment") && nodes != 1)
+          object.at("nodes").fail("give one node with a 'segment'");
+        if (!object.has("segment") && nodes != 2)
+          object.at("nodes").fail("needs 2 entries (or one with a 'segment')");
+      }),
+      link_segment().in_plane(),
+      optional("gap", &LinkSpec::gap, Number<>{non_negative}, "clear distance at t = 0 [L]")
+          .always_written(),
+      optional("axis", &LinkSpec::axis, UnitVector<std::vector<double>>{},
+               "from node i towards node j; needed when they are at the same place")
+          .default_text("from the coordinates"),
+      optional("surface_velocity", &LinkSpec::velocity_j, Pair<>{},
+               "the j side's own constant velocity [L/T]")
+          .in_plane(),
+      optional("dof", &LinkSpec::rotational,
+               Choice<bool>{{{"translation", false}, {"rotation", true}}},
+               "rotation: acts on θ_i − θ_j (frame scenes)"),
+      required("law", &LinkSpec::law, Law{}, "the contact law: `{\"type\": ..., parameters}`"),
+      rule<LinkSpec>([](JsonObject& object, LinkSpec& link, Context& context) {
+        if (link.rotational && context.dimension != 2)
+          object.at("dof").fail("a rotational link needs a 2-D scene");
+        if (link.rotational && link.axis) object.at("axis").fail("a rotational link has no axis");
+      }),
+      optional("friction", &LinkSpec::friction, friction_object(), "Coulomb friction (2-D scenes)"),
+  };
+  return fields;
+}
+
+// ---- Generators ----
+
+const Fields<RodSpec>& rod_fields() {
+  static const Fields<RodSpec> fields = {
+      required("youngs_modulus", &RodSpec::youngs_modulus, Number<>{positive}, "E [F/L²]"),
+      required("density", &RodSpec::density, Number<>{positive}, "ρ [M/L³]"),
+      required("area", &RodSpec::area, Number<>{positive}, "A [L²]"),
+      required("length", &RodSpec::length, Number<>{positive}, "L [L]"),
+      required("elements", &RodSpec::elements, Number<int>{at_least(1), at_most(kMostRodElements)},
+               "n, equal elements"),
+      optional("initial_velocity", &RodSpec::initial_velocity, Number<>{}, "along +x [L/T]")
+          .always_written(),
+      optional("far_end", &RodSpec::far_end_fixed, Choice<bool>{{{"free", false}, {"fixed", true}}},
+               "the end away from the contact")
+          .always_written(),
+  };
+  return fields;
+}
+
+const Fields<RodPairSpec>& rod_pair_fields() {
+  static const Object<RodSpec> rod{rod_fields(), Docs::own_table};
+  static const Fields<RodPairSpec> fields = {
+      tag<RodPairSpec>("type", "rod_pair", "the generator"),
+      unique_id(&RodPairSpec::id, "generators", "prefix of the generated ids"),
+      required("left", &RodPairSpec::left, rod, "the rod on [−L1, 0]"),
+      required("right", &RodPairSpec::right, rod, "the rod from x = 0"),
+      optional("gap", &RodPairSpec::gap, Number<>{non_negative}, "clear distance [L]")
+          .always_written(),
+      required("law", &RodPairSpec::law, Law{LawPlace::rod_pair},
+               "the contact law, as for links; a gap_spring may give `stiffness_ratio`"),
+  };
+  return fields;
+}
+
+const Fields<StoreySpec>& storey_fields() {
+  static const Fields<StoreySpec> fields = {
+      required("height", &StoreySpec::height, Number<>{positive}, "h [L]"),
+      required("mass", &StoreySpec::mass, Number<>{positive}, "floor mass [M]"),
+      required("stiffness", &StoreySpec::stiffness, Number<>{positive},
+               "lateral storey stiffness k [F/L]"),
+  };
+  return fields;
+}
+
+const Fields<BuildingSpec>& building_fields() {
+  static const Fields<BuildingSpec> fields = {
+      optional("damping_ratio", &BuildingSpec::damping_ratio,
+               Number<>{non_negative, below(1.0, "must be < 1")},
+               "Rayleigh damping ratio at its own modes 1 and 2")
+          .always_written(),
+      required("storeys", &BuildingSpec::storeys, Objects<StoreySpec>{storey_fields(), 1},
+               "from the ground up"),
+  };
+  return fields;
+}
+
+const Fields<AdjacentBuildingsSpec>& adjacent_buildings_fields() {
+  static const Object<BuildingSpec> building{building_fields(), Docs::own_table};
+  static const Fields<AdjacentBuildingsSpec> fields = {
+      tag<AdjacentBuildingsSpec>("type", "adjacent_buildings", "the generator"),
+      unique_id(&AdjacentBuildingsSpec::id, "generators", "prefix of the generated ids"),
+      required("left", &AdjacentBuildingsSpec::left, building, "the left building"),
+      required("right", &AdjacentBuildingsSpec::right, building, "the right building"),
+      required("separation", &AdjacentBuildingsSpec::separation, Number<>{non_negative},
+               "clear gap between the facades [L]"),
+      required("law", &AdjacentBuildingsSpec::law, Law{}, "pounding law of every link"),
+  };
+  return fields;
+}
+
+const Fields<SectionSpec>& section_fields() {
+  static const Fields<SectionSpec> fields = {
+      required("youngs_modulus", &SectionSpec::youngs_modulus, Number<>{positive}, "E [F/L²]"),
+      required("area", &SectionSpec::area, Number<>{positive}, "A [L²]"),
+      required("inertia", &SectionSpec::inertia, Number<>{positive}, "I [L⁴]"),
+      optional("density", &SectionSpec::density, Number<>{non_negative}, "ρ [M/L³]")
+          .always_written(),
+      optional("extra_mass", &SectionSpec::extra_mass, Number<>{non_negative},
+               "added mass per length [M/L]")
+          .always_written(),
+      optional("elements", &SectionSpec::elements,
+               Number<int>{at_least(1), at_most(1000, "must be <= 1000")},
+               "per span (girder) or per pier")
+          .always_written()
+          .default_text("`4` (girder), `2` (pier)"),
+  };
+  return fields;
+}
+
+const Fields<JointSpec>& joint_fields() {
+  static const Fields<JointSpec> fields = {
+      required("gap", &JointSpec::gap, Number<>{non_negative}, "clear distance [L]"),
+      required("law", &JointSpec::law, Law{}, "pounding law"),
+      optional("restrainer", &JointSpec::restrainer, Law{},
+               "a tension law (restrainer, hook) across the joint"),
+      optional("seat_width", &JointSpec::seat_width, Number<>{non_negative},
+               "[L]; 0: unseating not checked")
+          .always_written(),
+  };
+  return fields;
+}
+
+Field<GirderBridgeSpec> expansion_joints() {
+  return custom<GirderBridgeSpec>(
+      {"expansion_joints", "array of integers", "–", "piers (1 … spans − 1) where the deck is cut"},
+      [](JsonObject& object, GirderBridgeSpec& bridge, Context&) {
+        const std::optional<JsonValue> list = object.find("expansion_joints");
+        if (!list) return;
+        UniqueNames joints("expansion joint");
+        for (const JsonValue& value : list->elements()) {
+          const int pier = value.as<int>(at_least(1));
+          if (pier >= static_cast<int>(bridge.spans.size()))
+            value.fail(fmt::format("is pier {}, but the bridge has piers 1 to {}", pier,
+                                   bridge.spans.size() - 1));
+          joints.add(std::to_string(pier), value);
+          bridge.expansion_joints.push_back(pier);
+        }
+      },
+      [](const GirderBridgeSpec& bridge, const Context&) -> std::optional<OrderedJson> {
+        if (bridge.expansion_joints.empty()) return std::nullopt;
+        return bridge.expansion_joints;
+      });
+}
+
+// Needed with expansion joints; a spec without it has a joint with no law.
+Field<GirderBridgeSpec> joint_at_expansion_joints() {
+  const Object<JointSpec> joint{joint_fields(), Docs::own_table};
+  return custom<GirderBridgeSpec>(
+      {"joint", joint.type(), "–", "gap, law, restrainer and seat of the expansion joints"},
+      [joint](JsonObject& object, GirderBridgeSpec& bridge, Context& context) {
+        if (!bridge.expansion_joints.empty() || object.has("joint"))
+          joint.read(object.at("joint"), bridge.joint, context);
+      },
+      [joint](const GirderBridgeSpec& bridge,
+              const Context& context) -> std::optional<OrderedJson> {
+        if (bridge.expansion_joints.empty() && bridge.joint.law.type.empty()) return std::nullopt;
+        return joint.write(bridge.joint, context);
+      });
+}
+
+const Fields<GirderBridgeSpec>& girder_bridge_fields() {
+  static const Object<SectionSpec> section{section_fields(), Docs::own_table};
+  static const Fields<GirderBridgeSpec> fields = {
+      tag<GirderBridgeSpec>("type", "girder_bridge", "the generator"),
+      unique_id(&GirderBridgeSpec::id, "generators", "prefix of the generated ids"),
+      required("spans", &GirderBridgeSpec::spans, Numbers{1, 100, positive}, "span lengths [L]"),
+      required("girder", &GirderBridgeSpec::girder, section, "the girders' section"),
+      required("pier", &GirderBridgeSpec::pier, section, "the piers' section"),
+      required("pier_height", &GirderBridgeSpec::pier_height, Number<>{positive},
+               "deck level above the pier bases [L]"),
+      optional("pier_yield_drift", &GirderBridgeSpec::pier_yield_drift, Number<>{positive},
+               "for the piers' displacement ductility [L]"),
+      required("bearing", &GirderBridgeSpec::bearing, Law{}, "horizontal law of every bearing"),
+      required("bearing_vertical_stiffness", &GirderBridgeSpec::bearing_vertical_stiffness,
+               Number<>{positive}, "the bearings' elastic vertical stiffness [F/L]"),
+      expansion_joints(),
+      joint_at_expansion_joints(),
+      required("abutment", &GirderBridgeSpec::abutment,
+               Object<JointSpec>{joint_fields(), Docs::own_table},
+               "girder end against the backwall"),
+      optional("backfill", &GirderBridgeSpec::backfill, Law{},
+               "a compression-only law behind each backwall; without it the backwall is fixed"),
+      required("backwall_mass", &GirderBridgeSpec::backwall_mass, Number<>{positive},
+               "mass of each backwall [M]")
+          .when([](const GirderBridgeSpec& bridge) { return bridge.backfill.has_value(); },
+                "with backfill"),
+  };
+  return fields;
+}
+
+// "elements": [columns, rows].
+Field<BlockSpec> block_elements() {
+  return custom<BlockSpec>(
+      {"elements", fmt::format("[integer, integer], each ≥ 1, ≤ {}", kMostBlockElementsPerSide),
+       "required", "elements along x and along y"},
+      [](JsonObject& object, BlockSpec& block, Context&) {
+        const std::vector<JsonValue> counts = object.at("elements").elements(2, 2);
+        block.columns = counts[0].as<int>(at_least(1));
+        block.rows = counts[1].as<int>(at_least(1));
+        for (const JsonValue& count : counts)
+          if (count.as<int>() > kMostBlockElementsPerSide)
+            count.fail(fmt::format("must be <= {} elements per side", kMostBlockElementsPerSide));
+      },
+      [](const BlockSpec& block, const Context&) -> std::optional<OrderedJson> {
+        return OrderedJson::array({block.columns, block.rows});
+      });
+}
+
+using Pressures = std::array<double, 4>;
+
+const Fields<Pressures>& pressure_fields() {
+  static const Fields<Pressures> fields = {
+      optional("bottom", Entry<Pressures, 0>{}, Number<>{}, "[F/L²]"),
+      optional("right", Entry<Pressures, 1>{}, Number<>{}, "[F/L²]"),
+      optional("top", Entry<Pressures, 2>{}, Number<>{}, "[F/L²]"),
+      optional("left", Entry<Pressures, 3>{}, Number<>{}, "[F/L²]"),
+  };
+  return fields;
+}
+
+const Fields<BlockSpec>& block_fields() {
+  static const Fields<BlockSpec> fields = {
+      tag<BlockSpec>("type", "block", "the generator"),
+      unique_id(&BlockSpec::id, "generators", "prefix of the generated ids and node sets"),
+      optional("origin", &BlockSpec::origin, Pair<>{}, "lower left corner [L]").always_written(),
+      required("width", &BlockSpec::width, Number<>{positive}, "along x [L]"),
+      required("height", &BlockSpec::height, Number<>{positive}, "along y [L]"),
+      block_elements(),
+      required("material", &BlockSpec::material, Text{true},
+               "id of a material with a poisson_ratio"),
+      required("thickness", &BlockSpec::thickness, Number<>{positive}, "t [L]"),
+      optional("plane", &BlockSpec::plane_strain, plane_choice(), "as for a quad"),
+      optional("mass", &BlockSpec::consistent_mass, mass_choice(), "as for a quad"),
+      optional("initial_velocity", &BlockSpec::initial_velocity, Pair<>{}, "of every node [L/T]"),
+      optional("pressure", &BlockSpec::pressure, Object<Pressures>{pressure_fields()},
+               "uniform pressure on each edge, positive into the block"),
+      optional("fixed_edges", &BlockSpec::fixed_edges,
+               Names{.what = "edge", .max_count = 4, .options = {"bottom", "right", "top", "left"}},
+               "edges whose nodes are fixed in x and y"),
+  };
+  return fields;
+}
+
+// One entry of "generators", whose "type" picks the kind; each kind keeps its entries in a list
+// of its own with their index in the array.
+void read_generator(JsonObject& generator, int index, ModelSpec& spec, Context& context) {
+  const std::string type =
+      generator.one_of("type", {"rod_pair", "adjacent_buildings", "girder_bridge", "block"});
+  if (type == "block") {
+    if (context.dimension != 2)
+      generator.at("type").fail("a block needs a 2-D scene (\"dimension\": 2)");
+    read_fields(generator, block_fields(), spec.blocks.emplace_back(), context);
+    spec.blocks.back().generator_index = index;
+  } else if (type == "rod_pair") {
+    read_fields(generator, rod_pair_fields(), spec.rod_pairs.emplace_back(), context);
+    spec.rod_pair_generator_index.push_back(index);
+  } else if (type == "adjacent_buildings") {
+    read_fields(generator, adjacent_buildings_fields(), spec.building_pairs.emplace_back(),
+                context);
+    spec.building_pairs.back().generator_index = index;
+  } else {
+    read_fields(generator, girder_bridge_fields(), spec.bridges.emplace_back(), context);
+    spec.bridges.back().generator_index = index;
+  }
+}
+
+void read_generators(JsonObject& top, ModelSpec& spec, Context& context) {
+  const std::vector<JsonValue> values = top.array("generators");
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    JsonObject generator(values[k]);
+    read_generator(generator, static_cast<int>(k), spec, context);
+    generator.finish();
+  }
+}
+
+// The generators in the file's order, restored from their indices (a spec made in code may leave
+// the rod pairs' out: then they come first).
+std::optional<OrderedJson> generators_json(const ModelSpec& spec, const Context& context) {
+  std::vector<std::pair<int, OrderedJson>> entries;
+  for (std::size_t k = 0; k < spec.rod_pairs.size(); ++k)
+    entries.emplace_back(k < spec.rod_pair_generator_index.size() ? spec.rod_pair_generator_index[k]
+                                                                  : static_cast<int>(k),
+                         write_object(spec.rod_pairs[k], rod_pair_fields(), context));
+  for (const AdjacentBuildingsSpec& pair : spec.building_pairs)
+    entries.emplace_back(pair.generator_index,
+                         write_object(pair, adjacent_buildings_fields(), context));
+  for (const GirderBridgeSpec& bridge : spec.bridges)
+    entries.emplace_back(bridge.generator_index,
+                         write_object(bridge, girder_bridge_fields(), context));
+  for (const BlockSpec& block : spec.blocks)
+    entries.emplace_back(block.generator_index, write_object(block, block_fields(), context));
+  if (entries.empty()) return std::nullopt;
+  std::stable_sort(entries.begin(), entries.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  OrderedJson json = OrderedJson::array();
+  for (auto& entry : entries) json.push_back(std::move(entry.second));
+  return json;
+}
+
+Field<ModelSpec> generators() {
+  return custom<ModelSpec>({"generators", "array of objects", "–",
+                            "scene generators that add nodes, elements, links and monitors"},
+                           read_generators, generators_json);
+}
+
+// ---- Surfaces and contacts ----
+
+const Fields<SurfaceSpec>& surface_fields() {
+  static const Fields<SurfaceSpec> fields = {
+      array_index(&SurfaceSpec::index),
+      unique_id(&SurfaceSpec::id, "surfaces", "the surface's name, and its generated node's"),
+      required("point", &SurfaceSpec::point, Pair<>{}, "a point on the surface [L]"),
+      required("normal", &SurfaceSpec::normal, UnitVector<std::array<double, 2>>{},
+               "pointing out of the surface towards the nodes"),
+      optional("velocity", &SurfaceSpec::velocity, Pair<>{}, "its own velocity (a belt) [L/T]"),
+      required("nodes", &SurfaceSpec::nodes, Names{}, "node ids or node sets that may touch it"),
+      required("law", &SurfaceSpec::law, Law{}, "the contact law, as for links"),
+      optional("friction", &SurfaceSpec::friction, friction_object(), "as for links"),
+  };
+  return fields;
+}
+
+const Fields<ContactSpec>& contact_fields() {
+  static const Fields<ContactSpec> fields = {
+      array_index(&ContactSpec::index),
+      unique_id(&ContactSpec::id, "links", "the contact's name, unique among links too"),
+      required("nodes", &ContactSpec::nodes, Names{}, "the contacting nodes: ids or node sets"),
+      required("segments", &ContactSpec::segments, Names{},
+               "the facing boundary, a chain of nodes counter-clockwise round its body"),
+      required("law", &ContactSpec::law, Law{}, "the contact law, as for links"),
+      optional("friction", &ContactSpec::friction, friction_object(), "as for links"),
+  };
+  return fields;
+}
+
+// ---- Monitors, units, damping ----
+
+const Fields<DriftMonitorSpec>& drift_monitor_fields() {
+  static const Fields<DriftMonitorSpec> fields = {
+      required("id", &DriftMonitorSpec::id, Text{true}, "its name in the summary"),
+      optional("kind", &DriftMonitorSpec::kind, names_choice({"storey", "pier"}),
+               "how the summary groups it")
+          .always_written(),
+      optional("group", &DriftMonitorSpec::group, Text{}, "building or bridge it belongs to"),
+      required("bottom", &DriftMonitorSpec::bottom, Text{true}, "id of the lower node"),
+      required("top", &DriftMonitorSpec::top, Text{true}, "id of the upper node"),
+      required("height", &DriftMonitorSpec::height, Number<>{positive}, "for the drift ratio [L]"),
+      optional("yield_drift", &DriftMonitorSpec::yield_drift, Number<>{positive},
+               "for the displacement ductility [L]"),
+  };
+  return fields;
+}
+
+const Fields<JointMonitorSpec>& joint_monitor_fields() {
+  static const Fields<JointMonitorSpec> fields = {
+      required("id", &JointMonitorSpec::id, Text{true}, "its name in the summary"),
+      required("link", &JointMonitorSpec::link, Text{true}, "the pounding link across the joint"),
+      required("girder", &JointMonitorSpec::girder, Text{true}, "id of the girder end's node"),
+      required("seat", &JointMonitorSpec::seat, Text{true}, "id of the node it sits on"),
+      optional("seat_width", &JointMonitorSpec::seat_width, Number<>{non_negative},
+               "[L]; 0: unseating not checked")
+          .always_written(),
+  };
+  return fields;
+}
+
+const Fields<UnitsSpec>& unit_fields() {
+  static const Fields<UnitsSpec> fields = {
+      optional("length", &UnitsSpec::length, names_choice({"m", "cm", "mm", "km", "in", "ft"}),
+               "length unit of the model")
+          .always_written(),
+      optional("time", &UnitsSpec::time, names_choice({"s", "ms"}), "time unit of the model")
+          .always_written(),
+  };
+  return fields;
+}
+
+bool by_coefficients(const DampingSpec& damping) {
+  return damping.mass_coefficient || damping.stiffness_coefficient;
+}
+bool by_ratio(const DampingSpec& damping) { return !by_coefficients(damping); }
+
+const Fields<DampingSpec>& damping_fields() {
+  static const Fields<DampingSpec> fields = {
+      tag<DampingSpec>("type", "rayleigh", "C = a0·M + a1·K of the linear elements")
+          .default_text("`\"rayleigh\"`"),
+      // The coefficients themselves (each 0 unless given), or a ratio at two periods or modes.
+      rule<DampingSpec>([](JsonObject& object, DampingSpec& damping, Context&) {
+        if (object.has("mass_coefficient") || object.has("stiffness_coefficient"))
+          damping.mass_coefficient = damping.stiffness_coefficient = 0.0;
+      }),
+      optional("mass_coefficient", &DampingSpec::mass_coefficient, Number<>{non_negative},
+               "a0 [1/T]")
+          .default_text("`0`")
+          .when(by_coefficients, "instead of a ratio"),
+      optional("stiffness_coefficient", &DampingSpec::stiffness_coefficient, Number<>{non_negative},
+               "a1 [T]")
+          .default_text("`0`")
+          .when(by_coefficients, "instead of a ratio"),
+      required("ratio", &DampingSpec::ratio, Number<>{non_negative, below(1.0)},
+               "damping ratio ξ at two periods or two modes")
+          .when(by_ratio, "instead of coefficients"),
+      rule<DampingSpec>([](JsonObject& object, DampingSpec& damping, Context&) {
+        if (by_coefficients(damping)) return;
+        if (object.has("periods") == object.has("modes"))
+          object.fail(
+              "give the two 'periods' or the two 'modes' Rayleigh damping matches the ratio at "
+              "(or 'mass_coefficient' and 'stiffness_coefficient')");
+      }),
+      optional("periods", &DampingSpec::periods, Pair<>{positive, "needs two different periods"},
+               "the periods T1, T2 it is matched at [T]")
+          .when(by_ratio, "or modes"),
+      optional("modes", &DampingSpec::modes, Pair<int>{at_least(1), "needs two different modes"},
+               "the modes it is matched at, counted from 1 (`pound modes`)")
+          .when(by_ratio, "or periods"),
+  };
+  return fields;
+}
+
+// ---- Excitations ----
+
+const Fields<ExcitationSpec>& record_format_fields() {
+  static const Fields<ExcitationSpec> fields = {
+      optional("format", &ExcitationSpec::format, names_choice({"auto", "at2", "columns"}),
+               "auto: AT2 by the extension .AT2 or an NPTS header line, else columns")
+          .always_written(),
+      optional("column", &ExcitationSpec::column, Number<int>{at_least(1)},
+               "columns: the column to read, from 1"),
+      optional("time_step", &ExcitationSpec::time_step, Number<>{positive},
+               "columns: the sampling interval, unless the file gives it [T]"),
+      optional("time_column", &ExcitationSpec::time_column, Flag{},
+               "columns: the first column is time"),
+      optional("units", &ExcitationSpec::units, names_choice({"g", "m/s2", "cm/s2", "model"}),
+               "of the file's values (AT2 files are in g)")
+          .always_written(),
+  };
+  return fields;
+}
+
+bool by_sa(const ExcitationSpec& excitation) { return excitation.target_sa.has_value(); }
+
+Field<ExcitationSpec> scale_field() {
+  return nested<ExcitationSpec>(
+      "scale",
+      {
+          optional("factor", &ExcitationSpec::scale_factor, Number<>{positive}, "a factor"),
+          optional("pga", &ExcitationSpec::target_pga, Number<>{positive},
+                   "to this peak ground acceleration [g]"),
+          optional("sa", &ExcitationSpec::target_sa, Number<>{positive},
+                   "to this spectral acceleration at `period` [g]"),
+          rule<ExcitationSpec>([](JsonObject& object, ExcitationSpec& excitation, Context&) {
+            const int given = excitation.scale_factor.has_value() +
+                              excitation.target_pga.has_value() + by_sa(excitation);
+            if (given != 1)
+              object.fail("give exactly one of 'factor', 'pga' [g], 'sa' [g] (with 'period')");
+          }),
+          required("period", &ExcitationSpec::sa_period, Number<>{positive}, "of Sa [T]")
+              .when(by_sa, "with sa"),
+          optional("damping", &ExcitationSpec::sa_damping, Number<>{non_negative},
+                   "damping ratio of Sa")
+              .always_written()
+              .when(by_sa, "with sa"),
+      },
+      "one of factor, pga, sa");
+}
+
+const Fields<ExcitationSpec>& excitation_fields() {
+  static const Fields<ExcitationSpec> fields = [] {
+    Fields<ExcitationSpec> list = record_format_fields();
+    list.insert(list.begin(), required("record", &ExcitationSpec::record, Text{true},
+                                       "the record file, relative to the model file"));
+    list.insert(
+        list.end(),
+        {
+            optional("direction", &ExcitationSpec::direction, UnitVector<std::vector<double>>{},
+                     "of the ground motion")
+                .default_text("+x"),
+            optional("supports", &ExcitationSpec::supports, Names{},
+                     "the supports it moves (multi-support excitation)")
+                .default_text("every support"),
+            rule<ExcitationSpec>([](JsonObject& object, ExcitationSpec& excitation, Context&) {
+              const std::optional<JsonValue> wave = object.find("wave_passage");
+              if (wave && excitation.supports.empty())
+                wave->fail("a wave passage needs the 'supports' it reaches");
+            }),
+            nested<ExcitationSpec>(
+                "wave_passage",
+                {
+                    required("apparent_velocity", &ExcitationSpec::apparent_velocity,
+                             Number<>{positive}, "c [L/T]"),
+                    optional("origin", &ExcitationSpec::wave_origin, Number<>{}, "x0 [L]")
+                        .always_written(),
+                },
+                "delays each support by |x − x0|/c"),
+            scale_field(),
+        });
+    return list;
+  }();
+  return fields;
+}
+
+// ---- Analysis, recorders ----
+
+Field<AnalysisSpec> time_step_field() {
+  return custom<AnalysisSpec>(
+      {"time_step", "number > 0 or `\"auto\"`", "required",
+       "Δt [T]; `\"auto\"` (central difference): safety_factor × the stable step"},
+      [](JsonObject& object, AnalysisSpec& analysis, Context&) {
+        const JsonValue step = object.at("time_step");
+        if (!step.json().is_string()) {
+          analysis.time_step = step.as<double>(positive);
+          return;
+        }
+        (void)step.as_one_of({"auto"});
+        if (!analysis.integrator.is_explicit())
+          step.fail(
+              "\"auto\" is the stable step of central difference; implicit integrators need a "
+              "number");
+        analysis.time_step_auto = true;
+      },
+      [](const AnalysisSpec& analysis, const Context&) -> std::optional<OrderedJson> {
+        if (analysis.time_step_auto) return "auto";
+        return analysis.time_step;
+      });
+}
+
+const Fields<AdaptiveStepping>& adaptive_fields() {
+  static const Fields<AdaptiveStepping> fields = {
+      optional("tolerance", &AdaptiveStepping::tolerance, Number<>{positive},
+               "local error per step, relative to the largest displacement"),
+      optional("min_time_step", &AdaptiveStepping::min_time_step, Number<>{positive},
+               "the shortest step [T]")
+          .default_text("time_step / 256"),
+      optional("max_time_step", &AdaptiveStepping::max_time_step, Number<>{positive},
+               "the longest step [T]")
+          .default_text("the records' sampling interval, else 16 × time_step"),
+      rule<AdaptiveStepping>([](JsonObject& object, AdaptiveStepping& settings, Context&) {
+        if (settings.min_time_step > 0.0 && settings.max_time_step > 0.0 &&
+            settings.min_time_step > settings.max_time_step)
+          object.at("min_time_step").fail("must be <= max_time_step");
+      }),
+  };
+  return fields;
+}
+
+// "adaptive": true (the default settings), false, or the settings.
+struct Adaptive {
+  using value_type = std::optional<AdaptiveStepping>;
+  Object<AdaptiveStepping> settings{adaptive_fields()};
+
+  void read(const JsonValue& value, value_type& target, Context& context) const {
+    if (!value.json().is_boolean())
+      settings.read(value, target.emplace(), context);
+    else if (value.as<bool>())
+      target.emplace();
+  }
+  OrderedJson write(const value_type& value, const Context& context) const {
+    if (!value) return false;
+    const OrderedJson json = settings.write(*value, context);
+    return json.empty() ? OrderedJson(true) : json;
+  }
+  std::string type() const { return "true, false or object"; }
+  std::vector<FieldDoc> rows() const { return settings.rows(); }
+};
+
+const Fields<AnalysisSpec>& analysis_fields() {
+  static const Fields<AnalysisSpec> fields = {
+      optional("integrator", &AnalysisSpec::integrator, Integrator{},
+               "the time integrator: a method's object or a preset's name (the integrator "
+               "table below)")
+          .always_written()
+          .default_text("`\"newmark_average_acceleration\"`"),
+      time_step_field(),
+      optional("safety_factor", &AnalysisSpec::safety_factor,
+               Number<>{positive, at_most(1.0, "must be <= 1")},
+               "the fraction of the stable step taken")
+          .always_written()
+          .when([](const AnalysisSpec& analysis) { return analysis.time_step_auto; },
+                "with `\"time_step\": \"auto\"`"),
+      optional("duration", &AnalysisSpec::duration, Number<>{positive},
+               "[T]; needed unless the model has excitations")
+          .default_text("the longest record's"),
+      nested<AnalysisSpec>(
+          "convergence",
+          {
+              optional("relative_tolerance", &AnalysisSpec::relative_tolerance, Number<>{positive},
+                       "unbalanced force over the larger of the external and link forces")
+                  .always_written(),
+              optional("absolute_tolerance", &AnalysisSpec::absolute_tolerance,
+                       Number<>{non_negative}, "unbalanced force [F]")
+                  .always_written(),
+              optional("max_iterations", &AnalysisSpec::max_iterations, Number<int>{at_least(1)},
+                       "Newton iterations per step")
+                  .always_written(),
+          },
+          "Newton iteration")
+          .always_written(),
+      optional("max_step_cuts", &AnalysisSpec::max_step_cuts,
+               Number<int>{non_negative, at_most(30)}, "halvings of a step that does not converge")
+          .always_written(),
+      optional("max_steps", &AnalysisSpec::max_steps, Number<long>{non_negative},
+               "the run stops beyond this many steps; 0: no limit"),
+      optional("initial_state", &AnalysisSpec::static_initial_state,
+               Choice<bool>{{{"unloaded", false}, {"static", true}}},
+               "u = 0 at t = 0, or static equilibrium under the loads"),
+      rule<AnalysisSpec>([](JsonObject& object, AnalysisSpec& analysis, Context&) {
+        const std::optional<JsonValue> adaptive = object.find("adaptive");
+        if (adaptive && analysis.integrator.is_explicit())
+          adaptive->fail(
+              "adaptive stepping is for the implicit integrators; central difference "
+              "takes its stable step (\"time_step\": \"auto\")");
+      }),
+      optional("adaptive", &AnalysisSpec::adaptive, Adaptive{},
+               "adaptive time stepping (implicit integrators)"),
+  };
+  return fields;
+}
+
+// Recorder files are written inside the output folder: a name must not lead out of it.
+void check_file_name(const std::string& name, const JsonValue& where) {
+  const bool plain = name.size() > 4 && name.ends_with(".csv") &&
+                     name.find_first_of("/\\") == std::string::npos &&
+                     name.find("..") == std::string::npos;
+  if (!plain)
+    where.fail(
+        fmt::format("must be a plain file name ending in .csv (no folders), got '{}'", name));
+}
+
+// A file name unique among the recorders; by default "<type>_<index>.csv".
+Field<RecorderSpec> recorder_file() {
+  return custom<RecorderSpec>(
+      {"file", "string", "`\"<type>_<k>.csv\"`",
+       "a plain file name ending in .csv, unique; k counts the recorders from 0"},
+      [](JsonObject& object, RecorderSpec& recorder, Context& context) {
+        const std::optional<JsonValue> file = object.find("file");
+        const JsonValue& where = file ? *file : object.value();
+        recorder.file =
+            file ? file->as<std::string>() : fmt::format("{}_{}.csv", recorder.type, context.index);
+        check_file_name(recorder.file, where);
+        context.unique("recorder files", "file name").add(recorder.file, where);
+      },
+      [](const RecorderSpec& recorder, const Context&) -> std::optional<OrderedJson> {
+        return recorder.file;
+      });
+}
+
+const Fields<RecorderSpec>& recorder_fields() {
+  static const auto records_links = [](const RecorderSpec& recorder) {
+    return recorder.type == "link";
+  };
+  static const Fields<RecorderSpec> fields = {
+      required("type", &RecorderSpec::type, names_choice({"link", "node"}),
+               "link: force and penetration; node: displacement, velocity, acceleration"),
+      optional("links", &RecorderSpec::ids, Names{.what = "link"}, "the links recorded")
+          .default_text("every link")
+          .when(records_links, "link recorders"),
+      required("nodes", &RecorderSpec::ids, Names{}, "the nodes recorded")
+          .when(std::not_fn(records_links), "node recorders"),
+      recorder_file(),
+  };
+  return fields;
+}
+
+// Without "recorders" `run` records every link; "recorders": [] records nothing.
+Field<ModelSpec> recorders() {
+  const Objects<RecorderSpec> list{recorder_fields()};
+  return custom<ModelSpec>(
+      {"recorders", list.type(), "every link's force", "which time histories to write"},
+      [list](JsonObject& top, ModelSpec& spec, Context& context) {
+        const std::optional<JsonValue> value = top.find("recorders");
+        spec.recorders_given = value.has_value();
+        if (value) list.read(*value, spec.recorders, context);
+      },
+      [list](const ModelSpec& spec, const Context& context) -> std::optional<OrderedJson> {
+        if (!spec.recorders_given) return std::nullopt;
+        return list.write(spec.recorders, context);
+      });
+}
+
+// ---- The model ----
+
+Field<ModelSpec> dimension() {
+  return custom<ModelSpec>(
+      {"dimension", "1 or 2", "`1`",
+       "1: axial scene, u_x at each node; 2: plane scene, u_x and u_y, and θ_z where a beam or a "
+       "rotational link is"},
+      [](JsonObject& top, ModelSpec& spec, Context& context) {
+        if (const std::optional<JsonValue> value = top.find("dimension")) {
+          spec.dimension = value->as<int>();
+          if (spec.dimension != 1 && spec.dimension != 2)
+            value->fail(fmt::format("must be 1 or 2, got {}", spec.dimension));
+        }
+        context.dimension = spec.dimension;
+      },
+      [](const ModelSpec& spec, const Context&) -> std::optional<OrderedJson> {
+        return spec.dimension;
+      });
+}
+
+const Fields<ModelSpec>& model_list() {
+  static const Fields<ModelSpec> fields = {
+      optional("title", &ModelSpec::title, Text{}, "shown in the summary"),
+      dimension(),
+      optional("nodes", &ModelSpec::nodes, Objects<NodeSpec>{node_fields()}, "the nodes"),
+      optional("materials", &ModelSpec::materials, Objects<MaterialSpec>{material_fields()},
+               "elastic materials"),
+      optional("elements", &ModelSpec::elements, Objects<ElementSpec>{element_fields()},
+               "trusses, beams and quads"),
+      optional("masses", &ModelSpec::masses, Objects<MassSpec>{mass_fields()},
+               "lumped nodal masses"),
+      optional("supports", &ModelSpec::supports, Objects<SupportSpec>{support_fields()},
+               "fixed directions"),
+      optional("initial_velocities", &ModelSpec::initial_velocities,
+               Objects<InitialVelocitySpec>{initial_velocity_fields()},
+               "nodal velocities at t = 0"),
+      optional("loads", &ModelSpec::loads, Objects<LoadSpec>{load_fields()},
+               "constant nodal forces from t = 0"),
+      optional("links", &ModelSpec::links, Objects<LinkSpec>{link_fields()},
+               "contacts, restrainers and springs between two nodes, or a node and a segment"),
+      generators(),
+      optional("surfaces", &ModelSpec::surfaces,
+               Objects<SurfaceSpec>{.fields = surface_fields(), .in_plane = true},
+               "rigid flat surfaces touching a set of nodes (2-D)"),
+      optional("contacts", &ModelSpec::contacts,
+               Objects<ContactSpec>{.fields = contact_fields(), .in_plane = true},
+               "contact between two bodies' boundaries (2-D)"),
+      nested<ModelSpec>(
+          "monitors",
+          {
+              optional("drifts", &ModelSpec::drift_monitors,
+                       Objects<DriftMonitorSpec>{drift_monitor_fields()}, "storey and pier drifts"),
+              optional("joints", &ModelSpec::joint_monitors,
+                       Objects<JointMonitorSpec>{joint_monitor_fields()},
+                       "joint openings and seats"),
+          },
+          "what the summary reports beyond links"),
+      optional("units", &ModelSpec::units, Object<UnitsSpec>{unit_fields()},
+               "the model's units, for records in g"),
+      optional("damping", &ModelSpec::damping,
+               Object<DampingSpec>{damping_fields(), Docs::own_table},
+               "Rayleigh damping of the linear elements"),
+      optional("excitations", &ModelSpec::excitations, Objects<ExcitationSpec>{excitation_fields()},
+               "ground-motion records"),
+      required("analysis", &ModelSpec::analysis,
+               Object<AnalysisSpec>{analysis_fields(), Docs::own_table},
+               "integrator, time step, duration, convergence"),
+      rule<ModelSpec>([](JsonObject& top, ModelSpec& spec, Context&) {
+        if (spec.analysis.duration == 0.0 && spec.excitations.empty())
+          top.at("analysis").fail("needs 'duration' (it may be left out only with 'excitations')");
+      }),
+      recorders(),
+  };
+  return fields;
+}
+
+// A field list by the name of its section in docs/model_format.md.
+struct NamedFields {
+  std::string name;
+  std::function<std::vector<FieldDoc>()> rows;
+};
+
+template <class Spec>
+NamedFields named(std::string name, const Fields<Spec>& fields) {
+  return {std::move(name), [&fields] { return field_docs(fields); }};
+}
+
+// Every field list of the format, in the order of docs/model_format.md.
+const std::vector<NamedFields>& every_field_list() {
+  static const std::vector<NamedFields> lists = {
+      named("model", model_list()),
+      named("nodes", node_fields()),
+      named("materials", material_fields()),
+      named("elements", element_fields()),
+      named("masses", mass_fields()),
+      named("supports", support_fields()),
+      named("initial_velocities", initial_velocity_fields()),
+      named("loads", load_fields()),
+      named("links", link_fields()),
+      named("friction", friction_fields()),
+      named("rod_pair", rod_pair_fields()),
+      named("rod", rod_fields()),
+      named("adjacent_buildings", adjacent_buildings_fields()),
+      named("building", building_fields()),
+      named("storey", storey_fields()),
+      named("girder_bridge", girder_bridge_fields()),
+      named("section", section_fields()),
+      named("joint", joint_fields()),
+      named("block", block_fields()),
+      named("surfaces", surface_fields()),
+      named("contacts", contact_fields()),
+      named("drift_monitors", drift_monitor_fields()),
+      named("joint_monitors", joint_monitor_fields()),
+      named("damping", damping_fields()),
+      named("excitations", excitation_fields()),
+      named("analysis", analysis_fields()),
+      named("recorders", recorder_fields()),
+  };
+  return lists;
+}
+
+}  // namespace
+
+const Fields<ModelSpec>& model_fields() { return model_list(); }
+
+const Fields<ExcitationSpec>& record_fields() {
+  static const Fields<ExcitationSpec> fields = [] {
+    Fields<ExcitationSpec> list = record_format_fields();
+    list.push_back(scale_field());
+    return list;
+  }();
+  return fields;
+}
+
+std::vector<GeneratedSection> model_format_sections() {
+  std::vector<GeneratedSection> sections;
+  for (const NamedFields& list : every_field_list())
+    sections.push_back({list.name, [&list] { return field_table(list.rows()); }});
+  return sections;
+}
+
+std::vector<FieldDoc> model_field_docs() {
+  std::vector<FieldDoc> rows;
+  for (const NamedFields& list : every_field_list()) {
+    const std::vector<FieldDoc> more = list.rows();
+    rows.insert(rows.end(), more.begin(), more.end());
+  }
+  return rows;
+}
+
+}  // namespace pound::io
