@@ -11,6 +11,7 @@
 #include "core/types.hpp"
 #include "integrators/integrator.hpp"
 #include "integrators/second_order_system.hpp"
+#include "results/observer.hpp"
 
 namespace pound::results {
 
@@ -32,10 +33,10 @@ struct EnergyTerms {
 // (docs/design.md §2.4; also the stability map's definition of an unstable cell).
 inline constexpr double kEnergyGrowthLimit = 0.10;
 
-class EnergyBalance {
+class EnergyBalance : public Observer {
  public:
   explicit EnergyBalance(const integrators::SecondOrderSystem& system) : system_(system) {}
-  void record(const integrators::State& state);
+  void record(const integrators::State& state) override;
   const EnergyTerms& terms() const { return terms_; }
   // The largest balance error seen over the run (not only at the end).
   double worst_balance_error() const { return worst_; }

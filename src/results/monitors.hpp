@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "integrators/integrator.hpp"
+#include "results/observer.hpp"
 
 namespace pound::results {
 
@@ -15,12 +16,12 @@ struct DriftPeak {
   double time = 0.0;        // when
 };
 
-class DriftMonitors {
+class DriftMonitors : public Observer {
  public:
   // For each monitor: x equations of its bottom and top node (-1 where fixed).
   explicit DriftMonitors(std::vector<std::pair<Index, Index>> equations)
       : equations_(std::move(equations)), peaks_(equations_.size()) {}
-  void record(const integrators::State& state);
+  void record(const integrators::State& state) override;
   const std::vector<DriftPeak>& peaks() const { return peaks_; }
 
  private:
@@ -34,7 +35,7 @@ struct JointPeak {
   double peak_seat_movement = 0.0;  // max |u_girder - u_seat| along x [L]
 };
 
-class JointMonitors {
+class JointMonitors : public Observer {
  public:
   struct Where {
     Index link_row;  // the pounding link's normal row
@@ -43,7 +44,7 @@ class JointMonitors {
   };
   explicit JointMonitors(std::vector<Where> joints)
       : joints_(std::move(joints)), peaks_(joints_.size()) {}
-  void record(const integrators::State& state);
+  void record(const integrators::State& state) override;
   const std::vector<JointPeak>& peaks() const { return peaks_; }
 
  private:

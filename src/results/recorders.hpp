@@ -6,13 +6,13 @@
 
 #include "core/table.hpp"
 #include "integrators/integrator.hpp"
+#include "results/observer.hpp"
 
 namespace pound::results {
 
-class Recorder {
+class Recorder : public Observer {
  public:
   virtual ~Recorder() = default;
-  virtual void record(const integrators::State& state) = 0;
   virtual const Table& table() const = 0;
   virtual const std::string& file() const = 0;
 };
@@ -69,11 +69,11 @@ struct LinkSummary {
   double last_contact = -1.0;     // time of the last step in contact
 };
 
-class LinkSummaries {
+class LinkSummaries : public Observer {
  public:
   explicit LinkSummaries(std::vector<Index> normal_rows)
       : rows_(std::move(normal_rows)), summaries_(rows_.size()) {}
-  void record(const integrators::State& state);
+  void record(const integrators::State& state) override;
   const std::vector<LinkSummary>& summaries() const { return summaries_; }
 
  private:

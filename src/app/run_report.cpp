@@ -1,0 +1,81 @@
+#include "app/run_report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace pound::app {
+namespace {
+
+// Contacts and restrainers one line each; structural springs (bearings) in one line.
+std::string link_lines(const results::RunSummary& run) {
+  std::string text;
+  int springs = 0;
+  double spring_force = 0.0;
+  for (const results::LinkResult& link : run.links) {
+    const results::LinkSummary& s = link.summary;
+    switch (link.role) {
+      case links::LinkRole::spring:
+        ++springs;
+        spring_force = std::max({spring_force, s.peak_force, s.peak_tension});
+        break;
+      case links::LinkRole::tension:
+        text += fmt::format("  {} {}: taut {} time(s), peak tension {:.6g}, peak opening {:.4g}\n",
+                            link.law, link.id, s.impacts, s.peak_tension, s.peak_opening);
+        break;
+      case links::LinkRole::contact:
+        text += fmt::format(
+            "  contact {}: {} impact(s), peak force {:.6g}, peak penetration {:.4g}, impulse "
+            "{:.6g}\n",
+            link.id, s.impacts, s.peak_force, s.peak_penetration, s.impulse);
+        break;
+    }
+  }
+  if (springs > 0)
+    text += fmt::format("  {} spring link(s) (bearings, hinges): largest force {:.6g}\n", springs,
+                        spring_force);
+  return text;
+}
+
+std::string monitor_lines(const results::RunSummary& run) {
+  std::string text;
+  for (const results::JointResult& joint : run.joints) {
+    const std::optional<double> margin = joint.margin();
+    text += fmt::format(
+        "  joint {}: opened {:.4g}, closed {:.4g}, moved {:.4g} on its seat{}\n", joint.monitor.id,
+        joint.peak.peak_opening, joint.peak.peak_closing, joint.peak.peak_seat_movement,
+        margin ? fmt::format(" (seat {:.4g}, margin {:.4g})", joint.monitor.seat_width, *margin)
+               : std::string());
+  }
+  for (const results::DriftResult& drift : run.drifts) {
+    const builder::DriftMonitor& m = drift.monitor;
+    const std::optional<double> ductility = drift.ductility();
+    text += fmt::format("  {} {}: peak drift {:.4g} ({:.3f} % of {:.4g}){}\n",
+                        m.kind == builder::DriftKind::pier ? "pier" : "storey", m.id,
+                        drift.peak.peak_drift, 100.0 * drift.peak.peak_drift / m.height, m.height,
+                        ductility ? fmt::format(", ductility {:.2f}", *ductility) : std::string());
+  }
+  return text;
+}
+
+}  // namespace
+
+std::string run_headline(const std::string& model_path, const results::RunSummary& run) {
+  return fmt::format("pound run {}: {} DOFs, {} steps, {} Newton iterations, {:.3f} s", model_path,
+                     run.dofs, run.statistics.steps, run.statistics.newton_iterations,
+                     run.run_time_s);
+}
+
+std::string run_report(const results::RunSummary& run) {
+  return link_lines(run) + monitor_lines(run);
+}
+
+std::string energy_line(const results::RunSummary& run) {
+  const results::EnergyTerms& e = run.energy;
+  return fmt::format(
+      "  energy: input {:.6g}, initial {:.6g}, kinetic {:.6g}, strain {:.6g}, "
+      "damping {:.6g}, links {:.6g}; balance error {:.2e}\n",
+      e.input, e.initial, e.kinetic, e.strain, e.damping, e.links, run.worst_balance_error);
+}
+
+}  // namespace pound::app

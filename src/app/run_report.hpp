@@ -1,0 +1,16 @@
+#pragma once
+// What `pound run` prints of a run: a headline (DOFs, steps, Newton iterations, run time), then a
+// line per contact and restrainer, one for all structural springs, a line per joint and per
+// drift monitor, and the energy balance.
+#include <string>
+
+#include "results/run_summary.hpp"
+
+namespace pound::app {
+
+std::string run_headline(const std::string& model_path, const results::RunSummary& run);
+// The lines of links, joints and drifts.
+std::string run_report(const results::RunSummary& run);
+std::string energy_line(const results::RunSummary& run);
+
+}  // namespace pound::app

@@ -1,0 +1,110 @@
+#include "io/run_summary_document.hpp"
+
+namespace pound::io {
+namespace {
+
+Document link_document(const results::LinkResult& link) {
+  const results::LinkSummary& s = link.summary;
+  Document doc;
+  doc.set("id", link.id)
+      .set("impacts", s.impacts)
+      .set("peak_force", s.peak_force)
+      .set("peak_tension", s.peak_tension)
+      .set("peak_penetration", s.peak_penetration)
+      .set("peak_opening", s.peak_opening)
+      .set("impulse", s.impulse)
+      .set("work", s.work);
+  if (s.first_contact >= 0.0)
+    doc.set("first_contact", s.first_contact).set("last_contact", s.last_contact);
+  return doc;
+}
+
+Document drift_document(const results::DriftResult& drift) {
+  const builder::DriftMonitor& m = drift.monitor;
+  Document doc;
+  doc.set("id", m.id)
+      .set(m.kind == builder::DriftKind::pier ? "bridge" : "building", m.group)
+      .set("height", m.height)
+      .set("peak_drift", drift.peak.peak_drift)
+      .set("drift_ratio", drift.ratio())
+      .set("time", drift.peak.time);
+  if (const std::optional<double> ductility = drift.ductility()) doc.set("ductility", *ductility);
+  return doc;
+}
+
+Document joint_document(const results::JointResult& joint) {
+  Document doc;
+  doc.set("id", joint.monitor.id)
+      .set("link", joint.link)
+      .set("peak_opening", joint.peak.peak_opening)
+      .set("peak_closing", joint.peak.peak_closing)
+      .set("peak_seat_movement", joint.peak.peak_seat_movement);
+  if (const std::optional<double> margin = joint.margin())
+    doc.set("seat_width", joint.monitor.seat_width)
+        .set("unseating_margin", *margin)
+        .set("unseated", joint.unseated());
+  return doc;
+}
+
+Document energy_document(const results::RunSummary& run) {
+  const results::EnergyTerms& e = run.energy;
+  return Document()
+      .set("input", e.input)
+      .set("initial", e.initial)
+      .set("kinetic", e.kinetic)
+      .set("strain", e.strain)
+      .set("damping", e.damping)
+      .set("links", e.links)
+      .set("balance_error", e.balance_error())
+      .set("worst_balance_error", run.worst_balance_error);
+}
+
+// The run's header: how it ended, with what, in how many steps.
+void set_status(const results::RunSummary& run, Document& summary) {
+  summary.set("status", run.status.completed() ? "completed" : "failed");
+  if (!run.status.completed())
+    summary.set("failure_time", run.status.end_time).set("failure", run.status.failure);
+  const integrators::TransientStatistics& stats = run.statistics;
+  summary.set("integrator", run.integrator)
+      .set("time_step", run.time_step)
+      .set("duration", run.duration)
+      .set("end_time", run.status.end_time)
+      .set("dofs", static_cast<long>(run.dofs))
+      .set("steps", stats.steps)
+      .set("newton_iterations", stats.newton_iterations)
+      .set("step_cuts", stats.step_cuts)
+      .set("max_unbalanced_force", stats.max_unbalanced_force)
+      .set("run_time_s", run.run_time_s);
+  if (run.adaptive)
+    summary.set("adaptive", Document()
+                                .set("tolerance", run.adaptive->tolerance)
+                                .set("rejected_steps", stats.rejected_steps)
+                                .set("located_contacts", stats.located_contacts)
+                                .set("smallest_step", stats.smallest_step)
+                                .set("largest_step", stats.largest_step));
+}
+
+}  // namespace
+
+Document to_document(const results::RunSummary& run, const std::string& model_path,
+                     const std::string& title) {
+  Document summary;
+  summary.set("model", model_path).set("title", title);
+  set_status(run, summary);
+  std::vector<Document> links, storeys, piers, joints, warnings;
+  for (const results::LinkResult& link : run.links) links.push_back(link_document(link));
+  summary.set("links", links);
+  for (const results::DriftResult& drift : run.drifts)
+    (drift.monitor.kind == builder::DriftKind::pier ? piers : storeys)
+        .push_back(drift_document(drift));
+  for (const results::JointResult& joint : run.joints) joints.push_back(joint_document(joint));
+  if (!storeys.empty()) summary.set("storeys", storeys);
+  if (!piers.empty()) summary.set("piers", piers);
+  if (!joints.empty()) summary.set("joints", joints);
+  summary.set("energy", energy_document(run));
+  for (const std::string& w : run.warnings) warnings.push_back(Document().set("warning", w));
+  summary.set("warnings", warnings);
+  return summary;
+}
+
+}  // namespace pound::io

@@ -1,0 +1,209 @@
+#include "results/run_summary.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/errors.hpp"
+
+namespace pound::results {
+namespace {
+
+std::vector<std::unique_ptr<Recorder>> make_recorders(const builder::BuiltModel& built,
+                                                      const model::DofMap& dofs,
+                                                      const integrators::LinkSet& links) {
+  std::vector<std::unique_ptr<Recorder>> recorders;
+  for (const builder::ResolvedRecorder& spec : built.recorders) {
+    std::vector<std::string> ids;
+    if (spec.kind == builder::RecorderKind::link) {
+      std::vector<LinkRows> rows;
+      for (Index link : spec.items) {
+        ids.push_back(built.model.links[static_cast<std::size_t>(link)].id);
+        rows.push_back({links.row(link), links.has_friction(link)});
+      }
+      recorders.push_back(std::make_unique<LinkRecorder>(spec.file, rows, ids));
+      continue;
+    }
+    std::vector<std::vector<Index>> equations;
+    for (Index node : spec.items) {
+      ids.push_back(built.model.nodes[static_cast<std::size_t>(node)].id);
+      std::vector<Index> per_direction;
+      for (int d = 0; d < dofs.dofs_per_node(); ++d)
+        per_direction.push_back(dofs.equation(node, d));
+      equations.push_back(std::move(per_direction));
+    }
+    recorders.push_back(std::make_unique<NodeRecorder>(spec.file, std::move(equations), ids));
+  }
+  return recorders;
+}
+
+std::vector<Index> normal_rows(const integrators::LinkSet& links) {
+  std::vector<Index> rows;
+  for (Index k = 0; k < links.count(); ++k) rows.push_back(links.row(k));
+  return rows;
+}
+
+std::vector<std::pair<Index, Index>> drift_equations(const builder::BuiltModel& built,
+                                                     const model::DofMap& dofs) {
+  std::vector<std::pair<Index, Index>> equations;
+  for (const builder::DriftMonitor& m : built.drift_monitors)
+    equations.emplace_back(dofs.equation(m.bottom, 0), dofs.equation(m.top, 0));
+  return equations;
+}
+
+std::vector<JointMonitors::Where> joint_places(const builder::BuiltModel& built,
+                                               const assembly::StructuralSystem& system) {
+  std::vector<JointMonitors::Where> places;
+  for (const builder::JointMonitor& m : built.joint_monitors)
+    places.push_back({system.links().row(m.link),
+                      built.model.links[static_cast<std::size_t>(m.link)].gap,
+                      system.dofs().equation(m.girder, 0), system.dofs().equation(m.seat, 0)});
+  return places;
+}
+
+// Warnings for results an engineer should not trust as they are.
+std::vector<std::string> result_warnings(const RunSummary& run) {
+  std::vector<std::string> warnings;
+  for (const JointResult& joint : run.joints)
+    if (joint.unseated())
+      warnings.push_back(
+          fmt::format("joint {}: the girder moved {:.4g} on a seat {:.4g} wide: unseated",
+                      joint.monitor.id, joint.peak.peak_seat_movement, joint.monitor.seat_width));
+  if (run.worst_balance_error > 0.01)
+    warnings.push_back(
+        fmt::format("energy balance error reached {:.2f} % of the largest energy "
+                    "term: a contact or a step was not resolved (reduce the time "
+                    "step)",
+                    100.0 * run.worst_balance_error));
+  return warnings;
+}
+
+}  // namespace
+
+RunObservers::RunObservers(const builder::BuiltModel& built,
+                           const assembly::StructuralSystem& system, bool histories)
+    // Without histories nothing is recorded, not just not written.
+    : recorders_(histories ? make_recorders(built, system.dofs(), system.links())
+                           : std::vector<std::unique_ptr<Recorder>>()),
+      links_(normal_rows(system.links())),
+      energy_(system),
+      drifts_(drift_equations(built, system.dofs())),
+      joints_(joint_places(built, system)) {}
+
+void RunObservers::record(const integrators::State& state) {
+  for (auto& recorder : recorders_) recorder->record(state);
+  links_.record(state);
+  energy_.record(state);
+  drifts_.record(state);
+  joints_.record(state);
+  for (Observer* observer : extra_) observer->record(state);
+  // Energy the integration made up: an unstable step or an unresolved stiff contact. The
+  // histories up to here are kept; the run stops rather than go on to a NaN.
+  const double created = energy_.terms().created_fraction();
+  if (created > kEnergyGrowthLimit)
+    throw SolveError(state.time,
+                     fmt::format("the structure holds {:.1f} % more energy than was put in (of the "
+                                 "largest energy term; limit {:.0f} %): the integration is "
+                                 "creating energy, so the time step is too large for the "
+                                 "integrator or for a stiff link",
+                                 100.0 * created, 100.0 * kEnergyGrowthLimit));
+}
+
+void check_histories_fit(const std::vector<std::unique_ptr<Recorder>>& recorders,
+                         const builder::AnalysisSpec& analysis,
+                         std::optional<std::size_t> available, const std::string& model_path) {
+  std::size_t columns = 0;
+  for (const auto& recorder : recorders) columns += recorder->table().columns.size();
+  if (columns == 0) return;
+  const double steps = std::ceil(analysis.duration / analysis.time_step) + 1.0;
+  const double needed = 3.0 * 8.0 * steps * static_cast<double>(columns);
+  constexpr double gib = 1024.0 * 1024.0 * 1024.0;
+  if (available && needed > static_cast<double>(*available))
+    throw InputError(
+        model_path, "/recorders",
+        fmt::format("recording {} columns over {:.0f} steps needs about {:.1f} GiB, "
+                    "more than the {:.1f} GiB of memory available: record fewer "
+                    "links or nodes, or a shorter duration",
+                    columns, steps, needed / gib, static_cast<double>(*available) / gib));
+}
+
+std::optional<double> DriftResult::ductility() const {
+  if (!monitor.yield_drift) return std::nullopt;
+  return peak.peak_drift / *monitor.yield_drift;
+}
+
+std::optional<double> JointResult::margin() const {
+  if (!(monitor.seat_width > 0.0)) return std::nullopt;
+  return monitor.seat_width - peak.peak_seat_movement;
+}
+
+RunSummary summarise_run(const builder::BuiltModel& built, const assembly::StructuralSystem& system,
+                         const RunObservers& observers, RunStatus status,
+                         const integrators::TransientStatistics& statistics,
+                         const std::string& integrator, double run_time) {
+  RunSummary run{
+      std::move(status), integrator, built.analysis.time_step, built.analysis.duration, run_time,
+      system.size(),     statistics, built.analysis.adaptive};
+  for (std::size_t k = 0; k < built.model.links.size(); ++k) {
+    const model::Link& link = built.model.links[k];
+    run.links.push_back({link.id, system.links().law(static_cast<Index>(k)).name(), link.role(),
+                         observers.links().summaries()[k]});
+  }
+  for (std::size_t k = 0; k < built.drift_monitors.size(); ++k)
+    run.drifts.push_back({built.drift_monitors[k], observers.drifts().peaks()[k]});
+  for (std::size_t k = 0; k < built.joint_monitors.size(); ++k) {
+    const builder::JointMonitor& m = built.joint_monitors[k];
+    run.joints.push_back(
+        {m, built.model.links[static_cast<std::size_t>(m.link)].id, observers.joints().peaks()[k]});
+  }
+  run.energy = observers.energy().terms();
+  run.worst_balance_error = observers.energy().worst_balance_error();
+  run.warnings = result_warnings(run);
+  return run;
+}
+
+void summarise_case(const RunSummary& run, CaseSummary& c) {
+  c.status = run.status.completed() ? "completed" : "failed";
+  c.reason = run.status.completed() ? std::string()
+                                    : fmt::format("analysis failed at t = {:.6g}: {}",
+                                                  run.status.end_time, run.status.failure);
+  c.end_time = run.status.end_time;
+  c.steps = static_cast<double>(run.statistics.steps);
+  for (const LinkResult& link : run.links) {
+    const LinkSummary& s = link.summary;
+    if (link.role == links::LinkRole::spring) continue;
+    if (link.role == links::LinkRole::tension) {
+      if (!c.max_restrainer_force || s.peak_tension > *c.max_restrainer_force) {
+        c.max_restrainer_force = s.peak_tension;
+        c.max_restrainer_link = link.id;
+      }
+      continue;
+    }
+    c.impacts = c.impacts.value_or(0.0) + s.impacts;
+    if (!c.max_pounding_force || s.peak_force > *c.max_pounding_force) {
+      c.max_pounding_force = s.peak_force;
+      c.max_pounding_link = link.id;
+    }
+  }
+  for (const JointResult& joint : run.joints) {
+    c.max_joint_opening = std::max(c.max_joint_opening.value_or(0.0), joint.peak.peak_opening);
+    c.max_seat_movement =
+        std::max(c.max_seat_movement.value_or(0.0), joint.peak.peak_seat_movement);
+    if (const std::optional<double> margin = joint.margin()) {
+      c.min_unseating_margin = std::min(
+          c.min_unseating_margin.value_or(std::numeric_limits<double>::infinity()), *margin);
+      c.unseated = c.unseated.value_or(false) || joint.unseated();
+    }
+  }
+  for (const DriftResult& drift : run.drifts) {
+    c.max_drift_ratio = std::max(c.max_drift_ratio.value_or(0.0), drift.ratio());
+    if (const std::optional<double> ductility = drift.ductility())
+      c.max_ductility = std::max(c.max_ductility.value_or(0.0), *ductility);
+  }
+  c.energy_balance_error = run.worst_balance_error;
+  c.run_time_s = run.run_time_s;
+}
+
+}  // namespace pound::results

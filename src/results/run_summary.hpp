@@ -1,0 +1,107 @@
+#pragma once
+// One run of a built model, watched and summed up: the observers every run has (its recorders,
+// when histories are kept, the link summaries, the energy balance, the drift and joint monitors)
+// and the pounding summary made of them, from which summary.json, the printed report and a batch
+// row are written.
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "builder/build.hpp"
+#include "integrators/transient_analysis.hpp"
+#include "results/case_summary.hpp"
+#include "results/energy_balance.hpp"
+#include "results/monitors.hpp"
+#include "results/recorders.hpp"
+
+namespace pound::results {
+
+class RunObservers {
+ public:
+  RunObservers(const builder::BuiltModel& built, const assembly::StructuralSystem& system,
+               bool histories);
+  // Every observer, then the check that the integration has not created energy: a run holding
+  // more than kEnergyGrowthLimit of its largest energy term beyond what was put in stops (a
+  // SolveError at the state's time) before it goes on to a NaN.
+  void record(const integrators::State& state);
+  // Further observers (verifications), told every step after the run's own.
+  void add(Observer& observer) { extra_.push_back(&observer); }
+
+  const std::vector<std::unique_ptr<Recorder>>& recorders() const { return recorders_; }
+  const LinkSummaries& links() const { return links_; }
+  const EnergyBalance& energy() const { return energy_; }
+  const DriftMonitors& drifts() const { return drifts_; }
+  const JointMonitors& joints() const { return joints_; }
+
+ private:
+  std::vector<std::unique_ptr<Recorder>> recorders_;
+  LinkSummaries links_;
+  EnergyBalance energy_;
+  DriftMonitors drifts_;
+  JointMonitors joints_;
+  std::vector<Observer*> extra_;
+};
+
+// The histories of `recorders` held until the run ends need about 3 x 8 bytes per value (tables
+// grow by doubling and are copied once for writing): refuse a run whose histories would not fit
+// in `available` bytes, before it starts.
+void check_histories_fit(const std::vector<std::unique_ptr<Recorder>>& recorders,
+                         const builder::AnalysisSpec& analysis,
+                         std::optional<std::size_t> available, const std::string& model_path);
+
+// How the run ended.
+struct RunStatus {
+  std::string failure;    // empty when completed
+  double end_time = 0.0;  // the last time reached (the failure's time when failed)
+  bool completed() const { return failure.empty(); }
+};
+
+struct LinkResult {
+  std::string id, law;
+  links::LinkRole role = links::LinkRole::contact;
+  LinkSummary summary;
+};
+
+struct DriftResult {
+  builder::DriftMonitor monitor;
+  DriftPeak peak;
+  double ratio() const { return peak.peak_drift / monitor.height; }
+  std::optional<double> ductility() const;
+};
+
+struct JointResult {
+  builder::JointMonitor monitor;
+  std::string link;  // id
+  JointPeak peak;
+  std::optional<double> margin() const;  // to unseating, with a seat width
+  bool unseated() const {
+    return monitor.seat_width > 0.0 && peak.peak_seat_movement >= monitor.seat_width;
+  }
+};
+
+// What a run found, quantity by quantity.
+struct RunSummary {
+  RunStatus status;
+  std::string integrator;
+  double time_step = 0.0, duration = 0.0, run_time_s = 0.0;
+  Index dofs = 0;
+  integrators::TransientStatistics statistics;
+  std::optional<integrators::AdaptiveStepping> adaptive;
+  std::vector<LinkResult> links;
+  std::vector<DriftResult> drifts;
+  std::vector<JointResult> joints;
+  EnergyTerms energy;
+  double worst_balance_error = 0.0;
+  std::vector<std::string> warnings;  // for results an engineer should not trust as they are
+};
+
+RunSummary summarise_run(const builder::BuiltModel& built, const assembly::StructuralSystem& system,
+                         const RunObservers& observers, RunStatus status,
+                         const integrators::TransientStatistics& statistics,
+                         const std::string& integrator, double run_time);
+
+// A batch row's responses (the case's name, record and intensity are the caller's).
+void summarise_case(const RunSummary& run, CaseSummary& row);
+
+}  // namespace pound::results

@@ -1,0 +1,116 @@
+#include "verification/model_check.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "assembly/modal_analysis.hpp"
+#include "integrators/central_difference.hpp"
+
+namespace pound::verification {
+namespace {
+
+// Kawashima's advice on a penalty spring's stiffness against the elements next to it.
+void warn_k_ratio(const LinkCheck& c, std::vector<std::string>& warnings) {
+  const double ratio = c.stiffness / c.adjacent;
+  if (ratio > 100.0)
+    warnings.push_back(
+        fmt::format("link {}: k-ratio {:.3g}: a link this stiff against its neighbours "
+                    "separates and recontacts inside the true contact with peaks many "
+                    "times the exact force (Kawashima); use k-ratio ~1 or the extended "
+                    "penalty",
+                    c.id, ratio));
+  if (ratio < 0.1)
+    warnings.push_back(
+        fmt::format("link {}: k-ratio {:.3g}: a link this soft lets the bodies "
+                    "overlap and holds contact far too long (Kawashima)",
+                    c.id, ratio));
+}
+
+// Whether the time step resolves the contact: Kawashima asks for 20 steps per contact.
+void warn_contact_steps(const LinkCheck& c, const builder::AnalysisSpec& analysis,
+                        std::vector<std::string>& warnings) {
+  if (c.contact_duration == 0.0 || analysis.time_step_auto) return;
+  if (analysis.time_step > 0.5 * c.contact_duration)
+    warnings.push_back(
+        fmt::format("link {}: the time step {:.4g} is more than half the contact "
+                    "duration {:.4g}: the impact is not resolved and the result is "
+                    "meaningless",
+                    c.id, analysis.time_step, c.contact_duration));
+  else if (analysis.time_step > c.contact_duration / 20.0)
+    warnings.push_back(
+        fmt::format("link {}: the time step {:.4g} gives fewer than 20 steps per "
+                    "contact ({:.4g}); Kawashima asks dt <= T_contact / 20",
+                    c.id, analysis.time_step, c.contact_duration));
+}
+
+LinkCheck check_contact(const model::Link& link, const links::LinkLaw& law,
+                        const assembly::StructuralSystem& system) {
+  const links::LawTraits traits = link.law ? link.law->traits : links::LawTraits{};
+  const links::LinkContext context = system.link_context(link);
+  LinkCheck c{link.id, law.name(), traits.stiff_at_first_touch};
+  const links::LawResponse touch = law.clone()->set_trial({1e-9, 1e-9, 0.0});
+  // Hertz-type laws stiffen with penetration: no stiffness or duration before the impact.
+  if (c.stiff_at_first_touch) c.stiffness = touch.stiffness;
+  const double k_i = context.fixed_i ? 0.0 : context.stiffness_i,
+               k_j = context.fixed_j ? 0.0 : context.stiffness_j;
+  c.adjacent = (k_i > 0.0 && k_j > 0.0) ? std::min(k_i, k_j) : std::max(k_i, k_j);
+  if (c.adjacent > 0.0) c.automatic = links::ExtendedPenalty::automatic(context, 1e-3, 1.0);
+  const double m_eff = context.effective_mass();
+  // When the link is much stiffer than what holds its nodes (or they are bare masses), a
+  // contact is the two end masses on the link: it lasts half a period of that pair. Against
+  // comparably stiff neighbours (a rod at k-ratio ~1) the contact lasts as long as the
+  // structure takes (a wave), so no duration is claimed.
+  const bool link_governs = c.adjacent == 0.0 || c.stiffness >= 10.0 * c.adjacent;
+  if (c.stiffness > 0.0 && m_eff > 0.0 && link_governs)
+    c.contact_duration = std::numbers::pi * std::sqrt(m_eff / c.stiffness);
+  return c;
+}
+
+void check_explicit_steps(const builder::AnalysisSpec& analysis, assembly::StructuralSystem& system,
+                          ModelCheck& check) {
+  const bool lumped = system.lumped_mass() && (system.lumped_mass()->array() > 0.0).all();
+  if (!lumped) return;
+  check.explicit_step_open = integrators::stable_time_step(system, false);
+  check.explicit_step_contact = integrators::stable_time_step(system, true);
+  if (analysis.integrator.is_explicit() && !analysis.time_step_auto &&
+      analysis.time_step > *check.explicit_step_contact)
+    check.warnings.push_back(
+        fmt::format("time step {:.4g} is above the explicit stable limit "
+                    "{:.4g}: the run will be refused",
+                    analysis.time_step, *check.explicit_step_contact));
+}
+
+}  // namespace
+
+ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSystem& system,
+                       bool with_periods) {
+  const builder::AnalysisSpec& analysis = built.analysis;
+  const integrators::LinkSet& links = system.links();
+  ModelCheck check{system.size(), system.dofs().dofs_per_node(), links.count()};
+  if (with_periods && system.size() <= 4000) check.periods = assembly::natural_periods(system, 6);
+  check_explicit_steps(analysis, system, check);
+  for (Index k = 0; k < links.count(); ++k) {
+    const model::Link& link = built.model.links[static_cast<std::size_t>(k)];
+    if (link.role() != links::LinkRole::contact) continue;
+    const LinkCheck c = check_contact(link, links.law(k), system);
+    // A penalty spring without the extended penalty's mass: Kawashima's advice.
+    const bool plain_penalty = link.law && link.law->traits.penalty &&
+                               links.law(k).clone()->set_trial({1e-9, 1e-9, 0.0}).mass == 0.0;
+    if (c.adjacent > 0.0 && c.stiff_at_first_touch && plain_penalty)
+      warn_k_ratio(c, check.warnings);
+    warn_contact_steps(c, analysis, check.warnings);
+    check.contacts.push_back(c);
+  }
+  if (!check.periods.empty() && !analysis.time_step_auto &&
+      analysis.time_step > check.periods.back() / 10.0)
+    check.warnings.push_back(
+        fmt::format("the time step {:.4g} resolves the {}th period {:.4g} "
+                    "with fewer than 10 steps",
+                    analysis.time_step, check.periods.size(), check.periods.back()));
+  return check;
+}
+
+}  // namespace pound::verification

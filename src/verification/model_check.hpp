@@ -1,0 +1,43 @@
+#pragma once
+// What `pound check` finds before a run, and `pound run` warns about too: the model's size and
+// first periods, the stable step of explicit central difference with the contacts open and in
+// contact, and for every contact link its stiffness against the elements next to it
+// (Kawashima's k-ratio), Suzuki & Toi's automatic penalty numbers and the expected contact
+// duration against the time step (Kawashima: dt <= T_contact / 20). Every setting the benchmarks
+// show to give meaningless results is a warning.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "assembly/structural_system.hpp"
+#include "builder/build.hpp"
+#include "links/extended_penalty.hpp"
+
+namespace pound::verification {
+
+struct LinkCheck {
+  std::string id, law;
+  bool stiff_at_first_touch = true;  // else its stiffness grows from 0 (Hertz-type)
+  double stiffness = 0.0;            // at first touch
+  double adjacent = 0.0;             // of the softer element next to it; 0: bare masses
+  double contact_duration = 0.0;     // when the link governs it; 0: not claimed
+  std::optional<links::ExtendedPenalty::Numbers> automatic;  // with an adjacent stiffness
+};
+
+struct ModelCheck {
+  Index dofs = 0;
+  int dofs_per_node = 0;
+  Index links = 0;
+  std::vector<double> periods;  // the first six; none above 4000 DOFs or when not asked
+  // Central difference's stable step; none without a lumped mass on every DOF.
+  std::optional<double> explicit_step_open, explicit_step_contact;
+  std::vector<LinkCheck> contacts;
+  std::vector<std::string> warnings;
+};
+
+// `with_periods`: the natural periods (a dense eigen-solution, up to 4000 DOFs) and the warning
+// on the step against the sixth; `run` leaves them out.
+ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSystem& system,
+                       bool with_periods);
+
+}  // namespace pound::verification
