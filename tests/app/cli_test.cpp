@@ -370,6 +370,13 @@ TEST_F(Cli, CheckWarnsAboutMeaninglessSettingsOnly) {
   EXPECT_TRUE(contains(all, "meaningless")) << all;
   EXPECT_GT(findings["explicit_stable_step_open"].get<double>(),
             findings["explicit_stable_step_contact"].get<double>());
+  // `pound run` gives the same warnings, printed and in summary.json.
+  const Outcome run = pound({"run", file.string(), "--out", path("stiff").string(), "--quiet"});
+  EXPECT_TRUE(contains(run.err, "warning: link joint: k-ratio")) << run.err;
+  const json summary = json::parse(read_text(path("stiff") / "summary.json"));
+  std::string ran;
+  for (const json& w : summary["warnings"]) ran += w["warning"].get<std::string>() + "\n";
+  EXPECT_TRUE(contains(ran, all)) << ran;
 }
 
 }  // namespace
