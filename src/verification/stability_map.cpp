@@ -36,20 +36,20 @@ std::vector<StabilityCell> stability_map(const StabilityOptions& options) {
             cell.energy_ratio = m.energy_ratio;
             const bool finite = std::isfinite(m.force_l2_error) && std::isfinite(m.energy_ratio);
             if (!finite || m.energy_ratio > 1.1) {
-              cell.verdict = "unstable";
+              cell.verdict = StabilityVerdict::unstable;
               cell.note =
                   finite ? fmt::format("energy grew to {:.3g} x", m.energy_ratio) : "not finite";
             } else if (std::abs(m.duration_error) <= 0.05 &&
                        std::abs(m.separation_velocity_error) <= 0.05 && m.force_l2_error <= 0.1) {
-              cell.verdict = "accurate";
+              cell.verdict = StabilityVerdict::accurate;
             } else {
-              cell.verdict = "inaccurate";
+              cell.verdict = StabilityVerdict::inaccurate;
             }
           } catch (const InputError& error) {
-            cell.verdict = "refused";
+            cell.verdict = StabilityVerdict::refused;
             cell.note = error.reason();
           } catch (const SolveError& error) {
-            cell.verdict = "unstable";
+            cell.verdict = StabilityVerdict::unstable;
             cell.note = error.what();
           }
           cells.push_back(std::move(cell));
@@ -57,10 +57,26 @@ std::vector<StabilityCell> stability_map(const StabilityOptions& options) {
   return cells;
 }
 
+const char* verdict_name(StabilityVerdict verdict) {
+  switch (verdict) {
+    case StabilityVerdict::accurate:
+      return "accurate";
+    case StabilityVerdict::inaccurate:
+      return "inaccurate";
+    case StabilityVerdict::unstable:
+      return "unstable";
+    case StabilityVerdict::refused:
+      return "refused";
+  }
+  return "";
+}
+
 std::string format_stability_map(const std::vector<StabilityCell>& cells) {
   // One grid per integrator and law: rows stiffness ratio, columns dt / T.
-  static const std::map<std::string, char> symbol = {
-      {"accurate", 'A'}, {"inaccurate", 'i'}, {"unstable", 'X'}, {"refused", 'r'}};
+  static const std::map<StabilityVerdict, char> symbol = {{StabilityVerdict::accurate, 'A'},
+                                                          {StabilityVerdict::inaccurate, 'i'},
+                                                          {StabilityVerdict::unstable, 'X'},
+                                                          {StabilityVerdict::refused, 'r'}};
   std::string text =
       "A accurate, i inaccurate, X unstable (NaN/Inf or energy growth > 10 %), r refused before "
       "running\n";
@@ -94,8 +110,9 @@ io::TextTable stability_table(const std::vector<StabilityCell>& cells) {
     std::string note = c.note;
     std::replace(note.begin(), note.end(), ',', ';');
     table.rows.push_back({c.integrator, c.law, number(c.stiffness_ratio), number(c.step_ratio),
-                          c.verdict, number(c.force_l2_error), number(c.duration_error),
-                          number(c.separation_velocity_error), number(c.energy_ratio), note});
+                          verdict_name(c.verdict), number(c.force_l2_error),
+                          number(c.duration_error), number(c.separation_velocity_error),
+                          number(c.energy_ratio), note});
   }
   return table;
 }

@@ -17,10 +17,14 @@
 
 namespace pound::verification {
 
+enum class StabilityVerdict { accurate, inaccurate, unstable, refused };
+// "accurate", ... as tables write it.
+const char* verdict_name(StabilityVerdict verdict);
+
 struct StabilityCell {
   std::string integrator, law;
   double stiffness_ratio = 0.0, step_ratio = 0.0;
-  std::string verdict;  // "accurate" | "inaccurate" | "unstable" | "refused"
+  StabilityVerdict verdict = StabilityVerdict::accurate;
   double force_l2_error = 0.0, duration_error = 0.0, separation_velocity_error = 0.0,
          energy_ratio = 0.0;
   std::string note;

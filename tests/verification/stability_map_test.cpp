@@ -23,17 +23,17 @@ TEST(StabilityMap, ClassificationsOnAReducedGrid) {
                               std::to_string(c.step_ratio);
     if (c.integrator == "central_difference") {
       // Either refused up front or a finite run: never a blow-up.
-      EXPECT_NE(c.verdict, "unstable") << where << ": " << c.note;
+      EXPECT_NE(c.verdict, StabilityVerdict::unstable) << where << ": " << c.note;
       if (c.step_ratio == 0.1) {
-        EXPECT_EQ(c.verdict, "refused") << where;
+        EXPECT_EQ(c.verdict, StabilityVerdict::refused) << where;
       }
     } else {
-      EXPECT_NE(c.verdict, "refused") << where;
+      EXPECT_NE(c.verdict, StabilityVerdict::refused) << where;
       EXPECT_NE(c.note, "not finite") << where;
       EXPECT_EQ(c.note.find("analysis failed"), std::string::npos) << where << ": " << c.note;
     }
     if (c.law == "extended_penalty" && c.step_ratio == 1e-3) {
-      EXPECT_EQ(c.verdict, "accurate") << where;
+      EXPECT_EQ(c.verdict, StabilityVerdict::accurate) << where;
     }
   }
 }
