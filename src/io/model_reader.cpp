@@ -25,7 +25,9 @@ using builder::LawSpec;
 
 Minimum lower_bound(links::LawParameter::Range range) {
   using Range = links::LawParameter::Range;
-  return range == Range::positive || range == Range::restitution ? positive : non_negative;
+  return range == Range::positive || range == Range::restitution || range == Range::unit
+             ? positive
+             : non_negative;
 }
 
 std::string quoted_list(const std::vector<std::string>& names) {
@@ -50,6 +52,8 @@ LawSpec read_law(JsonObject& object, LawPlace place) {
       value->fail(fmt::format("must be <= 1 (a coefficient of restitution), got {}", number));
     if (parameter.range == Range::fraction && number >= 1.0)
       value->fail(fmt::format("must be < 1, got {}", number));
+    if (parameter.range == Range::unit && number > 1.0)
+      value->fail(fmt::format("must be <= 1, got {}", number));
     if (parameter.generator_only && place == LawPlace::link)
       value->fail("only allowed inside a rod_pair generator");
     law.parameters[parameter.name] = number;

@@ -48,6 +48,8 @@ std::string range_text(links::LawParameter::Range range) {
       return "in (0, 1]";
     case Range::fraction:
       return "in [0, 1)";
+    case Range::unit:
+      return "in (0, 1]";
   }
   return "";
 }
@@ -71,6 +73,15 @@ std::string rules_text(const links::LawEntry& law) {
   std::string text;
   for (const std::string& rule : rules) text += (text.empty() ? "" : "; ") + rule;
   return text;
+}
+
+// The law's example as a model file writes it: {"type": "hertz", "stiffness": 4e+10}.
+std::string example_text(const links::LawEntry& law) {
+  std::string text = fmt::format("{{\"type\": \"{}\"", law.name);
+  for (const links::LawParameter& p : law.parameters)
+    if (auto found = law.example.find(p.name); found != law.example.end())
+      text += fmt::format(", \"{}\": {:g}", p.name, found->second);
+  return text + "}";
 }
 
 std::string law_table() {
@@ -99,6 +110,7 @@ std::string law_parameter_tables() {
       text += fmt::format("{}.\n\n", rules);
     }
     text += markdown_table({"parameter", "value", "units", "meaning"}, rows);
+    text += fmt::format("\nFor example `{}`.\n", example_text(*law));
   }
   return text;
 }

@@ -68,6 +68,9 @@ const LawEntry& Backfill::entry() {
                       "δ_ult at which F_ult is reached, > F_ult / K_max"}},
       .required = {"initial_stiffness", "ultimate_force", "ultimate_deformation"},
       .traits = {.penalty = false},
+      .example = {{"initial_stiffness", 2.87e7},
+                  {"ultimate_force", 4.06e5},
+                  {"ultimate_deformation", 0.085}},
       .make = [](const LawSpec& law, const LawSource& where) -> LawFactory {
         const double k = *law.number("initial_stiffness");
         const double ultimate_force = *law.number("ultimate_force");

@@ -106,6 +106,7 @@ const LawEntry& BilinearImpact::entry() {
       .needs = {{"restitution", {"stiffness"}}, {"k1", {"k2", "yield_penetration"}}},
       .excludes = {{"k1", {"stiffness", "yield_fraction", "mass"}}},
       .traits = {.stiff_at_first_touch = false, .uses_approach_velocity = true},
+      .example = {{"stiffness", 4e10}, {"restitution", 0.6}},
       .make = [](const LawSpec& law, const LawSource& where) -> LawFactory {
         if (law.number("k1")) {
           const Loop loop{*law.number("k1"), *law.number("k2"), *law.number("yield_penetration")};

@@ -53,6 +53,7 @@ const LawEntry& BilinearSpring::entry() {
                       "b, post-yield stiffness / k, 0 <= b < 1 (default 0)"}},
       .required = {"stiffness", "yield_force"},
       .traits = {.role = LinkRole::spring, .penalty = false},
+      .example = {{"stiffness", 2e7}, {"yield_force", 1e5}, {"hardening_ratio", 0.05}},
       .make = [](const LawSpec& law, const LawSource&) -> LawFactory {
         const double k = *law.number("stiffness"), yield = *law.number("yield_force");
         const double hardening = law.number("hardening_ratio").value_or(0.0);

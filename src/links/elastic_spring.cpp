@@ -17,6 +17,7 @@ const LawEntry& ElasticSpring::entry() {
       .parameters = {{"stiffness", LawParameter::Range::positive, "F/L", "k"}},
       .required = {"stiffness"},
       .traits = {.role = LinkRole::spring, .penalty = false},
+      .example = {{"stiffness", 2e7}},
       .make = [](const LawSpec& law, const LawSource&) -> LawFactory {
         const double k = *law.number("stiffness");
         return [k](const LinkContext&) { return std::make_unique<ElasticSpring>(k); };

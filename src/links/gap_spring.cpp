@@ -27,6 +27,7 @@ const LawEntry& GapSpring::entry() {
                                              {"stiffness_ratio", Range::positive, "-",
                                               "k over E·A/h of the softer adjacent element", true}},
                               .exactly_one_of = {{"stiffness", "stiffness_ratio"}},
+                              .example = {{"stiffness", 1e9}},
                               .make = [](const LawSpec& law, const LawSource&) -> LawFactory {
                                 const double k = *law.number("stiffness");
                                 return [k](const LinkContext&) {

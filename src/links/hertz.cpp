@@ -21,6 +21,7 @@ const LawEntry& Hertz::entry() {
       .parameters = {{"stiffness", LawParameter::Range::positive, "F/L^1.5", "k_h"}},
       .required = {"stiffness"},
       .traits = {.stiff_at_first_touch = false},
+      .example = {{"stiffness", 4e10}},
       .make = [](const LawSpec& law, const LawSource&) -> LawFactory {
         const double k = *law.number("stiffness");
         return [k](const LinkContext&) { return std::make_unique<Hertz>(k); };

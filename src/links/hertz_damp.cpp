@@ -42,6 +42,7 @@ const LawEntry& HertzDamp::entry() {
       .required = {"stiffness"},
       .exactly_one_of = {{"damping_ratio", "restitution"}},
       .traits = {.stiff_at_first_touch = false, .uses_approach_velocity = true},
+      .example = {{"stiffness", 4e10}, {"restitution", 0.6}},
       .calibration = RestitutionCalibration{.unit_law =
                                                 [](double ratio, const LawSpec&) {
                                                   return std::make_unique<HertzDamp>(1.0, ratio);

@@ -43,6 +43,7 @@ const LawEntry& Jankowski::entry() {
       .required = {"stiffness"},
       .exactly_one_of = {{"damping_ratio", "restitution"}},
       .traits = {.stiff_at_first_touch = false},
+      .example = {{"stiffness", 4e10}, {"restitution", 0.6}},
       .calibration = RestitutionCalibration{.unit_law =
                                                 [](double ratio, const LawSpec&) {
                                                   return std::make_unique<Jankowski>(1.0, ratio,

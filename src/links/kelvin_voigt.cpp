@@ -38,6 +38,7 @@ const LawEntry& KelvinVoigt::entry() {
       .required = {"stiffness"},
       .exactly_one_of = {{"damping", "restitution"}},
       .excludes = {{"damping", {"mass"}}},
+      .example = {{"stiffness", 1e9}, {"restitution", 0.6}},
       .calibration = RestitutionCalibration{.unit_law =
                                                 [](double ratio, const LawSpec& law) {
                                                   return std::make_unique<KelvinVoigt>(

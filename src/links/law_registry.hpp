@@ -44,7 +44,7 @@ using LawFactory = std::function<std::unique_ptr<LinkLaw>(const LinkContext&)>;
 enum class LinkRole {
   contact,  // pounding: impacts, peak force, penetration
   tension,  // restrainers and hooks: taut, peak tension, opening
-  spring,   // structural springs (bearings, hinges): force and deformation both ways
+  spring,   // structural springs and dampers (bearings, hinges): force both ways
 };
 
 struct LawTraits {
@@ -61,7 +61,8 @@ struct LawTraits {
 };
 
 struct LawParameter {
-  enum class Range { positive, non_negative, restitution, fraction };  // >0, >=0, (0,1], [0,1)
+  // > 0, >= 0, (0, 1] for a coefficient of restitution, [0, 1), (0, 1]
+  enum class Range { positive, non_negative, restitution, fraction, unit };
   std::string name;
   Range range;
   std::string units;            // "F/L", "-": in the model's units
@@ -97,6 +98,8 @@ struct LawEntry {
   std::map<std::string, std::vector<std::string>> needs;
   std::map<std::string, std::vector<std::string>> excludes;
   LawTraits traits;
+  // A typical, valid set of its numbers (SI units, bridge scale), for the docs and the tests.
+  std::map<std::string, double> example;
   std::optional<RestitutionCalibration> calibration;
   // The factory of a law object, its parameters already checked by the reader; `where` locates
   // it for errors the combination of numbers or the model reveals.

@@ -71,6 +71,7 @@ const LawEntry& Restrainer::restrainer_entry() {
       .required = {"stiffness"},
       .needs = {{"hardening_ratio", {"yield_force"}}},
       .traits = {.role = LinkRole::tension, .penalty = false},
+      .example = {{"stiffness", 5e7}, {"slack", 0.02}, {"yield_force", 1e6}},
       .make = [](const LawSpec& law, const LawSource&) { return make_restrainer(law); }};
   return entry;
 }
@@ -85,6 +86,7 @@ const LawEntry& Restrainer::hook_entry() {
                      {"slack", Range::non_negative, "L", "(default 0)"}},
       .required = {"stiffness"},
       .traits = {.role = LinkRole::tension, .penalty = false},
+      .example = {{"stiffness", 5e7}, {"slack", 0.02}},
       .make = [](const LawSpec& law, const LawSource&) { return make_restrainer(law); }};
   return entry;
 }

@@ -10,6 +10,8 @@
 
 #include "core/errors.hpp"
 #include "io/json_reader.hpp"
+#include "io/model_schema.hpp"
+#include "links/law_registry.hpp"
 
 namespace pound::io {
 namespace {
@@ -699,6 +701,17 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"recorder_node_is_number", replaced("/recorders/1/nodes/0", "1"),
                 "/recorders/1/nodes/0", "expected a string, got a number"}),
     case_name);
+
+// Each law's example (what docs/laws.md shows) is a law object the reader accepts as it is.
+TEST(ModelReader, EveryLawsExampleReads) {
+  for (const links::LawEntry* law : links::law_registry()) {
+    nlohmann::json object{{"type", law->name}};
+    for (const auto& [name, value] : law->example) object[name] = value;
+    const builder::LawSpec read =
+        read_law_in(JsonValue(object, "x.json", "/links/0/law"), LawPlace::link);
+    EXPECT_EQ(read.parameters, law->example) << law->name;
+  }
+}
 
 }  // namespace
 }  // namespace pound::io
