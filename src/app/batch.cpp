@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "app/model_run.hpp"
@@ -82,6 +83,21 @@ struct CaseResult {
   double write_s = 0.0;   // writing its folder
 };
 
+// A case whose model or record cannot be read fails alone: an outcome saying why.
+RunOutcome run_or_report_input_error(const RunRequest& request) {
+  try {
+    return run_model(request);
+  } catch (const InputError& error) {
+    RunOutcome outcome;
+    outcome.case_summary.status = "input_error";
+    outcome.case_summary.reason = one_line(error.what());
+    outcome.summary.set("model", request.model_path)
+        .set("status", "input_error")
+        .set("failure", outcome.case_summary.reason);
+    return outcome;
+  }
+}
+
 // Runs one case into <out>/.partial, then moves it into place.
 CaseResult run_case(const builder::SetSpec& set, const builder::BatchCase& c,
                     const std::string& out, int rank) {
@@ -92,17 +108,7 @@ CaseResult run_case(const builder::SetSpec& set, const builder::BatchCase& c,
   request.record->extra_factor = c.scale;
   request.intensity = set.intensity;
   request.histories = set.histories;
-  RunOutcome outcome;
-  try {
-    outcome = run_model(request);
-  } catch (const InputError& error) {
-    outcome = RunOutcome();
-    outcome.case_summary.status = "input_error";
-    outcome.case_summary.reason = one_line(error.what());
-    outcome.summary.set("model", request.model_path)
-        .set("status", "input_error")
-        .set("failure", outcome.case_summary.reason);
-  }
+  RunOutcome outcome = run_or_report_input_error(request);
   results::CaseSummary& summary = outcome.case_summary;
   summary.name = c.name;
   summary.model = set.models[c.model].id;
@@ -133,76 +139,78 @@ CaseResult run_case(const builder::SetSpec& set, const builder::BatchCase& c,
   return result;
 }
 
-}  // namespace
+std::string plan_path(const std::string& out) {
+  return (fs::path(out) / "batch_plan.json").string();
+}
 
-BatchReport run_batch(const BatchOptions& options, const Cluster& cluster) {
-  // Everything wrong with the set or its models is found before anything is written.
-  const builder::SetSpec set = io::read_set_file(options.set_path);
-  for (const builder::BatchModel& model : set.models) (void)io::read_model_file(model.path);
-  const std::vector<builder::BatchCase> cases = builder::plan_cases(set);
-  const std::string plan = plan_text(set, cases);
-  const std::string out = options.out;
-  const std::string plan_path = (fs::path(out) / "batch_plan.json").string();
-
-  if (io::is_file(plan_path)) {
+// Checks that `out` can take this batch: empty or missing, or, with --resume, holding the same
+// batch (its plan unchanged).
+void check_out_folder(const BatchOptions& options, const std::string& plan) {
+  const std::string& out = options.out;
+  const std::string plan_file = plan_path(out);
+  if (io::is_file(plan_file)) {
     if (!options.resume)
       throw InputError(out, "",
                        "holds a batch already: add --resume to finish it, or choose another --out");
-    if (io::read_text_file(plan_path) != plan)
-      throw InputError(plan_path, "",
+    if (io::read_text_file(plan_file) != plan)
+      throw InputError(plan_file, "",
                        fmt::format("the cases of {} are not those of the batch in {} (the set, a "
                                    "record or a path changed): use another --out",
                                    options.set_path, out));
   } else if (!io::is_empty_or_missing_folder(out)) {
     throw InputError(out, "", "exists and is not a batch folder: choose another --out");
   }
+}
+
+void open_out_folder(const BatchOptions& options, const std::string& plan, const Cluster& cluster) {
+  const std::string& out = options.out;
+  check_out_folder(options, plan);
   cluster.barrier();  // every rank has checked before rank 0 writes
   if (cluster.is_root()) {
     io::create_output_folder(out);
     io::remove_folder((fs::path(out) / ".partial").string());  // cases a killed run left unfinished
-    io::write_text_atomic(plan_path, plan);
+    io::write_text_atomic(plan_path(out), plan);
   }
   cluster.barrier();
+}
 
-  // Complete cases (a whole folder with its row) are kept; the rest run, shared out over ranks.
-  std::map<std::size_t, std::string> rows;
-  std::vector<const builder::BatchCase*> pending;
-  for (const builder::BatchCase& c : cases) {
-    const std::string row_file = (fs::path(out) / c.name / "case.csv").string();
-    std::string row;
-    bool complete = false;
-    if (options.resume && io::is_file(row_file)) {
-      try {
-        const results::CaseSummary summary = io::read_case_file(row_file, row);
-        complete = summary.name == c.name;
-      } catch (const InputError&) {
-        complete = false;  // damaged: run it again
-      }
-    }
-    if (complete)
-      rows[c.index] = row;
-    else
-      pending.push_back(&c);
+// The row of a case an earlier run completed, if there is one.
+std::optional<std::string> completed_row(const builder::BatchCase& c, const std::string& out) {
+  const std::string row_file = (fs::path(out) / c.name / "case.csv").string();
+  if (!io::is_file(row_file)) return std::nullopt;
+  std::string row;
+  try {
+    if (io::read_case_file(row_file, row).name == c.name) return row;
+  } catch (const InputError&) {
+    // damaged: run it again
   }
-  cluster.barrier();  // every rank has looked before any case is rewritten
+  return std::nullopt;
+}
+
+// This rank's share of the cases still to run.
+std::vector<const builder::BatchCase*> rank_share(
+    const std::vector<const builder::BatchCase*>& pending, const Cluster& cluster) {
   std::vector<const builder::BatchCase*> mine;
   for (std::size_t k = 0; k < pending.size(); ++k)
     if (static_cast<int>(k % static_cast<std::size_t>(cluster.size())) == cluster.rank())
       mine.push_back(pending[k]);
+  return mine;
+}
 
-  BatchReport report;
-  report.cases = cases.size();
-  report.resumed = rows.size();
-  report.ranks = cluster.size();
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  report.jobs = options.jobs > 0 ? options.jobs : cluster.size() > 1 ? 1 : static_cast<int>(cores);
-  const int workers = std::max(1, std::min(report.jobs, static_cast<int>(mine.size())));
+// What this rank's workers did.
+struct RankRun {
+  std::vector<CaseResult> results;
+  std::string fatal;  // why the workers stopped taking cases, if they did
+  double wall_s = 0.0;
+};
 
+// Runs `mine` on `workers` threads, reporting each case to `progress`.
+RankRun run_cases(const builder::SetSpec& set, const std::vector<const builder::BatchCase*>& mine,
+                  const BatchOptions& options, int rank, int workers) {
+  RankRun run;
   std::atomic<std::size_t> next{0};
   std::atomic<bool> stop{false};
   std::mutex mutex;  // guards what follows
-  std::vector<CaseResult> results;
-  std::string fatal;
   BatchProgress progress;
   progress.total = mine.size();
   const Clock::time_point started = Clock::now();
@@ -211,18 +219,18 @@ BatchReport run_batch(const BatchOptions& options, const Cluster& cluster) {
       const std::size_t k = next++;
       if (k >= mine.size()) return;
       try {
-        CaseResult result = run_case(set, *mine[k], out, cluster.rank());
+        CaseResult result = run_case(set, *mine[k], options.out, rank);
         const std::lock_guard lock(mutex);
-        results.push_back(std::move(result));
+        run.results.push_back(std::move(result));
         ++progress.done;
-        progress.failed += results.back().summary.status != "completed";
+        progress.failed += run.results.back().summary.status != "completed";
         progress.elapsed_s = seconds_since(started);
-        progress.last = &results.back().summary;
+        progress.last = &run.results.back().summary;
         if (options.progress) options.progress(progress);
       } catch (const std::exception& error) {
         // Results cannot be written (disk full, permissions): stop taking cases.
         const std::lock_guard lock(mutex);
-        if (fatal.empty()) fatal = fmt::format("case {}: {}", mine[k]->name, error.what());
+        if (run.fatal.empty()) run.fatal = fmt::format("case {}: {}", mine[k]->name, error.what());
         stop = true;
       }
     }
@@ -232,29 +240,41 @@ BatchReport run_batch(const BatchOptions& options, const Cluster& cluster) {
     for (int w = 1; w < workers; ++w) pool.emplace_back(work);
     work();
   }
-  report.wall_s = seconds_since(started);
+  run.wall_s = seconds_since(started);
+  return run;
+}
 
-  // Rank 0 gathers every rank's rows and timings.
+// This rank's rows ("R<index>\t<row>"), totals ("T<cases>\t<worker_s>\t<solve_s>\t<setup_s>\t
+// <write_s>\t<wall_s>") and failure ("F<message>"), as rank 0 gathers them.
+std::vector<std::string> rank_messages(const RankRun& run) {
   std::vector<std::string> messages;
   double worker_s = 0.0, solve_s = 0.0, setup_s = 0.0, write_s = 0.0;
-  for (const CaseResult& r : results) {
+  for (const CaseResult& r : run.results) {
     messages.push_back(fmt::format("R{}\t{}", r.index, r.row));
     worker_s += r.worker_s;
     solve_s += r.summary.run_time_s.value_or(0.0);
     setup_s += r.setup_s;
     write_s += r.write_s;
   }
-  messages.push_back(fmt::format("T{}\t{}\t{}\t{}\t{}\t{}", results.size(), worker_s, solve_s,
-                                 setup_s, write_s, report.wall_s));
-  if (!fatal.empty()) messages.push_back("F" + one_line(fatal));
-  const std::vector<std::string> gathered = cluster.gather(messages);
-  if (cluster.any(!fatal.empty())) {
-    if (!cluster.is_root()) throw io::OutputError(fatal.empty() ? "another rank failed" : fatal);
-    for (const std::string& m : gathered)
-      if (m.front() == 'F') throw io::OutputError(m.substr(1));
-  }
-  if (!cluster.is_root()) return report;
+  messages.push_back(fmt::format("T{}\t{}\t{}\t{}\t{}\t{}", run.results.size(), worker_s, solve_s,
+                                 setup_s, write_s, run.wall_s));
+  if (!run.fatal.empty()) messages.push_back("F" + one_line(run.fatal));
+  return messages;
+}
 
+// On every rank: throws the first failure of any rank (rank 0 names it, the others may not know
+// it).
+void throw_if_a_rank_failed(const Cluster& cluster, const std::string& fatal,
+                            const std::vector<std::string>& gathered) {
+  if (!cluster.any(!fatal.empty())) return;
+  if (!cluster.is_root()) throw io::OutputError(fatal.empty() ? "another rank failed" : fatal);
+  for (const std::string& m : gathered)
+    if (m.front() == 'F') throw io::OutputError(m.substr(1));
+}
+
+// Rank 0: every rank's rows into `rows`, their counts and times into the report.
+void read_messages(const std::vector<std::string>& gathered,
+                   std::map<std::size_t, std::string>& rows, BatchReport& report) {
   for (const std::string& m : gathered) {
     const std::size_t tab = m.find('\t');
     if (m.front() == 'R') {
@@ -271,6 +291,13 @@ BatchReport run_batch(const BatchOptions& options, const Cluster& cluster) {
       report.wall_s = std::max(report.wall_s, wall);
     }
   }
+}
+
+// Rank 0: batch_summary.csv (the rows in plan order) and batch_stats.json, and the counts and
+// statistics of the report.
+void write_batch_results(const builder::SetSpec& set, const std::vector<builder::BatchCase>& cases,
+                         const std::map<std::size_t, std::string>& rows, const std::string& out,
+                         BatchReport& report) {
   if (rows.size() != cases.size())
     throw std::logic_error(fmt::format("batch: {} rows for {} cases", rows.size(), cases.size()));
   std::string csv = io::case_row_header() + "\n";
@@ -285,6 +312,47 @@ BatchReport run_batch(const BatchOptions& options, const Cluster& cluster) {
   io::write_text_atomic((fs::path(out) / "batch_summary.csv").string(), csv);
   io::write_text_atomic((fs::path(out) / "batch_stats.json").string(),
                         io::to_document(report.statistics, set).dump() + "\n");
+}
+
+}  // namespace
+
+BatchReport run_batch(const BatchOptions& options, const Cluster& cluster) {
+  // Everything wrong with the set or its models is found before anything is written.
+  const builder::SetSpec set = io::read_set_file(options.set_path);
+  for (const builder::BatchModel& model : set.models) (void)io::read_model_file(model.path);
+  const std::vector<builder::BatchCase> cases = builder::plan_cases(set);
+  open_out_folder(options, plan_text(set, cases), cluster);
+
+  // Complete cases (a whole folder with its row) are kept; the rest run, shared out over ranks.
+  std::map<std::size_t, std::string> rows;
+  std::vector<const builder::BatchCase*> pending;
+  for (const builder::BatchCase& c : cases) {
+    const std::optional<std::string> row =
+        options.resume ? completed_row(c, options.out) : std::nullopt;
+    if (row)
+      rows[c.index] = *row;
+    else
+      pending.push_back(&c);
+  }
+  cluster.barrier();  // every rank has looked before any case is rewritten
+  const std::vector<const builder::BatchCase*> mine = rank_share(pending, cluster);
+
+  BatchReport report;
+  report.cases = cases.size();
+  report.resumed = rows.size();
+  report.ranks = cluster.size();
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  report.jobs = options.jobs > 0 ? options.jobs : cluster.size() > 1 ? 1 : static_cast<int>(cores);
+  const int workers = std::max(1, std::min(report.jobs, static_cast<int>(mine.size())));
+  const RankRun run = run_cases(set, mine, options, cluster.rank(), workers);
+  report.wall_s = run.wall_s;
+
+  // Rank 0 gathers every rank's rows and timings.
+  const std::vector<std::string> gathered = cluster.gather(rank_messages(run));
+  throw_if_a_rank_failed(cluster, run.fatal, gathered);
+  if (!cluster.is_root()) return report;
+  read_messages(gathered, rows, report);
+  write_batch_results(set, cases, rows, options.out, report);
   return report;
 }
 

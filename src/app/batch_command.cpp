@@ -65,6 +65,45 @@ void show_progress(const BatchProgress& p, bool terminal, int rank, int ranks) {
   }
 }
 
+std::string fragility_line(const results::FragilityFit& f) {
+  if (!f.fitted)
+    return fmt::format("  fragility {} {} > {:.4g}: not fitted: {}\n", f.model, f.quantity, f.limit,
+                       f.reason);
+  return fmt::format(
+      "  fragility {} {} > {:.4g}: median {:.4g} g, dispersion {:.3f} ({} of {} cases exceed)\n",
+      f.model, f.quantity, f.limit, f.median, f.dispersion, f.exceeded, f.observations);
+}
+
+// The cases, where the workers' time went and the fragility fits.
+void print_report(const BatchOptions& batch, const BatchReport& report) {
+  const double rate = report.wall_s > 0.0 ? static_cast<double>(report.ran) / report.wall_s : 0.0;
+  std::cout << fmt::format(
+      "pound batch {}: {} cases ({} resumed, {} run on {} rank(s) x {} worker(s)), {} completed, "
+      "{} failed -> {}/\n",
+      batch.set_path, report.cases, report.resumed, report.ran, report.ranks, report.jobs,
+      report.completed, report.failed, batch.out);
+  if (report.ran > 0)
+    std::cout << fmt::format(
+        "  {:.2f} s, {:.3g} cases/s; of the workers' time: solving {:.1f} %, reading and "
+        "building {:.1f} %, writing {:.1f} %, the rest {:.1f} %\n",
+        report.wall_s, rate, 100.0 * report.solve_s / report.worker_s,
+        100.0 * report.setup_s / report.worker_s, 100.0 * report.write_s / report.worker_s,
+        100.0 * (report.worker_s - report.solve_s - report.setup_s - report.write_s) /
+            report.worker_s);
+  for (const results::FragilityFit& f : report.statistics.fragilities)
+    std::cout << fragility_line(f);
+}
+
+// The ranks this process runs with, or nothing when MPI cannot start (said on stderr).
+std::unique_ptr<Cluster> start_cluster() {
+  try {
+    return std::make_unique<Cluster>();
+  } catch (const std::runtime_error& error) {
+    std::cerr << "pound batch: " << error.what() << "\n";
+    return nullptr;
+  }
+}
+
 }  // namespace
 
 int batch_command(const Arguments& arguments) {
@@ -88,13 +127,8 @@ int batch_command(const Arguments& arguments) {
   }
   batch.resume = vm.count("resume") > 0;
   const bool quiet = vm.count("quiet") > 0;
-  std::unique_ptr<Cluster> started;
-  try {
-    started = std::make_unique<Cluster>();
-  } catch (const std::runtime_error& error) {
-    std::cerr << "pound batch: " << error.what() << "\n";
-    return 1;
-  }
+  const std::unique_ptr<Cluster> started = start_cluster();
+  if (!started) return 1;
   const Cluster& cluster = *started;
   const bool terminal = ::isatty(STDERR_FILENO) && cluster.size() == 1;
   // Under MPI only rank 0 reports, for its own share of the cases.
@@ -104,29 +138,7 @@ int batch_command(const Arguments& arguments) {
     };
   const BatchReport report = run_batch(batch, cluster);
   if (!cluster.is_root()) return 0;
-  if (!quiet) {
-    const double rate = report.wall_s > 0.0 ? static_cast<double>(report.ran) / report.wall_s : 0.0;
-    std::cout << fmt::format(
-        "pound batch {}: {} cases ({} resumed, {} run on {} rank(s) x {} worker(s)), {} completed, "
-        "{} failed -> {}/\n",
-        batch.set_path, report.cases, report.resumed, report.ran, report.ranks, report.jobs,
-        report.completed, report.failed, batch.out);
-    if (report.ran > 0)
-      std::cout << fmt::format(
-          "  {:.2f} s, {:.3g} cases/s; of the workers' time: solving {:.1f} %, reading and "
-          "building {:.1f} %, writing {:.1f} %, the rest {:.1f} %\n",
-          report.wall_s, rate, 100.0 * report.solve_s / report.worker_s,
-          100.0 * report.setup_s / report.worker_s, 100.0 * report.write_s / report.worker_s,
-          100.0 * (report.worker_s - report.solve_s - report.setup_s - report.write_s) /
-              report.worker_s);
-    for (const results::FragilityFit& f : report.statistics.fragilities)
-      std::cout << (f.fitted ? fmt::format("  fragility {} {} > {:.4g}: median {:.4g} g, "
-                                           "dispersion {:.3f} ({} of {} cases exceed)\n",
-                                           f.model, f.quantity, f.limit, f.median, f.dispersion,
-                                           f.exceeded, f.observations)
-                             : fmt::format("  fragility {} {} > {:.4g}: not fitted: {}\n", f.model,
-                                           f.quantity, f.limit, f.reason));
-  }
+  if (!quiet) print_report(batch, report);
   if (report.failed > 0) {
     std::cerr << fmt::format(
         "error: {} of {} cases failed (see the status and reason columns of "

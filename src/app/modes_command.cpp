@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include <array>
 #include <boost/program_options.hpp>
 #include <cmath>
 #include <iostream>
@@ -23,6 +24,89 @@ stiffness, contact links open), with each mode's effective modal mass in x and y
 the total: the periods Rayleigh damping is chosen from and the ones a time step must resolve.
 
 options)";
+
+// A mode as listed: its number in the list, its period and its effective modal mass along x and
+// y as a fraction of the total.
+struct ListedMode {
+  int number = 0;
+  double period = 0.0;
+  std::array<double, 2> mass_ratio{0.0, 0.0};
+};
+
+std::unique_ptr<assembly::StructuralSystem> assemble(const LoadedModel& loaded,
+                                                     const std::string& model_path) {
+  try {
+    return std::make_unique<assembly::StructuralSystem>(loaded.built.model);
+  } catch (const InputError& error) {
+    throw error.file().empty() ? error.in_file(model_path) : error;
+  }
+}
+
+// A unit displacement of every node along x (0) and y (1), at the rows of its free DOFs.
+std::array<Vector, 2> influence_vectors(const assembly::StructuralSystem& system,
+                                        std::size_t node_count) {
+  const int dpn = system.dofs().dofs_per_node();
+  std::array<Vector, 2> influence{Vector::Zero(system.size()), Vector::Zero(system.size())};
+  for (Index node = 0; node < static_cast<Index>(node_count); ++node)
+    for (int d = 0; d < std::min(dpn, 2); ++d)
+      if (const Index row = system.dofs().equation(node, d); row >= 0) influence[d][row] = 1.0;
+  return influence;
+}
+
+// The first `count` modes that are not rigid-body motion.
+std::vector<ListedMode> list_modes(const assembly::StructuralSystem& system, std::size_t node_count,
+                                   int count) {
+  const assembly::Modes modes = assembly::modal_analysis(system);
+  // Effective modal mass along x and y: (phi^T M iota)^2 with mass-normalised phi.
+  const std::array<Vector, 2> influence = influence_vectors(system, node_count);
+  const auto mass = system.mass_matrix();
+  double total[2];
+  for (int d = 0; d < 2; ++d) total[d] = influence[d].dot(mass * influence[d]);
+
+  const double largest = modes.omega_squared.size() ? modes.omega_squared.maxCoeff() : 0.0;
+  std::vector<ListedMode> listed;
+  for (Index k = 0; k < modes.omega_squared.size() && static_cast<int>(listed.size()) < count;
+       ++k) {
+    if (!(modes.omega_squared[k] > 1e-10 * largest)) continue;  // rigid-body motion
+    ListedMode mode;
+    mode.number = static_cast<int>(listed.size()) + 1;
+    mode.period = 2.0 * std::numbers::pi / std::sqrt(modes.omega_squared[k]);
+    for (int d = 0; d < 2; ++d) {
+      const double participation = modes.shapes.col(k).dot(mass * influence[d]);
+      mode.mass_ratio[d] = total[d] > 0.0 ? participation * participation / total[d] : 0.0;
+    }
+    listed.push_back(mode);
+  }
+  return listed;
+}
+
+std::string modes_table(const std::string& model_path, Index dofs,
+                        const std::vector<ListedMode>& modes) {
+  std::string table = fmt::format("{}: {} DOFs\n{:>5} {:>12} {:>12} {:>10} {:>10}\n", model_path,
+                                  dofs, "mode", "period", "frequency", "mass x", "mass y");
+  for (const ListedMode& mode : modes)
+    table += fmt::format("{:>5} {:>12.5g} {:>12.5g} {:>10.4f} {:>10.4f}\n", mode.number,
+                         mode.period, 1.0 / mode.period, mode.mass_ratio[0], mode.mass_ratio[1]);
+  return table;
+}
+
+io::Document modes_document(const std::string& model_path, Index dofs,
+                            const std::vector<ListedMode>& modes) {
+  std::vector<io::Document> rows;
+  for (const ListedMode& mode : modes) {
+    io::Document row;
+    row.set("mode", mode.number)
+        .set("period", mode.period)
+        .set("frequency", 1.0 / mode.period)
+        .set("mass_ratio_x", mode.mass_ratio[0])
+        .set("mass_ratio_y", mode.mass_ratio[1]);
+    rows.push_back(row);
+  }
+  io::Document doc;
+  doc.set("model", model_path).set("dofs", static_cast<long>(dofs)).set("modes", rows);
+  return doc;
+}
+
 }  // namespace
 
 int modes_command(const Arguments& arguments) {
@@ -40,55 +124,12 @@ int modes_command(const Arguments& arguments) {
     return 1;
   }
   const LoadedModel loaded = load_model(model_path);
-  std::unique_ptr<assembly::StructuralSystem> system;
-  try {
-    system = std::make_unique<assembly::StructuralSystem>(loaded.built.model);
-  } catch (const InputError& error) {
-    throw error.file().empty() ? error.in_file(model_path) : error;
-  }
-  const assembly::Modes modes = assembly::modal_analysis(*system);
-  // Effective modal mass along x and y: (phi^T M iota)^2 with mass-normalised phi.
-  const int dpn = system->dofs().dofs_per_node();
-  const auto& nodes = loaded.built.model.nodes;
-  Vector influence[2] = {Vector::Zero(system->size()), Vector::Zero(system->size())};
-  for (Index node = 0; node < static_cast<Index>(nodes.size()); ++node)
-    for (int d = 0; d < std::min(dpn, 2); ++d)
-      if (const Index row = system->dofs().equation(node, d); row >= 0) influence[d][row] = 1.0;
-  const auto mass = system->mass_matrix();
-  double total[2];
-  for (int d = 0; d < 2; ++d) total[d] = influence[d].dot(mass * influence[d]);
-
-  const double largest = modes.omega_squared.size() ? modes.omega_squared.maxCoeff() : 0.0;
-  std::vector<io::Document> rows;
-  std::string table =
-      fmt::format("{}: {} DOFs\n{:>5} {:>12} {:>12} {:>10} {:>10}\n", model_path, system->size(),
-                  "mode", "period", "frequency", "mass x", "mass y");
-  int listed = 0;
-  for (Index k = 0; k < modes.omega_squared.size() && listed < count; ++k) {
-    if (!(modes.omega_squared[k] > 1e-10 * largest)) continue;  // rigid-body motion
-    ++listed;
-    const double period = 2.0 * std::numbers::pi / std::sqrt(modes.omega_squared[k]);
-    double share[2];
-    for (int d = 0; d < 2; ++d) {
-      const double participation = modes.shapes.col(k).dot(mass * influence[d]);
-      share[d] = total[d] > 0.0 ? participation * participation / total[d] : 0.0;
-    }
-    table += fmt::format("{:>5} {:>12.5g} {:>12.5g} {:>10.4f} {:>10.4f}\n", listed, period,
-                         1.0 / period, share[0], share[1]);
-    io::Document row;
-    row.set("mode", listed)
-        .set("period", period)
-        .set("frequency", 1.0 / period)
-        .set("mass_ratio_x", share[0])
-        .set("mass_ratio_y", share[1]);
-    rows.push_back(row);
-  }
+  const std::unique_ptr<assembly::StructuralSystem> system = assemble(loaded, model_path);
+  const std::vector<ListedMode> modes = list_modes(*system, loaded.built.model.nodes.size(), count);
   if (vm.count("json")) {
-    io::Document doc;
-    doc.set("model", model_path).set("dofs", static_cast<long>(system->size())).set("modes", rows);
-    std::cout << doc.dump() << "\n";
+    std::cout << modes_document(model_path, system->size(), modes).dump() << "\n";
   } else {
-    std::cout << table;
+    std::cout << modes_table(model_path, system->size(), modes);
   }
   return 0;
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "app/command_line.hpp"
 #include "app/commands.hpp"
@@ -47,55 +48,22 @@ steps, newton_iterations.
 
 options)";
 
-int verify_block_belt(const std::string& model_path, const std::string& speed_list, double periods,
-                      const std::string& out_folder, bool json) {
-  std::vector<double> speeds = verification::block_belt_speeds();
-  if (!speed_list.empty()) {
-    speeds.clear();
-    std::size_t start = 0;
-    while (start <= speed_list.size()) {
-      const std::size_t end = std::min(speed_list.find(',', start), speed_list.size());
-      const std::string item = speed_list.substr(start, end - start);
-      std::size_t used = 0;
-      double value = 0.0;
-      try {
-        value = std::stod(item, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used != item.size() || item.empty() || !(value > 0.0) || !std::isfinite(value)) {
-        std::cerr << fmt::format("pound verify: --speeds: '{}' is not a positive number\n", item);
-        return 1;
-      }
-      speeds.push_back(value);
-      start = end + 1;
-    }
-  }
-  if (!(periods > 0.0) || !std::isfinite(periods)) {
-    std::cerr << "pound verify: --periods must be > 0\n";
-    return 1;
-  }
-  const builder::ModelSpec spec = io::read_model_file(model_path);
-  const verification::BlockBeltScene scene = verification::block_belt_scene(spec);
-  verification::BlockBeltOptions options;
-  options.periods = periods;
-  std::vector<verification::BlockBeltPoint> points;
-  for (double speed : speeds) {
-    points.push_back(verification::run_block_belt(spec, speed, options));
-    if (!json)
-      std::cerr << fmt::format("  Pi = {:.3g}: {} steps in {:.2f} s\n", speed, points.back().steps,
-                               points.back().run_time_s);
-  }
-  if (!out_folder.empty()) {
-    std::filesystem::create_directories(out_folder);
-    io::write_csv_atomic(out_folder + "/block_belt_sweep.csv",
-                         verification::block_belt_sweep_table(points));
-    io::write_csv_atomic(out_folder + "/block_belt_histories.csv",
-                         verification::block_belt_history_table(points));
-  }
-  std::cout << (json ? verification::to_document(scene, points).dump() + "\n"
-                     : verification::format_block_belt(scene, points));
-  return 0;
+// Every option of `pound verify`; each benchmark reads its own.
+struct VerifyOptions {
+  int elements = 10;
+  double stiffness_ratio = 1.0, dt_ratio = 0.01, duration_ratio = 3.0, tolerance = 1e-10;
+  std::string law = "gap_spring", case_name = "kawashima", csv, profiles_csv, study, integrator;
+  double courant = 0.0, eta = 1.0, hht_alpha = -0.1, rho_infinity = 0.8;
+  bool courant_given = false;
+  std::string block_model = "models/block_on_belt.json", speeds, out_folder;
+  double periods = 4.0;
+  int elements_across = 4;
+  bool json = false;
+};
+
+int usage_error(const std::string& what) {
+  std::cerr << "pound verify: " << what << "\n";
+  return 1;
 }
 
 // The integrators `--integrator` takes, from the catalog.
@@ -106,175 +74,254 @@ std::string integrator_option_help() {
   return names + " (explicit ones: refused above their stable step)";
 }
 
-}  // namespace
-
-int verify_command(const Arguments& arguments) {
-  po::options_description options(kVerifyUsage);
-  int elements = 10;
-  double stiffness_ratio = 1.0, dt_ratio = 0.01, duration_ratio = 3.0, tolerance = 1e-10;
-  std::string law = "gap_spring", case_name = "kawashima", csv, profiles_csv, study, integrator;
-  double courant = 0.0, eta = 1.0, hht_alpha = -0.1, rho_infinity = 0.8;
-  std::string block_model = "models/block_on_belt.json", speeds, out_folder;
-  double periods = 4.0;
-  int elements_across = 4;
-  options.add_options()("help,h", "show this help")(
-      "case", po::value(&case_name)->default_value(case_name),
+void add_verify_options(po::options_description& description, VerifyOptions& options) {
+  description.add_options()("help,h", "show this help")(
+      "case", po::value(&options.case_name)->default_value(options.case_name),
       "benchmark case: kawashima (free rods, +-V0), fixed-end (rod into a rod at rest with a fixed "
       "far end), area-ratio-3 (fixed-end with the striking rod's area 3x)")(
-      "n", po::value(&elements)->default_value(elements), "elements per rod")(
-      "k-ratio", po::value(&stiffness_ratio)->default_value(stiffness_ratio),
+      "n", po::value(&options.elements)->default_value(options.elements), "elements per rod")(
+      "k-ratio", po::value(&options.stiffness_ratio)->default_value(options.stiffness_ratio),
       "link stiffness / axial stiffness E A / h of the softer adjacent element")(
-      "dt-ratio", po::value(&dt_ratio)->default_value(dt_ratio),
+      "dt-ratio", po::value(&options.dt_ratio)->default_value(options.dt_ratio),
       "time step / exact contact duration")(
-      "courant", po::value(&courant),
+      "courant", po::value(&options.courant),
       "time step as a Courant number dt C0 / h of the striking rod (overrides --dt-ratio)")(
-      "duration-ratio", po::value(&duration_ratio)->default_value(duration_ratio),
+      "duration-ratio", po::value(&options.duration_ratio)->default_value(options.duration_ratio),
       "run length after first contact / exact contact duration")(
-      "law", po::value(&law)->default_value(law),
+      "law", po::value(&options.law)->default_value(options.law),
       "contact law: gap_spring (stiffness from --k-ratio) or extended_penalty (Suzuki & Toi's "
-      "automatic numbers)")("eta", po::value(&eta)->default_value(eta),
+      "automatic numbers)")("eta", po::value(&options.eta)->default_value(options.eta),
                             "extended_penalty: damping factor of alpha1")(
-      "integrator", po::value(&integrator)->default_value("newmark_average_acceleration"),
-      integrator_option_help().c_str())("alpha", po::value(&hht_alpha)->default_value(hht_alpha),
-                                        "hht: alpha in [-1/3, 0]")(
-      "rho-inf", po::value(&rho_infinity)->default_value(rho_infinity),
+      "integrator", po::value(&options.integrator)->default_value("newmark_average_acceleration"),
+      integrator_option_help().c_str())(
+      "alpha", po::value(&options.hht_alpha)->default_value(options.hht_alpha),
+      "hht: alpha in [-1/3, 0]")(
+      "rho-inf", po::value(&options.rho_infinity)->default_value(options.rho_infinity),
       "generalized_alpha: spectral radius at infinite frequency, in [0, 1]")(
-      "tolerance", po::value(&tolerance)->default_value(tolerance),
+      "tolerance", po::value(&options.tolerance)->default_value(options.tolerance),
       "relative unbalanced-force tolerance of the Newton iteration")(
       "json", "print the metrics as one JSON object")(
-      "csv", po::value(&csv), "write time, force, exact_force, penetration to this CSV file")(
-      "profiles-csv", po::value(&profiles_csv),
+      "csv", po::value(&options.csv),
+      "write time, force, exact_force, penetration to this CSV file")(
+      "profiles-csv", po::value(&options.profiles_csv),
       "write velocity and stress along both rods at 0, T/4, T/2, 3T/4 after first contact, FE and "
-      "exact (Kawashima Fig. 6)")("n-across",
-                                  po::value(&elements_across)->default_value(elements_across),
-                                  "rod-impact-2d: elements across each strip")(
-      "model", po::value(&block_model)->default_value(block_model),
+      "exact (Kawashima Fig. 6)")(
+      "n-across", po::value(&options.elements_across)->default_value(options.elements_across),
+      "rod-impact-2d: elements across each strip")(
+      "model", po::value(&options.block_model)->default_value(options.block_model),
       "block-belt: the block-on-belt model")(
-      "speeds", po::value(&speeds),
+      "speeds", po::value(&options.speeds),
       "block-belt: comma-separated values of Pi (default: 1e-3 ... 1e8)")(
-      "periods", po::value(&periods)->default_value(periods),
+      "periods", po::value(&options.periods)->default_value(options.periods),
       "block-belt: run length in spring periods 2 pi sqrt(m / k_s)")(
-      "out", po::value(&out_folder), "block-belt: folder for the sweep and history CSVs")(
-      "study", po::value(&study),
+      "out", po::value(&options.out_folder), "block-belt: folder for the sweep and history CSVs")(
+      "study", po::value(&options.study),
       "kawashima: Kawashima's tables over k_I, n and dt; penalty: Suzuki & Toi's alpha0-only and "
       "extended-penalty cases (Figs. 7-8)");
-  std::string benchmark;
-  const auto parsed = parse_command_line(arguments, options, "benchmark", benchmark);
-  if (!parsed) return 0;
-  const po::variables_map& vm = *parsed;
-  const bool json = vm.count("json") > 0;
-  if (benchmark == "two-element") {
-    const auto results = verification::two_element_sweep();
-    std::cout << (json ? verification::to_document(results).dump() + "\n"
-                       : verification::format_two_element(results));
-    double worst = 0.0;
-    for (const auto& r : results) worst = std::max(worst, r.relative_error);
-    return worst <= 1e-10 ? 0 : 1;
-  }
-  if (benchmark == "restitution") {
-    const auto rows = verification::restitution_study();
-    std::cout << (json ? verification::to_document(rows).dump() + "\n"
-                       : verification::format_restitution(rows));
-    bool met = true;
-    for (const auto& r : rows)
-      met = met && (!r.calibrated || std::abs(r.achieved - r.target) <= 0.005);
-    return met ? 0 : 1;
-  }
-  if (benchmark == "rod-impact-2d") {
-    if (elements_across < 1) {
-      std::cerr << "pound verify: --n-across must be >= 1\n";
-      return 1;
-    }
-    verification::RodImpact2dOptions run = verification::suzuki_toi_rods_2d();
-    run.elements_across = elements_across;
-    const verification::RodImpact2dResult r = verification::run_rod_impact_2d(run);
-    if (!csv.empty()) io::write_csv_atomic(csv, verification::rod_impact_2d_table(r));
-    std::cout << fmt::format(
-        "rod impact in 2-D (Suzuki & Toi 1987, Fig. 11): fixed-end case, 50 x {} quads per strip, "
-        "mu = {:g}, {} contact links\n"
-        "                 force_l2_error  peak/exact   steps\n"
-        "  2-D strips     {:>14.4f}  {:>10.4f}  {:>6}\n"
-        "  1-D rods       {:>14.4f}  {:>10.4f}  {:>6}\n"
-        "exact 1-D: peak force {:.6g}, contact duration {:.6g}\n",
-        run.elements_across, run.friction, r.contact_links, r.force_l2_error_2d,
-        r.peak_force_2d / r.exact_peak_force, r.steps_2d, r.force_l2_error_1d,
-        r.peak_force_1d / r.exact_peak_force, r.steps_1d, r.exact_peak_force, r.exact_duration);
-    return 0;
-  }
-  if (benchmark == "block-belt")
-    return verify_block_belt(block_model, speeds, periods, out_folder, json);
-  if (benchmark != "rod-impact") {
-    std::cerr << (benchmark.empty()
-                      ? "pound verify: name a benchmark: rod-impact, two-element, restitution, "
-                        "rod-impact-2d, block-belt\n"
-                      : fmt::format("pound verify: unknown benchmark '{}' (known: rod-impact, "
-                                    "two-element, restitution, rod-impact-2d, block-belt)\n",
-                                    benchmark));
-    return 1;
-  }
-  auto usage_error = [](const std::string& what) {
-    std::cerr << "pound verify: " << what << "\n";
-    return 1;
-  };
-  if (elements < 1) return usage_error("--n must be >= 1");
-  if (!(stiffness_ratio > 0.0)) return usage_error("--k-ratio must be > 0");
-  if (!(dt_ratio > 0.0)) return usage_error("--dt-ratio must be > 0");
-  if (vm.count("courant") && !(courant > 0.0)) return usage_error("--courant must be > 0");
-  if (!(duration_ratio >= 1.5))
-    return usage_error("--duration-ratio must be >= 1.5 (the error window)");
-  if (!(tolerance > 0.0)) return usage_error("--tolerance must be > 0");
+}
 
-  if (study == "kawashima" || study == "penalty") {
-    const auto studies =
-        study == "kawashima" ? verification::kawashima_study() : verification::penalty_study();
-    if (json) {
-      std::cout << verification::to_document(studies).dump() << "\n";
-    } else {
-      for (const auto& s : studies) std::cout << verification::format_study(s) << "\n";
+int verify_two_element(bool json) {
+  const auto results = verification::two_element_sweep();
+  std::cout << (json ? verification::to_document(results).dump() + "\n"
+                     : verification::format_two_element(results));
+  double worst = 0.0;
+  for (const auto& r : results) worst = std::max(worst, r.relative_error);
+  return worst <= 1e-10 ? 0 : 1;
+}
+
+int verify_restitution(bool json) {
+  const auto rows = verification::restitution_study();
+  std::cout << (json ? verification::to_document(rows).dump() + "\n"
+                     : verification::format_restitution(rows));
+  bool met = true;
+  for (const auto& r : rows)
+    met = met && (!r.calibrated || std::abs(r.achieved - r.target) <= 0.005);
+  return met ? 0 : 1;
+}
+
+int verify_rod_impact_2d(int elements_across, const std::string& csv) {
+  if (elements_across < 1) return usage_error("--n-across must be >= 1");
+  verification::RodImpact2dOptions run = verification::suzuki_toi_rods_2d();
+  run.elements_across = elements_across;
+  const verification::RodImpact2dResult r = verification::run_rod_impact_2d(run);
+  if (!csv.empty()) io::write_csv_atomic(csv, verification::rod_impact_2d_table(r));
+  std::cout << fmt::format(
+      "rod impact in 2-D (Suzuki & Toi 1987, Fig. 11): fixed-end case, 50 x {} quads per strip, "
+      "mu = {:g}, {} contact links\n"
+      "                 force_l2_error  peak/exact   steps\n"
+      "  2-D strips     {:>14.4f}  {:>10.4f}  {:>6}\n"
+      "  1-D rods       {:>14.4f}  {:>10.4f}  {:>6}\n"
+      "exact 1-D: peak force {:.6g}, contact duration {:.6g}\n",
+      run.elements_across, run.friction, r.contact_links, r.force_l2_error_2d,
+      r.peak_force_2d / r.exact_peak_force, r.steps_2d, r.force_l2_error_1d,
+      r.peak_force_1d / r.exact_peak_force, r.steps_1d, r.exact_peak_force, r.exact_duration);
+  return 0;
+}
+
+// The values of --speeds, or nothing when one is not a positive number (said on stderr).
+std::optional<std::vector<double>> parse_speeds(const std::string& list) {
+  std::vector<double> speeds;
+  std::size_t start = 0;
+  while (start <= list.size()) {
+    const std::size_t end = std::min(list.find(',', start), list.size());
+    const std::string item = list.substr(start, end - start);
+    std::size_t used = 0;
+    double value = 0.0;
+    try {
+      value = std::stod(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
     }
-    return 0;
+    if (used != item.size() || item.empty() || !(value > 0.0) || !std::isfinite(value)) {
+      std::cerr << fmt::format("pound verify: --speeds: '{}' is not a positive number\n", item);
+      return std::nullopt;
+    }
+    speeds.push_back(value);
+    start = end + 1;
   }
-  if (!study.empty())
+  return speeds;
+}
+
+int verify_block_belt(const VerifyOptions& options) {
+  std::vector<double> speeds = verification::block_belt_speeds();
+  if (!options.speeds.empty()) {
+    const std::optional<std::vector<double>> given = parse_speeds(options.speeds);
+    if (!given) return 1;
+    speeds = *given;
+  }
+  if (!(options.periods > 0.0) || !std::isfinite(options.periods))
+    return usage_error("--periods must be > 0");
+  const builder::ModelSpec spec = io::read_model_file(options.block_model);
+  const verification::BlockBeltScene scene = verification::block_belt_scene(spec);
+  verification::BlockBeltOptions run;
+  run.periods = options.periods;
+  std::vector<verification::BlockBeltPoint> points;
+  for (double speed : speeds) {
+    points.push_back(verification::run_block_belt(spec, speed, run));
+    if (!options.json)
+      std::cerr << fmt::format("  Pi = {:.3g}: {} steps in {:.2f} s\n", speed, points.back().steps,
+                               points.back().run_time_s);
+  }
+  if (!options.out_folder.empty()) {
+    std::filesystem::create_directories(options.out_folder);
+    io::write_csv_atomic(options.out_folder + "/block_belt_sweep.csv",
+                         verification::block_belt_sweep_table(points));
+    io::write_csv_atomic(options.out_folder + "/block_belt_histories.csv",
+                         verification::block_belt_history_table(points));
+  }
+  std::cout << (options.json ? verification::to_document(scene, points).dump() + "\n"
+                             : verification::format_block_belt(scene, points));
+  return 0;
+}
+
+// What is wrong with the numbers of a rod-impact run, if anything.
+std::optional<std::string> rod_impact_option_error(const VerifyOptions& options) {
+  if (options.elements < 1) return "--n must be >= 1";
+  if (!(options.stiffness_ratio > 0.0)) return "--k-ratio must be > 0";
+  if (!(options.dt_ratio > 0.0)) return "--dt-ratio must be > 0";
+  if (options.courant_given && !(options.courant > 0.0)) return "--courant must be > 0";
+  if (!(options.duration_ratio >= 1.5)) return "--duration-ratio must be >= 1.5 (the error window)";
+  if (!(options.tolerance > 0.0)) return "--tolerance must be > 0";
+  return std::nullopt;
+}
+
+int verify_rod_impact_study(const std::string& study, bool json) {
+  if (study != "kawashima" && study != "penalty")
     return usage_error(fmt::format("unknown study '{}' (known: kawashima, penalty)", study));
-
-  verification::RodImpactOptions run;
-  try {
-    run.pair = verification::rod_impact_case(case_name, elements, stiffness_ratio, law, eta);
-  } catch (const std::invalid_argument& error) {
-    return usage_error(error.what());
+  const auto studies =
+      study == "kawashima" ? verification::kawashima_study() : verification::penalty_study();
+  if (json) {
+    std::cout << verification::to_document(studies).dump() << "\n";
+  } else {
+    for (const auto& s : studies) std::cout << verification::format_study(s) << "\n";
   }
-  run.dt_ratio = dt_ratio;
-  if (vm.count("courant")) run.courant = courant;
-  run.duration_ratio = duration_ratio;
-  run.relative_tolerance = tolerance;
+  return 0;
+}
+
+// The run the options describe into `run`, or what is wrong with them.
+std::optional<std::string> set_up_rod_impact(const VerifyOptions& options,
+                                             verification::RodImpactOptions& run) {
   try {
-    run.integrator = integrators::IntegratorChoice::preset(integrator);
+    run.pair = verification::rod_impact_case(options.case_name, options.elements,
+                                             options.stiffness_ratio, options.law, options.eta);
   } catch (const std::invalid_argument& error) {
-    return usage_error(error.what());
+    return error.what();
+  }
+  run.dt_ratio = options.dt_ratio;
+  if (options.courant_given) run.courant = options.courant;
+  run.duration_ratio = options.duration_ratio;
+  run.relative_tolerance = options.tolerance;
+  try {
+    run.integrator = integrators::IntegratorChoice::preset(options.integrator);
+  } catch (const std::invalid_argument& error) {
+    return error.what();
   }
   // The options that set a method's parameters, where the method has them.
-  for (const auto& [option, name, value] : {std::tuple{"--alpha", "alpha", hht_alpha},
-                                            std::tuple{"--rho-inf", "rho_infinity", rho_infinity}})
+  for (const auto& [option, name, value] :
+       {std::tuple{"--alpha", "alpha", options.hht_alpha},
+        std::tuple{"--rho-inf", "rho_infinity", options.rho_infinity}})
     if (const integrators::IntegratorParameter* parameter =
             run.integrator.method().parameter(name)) {
       if (!parameter->admits(value))
-        return usage_error(fmt::format("{} must be in [{:g}, {:g}]", option, parameter->minimum,
-                                       parameter->maximum.value_or(INFINITY)));
+        return fmt::format("{} must be in [{:g}, {:g}]", option, parameter->minimum,
+                           parameter->maximum.value_or(INFINITY));
       run.integrator.set(name, value);
     }
-  if (!profiles_csv.empty()) run.profile_times = {0.0, 0.25, 0.5, 0.75};
+  if (!options.profiles_csv.empty()) run.profile_times = {0.0, 0.25, 0.5, 0.75};
+  return std::nullopt;
+}
+
+int verify_rod_impact(const VerifyOptions& options) {
+  if (const std::optional<std::string> error = rod_impact_option_error(options))
+    return usage_error(*error);
+  if (!options.study.empty()) return verify_rod_impact_study(options.study, options.json);
+  verification::RodImpactOptions run;
+  if (const std::optional<std::string> error = set_up_rod_impact(options, run))
+    return usage_error(*error);
   const verification::RodImpactResult result = verification::run_rod_impact(run);
-  if (!csv.empty()) io::write_csv_atomic(csv, verification::force_history_table(result));
-  if (!profiles_csv.empty())
-    io::write_csv_atomic(profiles_csv, verification::profile_table(result));
-  if (vm.count("json")) {
+  if (!options.csv.empty())
+    io::write_csv_atomic(options.csv, verification::force_history_table(result));
+  if (!options.profiles_csv.empty())
+    io::write_csv_atomic(options.profiles_csv, verification::profile_table(result));
+  if (options.json) {
     std::cout << verification::to_document(result.metrics).dump() << "\n";
   } else {
     std::cout << fmt::format("rod impact, case {}, n = {}, k-ratio {:g}, dt = {:.4e}, {}\n",
-                             case_name, elements, stiffness_ratio, result.time_step, integrator)
+                             options.case_name, options.elements, options.stiffness_ratio,
+                             result.time_step, options.integrator)
               << verification::format_metrics(result.metrics);
   }
   return 0;
+}
+
+int unknown_benchmark(const std::string& benchmark) {
+  std::cerr << (benchmark.empty()
+                    ? "pound verify: name a benchmark: rod-impact, two-element, restitution, "
+                      "rod-impact-2d, block-belt\n"
+                    : fmt::format("pound verify: unknown benchmark '{}' (known: rod-impact, "
+                                  "two-element, restitution, rod-impact-2d, block-belt)\n",
+                                  benchmark));
+  return 1;
+}
+
+}  // namespace
+
+int verify_command(const Arguments& arguments) {
+  po::options_description description(kVerifyUsage);
+  VerifyOptions options;
+  add_verify_options(description, options);
+  std::string benchmark;
+  const auto parsed = parse_command_line(arguments, description, "benchmark", benchmark);
+  if (!parsed) return 0;
+  options.json = parsed->count("json") > 0;
+  options.courant_given = parsed->count("courant") > 0;
+  if (benchmark == "two-element") return verify_two_element(options.json);
+  if (benchmark == "restitution") return verify_restitution(options.json);
+  if (benchmark == "rod-impact-2d")
+    return verify_rod_impact_2d(options.elements_across, options.csv);
+  if (benchmark == "block-belt") return verify_block_belt(options);
+  if (benchmark == "rod-impact") return verify_rod_impact(options);
+  return unknown_benchmark(benchmark);
 }
 
 }  // namespace pound::app

@@ -9,140 +9,173 @@
 namespace pound::builder {
 namespace {
 
+// What every part of one bridge needs while it is generated.
+struct Bridge {
+  const GirderBridgeSpec& spec;
+  std::vector<double> x;  // stations of the abutments and piers: 0, then the end of each span
+  double deck;            // height of the girders, on top of the piers
+  std::string girder_material, pier_material;
+};
+
+// The first and last node of a continuous stretch of girder.
+struct GirderSegment {
+  std::string first, last;
+};
+
 LawSpec elastic(double stiffness) {
   return {.type = "elastic_spring", .parameters = {{"stiffness", stiffness}}};
 }
 
+std::vector<double> stations(const GirderBridgeSpec& spec) {
+  std::vector<double> x{0.0};
+  for (double span : spec.spans) x.push_back(x.back() + span);
+  return x;
+}
+
+std::string pier_top(const GirderBridgeSpec& spec, int pier) {
+  return fmt::format("{}.p{}.top", spec.id, pier);
+}
+
+void add_beam(const std::string& id, const std::string& node_i, const std::string& node_j,
+              const std::string& material, const SectionSpec& section, ModelSpec& out) {
+  ElementSpec beam = make_beam(id, node_i, node_j, material, section.area, section.inertia);
+  beam.extra_mass = section.extra_mass;
+  out.elements.push_back(beam);
+}
+
+// A girder node sits on a seat: a horizontal bearing (the user's law) and a vertical one.
+void add_bearing(const GirderBridgeSpec& spec, const std::string& girder, const std::string& seat,
+                 ModelSpec& out) {
+  out.links.push_back(
+      make_link(girder + ".bearing_x", girder, seat, {1.0, 0.0}, 0.0, spec.bearing));
+  out.links.push_back(make_link(girder + ".bearing_y", girder, seat, {0.0, 1.0}, 0.0,
+                                elastic(spec.bearing_vertical_stiffness)));
+}
+
+// The pounding link of a joint along x (`direction` +1 or -1) and its restrainer, if it has one.
+void add_joint_links(const std::string& joint, const std::string& node_i, const std::string& node_j,
+                     double direction, const JointSpec& spec, ModelSpec& out) {
+  out.links.push_back(make_link(joint, node_i, node_j, {direction, 0.0}, spec.gap, spec.law));
+  if (spec.restrainer)
+    out.links.push_back(
+        make_link(joint + ".restrainer", node_i, node_j, {direction, 0.0}, 0.0, *spec.restrainer));
+}
+
+// A pier, fixed at the base; its top is the seat of the girder nodes above.
+void add_pier(const Bridge& bridge, int pier, ModelSpec& out) {
+  const GirderBridgeSpec& spec = bridge.spec;
+  const std::string base = fmt::format("{}.p{}.base", spec.id, pier), top = pier_top(spec, pier);
+  out.nodes.push_back({base, bridge.x[pier], 0.0});
+  out.supports.push_back({base, true, true, true});
+  std::string previous = base;
+  for (int e = 1; e <= spec.pier.elements; ++e) {
+    const std::string node =
+        e == spec.pier.elements ? top : fmt::format("{}.p{}.n{}", spec.id, pier, e);
+    out.nodes.push_back({node, bridge.x[pier], bridge.deck * e / spec.pier.elements});
+    add_beam(fmt::format("{}.p{}.e{}", spec.id, pier, e), previous, node, bridge.pier_material,
+             spec.pier, out);
+    previous = node;
+  }
+  out.drift_monitors.push_back({fmt::format("{}.p{}", spec.id, pier), "pier", spec.id, base, top,
+                                bridge.deck, spec.pier_yield_drift});
+}
+
+// Where the girder is cut, as span numbers: 0 and the last at the abutments, and the expansion
+// joints (pier p stands between spans p - 1 and p), in order.
+std::vector<int> girder_cuts(const GirderBridgeSpec& spec) {
+  std::vector<int> cuts{0};
+  for (int joint : spec.expansion_joints) cuts.push_back(joint);
+  cuts.push_back(static_cast<int>(spec.spans.size()));
+  std::sort(cuts.begin(), cuts.end());
+  return cuts;
+}
+
+// Girder segment `g`, over spans [first_span, end_span) between two cuts.
+GirderSegment add_girder_segment(const Bridge& bridge, std::size_t g, int first_span, int end_span,
+                                 ModelSpec& out) {
+  const GirderBridgeSpec& spec = bridge.spec;
+  GirderSegment segment;
+  std::string previous;
+  int counter = 0;
+  for (int span = first_span; span < end_span; ++span)
+    for (int e = 0; e <= spec.girder.elements; ++e) {
+      if (e == 0 && span > first_span) continue;  // shared with the previous span
+      const double at =
+          bridge.x[span] + spec.spans[static_cast<std::size_t>(span)] * e / spec.girder.elements;
+      const std::string node = fmt::format("{}.g{}.n{}", spec.id, g, counter++);
+      out.nodes.push_back({node, at, bridge.deck});
+      if (!previous.empty())
+        add_beam(fmt::format("{}.g{}.e{}", spec.id, g, counter - 1), previous, node,
+                 bridge.girder_material, spec.girder, out);
+      else
+        segment.first = node;
+      previous = node;
+      // A node over a pier that is not cut sits on it.
+      if (e == spec.girder.elements && span + 1 < end_span)
+        add_bearing(spec, node, pier_top(spec, span + 1), out);
+    }
+  segment.last = previous;
+  return segment;
+}
+
+// An expansion joint over a pier: both girder ends sit on the pier top and may pound.
+void add_expansion_joint(const GirderBridgeSpec& spec, int pier, const std::string& left,
+                         const std::string& right, ModelSpec& out) {
+  const std::string seat = pier_top(spec, pier);
+  add_bearing(spec, left, seat, out);
+  add_bearing(spec, right, seat, out);
+  const std::string joint = fmt::format("{}.joint{}", spec.id, pier);
+  add_joint_links(joint, left, right, 1.0, spec.joint, out);
+  out.joint_monitors.push_back({joint + ".left_end", joint, left, seat, spec.joint.seat_width});
+  out.joint_monitors.push_back({joint + ".right_end", joint, right, seat, spec.joint.seat_width});
+}
+
+// An abutment (side 0 at the start, 1 at the end): the girder end sits on the seat and may
+// pound on the backwall, which the backfill holds (or which is fixed without backfill).
+void add_abutment(const Bridge& bridge, int side, const std::string& girder, ModelSpec& out) {
+  const GirderBridgeSpec& spec = bridge.spec;
+  const std::string name = fmt::format("{}.a{}", spec.id, side);
+  const double at = side == 0 ? 0.0 : bridge.x.back(), outward = side == 0 ? -1.0 : 1.0;
+  const std::string seat = name + ".seat", wall = name + ".wall";
+  out.nodes.push_back({seat, at, bridge.deck});
+  out.supports.push_back({seat, true, true, false});
+  out.nodes.push_back({wall, at, bridge.deck});
+  add_bearing(spec, girder, seat, out);
+  if (spec.backfill) {
+    const std::string ground = name + ".ground";
+    out.nodes.push_back({ground, at, bridge.deck});
+    out.supports.push_back({ground, true, true, false});
+    out.supports.push_back({wall, false, true, false});
+    out.masses.push_back({wall, spec.backwall_mass, 0.0, std::nullopt});
+    out.links.push_back(
+        make_link(name + ".backfill", wall, ground, {outward, 0.0}, 0.0, *spec.backfill));
+  } else {
+    out.supports.push_back({wall, true, true, false});
+  }
+  const std::string joint = name + ".joint";
+  add_joint_links(joint, girder, wall, outward, spec.abutment, out);
+  out.joint_monitors.push_back(
+      {joint + ".girder_end", joint, girder, seat, spec.abutment.seat_width});
+}
+
 }  // namespace
 
-void add_girder_bridge(const GirderBridgeSpec& b, ModelSpec& out) {
-  const std::string& id = b.id;
-  const int spans = static_cast<int>(b.spans.size());
-  std::vector<double> x{0.0};
-  for (double span : b.spans) x.push_back(x.back() + span);
-  const double deck = b.pier_height;
-  const std::string girder_material = id + ".girder", pier_material = id + ".pier";
-  out.materials.push_back({girder_material, b.girder.youngs_modulus, b.girder.density});
-  out.materials.push_back({pier_material, b.pier.youngs_modulus, b.pier.density});
-
-  auto add_link = [&out](const std::string& link_id, const std::string& i, const std::string& j,
-                         std::vector<double> axis, double gap, const LawSpec& law) {
-    LinkSpec link;
-    link.id = link_id;
-    link.node_i = i;
-    link.node_j = j;
-    link.axis = std::move(axis);
-    link.gap = gap;
-    link.law = law;
-    out.links.push_back(link);
-  };
-  auto add_beam = [&out](const std::string& element_id, const std::string& i, const std::string& j,
-                         const std::string& material, const SectionSpec& section) {
-    ElementSpec beam;
-    beam.id = element_id;
-    beam.type = "beam";
-    beam.node_i = i;
-    beam.node_j = j;
-    beam.material = material;
-    beam.area = section.area;
-    beam.inertia = section.inertia;
-    beam.extra_mass = section.extra_mass;
-    out.elements.push_back(beam);
-  };
-  // A girder node sits on a seat: a horizontal bearing (the user's law) and a vertical one.
-  auto add_bearing = [&](const std::string& girder, const std::string& seat) {
-    add_link(girder + ".bearing_x", girder, seat, {1.0, 0.0}, 0.0, b.bearing);
-    add_link(girder + ".bearing_y", girder, seat, {0.0, 1.0}, 0.0,
-             elastic(b.bearing_vertical_stiffness));
-  };
-
-  // Piers: fixed at the base, their top is the seat of the girder nodes above.
-  for (int p = 1; p < spans; ++p) {
-    const std::string base = fmt::format("{}.p{}.base", id, p),
-                      top = fmt::format("{}.p{}.top", id, p);
-    out.nodes.push_back({base, x[p], 0.0});
-    out.supports.push_back({base, true, true, true});
-    std::string previous = base;
-    for (int e = 1; e <= b.pier.elements; ++e) {
-      const std::string node = e == b.pier.elements ? top : fmt::format("{}.p{}.n{}", id, p, e);
-      out.nodes.push_back({node, x[p], deck * e / b.pier.elements});
-      add_beam(fmt::format("{}.p{}.e{}", id, p, e), previous, node, pier_material, b.pier);
-      previous = node;
-    }
-    out.drift_monitors.push_back(
-        {fmt::format("{}.p{}", id, p), "pier", id, base, top, deck, b.pier_yield_drift});
-  }
-
-  // Girder segments between cuts (the abutments and the expansion joints).
-  std::vector<int> cuts{0};
-  for (int joint : b.expansion_joints) cuts.push_back(joint);
-  cuts.push_back(spans);
-  std::sort(cuts.begin(), cuts.end());
-  std::vector<std::string> starts, ends;  // first and last girder node of each segment
-  for (std::size_t g = 0; g + 1 < cuts.size(); ++g) {
-    std::string previous;
-    int counter = 0;
-    for (int span = cuts[g]; span < cuts[g + 1]; ++span)
-      for (int e = 0; e <= b.girder.elements; ++e) {
-        if (e == 0 && span > cuts[g]) continue;  // shared with the previous span
-        const double at = x[span] + b.spans[static_cast<std::size_t>(span)] * e / b.girder.elements;
-        const std::string node = fmt::format("{}.g{}.n{}", id, g, counter++);
-        out.nodes.push_back({node, at, deck});
-        if (!previous.empty())
-          add_beam(fmt::format("{}.g{}.e{}", id, g, counter - 1), previous, node, girder_material,
-                   b.girder);
-        else
-          starts.push_back(node);
-        previous = node;
-        // A node over a pier that is not cut sits on it.
-        if (e == b.girder.elements && span + 1 < cuts[g + 1])
-          add_bearing(node, fmt::format("{}.p{}.top", id, span + 1));
-      }
-    ends.push_back(previous);
-  }
-
-  // Expansion joints over piers: both girder ends sit on the pier top and may pound.
-  for (std::size_t g = 1; g + 1 < cuts.size(); ++g) {
-    const std::string seat = fmt::format("{}.p{}.top", id, cuts[g]);
-    const std::string left = ends[g - 1], right = starts[g];
-    add_bearing(left, seat);
-    add_bearing(right, seat);
-    const std::string joint = fmt::format("{}.joint{}", id, cuts[g]);
-    add_link(joint, left, right, {1.0, 0.0}, b.joint.gap, b.joint.law);
-    if (b.joint.restrainer)
-      add_link(joint + ".restrainer", left, right, {1.0, 0.0}, 0.0, *b.joint.restrainer);
-    out.joint_monitors.push_back({joint + ".left_end", joint, left, seat, b.joint.seat_width});
-    out.joint_monitors.push_back({joint + ".right_end", joint, right, seat, b.joint.seat_width});
-  }
-
-  // Abutments: the girder end sits on the seat and may pound on the backwall, which the
-  // backfill holds (or which is fixed without backfill).
-  for (int side = 0; side < 2; ++side) {
-    const std::string name = fmt::format("{}.a{}", id, side);
-    const double at = side == 0 ? 0.0 : x.back(), outward = side == 0 ? -1.0 : 1.0;
-    const std::string seat = name + ".seat", wall = name + ".wall";
-    out.nodes.push_back({seat, at, deck});
-    out.supports.push_back({seat, true, true, false});
-    out.nodes.push_back({wall, at, deck});
-    const std::string girder = side == 0 ? starts.front() : ends.back();
-    add_bearing(girder, seat);
-    if (b.backfill) {
-      const std::string ground = name + ".ground";
-      out.nodes.push_back({ground, at, deck});
-      out.supports.push_back({ground, true, true, false});
-      out.supports.push_back({wall, false, true, false});
-      out.masses.push_back({wall, b.backwall_mass, 0.0, std::nullopt});
-      add_link(name + ".backfill", wall, ground, {outward, 0.0}, 0.0, *b.backfill);
-    } else {
-      out.supports.push_back({wall, true, true, false});
-    }
-    const std::string joint = name + ".joint";
-    add_link(joint, girder, wall, {outward, 0.0}, b.abutment.gap, b.abutment.law);
-    if (b.abutment.restrainer)
-      add_link(joint + ".restrainer", girder, wall, {outward, 0.0}, 0.0, *b.abutment.restrainer);
-    out.joint_monitors.push_back(
-        {joint + ".girder_end", joint, girder, seat, b.abutment.seat_width});
-  }
+void add_girder_bridge(const GirderBridgeSpec& spec, ModelSpec& out) {
+  const Bridge bridge{spec, stations(spec), spec.pier_height, spec.id + ".girder",
+                      spec.id + ".pier"};
+  out.materials.push_back(
+      {bridge.girder_material, spec.girder.youngs_modulus, spec.girder.density});
+  out.materials.push_back({bridge.pier_material, spec.pier.youngs_modulus, spec.pier.density});
+  const int spans = static_cast<int>(spec.spans.size());
+  for (int pier = 1; pier < spans; ++pier) add_pier(bridge, pier, out);
+  const std::vector<int> cuts = girder_cuts(spec);
+  std::vector<GirderSegment> segments;
+  for (std::size_t g = 0; g + 1 < cuts.size(); ++g)
+    segments.push_back(add_girder_segment(bridge, g, cuts[g], cuts[g + 1], out));
+  for (std::size_t g = 1; g + 1 < cuts.size(); ++g)
+    add_expansion_joint(spec, cuts[g], segments[g - 1].last, segments[g].first, out);
+  add_abutment(bridge, 0, segments.front().first, out);
+  add_abutment(bridge, 1, segments.back().last, out);
 }
 
 }  // namespace pound::builder

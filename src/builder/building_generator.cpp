@@ -13,7 +13,17 @@
 namespace pound::builder {
 namespace {
 
-constexpr const char* kSide[] = {"left", "right"};
+// One building of the pair while it is generated.
+struct Building {
+  const AdjacentBuildingsSpec& pair;
+  int side;  // 0 left, 1 right
+  const BuildingSpec& spec;
+  std::string name;                               // "<pair>.<side>"
+  std::string material;                           // of its columns
+  std::vector<double> heights;                    // of its floors, from the ground (0) up
+  double x;                                       // where it stands
+  std::optional<std::array<double, 2>> rayleigh;  // its own damping, if it has any
+};
 
 std::vector<double> floor_heights(const BuildingSpec& building) {
   std::vector<double> heights{0.0};
@@ -43,115 +53,148 @@ std::array<double, 2> building_rayleigh(const BuildingSpec& building) {
   return {2.0 * xi * w1 * w2 / (w1 + w2), 2.0 * xi / (w1 + w2)};
 }
 
-}  // namespace
-
-std::string building_node_id(const AdjacentBuildingsSpec& pair, int side, int floor) {
-  return fmt::format("{}.{}.f{}", pair.id, kSide[side], floor);
+Building make_building(const AdjacentBuildingsSpec& pair, int side) {
+  const BuildingSpec& spec = side == 0 ? pair.left : pair.right;
+  const std::string name = fmt::format("{}.{}", pair.id, kPairSides[side]);
+  Building building{.pair = pair,
+                    .side = side,
+                    .spec = spec,
+                    .name = name,
+                    .material = name + ".storeys",
+                    .heights = floor_heights(spec),
+                    .x = side == 0 ? 0.0 : pair.separation};
+  if (spec.damping_ratio > 0.0) building.rayleigh = building_rayleigh(spec);
+  return building;
 }
 
-void add_adjacent_buildings(const AdjacentBuildingsSpec& pair, ModelSpec& out) {
-  const BuildingSpec* buildings[2] = {&pair.left, &pair.right};
-  const std::vector<double> heights[2] = {floor_heights(pair.left), floor_heights(pair.right)};
-  const double x[2] = {0.0, pair.separation};
-  // Every height where a floor of either building meets the other one.
+// Storey s (from 0): "<pair>.<side>.s<s + 1>", which its columns and cuts extend.
+std::string storey_id(const Building& building, std::size_t s) {
+  return fmt::format("{}.s{}", building.name, s + 1);
+}
+
+// Where a floor of the other building at height h cuts storey s's column.
+std::string cut_node_id(const Building& building, std::size_t s, double h) {
+  return fmt::format("{}.at{:g}", storey_id(building, s), h);
+}
+
+std::string floor_node_id(const Building& building, std::size_t floor) {
+  return building_node_id(building.pair, building.side, static_cast<int>(floor));
+}
+
+// Every height where a floor of either building meets the other one.
+std::vector<double> contact_heights(const std::array<Building, 2>& buildings) {
   std::vector<double> contacts;
-  const double top = std::min(heights[0].back(), heights[1].back());
-  for (const auto& side : heights)
-    for (std::size_t f = 1; f < side.size(); ++f)
-      if (side[f] <= top * (1 + 1e-12)) contacts.push_back(side[f]);
+  const double top = std::min(buildings[0].heights.back(), buildings[1].heights.back());
+  for (const Building& building : buildings)
+    for (std::size_t f = 1; f < building.heights.size(); ++f)
+      if (building.heights[f] <= top * (1 + 1e-12)) contacts.push_back(building.heights[f]);
   std::sort(contacts.begin(), contacts.end());
   contacts.erase(
       std::unique(contacts.begin(), contacts.end(),
                   [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(a, b); }),
       contacts.end());
+  return contacts;
+}
 
-  std::vector<std::string> contact_nodes[2];  // per contact height
-  for (int side = 0; side < 2; ++side) {
-    const BuildingSpec& building = *buildings[side];
-    const std::string material = fmt::format("{}.{}.storeys", pair.id, kSide[side]);
-    // Columns carry only the storey stiffness; floors and their masses are at the nodes.
-    out.materials.push_back({material, 1.0, 0.0});
-    std::optional<std::array<double, 2>> rayleigh;
-    std::optional<double> mass_damping;
-    if (building.damping_ratio > 0.0) {
-      rayleigh = building_rayleigh(building);
-      mass_damping = (*rayleigh)[0];
+// The nodes of storey s's column, bottom up: the floor below, the cuts where the other
+// building's floors meet it (free rotation there, which keeps the storey's cubic deflection, so
+// its stiffness is unchanged) and its floor. Adds the cuts.
+std::vector<std::string> add_column_cuts(const Building& building, std::size_t s,
+                                         const std::vector<double>& contacts, ModelSpec& out) {
+  const double bottom = building.heights[s], upper = building.heights[s + 1];
+  std::vector<std::string> chain{floor_node_id(building, s)};
+  for (double h : contacts)
+    if (h > bottom * (1 + 1e-12) && h < upper * (1 - 1e-12)) {
+      const std::string cut = cut_node_id(building, s, h);
+      out.nodes.push_back({cut, building.x, h});
+      out.supports.push_back({cut, false, true, false});
+      chain.push_back(cut);
     }
-    out.nodes.push_back({building_node_id(pair, side, 0), x[side], 0.0});
-    out.supports.push_back({building_node_id(pair, side, 0), true, true, true});
-    for (std::size_t s = 0; s < building.storeys.size(); ++s) {
-      const StoreySpec& storey = building.storeys[s];
-      const double bottom = heights[side][s], upper = heights[side][s + 1];
-      const std::string floor = building_node_id(pair, side, static_cast<int>(s + 1));
-      out.nodes.push_back({floor, x[side], upper});
-      // A rigid floor: it sways, it neither rises nor turns.
-      out.supports.push_back({floor, false, true, true});
-      out.masses.push_back({floor, storey.mass, 0.0, mass_damping});
-      // The storey column, cut where the other building's floors meet it (free rotation there,
-      // which keeps the storey's cubic deflection, so its stiffness is unchanged).
-      std::vector<std::string> chain{building_node_id(pair, side, static_cast<int>(s))};
-      for (double h : contacts)
-        if (h > bottom * (1 + 1e-12) && h < upper * (1 - 1e-12)) {
-          const std::string cut = fmt::format("{}.{}.s{}.at{:g}", pair.id, kSide[side], s + 1, h);
-          out.nodes.push_back({cut, x[side], h});
-          out.supports.push_back({cut, false, true, false});
-          chain.push_back(cut);
-        }
-      chain.push_back(floor);
-      const double inertia = storey.stiffness * std::pow(storey.height, 3) / 12.0;  // E = 1
-      for (std::size_t c = 0; c + 1 < chain.size(); ++c) {
-        ElementSpec column;
-        column.id = fmt::format("{}.{}.s{}.c{}", pair.id, kSide[side], s + 1, c);
-        column.type = "beam";
-        column.node_i = chain[c];
-        column.node_j = chain[c + 1];
-        column.material = material;
-        column.area = 1.0;
-        column.inertia = inertia;
-        column.rayleigh = rayleigh;
-        out.elements.push_back(column);
-      }
-      out.drift_monitors.push_back({fmt::format("{}.{}.s{}", pair.id, kSide[side], s + 1), "storey",
-                                    fmt::format("{}.{}", pair.id, kSide[side]), chain.front(),
-                                    floor, storey.height, std::nullopt});
-    }
-    // The node of this building at each contact height.
-    for (double h : contacts) {
-      std::string node;
-      for (std::size_t f = 1; f < heights[side].size(); ++f)
-        if (std::abs(heights[side][f] - h) <= 1e-9 * h)
-          node = building_node_id(pair, side, static_cast<int>(f));
-      if (node.empty())
-        for (std::size_t s = 0; s < building.storeys.size(); ++s)
-          if (h > heights[side][s] && h < heights[side][s + 1])
-            node = fmt::format("{}.{}.s{}.at{:g}", pair.id, kSide[side], s + 1, h);
-      contact_nodes[side].push_back(node);
-    }
+  chain.push_back(floor_node_id(building, s + 1));
+  return chain;
+}
+
+// Storey s (from 0): its floor with the floor's mass, its column and its drift monitor.
+void add_storey(const Building& building, std::size_t s, const std::vector<double>& contacts,
+                ModelSpec& out) {
+  const StoreySpec& storey = building.spec.storeys[s];
+  const std::string floor = floor_node_id(building, s + 1);
+  out.nodes.push_back({floor, building.x, building.heights[s + 1]});
+  // A rigid floor: it sways, it neither rises nor turns.
+  out.supports.push_back({floor, false, true, true});
+  const std::optional<double> mass_damping =
+      building.rayleigh ? std::optional<double>((*building.rayleigh)[0]) : std::nullopt;
+  out.masses.push_back({floor, storey.mass, 0.0, mass_damping});
+  const std::vector<std::string> chain = add_column_cuts(building, s, contacts, out);
+  const double inertia = storey.stiffness * std::pow(storey.height, 3) / 12.0;  // E = 1
+  for (std::size_t c = 0; c + 1 < chain.size(); ++c) {
+    ElementSpec column = make_beam(fmt::format("{}.c{}", storey_id(building, s), c), chain[c],
+                                   chain[c + 1], building.material, 1.0, inertia);
+    column.rayleigh = building.rayleigh;
+    out.elements.push_back(column);
   }
+  out.drift_monitors.push_back({storey_id(building, s), "storey", building.name, chain.front(),
+                                floor, storey.height, std::nullopt});
+}
+
+void add_building(const Building& building, const std::vector<double>& contacts, ModelSpec& out) {
+  // Columns carry only the storey stiffness; floors and their masses are at the nodes.
+  out.materials.push_back({building.material, 1.0, 0.0});
+  const std::string base = floor_node_id(building, 0);
+  out.nodes.push_back({base, building.x, 0.0});
+  out.supports.push_back({base, true, true, true});
+  for (std::size_t s = 0; s < building.spec.storeys.size(); ++s)
+    add_storey(building, s, contacts, out);
+}
+
+// The node of a building at a contact height: its floor there, or the cut in its column.
+std::string contact_node(const Building& building, double h) {
+  std::string node;
+  for (std::size_t f = 1; f < building.heights.size(); ++f)
+    if (std::abs(building.heights[f] - h) <= 1e-9 * h) node = floor_node_id(building, f);
+  if (node.empty())
+    for (std::size_t s = 0; s < building.spec.storeys.size(); ++s)
+      if (h > building.heights[s] && h < building.heights[s + 1])
+        node = cut_node_id(building, s, h);
+  return node;
+}
+
+// The mass of the building's floor at or just above a contact height.
+double floor_mass_near(const Building& building, double h) {
+  for (std::size_t s = 0; s < building.spec.storeys.size(); ++s)
+    if (h <= building.heights[s + 1] * (1 + 1e-12)) return building.spec.storeys[s].mass;
+  return building.spec.storeys.back().mass;
+}
+
+void add_pounding_links(const AdjacentBuildingsSpec& pair, const std::array<Building, 2>& buildings,
+                        const std::vector<double>& contacts, ModelSpec& out) {
   // Laws that calibrate with the effective mass get that of the floors nearest each contact
   // (a contact point on a column carries no mass of its own).
-  auto floor_mass_near = [&](int side, double h) {
-    const BuildingSpec& building = *buildings[side];
-    for (std::size_t s = 0; s < building.storeys.size(); ++s)
-      if (h <= heights[side][s + 1] * (1 + 1e-12)) return building.storeys[s].mass;
-    return building.storeys.back().mass;
-  };
   const links::LawEntry* law = links::find_law(pair.law.type);
   const bool uses_mass = law && law->accepts("mass", pair.law);
-  for (std::size_t c = 0; c < contacts.size(); ++c) {
-    LinkSpec link;
-    link.id = fmt::format("{}.pounding.at{:g}", pair.id, contacts[c]);
-    link.node_i = contact_nodes[0][c];
-    link.node_j = contact_nodes[1][c];
-    link.gap = pair.separation;
-    link.axis = std::vector<double>{1.0, 0.0};
-    link.law = pair.law;
+  for (double h : contacts) {
+    LinkSpec link =
+        make_link(fmt::format("{}.pounding.at{:g}", pair.id, h), contact_node(buildings[0], h),
+                  contact_node(buildings[1], h), {1.0, 0.0}, pair.separation, pair.law);
     if (uses_mass && !pair.law.number("mass")) {
-      const double m1 = floor_mass_near(0, contacts[c]), m2 = floor_mass_near(1, contacts[c]);
+      const double m1 = floor_mass_near(buildings[0], h), m2 = floor_mass_near(buildings[1], h);
       link.law.parameters["mass"] = m1 * m2 / (m1 + m2);
     }
     out.links.push_back(link);
   }
+}
+
+}  // namespace
+
+std::string building_node_id(const AdjacentBuildingsSpec& pair, int side, int floor) {
+  return fmt::format("{}.{}.f{}", pair.id, kPairSides[side], floor);
+}
+
+void add_adjacent_buildings(const AdjacentBuildingsSpec& pair, ModelSpec& out) {
+  const std::array<Building, 2> buildings{make_building(pair, 0), make_building(pair, 1)};
+  const std::vector<double> contacts = contact_heights(buildings);
+  for (const Building& building : buildings) add_building(building, contacts, out);
+  add_pounding_links(pair, buildings, contacts, out);
 }
 
 }  // namespace pound::builder

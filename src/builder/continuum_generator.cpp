@@ -55,16 +55,10 @@ std::vector<std::string> resolve_nodes(const ModelSpec& out,
   return ids;
 }
 
-}  // namespace
-
-std::string block_node_id(const BlockSpec& block, int column, int row) {
-  return fmt::format("{}.{}.{}", block.id, column, row);
-}
-
-void add_block(const BlockSpec& block, ModelSpec& out) {
+// Numbered across the shorter side first: the narrowest band of K.
+void add_block_nodes(const BlockSpec& block, ModelSpec& out) {
   const int n = block.columns, m = block.rows;
   const double dx = block.width / n, dy = block.height / m;
-  // Numbered across the shorter side first: the narrowest band of K.
   auto add_node = [&](int i, int j) {
     const std::string id = block_node_id(block, i, j);
     out.nodes.push_back({id, block.origin[0] + (i == n ? block.width : i * dx),
@@ -79,8 +73,11 @@ void add_block(const BlockSpec& block, ModelSpec& out) {
     for (int i = 0; i <= n; ++i)
       for (int j = 0; j <= m; ++j) add_node(i, j);
   }
-  for (int j = 0; j < m; ++j)
-    for (int i = 0; i < n; ++i) {
+}
+
+void add_block_quads(const BlockSpec& block, ModelSpec& out) {
+  for (int j = 0; j < block.rows; ++j)
+    for (int i = 0; i < block.columns; ++i) {
       ElementSpec quad;
       quad.id = fmt::format("{}.e{}.{}", block.id, i, j);
       quad.type = "quad";
@@ -93,34 +90,104 @@ void add_block(const BlockSpec& block, ModelSpec& out) {
       quad.consistent_mass = block.consistent_mass;
       out.elements.push_back(std::move(quad));
     }
-  // Edges counter-clockwise round the block (the body on the left of each chain).
+}
+
+// Edges counter-clockwise round the block (the body on the left of each chain), as kEdges.
+std::array<std::vector<std::string>, 4> block_edges(const BlockSpec& block) {
+  const int n = block.columns, m = block.rows;
   std::array<std::vector<std::string>, 4> edges;
   for (int i = 0; i <= n; ++i) edges[0].push_back(block_node_id(block, i, 0));
   for (int j = 0; j <= m; ++j) edges[1].push_back(block_node_id(block, n, j));
   for (int i = n; i >= 0; --i) edges[2].push_back(block_node_id(block, i, m));
   for (int j = m; j >= 0; --j) edges[3].push_back(block_node_id(block, 0, j));
+  return edges;
+}
+
+// A pressure p on an edge: p t h / 2 on each end of each element side, pushing inwards
+// (the exact consistent loads of a uniform traction on a linear side).
+void add_edge_pressure(const BlockSpec& block, const std::vector<std::string>& chain, double p,
+                       const std::map<std::string, std::size_t>& at, ModelSpec& out) {
+  std::map<std::string, std::array<double, 2>> loads;
+  for (std::size_t s = 0; s + 1 < chain.size(); ++s) {
+    const auto a = position(out, at, chain[s], "/generators");
+    const auto b = position(out, at, chain[s + 1], "/generators");
+    // Inward normal times the side's length: the chain direction rotated +90 degrees.
+    const double fx = -(b[1] - a[1]) * p * block.thickness / 2;
+    const double fy = (b[0] - a[0]) * p * block.thickness / 2;
+    for (const std::string& id : {chain[s], chain[s + 1]}) {
+      loads[id][0] += fx;
+      loads[id][1] += fy;
+    }
+  }
+  for (const std::string& id : chain) out.loads.push_back({id, loads[id][0], loads[id][1]});
+}
+
+// The link from node `id` to the nearest segment of `chain` (the chain's nodes in order); its
+// normal points out of the body on the chain's left.
+LinkSpec link_to_nearest_segment(const ContactSpec& contact, const std::string& id,
+                                 const std::vector<std::string>& chain, const ModelSpec& out,
+                                 const std::map<std::string, std::size_t>& at,
+                                 const std::string& path) {
+  const auto p = position(out, at, id, path + "/nodes");
+  double best = std::numeric_limits<double>::infinity();
+  LinkSpec link;
+  for (std::size_t s = 0; s + 1 < chain.size(); ++s) {
+    const auto a = position(out, at, chain[s], path + "/segments");
+    const auto b = position(out, at, chain[s + 1], path + "/segments");
+    const double sx = b[0] - a[0], sy = b[1] - a[1], length = std::hypot(sx, sy);
+    if (!(length > 0.0))
+      throw InputError(
+          out.source, path + "/segments",
+          fmt::format("nodes '{}' and '{}' are at the same place", chain[s], chain[s + 1]));
+    const double w =
+        std::clamp(((p[0] - a[0]) * sx + (p[1] - a[1]) * sy) / (length * length), 0.0, 1.0);
+    const double cx = a[0] + w * sx - p[0], cy = a[1] + w * sy - p[1];
+    const double distance = std::hypot(cx, cy);
+    if (distance >= best) continue;
+    best = distance;
+    // From the node towards the segment: minus the outward normal (sy, -sx) / length.
+    const std::array<double, 2> axis{-sy / length, sx / length};
+    const double gap = cx * axis[0] + cy * axis[1];
+    if (gap < -1e-9 * length)
+      throw InputError(out.source, path + "/nodes",
+                       fmt::format("node '{}' starts {:g} inside the body behind segment "
+                                   "'{}'-'{}' (segments must run counter-clockwise round "
+                                   "their body)",
+                                   id, -gap, chain[s], chain[s + 1]));
+    link = LinkSpec{};
+    link.id = fmt::format("{}.{}", contact.id, id);
+    link.node_i = id;
+    link.axis = std::vector<double>{axis[0], axis[1]};
+    link.gap = std::max(gap, 0.0);
+    constexpr double kAtEnd = 1e-9;
+    if (w <= kAtEnd) {
+      link.node_j = chain[s];
+    } else if (w >= 1.0 - kAtEnd) {
+      link.node_j = chain[s + 1];
+    } else {
+      link.node_j = chain[s];
+      link.segment_end = chain[s + 1];
+    }
+  }
+  return link;
+}
+
+}  // namespace
+
+std::string block_node_id(const BlockSpec& block, int column, int row) {
+  return fmt::format("{}.{}.{}", block.id, column, row);
+}
+
+void add_block(const BlockSpec& block, ModelSpec& out) {
+  add_block_nodes(block, out);
+  add_block_quads(block, out);
+  const std::array<std::vector<std::string>, 4> edges = block_edges(block);
   const std::map<std::string, std::size_t> at = node_positions(out);
   for (int e = 0; e < 4; ++e) {
     const auto& chain = edges[static_cast<std::size_t>(e)];
     out.node_sets[fmt::format("{}.{}", block.id, kEdges[e])] = chain;
-    // A pressure p on an edge: p t h / 2 on each end of each element side, pushing inwards
-    // (the exact consistent loads of a uniform traction on a linear side).
     const double p = block.pressure[static_cast<std::size_t>(e)];
-    if (p != 0.0) {
-      std::map<std::string, std::array<double, 2>> loads;
-      for (std::size_t s = 0; s + 1 < chain.size(); ++s) {
-        const auto a = position(out, at, chain[s], "/generators");
-        const auto b = position(out, at, chain[s + 1], "/generators");
-        // Inward normal times the side's length: the chain direction rotated +90 degrees.
-        const double fx = -(b[1] - a[1]) * p * block.thickness / 2;
-        const double fy = (b[0] - a[0]) * p * block.thickness / 2;
-        for (const std::string& id : {chain[s], chain[s + 1]}) {
-          loads[id][0] += fx;
-          loads[id][1] += fy;
-        }
-      }
-      for (const std::string& id : chain) out.loads.push_back({id, loads[id][0], loads[id][1]});
-    }
+    if (p != 0.0) add_edge_pressure(block, chain, p, at, out);
     if (std::find(block.fixed_edges.begin(), block.fixed_edges.end(), kEdges[e]) !=
         block.fixed_edges.end())
       for (const std::string& id : chain) out.supports.push_back({id, true, true, false});
@@ -144,13 +211,9 @@ void add_surface(const SurfaceSpec& surface, ModelSpec& out) {
                        fmt::format("node '{}' is {:g} below the surface (behind its normal): "
                                    "bodies must start clear of or touching a surface",
                                    ids[k], -height));
-    LinkSpec link;
-    link.id = fmt::format("{}.{}", surface.id, ids[k]);
-    link.node_i = ids[k];
-    link.node_j = surface.id;
-    link.gap = std::max(height, 0.0);
-    link.axis = std::vector<double>{-surface.normal[0], -surface.normal[1]};
-    link.law = surface.law;
+    LinkSpec link =
+        make_link(fmt::format("{}.{}", surface.id, ids[k]), ids[k], surface.id,
+                  {-surface.normal[0], -surface.normal[1]}, std::max(height, 0.0), surface.law);
     link.friction = surface.friction;
     link.velocity_j = surface.velocity;
     out.links.push_back(std::move(link));
@@ -167,48 +230,7 @@ void add_contact(const ContactSpec& contact, ModelSpec& out) {
     throw InputError(out.source, path + "/segments",
                      "needs a chain of at least two nodes (one segment)");
   for (const std::string& id : nodes) {
-    const auto p = position(out, at, id, path + "/nodes");
-    // The nearest segment; its normal points out of the body on the chain's left.
-    double best = std::numeric_limits<double>::infinity();
-    LinkSpec link;
-    for (std::size_t s = 0; s + 1 < chain.size(); ++s) {
-      const auto a = position(out, at, chain[s], path + "/segments");
-      const auto b = position(out, at, chain[s + 1], path + "/segments");
-      const double sx = b[0] - a[0], sy = b[1] - a[1], length = std::hypot(sx, sy);
-      if (!(length > 0.0))
-        throw InputError(
-            out.source, path + "/segments",
-            fmt::format("nodes '{}' and '{}' are at the same place", chain[s], chain[s + 1]));
-      const double w =
-          std::clamp(((p[0] - a[0]) * sx + (p[1] - a[1]) * sy) / (length * length), 0.0, 1.0);
-      const double cx = a[0] + w * sx - p[0], cy = a[1] + w * sy - p[1];
-      const double distance = std::hypot(cx, cy);
-      if (distance >= best) continue;
-      best = distance;
-      // From the node towards the segment: minus the outward normal (sy, -sx) / length.
-      const std::array<double, 2> axis{-sy / length, sx / length};
-      const double gap = cx * axis[0] + cy * axis[1];
-      if (gap < -1e-9 * length)
-        throw InputError(out.source, path + "/nodes",
-                         fmt::format("node '{}' starts {:g} inside the body behind segment "
-                                     "'{}'-'{}' (segments must run counter-clockwise round "
-                                     "their body)",
-                                     id, -gap, chain[s], chain[s + 1]));
-      link = LinkSpec{};
-      link.id = fmt::format("{}.{}", contact.id, id);
-      link.node_i = id;
-      link.axis = std::vector<double>{axis[0], axis[1]};
-      link.gap = std::max(gap, 0.0);
-      constexpr double kAtEnd = 1e-9;
-      if (w <= kAtEnd) {
-        link.node_j = chain[s];
-      } else if (w >= 1.0 - kAtEnd) {
-        link.node_j = chain[s + 1];
-      } else {
-        link.node_j = chain[s];
-        link.segment_end = chain[s + 1];
-      }
-    }
+    LinkSpec link = link_to_nearest_segment(contact, id, chain, out, at, path);
     if (link.node_j == id)
       throw InputError(out.source, path + "/nodes",
                        fmt::format("node '{}' is also on the facing boundary", id));

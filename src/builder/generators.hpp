@@ -23,6 +23,13 @@ void add_contact(const ContactSpec& contact, ModelSpec& out);
 std::string block_node_id(const BlockSpec& block, int column, int row);
 std::string building_node_id(const AdjacentBuildingsSpec& pair, int side, int floor);
 
+// Parts the generators share.
+inline constexpr const char* kPairSides[] = {"left", "right"};  // side 0 and 1 in generated ids
+LinkSpec make_link(const std::string& id, const std::string& node_i, const std::string& node_j,
+                   std::vector<double> axis, double gap, const LawSpec& law);
+ElementSpec make_beam(const std::string& id, const std::string& node_i, const std::string& node_j,
+                      const std::string& material, double area, double inertia);
+
 // Generated ids, shared with whoever looks the generated parts up again.
 std::string rod_node_id(const RodPairSpec& pair, int rod, int index);  // rod 0 left, 1 right
 std::string rod_link_id(const RodPairSpec& pair);

@@ -198,11 +198,24 @@ struct ExactRodImpact::Impl {
         gap0(initial_gap),
         t_end(end_time),
         time_tolerance(kRelativeTimeTolerance *
-                       std::max({end_time, rods[0].round_trip(), rods[1].round_trip()})) {
+                       std::max({end_time, rods[0].round_trip(), rods[1].round_trip()})),
+        effective_impedance(rods[0].impedance() * rods[1].impedance() /
+                            (rods[0].impedance() + rods[1].impedance())),
+        force_tolerance(kRelativeForceTolerance * effective_impedance *
+                        (std::abs(left.initial_velocity) + std::abs(right.initial_velocity))) {
     solve();
   }
 
+  // The next event after a phase: when an incoming wave changes or the gap closes first.
+  struct Event {
+    double time = 0.0;
+    bool gap_closes = false;
+  };
+
   void solve();
+  Phase phase_from(double time, double gap, const std::array<double, 2>& incoming) const;
+  Event next_event(const Phase& phase, double lookup_time) const;
+  void list_contacts();
   const Phase& phase_at(double time) const { return phases[index_at(phases, time)]; }
   // Times a rounding error outside [0, t_end] (as from t_end * i / n) are taken as the end.
   double checked_time(double time, const char* query) const {
@@ -223,21 +236,15 @@ struct ExactRodImpact::Impl {
   std::array<RodHistory, 2> rods;
   double gap0;
   double t_end;
-  double time_tolerance;  // events closer than this are one (see kRelativeTimeTolerance)
+  double time_tolerance;       // events closer than this are one (see kRelativeTimeTolerance)
+  double effective_impedance;  // Z_eff = Z_left*Z_right/(Z_left + Z_right)
+  double force_tolerance;      // see kRelativeForceTolerance
   std::vector<Phase> phases;
   std::vector<ContactInterval> contact_intervals;
   std::vector<double> breakpoints;
 };
 
 void ExactRodImpact::Impl::solve() {
-  const double left_impedance = rods[0].impedance();
-  const double right_impedance = rods[1].impedance();
-  const double effective_impedance =
-      left_impedance * right_impedance / (left_impedance + right_impedance);
-  const double force_tolerance =
-      kRelativeForceTolerance * effective_impedance *
-      (std::abs(rods[0].rod().initial_velocity) + std::abs(rods[1].rod().initial_velocity));
-
   double time = 0.0;
   double gap_now = gap0;
   for (;;) {
@@ -250,45 +257,61 @@ void ExactRodImpact::Impl::solve() {
     const double lookup_time = time + time_tolerance;
     const std::array<double, 2> incoming{rods[0].incoming(lookup_time),
                                          rods[1].incoming(lookup_time)};
-    const double free_gap_rate = incoming[0] / left_impedance + incoming[1] / right_impedance;
-    const double stuck_contact_force = -effective_impedance * free_gap_rate;
-    const bool touching =
-        gap_now <= 0.0 || (free_gap_rate < 0.0 && gap_now <= -free_gap_rate * time_tolerance);
-
-    Phase phase{time, false, 0.0, touching ? 0.0 : gap_now, free_gap_rate};
-    if (touching && stuck_contact_force > force_tolerance) {
-      phase.in_contact = true;
-      phase.contact_force = stuck_contact_force;
-      phase.gap_rate = 0.0;
-    } else if (touching && stuck_contact_force >= -force_tolerance) {
-      phase.gap_rate = 0.0;  // no force either way: the faces move on together
-    }
-    phases.push_back(phase);
+    phases.push_back(phase_from(time, gap_now, incoming));
+    const Phase& phase = phases.back();
     const double face_axial_force = -phase.contact_force;
     for (std::size_t k = 0; k < 2; ++k) {
       rods[k].record_face(time, face_axial_force, 2.0 * face_axial_force - incoming[k]);
     }
 
     // After recording: what the faces emit now returns 2L/C later.
-    double next_time = std::min(rods[0].next_incoming_change(lookup_time),
-                                rods[1].next_incoming_change(lookup_time));
-    bool gap_closes = false;
-    if (!phase.in_contact && phase.gap_rate < 0.0) {
-      const double closing_time = time + phase.gap_at_start / -phase.gap_rate;
-      if (closing_time < next_time) {
-        next_time = closing_time;
-        gap_closes = true;
-      }
-    }
+    const Event next = next_event(phase, lookup_time);
     // An event at t_end (up to rounding) is solved too: queries at t_end return the state
     // after it, as at any other jump.
-    if (next_time > t_end + time_tolerance) break;
-    next_time = std::min(next_time, t_end);
-    gap_now =
-        gap_closes ? 0.0 : std::max(0.0, phase.gap_at_start + phase.gap_rate * (next_time - time));
+    if (next.time > t_end + time_tolerance) break;
+    const double next_time = std::min(next.time, t_end);
+    gap_now = next.gap_closes
+                  ? 0.0
+                  : std::max(0.0, phase.gap_at_start + phase.gap_rate * (next_time - time));
     time = next_time;
   }
+  list_contacts();
+}
 
+// The interface from `time` on, with `gap` between the faces then and `incoming` arriving at them.
+Phase ExactRodImpact::Impl::phase_from(double time, double gap,
+                                       const std::array<double, 2>& incoming) const {
+  const double free_gap_rate =
+      incoming[0] / rods[0].impedance() + incoming[1] / rods[1].impedance();
+  const double stuck_contact_force = -effective_impedance * free_gap_rate;
+  const bool touching =
+      gap <= 0.0 || (free_gap_rate < 0.0 && gap <= -free_gap_rate * time_tolerance);
+
+  Phase phase{time, false, 0.0, touching ? 0.0 : gap, free_gap_rate};
+  if (touching && stuck_contact_force > force_tolerance) {
+    phase.in_contact = true;
+    phase.contact_force = stuck_contact_force;
+    phase.gap_rate = 0.0;
+  } else if (touching && stuck_contact_force >= -force_tolerance) {
+    phase.gap_rate = 0.0;  // no force either way: the faces move on together
+  }
+  return phase;
+}
+
+ExactRodImpact::Impl::Event ExactRodImpact::Impl::next_event(const Phase& phase,
+                                                             double lookup_time) const {
+  Event next{std::min(rods[0].next_incoming_change(lookup_time),
+                      rods[1].next_incoming_change(lookup_time)),
+             false};
+  if (!phase.in_contact && phase.gap_rate < 0.0) {
+    const double closing_time = phase.start + phase.gap_at_start / -phase.gap_rate;
+    if (closing_time < next.time) next = {closing_time, true};
+  }
+  return next;
+}
+
+// The contact intervals and the instants the force jumps, from the phases.
+void ExactRodImpact::Impl::list_contacts() {
   for (std::size_t i = 0; i < phases.size(); ++i) {
     const double end = i + 1 < phases.size() ? phases[i + 1].start : t_end;
     if (phases[i].start >= t_end) break;  // the state after an event at t_end

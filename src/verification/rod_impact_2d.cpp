@@ -13,6 +13,8 @@
 namespace pound::verification {
 namespace {
 
+constexpr const char* kStrips[] = {"left", "right"};  // block and material ids of rods 0 and 1
+
 double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at) {
   if (x.empty()) return 0.0;
   if (at <= x.front()) return y.front();
@@ -33,60 +35,52 @@ double l2_error(const std::vector<double>& time, const std::vector<double>& forc
   return norm > 0.0 ? std::sqrt(error / norm) : 0.0;
 }
 
-}  // namespace
-
-RodImpact2dOptions suzuki_toi_rods_2d() {
-  RodImpact2dOptions options;
-  options.pair = rod_impact_case("fixed-end", 50, 1.0, "extended_penalty", 1.0);
-  return options;
-}
-
-RodImpact2dResult run_rod_impact_2d(const RodImpact2dOptions& options) {
-  const builder::RodPairSpec& pair = options.pair;
-  RodImpact2dResult result;
-  const auto [first_contact, exact_duration] = exact_contact_window(pair);
-  result.exact_duration = exact_duration;
-  const double end_time = first_contact + options.duration_ratio * exact_duration;
-
-  // The 1-D model, central difference like the strips.
+// The 1-D model, central difference like the strips.
+RodImpactResult run_rods(const RodImpact2dOptions& options) {
   RodImpactOptions one_d;
-  one_d.pair = pair;
+  one_d.pair = options.pair;
   one_d.integrator = integrators::IntegratorChoice::preset("central_difference");
   one_d.stable_fraction = options.stable_fraction;
   one_d.duration_ratio = options.duration_ratio;
-  const RodImpactResult rods = run_rod_impact(one_d);
-  result.steps_1d = rods.metrics.steps;
+  return run_rod_impact(one_d);
+}
 
-  // The strips: square sections of side sqrt(A), plane stress of thickness sqrt(A).
+// Rod r (0 left, 1 right) as a strip: a square section of side sqrt(A), plane stress of
+// thickness sqrt(A).
+builder::BlockSpec strip(const RodImpact2dOptions& options, int r) {
+  const builder::RodSpec& rod = r == 0 ? options.pair.left : options.pair.right;
+  const double side = std::sqrt(rod.area);
+  builder::BlockSpec block;
+  block.id = kStrips[r];
+  block.origin = {r == 0 ? -rod.length : options.pair.gap, -side / 2};
+  block.width = rod.length;
+  block.height = side;
+  block.columns = rod.elements;
+  block.rows = r == 1 && options.elements_across_struck > 0 ? options.elements_across_struck
+                                                            : options.elements_across;
+  block.material = kStrips[r];
+  block.thickness = side;
+  block.initial_velocity = {rod.initial_velocity, 0.0};
+  if (rod.far_end_fixed) block.fixed_edges = {r == 0 ? "left" : "right"};
+  block.generator_index = r;
+  return block;
+}
+
+// The strips, in contact at their facing edges, run by central difference to `end_time`.
+builder::ModelSpec strips_spec(const RodImpact2dOptions& options, double end_time) {
   builder::ModelSpec spec;
   spec.source = "rod-impact-2d";
   spec.dimension = 2;
-  const builder::RodSpec* rods_spec[2] = {&pair.left, &pair.right};
-  const char* names[2] = {"left", "right"};
   for (int r = 0; r < 2; ++r) {
-    const builder::RodSpec& rod = *rods_spec[r];
-    const double side = std::sqrt(rod.area);
-    spec.materials.push_back({names[r], rod.youngs_modulus, rod.density, options.poisson_ratio});
-    builder::BlockSpec block;
-    block.id = names[r];
-    block.origin = {r == 0 ? -rod.length : pair.gap, -side / 2};
-    block.width = rod.length;
-    block.height = side;
-    block.columns = rod.elements;
-    block.rows = r == 1 && options.elements_across_struck > 0 ? options.elements_across_struck
-                                                              : options.elements_across;
-    block.material = names[r];
-    block.thickness = side;
-    block.initial_velocity = {rod.initial_velocity, 0.0};
-    if (rod.far_end_fixed) block.fixed_edges = {r == 0 ? "left" : "right"};
-    block.generator_index = r;
-    spec.blocks.push_back(block);
+    const builder::RodSpec& rod = r == 0 ? options.pair.left : options.pair.right;
+    spec.materials.push_back({kStrips[r], rod.youngs_modulus, rod.density, options.poisson_ratio});
+    spec.blocks.push_back(strip(options, r));
   }
   builder::ContactSpec contact;
   contact.id = "interface";
   contact.nodes = {"left.right"};
   contact.segments = {"right.left"};
-  contact.law = pair.law;
+  contact.law = options.pair.law;
   contact.friction = builder::FrictionSpec{options.friction, {}, {}, {}};
   spec.contacts.push_back(contact);
   spec.analysis.integrator = integrators::IntegratorChoice::preset("central_difference");
@@ -94,6 +88,11 @@ RodImpact2dResult run_rod_impact_2d(const RodImpact2dOptions& options) {
   spec.analysis.safety_factor = options.stable_fraction;
   spec.analysis.duration = end_time;
   spec.recorders_given = true;
+  return spec;
+}
+
+// Runs the strips: the total normal force of the contact links at each step into `result`.
+void run_strips(const builder::ModelSpec& spec, RodImpact2dResult& result) {
   builder::BuiltModel built = builder::build(spec);
   assembly::StructuralSystem system(built.model);
   builder::settle_time_step(built.analysis, built.model, system, spec.source);
@@ -117,13 +116,17 @@ RodImpact2dResult run_rod_impact_2d(const RodImpact2dOptions& options) {
   result.run_time_2d_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   result.steps_2d = stats.steps;
+}
 
-  const ExactRodImpact exact = exact_solution(pair, end_time);
+// The exact force and the 1-D one at the strips' steps, the errors and the peaks.
+void compare_forces(const RodImpact2dOptions& options, const RodImpactResult& rods,
+                    double first_contact, double end_time, RodImpact2dResult& result) {
+  const ExactRodImpact exact = exact_solution(options.pair, end_time);
   for (double t : result.time) {
     result.exact_force.push_back(exact.contact_force(t));
     result.force_1d.push_back(interpolate(rods.time, rods.force, t));
   }
-  const double window_end = first_contact + 1.5 * exact_duration;
+  const double window_end = first_contact + 1.5 * result.exact_duration;
   result.force_l2_error_2d = l2_error(result.time, result.force_2d, result.exact_force, window_end);
   // The 1-D error on its own steps, as `verify rod-impact` reports it.
   result.force_l2_error_1d = rods.metrics.force_l2_error;
@@ -132,6 +135,25 @@ RodImpact2dResult run_rod_impact_2d(const RodImpact2dOptions& options) {
     result.exact_peak_force = std::max(result.exact_peak_force, result.exact_force[k]);
   }
   for (double f : rods.force) result.peak_force_1d = std::max(result.peak_force_1d, f);
+}
+
+}  // namespace
+
+RodImpact2dOptions suzuki_toi_rods_2d() {
+  RodImpact2dOptions options;
+  options.pair = rod_impact_case("fixed-end", 50, 1.0, "extended_penalty", 1.0);
+  return options;
+}
+
+RodImpact2dResult run_rod_impact_2d(const RodImpact2dOptions& options) {
+  RodImpact2dResult result;
+  const auto [first_contact, exact_duration] = exact_contact_window(options.pair);
+  result.exact_duration = exact_duration;
+  const double end_time = first_contact + options.duration_ratio * exact_duration;
+  const RodImpactResult rods = run_rods(options);
+  result.steps_1d = rods.metrics.steps;
+  run_strips(strips_spec(options, end_time), result);
+  compare_forces(options, rods, first_contact, end_time, result);
   return result;
 }
 
