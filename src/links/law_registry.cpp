@@ -17,6 +17,7 @@
 #include "links/jankowski.hpp"
 #include "links/kelvin_voigt.hpp"
 #include "links/restrainer.hpp"
+#include "links/viscous_damper.hpp"
 
 namespace pound::links {
 
@@ -89,6 +90,7 @@ const std::vector<const LawEntry*>& law_registry() {
       &ElasticSpring::entry(),
       &BilinearSpring::entry(),
       &Backfill::entry(),
+      &ViscousDamper::entry(),
   };
   // clang-format on
   return entries;
