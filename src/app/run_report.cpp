@@ -32,8 +32,8 @@ std::string link_lines(const results::RunSummary& run) {
     }
   }
   if (springs > 0)
-    text += fmt::format("  {} spring link(s) (bearings, hinges): largest force {:.6g}\n", springs,
-                        spring_force);
+    text += fmt::format("  {} spring link(s) (bearings, hinges, dampers): largest force {:.6g}\n",
+                        springs, spring_force);
   return text;
 }
 

@@ -36,7 +36,7 @@ const LawEntry& ViscousDamper::entry() {
                       "v_l, below which the force is linear (needed when α < 1)"}},
       .required = {"coefficient"},
       .traits = {.role = LinkRole::spring, .stiff_at_first_touch = false, .penalty = false},
-      .example = {{"coefficient", 2e6}, {"exponent", 0.35}, {"linear_velocity", 1e-3}},
+      .example = {{"coefficient", 2e6}, {"exponent", 0.35}, {"linear_velocity", 1e-2}},
       .make = [](const LawSpec& law, const LawSource& where) -> LawFactory {
         const double c = *law.number("coefficient");
         const double alpha = law.number("exponent").value_or(1.0);

@@ -9,7 +9,9 @@
 // alpha = 1 is a linear dashpot; alpha < 1 (0.3 to 0.5 for seismic dampers) limits the force at
 // high velocity. Below v_l the force is linear, so that the tangent c alpha |d'|^(alpha - 1),
 // infinite at rest, stays finite and Newton converges (the force is continuous at v_l, the
-// tangent jumps by the factor alpha). F > 0 in compression (the link closing), < 0 opening.
+// tangent jumps by the factor alpha). v_l near 1 % of the expected peak speed keeps Newton's
+// iteration converging (at 0.1 % the steep tangent near rest cost 5 % of the steps a cut on the
+// two-girder example). F > 0 in compression (the link closing), < 0 opening.
 // A cycle d = X sin(w t) dissipates c w^alpha X^(1 + alpha) 2^(2 + alpha) G(1 + alpha/2)^2 /
 // G(2 + alpha) (G: the gamma function; pi c w X^2 when alpha = 1), v_l << w X.
 // Units: c [F (T/L)^alpha], alpha [-], v_l [L/T]. No history.
