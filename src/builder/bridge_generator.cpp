@@ -76,8 +76,8 @@ void add_pier(const Bridge& bridge, int pier, ModelSpec& out) {
              spec.pier, out);
     previous = node;
   }
-  out.drift_monitors.push_back({fmt::format("{}.p{}", spec.id, pier), "pier", spec.id, base, top,
-                                bridge.deck, spec.pier_yield_drift});
+  out.drift_monitors.push_back({fmt::format("{}.p{}", spec.id, pier), DriftKind::pier, spec.id,
+                                base, top, bridge.deck, spec.pier_yield_drift});
 }
 
 // Where the girder is cut, as span numbers: 0 and the last at the abutments, and the expansion

@@ -133,8 +133,8 @@ void add_storey(const Building& building, std::size_t s, const std::vector<doubl
     column.rayleigh = building.rayleigh;
     out.elements.push_back(column);
   }
-  out.drift_monitors.push_back({storey_id(building, s), "storey", building.name, chain.front(),
-                                floor, storey.height, std::nullopt});
+  out.drift_monitors.push_back({storey_id(building, s), DriftKind::storey, building.name,
+                                chain.front(), floor, storey.height, std::nullopt});
 }
 
 void add_building(const Building& building, const std::vector<double>& contacts, ModelSpec& out) {

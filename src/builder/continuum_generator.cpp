@@ -80,7 +80,7 @@ void add_block_quads(const BlockSpec& block, ModelSpec& out) {
     for (int i = 0; i < block.columns; ++i) {
       ElementSpec quad;
       quad.id = fmt::format("{}.e{}.{}", block.id, i, j);
-      quad.type = "quad";
+      quad.type = ElementKind::quad;
       quad.node_i = block_node_id(block, i, j);
       quad.node_j = block_node_id(block, i + 1, j);
       quad.more_nodes = {block_node_id(block, i + 1, j + 1), block_node_id(block, i, j + 1)};

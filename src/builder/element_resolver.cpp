@@ -85,7 +85,7 @@ std::shared_ptr<const model::Element> make_two_node(const Scene& scene, const El
     scene.fail(path + "/nodes", fmt::format("element '{}' is infinitely long (nodes '{}' and '{}' "
                                             "are {:g} apart)",
                                             element.id, element.node_i, element.node_j, length));
-  if (element.type == "beam")
+  if (element.type == ElementKind::beam)
     return std::make_shared<const assembly::Beam>(
         element.id, ends,
         assembly::Beam::Section{.youngs_modulus = material.youngs_modulus,
@@ -126,14 +126,15 @@ std::vector<std::shared_ptr<const model::Element>> resolve_elements(const Resolv
     std::optional<model::RayleighDamping> own;
     if (element.rayleigh)
       own = model::RayleighDamping{(*element.rayleigh)[0], (*element.rayleigh)[1]};
-    quads = quads || element.type == "quad";
-    beams = beams || element.type == "beam";
-    elements.push_back(element.type == "quad" ? make_quad(scene, element, path, nodes, m, own)
-                                              : make_two_node(scene, element, path, nodes, m, own));
+    quads = quads || element.type == ElementKind::quad;
+    beams = beams || element.type == ElementKind::beam;
+    elements.push_back(element.type == ElementKind::quad
+                           ? make_quad(scene, element, path, nodes, m, own)
+                           : make_two_node(scene, element, path, nodes, m, own));
   }
   if (quads && beams)
     for (std::size_t k = 0; k < spec.elements.size(); ++k)
-      if (spec.elements[k].type == "quad")
+      if (spec.elements[k].type == ElementKind::quad)
         scene.fail(origin(k) + "/type",
                    "quads (2 DOFs per node) cannot share a scene with beams (3 DOFs per node)");
   return elements;

@@ -26,9 +26,9 @@ void add_rod(const RodPairSpec& pair, int side, ModelSpec& out) {
       out.initial_velocities.push_back({rod_node_id(pair, side, i), rod.initial_velocity, 0.0});
   }
   for (int e = 0; e < rod.elements; ++e)
-    out.elements.push_back({fmt::format("{}.{}.e{}", pair.id, kPairSides[side], e), "truss",
-                            rod_node_id(pair, side, e), rod_node_id(pair, side, e + 1), material,
-                            rod.area});
+    out.elements.push_back({fmt::format("{}.{}.e{}", pair.id, kPairSides[side], e),
+                            ElementKind::truss, rod_node_id(pair, side, e),
+                            rod_node_id(pair, side, e + 1), material, rod.area});
   if (rod.far_end_fixed)
     out.supports.push_back({rod_node_id(pair, side, side == 0 ? 0 : rod.elements), true, false});
 }
@@ -92,7 +92,7 @@ ElementSpec make_beam(const std::string& id, const std::string& node_i, const st
                       const std::string& material, double area, double inertia) {
   ElementSpec beam;
   beam.id = id;
-  beam.type = "beam";
+  beam.type = ElementKind::beam;
   beam.node_i = node_i;
   beam.node_j = node_j;
   beam.material = material;

@@ -11,8 +11,8 @@ std::vector<Index> every(std::size_t count) {
 
 ResolvedRecorder resolve_recorder(const Resolver& resolver, const RecorderSpec& recorder,
                                   std::size_t index, std::size_t link_count) {
-  const bool nodes = recorder.type == "node";
-  ResolvedRecorder resolved{nodes ? RecorderKind::node : RecorderKind::link, {}, recorder.file};
+  const bool nodes = recorder.type == RecorderKind::node;
+  ResolvedRecorder resolved{recorder.type, {}, recorder.file};
   for (std::size_t i = 0; i < recorder.ids.size(); ++i) {
     const std::string path =
         fmt::format("/recorders/{}/{}/{}", index, nodes ? "nodes" : "links", i);
@@ -46,8 +46,7 @@ std::vector<DriftMonitor> resolve_drift_monitors(const Resolver& resolver) {
   for (std::size_t k = 0; k < specs.size(); ++k) {
     const DriftMonitorSpec& m = specs[k];
     const std::string path = monitor_path(k, resolver.user_spec().drift_monitors.size(), "drifts");
-    monitors.push_back({m.id, m.kind == "pier" ? DriftKind::pier : DriftKind::storey, m.group,
-                        resolver.node(m.bottom, path + "/bottom"),
+    monitors.push_back({m.id, m.kind, m.group, resolver.node(m.bottom, path + "/bottom"),
                         resolver.node(m.top, path + "/top"), m.height, m.yield_drift});
   }
   return monitors;

@@ -9,15 +9,11 @@
 
 namespace pound::builder {
 
-enum class RecorderKind { link, node };
-
 struct ResolvedRecorder {
   RecorderKind kind = RecorderKind::link;
   std::vector<Index> items;  // links or nodes
   std::string file;
 };
-
-enum class DriftKind { storey, pier };
 
 struct DriftMonitor {
   std::string id;

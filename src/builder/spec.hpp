@@ -34,9 +34,12 @@ struct MaterialSpec {
   std::optional<double> poisson_ratio;  // nu in [0, 0.5), needed by plane continua (quads)
 };
 
+// "truss", "beam" (2-D elastic beam-column, frame scenes), "quad" (plane continuum).
+enum class ElementKind { truss, beam, quad };
+
 struct ElementSpec {
   std::string id;
-  std::string type;  // "truss" | "beam" (2-D elastic beam-column, frame scenes) | "quad"
+  ElementKind type = ElementKind::truss;
   std::string node_i;
   std::string node_j;
   std::string material;
@@ -260,10 +263,13 @@ struct GirderBridgeSpec {
 // What a run reports beyond links: drift of storeys and piers (peak of |u_top - u_bottom|
 // along x, over the height; ductility against a yield drift), and joints (peak opening and
 // closing of a link, and the girder's peak movement on its seat against the seat width).
+// How the summary groups a drift monitor.
+enum class DriftKind { storey, pier };
+
 struct DriftMonitorSpec {
   std::string id;
-  std::string kind = "storey";  // "storey" | "pier"; how the summary groups it
-  std::string group;            // building or bridge id
+  DriftKind kind = DriftKind::storey;
+  std::string group;  // building or bridge id
   std::string bottom, top;
   double height = 0.0;
   std::optional<double> yield_drift;
@@ -299,8 +305,10 @@ struct AnalysisSpec {
 
 // Time histories written as CSV: "link" records force and penetration of the named links (all
 // links when `ids` is empty); "node" records displacement, velocity, acceleration of nodes.
+enum class RecorderKind { link, node };
+
 struct RecorderSpec {
-  std::string type;  // "link" | "node"
+  RecorderKind type = RecorderKind::link;
   std::vector<std::string> ids;
   std::string file;  // output file name inside the output folder
 };

@@ -100,8 +100,8 @@ const Fields<MaterialSpec>& material_fields() {
   return fields;
 }
 
-bool is_beam(const ElementSpec& element) { return element.type == "beam"; }
-bool is_quad(const ElementSpec& element) { return element.type == "quad"; }
+bool is_beam(const ElementSpec& element) { return element.type == builder::ElementKind::beam; }
+bool is_quad(const ElementSpec& element) { return element.type == builder::ElementKind::quad; }
 
 // Two nodes, or four counter-clockwise for a quad; the struct keeps the first two apart.
 Field<ElementSpec> element_nodes() {
@@ -138,16 +138,19 @@ const Fields<Coefficients>& rayleigh_fields() {
 const Fields<ElementSpec>& element_fields() {
   static const Fields<ElementSpec> fields = {
       unique_id(&ElementSpec::id, "elements", "the element's name"),
-      required("type", &ElementSpec::type, names_choice({"truss", "beam", "quad"}),
+      required("type", &ElementSpec::type,
+               Choice<builder::ElementKind>{{{"truss", builder::ElementKind::truss},
+                                             {"beam", builder::ElementKind::beam},
+                                             {"quad", builder::ElementKind::quad}}},
                "an axial rod, a beam-column or a plane quadrilateral"),
       element_nodes(),
       required("material", &ElementSpec::material, Text{true}, "id of its material"),
       required("area", &ElementSpec::area, Number<>{positive}, "cross-section area A [L²]")
           .when(std::not_fn(is_quad), "truss and beam"),
       rule<ElementSpec>([](JsonObject& object, ElementSpec& element, Context& context) {
-        if (element.type != "truss" && context.dimension != 2)
-          object.at("type").fail(
-              fmt::format("a {} needs a 2-D scene (\"dimension\": 2)", element.type));
+        if (element.type != builder::ElementKind::truss && context.dimension != 2)
+          object.at("type").fail(fmt::format("a {} needs a 2-D scene (\"dimension\": 2)",
+                                             is_beam(element) ? "beam" : "quad"));
       }),
       required("inertia", &ElementSpec::inertia, Number<>{positive}, "second moment of area I [L⁴]")
           .when(is_beam, "beam only"),
@@ -644,7 +647,9 @@ const Fields<ContactSpec>& contact_fields() {
 const Fields<DriftMonitorSpec>& drift_monitor_fields() {
   static const Fields<DriftMonitorSpec> fields = {
       required("id", &DriftMonitorSpec::id, Text{true}, "its name in the summary"),
-      optional("kind", &DriftMonitorSpec::kind, names_choice({"storey", "pier"}),
+      optional("kind", &DriftMonitorSpec::kind,
+               Choice<builder::DriftKind>{
+                   {{"storey", builder::DriftKind::storey}, {"pier", builder::DriftKind::pier}}},
                "how the summary groups it")
           .always_written(),
       optional("group", &DriftMonitorSpec::group, Text{}, "building or bridge it belongs to"),
@@ -941,7 +946,10 @@ Field<RecorderSpec> recorder_file() {
         const std::optional<JsonValue> file = object.find("file");
         const JsonValue& where = file ? *file : object.value();
         recorder.file =
-            file ? file->as<std::string>() : fmt::format("{}_{}.csv", recorder.type, context.index);
+            file ? file->as<std::string>()
+                 : fmt::format("{}_{}.csv",
+                               recorder.type == builder::RecorderKind::link ? "link" : "node",
+                               context.index);
         check_file_name(recorder.file, where);
         context.unique("recorder files", "file name").add(recorder.file, where);
       },
@@ -952,10 +960,12 @@ Field<RecorderSpec> recorder_file() {
 
 const Fields<RecorderSpec>& recorder_fields() {
   static const auto records_links = [](const RecorderSpec& recorder) {
-    return recorder.type == "link";
+    return recorder.type == builder::RecorderKind::link;
   };
   static const Fields<RecorderSpec> fields = {
-      required("type", &RecorderSpec::type, names_choice({"link", "node"}),
+      required("type", &RecorderSpec::type,
+               Choice<builder::RecorderKind>{
+                   {{"link", builder::RecorderKind::link}, {"node", builder::RecorderKind::node}}},
                "link: force and penetration; node: displacement, velocity, acceleration"),
       optional("links", &RecorderSpec::ids, Names{.what = "link"}, "the links recorded")
           .default_text("every link")

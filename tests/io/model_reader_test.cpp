@@ -80,7 +80,7 @@ TEST(ModelReader, ReadsEveryField) {
 
   ASSERT_EQ(spec.elements.size(), 1u);
   EXPECT_EQ(spec.elements[0].id, "e0");
-  EXPECT_EQ(spec.elements[0].type, "truss");
+  EXPECT_EQ(spec.elements[0].type, builder::ElementKind::truss);
   EXPECT_EQ(spec.elements[0].node_i, "a0");
   EXPECT_EQ(spec.elements[0].node_j, "a1");
   EXPECT_EQ(spec.elements[0].material, "steel");
@@ -147,10 +147,10 @@ TEST(ModelReader, ReadsEveryField) {
   EXPECT_EQ(analysis.max_steps, 100000);
 
   ASSERT_EQ(spec.recorders.size(), 2u);
-  EXPECT_EQ(spec.recorders[0].type, "link");
+  EXPECT_EQ(spec.recorders[0].type, builder::RecorderKind::link);
   EXPECT_EQ(spec.recorders[0].ids, (std::vector<std::string>{"joint", "rods.contact"}));
   EXPECT_EQ(spec.recorders[0].file, "link_force.csv");
-  EXPECT_EQ(spec.recorders[1].type, "node");
+  EXPECT_EQ(spec.recorders[1].type, builder::RecorderKind::node);
   EXPECT_EQ(spec.recorders[1].ids, std::vector<std::string>{"a0"});
   EXPECT_EQ(spec.recorders[1].file, "node_1.csv");  // default: type and index
 }

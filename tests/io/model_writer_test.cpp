@@ -167,7 +167,7 @@ TEST(ModelWriter, ReadsBackTheSameValues) {
   EXPECT_EQ(spec.title, "every field");
   EXPECT_EQ(spec.dimension, 2);
   EXPECT_EQ(spec.nodes.at(3).y, -0.25);
-  EXPECT_EQ(spec.elements.at(1).type, "beam");
+  EXPECT_EQ(spec.elements.at(1).type, builder::ElementKind::beam);
   EXPECT_EQ(spec.elements.at(1).inertia, 0.003);
   EXPECT_EQ(spec.elements.at(1).extra_mass, 1200.0);
   EXPECT_TRUE(spec.elements.at(1).consistent_mass);
@@ -220,7 +220,7 @@ TEST(ModelWriter, ReadsBackTheSameValues) {
   EXPECT_EQ(bridge.backwall_mass, 5.0e4);
   ASSERT_EQ(spec.drift_monitors.size(), 2u);
   EXPECT_EQ(spec.drift_monitors[0].group, "frame");
-  EXPECT_EQ(spec.drift_monitors[1].kind, "pier");
+  EXPECT_EQ(spec.drift_monitors[1].kind, builder::DriftKind::pier);
   EXPECT_FALSE(spec.drift_monitors[1].yield_drift);
   ASSERT_EQ(spec.joint_monitors.size(), 1u);
   EXPECT_EQ(spec.joint_monitors[0].seat_width, 0.4);
