@@ -57,7 +57,7 @@ std::string plan_text(const builder::SetSpec& set, const std::vector<builder::Ba
                         .set("scale", c.scale));
   }
   io::Document intensity;
-  intensity.set("type", set.intensity.type)
+  intensity.set("type", builder::intensity_name(set.intensity.type))
       .set("period", set.intensity.period)
       .set("damping", set.intensity.damping);
   return io::Document()
@@ -89,7 +89,7 @@ RunOutcome run_or_report_input_error(const RunRequest& request) {
     return run_model(request);
   } catch (const InputError& error) {
     RunOutcome outcome;
-    outcome.case_summary.status = "input_error";
+    outcome.case_summary.status = results::CaseStatus::input_error;
     outcome.case_summary.reason = one_line(error.what());
     outcome.summary.set("model", request.model_path)
         .set("status", "input_error")
@@ -223,7 +223,7 @@ RankRun run_cases(const builder::SetSpec& set, const std::vector<const builder::
         const std::lock_guard lock(mutex);
         run.results.push_back(std::move(result));
         ++progress.done;
-        progress.failed += run.results.back().summary.status != "completed";
+        progress.failed += run.results.back().summary.status != results::CaseStatus::completed;
         progress.elapsed_s = seconds_since(started);
         progress.last = &run.results.back().summary;
         if (options.progress) options.progress(progress);
@@ -305,7 +305,7 @@ void write_batch_results(const builder::SetSpec& set, const std::vector<builder:
   for (const auto& [index, row] : rows) {
     csv += row + "\n";
     summaries.push_back(io::parse_case_row(row, cases[index].name));
-    report.completed += summaries.back().status == "completed";
+    report.completed += summaries.back().status == results::CaseStatus::completed;
   }
   report.failed = cases.size() - report.completed;
   report.statistics = results::batch_statistics(set, summaries);

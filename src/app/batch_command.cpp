@@ -59,7 +59,7 @@ void show_progress(const BatchProgress& p, bool terminal, int rank, int ranks) {
     if (p.done == p.total) std::cerr << "\n";
   } else {
     std::cerr << fmt::format("{}[{}/{}] {} {}{} ({} elapsed, ETA {})\n", who, p.done, p.total,
-                             p.last->name, p.last->status,
+                             p.last->name, results::status_name(p.last->status),
                              p.last->reason.empty() ? "" : ": " + p.last->reason,
                              clock_text(p.elapsed_s), clock_text(eta));
   }

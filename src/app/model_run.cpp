@@ -118,7 +118,7 @@ void summarise_record(const LoadedModel& loaded, const builder::IntensityMeasure
   const model::GroundMotion& record = loaded.records.front();
   c.pga_g = factor * record.peak() / gravity;
   c.intensity =
-      intensity.type == "sa"
+      intensity.type == builder::IntensityKind::sa
           ? factor * model::spectral_acceleration(record, intensity.period, intensity.damping) /
                 gravity
           : *c.pga_g;

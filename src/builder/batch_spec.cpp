@@ -4,6 +4,8 @@
 
 namespace pound::builder {
 
+const char* intensity_name(IntensityKind kind) { return kind == IntensityKind::sa ? "sa" : "pga"; }
+
 std::vector<BatchCase> plan_cases(const SetSpec& set) {
   std::vector<BatchCase> cases;
   cases.reserve(set.models.size() * set.records.size() * set.scales.size());

@@ -25,8 +25,11 @@ struct BatchRecord {
 };
 
 // The intensity measure the fragility is fitted against, of the record as scaled for a case.
+enum class IntensityKind { pga, sa };            // peak ground acceleration; S_a(period), both in g
+const char* intensity_name(IntensityKind kind);  // "pga", "sa"
+
 struct IntensityMeasure {
-  std::string type = "pga";  // "pga": peak ground acceleration [g]; "sa": S_a(period) [g]
+  IntensityKind type = IntensityKind::pga;
   double period = 0.0;
   double damping = 0.05;
 };

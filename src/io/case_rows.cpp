@@ -50,6 +50,15 @@ Column text_column(std::string name, std::string CaseSummary::*field) {
           [field](CaseSummary& c, const std::string& cell) { c.*field = cell; }};
 }
 
+Column status_column() {
+  return {"status", [](const CaseSummary& c) { return quoted(results::status_name(c.status)); },
+          [](CaseSummary& c, const std::string& cell) {
+            const std::optional<results::CaseStatus> status = results::status_from_name(cell);
+            if (!status) throw std::invalid_argument("not a case status: '" + cell + "'");
+            c.status = *status;
+          }};
+}
+
 Column number_column(std::string name, std::optional<double> CaseSummary::*field) {
   return {std::move(name), [field](const CaseSummary& c) { return number(c.*field); },
           [field](CaseSummary& c, const std::string& cell) { c.*field = parse_number(cell); }};
@@ -99,7 +108,7 @@ std::vector<Column> make_columns() {
                              text_column("model", &CaseSummary::model),
                              text_column("record", &CaseSummary::record),
                              scale_column(),
-                             text_column("status", &CaseSummary::status),
+                             status_column(),
                              text_column("reason", &CaseSummary::reason),
                              number_column("pga_g", &CaseSummary::pga_g),
                              number_column("intensity", &CaseSummary::intensity),

@@ -112,8 +112,9 @@ std::vector<builder::BatchRecord> read_record_entry(JsonObject& object, const fs
 
 builder::IntensityMeasure read_intensity(JsonObject& object) {
   builder::IntensityMeasure measure;
-  measure.type = object.one_of("type", {"pga", "sa"});
-  if (measure.type == "sa") {
+  measure.type = object.one_of("type", {"pga", "sa"}) == "sa" ? builder::IntensityKind::sa
+                                                              : builder::IntensityKind::pga;
+  if (measure.type == builder::IntensityKind::sa) {
     measure.period = object.required<double>("period", positive);
     measure.damping = object.optional<double>("damping", 0.05, non_negative);
   }

@@ -28,8 +28,8 @@ Document to_document(const results::BatchStatistics& statistics, const builder::
            "per model and scale over the completed cases: median and 84th percentile "
            "interpolated between order statistics (type 7), maximum");
   Document intensity;
-  intensity.set("type", set.intensity.type).set("units", "g");
-  if (set.intensity.type == "sa")
+  intensity.set("type", builder::intensity_name(set.intensity.type)).set("units", "g");
+  if (set.intensity.type == builder::IntensityKind::sa)
     intensity.set("period", set.intensity.period).set("damping", set.intensity.damping);
   doc.set("intensity_measure", intensity);
   doc.set("quantities", quantities_document());

@@ -136,9 +136,9 @@ BatchStatistics batch_statistics(const builder::SetSpec& set,
   BatchStatistics stats;
   stats.cases = cases.size();
   for (const results::CaseSummary& c : cases) {
-    stats.completed += c.status == "completed";
-    stats.failed += c.status == "failed";
-    stats.input_errors += c.status == "input_error";
+    stats.completed += c.status == CaseStatus::completed;
+    stats.failed += c.status == CaseStatus::failed;
+    stats.input_errors += c.status == CaseStatus::input_error;
   }
   for (const builder::BatchModel& model : set.models) {
     for (const double scale : set.scales) {
@@ -149,7 +149,7 @@ BatchStatistics batch_statistics(const builder::SetSpec& set,
       for (const results::CaseSummary& c : cases)
         if (c.model == model.id && c.scale == scale) {
           ++group.cases;
-          if (c.status == "completed") completed.push_back(&c);
+          if (c.status == CaseStatus::completed) completed.push_back(&c);
         }
       group.completed = completed.size();
       for (const BatchQuantity& quantity : batch_quantities()) {
@@ -178,7 +178,8 @@ BatchStatistics batch_statistics(const builder::SetSpec& set,
       std::vector<FragilityObservation> observations;
       const auto value_of = limited_quantity(limit).value;
       for (const results::CaseSummary& c : cases)
-        if (c.model == model.id && c.status == "completed" && c.intensity && *c.intensity > 0.0)
+        if (c.model == model.id && c.status == CaseStatus::completed && c.intensity &&
+            *c.intensity > 0.0)
           if (const std::optional<double> value = c.*value_of)
             observations.push_back({*c.intensity, *value > limit.value});
       FragilityFit fit;

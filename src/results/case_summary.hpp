@@ -8,12 +8,19 @@
 
 namespace pound::results {
 
+// How a case ended: completed; failed (the analysis stopped: results up to then); input_error (the
+// model or record was refused, nothing ran).
+enum class CaseStatus { completed, failed, input_error };
+const char* status_name(CaseStatus status);
+// The status a batch_summary.csv cell names; none for another word.
+std::optional<CaseStatus> status_from_name(const std::string& name);
+
 struct CaseSummary {
   std::string name;    // the case folder under the batch's output, "<model>/<record>/x<scale>"
   std::string model;   // model id
   std::string record;  // record id
   double scale = 1.0;  // the IDA factor on top of the record's own scale
-  std::string status;  // "completed", "failed" (the analysis stopped), "input_error"
+  CaseStatus status = CaseStatus::completed;
   std::string reason;  // why it failed, empty when completed
 
   std::optional<double> pga_g;      // peak of the record as applied [g]

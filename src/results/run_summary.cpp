@@ -165,7 +165,7 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
 }
 
 void summarise_case(const RunSummary& run, CaseSummary& c) {
-  c.status = run.status.completed() ? "completed" : "failed";
+  c.status = run.status.completed() ? CaseStatus::completed : CaseStatus::failed;
   c.reason = run.status.completed() ? std::string()
                                     : fmt::format("analysis failed at t = {:.6g}: {}",
                                                   run.status.end_time, run.status.failure);

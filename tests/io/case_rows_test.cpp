@@ -16,7 +16,7 @@ results::CaseSummary full_row() {
   c.model = "bridge";
   c.record = "kobe";
   c.scale = 1.5;
-  c.status = "failed";
+  c.status = results::CaseStatus::failed;
   c.reason = R"(analysis failed at t = 3.2: "Newton", did not converge)";
   c.pga_g = 0.1 + 0.2;  // 0.30000000000000004: must come back exactly
   c.intensity = std::nextafter(1.0, 2.0);

@@ -66,7 +66,7 @@ TEST(SetReader, ReadsModelsRecordsScalesAndLimits) {
   EXPECT_EQ(set.records[3].excitation.units, "cm/s2");
   EXPECT_EQ(set.records[3].excitation.time_step, 0.01);
   EXPECT_EQ(set.scales, (std::vector<double>{0.5, 1.0, 1.5}));
-  EXPECT_EQ(set.intensity.type, "sa");
+  EXPECT_EQ(set.intensity.type, builder::IntensityKind::sa);
   EXPECT_EQ(set.intensity.period, 1.0);
   EXPECT_EQ(set.intensity.damping, 0.05);
   ASSERT_EQ(set.limits.size(), 2u);

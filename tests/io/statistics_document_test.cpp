@@ -15,7 +15,7 @@ results::CaseSummary completed_case(const std::string& record, double ductility)
   results::CaseSummary c;
   c.model = "bridge";
   c.record = record;
-  c.status = "completed";
+  c.status = results::CaseStatus::completed;
   c.intensity = 0.3;
   c.max_ductility = ductility;
   return c;

@@ -93,7 +93,7 @@ TEST(Fragility, SaysWhyThereIsNoFit) {
 }
 
 results::CaseSummary row(const std::string& record, double scale, double ductility,
-                         const std::string& status = "completed") {
+                         CaseStatus status = CaseStatus::completed) {
   results::CaseSummary c;
   c.model = "bridge";
   c.record = record;
@@ -110,8 +110,10 @@ TEST(BatchStatistics, GroupsByModelAndScaleOverCompletedCasesOnly) {
   set.scales = {1.0, 2.0};
   set.limits = {{"max_ductility", 1.0}};
   const std::vector<results::CaseSummary> cases = {
-      row("a", 1, 0.5), row("b", 1, 0.9), row("c", 1, 1.3), row("d", 1, 99.0, "failed"),
-      row("a", 2, 1.1), row("b", 2, 0.8), row("c", 2, 2.0), row("d", 2, 0.0, "input_error")};
+      row("a", 1, 0.5), row("b", 1, 0.9),
+      row("c", 1, 1.3), row("d", 1, 99.0, CaseStatus::failed),
+      row("a", 2, 1.1), row("b", 2, 0.8),
+      row("c", 2, 2.0), row("d", 2, 0.0, CaseStatus::input_error)};
   const BatchStatistics stats = batch_statistics(set, cases);
   EXPECT_EQ(stats.cases, 8u);
   EXPECT_EQ(stats.completed, 6u);
