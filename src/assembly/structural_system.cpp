@@ -46,13 +46,15 @@ struct ElementAssembly {
   void add(const model::Element& element);
   void add(const model::NodalMass& mass);
 
+  // K_fs, stiffness between free DOFs and fixed ones, by fixed DOF (node * dpn + direction).
+  using SupportCoupling = std::map<Index, std::vector<std::pair<Index, double>>>;
+
   std::vector<Eigen::Triplet<double>> stiffness, consistent_mass, damping;
   Vector lumped_mass, damping_diagonal;  // damping_diagonal: a0 m of the lumped masses
   bool has_consistent_mass = false;
   bool own_damping = false;  // some element or mass has its own coefficients
-  // K_fs, stiffness between free DOFs and fixed ones, by fixed DOF (node * dpn + direction):
-  // only gathered when supports move differently (multi-support excitation).
-  std::map<Index, std::vector<std::pair<Index, double>>> support_coupling;
+  // Only gathered when supports move differently (multi-support excitation).
+  SupportCoupling support_coupling;
 
  private:
   model::RayleighDamping coefficients(const std::optional<model::RayleighDamping>& own);
@@ -160,27 +162,243 @@ void check_every_free_dof_is_held(const model::Model& model, const model::DofMap
                         model.nodes[static_cast<std::size_t>(node)].id, model::direction_name(d)));
 }
 
+// The matrix of `entries` plus diag(diagonal) (whose nonzero entries are appended to `entries`).
+Eigen::SparseMatrix<double> with_diagonal(std::vector<Eigen::Triplet<double>>& entries,
+                                          const Vector& diagonal) {
+  const Index n = diagonal.size();
+  for (Index i = 0; i < n; ++i)
+    if (diagonal[i] != 0.0) entries.emplace_back(i, i, diagonal[i]);
+  Eigen::SparseMatrix<double> matrix(n, n);
+  matrix.setFromTriplets(entries.begin(), entries.end());
+  return matrix;
+}
+
+// The constant nodal forces on the free DOFs.
+Vector nodal_loads(const model::Model& model, const model::DofMap& dofs) {
+  Vector loads = Vector::Zero(dofs.size());
+  for (const model::NodalLoad& load : model.loads)
+    for (int d = 0; d < std::min(dofs.dofs_per_node(), 2); ++d)
+      if (const Index row = dofs.equation(load.node, d); row >= 0)
+        loads[row] += load.force[static_cast<std::size_t>(d)];
+  return loads;
+}
+
+// Uniform excitation: the influence vector iota picks the translations along the direction.
+Vector uniform_influence(const model::Model& model, const model::DofMap& dofs,
+                         const model::Coordinates& direction) {
+  Vector influence = Vector::Zero(dofs.size());
+  for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
+    for (int d = 0; d < std::min(dofs.dofs_per_node(), 2); ++d)
+      if (const Index row = dofs.equation(node, d); row >= 0)
+        influence[row] = direction[static_cast<std::size_t>(d)];
+  return influence;
+}
+
+// The directions of a link's rows over a node's DOFs (x, y, theta): the axis, or the rotation of
+// a rotational link; with friction, the tangent (the axis turned by +90 degrees).
+std::array<double, 3> normal_direction(const model::Link& link) {
+  return link.rotational ? std::array<double, 3>{0.0, 0.0, 1.0}
+                         : std::array<double, 3>{link.axis[0], link.axis[1], 0.0};
+}
+std::array<double, 3> tangential_direction(const model::Link& link) {
+  return {-link.axis[1], link.axis[0], 0.0};
+}
+
+// Row of a direction d: +d at node i, -d at node j (fixed DOFs dropped); for a point inside a
+// segment j-k, -(1 - w) d at node j and -w d at node k.
+std::vector<integrators::LinkSet::Term> link_row(const model::DofMap& dofs, const model::Link& link,
+                                                 const std::array<double, 3>& direction) {
+  std::vector<integrators::LinkSet::Term> row;
+  for (int d = 0; d < dofs.dofs_per_node(); ++d) {
+    const double component = direction[static_cast<std::size_t>(d)];
+    if (component == 0.0) continue;
+    if (const Index eq = dofs.equation(link.node_i, d); eq >= 0) row.push_back({eq, component});
+    const double weight_j = link.segment_end ? 1.0 - link.segment_weight : 1.0;
+    if (const Index eq = dofs.equation(link.node_j, d); eq >= 0 && weight_j != 0.0)
+      row.push_back({eq, -weight_j * component});
+    if (link.segment_end && link.segment_weight != 0.0)
+      if (const Index eq = dofs.equation(*link.segment_end, d); eq >= 0)
+        row.push_back({eq, -link.segment_weight * component});
+  }
+  return row;
+}
+
+// The stick penalty defaults to the normal law's tangent at first touch.
+links::StickPenalty stick_penalty(const links::LinkLaw& law, const model::LinkFriction& friction) {
+  const auto probe = law.clone();
+  const links::LawResponse touch = probe->set_trial({1e-12, 1e-12, 0.0});
+  return {friction.stick_stiffness.value_or(touch.stiffness),
+          friction.stick_damping.value_or(touch.damping), friction.stick_mass.value_or(touch.mass)};
+}
+
+// A link's rows and gap, with its law, inside a Coulomb friction law when it has friction.
+integrators::LinkSet::Link link_entry(const model::DofMap& dofs, const model::Link& link,
+                                      std::unique_ptr<links::LinkLaw> law) {
+  integrators::LinkSet::Link entry;
+  entry.normal_row = link_row(dofs, link, normal_direction(link));
+  entry.gap = link.gap;
+  if (!link.friction) {
+    entry.law = std::move(law);
+    return entry;
+  }
+  entry.tangential_row = link_row(dofs, link, tangential_direction(link));
+  const links::StickPenalty stick = stick_penalty(*law, *link.friction);
+  entry.friction =
+      std::make_unique<links::CoulombFriction>(std::move(law), link.friction->coefficient, stick);
+  return entry;
+}
+
+// For each link row: its link and direction, to see how belts and moving supports deform it.
+struct LinkRowGeometry {
+  const model::Link* link;
+  std::array<double, 3> direction;
+};
+
+std::vector<LinkRowGeometry> link_row_geometry(const model::Model& model) {
+  std::vector<LinkRowGeometry> rows;
+  for (const model::Link& link : model.links) {
+    rows.push_back({&link, normal_direction(link)});
+    if (link.friction) rows.push_back({&link, tangential_direction(link)});
+  }
+  return rows;
+}
+
+// Rows whose j side moves on its own (a belt): delta gains -(velocity_j . direction) t.
+Vector surface_rates(const std::vector<LinkRowGeometry>& rows) {
+  Vector rates = Vector::Zero(static_cast<Index>(rows.size()));
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const model::Coordinates& velocity_j = rows[r].link->velocity_j;
+    rates[static_cast<Index>(r)] =
+        -(velocity_j[0] * rows[r].direction[0] + velocity_j[1] * rows[r].direction[1]);
+  }
+  return rates;
+}
+
+// K_fs for a support moving along the direction.
+Vector support_coupling(const ElementAssembly::SupportCoupling& by_fixed_dof,
+                        const model::DofMap& dofs, Index node,
+                        const model::Coordinates& direction) {
+  const int dpn = dofs.dofs_per_node();
+  Vector coupling = Vector::Zero(dofs.size());
+  for (int d = 0; d < std::min(dpn, 2); ++d)
+    if (auto found = by_fixed_dof.find(node * dpn + d); found != by_fixed_dof.end())
+      for (const auto& [row, value] : found->second)
+        coupling[row] += direction[static_cast<std::size_t>(d)] * value;
+  return coupling;
+}
+
+// Links attached to the support itself move with it: d(delta) / d(u_support) of their rows.
+Vector attached_link_coefficients(const std::vector<LinkRowGeometry>& rows, Index node,
+                                  const model::Coordinates& direction) {
+  Vector direct = Vector::Zero(static_cast<Index>(rows.size()));
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const double along = rows[r].direction[0] * direction[0] + rows[r].direction[1] * direction[1];
+    if (rows[r].link->node_i == node) direct[static_cast<Index>(r)] += along;
+    if (rows[r].link->node_j == node) direct[static_cast<Index>(r)] -= along;
+  }
+  return direct;
+}
+
+// Any influence matrix R gives exact equations if the static term -(K_ff R + K_fs) u_s(t) is
+// loaded too; R is chosen as the quasi-static influence of the supports on the structure with
+// its links at their initial tangent (bearings hold the girders), so that u_dyn stays small.
+// DOFs nothing holds even then (a backwall behind open backfill) are regularised: r = 0.
+class SupportInfluence {
+ public:
+  SupportInfluence(const Eigen::SparseMatrix<double>& stiffness, const integrators::LinkSet& links);
+  // r of a support with coupling K_fs and the links attached to it.
+  Vector influence(const Vector& coupling, const Vector& direct) const {
+    const Vector held_coupling = coupling + b_.transpose() * initial_tangent_.cwiseProduct(direct);
+    return -held_factor_.solve(held_coupling);
+  }
+  // d(delta) / d(u_support) of every link row: through r, and directly.
+  Vector link_coefficients(const Vector& influence, const Vector& direct) const {
+    return b_ * influence + direct;
+  }
+
+ private:
+  Matrix b_;
+  Vector initial_tangent_;  // k_0: the normal rows' stiffness at rest
+  // K + B^T k_0 B, its zero diagonal entries regularised
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> held_factor_;
+};
+
+SupportInfluence::SupportInfluence(const Eigen::SparseMatrix<double>& stiffness,
+                                   const integrators::LinkSet& links)
+    : b_(Matrix(links.connectivity())), initial_tangent_(Vector::Zero(links.size())) {
+  for (Index k = 0; k < links.count(); ++k) {
+    const Index row = links.row(k);
+    initial_tangent_[row] =
+        links.law(k).clone()->set_trial({-links.gaps()[row], 0.0, 0.0}).stiffness;
+  }
+  Eigen::SparseMatrix<double> held = stiffness;
+  held += (b_.transpose() * initial_tangent_.asDiagonal() * b_).sparseView();
+  const double largest = held.diagonal().cwiseAbs().maxCoeff();
+  for (Index i = 0; i < held.rows(); ++i)
+    if (!(std::abs(held.coeff(i, i)) > 0.0)) held.coeffRef(i, i) = 1e-12 * largest;
+  held_factor_.compute(held);
+  if (held_factor_.info() != Eigen::Success)
+    throw InputError("", "/excitations",
+                     "multi-support excitation: the structure's stiffness "
+                     "could not be factored to find the supports' influence");
+}
+
 }  // namespace
 
 StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
   const Index n = dofs_.size();
-  const int dpn = dofs_.dofs_per_node();
   ElementAssembly elements(dofs_, model);
   for (const auto& element : model.elements) elements.add(*element);
   for (const model::NodalMass& mass : model.masses) elements.add(mass);
   check_every_free_dof_is_held(model, dofs_, elements);
   mass_ = std::move(elements.lumped_mass);
-  if (elements.has_consistent_mass) {
-    std::vector<Eigen::Triplet<double>>& consistent_mass = elements.consistent_mass;
-    for (Index i = 0; i < n; ++i)
-      if (mass_[i] != 0.0) consistent_mass.emplace_back(i, i, mass_[i]);
-    mass_matrix_.resize(n, n);
-    mass_matrix_.setFromTriplets(consistent_mass.begin(), consistent_mass.end());
-  }
+  if (elements.has_consistent_mass) mass_matrix_ = with_diagonal(elements.consistent_mass, mass_);
 
   stiffness_.resize(n, n);
   stiffness_.setFromTriplets(elements.stiffness.begin(), elements.stiffness.end());
   stiffness_.prune(0.0);
+  store_stiffness_for_products();
+
+  if (model.damping) damping_ = *model.damping;
+  if (elements.own_damping) {
+    // Elements damp with their own coefficients: C is assembled, not a0 M + a1 K.
+    damping_matrix_ = with_diagonal(elements.damping, elements.damping_diagonal);
+    damping_matrix_.prune(0.0);
+  }
+
+  loads_ = nodal_loads(model, dofs_);
+  has_loads_ = loads_.any();
+  for (const model::UniformExcitation& excitation : model.excitations) {
+    Vector inertia(n);
+    multiply_mass(uniform_influence(model, dofs_, excitation.direction), inertia);
+    excitations_.push_back({excitation.motion, std::move(inertia)});
+  }
+
+  std::vector<integrators::LinkSet::Link> links;
+  for (const model::Link& link : model.links)
+    links.push_back(link_entry(dofs_, link, link.make_law(link_context(link))));
+  links_ = integrators::LinkSet(n, std::move(links));
+  const std::vector<LinkRowGeometry> rows = link_row_geometry(model);
+  surface_rate_ = surface_rates(rows);
+
+  if (model.support_excitations.empty()) return;
+  const SupportInfluence supports(stiffness_, links_);
+  for (const model::SupportExcitation& excitation : model.support_excitations)
+    for (const auto& [node, delay] : excitation.supports) {
+      const Vector coupling =
+          support_coupling(elements.support_coupling, dofs_, node, excitation.direction);
+      const Vector direct = attached_link_coefficients(rows, node, excitation.direction);
+      const Vector influence = supports.influence(coupling, direct);
+      MovingSupport moving{model::GroundKinematics(excitation.motion, delay), Vector(n),
+                           supports.link_coefficients(influence, direct), Vector(n)};
+      multiply_mass(influence, moving.inertia);
+      moving.static_load = -(stiffness_ * influence + coupling);
+      moving_supports_.push_back(std::move(moving));
+    }
+}
+
+void StructuralSystem::store_stiffness_for_products() {
+  const Index n = stiffness_.rows();
   if (const Index b = BandedLdlt::bandwidth_of(stiffness_);
       n > 0 && (2 * b + 1) * n <= 2 * stiffness_.nonZeros()) {
     stiffness_bandwidth_ = b;
@@ -196,146 +414,6 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
   } else {
     stiffness_rows_ = stiffness_;
   }
-
-  if (model.damping) damping_ = *model.damping;
-  if (elements.own_damping) {
-    // Elements damp with their own coefficients: C is assembled, not a0 M + a1 K.
-    std::vector<Eigen::Triplet<double>>& damping = elements.damping;
-    for (Index i = 0; i < n; ++i)
-      if (elements.damping_diagonal[i] != 0.0)
-        damping.emplace_back(i, i, elements.damping_diagonal[i]);
-    damping_matrix_.resize(n, n);
-    damping_matrix_.setFromTriplets(damping.begin(), damping.end());
-    damping_matrix_.prune(0.0);
-  }
-
-  loads_ = Vector::Zero(n);
-  for (const model::NodalLoad& load : model.loads)
-    for (int d = 0; d < std::min(dpn, 2); ++d)
-      if (const Index row = dofs_.equation(load.node, d); row >= 0)
-        loads_[row] += load.force[static_cast<std::size_t>(d)];
-  has_loads_ = loads_.any();
-  // Uniform excitation: the influence vector iota picks the translations along the direction.
-  for (const model::UniformExcitation& excitation : model.excitations) {
-    Vector influence = Vector::Zero(n);
-    for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
-      for (int d = 0; d < std::min(dpn, 2); ++d)
-        if (const Index row = dofs_.equation(node, d); row >= 0)
-          influence[row] = excitation.direction[static_cast<std::size_t>(d)];
-    Vector inertia(n);
-    multiply_mass(influence, inertia);
-    excitations_.push_back({excitation.motion, std::move(inertia)});
-  }
-
-  std::vector<integrators::LinkSet::Link> links;
-  // For each link row: its nodes and direction, to see how moving supports deform it.
-  struct RowGeometry {
-    Index node_i, node_j;
-    std::array<double, 3> direction;
-  };
-  std::vector<RowGeometry> rows;
-  std::vector<std::size_t> row_links;  // the link of each row
-  for (const model::Link& link : model.links) {
-    // Row of a direction d: +d at node i, -d at node j (fixed DOFs dropped).
-    auto row_along = [&](const std::array<double, 3>& direction) {
-      std::vector<integrators::LinkSet::Term> row;
-      for (int d = 0; d < dpn; ++d) {
-        const double component = direction[static_cast<std::size_t>(d)];
-        if (component == 0.0) continue;
-        if (const Index eq = dofs_.equation(link.node_i, d); eq >= 0)
-          row.push_back({eq, component});
-        const double weight_j = link.segment_end ? 1.0 - link.segment_weight : 1.0;
-        if (const Index eq = dofs_.equation(link.node_j, d); eq >= 0 && weight_j != 0.0)
-          row.push_back({eq, -weight_j * component});
-        if (link.segment_end && link.segment_weight != 0.0)
-          if (const Index eq = dofs_.equation(*link.segment_end, d); eq >= 0)
-            row.push_back({eq, -link.segment_weight * component});
-      }
-      return row;
-    };
-    integrators::LinkSet::Link entry;
-    const std::array<double, 3> normal =
-        link.rotational ? std::array<double, 3>{0.0, 0.0, 1.0}
-                        : std::array<double, 3>{link.axis[0], link.axis[1], 0.0};
-    entry.normal_row = row_along(normal);
-    rows.push_back({link.node_i, link.node_j, normal});
-    row_links.push_back(links.size());
-    entry.gap = link.gap;
-    std::unique_ptr<links::LinkLaw> law = link.make_law(link_context(link));
-    if (!link.friction) {
-      entry.law = std::move(law);
-    } else {
-      entry.tangential_row = row_along({-link.axis[1], link.axis[0], 0.0});
-      rows.push_back({link.node_i, link.node_j, {-link.axis[1], link.axis[0], 0.0}});
-      row_links.push_back(links.size());
-      // The stick penalty defaults to the normal law's tangent at first touch.
-      const auto probe = law->clone();
-      const links::LawResponse touch = probe->set_trial({1e-12, 1e-12, 0.0});
-      const model::LinkFriction& f = *link.friction;
-      const links::StickPenalty stick{f.stick_stiffness.value_or(touch.stiffness),
-                                      f.stick_damping.value_or(touch.damping),
-                                      f.stick_mass.value_or(touch.mass)};
-      entry.friction =
-          std::make_unique<links::CoulombFriction>(std::move(law), f.coefficient, stick);
-    }
-    links.push_back(std::move(entry));
-  }
-  links_ = integrators::LinkSet(n, std::move(links));
-  // Rows whose j side moves on its own (a belt): delta gains -(velocity_j . direction) t.
-  surface_rate_ = Vector::Zero(links_.size());
-  for (std::size_t r = 0; r < rows.size(); ++r) {
-    const model::Link& link = model.links[static_cast<std::size_t>(row_links[r])];
-    surface_rate_[static_cast<Index>(r)] =
-        -(link.velocity_j[0] * rows[r].direction[0] + link.velocity_j[1] * rows[r].direction[1]);
-  }
-
-  if (model.support_excitations.empty()) return;
-  // Any influence matrix R gives exact equations if the static term -(K_ff R + K_fs) u_s(t) is
-  // loaded too; R is chosen as the quasi-static influence of the supports on the structure with
-  // its links at their initial tangent (bearings hold the girders), so that u_dyn stays small.
-  // DOFs nothing holds even then (a backwall behind open backfill) are regularised: r = 0.
-  const Matrix b = Matrix(links_.connectivity());
-  Vector initial_tangent = Vector::Zero(links_.size());
-  for (Index k = 0; k < links_.count(); ++k) {
-    const Index row = links_.row(k);
-    initial_tangent[row] =
-        links_.law(k).clone()->set_trial({-links_.gaps()[row], 0.0, 0.0}).stiffness;
-  }
-  Eigen::SparseMatrix<double> held = stiffness_;
-  held += (b.transpose() * initial_tangent.asDiagonal() * b).sparseView();
-  const double largest = held.diagonal().cwiseAbs().maxCoeff();
-  for (Index i = 0; i < n; ++i)
-    if (!(std::abs(held.coeff(i, i)) > 0.0)) held.coeffRef(i, i) = 1e-12 * largest;
-  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> held_factor(held);
-  if (held_factor.info() != Eigen::Success)
-    throw InputError("", "/excitations",
-                     "multi-support excitation: the structure's stiffness "
-                     "could not be factored to find the supports' influence");
-  for (const model::SupportExcitation& excitation : model.support_excitations)
-    for (const auto& [node, delay] : excitation.supports) {
-      // K_fs for the support moving along the direction.
-      Vector coupling = Vector::Zero(n);
-      for (int d = 0; d < std::min(dpn, 2); ++d)
-        if (auto found = elements.support_coupling.find(node * dpn + d);
-            found != elements.support_coupling.end())
-          for (const auto& [row, value] : found->second)
-            coupling[row] += excitation.direction[static_cast<std::size_t>(d)] * value;
-      // Links attached to the support itself move with it.
-      Vector direct = Vector::Zero(links_.size());
-      for (std::size_t r = 0; r < rows.size(); ++r) {
-        const double along = rows[r].direction[0] * excitation.direction[0] +
-                             rows[r].direction[1] * excitation.direction[1];
-        if (rows[r].node_i == node) direct[static_cast<Index>(r)] += along;
-        if (rows[r].node_j == node) direct[static_cast<Index>(r)] -= along;
-      }
-      const Vector held_coupling = coupling + b.transpose() * initial_tangent.cwiseProduct(direct);
-      const Vector influence = -held_factor.solve(held_coupling);
-      MovingSupport moving{model::GroundKinematics(excitation.motion, delay), Vector(n),
-                           b * influence + direct, Vector(n)};
-      multiply_mass(influence, moving.inertia);
-      moving.static_load = -(stiffness_ * influence + coupling);
-      moving_supports_.push_back(std::move(moving));
-    }
 }
 
 bool StructuralSystem::has_link_motion() const {
@@ -364,9 +442,7 @@ void StructuralSystem::link_motion(double time, Vector& offset, Vector& rate,
 
 links::LinkContext StructuralSystem::link_context(const model::Link& link) const {
   links::LinkContext context;
-  const std::array<double, 3> direction =
-      link.rotational ? std::array<double, 3>{0.0, 0.0, 1.0}
-                      : std::array<double, 3>{link.axis[0], link.axis[1], 0.0};
+  const std::array<double, 3> direction = normal_direction(link);
   // Mass and diagonal stiffness of one end along the direction: n^T K_nn n over its free DOFs.
   auto end = [&](Index node, double& mass, double& stiffness, bool& fixed) {
     fixed = true;

@@ -78,6 +78,8 @@ class StructuralSystem final : public integrators::SecondOrderSystem {
   bool stiffness_symmetric_ = false;  // tridiagonal with K(i, i - 1) = K(i - 1, i)
   void multiply_band(const Vector& x, Vector& y, Index first, Index last) const;  // y[first, last)
   Eigen::SparseMatrix<double, Eigen::RowMajor> stiffness_rows_;
+  // Keeps stiffness_ for K x: by diagonals or by rows, as above.
+  void store_stiffness_for_products();
   integrators::LinkSet links_;
 };
 

@@ -97,6 +97,125 @@ bool accelerate(Index first, Index last, double half_dt, const double* __restric
   return all_finite(flags);
 }
 
+// Union-find over the link rows.
+class RowUnion {
+ public:
+  explicit RowUnion(Index rows) : parent_(static_cast<std::size_t>(rows)) {
+    for (Index r = 0; r < rows; ++r) parent_[static_cast<std::size_t>(r)] = r;
+  }
+  Index root(Index r) {
+    while (parent_[static_cast<std::size_t>(r)] != r)
+      r = parent_[static_cast<std::size_t>(r)] =
+          parent_[static_cast<std::size_t>(parent_[static_cast<std::size_t>(r)])];
+    return r;
+  }
+  void join(Index first, Index second) {
+    parent_[static_cast<std::size_t>(root(first))] = root(second);
+  }
+
+ private:
+  std::vector<Index> parent_;
+};
+
+// Groups of link rows: r and s share one when G(r, s) != 0, or when they are rows of one link.
+std::vector<std::vector<Index>> coupled_row_groups(const Matrix& coupling, const LinkSet& links) {
+  const Index m = links.size();
+  RowUnion rows(m);
+  for (Index r = 0; r < m; ++r)
+    for (Index c = r + 1; c < m; ++c)
+      if (coupling(r, c) != 0.0 || coupling(c, r) != 0.0) rows.join(r, c);
+  for (Index k = 0; k < links.count(); ++k)
+    if (links.has_friction(k)) rows.join(links.row(k), links.row(k) + 1);
+  std::vector<Index> group_of(static_cast<std::size_t>(m), -1);
+  std::vector<std::vector<Index>> groups;
+  for (Index r = 0; r < m; ++r) {
+    Index& group = group_of[static_cast<std::size_t>(rows.root(r))];
+    if (group < 0) {
+      group = static_cast<Index>(groups.size());
+      groups.emplace_back();
+    }
+    groups[static_cast<std::size_t>(group)].push_back(r);
+  }
+  return groups;
+}
+
+// The diagonals of the links' tangents: stiffness, penalty mass and dashpot of each row.
+struct LinkTangents {
+  Vector stiffness, mass, damping;
+};
+
+// Link tangents: at first touch (closing) when contacts count, else at rest.
+LinkTangents link_tangents(LinkSet& links, bool contacts_active) {
+  const Index m = links.size();
+  const Vector delta = contacts_active ? Vector::Constant(m, 1e-12) : Vector(-links.gaps());
+  const Vector rate = Vector::Constant(m, contacts_active ? 1e-12 : 0.0);
+  Vector force;
+  Matrix stiffness_only, with_mass, with_damping;
+  links.set_trial(delta, rate, Vector::Zero(m), 0.0, 0.0, force, stiffness_only);
+  links.set_trial(delta, rate, Vector::Zero(m), 0.0, 1.0, force, with_mass);
+  links.set_trial(delta, rate, Vector::Zero(m), 1.0, 0.0, force, with_damping);
+  links.revert();
+  return {stiffness_only.diagonal(), (with_mass - stiffness_only).diagonal(),
+          (with_damping - stiffness_only).diagonal()};
+}
+
+struct HighestMode {
+  double eigenvalue;  // omega_max^2
+  Vector shape;
+};
+
+// Power iteration on (M + B^T m_l B)^-1 (K + B^T k_l B), from a fixed start (reproducible).
+HighestMode highest_mode(SecondOrderSystem& system, const Vector& inverse_mass,
+                         const LinkTangents& tangents) {
+  const LinkSet& links = system.links();
+  Vector x = Vector::LinSpaced(system.size(), 1.0, 2.0), y, kx, projected;
+  const LinkMassSolver mass_solver(inverse_mass, links.connectivity(), tangents.mass);
+  double lambda = 0.0;
+  for (int iteration = 0; iteration < 500; ++iteration) {
+    x.normalize();
+    system.multiply_stiffness(x, kx);
+    links.project(x, projected);
+    kx.noalias() += links.connectivity().transpose() * tangents.stiffness.cwiseProduct(projected);
+    mass_solver.solve(kx, y);
+    const double next = x.dot(y);
+    const bool settled = iteration > 20 && std::abs(next - lambda) <= 1e-10 * std::abs(next);
+    lambda = next;
+    x = y;
+    if (settled) break;
+  }
+  return {lambda, std::move(x)};
+}
+
+// x^T C x / (2 w x^T M x) for the mode x of frequency w, the links' penalty masses in M.
+double damping_ratio(SecondOrderSystem& system, Vector shape, const Vector& link_mass,
+                     double omega) {
+  shape.normalize();
+  Vector cx, mx, projected;
+  system.multiply_damping(shape, cx);
+  system.multiply_mass(shape, mx);
+  system.links().project(shape, projected);
+  const double modal_mass = shape.dot(mx) + projected.dot(link_mass.cwiseProduct(projected));
+  return shape.dot(cx) / (2.0 * omega * modal_mass);
+}
+
+// The stable step of a mode of frequency w and damping ratio z.
+double damped_stable_step(double omega, double zeta) {
+  return 2.0 / omega * (std::sqrt(1.0 + zeta * zeta) - zeta);
+}
+
+// The stable step of link row r's own relative mode: its two end masses,
+// m_rel = 1 / (B M^-1 B^T), against its stiffness, penalty mass and dashpot.
+double link_mode_stable_step(const LinkSet& links, const Vector& inverse_mass,
+                             const LinkTangents& tangents, Index r) {
+  const double relative_mass =
+      1.0 / links.connectivity().row(r).cwiseAbs2().dot(inverse_mass.transpose());
+  const double modal_mass = relative_mass + tangents.mass[r];
+  const double link_omega = std::sqrt(tangents.stiffness[r] / modal_mass);
+  const double link_zeta =
+      tangents.damping[r] / (2.0 * std::sqrt(tangents.stiffness[r] * modal_mass));
+  return damped_stable_step(link_omega, link_zeta);
+}
+
 }  // namespace
 
 const IntegratorEntry& CentralDifference::entry() {
@@ -151,6 +270,29 @@ StepResult CentralDifference::advance(SecondOrderSystem& system, const State& fr
   to.displacement.resize(n);
   to.acceleration.resize(n);
   to.velocity.resize(n);
+  bool finite_state = advance_without_links(system, from, dt, to);
+  StepResult result;
+  if (m > 0) {
+    if (coupling_.rows() != m) prepare_links(links);
+    link_kinematics(system, from, half_dt, to);
+    if (!solve_link_forces(links, to, result)) return result;
+    finite_state &= apply_link_forces(from, half_dt, to);
+  } else {
+    to.link_penetration.resize(0);
+    to.link_force.resize(0);
+  }
+  if (!finite_state) {
+    result.failure = "the state is not finite (is the time step above the stable limit?)";
+    return result;
+  }
+  result.converged = true;
+  return result;
+}
+
+bool CentralDifference::advance_without_links(SecondOrderSystem& system, const State& from,
+                                              double dt, State& to) {
+  const Index n = system.size();
+  const double half_dt = 0.5 * dt;
   const bool external = system.has_external_force();
   if (external) system.external_force(to.time, work_);
   // The vector passes (predict, K u, accelerate) go block by block when the system can, each
@@ -168,216 +310,152 @@ StepResult CentralDifference::advance(SecondOrderSystem& system, const State& fr
                      from.acceleration.data(), to.acceleration.data(), to.velocity.data());
     };
     system.multiply_stiffness_by_blocks(to.displacement, rhs_, make, use);
-  } else {
-    // With damping, C v* with v* = v_n + dt a_n: it differs from v_{n+1} by O(dt^2) and keeps the
-    // scheme second order (the half-step velocity would not).
-    predicted_velocity_.resize(n);
-    finite_state =
-        predict(0, n, dt, from.displacement.data(), from.velocity.data(), from.acceleration.data(),
-                to.displacement.data(), predicted_velocity_.data());
-    // r = (K u - f) + C v*: its negative is the unfused step's (f - K u) - C v*, exactly.
-    system.multiply_stiffness(to.displacement, rhs_);
-    if (external) rhs_ -= work_;
-    system.multiply_damping(predicted_velocity_, damping_force_);
-    rhs_ += damping_force_;
-    finite_state &=
-        accelerate(0, n, half_dt, inverse_mass_.data(), rhs_.data(), nullptr, from.velocity.data(),
-                   from.acceleration.data(), to.acceleration.data(), to.velocity.data());
+    return finite_state;
   }
+  // With damping, C v* with v* = v_n + dt a_n: it differs from v_{n+1} by O(dt^2) and keeps the
+  // scheme second order (the half-step velocity would not).
+  predicted_velocity_.resize(n);
+  finite_state =
+      predict(0, n, dt, from.displacement.data(), from.velocity.data(), from.acceleration.data(),
+              to.displacement.data(), predicted_velocity_.data());
+  // r = (K u - f) + C v*: its negative is the unfused step's (f - K u) - C v*, exactly.
+  system.multiply_stiffness(to.displacement, rhs_);
+  if (external) rhs_ -= work_;
+  system.multiply_damping(predicted_velocity_, damping_force_);
+  rhs_ += damping_force_;
+  finite_state &=
+      accelerate(0, n, half_dt, inverse_mass_.data(), rhs_.data(), nullptr, from.velocity.data(),
+                 from.acceleration.data(), to.acceleration.data(), to.velocity.data());
+  return finite_state;
+}
 
-  StepResult result;
-  if (m > 0) {
-    const LinkSet::SparseRowMatrix& b = links.connectivity();
-    if (coupling_.rows() != m) {
-      coupling_ = Matrix(b * inverse_mass_.asDiagonal() * b.transpose());
-      link_columns_ = b;
-      link_dofs_.clear();
-      for (Index j = 0; j < link_columns_.outerSize(); ++j)
-        if (Eigen::SparseMatrix<double>::InnerIterator(link_columns_, j)) link_dofs_.push_back(j);
-      // Groups of rows by union-find: G(r, s) != 0, or r and s rows of one link.
-      std::vector<Index> parent(static_cast<std::size_t>(m));
-      for (Index r = 0; r < m; ++r) parent[static_cast<std::size_t>(r)] = r;
-      auto root = [&parent](Index r) {
-        while (parent[static_cast<std::size_t>(r)] != r)
-          r = parent[static_cast<std::size_t>(r)] =
-              parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(r)])];
-        return r;
-      };
-      auto join = [&](Index first, Index second) {
-        parent[static_cast<std::size_t>(root(first))] = root(second);
-      };
-      for (Index r = 0; r < m; ++r)
-        for (Index c = r + 1; c < m; ++c)
-          if (coupling_(r, c) != 0.0 || coupling_(c, r) != 0.0) join(r, c);
-      for (Index k = 0; k < links.count(); ++k)
-        if (links.has_friction(k)) join(links.row(k), links.row(k) + 1);
-      std::vector<Index> group_of(static_cast<std::size_t>(m), -1);
-      link_groups_.clear();
-      for (Index r = 0; r < m; ++r) {
-        Index& group = group_of[static_cast<std::size_t>(root(r))];
-        if (group < 0) {
-          group = static_cast<Index>(link_groups_.size());
-          link_groups_.emplace_back();
-        }
-        link_groups_[static_cast<std::size_t>(group)].push_back(r);
-      }
-      group_jacobians_.resize(link_groups_.size());
-      group_lus_.resize(link_groups_.size());
-    }
-    links.penetration(to.displacement, to.link_penetration);
-    // Link rates at the half step B (v_n + dt/2 a_n): the extended penalty's critical dashpot on
-    // its stiff relative mode is stable there at the Courant limit, not with the forward-predicted
-    // velocity. Only the DOFs in B are visited.
-    rate_.resize(m);
-    for (Index r = 0; r < m; ++r) {
-      double sum = 0.0;
-      for (LinkSet::SparseRowMatrix::InnerIterator it(b, r); it; ++it)
-        sum += it.value() * (from.velocity[it.col()] + half_dt * from.acceleration[it.col()]);
-      rate_[r] = sum;
-    }
-    links.project(to.acceleration, free_acceleration_);
-    if (system.has_link_motion()) {
-      system.link_motion(to.time, offset_, offset_rate_, offset_acceleration_);
-      to.link_penetration += offset_;
-      rate_ += offset_rate_;
-      free_acceleration_ += offset_acceleration_;
-    }
-    // The link forces F change the accelerations by -M^-1 B^T F, so the laws see
-    // delta_ddot = free - G F (G = B M^-1 B^T). Solve F = F_law(delta, rate, free - G F): laws with
-    // no mass term need one evaluation; the extended penalty's alpha2 makes it a small system.
-    const Matrix& g = coupling_;
-    to.link_force.setZero(m);
-    for (int iteration = 0;; ++iteration) {
-      link_acceleration_ = free_acceleration_;
-      link_acceleration_.noalias() -= g * to.link_force;
-      links.set_trial_mass(to.link_penetration, rate_, link_acceleration_, force_, tangent_);
-      // Without a mass term the law's force does not depend on F: it is the answer.
-      if (tangent_.cwiseAbs().maxCoeff() == 0.0) {
-        to.link_force = force_;
-        break;
-      }
-      residual_ = to.link_force - force_;
-      if (!residual_.allFinite()) {
-        result.failure = "link forces are not finite";
-        return result;
-      }
-      if (links.nodal_norm(residual_) <= 1e-12 * std::max(1e-300, links.nodal_norm(force_))) break;
-      if (iteration == 25) {
-        result.failure = "the link forces of the explicit step did not settle in 25 iterations";
-        return result;
-      }
-      // I + (dF_law / d(delta_ddot)) G, block by block: T and G tie rows only within a group.
-      correction_.resize(m);
-      for (std::size_t k = 0; k < link_groups_.size(); ++k) {
-        const std::vector<Index>& rows = link_groups_[k];
-        const Index size = static_cast<Index>(rows.size());
-        Matrix& jacobian = group_jacobians_[k];
-        jacobian.resize(size, size);
-        group_residual_.resize(size);
-        for (Index a = 0; a < size; ++a) {
-          const Index r = rows[static_cast<std::size_t>(a)];
-          group_residual_[a] = residual_[r];
-          for (Index c = 0; c < size; ++c) {
-            double sum = a == c ? 1.0 : 0.0;
-            for (Index q : rows) sum += tangent_(r, q) * g(q, rows[static_cast<std::size_t>(c)]);
-            jacobian(a, c) = sum;
-          }
-        }
-        group_lus_[k].compute(jacobian);
-        const Vector solved = group_lus_[k].solve(group_residual_);
-        for (Index a = 0; a < size; ++a) correction_[rows[static_cast<std::size_t>(a)]] = solved[a];
-      }
-      to.link_force -= correction_;
-      // At machine precision already (a very stiff penalty mass): stop as the implicit step does.
-      if (iteration > 0 && correction_.norm() <= 1e-14 * std::max(to.link_force.norm(), 1e-300))
-        break;
-    }
-    // a -= M^-1 B^T F and v_{n+1} again, at the DOFs the links touch.
-    for (const Index j : link_dofs_) {
-      double force = 0.0;
-      for (Eigen::SparseMatrix<double>::InnerIterator it(link_columns_, j); it; ++it)
-        force += it.value() * to.link_force[it.row()];
-      to.acceleration[j] -= inverse_mass_[j] * force;
-      to.velocity[j] = from.velocity[j] + half_dt * (from.acceleration[j] + to.acceleration[j]);
-      finite_state &= all_finite(not_finite(to.velocity[j]));
-    }
-  } else {
-    to.link_penetration.resize(0);
-    to.link_force.resize(0);
+void CentralDifference::prepare_links(const LinkSet& links) {
+  const LinkSet::SparseRowMatrix& b = links.connectivity();
+  coupling_ = Matrix(b * inverse_mass_.asDiagonal() * b.transpose());
+  link_columns_ = b;
+  link_dofs_.clear();
+  for (Index j = 0; j < link_columns_.outerSize(); ++j)
+    if (Eigen::SparseMatrix<double>::InnerIterator(link_columns_, j)) link_dofs_.push_back(j);
+  link_groups_ = coupled_row_groups(coupling_, links);
+  group_jacobians_.resize(link_groups_.size());
+  group_lus_.resize(link_groups_.size());
+}
+
+void CentralDifference::link_kinematics(SecondOrderSystem& system, const State& from,
+                                        double half_dt, State& to) {
+  const LinkSet& links = system.links();
+  const LinkSet::SparseRowMatrix& b = links.connectivity();
+  links.penetration(to.displacement, to.link_penetration);
+  // Link rates at the half step B (v_n + dt/2 a_n): the extended penalty's critical dashpot on
+  // its stiff relative mode is stable there at the Courant limit, not with the forward-predicted
+  // velocity. Only the DOFs in B are visited.
+  rate_.resize(b.rows());
+  for (Index r = 0; r < b.rows(); ++r) {
+    double sum = 0.0;
+    for (LinkSet::SparseRowMatrix::InnerIterator it(b, r); it; ++it)
+      sum += it.value() * (from.velocity[it.col()] + half_dt * from.acceleration[it.col()]);
+    rate_[r] = sum;
   }
-  if (!finite_state) {
-    result.failure = "the state is not finite (is the time step above the stable limit?)";
-    return result;
+  links.project(to.acceleration, free_acceleration_);
+  if (system.has_link_motion()) {
+    system.link_motion(to.time, offset_, offset_rate_, offset_acceleration_);
+    to.link_penetration += offset_;
+    rate_ += offset_rate_;
+    free_acceleration_ += offset_acceleration_;
   }
-  result.converged = true;
-  return result;
+}
+
+bool CentralDifference::solve_link_forces(LinkSet& links, State& to, StepResult& result) {
+  // The link forces F change the accelerations by -M^-1 B^T F, so the laws see
+  // delta_ddot = free - G F (G = B M^-1 B^T). Solve F = F_law(delta, rate, free - G F): laws with
+  // no mass term need one evaluation; the extended penalty's alpha2 makes it a small system.
+  to.link_force.setZero(links.size());
+  for (int iteration = 0;; ++iteration) {
+    link_acceleration_ = free_acceleration_;
+    link_acceleration_.noalias() -= coupling_ * to.link_force;
+    links.set_trial_mass(to.link_penetration, rate_, link_acceleration_, force_, tangent_);
+    // Without a mass term the law's force does not depend on F: it is the answer.
+    if (tangent_.cwiseAbs().maxCoeff() == 0.0) {
+      to.link_force = force_;
+      return true;
+    }
+    residual_ = to.link_force - force_;
+    if (!residual_.allFinite()) {
+      result.failure = "link forces are not finite";
+      return false;
+    }
+    if (links.nodal_norm(residual_) <= 1e-12 * std::max(1e-300, links.nodal_norm(force_)))
+      return true;
+    if (iteration == 25) {
+      result.failure = "the link forces of the explicit step did not settle in 25 iterations";
+      return false;
+    }
+    solve_newton_correction();
+    to.link_force -= correction_;
+    // At machine precision already (a very stiff penalty mass): stop as the implicit step does.
+    if (iteration > 0 && correction_.norm() <= 1e-14 * std::max(to.link_force.norm(), 1e-300))
+      return true;
+  }
+}
+
+void CentralDifference::solve_newton_correction() {
+  // I + (dF_law / d(delta_ddot)) G, block by block: T and G tie rows only within a group.
+  correction_.resize(residual_.size());
+  for (std::size_t k = 0; k < link_groups_.size(); ++k) {
+    const std::vector<Index>& rows = link_groups_[k];
+    const Index size = static_cast<Index>(rows.size());
+    Matrix& jacobian = group_jacobians_[k];
+    jacobian.resize(size, size);
+    group_residual_.resize(size);
+    for (Index a = 0; a < size; ++a) {
+      const Index r = rows[static_cast<std::size_t>(a)];
+      group_residual_[a] = residual_[r];
+      for (Index c = 0; c < size; ++c) {
+        double sum = a == c ? 1.0 : 0.0;
+        for (Index q : rows)
+          sum += tangent_(r, q) * coupling_(q, rows[static_cast<std::size_t>(c)]);
+        jacobian(a, c) = sum;
+      }
+    }
+    group_lus_[k].compute(jacobian);
+    const Vector solved = group_lus_[k].solve(group_residual_);
+    for (Index a = 0; a < size; ++a) correction_[rows[static_cast<std::size_t>(a)]] = solved[a];
+  }
+}
+
+bool CentralDifference::apply_link_forces(const State& from, double half_dt, State& to) const {
+  // a -= M^-1 B^T F and v_{n+1} again, at the DOFs the links touch.
+  std::uint64_t flags = 0;
+  for (const Index j : link_dofs_) {
+    double force = 0.0;
+    for (Eigen::SparseMatrix<double>::InnerIterator it(link_columns_, j); it; ++it)
+      force += it.value() * to.link_force[it.row()];
+    to.acceleration[j] -= inverse_mass_[j] * force;
+    to.velocity[j] = from.velocity[j] + half_dt * (from.acceleration[j] + to.acceleration[j]);
+    flags |= not_finite(to.velocity[j]);
+  }
+  return all_finite(flags);
 }
 
 double stable_time_step(SecondOrderSystem& system, bool contacts_active) {
-  const Index n = system.size();
   const Vector inverse_mass = diagonal_mass(system).cwiseInverse();
   LinkSet& links = system.links();
-  const Index m = links.size();
-  // Link tangents: at first touch (closing) when contacts count, else at rest.
-  Vector link_stiffness = Vector::Zero(m), link_mass = Vector::Zero(m),
-         link_damping = Vector::Zero(m);
-  {
-    const Vector delta = contacts_active ? Vector::Constant(m, 1e-12) : Vector(-links.gaps());
-    const Vector rate = Vector::Constant(m, contacts_active ? 1e-12 : 0.0);
-    Vector force;
-    Matrix stiffness_only, with_mass, with_damping;
-    links.set_trial(delta, rate, Vector::Zero(m), 0.0, 0.0, force, stiffness_only);
-    links.set_trial(delta, rate, Vector::Zero(m), 0.0, 1.0, force, with_mass);
-    links.set_trial(delta, rate, Vector::Zero(m), 1.0, 0.0, force, with_damping);
-    links.revert();
-    link_stiffness = stiffness_only.diagonal();
-    link_mass = (with_mass - stiffness_only).diagonal();
-    link_damping = (with_damping - stiffness_only).diagonal();
-  }
-  // Power iteration on (M + B^T m_l B)^-1 (K + B^T k_l B), from a fixed start (reproducible).
-  Vector x = Vector::LinSpaced(n, 1.0, 2.0), y, kx, projected;
-  const LinkMassSolver mass_solver(inverse_mass, links.connectivity(), link_mass);
-  double lambda = 0.0;
-  for (int iteration = 0; iteration < 500; ++iteration) {
-    x.normalize();
-    system.multiply_stiffness(x, kx);
-    links.project(x, projected);
-    kx.noalias() += links.connectivity().transpose() * link_stiffness.cwiseProduct(projected);
-    mass_solver.solve(kx, y);
-    const double next = x.dot(y);
-    const bool settled = iteration > 20 && std::abs(next - lambda) <= 1e-10 * std::abs(next);
-    lambda = next;
-    x = y;
-    if (settled) break;
-  }
-  const double omega = std::sqrt(std::max(lambda, 0.0));
+  const LinkTangents tangents = link_tangents(links, contacts_active);
+  HighestMode mode = highest_mode(system, inverse_mass, tangents);
+  const double omega = std::sqrt(std::max(mode.eigenvalue, 0.0));
   if (!(omega > 0.0)) return std::numeric_limits<double>::infinity();
   // Damping lowers the limit to (2 / w)(sqrt(1 + z^2) - z), with z the damping ratio of the
   // highest mode: x^T C x / (2 w x^T M x), x its shape from the power iteration.
-  double zeta = 0.0;
-  if (system.has_damping()) {
-    x.normalize();
-    Vector cx, mx;
-    system.multiply_damping(x, cx);
-    system.multiply_mass(x, mx);
-    links.project(x, projected);
-    const double modal_mass = x.dot(mx) + projected.dot(link_mass.cwiseProduct(projected));
-    zeta = x.dot(cx) / (2.0 * omega * modal_mass);
-  }
-  double limit = 2.0 / omega * (std::sqrt(1.0 + zeta * zeta) - zeta);
+  const double zeta = system.has_damping()
+                          ? damping_ratio(system, std::move(mode.shape), tangents.mass, omega)
+                          : 0.0;
+  double limit = damped_stable_step(omega, zeta);
   // A link's own relative mode (its two end masses, m_rel = 1 / (B M^-1 B^T), against its
   // stiffness, penalty mass and dashpot) can be the binding one when its dashpot is stiff: the
   // extended penalty's critical alpha1 allows only 0.414 of 2 / omega there.
-  for (Index r = 0; r < m; ++r) {
-    if (!(link_stiffness[r] > 0.0)) continue;
-    const double relative_mass =
-        1.0 / links.connectivity().row(r).cwiseAbs2().dot(inverse_mass.transpose());
-    const double modal_mass = relative_mass + link_mass[r];
-    const double link_omega = std::sqrt(link_stiffness[r] / modal_mass);
-    const double link_zeta = link_damping[r] / (2.0 * std::sqrt(link_stiffness[r] * modal_mass));
-    limit =
-        std::min(limit, 2.0 / link_omega * (std::sqrt(1.0 + link_zeta * link_zeta) - link_zeta));
-  }
+  for (Index r = 0; r < links.size(); ++r)
+    if (tangents.stiffness[r] > 0.0)
+      limit = std::min(limit, link_mode_stable_step(links, inverse_mass, tangents, r));
   return limit;
 }
 

@@ -28,13 +28,26 @@ class CentralDifference final : public Integrator {
   StepResult advance(SecondOrderSystem& system, const State& from, double dt, State& to) override;
 
  private:
+  // The steps of advance().
+  // u_{n+1}, and a_{n+1}, v_{n+1} without the link forces; returns whether they are finite.
+  bool advance_without_links(SecondOrderSystem& system, const State& from, double dt, State& to);
+  // G, B by columns and the link groups, for the links of the system.
+  void prepare_links(const LinkSet& links);
+  // delta_{n+1}, the link rates at the half step and the link accelerations without link forces.
+  void link_kinematics(SecondOrderSystem& system, const State& from, double half_dt, State& to);
+  // F_{n+1}; false, with result.failure, when it is not finite or does not settle.
+  bool solve_link_forces(LinkSet& links, State& to, StepResult& result);
+  // correction_ from residual_ and tangent_, group by group.
+  void solve_newton_correction();
+  // The link forces' share of a_{n+1} and v_{n+1}; returns whether those v_{n+1} are finite.
+  bool apply_link_forces(const State& from, double half_dt, State& to) const;
+
   // Work vectors and matrices, kept so that a step allocates nothing.
   Vector rate_, offset_, offset_rate_, offset_acceleration_, force_, residual_, work_,
       inverse_mass_;
   Vector rhs_, predicted_velocity_, damping_force_, free_acceleration_, link_acceleration_;
   Vector correction_;
-  Matrix tangent_, jacobian_;
-  Eigen::PartialPivLU<Matrix> jacobian_lu_;
+  Matrix tangent_;
   // Constant for the system given to initialize() (B is), built at its first step with links.
   Matrix coupling_;  // G = B M^-1 B^T
   // Rows of B that G or a link's own rows tie together (links sharing a node): the link-force

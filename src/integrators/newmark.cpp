@@ -194,118 +194,21 @@ const Newmark::Factorization& Newmark::factorization(SecondOrderSystem& system, 
 
 StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double dt, State& to) {
   const Factorization& f = factorization(system, dt);
-  LinkSet& links = system.links();
-  const Index n = system.size(), m = links.size();
+  const Index n = system.size();
   const double c_m = 1.0 / (beta_ * dt * dt);
   const double c_c = gamma_ / (beta_ * dt);
-  const bool alpha = alpha_m_ != 0.0 || alpha_f_ != 0.0;
-  const double mass_weight = (1.0 - alpha_m_) / (1.0 - alpha_f_);
   to.time = from.time + dt;
-
-  // Predictors and the linear right-hand side f + M (c_m u~) + C (c_c u~ - v~), in one pass
-  // when M is diagonal (c_m weighted for the alpha methods).
-  const double displacement_factor = (0.5 - beta_) * dt * dt, velocity_factor = (1.0 - gamma_) * dt;
-  predicted_displacement_.resize(n);
-  predicted_velocity_.resize(n);
-  rhs_.resize(n);
-  if (const Vector* mass = system.lumped_mass()) {
-    predict(n, dt, displacement_factor, velocity_factor, mass_weight * c_m,
-            from.displacement.data(), from.velocity.data(), from.acceleration.data(), mass->data(),
-            predicted_displacement_.data(), predicted_velocity_.data(), rhs_.data());
-  } else {
-    predicted_displacement_ =
-        from.displacement + dt * from.velocity + displacement_factor * from.acceleration;
-    predicted_velocity_ = from.velocity + velocity_factor * from.acceleration;
-    work_ = mass_weight * c_m * predicted_displacement_;
-    system.multiply_mass(work_, rhs_);
-  }
-  if (alpha) {
-    // History of the alpha methods: [a_f (f_n - C v_n - K u_n - B^T F_n) - a_m M a_n] / (1 - a_f).
-    history_ = Vector::Zero(n);
-    if (system.has_external_force()) {
-      system.external_force(from.time, work_);
-      history_ += alpha_f_ * work_;
-    }
-    system.multiply_stiffness(from.displacement, work_);
-    history_ -= alpha_f_ * work_;
-    if (system.has_damping()) {
-      system.multiply_damping(from.velocity, work_);
-      history_ -= alpha_f_ * work_;
-    }
-    if (from.link_force.size() > 0)
-      history_.noalias() -= alpha_f_ * (links.connectivity().transpose() * from.link_force);
-    system.multiply_mass(from.acceleration, work_);
-    history_ -= alpha_m_ * work_;
-    rhs_ += history_ / (1.0 - alpha_f_);
-  }
-  double external_norm = 0.0;
-  if (system.has_external_force()) {
-    system.external_force(to.time, external_);
-    rhs_ += external_;
-    external_norm = external_.norm();
-  }
-  if (system.has_damping()) {
-    work_ = c_c * predicted_displacement_ - predicted_velocity_;
-    damping_force_.resize(n);
-    system.multiply_damping(work_, damping_force_);
-    rhs_ += damping_force_;
-  }
+  predict_step(system, from, dt, c_m);
+  if (alpha_m_ != 0.0 || alpha_f_ != 0.0) add_alpha_history(system, from);
+  const double external_norm = add_loads_and_damping(system, to.time, c_c);
   to.displacement.resize(n);
   f.solver->solve(rhs_, to.displacement);  // u_lin
 
   StepResult result;
-  assumed_force_ = Vector::Zero(m);
-  if (m > 0) {
-    links.penetration(to.displacement, delta_linear_);
-    links.penetration(predicted_displacement_, delta_predicted_);
-    links.project(predicted_velocity_, rate_predicted_);
-    // Support motion moves the links' deformation by s(t); B a = c_m (delta - delta~) stays.
-    const bool moving = system.has_link_motion();
-    if (moving) {
-      system.link_motion(to.time, link_offset_, link_offset_rate_, link_offset_acceleration_);
-      delta_linear_ += link_offset_;
-      delta_predicted_ += link_offset_;
-      rate_predicted_ += link_offset_rate_;
-    }
-    for (int iteration = 0;; ++iteration) {
-      delta_.noalias() = delta_linear_ - f.coupling * assumed_force_;
-      rate_ = rate_predicted_ + c_c * (delta_ - delta_predicted_);
-      acceleration_ = c_m * (delta_ - delta_predicted_);
-      if (moving) acceleration_ += link_offset_acceleration_;
-      links.set_trial(delta_, rate_, acceleration_, c_c, c_m, law_force_, tangent_);
-      residual_ = assumed_force_ - law_force_;
-      if (!residual_.allFinite() || !law_force_.allFinite()) {
-        result.failure = "link forces are not finite";
-        return result;
-      }
-      result.unbalanced_force = links.nodal_norm(residual_);
-      const double reference = std::max(external_norm, links.nodal_norm(law_force_));
-      if (result.unbalanced_force <=
-          test_.relative_tolerance * reference + test_.absolute_tolerance)
-        break;
-      if (iteration == test_.max_iterations) {
-        result.failure = fmt::format(
-            "Newton did not converge in {} iterations (unbalanced force {:.3e}, reference {:.3e})",
-            test_.max_iterations, result.unbalanced_force, reference);
-        return result;
-      }
-      // d(residual)/dF = I + T G
-      jacobian_.noalias() = tangent_ * f.coupling;
-      jacobian_.diagonal().array() += 1.0;
-      const Vector correction = jacobian_.partialPivLu().solve(residual_);
-      assumed_force_ -= correction;
-      ++result.iterations;
-      // Converged to machine precision: with a very stiff penalty the residual cannot fall below
-      // its round-off (stiffness x eps x displacement) while the correction already has.
-      if (iteration > 0 && correction.norm() <= 1e-14 * std::max(assumed_force_.norm(), 1e-300)) {
-        delta_.noalias() = delta_linear_ - f.coupling * assumed_force_;
-        break;
-      }
-    }
-    for (Index k = 0; k < m; ++k)
-      if (assumed_force_[k] != 0.0) to.displacement -= assumed_force_[k] * f.influence.col(k);
-    to.link_penetration = delta_;
-    to.link_force = assumed_force_;
+  if (system.links().size() > 0) {
+    predict_links(system, to);
+    if (!solve_link_forces(system, f, c_m, c_c, external_norm, result)) return result;
+    apply_link_forces(f, to);
   } else {
     to.link_penetration.resize(0);
     to.link_force.resize(0);
@@ -323,6 +226,133 @@ StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double
   }
   result.converged = true;
   return result;
+}
+
+void Newmark::predict_step(SecondOrderSystem& system, const State& from, double dt, double c_m) {
+  // Predictors and the linear right-hand side's inertia part M (c_m u~), in one pass when M is
+  // diagonal (c_m weighted for the alpha methods).
+  const Index n = system.size();
+  const double mass_weight = (1.0 - alpha_m_) / (1.0 - alpha_f_);
+  const double displacement_factor = (0.5 - beta_) * dt * dt, velocity_factor = (1.0 - gamma_) * dt;
+  predicted_displacement_.resize(n);
+  predicted_velocity_.resize(n);
+  rhs_.resize(n);
+  if (const Vector* mass = system.lumped_mass()) {
+    predict(n, dt, displacement_factor, velocity_factor, mass_weight * c_m,
+            from.displacement.data(), from.velocity.data(), from.acceleration.data(), mass->data(),
+            predicted_displacement_.data(), predicted_velocity_.data(), rhs_.data());
+  } else {
+    predicted_displacement_ =
+        from.displacement + dt * from.velocity + displacement_factor * from.acceleration;
+    predicted_velocity_ = from.velocity + velocity_factor * from.acceleration;
+    work_ = mass_weight * c_m * predicted_displacement_;
+    system.multiply_mass(work_, rhs_);
+  }
+}
+
+void Newmark::add_alpha_history(SecondOrderSystem& system, const State& from) {
+  // History of the alpha methods: [a_f (f_n - C v_n - K u_n - B^T F_n) - a_m M a_n] / (1 - a_f).
+  history_ = Vector::Zero(system.size());
+  if (system.has_external_force()) {
+    system.external_force(from.time, work_);
+    history_ += alpha_f_ * work_;
+  }
+  system.multiply_stiffness(from.displacement, work_);
+  history_ -= alpha_f_ * work_;
+  if (system.has_damping()) {
+    system.multiply_damping(from.velocity, work_);
+    history_ -= alpha_f_ * work_;
+  }
+  if (from.link_force.size() > 0)
+    history_.noalias() -= alpha_f_ * (system.links().connectivity().transpose() * from.link_force);
+  system.multiply_mass(from.acceleration, work_);
+  history_ -= alpha_m_ * work_;
+  rhs_ += history_ / (1.0 - alpha_f_);
+}
+
+double Newmark::add_loads_and_damping(SecondOrderSystem& system, double time, double c_c) {
+  // The rest of the linear right-hand side: f + C (c_c u~ - v~).
+  double external_norm = 0.0;
+  if (system.has_external_force()) {
+    system.external_force(time, external_);
+    rhs_ += external_;
+    external_norm = external_.norm();
+  }
+  if (system.has_damping()) {
+    work_ = c_c * predicted_displacement_ - predicted_velocity_;
+    damping_force_.resize(system.size());
+    system.multiply_damping(work_, damping_force_);
+    rhs_ += damping_force_;
+  }
+  return external_norm;
+}
+
+void Newmark::predict_links(SecondOrderSystem& system, const State& to) {
+  const LinkSet& links = system.links();
+  links.penetration(to.displacement, delta_linear_);
+  links.penetration(predicted_displacement_, delta_predicted_);
+  links.project(predicted_velocity_, rate_predicted_);
+  // Support motion moves the links' deformation by s(t); B a = c_m (delta - delta~) stays.
+  links_move_ = system.has_link_motion();
+  if (links_move_) {
+    system.link_motion(to.time, link_offset_, link_offset_rate_, link_offset_acceleration_);
+    delta_linear_ += link_offset_;
+    delta_predicted_ += link_offset_;
+    rate_predicted_ += link_offset_rate_;
+  }
+}
+
+bool Newmark::solve_link_forces(SecondOrderSystem& system, const Factorization& f, double c_m,
+                                double c_c, double external_norm, StepResult& result) {
+  LinkSet& links = system.links();
+  assumed_force_ = Vector::Zero(links.size());
+  for (int iteration = 0;; ++iteration) {
+    evaluate_links(links, f, c_m, c_c);
+    if (!residual_.allFinite() || !law_force_.allFinite()) {
+      result.failure = "link forces are not finite";
+      return false;
+    }
+    result.unbalanced_force = links.nodal_norm(residual_);
+    const double reference = std::max(external_norm, links.nodal_norm(law_force_));
+    if (result.unbalanced_force <= test_.relative_tolerance * reference + test_.absolute_tolerance)
+      return true;
+    if (iteration == test_.max_iterations) {
+      result.failure = fmt::format(
+          "Newton did not converge in {} iterations (unbalanced force {:.3e}, reference {:.3e})",
+          test_.max_iterations, result.unbalanced_force, reference);
+      return false;
+    }
+    // d(residual)/dF = I + T G
+    jacobian_.noalias() = tangent_ * f.coupling;
+    jacobian_.diagonal().array() += 1.0;
+    jacobian_lu_.compute(jacobian_);
+    correction_ = jacobian_lu_.solve(residual_);
+    assumed_force_ -= correction_;
+    ++result.iterations;
+    // Converged to machine precision: with a very stiff penalty the residual cannot fall below
+    // its round-off (stiffness x eps x displacement) while the correction already has.
+    if (iteration > 0 && correction_.norm() <= 1e-14 * std::max(assumed_force_.norm(), 1e-300)) {
+      delta_.noalias() = delta_linear_ - f.coupling * assumed_force_;
+      return true;
+    }
+  }
+}
+
+void Newmark::evaluate_links(LinkSet& links, const Factorization& f, double c_m, double c_c) {
+  delta_.noalias() = delta_linear_ - f.coupling * assumed_force_;
+  rate_ = rate_predicted_ + c_c * (delta_ - delta_predicted_);
+  acceleration_ = c_m * (delta_ - delta_predicted_);
+  if (links_move_) acceleration_ += link_offset_acceleration_;
+  links.set_trial(delta_, rate_, acceleration_, c_c, c_m, law_force_, tangent_);
+  residual_ = assumed_force_ - law_force_;
+}
+
+void Newmark::apply_link_forces(const Factorization& f, State& to) const {
+  // u_{n+1} = u_lin - Z F
+  for (Index k = 0; k < assumed_force_.size(); ++k)
+    if (assumed_force_[k] != 0.0) to.displacement -= assumed_force_[k] * f.influence.col(k);
+  to.link_penetration = delta_;
+  to.link_force = assumed_force_;
 }
 
 }  // namespace pound::integrators

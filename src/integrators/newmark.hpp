@@ -10,6 +10,7 @@
 // m scalar ones, F - F_law(delta_lin - G F) = 0 with G = B Z, solved by Newton with the laws'
 // consistent tangents. This is the full Newton method on the whole system, only cheaper: the
 // unbalanced force of the whole system is exactly B^T (F - F_law).
+#include <Eigen/LU>
 #include <map>
 
 #include "integrators/integrator.hpp"
@@ -63,6 +64,24 @@ class Newmark final : public Integrator {
   };
   const Factorization& factorization(SecondOrderSystem& system, double dt);
 
+  // The steps of advance(), c_m = 1 / (beta dt^2) and c_c = gamma / (beta dt).
+  // u~, v~ and the right-hand side's inertia part.
+  void predict_step(SecondOrderSystem& system, const State& from, double dt, double c_m);
+  // The alpha methods' history term, added to the right-hand side.
+  void add_alpha_history(SecondOrderSystem& system, const State& from);
+  // f_{n+1} and the damping term, added to the right-hand side; returns ||f_{n+1}||.
+  double add_loads_and_damping(SecondOrderSystem& system, double time, double c_c);
+  // The link deformations of u_lin and u~ and the rates of v~, with the supports' motion.
+  void predict_links(SecondOrderSystem& system, const State& to);
+  // F_{n+1} by the condensed Newton iteration; false, with result.failure, when it fails.
+  bool solve_link_forces(SecondOrderSystem& system, const Factorization& f, double c_m, double c_c,
+                         double external_norm, StepResult& result);
+  // delta, rate and acceleration of the links at the assumed F, the laws' forces and tangent
+  // there, and the residual F - F_law.
+  void evaluate_links(LinkSet& links, const Factorization& f, double c_m, double c_c);
+  // u_{n+1} = u_lin - Z F and the link state of `to`.
+  void apply_link_forces(const Factorization& f, State& to) const;
+
   double beta_;
   double gamma_;
   double alpha_m_ = 0.0;
@@ -86,9 +105,11 @@ class Newmark final : public Integrator {
   Vector predicted_displacement_, predicted_velocity_, rhs_, work_, external_, damping_force_;
   Vector history_;
   Vector delta_linear_, delta_predicted_, rate_predicted_;
-  Vector delta_, rate_, acceleration_, assumed_force_, law_force_, residual_;
+  Vector delta_, rate_, acceleration_, assumed_force_, law_force_, residual_, correction_;
   Matrix tangent_, jacobian_;
+  Eigen::PartialPivLU<Matrix> jacobian_lu_;
   Vector link_offset_, link_offset_rate_, link_offset_acceleration_;
+  bool links_move_ = false;  // this step's links see the supports' motion (predict_links)
 };
 
 }  // namespace pound::integrators

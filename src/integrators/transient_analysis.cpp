@@ -11,6 +11,38 @@
 
 namespace pound::integrators {
 
+// One adaptive run: the step size it tries next and what the error estimate measures against.
+class TransientAnalysis::AdaptiveRun {
+ public:
+  AdaptiveRun(TransientAnalysis& analysis, State& state, const StepObserver& observer);
+  void run();
+
+ private:
+  // Steps on the grid base x 2^k keep the integrator's factorisations few.
+  double on_grid(double dt) const;
+  double next_step() const;
+  // The step failed: half of it next, unless it is at the floor already.
+  void cut(double step, const StepResult& result);
+  // A link closing well inside the accepted trial: redo the step to end where it closes. Returns
+  // whether it did (the trial is then dropped).
+  bool redo_to_contact(double step);
+  double local_error(double step) const;
+  // The error is too large: a shorter step next, at least halved.
+  void reject(double step, double error);
+  // The trial in next_ becomes the state.
+  void accept(double step, const StepResult& result);
+
+  TransientAnalysis& analysis_;
+  const AdaptiveStepping& adaptive_;
+  State& state_;
+  const StepObserver& observer_;
+  double base_, floor_, ceiling_;           // the nominal step and the bounds of dt
+  double dt_;                               // the step tried next
+  Vector mask_;                             // of the DOFs with mass
+  double displacement_scale_;               // max |u| so far over them
+  Vector start_rate_, start_acceleration_;  // of the link rows at the start of a step
+};
+
 TransientAnalysis::TransientAnalysis(SecondOrderSystem& system, Integrator& integrator,
                                      TransientSettings settings)
     : system_(system), integrator_(integrator), settings_(settings) {
@@ -29,7 +61,7 @@ TransientStatistics TransientAnalysis::run(State& state, const StepObserver& obs
     observer(state, initial);
   }
   if (settings_.adaptive) {
-    run_adaptive(state, observer);
+    AdaptiveRun(*this, state, observer).run();
     return statistics_;
   }
   const double start = state.time;
@@ -60,16 +92,21 @@ void TransientAnalysis::check_limits(const State& state) {
   }
 }
 
+void TransientAnalysis::accept(State& state, const StepResult& result) {
+  TransientStatistics& stats = statistics_;
+  system_.links().commit();
+  std::swap(state, next_);
+  ++stats.steps;
+  stats.newton_iterations += result.iterations;
+  stats.max_unbalanced_force = std::max(stats.max_unbalanced_force, result.unbalanced_force);
+}
+
 void TransientAnalysis::advance(State& state, double dt, int depth, const StepObserver& observer) {
   TransientStatistics& stats = statistics_;
   check_limits(state);
   const StepResult result = integrator_.advance(system_, state, dt, next_);
   if (result.converged) {
-    system_.links().commit();
-    std::swap(state, next_);
-    ++stats.steps;
-    stats.newton_iterations += result.iterations;
-    stats.max_unbalanced_force = std::max(stats.max_unbalanced_force, result.unbalanced_force);
+    accept(state, result);
     if (observer) observer(state, result);
     return;
   }
@@ -122,100 +159,132 @@ double closing_fraction(const State& from, const State& to, const Vector& rate,
   return theta;
 }
 
+// The DOFs that carry mass (all of them when the mass is not lumped), as ones in a mask.
+Vector mass_mask(const SecondOrderSystem& system) {
+  Vector mask = Vector::Ones(system.size());
+  if (const Vector* mass = system.lumped_mass())
+    mask = (mass->array() > 0.0).select(Vector::Ones(mass->size()), 0.0);
+  return mask;
+}
+
 }  // namespace
 
-void TransientAnalysis::run_adaptive(State& state, const StepObserver& observer) {
-  const AdaptiveStepping& adaptive = *settings_.adaptive;
-  TransientStatistics& stats = statistics_;
-  const double base = settings_.time_step;
-  const double floor = adaptive.min_time_step > 0.0 ? adaptive.min_time_step : base / 256.0;
-  const double ceiling = adaptive.max_time_step > 0.0 ? adaptive.max_time_step : 16.0 * base;
-  // Steps on the grid base x 2^k keep the integrator's factorisations few.
-  auto on_grid = [&](double dt) {
-    const double k = std::round(std::log2(dt / base));
-    double snapped = base * std::exp2(k);
-    while (snapped > ceiling * (1.0 + 1e-12)) snapped *= 0.5;
-    while (snapped < floor * (1.0 - 1e-12)) snapped *= 2.0;
-    return snapped;
-  };
-  double dt = on_grid(base);
-  // The DOFs that carry mass (all of them when the mass is not lumped).
-  Vector mask = Vector::Ones(system_.size());
-  if (const Vector* mass = system_.lumped_mass())
-    mask = (mass->array() > 0.0).select(Vector::Ones(mass->size()), 0.0);
-  double displacement_scale = masked_magnitude(state.displacement, mask);
-  Vector start_rate, start_acceleration;  // of the link rows at the start of a step
+TransientAnalysis::AdaptiveRun::AdaptiveRun(TransientAnalysis& analysis, State& state,
+                                            const StepObserver& observer)
+    : analysis_(analysis),
+      adaptive_(*analysis.settings_.adaptive),
+      state_(state),
+      observer_(observer),
+      base_(analysis.settings_.time_step),
+      floor_(adaptive_.min_time_step > 0.0 ? adaptive_.min_time_step : base_ / 256.0),
+      ceiling_(adaptive_.max_time_step > 0.0 ? adaptive_.max_time_step : 16.0 * base_),
+      dt_(on_grid(base_)),
+      mask_(mass_mask(analysis.system_)),
+      displacement_scale_(masked_magnitude(state.displacement, mask_)) {}
+
+void TransientAnalysis::AdaptiveRun::run() {
+  TransientStatistics& stats = analysis_.statistics_;
   stats.smallest_step = INFINITY;
-  // The trial in next_ becomes the state.
-  auto accept = [&](double step, const StepResult& result) {
-    system_.links().commit();
-    std::swap(state, next_);
-    ++stats.steps;
-    stats.newton_iterations += result.iterations;
-    stats.max_unbalanced_force = std::max(stats.max_unbalanced_force, result.unbalanced_force);
-    stats.smallest_step = std::min(stats.smallest_step, step);
-    stats.largest_step = std::max(stats.largest_step, step);
-    displacement_scale = std::max(displacement_scale, masked_magnitude(state.displacement, mask));
-    if (observer) observer(state, result);
-  };
-  const double end = settings_.end_time;
-  while (end - state.time > 1e-12 * std::max(1.0, std::abs(end))) {
-    check_limits(state);
-    double step = std::min(dt, end - state.time);
-    // A sliver left before the end is taken with this step.
-    if (end - state.time - step < 0.01 * step) step = end - state.time;
-    const StepResult result = integrator_.advance(system_, state, step, next_);
+  const double end = analysis_.settings_.end_time;
+  while (end - state_.time > 1e-12 * std::max(1.0, std::abs(end))) {
+    analysis_.check_limits(state_);
+    const double step = next_step();
+    const StepResult result =
+        analysis_.integrator_.advance(analysis_.system_, state_, step, analysis_.next_);
     if (!result.converged) {
-      system_.links().revert();
-      if (step <= floor * (1.0 + 1e-12))
-        throw SolveError(state.time,
-                         fmt::format("{} at the smallest step dt = {:.3e}", result.failure, step));
-      ++stats.step_cuts;
-      dt = on_grid(std::max(floor, 0.5 * step));
+      cut(step, result);
       continue;
     }
-    // A link closing well inside the step: redo the step to end where it closes.
-    system_.links().project(state.velocity, start_rate);
-    system_.links().project(state.acceleration, start_acceleration);
-    const double theta = closing_fraction(state, next_, start_rate, start_acceleration, step);
-    if (theta > 0.01 && theta < 0.99 && theta * step > floor) {
-      system_.links().revert();
-      ++stats.located_contacts;
-      // Land just short of the contact, so the link is still open there and the next step
-      // starts the contact at its beginning.
-      const double to_contact_step = theta * (1.0 - 1e-9) * step;
-      const StepResult to_contact = integrator_.advance(system_, state, to_contact_step, next_);
-      if (to_contact.converged) {
-        accept(to_contact_step, to_contact);
-        dt = on_grid(std::max(floor, 0.5 * dt));  // the contact begins: look closer
-        continue;
-      }
-      system_.links().revert();
-      dt = on_grid(std::max(floor, 0.5 * step));
-      continue;
-    }
-    // Local error estimate against the displacements seen so far, over the DOFs with mass
-    // (a massless DOF's "acceleration" is whatever keeps it in equilibrium, and rotations are in
-    // other units).
-    const double scale = std::max({displacement_scale, masked_magnitude(next_.displacement, mask),
-                                   masked_difference(next_.displacement, state.displacement, mask),
-                                   std::numeric_limits<double>::min()});
-    const double error = step * step / 12.0 *
-                         masked_difference(next_.acceleration, state.acceleration, mask) / scale;
-    if (error > 2.0 * adaptive.tolerance && step > floor * (1.0 + 1e-12)) {
-      system_.links().revert();
-      ++stats.rejected_steps;
-      // At least halved: rounding to the grid must not give the same step back.
-      dt = std::min(on_grid(std::max(
-                        floor, step * std::max(0.25, 0.9 * std::cbrt(adaptive.tolerance / error)))),
-                    on_grid(std::max(floor, 0.5 * step)));
+    if (redo_to_contact(step)) continue;
+    const double error = local_error(step);
+    if (error > 2.0 * adaptive_.tolerance && step > floor_ * (1.0 + 1e-12)) {
+      reject(step, error);
       continue;
     }
     accept(step, result);
-    const double growth = error > 0.0 ? 0.9 * std::cbrt(adaptive.tolerance / error) : 2.0;
-    dt = on_grid(std::clamp(step * growth, 0.5 * step, 2.0 * step));
+    const double growth = error > 0.0 ? 0.9 * std::cbrt(adaptive_.tolerance / error) : 2.0;
+    dt_ = on_grid(std::clamp(step * growth, 0.5 * step, 2.0 * step));
   }
   if (stats.steps == 0) stats.smallest_step = 0.0;
+}
+
+double TransientAnalysis::AdaptiveRun::on_grid(double dt) const {
+  const double k = std::round(std::log2(dt / base_));
+  double snapped = base_ * std::exp2(k);
+  while (snapped > ceiling_ * (1.0 + 1e-12)) snapped *= 0.5;
+  while (snapped < floor_ * (1.0 - 1e-12)) snapped *= 2.0;
+  return snapped;
+}
+
+double TransientAnalysis::AdaptiveRun::next_step() const {
+  const double end = analysis_.settings_.end_time;
+  double step = std::min(dt_, end - state_.time);
+  // A sliver left before the end is taken with this step.
+  if (end - state_.time - step < 0.01 * step) step = end - state_.time;
+  return step;
+}
+
+void TransientAnalysis::AdaptiveRun::cut(double step, const StepResult& result) {
+  analysis_.system_.links().revert();
+  if (step <= floor_ * (1.0 + 1e-12))
+    throw SolveError(state_.time,
+                     fmt::format("{} at the smallest step dt = {:.3e}", result.failure, step));
+  ++analysis_.statistics_.step_cuts;
+  dt_ = on_grid(std::max(floor_, 0.5 * step));
+}
+
+bool TransientAnalysis::AdaptiveRun::redo_to_contact(double step) {
+  LinkSet& links = analysis_.system_.links();
+  links.project(state_.velocity, start_rate_);
+  links.project(state_.acceleration, start_acceleration_);
+  const double theta =
+      closing_fraction(state_, analysis_.next_, start_rate_, start_acceleration_, step);
+  if (!(theta > 0.01 && theta < 0.99 && theta * step > floor_)) return false;
+  links.revert();
+  ++analysis_.statistics_.located_contacts;
+  // Land just short of the contact, so the link is still open there and the next step
+  // starts the contact at its beginning.
+  const double to_contact_step = theta * (1.0 - 1e-9) * step;
+  const StepResult to_contact =
+      analysis_.integrator_.advance(analysis_.system_, state_, to_contact_step, analysis_.next_);
+  if (to_contact.converged) {
+    accept(to_contact_step, to_contact);
+    dt_ = on_grid(std::max(floor_, 0.5 * dt_));  // the contact begins: look closer
+    return true;
+  }
+  links.revert();
+  dt_ = on_grid(std::max(floor_, 0.5 * step));
+  return true;
+}
+
+double TransientAnalysis::AdaptiveRun::local_error(double step) const {
+  // Local error estimate against the displacements seen so far, over the DOFs with mass
+  // (a massless DOF's "acceleration" is whatever keeps it in equilibrium, and rotations are in
+  // other units).
+  const State& next = analysis_.next_;
+  const double scale = std::max({displacement_scale_, masked_magnitude(next.displacement, mask_),
+                                 masked_difference(next.displacement, state_.displacement, mask_),
+                                 std::numeric_limits<double>::min()});
+  return step * step / 12.0 * masked_difference(next.acceleration, state_.acceleration, mask_) /
+         scale;
+}
+
+void TransientAnalysis::AdaptiveRun::reject(double step, double error) {
+  analysis_.system_.links().revert();
+  ++analysis_.statistics_.rejected_steps;
+  // At least halved: rounding to the grid must not give the same step back.
+  dt_ = std::min(on_grid(std::max(
+                     floor_, step * std::max(0.25, 0.9 * std::cbrt(adaptive_.tolerance / error)))),
+                 on_grid(std::max(floor_, 0.5 * step)));
+}
+
+void TransientAnalysis::AdaptiveRun::accept(double step, const StepResult& result) {
+  TransientStatistics& stats = analysis_.statistics_;
+  analysis_.accept(state_, result);
+  stats.smallest_step = std::min(stats.smallest_step, step);
+  stats.largest_step = std::max(stats.largest_step, step);
+  displacement_scale_ = std::max(displacement_scale_, masked_magnitude(state_.displacement, mask_));
+  if (observer_) observer_(state_, result);
 }
 
 }  // namespace pound::integrators

@@ -57,8 +57,10 @@ class TransientAnalysis {
   const TransientStatistics& statistics() const { return statistics_; }
 
  private:
+  class AdaptiveRun;
   void advance(State& state, double dt, int depth, const StepObserver& observer);
-  void run_adaptive(State& state, const StepObserver& observer);
+  // The trial in next_ becomes the state, and counts.
+  void accept(State& state, const StepResult& result);
   void check_limits(const State& state);
 
   SecondOrderSystem& system_;
