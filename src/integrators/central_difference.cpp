@@ -204,12 +204,14 @@ double damped_stable_step(double omega, double zeta) {
 }
 
 // The stable step of link row r's own relative mode: its two end masses,
-// m_rel = 1 / (B M^-1 B^T), against its stiffness, penalty mass and dashpot.
+// m_rel = 1 / (B M^-1 B^T), against its stiffness, penalty mass and dashpot. A dashpot with no
+// stiffness (a viscous damper) is the limit of no stiffness: h < 2 (m_rel + m_link) / c.
 double link_mode_stable_step(const LinkSet& links, const Vector& inverse_mass,
                              const LinkTangents& tangents, Index r) {
   const double relative_mass =
       1.0 / links.connectivity().row(r).cwiseAbs2().dot(inverse_mass.transpose());
   const double modal_mass = relative_mass + tangents.mass[r];
+  if (!(tangents.stiffness[r] > 0.0)) return 2.0 * modal_mass / tangents.damping[r];
   const double link_omega = std::sqrt(tangents.stiffness[r] / modal_mass);
   const double link_zeta =
       tangents.damping[r] / (2.0 * std::sqrt(tangents.stiffness[r] * modal_mass));
@@ -454,7 +456,7 @@ double stable_time_step(SecondOrderSystem& system, bool contacts_active) {
   // stiffness, penalty mass and dashpot) can be the binding one when its dashpot is stiff: the
   // extended penalty's critical alpha1 allows only 0.414 of 2 / omega there.
   for (Index r = 0; r < links.size(); ++r)
-    if (tangents.stiffness[r] > 0.0)
+    if (tangents.stiffness[r] > 0.0 || tangents.damping[r] > 0.0)
       limit = std::min(limit, link_mode_stable_step(links, inverse_mass, tangents, r));
   return limit;
 }

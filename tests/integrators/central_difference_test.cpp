@@ -6,9 +6,11 @@
 
 #include <cmath>
 #include <iostream>
+#include <limits>
 
 #include "integrators/transient_analysis.hpp"
 #include "links/extended_penalty.hpp"
+#include "links/viscous_damper.hpp"
 #include "support/oscillator.hpp"
 
 namespace pound {
@@ -70,6 +72,50 @@ TEST(CentralDifference, ForcedDampedOscillatorConvergesAtSecondOrder) {
   std::cout << "error " << coarse << " -> " << finer << ", order " << std::log2(coarse / finer)
             << "\n";
   EXPECT_NEAR(std::log2(coarse / finer), 2.0, 0.15);
+}
+
+// A viscous damper link (no stiffness) on a mass bounds the step at 2 m / c: the damped
+// oscillator's (2 / w)(sqrt(1 + z^2) - z) as the spring vanishes (the link rate is taken at the
+// half step, so the half-step velocity changes by the factor 1 - c h / m a step). Checked by
+// running just below and just above it.
+TEST(CentralDifference, ViscousDamperLinkBoundsTheStep) {
+  const double mass = 2.0, stiffness = 8.0, coefficient = 400.0;  // z = 50
+  auto damped_mass = [&] {
+    std::vector<std::unique_ptr<links::LinkLaw>> laws;
+    laws.push_back(std::make_unique<links::ViscousDamper>(coefficient, 1.0, 1e-3));
+    return Oscillator(mass, 0.0, stiffness,
+                      integrators::LinkSet(1, {{{0, 1.0}}}, {0.0}, std::move(laws)));
+  };
+  Oscillator system = damped_mass();
+  const double limit = integrators::stable_time_step(system, true);
+  const double zeta = coefficient / (2.0 * std::sqrt(stiffness * mass)),
+               exact = 2.0 / std::sqrt(stiffness / mass) * (std::sqrt(1.0 + zeta * zeta) - zeta);
+  std::cout << "damper link: stable step " << limit << ", 2 m / c " << 2.0 * mass / coefficient
+            << ", damped oscillator " << exact << "\n";
+  EXPECT_NEAR(limit / exact, 1.0, 1e-3);
+  for (const double factor : {0.98, 1.02}) {
+    Oscillator run = damped_mass();
+    integrators::CentralDifference integrator;
+    integrators::TransientAnalysis analysis(run, integrator,
+                                            {.time_step = factor * limit, .end_time = 5.0});
+    integrators::State state;
+    state.displacement = Vector::Constant(1, 1.0);
+    state.velocity = Vector::Constant(1, 1.0);
+    double largest = 0.0;
+    try {
+      analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
+        largest = std::max(largest, std::abs(s.velocity[0]));
+      });
+    } catch (const std::exception&) {
+      largest = std::numeric_limits<double>::infinity();
+    }
+    std::cout << factor << " x limit: largest |v| " << largest << "\n";
+    if (factor < 1.0) {
+      EXPECT_LT(largest, 10.0);
+    } else {
+      EXPECT_GT(largest, 1e3);
+    }
+  }
 }
 
 // Two masses on springs joined by a penalty spring alpha0 alone: the stable step with the
