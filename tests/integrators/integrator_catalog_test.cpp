@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <numbers>
@@ -33,9 +34,11 @@ TEST(IntegratorCatalog, NamesAndPresetsAreUniqueAndFindable) {
     for (const IntegratorParameter& parameter : entry->parameters)
       EXPECT_TRUE(parameter.admits(parameter.fallback)) << entry->name << ": " << parameter.name;
   }
-  EXPECT_EQ(preset_names(),
-            (std::vector<std::string>{"newmark_average_acceleration", "newmark_linear_acceleration",
-                                      "hht", "generalized_alpha", "central_difference"}));
+  // The presets model files have used since the start stay (more may come).
+  const std::vector<std::string> all_presets = preset_names();
+  for (const char* kept : {"newmark_average_acceleration", "newmark_linear_acceleration", "hht",
+                           "generalized_alpha", "central_difference"})
+    EXPECT_NE(std::find(all_presets.begin(), all_presets.end(), kept), all_presets.end()) << kept;
   EXPECT_THROW(IntegratorChoice::preset("euler"), std::invalid_argument);
 }
 
@@ -53,8 +56,11 @@ TEST(IntegratorCatalog, ChoicesTakeDefaultsAndNameTheirPreset) {
   std::vector<std::string> studied;
   for (const IntegratorChoice& choice : IntegratorChoice::studied())
     studied.push_back(choice.label());
-  EXPECT_EQ(studied, (std::vector<std::string>{"newmark_average_acceleration", "hht",
-                                               "generalized_alpha", "central_difference"}));
+  // Every method is studied once, under its preset's name when its study parameters are one.
+  EXPECT_EQ(studied.size(), integrator_catalog().size());
+  EXPECT_EQ(std::vector<std::string>(studied.begin(), studied.begin() + 4),
+            (std::vector<std::string>{"newmark_average_acceleration", "hht", "generalized_alpha",
+                                      "central_difference"}));
   EXPECT_EQ(IntegratorChoice::studied()[2].parameter("rho_infinity"), 0.5);
 }
 

@@ -575,8 +575,7 @@ INSTANTIATE_TEST_SUITE_P(
                 "expected one of 'newmark_average_acceleration', 'newmark_linear_acceleration'"},
         BadCase{"unknown_integrator_type", replaced("/analysis/integrator/type", R"("wilson")"),
                 "/analysis/integrator/type",
-                "expected one of 'newmark', 'hht', 'generalized_alpha', 'central_difference', got "
-                "'wilson'"},
+                "expected one of 'newmark', 'hht', 'generalized_alpha', 'central_difference'"},
         BadCase{"auto_step_for_an_implicit_integrator",
                 replaced("/analysis/time_step", R"("auto")"), "/analysis/time_step",
                 "implicit integrators need a number"},

@@ -7,6 +7,8 @@
 
 #include <iostream>
 
+#include "support/studied_methods.hpp"
+
 namespace pound::verification {
 namespace {
 
@@ -14,9 +16,10 @@ TEST(StabilityMap, ClassificationsOnAReducedGrid) {
   StabilityOptions options;
   options.stiffness_ratios = {1.0, 1e4, 1e8};
   options.step_ratios = {1e-3, 0.1};
+  options.methods = testing::studied_methods();
   const std::vector<StabilityCell> cells = stability_map(options);
   std::cout << format_stability_map(cells);
-  ASSERT_EQ(cells.size(), 4u * 2u * 3u * 2u);
+  ASSERT_EQ(cells.size(), options.methods.size() * 2u * 3u * 2u);
   for (const StabilityCell& c : cells) {
     const std::string where = c.integrator + ", " + c.law + ", k " +
                               std::to_string(c.stiffness_ratio) + ", dt " +
