@@ -9,7 +9,6 @@
 
 #include "assembly/structural_system.hpp"
 #include "builder/build.hpp"
-#include "io/ground_motion_reader.hpp"
 #include "io/model_reader.hpp"
 #include "support/shared_records.hpp"
 
@@ -17,12 +16,7 @@ namespace pound {
 namespace {
 
 model::GroundMotion el_centro() {
-  io::RecordFormat format;
-  format.format = "at2";
-  model::GroundMotion motion = io::read_ground_motion(
-      testing::shared_record("ImperialValley1940_ElCentroArray9_180_PEER2000.AT2"), format,
-      9.80665);
-  motion.acceleration.resize(600);
+  model::GroundMotion motion = testing::el_centro(600);
   // From rest: a nonzero first sample is a jump at t = 0, which a delayed support meets as a ramp
   // over one step instead, and the shifted responses would differ by that.
   motion.acceleration.front() = 0.0;

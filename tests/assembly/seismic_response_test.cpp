@@ -11,23 +11,12 @@
 #include "assembly/modal_analysis.hpp"
 #include "assembly/structural_system.hpp"
 #include "builder/build.hpp"
-#include "io/ground_motion_reader.hpp"
 #include "io/model_reader.hpp"
 #include "model/ground_motion.hpp"
 #include "support/shared_records.hpp"
 
 namespace pound {
 namespace {
-
-model::GroundMotion el_centro() {
-  io::RecordFormat format;
-  format.format = "at2";
-  model::GroundMotion motion = io::read_ground_motion(
-      testing::shared_record("ImperialValley1940_ElCentroArray9_180_PEER2000.AT2"), format,
-      9.80665);
-  motion.acceleration.resize(1000);  // the strong part, 10 s
-  return motion;
-}
 
 // Runs `text` under the record and returns the relative displacement history of `node` in x at
 // the record's samples.
@@ -62,7 +51,7 @@ double relative_error(const std::vector<double>& a, const std::vector<double>& b
 
 TEST(SeismicResponse, SdofMatchesNigamJenningsAtSecondOrder) {
   POUND_SKIP_WITHOUT_SHARED_RECORDS();
-  const model::GroundMotion motion = el_centro();
+  const model::GroundMotion motion = testing::el_centro(1000);  // the strong part, 10 s
   const double mass = 1.0e5, period = 0.8, zeta = 0.05;
   const double omega = 2 * std::numbers::pi / period, stiffness = mass * omega * omega;
   // A mass on a 1 m truss with E A = k; mass-proportional Rayleigh damping a0 = 2 zeta w.
@@ -88,7 +77,7 @@ TEST(SeismicResponse, SdofMatchesNigamJenningsAtSecondOrder) {
 
 TEST(SeismicResponse, DampedFrameMatchesModalSuperposition) {
   POUND_SKIP_WITHOUT_SHARED_RECORDS();
-  const model::GroundMotion motion = el_centro();
+  const model::GroundMotion motion = testing::el_centro(1000);  // the strong part, 10 s
   // A three-storey, one-bay frame (fixed bases, lumped floor masses) with Rayleigh damping;
   // Rayleigh damping is classical, so each mode is an independent SDOF.
   std::string nodes = R"({"id": "a0", "x": 0, "y": 0}, {"id": "b0", "x": 6, "y": 0})", elements,

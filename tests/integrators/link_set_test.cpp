@@ -11,17 +11,12 @@
 #include "links/coulomb_friction.hpp"
 #include "links/gap_spring.hpp"
 #include "links/kelvin_voigt.hpp"
+#include "support/vectors.hpp"
 
 namespace pound::integrators {
 namespace {
 
-// A vector of these entries.
-Vector entries(std::initializer_list<double> values) {
-  Vector v(static_cast<Index>(values.size()));
-  Index k = 0;
-  for (const double value : values) v[k++] = value;
-  return v;
-}
+using testing::entries;
 
 LinkSet two_links() {
   std::vector<LinkSet::Link> links(2);

@@ -300,27 +300,25 @@ TEST(ModelReader, ReadsAFile) {
   std::filesystem::remove(path);
 }
 
-TEST(ModelReader, RejectsMissingFile) {
-  const std::string path =
-      (std::filesystem::path(testing::TempDir()) / "pound_no_such_model.json").string();
+// Reading `path` must fail naming the path, for `reason`.
+void expect_unreadable(const std::string& path, const std::string& reason) {
   try {
     (void)read_model_file(path);
-    FAIL() << "read a missing file";
+    ADD_FAILURE() << "read " << path;
   } catch (const InputError& error) {
     EXPECT_EQ(error.file(), path);
-    EXPECT_EQ(error.reason(), "no such file");
+    EXPECT_EQ(error.reason(), reason);
   }
 }
 
+TEST(ModelReader, RejectsMissingFile) {
+  expect_unreadable(
+      (std::filesystem::path(testing::TempDir()) / "pound_no_such_model.json").string(),
+      "no such file");
+}
+
 TEST(ModelReader, RejectsFolder) {
-  const std::string path = testing::TempDir();
-  try {
-    (void)read_model_file(path);
-    FAIL() << "read a folder";
-  } catch (const InputError& error) {
-    EXPECT_EQ(error.file(), path);
-    EXPECT_EQ(error.reason(), "is a folder, not a file");
-  }
+  expect_unreadable(testing::TempDir(), "is a folder, not a file");
 }
 
 TEST(JsonReader, SuggestsTheClosestName) {

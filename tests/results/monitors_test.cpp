@@ -3,15 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include "support/vectors.hpp"
+
 namespace pound::results {
 namespace {
 
-Vector entries(std::initializer_list<double> values) {
-  Vector v(static_cast<Index>(values.size()));
-  Index k = 0;
-  for (const double value : values) v[k++] = value;
-  return v;
-}
+using testing::entries;
 
 integrators::State state(double time, const Vector& displacement, const Vector& penetration = {}) {
   integrators::State s;

@@ -4,15 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include "support/vectors.hpp"
+
 namespace pound::results {
 namespace {
 
-Vector entries(std::initializer_list<double> values) {
-  Vector v(static_cast<Index>(values.size()));
-  Index k = 0;
-  for (const double value : values) v[k++] = value;
-  return v;
-}
+using testing::entries;
 
 // Link rows: 0 a frictionless link "joint"; 1 and 2 the normal and tangential rows of "pad".
 integrators::State link_state(double time, const Vector& force, const Vector& penetration) {

@@ -3,25 +3,10 @@
 # usage: plot_batch_test.sh POUND_BINARY REPO_ROOT
 set -euo pipefail
 # shellcheck source-path=SCRIPTDIR source=plot_test_common.sh
-source "$(dirname "${BASH_SOURCE[0]}")/plot_test_common.sh"  # fail, $python, $tmp, is_png
+source "$(dirname "${BASH_SOURCE[0]}")/plot_test_common.sh"  # fail, $python, $tmp, check_folder...
 pound=$1
 root=$2
 script="$root/tools/plot_batch.py"
-
-check_folder() {  # folder, expected PNGs...: each written and printed, one line per PNG, no leftovers
-  local folder=$1
-  shift
-  local png
-  for png in "$@"; do
-    is_png "$folder/$png"
-    grep -qx "$folder/$png" "$tmp/stdout" || fail "plot_batch.py did not print $folder/$png"
-  done
-  local written
-  written=$(find "$folder" -maxdepth 1 -name '*.png' | wc -l)
-  [ "$(wc -l <"$tmp/stdout")" -eq "$written" ] ||
-    fail "expected one line per PNG written ($written), got: $(cat "$tmp/stdout")"
-  ! ls -A "$folder" | grep -q '\.tmp\.' || fail "temporary files left in $folder"
-}
 
 # 1. A real batch: the three-span bridge under four records at four scales, two limits.
 batch="$tmp/batch"
@@ -67,15 +52,7 @@ status=0
 [ "$status" -eq 1 ] || fail "expected exit 1 for an unknown --quantity, got $status: $(cat "$tmp/stderr")"
 grep -q 'max_joint_opening' "$tmp/stderr" || fail "no suggestion for --quantity max_joint_openin"
 
-# 3. Bad input: exit 2, a message naming the folder or file, never a traceback.
-expect_input_error() {  # folder, text the message must contain
-  local status=0
-  "$python" "$script" "$1" >/dev/null 2>"$tmp/stderr" || status=$?
-  [ "$status" -eq 2 ] || fail "expected exit 2 for $1, got $status: $(cat "$tmp/stderr")"
-  grep -qF "$2" "$tmp/stderr" || fail "message for $1 does not name $2: $(cat "$tmp/stderr")"
-  ! grep -q Traceback "$tmp/stderr" || fail "traceback for $1: $(cat "$tmp/stderr")"
-  ! find "$1" -maxdepth 1 -name '*.png' 2>/dev/null | grep -q . || fail "PNGs written into $1"
-}
+# 3. Bad input: exit 2, a message naming the folder or file, never a traceback, no PNG.
 expect_input_error "$tmp/does_not_exist" "$tmp/does_not_exist"
 
 mkdir "$tmp/no_summary"

@@ -6,23 +6,16 @@
 # usage: plot_block_belt_test.sh POUND_BINARY REPO_ROOT
 set -euo pipefail
 # shellcheck source-path=SCRIPTDIR source=plot_test_common.sh
-source "$(dirname "${BASH_SOURCE[0]}")/plot_test_common.sh"  # fail, $python, $tmp, is_png
+source "$(dirname "${BASH_SOURCE[0]}")/plot_test_common.sh"  # fail, $python, $tmp, check_folder...
 root=$2
 script="$root/tools/plot_block_belt.py"
 
 figures=(fig13_spring_elongation.png fig14_centroid_x.png fig15_centroid_y.png
          fig16_friction_ratio.png)
 
-check_folder() {  # folder: the four PNGs written and printed, one line each, no leftovers
-  local folder=$1
-  local png
-  for png in "${figures[@]}"; do
-    is_png "$folder/$png"
-    grep -qx "$folder/$png" "$tmp/stdout" || fail "plot_block_belt.py did not print $folder/$png"
-  done
-  [ "$(find "$folder" -maxdepth 1 -name '*.png' | wc -l)" -eq 4 ] || fail "not 4 PNGs in $folder"
-  [ "$(wc -l <"$tmp/stdout")" -eq 4 ] || fail "expected four lines, got: $(cat "$tmp/stdout")"
-  ! ls -A "$folder" | grep -q '\.tmp\.' || fail "temporary files left in $folder"
+check_figures() {  # folder: the four PNGs and no other, each printed, one line each, no leftovers
+  check_folder "$1" "${figures[@]}"
+  [ "$(find "$1" -maxdepth 1 -name '*.png' | wc -l)" -eq 4 ] || fail "not 4 PNGs in $1"
 }
 
 # 1. Synthetic data shaped like `pound verify block-belt --out`: the default sweep's sixteen
@@ -54,7 +47,7 @@ status=0
 "$python" "$script" "$data" --dpi 60 >"$tmp/stdout" 2>"$tmp/stderr" || status=$?
 [ "$status" -eq 0 ] || fail "plot_block_belt.py exited $status on good data: $(cat "$tmp/stderr")"
 ! grep -q Traceback "$tmp/stderr" || fail "traceback on good data: $(cat "$tmp/stderr")"
-check_folder "$data"
+check_figures "$data"
 
 # 2. --out and --speeds (1e5 names 100000); the python3 on PATH works too (it starts
 #    /usr/bin/python3 if it has no matplotlib).
@@ -64,14 +57,16 @@ status=0
 "$interpreter" "$script" "$data" --out "$tmp/chosen" --speeds 1e5,0.001,3 --dpi 60 \
   >"$tmp/stdout" 2>"$tmp/stderr" || status=$?
 [ "$status" -eq 0 ] || fail "$interpreter plot_block_belt.py --out --speeds exited $status: $(cat "$tmp/stderr")"
-check_folder "$tmp/chosen"
+check_figures "$tmp/chosen"
 
 status=0
 "$python" "$script" "$data" --out "$tmp/usage" --speeds 1e5,abc >/dev/null 2>"$tmp/stderr" || status=$?
 [ "$status" -eq 1 ] || fail "expected exit 1 for --speeds 1e5,abc, got $status: $(cat "$tmp/stderr")"
 [ ! -e "$tmp/usage" ] || fail "--speeds 1e5,abc created its --out folder"
 
-# 3. Bad input: exit 2, a message naming the file, never a traceback, no PNG anywhere.
+# 3. Bad input: exit 2, a message naming the file, never a traceback, no PNG anywhere. This
+#    replaces the common expect_input_error: the script is given --out and more arguments, and
+#    must name itself and print nothing.
 expect_input_error() {  # folder, text the message must contain, more arguments...
   local folder=$1 text=$2
   shift 2

@@ -3,7 +3,7 @@
 # usage: plot_run_test.sh POUND_BINARY REPO_ROOT
 set -euo pipefail
 # shellcheck source-path=SCRIPTDIR source=plot_test_common.sh
-source "$(dirname "${BASH_SOURCE[0]}")/plot_test_common.sh"  # fail, $python, $tmp, is_png
+source "$(dirname "${BASH_SOURCE[0]}")/plot_test_common.sh"  # fail, $python, $tmp, check_folder...
 pound=$1
 root=$2
 script="$root/tools/plot_run.py"
@@ -19,13 +19,7 @@ expected=(link_forces.png force_penetration.png displacements.png)
 [ -f "$run/joints.csv" ] && expected+=(joint_openings.png)
 [ -f "$run/energy.csv" ] && expected+=(energy.png)
 grep -q '"storeys"\|"piers"' "$run/summary.json" && expected+=(drift_envelopes.png)
-for png in "${expected[@]}"; do
-  is_png "$run/$png"
-  grep -qx "$run/$png" "$tmp/stdout" || fail "plot_run.py did not print $run/$png"
-done
-written=$(find "$run" -maxdepth 1 -name '*.png' | wc -l)
-[ "$(wc -l <"$tmp/stdout")" -eq "$written" ] || fail "expected one line per PNG written, got: $(cat "$tmp/stdout")"
-! ls "$run" | grep -q '\.tmp\.' || fail "temporary files left in $run"
+check_folder "$run" "${expected[@]}"
 
 # 2. The python3 on PATH works too (it starts /usr/bin/python3 if it has no matplotlib).
 if command -v python3 >/dev/null 2>&1; then
@@ -36,14 +30,7 @@ if command -v python3 >/dev/null 2>&1; then
   is_png "$run/link_forces.png"
 fi
 
-# 3. Bad input: exit 2, a message naming the folder or file, never a traceback.
-expect_input_error() {  # folder, text the message must contain
-  local status=0
-  "$python" "$script" "$1" >/dev/null 2>"$tmp/stderr" || status=$?
-  [ "$status" -eq 2 ] || fail "expected exit 2 for $1, got $status: $(cat "$tmp/stderr")"
-  grep -qF "$2" "$tmp/stderr" || fail "message for $1 does not name $2: $(cat "$tmp/stderr")"
-  ! grep -q Traceback "$tmp/stderr" || fail "traceback for $1: $(cat "$tmp/stderr")"
-}
+# 3. Bad input: exit 2, a message naming the folder or file, never a traceback, no PNG.
 mkdir "$tmp/no_summary"
 cp "$run/links.csv" "$tmp/no_summary/"
 expect_input_error "$tmp/no_summary" "$tmp/no_summary"
