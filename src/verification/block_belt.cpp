@@ -239,39 +239,26 @@ std::string format_block_belt(const BlockBeltScene& scene,
 }
 
 Table block_belt_sweep_table(const std::vector<BlockBeltPoint>& points) {
-  Table table{{"dimensionless_speed", "belt_speed", "friction_ratio", "stick_share",
-               "stick_slip_rate", "stick_fraction", "stick_slip_cycles", "stick_slip",
-               "lift_fraction", "tumbling", "peak_lift", "steps", "time_step", "run_time_s"},
-              std::vector<std::vector<double>>(14)};
-  for (const BlockBeltPoint& p : points) {
-    const double row[] = {p.dimensionless_speed,
-                          p.belt_speed,
-                          p.friction_ratio,
-                          p.stick_share,
-                          p.stick_slip_rate,
-                          p.stick_fraction,
-                          static_cast<double>(p.stick_slip_cycles),
-                          p.stick_slip ? 1.0 : 0.0,
-                          p.lift_fraction,
-                          p.tumbling ? 1.0 : 0.0,
-                          p.peak_lift,
-                          static_cast<double>(p.steps),
-                          p.time_step,
-                          p.run_time_s};
-    for (std::size_t c = 0; c < 14; ++c) table.values[c].push_back(row[c]);
-  }
+  Table table = table_with_columns({"dimensionless_speed", "belt_speed", "friction_ratio",
+                                    "stick_share", "stick_slip_rate", "stick_fraction",
+                                    "stick_slip_cycles", "stick_slip", "lift_fraction", "tumbling",
+                                    "peak_lift", "steps", "time_step", "run_time_s"});
+  for (const BlockBeltPoint& p : points)
+    append_row(table,
+               {p.dimensionless_speed, p.belt_speed, p.friction_ratio, p.stick_share,
+                p.stick_slip_rate, p.stick_fraction, static_cast<double>(p.stick_slip_cycles),
+                p.stick_slip ? 1.0 : 0.0, p.lift_fraction, p.tumbling ? 1.0 : 0.0, p.peak_lift,
+                static_cast<double>(p.steps), p.time_step, p.run_time_s});
   return table;
 }
 
 Table block_belt_history_table(const std::vector<BlockBeltPoint>& points) {
-  Table table{{"dimensionless_speed", "time_over_period", "elongation", "centroid_x", "centroid_y"},
-              std::vector<std::vector<double>>(5)};
+  Table table = table_with_columns(
+      {"dimensionless_speed", "time_over_period", "elongation", "centroid_x", "centroid_y"});
   for (const BlockBeltPoint& p : points)
-    for (std::size_t k = 0; k < p.time.size(); ++k) {
-      const double row[] = {p.dimensionless_speed, p.time[k], p.elongation[k], p.centroid_x[k],
-                            p.centroid_y[k]};
-      for (std::size_t c = 0; c < 5; ++c) table.values[c].push_back(row[c]);
-    }
+    for (std::size_t k = 0; k < p.time.size(); ++k)
+      append_row(table, {p.dimensionless_speed, p.time[k], p.elongation[k], p.centroid_x[k],
+                         p.centroid_y[k]});
   return table;
 }
 

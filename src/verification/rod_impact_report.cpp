@@ -63,16 +63,12 @@ io::Table force_history_table(const RodImpactResult& r) {
 }
 
 io::Table profile_table(const RodImpactResult& r) {
-  io::Table table{
-      {"time_over_T", "time", "rod", "x", "velocity", "exact_velocity", "stress", "exact_stress"},
-      std::vector<std::vector<double>>(8)};
+  io::Table table = table_with_columns(
+      {"time_over_T", "time", "rod", "x", "velocity", "exact_velocity", "stress", "exact_stress"});
   for (const RodProfile& profile : r.profiles)
-    for (const RodProfile::Point& p : profile.points) {
-      const double row[] = {profile.label, profile.time,  static_cast<double>(p.rod),
-                            p.x,           p.velocity,    p.exact_velocity,
-                            p.stress,      p.exact_stress};
-      for (std::size_t c = 0; c < 8; ++c) table.values[c].push_back(row[c]);
-    }
+    for (const RodProfile::Point& p : profile.points)
+      append_row(table, {profile.label, profile.time, static_cast<double>(p.rod), p.x, p.velocity,
+                         p.exact_velocity, p.stress, p.exact_stress});
   return table;
 }
 
