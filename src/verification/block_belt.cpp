@@ -270,10 +270,9 @@ io::Document to_document(const BlockBeltScene& scene, const std::vector<BlockBel
       .set("pressing_force", scene.pressing_force)
       .set("pretension", scene.pretension)
       .set("spring_period", scene.spring_period());
-  std::vector<io::Document> rows;
-  for (const BlockBeltPoint& p : points) {
-    io::Document row;
-    row.set("dimensionless_speed", p.dimensionless_speed)
+  auto row = [](const BlockBeltPoint& p) {
+    return io::Document()
+        .set("dimensionless_speed", p.dimensionless_speed)
         .set("belt_speed", p.belt_speed)
         .set("friction_ratio", p.friction_ratio)
         .set("stick_share", p.stick_share)
@@ -286,9 +285,8 @@ io::Document to_document(const BlockBeltScene& scene, const std::vector<BlockBel
         .set("peak_lift", p.peak_lift)
         .set("steps", p.steps)
         .set("run_time_s", p.run_time_s);
-    rows.push_back(std::move(row));
-  }
-  document.set("points", rows);
+  };
+  document.set("points", io::documents(points, row));
   return document;
 }
 

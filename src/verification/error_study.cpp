@@ -107,8 +107,7 @@ io::TextTable error_study_table(const std::vector<StudyResult>& results) {
 }
 
 io::Document to_document(const std::vector<StudyResult>& results) {
-  std::vector<io::Document> rows;
-  for (const StudyResult& r : results) {
+  auto row = [](const StudyResult& r) {
     io::Document doc;
     doc.set("case", r.input.benchmark)
         .set("integrator", r.input.integrator)
@@ -120,10 +119,10 @@ io::Document to_document(const std::vector<StudyResult>& results) {
       doc.set("refusal", r.refusal);
     else
       doc.set("metrics", to_document(r.metrics)).set("pareto", r.pareto);
-    rows.push_back(doc);
-  }
+    return doc;
+  };
   io::Document root;
-  root.set("runs", rows);
+  root.set("runs", io::documents(results, row));
   return root;
 }
 
