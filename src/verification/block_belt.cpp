@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <chrono>
 #include <cmath>
 #include <numbers>
 
@@ -11,9 +10,11 @@
 #include "builder/build.hpp"
 #include "builder/generators.hpp"
 #include "core/errors.hpp"
+#include "core/stopwatch.hpp"
 #include "integrators/transient_analysis.hpp"
 #include "links/law_registry.hpp"
 #include "results/energy_balance.hpp"
+#include "verification/transient_run.hpp"
 
 namespace pound::verification {
 namespace {
@@ -189,16 +190,11 @@ BlockBeltPoint run_block_belt(const builder::ModelSpec& base, double dimensionle
     }
   };
 
-  auto integrator = builder::make_integrator(built.analysis);
-  integrators::TransientAnalysis analysis(system, *integrator,
-                                          builder::make_transient_settings(built.analysis));
-  integrators::State state;
-  state.velocity = system.initial_velocity(built.model);
-  const auto started = std::chrono::steady_clock::now();
+  integrators::State state = initial_state(built, system);
+  const Stopwatch stopwatch;
   state.displacement = assembly::static_equilibrium(system, 0.0).displacement;
-  const integrators::TransientStatistics stats = analysis.run(state, observe);
-  point.run_time_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const integrators::TransientStatistics stats = run_analysis(built, system, state, observe);
+  point.run_time_s = stopwatch.seconds();
   point.steps = stats.steps;
   point.friction_ratio = steady_time > 0.0 ? force_sum / steady_time / force_unit : 0.0;
   point.stick_fraction = steady_time > 0.0 ? stick_time / steady_time : 0.0;

@@ -3,9 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
 
 #include "core/errors.hpp"
+#include "core/stopwatch.hpp"
 #include "verification/rod_impact_report.hpp"
 
 namespace pound::verification {
@@ -29,11 +29,9 @@ std::vector<StudyResult> error_study(const ErrorStudyOptions& options) {
               RodImpactResult scratch;
               std::vector<double> times;
               for (int k = 0; k < std::max(1, options.repeats); ++k) {
-                const auto started = std::chrono::steady_clock::now();
+                const Stopwatch stopwatch;
                 simulation.solve(scratch);
-                times.push_back(
-                    std::chrono::duration<double>(std::chrono::steady_clock::now() - started)
-                        .count());
+                times.push_back(stopwatch.seconds());
               }
               std::nth_element(times.begin(), times.begin() + static_cast<long>(times.size() / 2),
                                times.end());
