@@ -33,8 +33,8 @@ Matrix Truss::stiffness() const {
 }
 
 model::ElementMass Truss::mass() const {
-  return {.lumped =
-              Vector::Constant(2 * dimension_, 0.5 * section_.density * section_.area * axis_.length)};
+  return {.lumped = Vector::Constant(2 * dimension_,
+                                     0.5 * section_.density * section_.area * axis_.length)};
 }
 
 std::span<const std::string_view> Truss::end_force_names() const { return kEndForces; }
