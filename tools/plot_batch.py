@@ -33,9 +33,9 @@ import sys
 import textwrap
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_common import (InputError, Parser, PlotError, check_folder, check_width,  # noqa: E402
-                         csv_reader, import_matplotlib, not_a_number, read_header, read_json,
-                         report, save_png)
+from plot_common import (InputError, check_folder, check_width, csv_reader,  # noqa: E402
+                         folder_parser, import_matplotlib, not_a_number, read_header, read_json,
+                         run_plots, save_png)
 
 PROG = "plot_batch.py"
 REEXEC_MARK = "POUND_PLOT_BATCH_REEXEC"
@@ -537,20 +537,16 @@ def wanted_quantities(parser, names, stats):
 
 
 def main(argv):
-    parser = Parser(prog=PROG, description=__doc__.split("\n\n")[0],
-                    epilog="Units on the axes are the model's own, intensities in g.")
-    parser.add_argument("folder", metavar="DIR", help="the --out folder of `pound batch`")
-    parser.add_dpi()
+    parser = folder_parser(PROG, __doc__, "the --out folder of `pound batch`",
+                           epilog="Units on the axes are the model's own, intensities in g.")
     parser.add_argument("--quantity", metavar="NAME", nargs="+", action="extend",
                         help="plot the IDA curves of these quantities only (default: every "
                              "response quantity batch_stats.json lists)")
-    args = parser.parse_args(argv)
-    parser.check_dpi(args)
-
+    args = parser.parse_checked(argv)
     figure_class = import_matplotlib(PROG, REEXEC_MARK, __file__)
     import numpy
 
-    try:
+    def draw():
         check_folder(args.folder)
         stats = read_stats(args.folder)
         path, cases, columns = read_summary(args.folder, stats.quantities)
@@ -565,11 +561,9 @@ def main(argv):
                 sys.stderr.write(f"note: {path}: no completed case reports {quantity}: "
                                  f"ida_{quantity}.png not drawn\n")
         plotter.plot_fragility()
-    except PlotError as error:
-        return report(PROG, error)
-    if not plotter.written:
-        sys.stderr.write(f"{PROG}: {args.folder}: no completed cases to plot\n")
-    return 0
+        return plotter.written
+
+    return run_plots(PROG, draw, args.folder, "no completed cases to plot")
 
 
 if __name__ == "__main__":

@@ -36,9 +36,9 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_common import (InputError, OutputError, Parser, PlotError, check_folder,  # noqa: E402
-                         check_width, csv_reader, import_matplotlib, not_a_number, read_header,
-                         report, tight_layout)
+from plot_common import (InputError, OutputError, Parser, check_folder, check_width,  # noqa: E402
+                         csv_reader, import_matplotlib, not_a_number, read_header, run_plots,
+                         tight_layout)
 
 REEXEC_MARK = "POUND_PLOT_BLOCK_BELT_REEXEC"
 PROG = "plot_block_belt.py"
@@ -313,12 +313,10 @@ def main(argv):
                         help="values of Pi to plot in Figs. 13-15 (default: up to five, one per "
                              "decade)")
     parser.add_dpi()
-    args = parser.parse_args(argv)
-    parser.check_dpi(args)
-
+    args = parser.parse_checked(argv)
     figure_class = import_matplotlib(PROG, REEXEC_MARK, __file__)
 
-    try:
+    def draw():
         folder = args.folder
         check_folder(folder)
         _, points = read_sweep(folder)
@@ -329,9 +327,8 @@ def main(argv):
             plotter.history_figure(name, column, ylabel, title, reference, speeds, histories)
         plotter.friction_figure(points)
         plotter.save_all()
-    except PlotError as error:
-        return report(PROG, error)
-    return 0
+
+    return run_plots(PROG, draw)
 
 
 if __name__ == "__main__":

@@ -97,6 +97,32 @@ class Parser(argparse.ArgumentParser):
         if not low <= args.dpi <= high:
             self.error(f"--dpi must be between {low} and {high}, got {args.dpi}")
 
+    def parse_checked(self, argv):
+        """The arguments, with --dpi in range."""
+        args = self.parse_args(argv)
+        self.check_dpi(args)
+        return args
+
+
+def folder_parser(prog, doc, folder_help, epilog=None):
+    """The command line every plotting script starts from: the folder DIR it reads and --dpi."""
+    parser = Parser(prog=prog, description=doc.split("\n\n")[0], epilog=epilog)
+    parser.add_argument("folder", metavar="DIR", help=folder_help)
+    parser.add_dpi()
+    return parser
+
+
+def run_plots(prog, draw, folder=None, nothing_drawn=None):
+    """Runs draw() and returns the exit code: a PlotError's, else 0. draw returns what it wrote;
+    when that is empty, `nothing_drawn` (if given) is noted on stderr."""
+    try:
+        written = draw()
+    except PlotError as error:
+        return report(prog, error)
+    if nothing_drawn and not written:
+        sys.stderr.write(f"{prog}: {folder}: {nothing_drawn}\n")
+    return 0
+
 
 # ----------------------------------------------------------------------------------------------
 # Input

@@ -19,8 +19,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_common import (InputError, Parser, PlotError, check_folder, check_width,  # noqa: E402
-                         csv_reader, import_matplotlib, not_a_number, read_header, report,
+from plot_common import (InputError, check_folder, check_width, csv_reader,  # noqa: E402
+                         folder_parser, import_matplotlib, not_a_number, read_header, run_plots,
                          save_png)
 
 PROG = "plot_pareto.py"
@@ -97,18 +97,11 @@ def plot(runs, figure_class, path, dpi):
 
 
 def main(argv):
-    parser = Parser(prog=PROG, description=__doc__.split("\n\n")[0])
-    parser.add_argument("folder", metavar="DIR", help="the --out folder of `pound study rod-impact`")
-    parser.add_dpi()
-    args = parser.parse_args(argv)
-    parser.check_dpi(args)
+    parser = folder_parser(PROG, __doc__, "the --out folder of `pound study rod-impact`")
+    args = parser.parse_checked(argv)
     figure_class = import_matplotlib(PROG, REEXEC_MARK, __file__)
-    try:
-        plot(read_runs(args.folder), figure_class, os.path.join(args.folder, FIGURE_FILE),
-             args.dpi)
-    except PlotError as error:
-        return report(PROG, error)
-    return 0
+    return run_plots(PROG, lambda: plot(read_runs(args.folder), figure_class,
+                                        os.path.join(args.folder, FIGURE_FILE), args.dpi))
 
 
 if __name__ == "__main__":

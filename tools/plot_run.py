@@ -28,9 +28,9 @@ import sys
 from array import array
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_common import (InputError, Parser, PlotError, check_column_names,  # noqa: E402
-                         check_folder, check_width, csv_reader, import_matplotlib, not_a_number,
-                         read_json, report, save_png, strip_header)
+from plot_common import (InputError, check_column_names, check_folder, check_width,  # noqa: E402
+                         csv_reader, folder_parser, import_matplotlib, not_a_number, read_json,
+                         run_plots, save_png, strip_header)
 
 PROG = "plot_run.py"
 REEXEC_MARK = "POUND_PLOT_RUN_REEXEC"
@@ -518,17 +518,13 @@ class Plotter:
 # ----------------------------------------------------------------------------------------------
 
 def main(argv):
-    parser = Parser(prog=PROG, description=__doc__.split("\n\n")[0],
-                    epilog="Units on the axes are the model's own.")
-    parser.add_argument("folder", metavar="DIR", help="the --out folder of `pound run`")
-    parser.add_dpi()
-    args = parser.parse_args(argv)
-    parser.check_dpi(args)
-
+    parser = folder_parser(PROG, __doc__, "the --out folder of `pound run`",
+                           epilog="Units on the axes are the model's own.")
+    args = parser.parse_checked(argv)
     figure_class = import_matplotlib(PROG, REEXEC_MARK, __file__)
     import numpy
 
-    try:
+    def draw():
         summary = load_summary(args.folder)
         histories = read_histories(args.folder, numpy)
         plotter = Plotter(args.folder, summary, args.dpi, figure_class, numpy)
@@ -540,11 +536,9 @@ def main(argv):
         plotter.plot_drift_envelopes()
         plotter.plot_energy(histories)
         plotter.plot_displacements(histories)
-    except PlotError as error:
-        return report(PROG, error)
-    if not plotter.written:
-        sys.stderr.write(f"{PROG}: {args.folder}: no time histories to plot\n")
-    return 0
+        return plotter.written
+
+    return run_plots(PROG, draw, args.folder, "no time histories to plot")
 
 
 if __name__ == "__main__":

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -14,6 +13,7 @@
 
 #include "app/model_run.hpp"
 #include "core/errors.hpp"
+#include "core/stopwatch.hpp"
 #include "io/case_rows.hpp"
 #include "io/document.hpp"
 #include "io/json_reader.hpp"
@@ -26,12 +26,6 @@ namespace pound::app {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
 std::string scale_text(const builder::ExcitationSpec& e) {
   if (e.scale_factor) return fmt::format("factor {}", *e.scale_factor);
   if (e.target_pga) return fmt::format("pga {} g", *e.target_pga);
@@ -101,7 +95,7 @@ RunOutcome run_or_report_input_error(const RunRequest& request) {
 // Runs one case into <out>/.partial, then moves it into place.
 CaseResult run_case(const builder::SetSpec& set, const builder::BatchCase& c,
                     const std::string& out, int rank) {
-  const Clock::time_point started = Clock::now();
+  const Stopwatch case_clock;
   RunRequest request;
   request.model_path = set.models[c.model].path;
   request.record = set.records[c.record].excitation;
@@ -120,7 +114,7 @@ CaseResult run_case(const builder::SetSpec& set, const builder::BatchCase& c,
                                         .set("set", set.source)
                                         .set("record", set.records[c.record].excitation.record)
                                         .set("scale", c.scale));
-  const Clock::time_point writing = Clock::now();
+  const Stopwatch write_clock;
   const std::string temporary =
       (fs::path(out) / ".partial" / fmt::format("{}.r{}", c.index, rank)).string();
   io::remove_folder(temporary);
@@ -133,8 +127,8 @@ CaseResult run_case(const builder::SetSpec& set, const builder::BatchCase& c,
   io::move_folder_into_place(temporary, (fs::path(out) / c.name).string());
   // The row as it reads back, so statistics are the same whether a case ran now or is resumed.
   result.summary = io::parse_case_row(result.row, c.name);
-  result.worker_s = seconds_since(started);
-  result.write_s = seconds_since(writing);
+  result.worker_s = case_clock.seconds();
+  result.write_s = write_clock.seconds();
   result.setup_s = outcome.setup_s;
   return result;
 }
@@ -213,7 +207,7 @@ RankRun run_cases(const builder::SetSpec& set, const std::vector<const builder::
   std::mutex mutex;  // guards what follows
   BatchProgress progress;
   progress.total = mine.size();
-  const Clock::time_point started = Clock::now();
+  const Stopwatch wall_clock;
   auto work = [&] {
     while (!stop) {
       const std::size_t k = next++;
@@ -224,7 +218,7 @@ RankRun run_cases(const builder::SetSpec& set, const std::vector<const builder::
         run.results.push_back(std::move(result));
         ++progress.done;
         progress.failed += run.results.back().summary.status != results::CaseStatus::completed;
-        progress.elapsed_s = seconds_since(started);
+        progress.elapsed_s = wall_clock.seconds();
         progress.last = &run.results.back().summary;
         if (options.progress) options.progress(progress);
       } catch (const std::exception& error) {
@@ -240,7 +234,7 @@ RankRun run_cases(const builder::SetSpec& set, const std::vector<const builder::
     for (int w = 1; w < workers; ++w) pool.emplace_back(work);
     work();
   }
-  run.wall_s = seconds_since(started);
+  run.wall_s = wall_clock.seconds();
   return run;
 }
 

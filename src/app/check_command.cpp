@@ -88,9 +88,7 @@ io::Document check_document(const std::string& model_path, const verification::M
                                  .set("automatic_alpha2", automatic.alpha2));
   }
   doc.set("links", link_documents);
-  std::vector<io::Document> items;
-  for (const std::string& w : check.warnings) items.push_back(io::Document().set("warning", w));
-  doc.set("warnings", items);
+  doc.set("warnings", io::warning_documents(check.warnings));
   return doc;
 }
 

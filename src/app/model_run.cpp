@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <chrono>
 #include <filesystem>
 
 #include "app/run_report.hpp"
@@ -10,6 +9,7 @@
 #include "assembly/structural_system.hpp"
 #include "builder/build.hpp"
 #include "core/errors.hpp"
+#include "core/stopwatch.hpp"
 #include "io/output.hpp"
 #include "io/run_summary_document.hpp"
 #include "io/system_memory.hpp"
@@ -57,7 +57,7 @@ std::vector<std::string> record_warnings(const LoadedModel& loaded) {
 }
 
 PreparedRun prepare(const RunRequest& request) {
-  const auto started = std::chrono::steady_clock::now();
+  const Stopwatch stopwatch;
   const std::string& model_path = request.model_path;
   PreparedRun run{request.record ? load_model_with_record(model_path, *request.record)
                                  : load_model(model_path, request.motion)};
@@ -79,7 +79,7 @@ PreparedRun prepare(const RunRequest& request) {
   if (run.verification) run.observers->add(*run.verification);
   run.warnings = verification::check_model(built, *run.system, false).warnings;
   for (std::string& warning : record_warnings(run.loaded)) run.warnings.push_back(warning);
-  run.setup_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  run.setup_s = stopwatch.seconds();
   return run;
 }
 
@@ -90,7 +90,7 @@ Solved solve(PreparedRun& run) {
                                           builder::make_transient_settings(built.analysis));
   Solved solved;
   solved.state.velocity = run.system->initial_velocity(built.model);
-  const auto started = std::chrono::steady_clock::now();
+  const Stopwatch stopwatch;
   try {
     if (built.analysis.static_initial_state)
       solved.state.displacement =
@@ -104,8 +104,7 @@ Solved solve(PreparedRun& run) {
     solved.status = {error.reason(), error.time()};
     solved.statistics = analysis.statistics();  // up to the failure
   }
-  solved.run_time =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  solved.run_time = stopwatch.seconds();
   return solved;
 }
 

@@ -28,47 +28,20 @@ options)";
 
 }  // namespace
 
-int run_command(const Arguments& arguments) {
-  po::options_description options(kRunUsage);
-  std::string model_path, out, motion;
-  long max_steps = 0;
-  double time_limit = 0.0;
-  options.add_options()("help,h", "show this help")("out,o", po::value(&out),
-                                                    "output folder (default out/<model name>)")(
-      "motion", po::value(&motion),
-      "ground-motion record (.AT2, or columns) replacing the model's first excitation, or "
-      "exciting it along x in g when it has none")(
-      "max-steps", po::value(&max_steps), "stop with an error after this many steps (0: no limit)")(
-      "time-limit", po::value(&time_limit),
-      "stop with an error after this many seconds of solving (0: no limit); the histories so far "
-      "are kept")("quiet,q", "print nothing but errors");
-  const auto parsed = parse_command_line(arguments, options, "model", model_path);
-  if (!parsed) return 0;
-  const po::variables_map& vm = *parsed;
-  if (model_path.empty()) {
-    std::cerr << "pound run: name a model file (see `pound run --help`)\n";
-    return 1;
-  }
-  if (max_steps < 0) {
-    std::cerr << "pound run: --max-steps must be >= 0\n";
-    return 1;
-  }
-  if (!(time_limit >= 0.0) || !std::isfinite(time_limit)) {
-    std::cerr << "pound run: --time-limit must be a number of seconds >= 0\n";
-    return 1;
-  }
-  const bool quiet = vm.count("quiet") > 0;
-  if (out.empty())
-    out = (std::filesystem::path("out") / std::filesystem::path(model_path).stem()).string();
+namespace {
 
-  // Everything that can be wrong with the input is found before any output exists.
-  RunRequest request;
-  request.model_path = model_path;
-  if (!motion.empty()) request.motion = motion;
-  request.max_steps = max_steps;
-  request.time_limit = time_limit;
-  const RunOutcome outcome = run_model(request);
-  write_run_outputs(out, outcome);
+// What is wrong with the command line, or empty.
+std::string request_error(const RunRequest& request) {
+  if (request.model_path.empty()) return "name a model file (see `pound run --help`)";
+  if (request.max_steps < 0) return "--max-steps must be >= 0";
+  if (!(request.time_limit >= 0.0) || !std::isfinite(request.time_limit))
+    return "--time-limit must be a number of seconds >= 0";
+  return {};
+}
+
+// Prints the run's report and warnings; the exit code: 3 when the analysis failed.
+int report_outcome(const RunOutcome& outcome, const std::string& model_path, const std::string& out,
+                   bool quiet) {
   if (!quiet) std::cout << outcome.headline << " -> " << out << "/\n" << outcome.report;
   for (const std::string& w : outcome.warnings) std::cerr << "warning: " << w << "\n";
   if (!outcome.failure.empty()) {
@@ -78,6 +51,39 @@ int run_command(const Arguments& arguments) {
     return 3;
   }
   return 0;
+}
+
+}  // namespace
+
+int run_command(const Arguments& arguments) {
+  po::options_description options(kRunUsage);
+  RunRequest request;
+  std::string out, motion;
+  options.add_options()("help,h", "show this help")("out,o", po::value(&out),
+                                                    "output folder (default out/<model name>)")(
+      "motion", po::value(&motion),
+      "ground-motion record (.AT2, or columns) replacing the model's first excitation, or "
+      "exciting it along x in g when it has none")(
+      "max-steps", po::value(&request.max_steps),
+      "stop with an error after this many steps (0: no limit)")(
+      "time-limit", po::value(&request.time_limit),
+      "stop with an error after this many seconds of solving (0: no limit); the histories so far "
+      "are kept")("quiet,q", "print nothing but errors");
+  const auto parsed = parse_command_line(arguments, options, "model", request.model_path);
+  if (!parsed) return 0;
+  if (const std::string error = request_error(request); !error.empty()) {
+    std::cerr << "pound run: " << error << "\n";
+    return 1;
+  }
+  if (!motion.empty()) request.motion = motion;
+  if (out.empty())
+    out =
+        (std::filesystem::path("out") / std::filesystem::path(request.model_path).stem()).string();
+
+  // Everything that can be wrong with the input is found before any output exists.
+  const RunOutcome outcome = run_model(request);
+  write_run_outputs(out, outcome);
+  return report_outcome(outcome, request.model_path, out, parsed->count("quiet") > 0);
 }
 
 }  // namespace pound::app

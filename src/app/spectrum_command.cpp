@@ -115,66 +115,88 @@ io::Document spectrum_document(const std::string& path, const model::GroundMotio
   return document;
 }
 
-}  // namespace
-
-int spectrum_command(const Arguments& arguments) {
-  po::options_description options(kSpectrumUsage);
+struct SpectrumRequest {
+  std::string record;
   std::string format = "auto", units = "g", periods_text, csv;
   int column = 1;
   double damping_ratio = 0.05;
+};
+
+po::options_description spectrum_options(SpectrumRequest& r) {
+  po::options_description options(kSpectrumUsage);
   options.add_options()("help,h", "show this help")(
-      "format", po::value(&format)->default_value(format),
+      "format", po::value(&r.format)->default_value(r.format),
       "at2 | columns | auto (.AT2 or an NPTS header line: at2; else columns)")(
-      "column", po::value(&column),
+      "column", po::value(&r.column),
       "columns file: the column to read, counting from 1 (default 1, or 2 with --time-column)")(
       "dt", po::value<double>(), "time step [s] of a columns file that does not state it")(
       "time-column", "columns file: the first column is time (gives dt)")(
-      "units", po::value(&units)->default_value(units),
+      "units", po::value(&r.units)->default_value(r.units),
       "of the values in the file: g | m/s2 | cm/s2 (AT2 files are in g)")(
-      "damping", po::value(&damping_ratio)->default_value(damping_ratio, "0.05"),
+      "damping", po::value(&r.damping_ratio)->default_value(r.damping_ratio, "0.05"),
       "damping ratio of the oscillators")(
-      "periods", po::value(&periods_text),
+      "periods", po::value(&r.periods_text),
       "comma-separated periods [s], e.g. 0.1,0.2,0.5,1 (0 gives the PGA)")(
-      "csv", po::value(&csv), "write period,sa_g,sv_m_per_s,sd_m to this CSV file")(
+      "csv", po::value(&r.csv), "write period,sa_g,sv_m_per_s,sd_m to this CSV file")(
       "json", "print the record's data and the spectrum as one JSON object");
-  std::string record;
-  const auto parsed = parse_command_line(arguments, options, "record", record);
+  return options;
+}
+
+// What is wrong with the command line, or empty.
+std::string request_error(const SpectrumRequest& r) {
+  if (r.record.empty()) return "name the record file (see `pound spectrum --help`)";
+  if (!(r.damping_ratio >= 0.0 && r.damping_ratio < 1.0)) return "--damping must be in [0, 1)";
+  if (r.format != "auto" && r.format != "at2" && r.format != "columns")
+    return fmt::format("unknown --format '{}' (known: at2, columns, auto)", r.format);
+  return {};
+}
+
+// How to read the record; throws std::invalid_argument on unknown units.
+io::RecordFormat record_format(const SpectrumRequest& r, const po::variables_map& vm) {
+  io::RecordFormat format;
+  format.format = r.format;
+  format.time_column = vm.count("time-column") > 0;
+  format.column = vm.count("column") ? r.column : (format.time_column ? 2 : 1);
+  if (vm.count("dt")) format.time_step = vm["dt"].as<double>();
+  format.units = io::parse_acceleration_unit(r.units);
+  return format;
+}
+
+}  // namespace
+
+int spectrum_command(const Arguments& arguments) {
+  SpectrumRequest request;
+  const po::options_description options = spectrum_options(request);
+  const auto parsed = parse_command_line(arguments, options, "record", request.record);
   if (!parsed) return 0;
   const po::variables_map& vm = *parsed;
   auto usage_error = [](const std::string& what) {
     std::cerr << "pound spectrum: " << what << "\n";
     return 1;
   };
-  if (record.empty()) return usage_error("name the record file (see `pound spectrum --help`)");
-  if (!(damping_ratio >= 0.0 && damping_ratio < 1.0))
-    return usage_error("--damping must be in [0, 1)");
-  if (format != "auto" && format != "at2" && format != "columns")
-    return usage_error(fmt::format("unknown --format '{}' (known: at2, columns, auto)", format));
-
-  io::RecordFormat record_format;
-  record_format.format = format;
-  record_format.time_column = vm.count("time-column") > 0;
-  record_format.column = vm.count("column") ? column : (record_format.time_column ? 2 : 1);
-  if (vm.count("dt")) record_format.time_step = vm["dt"].as<double>();
+  if (const std::string error = request_error(request); !error.empty()) return usage_error(error);
+  io::RecordFormat format;
   std::vector<double> periods = default_periods();
   try {
-    record_format.units = io::parse_acceleration_unit(units);
-    if (!periods_text.empty()) periods = parse_periods(periods_text);
+    format = record_format(request, vm);
+    if (!request.periods_text.empty()) periods = parse_periods(request.periods_text);
   } catch (const std::invalid_argument& error) {
     return usage_error(error.what());
   }
 
   // Read in m/s^2 (the spectrum's SI units); Sa is printed in g.
   const model::GroundMotion motion =
-      io::read_ground_motion(record, record_format, kStandardGravity);
-  const Spectrum spectrum = response_spectrum(motion, periods, damping_ratio);
-  if (!csv.empty())
-    io::write_csv_atomic(csv, Table{{"period", "sa_g", "sv_m_per_s", "sd_m"},
-                                    {spectrum.periods, spectrum.sa_g, spectrum.sv, spectrum.sd}});
+      io::read_ground_motion(request.record, format, kStandardGravity);
+  const Spectrum spectrum = response_spectrum(motion, periods, request.damping_ratio);
+  if (!request.csv.empty())
+    io::write_csv_atomic(request.csv,
+                         Table{{"period", "sa_g", "sv_m_per_s", "sd_m"},
+                               {spectrum.periods, spectrum.sa_g, spectrum.sv, spectrum.sd}});
   if (vm.count("json"))
-    std::cout << spectrum_document(record, motion, spectrum, damping_ratio).dump() << "\n";
+    std::cout << spectrum_document(request.record, motion, spectrum, request.damping_ratio).dump()
+              << "\n";
   else
-    std::cout << format_spectrum(motion, spectrum, damping_ratio);
+    std::cout << format_spectrum(motion, spectrum, request.damping_ratio);
   return 0;
 }
 

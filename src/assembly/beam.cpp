@@ -13,16 +13,14 @@ Beam::Beam(std::string id, const std::array<model::ElementNode, 2>& ends, const 
     : Element(std::move(id), {ends[0].index, ends[1].index}, damping),
       section_(section),
       consistent_mass_(consistent_mass),
-      length_(model::distance(ends[0].position, ends[1].position, 2)),
-      cosine_((ends[1].position[0] - ends[0].position[0]) / length_),
-      sine_((ends[1].position[1] - ends[0].position[1]) / length_) {}
+      axis_(model::element_axis(ends, 2)) {}
 
 std::span<const int> Beam::directions() const { return kDirections; }
 
 Beam::Matrix6 Beam::local_stiffness() const {
-  const double ea = section_.youngs_modulus * section_.area / length_;
+  const double ea = section_.youngs_modulus * section_.area / axis_.length;
   const double ei = section_.youngs_modulus * section_.inertia;
-  const double l2 = length_ * length_, l3 = l2 * length_;
+  const double l2 = axis_.length * axis_.length, l3 = l2 * axis_.length;
   Matrix6 k = Matrix6::Zero();
   k(0, 0) = k(3, 3) = ea;
   k(0, 3) = k(3, 0) = -ea;
@@ -30,13 +28,13 @@ Beam::Matrix6 Beam::local_stiffness() const {
   k(1, 4) = k(4, 1) = -12 * ei / l3;
   k(1, 2) = k(2, 1) = k(1, 5) = k(5, 1) = 6 * ei / l2;
   k(4, 2) = k(2, 4) = k(4, 5) = k(5, 4) = -6 * ei / l2;
-  k(2, 2) = k(5, 5) = 4 * ei / length_;
-  k(2, 5) = k(5, 2) = 2 * ei / length_;
+  k(2, 2) = k(5, 5) = 4 * ei / axis_.length;
+  k(2, 5) = k(5, 2) = 2 * ei / axis_.length;
   return k;
 }
 
 Beam::Matrix6 Beam::local_consistent_mass() const {
-  const double m = mass_per_length() * length_, l = length_;
+  const double m = mass_per_length() * axis_.length, l = axis_.length;
   Matrix6 mass = Matrix6::Zero();
   mass(0, 0) = mass(3, 3) = m / 3.0;
   mass(0, 3) = mass(3, 0) = m / 6.0;
@@ -53,13 +51,14 @@ Beam::Matrix6 Beam::local_consistent_mass() const {
 }
 
 Beam::Matrix6 Beam::rotation() const {
+  const double cosine = axis_.cosines[0], sine = axis_.cosines[1];
   Matrix6 t = Matrix6::Zero();
   for (int node = 0; node < 2; ++node) {
     const int o = 3 * node;
-    t(o, o) = cosine_;
-    t(o, o + 1) = sine_;
-    t(o + 1, o) = -sine_;
-    t(o + 1, o + 1) = cosine_;
+    t(o, o) = cosine;
+    t(o, o + 1) = sine;
+    t(o + 1, o) = -sine;
+    t(o + 1, o + 1) = cosine;
     t(o + 2, o + 2) = 1.0;
   }
   return t;
@@ -78,7 +77,7 @@ model::ElementMass Beam::mass() const {
     const Matrix6 m = t.transpose() * local_consistent_mass() * t;
     return {.consistent = m};
   }
-  const double half = 0.5 * mass_per_length() * length_;
+  const double half = 0.5 * mass_per_length() * axis_.length;
   return {.lumped = Vector{{half, half, 0.0, half, half, 0.0}}};
 }
 

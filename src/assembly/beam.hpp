@@ -55,8 +55,7 @@ class Beam final : public model::Element {
 
   Section section_;
   bool consistent_mass_;
-  double length_;
-  double cosine_, sine_;
+  model::ElementAxis axis_;
 };
 
 }  // namespace pound::assembly

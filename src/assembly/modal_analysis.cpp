@@ -9,16 +9,11 @@
 
 namespace pound::assembly {
 
-Modes modal_analysis(const StructuralSystem& system, Index max_dofs) {
-  const Index n = system.size();
-  if (n > max_dofs)
-    throw std::length_error(
-        fmt::format("modal analysis of {} DOFs: the dense eigen-solver is "
-                    "limited to {} DOFs",
-                    n, max_dofs));
+namespace {
+
+// K with every link at its initial tangent (penetration -gap, at rest), on copies of their laws.
+Matrix stiffness_with_links(const StructuralSystem& system) {
   Matrix stiffness = Matrix(system.stiffness());
-  const Matrix mass = Matrix(system.mass_matrix());
-  // Links at their initial tangent (penetration -gap, at rest), on copies of their laws.
   const integrators::LinkSet& links = system.links();
   const Matrix connectivity = Matrix(links.connectivity());
   for (Index k = 0; k < links.count(); ++k) {
@@ -28,35 +23,62 @@ Modes modal_analysis(const StructuralSystem& system, Index max_dofs) {
     if (tangent != 0.0)
       stiffness += tangent * connectivity.row(row).transpose() * connectivity.row(row);
   }
+  return stiffness;
+}
+
+Matrix submatrix(const Matrix& a, const std::vector<Index>& rows, const std::vector<Index>& cols) {
+  Matrix out(rows.size(), cols.size());
+  for (std::size_t r = 0; r < rows.size(); ++r)
+    for (std::size_t c = 0; c < cols.size(); ++c) out(r, c) = a(rows[r], cols[c]);
+  return out;
+}
+
+// Static condensation of the massless DOFs: K_mm - K_m0 K_00^-1 K_0m, and x_0 = recovery x_m.
+struct Condensed {
+  Matrix reduced;
+  Matrix recovery;
+};
+
+Condensed condense(const Matrix& stiffness, const std::vector<Index>& with_mass,
+                   const std::vector<Index>& massless) {
+  Condensed c{submatrix(stiffness, with_mass, with_mass),
+              Matrix(static_cast<Index>(massless.size()), static_cast<Index>(with_mass.size()))};
+  if (!massless.empty()) {
+    const Eigen::LDLT<Matrix> k00(submatrix(stiffness, massless, massless));
+    c.recovery = -k00.solve(submatrix(stiffness, massless, with_mass));
+    c.reduced += submatrix(stiffness, with_mass, massless) * c.recovery;
+  }
+  return c;
+}
+
+}  // namespace
+
+Modes modal_analysis(const StructuralSystem& system, Index max_dofs) {
+  const Index n = system.size();
+  if (n > max_dofs)
+    throw std::length_error(
+        fmt::format("modal analysis of {} DOFs: the dense eigen-solver is "
+                    "limited to {} DOFs",
+                    n, max_dofs));
+  const Matrix stiffness = stiffness_with_links(system);
+  const Matrix mass = Matrix(system.mass_matrix());
   // Split DOFs with and without mass; condense the massless ones statically.
   std::vector<Index> with_mass, massless;
   for (Index i = 0; i < n; ++i)
     (mass.row(i).cwiseAbs().maxCoeff() > 0.0 ? with_mass : massless).push_back(i);
-  const auto m_count = static_cast<Index>(with_mass.size()),
-             z_count = static_cast<Index>(massless.size());
-  auto block = [](const Matrix& a, const std::vector<Index>& rows, const std::vector<Index>& cols) {
-    Matrix out(rows.size(), cols.size());
-    for (std::size_t r = 0; r < rows.size(); ++r)
-      for (std::size_t c = 0; c < cols.size(); ++c) out(r, c) = a(rows[r], cols[c]);
-    return out;
-  };
-  Matrix reduced = block(stiffness, with_mass, with_mass);
-  Matrix recovery(z_count, m_count);  // x_0 = recovery x_m
-  if (z_count > 0) {
-    const Eigen::LDLT<Matrix> k00(block(stiffness, massless, massless));
-    recovery = -k00.solve(block(stiffness, massless, with_mass));
-    reduced += block(stiffness, with_mass, massless) * recovery;
-  }
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> solver(reduced,
-                                                                block(mass, with_mass, with_mass));
+  const Condensed condensed = condense(stiffness, with_mass, massless);
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> solver(
+      condensed.reduced, submatrix(mass, with_mass, with_mass));
   if (solver.info() != Eigen::Success) throw std::runtime_error("modal analysis did not converge");
   Modes modes;
   modes.omega_squared = solver.eigenvalues();
-  modes.shapes = Matrix::Zero(n, m_count);
-  for (Index r = 0; r < m_count; ++r) modes.shapes.row(with_mass[r]) = solver.eigenvectors().row(r);
-  if (z_count > 0) {
-    const Matrix recovered = recovery * solver.eigenvectors();
-    for (Index r = 0; r < z_count; ++r) modes.shapes.row(massless[r]) = recovered.row(r);
+  modes.shapes = Matrix::Zero(n, static_cast<Index>(with_mass.size()));
+  for (std::size_t r = 0; r < with_mass.size(); ++r)
+    modes.shapes.row(with_mass[r]) = solver.eigenvectors().row(static_cast<Index>(r));
+  if (!massless.empty()) {
+    const Matrix recovered = condensed.recovery * solver.eigenvectors();
+    for (std::size_t r = 0; r < massless.size(); ++r)
+      modes.shapes.row(massless[r]) = recovered.row(static_cast<Index>(r));
   }
   return modes;
 }

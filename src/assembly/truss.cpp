@@ -13,10 +13,8 @@ Truss::Truss(std::string id, const std::array<model::ElementNode, 2>& ends, int 
     : Element(std::move(id), {ends[0].index, ends[1].index}, damping),
       dimension_(dimension),
       section_(section),
-      length_(model::distance(ends[0].position, ends[1].position, dimension)),
-      cosines_{(ends[1].position[0] - ends[0].position[0]) / length_,
-               (ends[1].position[1] - ends[0].position[1]) / length_},
-      axial_stiffness_(section.youngs_modulus * section.area / length_) {}
+      axis_(model::element_axis(ends, dimension)),
+      axial_stiffness_(section.youngs_modulus * section.area / axis_.length) {}
 
 std::span<const int> Truss::directions() const {
   return std::span(kDirections).first(static_cast<std::size_t>(dimension_));
@@ -28,15 +26,15 @@ Matrix Truss::stiffness() const {
   for (Index p = 0; p < size; ++p)
     for (Index q = 0; q < size; ++q) {
       const double sign = (p / dimension_ == q / dimension_) ? 1.0 : -1.0;
-      k(p, q) = sign * axial_stiffness_ * cosines_[static_cast<std::size_t>(p % dimension_)] *
-                cosines_[static_cast<std::size_t>(q % dimension_)];
+      k(p, q) = sign * axial_stiffness_ * axis_.cosines[static_cast<std::size_t>(p % dimension_)] *
+                axis_.cosines[static_cast<std::size_t>(q % dimension_)];
     }
   return k;
 }
 
 model::ElementMass Truss::mass() const {
-  return {.lumped =
-              Vector::Constant(2 * dimension_, 0.5 * section_.density * section_.area * length_)};
+  return {.lumped = Vector::Constant(2 * dimension_,
+                                     0.5 * section_.density * section_.area * axis_.length)};
 }
 
 std::span<const std::string_view> Truss::end_force_names() const { return kEndForces; }
@@ -44,7 +42,7 @@ std::span<const std::string_view> Truss::end_force_names() const { return kEndFo
 Vector Truss::end_forces(const Vector& u) const {
   double elongation = 0.0;
   for (int d = 0; d < dimension_; ++d)
-    elongation += (u[dimension_ + d] - u[d]) * cosines_[static_cast<std::size_t>(d)];
+    elongation += (u[dimension_ + d] - u[d]) * axis_.cosines[static_cast<std::size_t>(d)];
   return Vector::Constant(1, axial_stiffness_ * elongation);
 }
 

@@ -35,8 +35,7 @@ class Truss final : public model::Element {
  private:
   int dimension_;
   Section section_;
-  double length_;
-  std::array<double, 2> cosines_;
+  model::ElementAxis axis_;
   double axial_stiffness_;  // E A / L
 };
 

@@ -7,61 +7,97 @@
 
 namespace pound::assembly {
 
-TwistedTridiagonal::TwistedTridiagonal(const Eigen::SparseMatrix<double>& matrix) {
+namespace {
+
+// The diagonal d_i and the subdiagonal e_i = A(i, i-1) (e_0 = 0) of a tridiagonal matrix.
+struct Tridiagonal {
+  std::vector<double> diagonal;
+  std::vector<double> off;
+};
+
+Tridiagonal tridiagonal_parts(const Eigen::SparseMatrix<double>& matrix) {
   const Index n = matrix.rows();
-  std::vector<double> diagonal(n, 0.0), off(n, 0.0);  // off[i] = A(i, i-1)
+  Tridiagonal parts{std::vector<double>(n, 0.0), std::vector<double>(n, 0.0)};
   for (Index col = 0; col < matrix.outerSize(); ++col)
     for (Eigen::SparseMatrix<double>::InnerIterator it(matrix, col); it; ++it) {
       if (it.row() == col)
-        diagonal[col] += it.value();
+        parts.diagonal[col] += it.value();
       else if (it.row() == col + 1)
-        off[col + 1] += it.value();
+        parts.off[col + 1] += it.value();
       else if (it.row() != col - 1 && it.value() != 0.0)
         throw std::domain_error("TwistedTridiagonal needs a tridiagonal matrix");
     }
+  return parts;
+}
+
+double inverse(double pivot, Index row) {
+  if (!(pivot > 0.0))
+    throw std::domain_error(
+        fmt::format("matrix is not positive definite at equation {} (pivot {:.3e})", row, pivot));
+  return 1.0 / pivot;
+}
+
+}  // namespace
+
+TwistedTridiagonal::TwistedTridiagonal(const Eigen::SparseMatrix<double>& matrix) {
+  const auto [diagonal, off] = tridiagonal_parts(matrix);
+  const Index n = matrix.rows();
   multiplier_.assign(n, 0.0);
   inverse_pivot_.assign(n, 0.0);
-  auto inverse = [](double pivot, Index row) {
-    if (!(pivot > 0.0))
-      throw std::domain_error(
-          fmt::format("matrix is not positive definite at equation {} (pivot {:.3e})", row, pivot));
-    return 1.0 / pivot;
-  };
+  // A zero off-diagonal ends a block: rows a..b-1 do not couple to the rest.
   for (Index a = 0; a < n;) {
     Index b = a + 1;
     while (b < n && off[b] != 0.0) ++b;
-    const Index k = a + (b - a) / 2;
-    Block block{a, k, b, 0.0, 0.0};
-    if (k > a) {  // top rows a..k-1: p_i = d_i - l_i e_i, l_i = e_i / p_{i-1}
-      double pivot = diagonal[a];
-      for (Index i = a + 1; i < k; ++i) {
-        inverse_pivot_[i - 1] = inverse(pivot, i - 1);
-        multiplier_[i] = off[i] / pivot;
-        pivot = diagonal[i] - multiplier_[i] * off[i];
-      }
-      inverse_pivot_[k - 1] = inverse(pivot, k - 1);
-      block.from_above = off[k] / pivot;
-      chains_.push_back({a, 1, k - a});
-    }
-    if (k < b - 1) {  // bottom rows b-1..k+1: q_i = d_i - u_i e_{i+1}, u_i = e_{i+1} / q_{i+1}
-      double pivot = diagonal[b - 1];
-      for (Index i = b - 2; i > k; --i) {
-        inverse_pivot_[i + 1] = inverse(pivot, i + 1);
-        multiplier_[i] = off[i + 1] / pivot;
-        pivot = diagonal[i] - multiplier_[i] * off[i + 1];
-      }
-      inverse_pivot_[k + 1] = inverse(pivot, k + 1);
-      block.from_below = off[k + 1] / pivot;
-      chains_.push_back({b - 1, -1, b - 1 - k});
-    }
-    const double twist =
-        diagonal[k] - block.from_above * off[k] - (k + 1 < b ? block.from_below * off[k + 1] : 0.0);
-    inverse_pivot_[k] = inverse(twist, k);
-    blocks_.push_back(block);
+    factor_block(a, b, diagonal, off);
     a = b;
   }
   common_length_ = chains_.empty() ? 0 : chains_.front().length;
   for (const Chain& chain : chains_) common_length_ = std::min(common_length_, chain.length);
+}
+
+// Twisted at the middle row k: the top part from row a down, the bottom part from row b-1 up.
+void TwistedTridiagonal::factor_block(Index a, Index b, const std::vector<double>& diagonal,
+                                      const std::vector<double>& off) {
+  const Index k = a + (b - a) / 2;
+  Block block{a, k, b, 0.0, 0.0};
+  if (k > a) {
+    block.from_above = factor_top(a, k, diagonal, off);
+    chains_.push_back({a, 1, k - a});
+  }
+  if (k < b - 1) {
+    block.from_below = factor_bottom(k, b, diagonal, off);
+    chains_.push_back({b - 1, -1, b - 1 - k});
+  }
+  const double twist =
+      diagonal[k] - block.from_above * off[k] - (k + 1 < b ? block.from_below * off[k + 1] : 0.0);
+  inverse_pivot_[k] = inverse(twist, k);
+  blocks_.push_back(block);
+}
+
+// Top rows a..k-1: p_i = d_i - l_i e_i, l_i = e_i / p_{i-1}. Returns the twist's l_k.
+double TwistedTridiagonal::factor_top(Index a, Index k, const std::vector<double>& diagonal,
+                                      const std::vector<double>& off) {
+  double pivot = diagonal[a];
+  for (Index i = a + 1; i < k; ++i) {
+    inverse_pivot_[i - 1] = inverse(pivot, i - 1);
+    multiplier_[i] = off[i] / pivot;
+    pivot = diagonal[i] - multiplier_[i] * off[i];
+  }
+  inverse_pivot_[k - 1] = inverse(pivot, k - 1);
+  return off[k] / pivot;
+}
+
+// Bottom rows b-1..k+1: q_i = d_i - u_i e_{i+1}, u_i = e_{i+1} / q_{i+1}. Returns the twist's u_k.
+double TwistedTridiagonal::factor_bottom(Index k, Index b, const std::vector<double>& diagonal,
+                                         const std::vector<double>& off) {
+  double pivot = diagonal[b - 1];
+  for (Index i = b - 2; i > k; --i) {
+    inverse_pivot_[i + 1] = inverse(pivot, i + 1);
+    multiplier_[i] = off[i + 1] / pivot;
+    pivot = diagonal[i] - multiplier_[i] * off[i + 1];
+  }
+  inverse_pivot_[k + 1] = inverse(pivot, k + 1);
+  return off[k + 1] / pivot;
 }
 
 namespace {
@@ -73,54 +109,53 @@ namespace {
 // x_i = x_i / p_i - m_(i + step) x_(i + step).
 constexpr int kWidth = 4;
 
-template <int Width, typename Chain>
-void eliminate(const Chain* chains, const double* r, const double* m, double* x) {
+// Runs Width chains: all of them in lockstep over the shortest one's length, then each one's
+// rest alone. `start` sets a chain's first row and returns its value there; `link` moves a
+// position one row along its step and returns the new value.
+template <int Width, typename Chain, typename Start, typename Link>
+void in_lockstep(const Chain* chains, Start start, Link link) {
   Index position[Width], step[Width], length[Width];
   double carry[Width];
   Index common = chains[0].length;
   for (int c = 0; c < Width; ++c) {
-    position[c] = chains[c].start;
     step[c] = chains[c].step;
     length[c] = chains[c].length;
-    carry[c] = x[position[c]] = r[position[c]];
+    carry[c] = start(chains[c], position[c]);
     common = std::min(common, length[c]);
   }
   for (Index s = 1; s < common; ++s)
-    for (int c = 0; c < Width; ++c) {
-      position[c] += step[c];
-      carry[c] = x[position[c]] = r[position[c]] - m[position[c]] * carry[c];
-    }
+    for (int c = 0; c < Width; ++c) carry[c] = link(position[c], step[c], carry[c]);
   for (int c = 0; c < Width; ++c)
-    for (Index s = common; s < length[c]; ++s) {
-      position[c] += step[c];
-      carry[c] = x[position[c]] = r[position[c]] - m[position[c]] * carry[c];
-    }
+    for (Index s = common; s < length[c]; ++s) carry[c] = link(position[c], step[c], carry[c]);
+}
+
+template <int Width, typename Chain>
+void eliminate(const Chain* chains, const double* r, const double* m, double* x) {
+  in_lockstep<Width>(
+      chains,
+      [&](const Chain& chain, Index& position) {
+        position = chain.start;
+        return x[position] = r[position];
+      },
+      [&](Index& position, Index step, double carry) {
+        position += step;
+        return x[position] = r[position] - m[position] * carry;
+      });
 }
 
 template <int Width, typename Chain>
 void substitute(const Chain* chains, const double* inv, const double* m, double* x) {
-  Index position[Width], step[Width], length[Width];
-  double carry[Width];
-  Index common = chains[0].length;
-  for (int c = 0; c < Width; ++c) {
-    step[c] = chains[c].step;
-    length[c] = chains[c].length;
-    position[c] = chains[c].start + (length[c] - 1) * step[c];  // next to the twist
-    carry[c] = x[position[c]];
-    common = std::min(common, length[c]);
-  }
-  for (Index t = 1; t < common; ++t)
-    for (int c = 0; c < Width; ++c) {
-      const double multiplier = m[position[c]];
-      position[c] -= step[c];
-      carry[c] = x[position[c]] = x[position[c]] * inv[position[c]] - multiplier * carry[c];
-    }
-  for (int c = 0; c < Width; ++c)
-    for (Index t = common; t < length[c]; ++t) {
-      const double multiplier = m[position[c]];
-      position[c] -= step[c];
-      carry[c] = x[position[c]] = x[position[c]] * inv[position[c]] - multiplier * carry[c];
-    }
+  in_lockstep<Width>(
+      chains,
+      [&](const Chain& chain, Index& position) {
+        position = chain.start + (chain.length - 1) * chain.step;  // next to the twist
+        return x[position];
+      },
+      [&](Index& position, Index step, double carry) {
+        const double multiplier = m[position];
+        position -= step;
+        return x[position] = x[position] * inv[position] - multiplier * carry;
+      });
 }
 
 template <typename Chain, typename Kernel4, typename Kernel2, typename Kernel1>

@@ -35,6 +35,13 @@ class TwistedTridiagonal {
     Index step;  // +1 for the top part, -1 for the bottom part
     Index length;
   };
+  void factor_block(Index a, Index b, const std::vector<double>& diagonal,
+                    const std::vector<double>& off);
+  double factor_top(Index a, Index k, const std::vector<double>& diagonal,
+                    const std::vector<double>& off);
+  double factor_bottom(Index k, Index b, const std::vector<double>& diagonal,
+                       const std::vector<double>& off);
+
   std::vector<Block> blocks_;
   std::vector<Chain> chains_;
   Index common_length_ = 0;  // shortest chain: the lockstep part

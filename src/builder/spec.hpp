@@ -68,18 +68,17 @@ struct SupportSpec {
   bool fix_rotation = false;  // "rz", frame scenes
 };
 
-struct InitialVelocitySpec {
+// A vector at a node, in global axes.
+struct NodalVectorSpec {
   std::string node;
   double x = 0.0;
   double y = 0.0;
 };
 
+// An initial velocity [L/T].
+using InitialVelocitySpec = NodalVectorSpec;
 // A constant nodal force (dead load, gravity on a lumped mass) acting from t = 0 [F].
-struct LoadSpec {
-  std::string node;
-  double x = 0.0;
-  double y = 0.0;
-};
+using LoadSpec = NodalVectorSpec;
 
 // Coulomb friction on a 2-D link (links/coulomb_friction.hpp). The stick penalty defaults to
 // the normal law's own tangent (k, c, m of a linear law; alpha0..2 of the extended penalty).

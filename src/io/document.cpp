@@ -58,4 +58,8 @@ Document& Document::set(const std::string& key, const std::vector<double>& value
 
 std::string Document::dump(int indent) const { return impl_->json.dump(indent); }
 
+std::vector<Document> warning_documents(const std::vector<std::string>& warnings) {
+  return documents(warnings, [](const std::string& w) { return Document().set("warning", w); });
+}
+
 }  // namespace pound::io

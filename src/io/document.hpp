@@ -33,4 +33,15 @@ class Document {
   std::unique_ptr<Impl> impl_;
 };
 
+// One document per item, in order: an array of objects for Document::set.
+template <typename Items, typename ToDocument>
+std::vector<Document> documents(const Items& items, ToDocument to_document) {
+  std::vector<Document> result;
+  for (const auto& item : items) result.push_back(to_document(item));
+  return result;
+}
+
+// Warnings as the reports list them: {"warning": text} each.
+std::vector<Document> warning_documents(const std::vector<std::string>& warnings);
+
 }  // namespace pound::io

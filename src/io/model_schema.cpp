@@ -29,6 +29,7 @@ using builder::LoadSpec;
 using builder::MassSpec;
 using builder::MaterialSpec;
 using builder::ModelSpec;
+using builder::NodalVectorSpec;
 using builder::NodeSpec;
 using builder::RecorderSpec;
 using builder::RodPairSpec;
@@ -221,23 +222,21 @@ const Fields<SupportSpec>& support_fields() {
 }
 
 // Loads and initial velocities: a vector at a node.
-template <class Spec>
-Fields<Spec> nodal_vector_fields(const std::string& quantity) {
+Fields<NodalVectorSpec> nodal_vector_fields(const std::string& quantity) {
   return {
-      required("node", &Spec::node, Text{true}, "id of the node"),
-      optional("x", &Spec::x, Number<>{}, quantity).always_written(),
-      optional("y", &Spec::y, Number<>{}, quantity).in_plane().always_written(),
+      required("node", &NodalVectorSpec::node, Text{true}, "id of the node"),
+      optional("x", &NodalVectorSpec::x, Number<>{}, quantity).always_written(),
+      optional("y", &NodalVectorSpec::y, Number<>{}, quantity).in_plane().always_written(),
   };
 }
 
 const Fields<InitialVelocitySpec>& initial_velocity_fields() {
-  static const Fields<InitialVelocitySpec> fields =
-      nodal_vector_fields<InitialVelocitySpec>("velocity [L/T]");
+  static const Fields<InitialVelocitySpec> fields = nodal_vector_fields("velocity [L/T]");
   return fields;
 }
 
 const Fields<LoadSpec>& load_fields() {
-  static const Fields<LoadSpec> fields = nodal_vector_fields<LoadSpec>("force [F]");
+  static const Fields<LoadSpec> fields = nodal_vector_fields("force [F]");
   return fields;
 }
 

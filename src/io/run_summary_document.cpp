@@ -91,19 +91,16 @@ Document to_document(const results::RunSummary& run, const std::string& model_pa
   Document summary;
   summary.set("model", model_path).set("title", title);
   set_status(run, summary);
-  std::vector<Document> links, storeys, piers, joints, warnings;
-  for (const results::LinkResult& link : run.links) links.push_back(link_document(link));
-  summary.set("links", links);
+  summary.set("links", documents(run.links, link_document));
+  std::vector<Document> storeys, piers;
   for (const results::DriftResult& drift : run.drifts)
     (drift.monitor.kind == builder::DriftKind::pier ? piers : storeys)
         .push_back(drift_document(drift));
-  for (const results::JointResult& joint : run.joints) joints.push_back(joint_document(joint));
   if (!storeys.empty()) summary.set("storeys", storeys);
   if (!piers.empty()) summary.set("piers", piers);
-  if (!joints.empty()) summary.set("joints", joints);
+  if (!run.joints.empty()) summary.set("joints", documents(run.joints, joint_document));
   summary.set("energy", energy_document(run));
-  for (const std::string& w : run.warnings) warnings.push_back(Document().set("warning", w));
-  summary.set("warnings", warnings);
+  summary.set("warnings", warning_documents(run.warnings));
   return summary;
 }
 

@@ -16,4 +16,11 @@ double distance(const Coordinates& a, const Coordinates& b, int dimension) {
   return std::hypot(b[0] - a[0], dimension == 2 ? b[1] - a[1] : 0.0);
 }
 
+ElementAxis element_axis(const std::array<ElementNode, 2>& ends, int dimension) {
+  const Coordinates& i = ends[0].position;
+  const Coordinates& j = ends[1].position;
+  const double length = distance(i, j, dimension);
+  return {length, {(j[0] - i[0]) / length, (j[1] - i[1]) / length}};
+}
+
 }  // namespace pound::model

@@ -83,4 +83,12 @@ class Element {
 // Distance between two points of a scene of `dimension` 1 (along x only) or 2.
 double distance(const Coordinates& a, const Coordinates& b, int dimension);
 
+// The axis of a two-node element from end i to end j in a scene of `dimension` 1 or 2: its
+// length L and direction cosines ((x_j - x_i) / L, (y_j - y_i) / L).
+struct ElementAxis {
+  double length = 0.0;
+  Coordinates cosines{};
+};
+ElementAxis element_axis(const std::array<ElementNode, 2>& ends, int dimension);
+
 }  // namespace pound::model

@@ -56,51 +56,60 @@ const BatchQuantity& limited_quantity(const builder::ResponseLimit& limit) {
   return *quantity;
 }
 
-}  // namespace
-
-FragilityFit fit_lognormal_fragility(const std::vector<FragilityObservation>& observations) {
-  FragilityFit fit;
-  fit.observations = observations.size();
-  double highest_safe = -INFINITY, lowest_exceeding = INFINITY;
+// Where the intensities lie, overall and on either side of the limit.
+struct IntensitySpread {
+  std::size_t exceeded = 0;
   double lowest = INFINITY, highest = -INFINITY;
+  double highest_safe = -INFINITY, lowest_exceeding = INFINITY;
+};
+
+IntensitySpread intensity_spread(const std::vector<FragilityObservation>& observations) {
+  IntensitySpread spread;
   for (const FragilityObservation& o : observations) {
     if (!(o.intensity > 0.0) || !std::isfinite(o.intensity))
       throw std::invalid_argument("fragility: intensities must be positive");
-    fit.exceeded += o.exceeded;
-    lowest = std::min(lowest, o.intensity);
-    highest = std::max(highest, o.intensity);
+    spread.exceeded += o.exceeded;
+    spread.lowest = std::min(spread.lowest, o.intensity);
+    spread.highest = std::max(spread.highest, o.intensity);
     if (o.exceeded)
-      lowest_exceeding = std::min(lowest_exceeding, o.intensity);
+      spread.lowest_exceeding = std::min(spread.lowest_exceeding, o.intensity);
     else
-      highest_safe = std::max(highest_safe, o.intensity);
+      spread.highest_safe = std::max(spread.highest_safe, o.intensity);
   }
-  if (fit.exceeded == 0) {
-    fit.reason = "no case exceeds the limit";
-    return fit;
-  }
-  if (fit.exceeded == observations.size()) {
-    fit.reason = "every case exceeds the limit";
-    return fit;
-  }
-  if (lowest == highest) {
-    fit.reason = "every case has the same intensity: the dispersion is not identifiable";
-    return fit;
-  }
+  return spread;
+}
+
+// Why the data cannot identify a lognormal curve, or empty when they can.
+std::string unidentifiable_reason(const IntensitySpread& spread, std::size_t observations) {
+  if (spread.exceeded == 0) return "no case exceeds the limit";
+  if (spread.exceeded == observations) return "every case exceeds the limit";
+  if (spread.lowest == spread.highest)
+    return "every case has the same intensity: the dispersion is not identifiable";
   // Complete separation: the likelihood grows without bound as the dispersion goes to 0.
-  if (highest_safe <= lowest_exceeding) {
+  if (spread.highest_safe <= spread.lowest_exceeding) {
     const std::string where =
-        highest_safe < lowest_exceeding
-            ? fmt::format("between intensities {:.4g} and {:.4g}", highest_safe, lowest_exceeding)
+        spread.highest_safe < spread.lowest_exceeding
+            ? fmt::format("between intensities {:.4g} and {:.4g}", spread.highest_safe,
+                          spread.lowest_exceeding)
             : fmt::format("at intensity {:.4g} (none exceeds below it, all do above it)",
-                          highest_safe);
-    fit.reason = fmt::format(
+                          spread.highest_safe);
+    return fmt::format(
         "the cases separate completely {}: the dispersion is not identifiable (it tends to 0); "
         "run more records or scales around there",
         where);
-    return fit;
   }
-  // Fisher scoring from beta = 0.5 at the median intensity, halving steps that lower the
-  // likelihood (it is concave in (a, b), so this converges).
+  return {};
+}
+
+// The (a, b) of the largest likelihood of P = Phi(a + b ln IM): Fisher scoring from beta = 0.5
+// at the median intensity, halving steps that lower the likelihood (it is concave in (a, b), so
+// this converges).
+struct ProbitFit {
+  double a = 0.0, b = 0.0;
+  Likelihood at_fit;
+};
+
+ProbitFit maximise_likelihood(const std::vector<FragilityObservation>& observations) {
   std::vector<double> logs;
   for (const FragilityObservation& o : observations) logs.push_back(std::log(o.intensity));
   double b = 2.0, a = -b * quantile(logs, 0.5);
@@ -120,6 +129,20 @@ FragilityFit fit_lognormal_fragility(const std::vector<FragilityObservation>& ob
         1e-13 * (1.0 + std::abs(a) + std::abs(b)))
       break;
   }
+  return {a, b, current};
+}
+
+}  // namespace
+
+FragilityFit fit_lognormal_fragility(const std::vector<FragilityObservation>& observations) {
+  FragilityFit fit;
+  fit.observations = observations.size();
+  const IntensitySpread spread = intensity_spread(observations);
+  fit.exceeded = spread.exceeded;
+  fit.reason = unidentifiable_reason(spread, observations.size());
+  if (!fit.reason.empty()) return fit;
+  const ProbitFit probit = maximise_likelihood(observations);
+  const double a = probit.a, b = probit.b;
   if (!(b > 0.0) || !std::isfinite(a) || !std::isfinite(b)) {
     fit.reason = "the fitted probability does not grow with intensity";
     return fit;
@@ -127,7 +150,7 @@ FragilityFit fit_lognormal_fragility(const std::vector<FragilityObservation>& ob
   fit.fitted = true;
   fit.dispersion = 1.0 / b;
   fit.median = std::exp(-a / b);
-  fit.log_likelihood = current.value;
+  fit.log_likelihood = probit.at_fit.value;
   return fit;
 }
 

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <chrono>
 #include <cmath>
 #include <numbers>
 
@@ -11,9 +10,11 @@
 #include "builder/build.hpp"
 #include "builder/generators.hpp"
 #include "core/errors.hpp"
+#include "core/stopwatch.hpp"
 #include "integrators/transient_analysis.hpp"
 #include "links/law_registry.hpp"
 #include "results/energy_balance.hpp"
+#include "verification/transient_run.hpp"
 
 namespace pound::verification {
 namespace {
@@ -189,16 +190,11 @@ BlockBeltPoint run_block_belt(const builder::ModelSpec& base, double dimensionle
     }
   };
 
-  auto integrator = builder::make_integrator(built.analysis);
-  integrators::TransientAnalysis analysis(system, *integrator,
-                                          builder::make_transient_settings(built.analysis));
-  integrators::State state;
-  state.velocity = system.initial_velocity(built.model);
-  const auto started = std::chrono::steady_clock::now();
+  integrators::State state = initial_state(built, system);
+  const Stopwatch stopwatch;
   state.displacement = assembly::static_equilibrium(system, 0.0).displacement;
-  const integrators::TransientStatistics stats = analysis.run(state, observe);
-  point.run_time_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const integrators::TransientStatistics stats = run_analysis(built, system, state, observe);
+  point.run_time_s = stopwatch.seconds();
   point.steps = stats.steps;
   point.friction_ratio = steady_time > 0.0 ? force_sum / steady_time / force_unit : 0.0;
   point.stick_fraction = steady_time > 0.0 ? stick_time / steady_time : 0.0;
@@ -239,39 +235,26 @@ std::string format_block_belt(const BlockBeltScene& scene,
 }
 
 Table block_belt_sweep_table(const std::vector<BlockBeltPoint>& points) {
-  Table table{{"dimensionless_speed", "belt_speed", "friction_ratio", "stick_share",
-               "stick_slip_rate", "stick_fraction", "stick_slip_cycles", "stick_slip",
-               "lift_fraction", "tumbling", "peak_lift", "steps", "time_step", "run_time_s"},
-              std::vector<std::vector<double>>(14)};
-  for (const BlockBeltPoint& p : points) {
-    const double row[] = {p.dimensionless_speed,
-                          p.belt_speed,
-                          p.friction_ratio,
-                          p.stick_share,
-                          p.stick_slip_rate,
-                          p.stick_fraction,
-                          static_cast<double>(p.stick_slip_cycles),
-                          p.stick_slip ? 1.0 : 0.0,
-                          p.lift_fraction,
-                          p.tumbling ? 1.0 : 0.0,
-                          p.peak_lift,
-                          static_cast<double>(p.steps),
-                          p.time_step,
-                          p.run_time_s};
-    for (std::size_t c = 0; c < 14; ++c) table.values[c].push_back(row[c]);
-  }
+  Table table = table_with_columns({"dimensionless_speed", "belt_speed", "friction_ratio",
+                                    "stick_share", "stick_slip_rate", "stick_fraction",
+                                    "stick_slip_cycles", "stick_slip", "lift_fraction", "tumbling",
+                                    "peak_lift", "steps", "time_step", "run_time_s"});
+  for (const BlockBeltPoint& p : points)
+    append_row(table,
+               {p.dimensionless_speed, p.belt_speed, p.friction_ratio, p.stick_share,
+                p.stick_slip_rate, p.stick_fraction, static_cast<double>(p.stick_slip_cycles),
+                p.stick_slip ? 1.0 : 0.0, p.lift_fraction, p.tumbling ? 1.0 : 0.0, p.peak_lift,
+                static_cast<double>(p.steps), p.time_step, p.run_time_s});
   return table;
 }
 
 Table block_belt_history_table(const std::vector<BlockBeltPoint>& points) {
-  Table table{{"dimensionless_speed", "time_over_period", "elongation", "centroid_x", "centroid_y"},
-              std::vector<std::vector<double>>(5)};
+  Table table = table_with_columns(
+      {"dimensionless_speed", "time_over_period", "elongation", "centroid_x", "centroid_y"});
   for (const BlockBeltPoint& p : points)
-    for (std::size_t k = 0; k < p.time.size(); ++k) {
-      const double row[] = {p.dimensionless_speed, p.time[k], p.elongation[k], p.centroid_x[k],
-                            p.centroid_y[k]};
-      for (std::size_t c = 0; c < 5; ++c) table.values[c].push_back(row[c]);
-    }
+    for (std::size_t k = 0; k < p.time.size(); ++k)
+      append_row(table, {p.dimensionless_speed, p.time[k], p.elongation[k], p.centroid_x[k],
+                         p.centroid_y[k]});
   return table;
 }
 
@@ -283,10 +266,9 @@ io::Document to_document(const BlockBeltScene& scene, const std::vector<BlockBel
       .set("pressing_force", scene.pressing_force)
       .set("pretension", scene.pretension)
       .set("spring_period", scene.spring_period());
-  std::vector<io::Document> rows;
-  for (const BlockBeltPoint& p : points) {
-    io::Document row;
-    row.set("dimensionless_speed", p.dimensionless_speed)
+  auto row = [](const BlockBeltPoint& p) {
+    return io::Document()
+        .set("dimensionless_speed", p.dimensionless_speed)
         .set("belt_speed", p.belt_speed)
         .set("friction_ratio", p.friction_ratio)
         .set("stick_share", p.stick_share)
@@ -299,9 +281,8 @@ io::Document to_document(const BlockBeltScene& scene, const std::vector<BlockBel
         .set("peak_lift", p.peak_lift)
         .set("steps", p.steps)
         .set("run_time_s", p.run_time_s);
-    rows.push_back(std::move(row));
-  }
-  document.set("points", rows);
+  };
+  document.set("points", io::documents(points, row));
   return document;
 }
 

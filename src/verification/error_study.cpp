@@ -3,9 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
 
 #include "core/errors.hpp"
+#include "core/stopwatch.hpp"
 #include "verification/rod_impact_report.hpp"
 
 namespace pound::verification {
@@ -29,11 +29,9 @@ std::vector<StudyResult> error_study(const ErrorStudyOptions& options) {
               RodImpactResult scratch;
               std::vector<double> times;
               for (int k = 0; k < std::max(1, options.repeats); ++k) {
-                const auto started = std::chrono::steady_clock::now();
+                const Stopwatch stopwatch;
                 simulation.solve(scratch);
-                times.push_back(
-                    std::chrono::duration<double>(std::chrono::steady_clock::now() - started)
-                        .count());
+                times.push_back(stopwatch.seconds());
               }
               std::nth_element(times.begin(), times.begin() + static_cast<long>(times.size() / 2),
                                times.end());
@@ -107,8 +105,7 @@ io::TextTable error_study_table(const std::vector<StudyResult>& results) {
 }
 
 io::Document to_document(const std::vector<StudyResult>& results) {
-  std::vector<io::Document> rows;
-  for (const StudyResult& r : results) {
+  auto row = [](const StudyResult& r) {
     io::Document doc;
     doc.set("case", r.input.benchmark)
         .set("integrator", r.input.integrator)
@@ -120,10 +117,10 @@ io::Document to_document(const std::vector<StudyResult>& results) {
       doc.set("refusal", r.refusal);
     else
       doc.set("metrics", to_document(r.metrics)).set("pareto", r.pareto);
-    rows.push_back(doc);
-  }
+    return doc;
+  };
   io::Document root;
-  root.set("runs", rows);
+  root.set("runs", io::documents(results, row));
   return root;
 }
 

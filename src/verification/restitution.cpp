@@ -11,6 +11,7 @@
 #include "integrators/transient_analysis.hpp"
 #include "links/law_registry.hpp"
 #include "links/restitution.hpp"
+#include "verification/transient_run.hpp"
 
 namespace pound::verification {
 
@@ -35,35 +36,33 @@ RestitutionRow simulate_impact(const ImpactSetup& s, const builder::LawSpec& law
   spec.recorders_given = true;
   const builder::BuiltModel built = builder::build(spec);
   assembly::StructuralSystem system(built.model);
-  auto integrator = builder::make_integrator(built.analysis);
-  integrators::TransientAnalysis analysis(system, *integrator,
-                                          builder::make_transient_settings(built.analysis));
 
   RestitutionRow row;
   double start = -1.0, end = -1.0, previous_time = 0.0, previous_force = 0.0,
          previous_penetration = 0.0;
-  integrators::State state;
-  state.velocity = system.initial_velocity(built.model);
-  analysis.run(state, [&](const integrators::State& x, const integrators::StepResult&) {
-    const double force = x.link_force[0], penetration = x.link_penetration[0];
-    const bool contact = force != 0.0;  // tension counts as contact (Kelvin-Voigt, allowed)
-    if (contact && start < 0.0) {
-      // Contact began where the penetration crossed zero inside the step.
-      start = previous_time + (x.time - previous_time) * (-previous_penetration) /
-                                  (penetration - previous_penetration);
-    }
-    if (!contact && previous_force != 0.0 && end < 0.0) {
-      // Ended where the penetration crossed zero, or where the force did.
-      end = penetration <= 0.0 ? previous_time + (x.time - previous_time) * previous_penetration /
-                                                     (previous_penetration - penetration)
-                               : x.time;
-    }
-    row.peak_force = std::max(row.peak_force, force);
-    row.max_penetration = std::max(row.max_penetration, penetration);
-    previous_time = x.time;
-    previous_force = force;
-    previous_penetration = penetration;
-  });
+  integrators::State state = initial_state(built, system);
+  run_analysis(
+      built, system, state, [&](const integrators::State& x, const integrators::StepResult&) {
+        const double force = x.link_force[0], penetration = x.link_penetration[0];
+        const bool contact = force != 0.0;  // tension counts as contact (Kelvin-Voigt, allowed)
+        if (contact && start < 0.0) {
+          // Contact began where the penetration crossed zero inside the step.
+          start = previous_time + (x.time - previous_time) * (-previous_penetration) /
+                                      (penetration - previous_penetration);
+        }
+        if (!contact && previous_force != 0.0 && end < 0.0) {
+          // Ended where the penetration crossed zero, or where the force did.
+          end = penetration <= 0.0
+                    ? previous_time + (x.time - previous_time) * previous_penetration /
+                                          (previous_penetration - penetration)
+                    : x.time;
+        }
+        row.peak_force = std::max(row.peak_force, force);
+        row.max_penetration = std::max(row.max_penetration, penetration);
+        previous_time = x.time;
+        previous_force = force;
+        previous_penetration = penetration;
+      });
   row.contact_time = end - start;
   row.achieved = (state.velocity[1] - state.velocity[0]) / closing;
   return row;

@@ -1,15 +1,16 @@
 #include "verification/rod_impact.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <tuple>
 
 #include "assembly/structural_system.hpp"
 #include "builder/build.hpp"
 #include "builder/generators.hpp"
+#include "core/stopwatch.hpp"
 #include "integrators/newmark.hpp"
 #include "integrators/transient_analysis.hpp"
+#include "verification/transient_run.hpp"
 
 namespace pound::verification {
 namespace {
@@ -186,9 +187,6 @@ struct RodPairSimulation::Impl {
   integrators::TransientStatistics solve(RodImpactResult& result,
                                          std::vector<integrators::State>* snapshots,
                                          integrators::State& final_state) {
-    auto integrator = builder::make_integrator(built.analysis);
-    integrators::TransientAnalysis analysis(*system, *integrator,
-                                            builder::make_transient_settings(built.analysis));
     std::vector<double> targets;
     for (double label : options.profile_times)
       targets.push_back(first_contact + label * exact_duration);
@@ -200,10 +198,10 @@ struct RodPairSimulation::Impl {
     result.time.reserve(expected);
     result.force.reserve(expected);
     result.penetration.reserve(expected);
-    final_state = integrators::State{};
-    final_state.velocity = system->initial_velocity(built.model);
-    return analysis.run(
-        final_state, [&](const integrators::State& s, const integrators::StepResult&) {
+    final_state = initial_state(built, *system);
+    return run_analysis(
+        built, *system, final_state,
+        [&](const integrators::State& s, const integrators::StepResult&) {
           result.time.push_back(s.time);
           result.force.push_back(s.link_force[0]);
           result.penetration.push_back(s.link_penetration[0]);
@@ -268,10 +266,9 @@ RodImpactResult run_rod_impact(const RodImpactOptions& options) {
   result.time_step = simulation.time_step;
   std::vector<integrators::State> snapshots;
   integrators::State final_state;
-  const auto started = std::chrono::steady_clock::now();
+  const Stopwatch stopwatch;
   const integrators::TransientStatistics stats = simulation.solve(result, &snapshots, final_state);
-  const double run_time =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const double run_time = stopwatch.seconds();
 
   result.metrics = rod_pair_metrics(options.pair, *simulation.nodes, result.time, result.force,
                                     result.penetration, final_state, &result.exact_force);

@@ -1,14 +1,15 @@
 #include "verification/rod_impact_2d.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 #include "assembly/structural_system.hpp"
 #include "builder/build.hpp"
+#include "core/stopwatch.hpp"
 #include "integrators/transient_analysis.hpp"
 #include "verification/rod_impact.hpp"
 #include "verification/rod_impact_report.hpp"
+#include "verification/transient_run.hpp"
 
 namespace pound::verification {
 namespace {
@@ -100,21 +101,16 @@ void run_strips(const builder::ModelSpec& spec, RodImpact2dResult& result) {
   for (Index k = 0; k < system.links().count(); ++k) normal_rows.push_back(system.links().row(k));
   result.contact_links = static_cast<int>(normal_rows.size());
 
-  auto integrator = builder::make_integrator(built.analysis);
-  integrators::TransientAnalysis analysis(system, *integrator,
-                                          builder::make_transient_settings(built.analysis));
-  integrators::State state;
-  state.velocity = system.initial_velocity(built.model);
-  const auto started = std::chrono::steady_clock::now();
-  const integrators::TransientStatistics stats =
-      analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
+  integrators::State state = initial_state(built, system);
+  const Stopwatch stopwatch;
+  const integrators::TransientStatistics stats = run_analysis(
+      built, system, state, [&](const integrators::State& s, const integrators::StepResult&) {
         double force = 0.0;
         for (Index row : normal_rows) force += s.link_force[row];
         result.time.push_back(s.time);
         result.force_2d.push_back(force);
       });
-  result.run_time_2d_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  result.run_time_2d_s = stopwatch.seconds();
   result.steps_2d = stats.steps;
 }
 

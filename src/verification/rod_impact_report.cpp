@@ -63,16 +63,12 @@ io::Table force_history_table(const RodImpactResult& r) {
 }
 
 io::Table profile_table(const RodImpactResult& r) {
-  io::Table table{
-      {"time_over_T", "time", "rod", "x", "velocity", "exact_velocity", "stress", "exact_stress"},
-      std::vector<std::vector<double>>(8)};
+  io::Table table = table_with_columns(
+      {"time_over_T", "time", "rod", "x", "velocity", "exact_velocity", "stress", "exact_stress"});
   for (const RodProfile& profile : r.profiles)
-    for (const RodProfile::Point& p : profile.points) {
-      const double row[] = {profile.label, profile.time,  static_cast<double>(p.rod),
-                            p.x,           p.velocity,    p.exact_velocity,
-                            p.stress,      p.exact_stress};
-      for (std::size_t c = 0; c < 8; ++c) table.values[c].push_back(row[c]);
-    }
+    for (const RodProfile::Point& p : profile.points)
+      append_row(table, {profile.label, profile.time, static_cast<double>(p.rod), p.x, p.velocity,
+                         p.exact_velocity, p.stress, p.exact_stress});
   return table;
 }
 
@@ -146,11 +142,11 @@ std::string format_two_element(const std::vector<TwoElementResult>& results) {
 }
 
 io::Document to_document(const std::vector<TwoElementResult>& results) {
-  std::vector<io::Document> rows;
   double worst = 0.0;
-  for (const TwoElementResult& r : results) {
-    io::Document row;
-    row.set("k1", r.input.k1)
+  for (const TwoElementResult& r : results) worst = std::max(worst, r.relative_error);
+  auto row = [](const TwoElementResult& r) {
+    return io::Document()
+        .set("k1", r.input.k1)
         .set("k2", r.input.k2)
         .set("m1", r.input.m1)
         .set("m2", r.input.m2)
@@ -162,11 +158,9 @@ io::Document to_document(const std::vector<TwoElementResult>& results) {
         .set("closed_omega2_squared", r.closed_omega2_squared)
         .set("exact_omega_squared", r.exact_omega_squared)
         .set("relative_error", r.relative_error);
-    rows.push_back(row);
-    worst = std::max(worst, r.relative_error);
-  }
+  };
   io::Document doc;
-  doc.set("cases", rows).set("max_relative_error", worst);
+  doc.set("cases", io::documents(results, row)).set("max_relative_error", worst);
   return doc;
 }
 
@@ -182,20 +176,18 @@ std::string format_restitution(const std::vector<RestitutionRow>& rows) {
 }
 
 io::Document to_document(const std::vector<RestitutionRow>& rows) {
-  std::vector<io::Document> items;
-  for (const RestitutionRow& r : rows) {
-    io::Document row;
-    row.set("law", r.law)
+  auto row = [](const RestitutionRow& r) {
+    return io::Document()
+        .set("law", r.law)
         .set("target", r.target)
         .set("achieved", r.achieved)
         .set("peak_force", r.peak_force)
         .set("contact_time", r.contact_time)
         .set("max_penetration", r.max_penetration)
         .set("calibrated", r.calibrated);
-    items.push_back(row);
-  }
+  };
   io::Document doc;
-  doc.set("rows", items);
+  doc.set("rows", io::documents(rows, row));
   return doc;
 }
 
@@ -231,20 +223,14 @@ std::string format_study(const Study& study) {
 }
 
 io::Document to_document(const std::vector<Study>& studies) {
-  std::vector<io::Document> items;
-  for (const Study& study : studies) {
-    std::vector<io::Document> rows;
-    for (const StudyRow& row : study.rows) {
-      io::Document doc;
-      doc.set("case", row.label).set("metrics", to_document(row.metrics));
-      rows.push_back(std::move(doc));
-    }
-    io::Document doc;
-    doc.set("study", study.title).set("rows", rows);
-    items.push_back(std::move(doc));
-  }
+  auto row = [](const StudyRow& r) {
+    return io::Document().set("case", r.label).set("metrics", to_document(r.metrics));
+  };
+  auto study = [&](const Study& s) {
+    return io::Document().set("study", s.title).set("rows", io::documents(s.rows, row));
+  };
   io::Document root;
-  root.set("studies", items);
+  root.set("studies", io::documents(studies, study));
   return root;
 }
 
