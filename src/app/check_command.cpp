@@ -8,6 +8,7 @@
 #include "app/command_line.hpp"
 #include "app/commands.hpp"
 #include "app/model_loading.hpp"
+#include "builder/start_check.hpp"
 #include "core/errors.hpp"
 #include "io/document.hpp"
 #include "links/extended_penalty.hpp"
@@ -115,6 +116,9 @@ int check_command(const Arguments& arguments) {
   } catch (const InputError& error) {
     throw error.file().empty() ? error.in_file(model_path) : error;
   }
+  builder::AnalysisSpec analysis = loaded.built.analysis;
+  builder::settle_time_step(analysis, loaded.built.model, *system, model_path);
+  builder::check_first_step(loaded.built, analysis, *system, model_path);
   const verification::ModelCheck check = verification::check_model(loaded.built, *system, true);
   std::cout << (vm.count("json") ? check_document(model_path, check).dump() + "\n"
                                  : check_text(model_path, check));

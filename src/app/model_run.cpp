@@ -9,6 +9,7 @@
 #include "assembly/static_equilibrium.hpp"
 #include "assembly/structural_system.hpp"
 #include "builder/build.hpp"
+#include "builder/start_check.hpp"
 #include "core/errors.hpp"
 #include "io/output.hpp"
 #include "io/run_summary_document.hpp"
@@ -70,6 +71,7 @@ PreparedRun prepare(const RunRequest& request) {
     throw error.in_file(model_path);
   }
   builder::settle_time_step(built.analysis, built.model, *run.system, model_path);
+  builder::check_first_step(built, built.analysis, *run.system, model_path);
   run.integrator = builder::make_integrator(built.analysis);
   run.observers = std::make_unique<results::RunObservers>(built, *run.system, request.histories);
   results::check_histories_fit(run.observers->recorders(), built.analysis,

@@ -7,7 +7,26 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "assembly/not_positive_definite.hpp"
+
 namespace pound::assembly {
+namespace {
+
+// K_00^-1 rhs for the massless DOFs, which must be held by stiffness alone: a pivot at round-off
+// level (a massless mechanism) is refused, naming its DOF (row k of P K_00 P^T is (P i)_k).
+Matrix condensed_solve(const Matrix& k00, const std::vector<Index>& massless, const Matrix& rhs) {
+  const Eigen::LDLT<Matrix> factor(k00);
+  const Vector& pivots = factor.vectorD();
+  const double scale = k00.diagonal().cwiseAbs().maxCoeff();
+  Vector order = Vector::LinSpaced(k00.rows(), 0.0, static_cast<double>(k00.rows() - 1));
+  order = factor.transpositionsP() * order;
+  for (Index k = 0; k < pivots.size(); ++k)
+    if (factor.info() != Eigen::Success || !(pivots[k] > 1e-13 * scale))
+      throw NotPositiveDefinite(massless[static_cast<std::size_t>(order[k])], pivots[k]);
+  return factor.solve(rhs);
+}
+
+}  // namespace
 
 Modes modal_analysis(const StructuralSystem& system, Index max_dofs) {
   const Index n = system.size();
@@ -18,6 +37,8 @@ Modes modal_analysis(const StructuralSystem& system, Index max_dofs) {
                     n, max_dofs));
   Matrix stiffness = Matrix(system.stiffness());
   const Matrix mass = Matrix(system.mass_matrix());
+  if (!stiffness.allFinite() || !mass.allFinite())
+    throw ModalAnalysisError("the stiffness or mass matrix holds values that are not finite");
   // Links at their initial tangent (penetration -gap, at rest), on copies of their laws.
   const integrators::LinkSet& links = system.links();
   const Matrix connectivity = Matrix(links.connectivity());
@@ -34,6 +55,7 @@ Modes modal_analysis(const StructuralSystem& system, Index max_dofs) {
     (mass.row(i).cwiseAbs().maxCoeff() > 0.0 ? with_mass : massless).push_back(i);
   const auto m_count = static_cast<Index>(with_mass.size()),
              z_count = static_cast<Index>(massless.size());
+  if (m_count == 0) return Modes{Vector(0), Matrix::Zero(n, 0)};
   auto block = [](const Matrix& a, const std::vector<Index>& rows, const std::vector<Index>& cols) {
     Matrix out(rows.size(), cols.size());
     for (std::size_t r = 0; r < rows.size(); ++r)
@@ -43,13 +65,16 @@ Modes modal_analysis(const StructuralSystem& system, Index max_dofs) {
   Matrix reduced = block(stiffness, with_mass, with_mass);
   Matrix recovery(z_count, m_count);  // x_0 = recovery x_m
   if (z_count > 0) {
-    const Eigen::LDLT<Matrix> k00(block(stiffness, massless, massless));
-    recovery = -k00.solve(block(stiffness, massless, with_mass));
+    recovery = -condensed_solve(block(stiffness, massless, massless), massless,
+                                block(stiffness, massless, with_mass));
     reduced += block(stiffness, with_mass, massless) * recovery;
   }
   const Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> solver(reduced,
                                                                 block(mass, with_mass, with_mass));
-  if (solver.info() != Eigen::Success) throw std::runtime_error("modal analysis did not converge");
+  if (solver.info() != Eigen::Success || !solver.eigenvalues().allFinite())
+    throw ModalAnalysisError(
+        "the eigen-solver did not converge (are masses or stiffnesses many orders of magnitude "
+        "apart, or extreme?)");
   Modes modes;
   modes.omega_squared = solver.eigenvalues();
   modes.shapes = Matrix::Zero(n, m_count);

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "assembly/not_positive_definite.hpp"
+
 namespace pound::assembly {
 
 TwistedTridiagonal::TwistedTridiagonal(const Eigen::SparseMatrix<double>& matrix) {
@@ -22,9 +24,7 @@ TwistedTridiagonal::TwistedTridiagonal(const Eigen::SparseMatrix<double>& matrix
   multiplier_.assign(n, 0.0);
   inverse_pivot_.assign(n, 0.0);
   auto inverse = [](double pivot, Index row) {
-    if (!(pivot > 0.0))
-      throw std::domain_error(
-          fmt::format("matrix is not positive definite at equation {} (pivot {:.3e})", row, pivot));
+    if (!(pivot > 0.0)) throw NotPositiveDefinite(row, pivot);
     return 1.0 / pivot;
   };
   for (Index a = 0; a < n;) {
