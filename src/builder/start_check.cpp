@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "assembly/static_equilibrium.hpp"
 
 namespace pound::builder {
@@ -28,7 +30,10 @@ InputError not_held_error(const BuiltModel& built, const model::DofMap& dofs,
   if (place.node < 0) return InputError(source, "", fmt::format("{}: {}", during, failure.what()));
   const auto node = static_cast<std::size_t>(place.node);
   const std::string what =
-      failure.pivot() < 0.0
+      !std::isfinite(failure.pivot())
+          ? "the matrix overflows the number range there (a mass, stiffness or damping far "
+            "beyond physical ones, or one near zero beside them?)"
+      : failure.pivot() < 0.0
           ? "the matrix is not positive there (a negative stiffness or mass?)"
           : "nothing holds it: it belongs to a part that can move with neither mass nor stiffness "
             "against it (a mechanism without mass; add mass to that part, e.g. a girder's "
