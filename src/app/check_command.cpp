@@ -8,6 +8,7 @@
 #include "app/command_line.hpp"
 #include "app/commands.hpp"
 #include "app/model_loading.hpp"
+#include "builder/start_check.hpp"
 #include "core/errors.hpp"
 #include "io/document.hpp"
 #include "links/extended_penalty.hpp"
@@ -43,7 +44,7 @@ std::string check_text(const std::string& model_path, const verification::ModelC
         "  central difference stable step: {:.4g} with contacts open, {:.4g} in contact\n",
         *check.explicit_step_open, *check.explicit_step_contact);
   else
-    text += "  central difference: not available (a DOF has no lumped mass)\n";
+    text += fmt::format("  central difference: not available ({})\n", check.explicit_unavailable);
   for (const verification::LinkCheck& c : check.contacts) {
     text += c.stiff_at_first_touch
                 ? fmt::format("  link {} ({}): stiffness {:.4g}", c.id, c.law, c.stiffness)
@@ -70,9 +71,17 @@ io::Document check_document(const std::string& model_path, const verification::M
       .set("dofs", static_cast<long>(check.dofs))
       .set("dofs_per_node", check.dofs_per_node)
       .set("periods", check.periods);
-  if (check.explicit_step_contact)
-    doc.set("explicit_stable_step_open", *check.explicit_step_open)
-        .set("explicit_stable_step_contact", *check.explicit_step_contact);
+  // An unbounded stable step (nothing vibrates) is null: "no limit".
+  auto set_step = [&doc](const char* key, double step) {
+    if (std::isinf(step) && step > 0.0)
+      doc.set_null(key);
+    else
+      doc.set(key, step);
+  };
+  if (check.explicit_step_contact) {
+    set_step("explicit_stable_step_open", *check.explicit_step_open);
+    set_step("explicit_stable_step_contact", *check.explicit_step_contact);
+  }
   std::vector<io::Document> link_documents;
   for (const verification::LinkCheck& c : check.contacts) {
     const links::ExtendedPenalty::Numbers automatic =
@@ -113,9 +122,17 @@ int check_command(const Arguments& arguments) {
   } catch (const InputError& error) {
     throw error.file().empty() ? error.in_file(model_path) : error;
   }
+  builder::AnalysisSpec analysis = loaded.built.analysis;
+  builder::settle_time_step(analysis, loaded.built.model, *system, model_path);
+  builder::check_first_step(loaded.built, analysis, *system, model_path);
   const verification::ModelCheck check = verification::check_model(loaded.built, *system, true);
-  std::cout << (vm.count("json") ? check_document(model_path, check).dump() + "\n"
-                                 : check_text(model_path, check));
+  const io::Document document = check_document(model_path, check);
+  if (!document.non_finite().empty())
+    throw InputError(model_path, "",
+                     fmt::format("the model's numbers overflow: its check finds {} not finite (a "
+                                 "mass, stiffness or load far beyond physical ones?)",
+                                 document.non_finite().front()));
+  std::cout << (vm.count("json") ? document.dump() + "\n" : check_text(model_path, check));
   return vm.count("strict") && !check.warnings.empty() ? 1 : 0;
 }
 

@@ -74,6 +74,17 @@ int main_entry(int argc, char** argv) {
     std::cerr << fmt::format("pound {}: {}\n(see `pound {} --help`)\n", command, error.what(),
                              command);
     return 1;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "error: out of memory (the model, a record or an option asks for more than this "
+                 "machine has)\n";
+    return 3;
+  } catch (const std::exception& error) {
+    // Anything else escaped a check that should have caught it: still a clear answer, never an
+    // abort.
+    std::cerr << fmt::format(
+        "error: pound {} stopped: {} (an unexpected failure: please report it with the input)\n",
+        command, error.what());
+    return 3;
   }
 }
 

@@ -2,12 +2,15 @@
 
 #include <fmt/format.h>
 
+#include <exception>
 #include <filesystem>
+#include <optional>
 
 #include "app/run_report.hpp"
 #include "assembly/static_equilibrium.hpp"
 #include "assembly/structural_system.hpp"
 #include "builder/build.hpp"
+#include "builder/start_check.hpp"
 #include "core/errors.hpp"
 #include "core/stopwatch.hpp"
 #include "io/output.hpp"
@@ -70,6 +73,7 @@ PreparedRun prepare(const RunRequest& request) {
     throw error.in_file(model_path);
   }
   builder::settle_time_step(built.analysis, built.model, *run.system, model_path);
+  builder::check_first_step(built, built.analysis, *run.system, model_path);
   run.integrator = builder::make_integrator(built.analysis);
   run.observers = std::make_unique<results::RunObservers>(built, *run.system, request.histories);
   results::check_histories_fit(run.observers->recorders(), built.analysis,
@@ -123,19 +127,52 @@ void summarise_record(const LoadedModel& loaded, const builder::IntensityMeasure
           : *c.pga_g;
 }
 
-// The verification of a rod pair against the exact solution, into the summary and the report.
-std::string verify_rod_pair(const PreparedRun& run, const Solved& solved, io::Document& summary) {
-  if (!run.verification || !solved.status.completed()) return "";
-  verification::RodImpactMetrics metrics = run.verification->metrics(solved.state);
-  metrics.run_time_s = solved.run_time;
-  metrics.steps = solved.statistics.steps;
-  metrics.newton_iterations = solved.statistics.newton_iterations;
-  summary.set("verification", verification::to_document(metrics));
+// The verification of a rod pair against the exact solution. The exact solution has limits of
+// its own (event count, number range): beyond them the run keeps its results with a warning.
+std::optional<verification::RodImpactMetrics> verify_rod_pair(const PreparedRun& run,
+                                                              const Solved& solved,
+                                                              std::vector<std::string>& warnings) {
+  if (!run.verification || !solved.status.completed()) return std::nullopt;
+  try {
+    verification::RodImpactMetrics metrics = run.verification->metrics(solved.state);
+    metrics.run_time_s = solved.run_time;
+    metrics.steps = solved.statistics.steps;
+    metrics.newton_iterations = solved.statistics.newton_iterations;
+    return metrics;
+  } catch (const std::exception& error) {
+    warnings.push_back(fmt::format(
+        "the exact solution of the rod pair could not be computed, so the run is not verified "
+        "against it: {}",
+        error.what()));
+    return std::nullopt;
+  }
+}
+
+std::string verification_line(const verification::RodImpactMetrics& metrics) {
   return fmt::format(
       "  against the exact solution: force_l2_error {:.4f}, duration_error {:+.4f}, "
       "separation_velocity_error {:+.4f}, peak_force_ratio {:.3f}\n",
       metrics.force_l2_error, metrics.duration_error, metrics.separation_velocity_error,
       metrics.peak_force_ratio);
+}
+
+// The summary of a run, with its verification when there is one.
+io::Document summary_document(const results::RunSummary& summary, const RunRequest& request,
+                              const PreparedRun& run,
+                              const std::optional<verification::RodImpactMetrics>& metrics) {
+  io::Document document = io::to_document(summary, request.model_path, run.loaded.spec.title);
+  if (metrics) document.set("verification", verification::to_document(*metrics));
+  return document;
+}
+
+// A completed run whose results overflowed (a load, mass, stiffness or record near the end of
+// the number range) has not completed: its first non-finite result names the failure.
+std::string overflow_failure(const std::vector<std::string>& non_finite) {
+  return fmt::format(
+      "a result is not finite ({}{}): a quantity of the model overflowed the number range (a load, "
+      "mass, stiffness or record value far beyond physical ones?)",
+      non_finite.front(),
+      non_finite.size() > 1 ? fmt::format(" and {} more", non_finite.size() - 1) : "");
 }
 
 RunOutcome summarise(const RunRequest& request, const PreparedRun& run, const Solved& solved) {
@@ -144,14 +181,21 @@ RunOutcome summarise(const RunRequest& request, const PreparedRun& run, const So
       results::summarise_run(built, *run.system, *run.observers, solved.status, solved.statistics,
                              run.integrator->name(), solved.run_time);
   summary.warnings.insert(summary.warnings.begin(), run.warnings.begin(), run.warnings.end());
+  std::optional<verification::RodImpactMetrics> metrics =
+      verify_rod_pair(run, solved, summary.warnings);
   RunOutcome outcome;
-  outcome.summary = io::to_document(summary, request.model_path, run.loaded.spec.title);
-  const std::string verification_line = verify_rod_pair(run, solved, outcome.summary);
+  outcome.summary = summary_document(summary, request, run, metrics);
+  if (summary.status.completed() && !outcome.summary.non_finite().empty()) {
+    summary.status.failure = overflow_failure(outcome.summary.non_finite());
+    metrics.reset();
+    outcome.summary = summary_document(summary, request, run, metrics);
+  }
   outcome.headline = run_headline(request.model_path, summary);
-  outcome.report = run_report(summary) + verification_line + energy_line(summary);
+  outcome.report =
+      run_report(summary) + (metrics ? verification_line(*metrics) : "") + energy_line(summary);
   outcome.warnings = summary.warnings;
-  outcome.failure = solved.status.failure;
-  outcome.failure_time = solved.status.end_time;
+  outcome.failure = summary.status.failure;
+  outcome.failure_time = summary.status.end_time;
   for (const auto& recorder : run.observers->recorders())
     outcome.histories.emplace_back(recorder->file(), recorder->table());
   outcome.setup_s = run.setup_s;

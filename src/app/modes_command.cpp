@@ -10,6 +10,7 @@
 #include "app/commands.hpp"
 #include "app/model_loading.hpp"
 #include "assembly/modal_analysis.hpp"
+#include "builder/start_check.hpp"
 #include "core/errors.hpp"
 #include "io/document.hpp"
 
@@ -125,7 +126,15 @@ int modes_command(const Arguments& arguments) {
   }
   const LoadedModel loaded = load_model(model_path);
   const std::unique_ptr<assembly::StructuralSystem> system = assemble(loaded, model_path);
-  const std::vector<ListedMode> modes = list_modes(*system, loaded.built.model.nodes.size(), count);
+  std::vector<ListedMode> modes;
+  try {
+    modes = list_modes(*system, loaded.built.model.nodes.size(), count);
+  } catch (const assembly::NotPositiveDefinite& failure) {
+    throw builder::not_held_error(loaded.built, system->dofs(), failure,
+                                  "the condensation of the massless DOFs", model_path);
+  } catch (const assembly::ModalAnalysisError& error) {
+    throw InputError(model_path, "", fmt::format("the modes cannot be found: {}", error.what()));
+  }
   if (vm.count("json")) {
     std::cout << modes_document(model_path, system->size(), modes).dump() << "\n";
   } else {

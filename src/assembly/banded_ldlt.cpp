@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "assembly/not_positive_definite.hpp"
+
 namespace pound::assembly {
 
 Index BandedLdlt::bandwidth_of(const Eigen::SparseMatrix<double>& matrix) {
@@ -37,9 +39,7 @@ BandedLdlt::BandedLdlt(const Eigen::SparseMatrix<double>& matrix)
     double diagonal = band(0, i);
     for (Index k = first; k < i; ++k)
       diagonal -= lower_(i - k - 1, i) * lower_(i - k - 1, i) * pivot[k];
-    if (!(diagonal > 0.0))
-      throw std::domain_error(fmt::format(
-          "matrix is not positive definite at equation {} (pivot {:.3e})", i, diagonal));
+    if (!(diagonal > 0.0)) throw NotPositiveDefinite(i, diagonal);
     pivot[i] = diagonal;
   }
   inverse_pivot_ = pivot.cwiseInverse();

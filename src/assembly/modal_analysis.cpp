@@ -7,6 +7,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "assembly/not_positive_definite.hpp"
+
 namespace pound::assembly {
 
 namespace {
@@ -33,6 +35,20 @@ Matrix submatrix(const Matrix& a, const std::vector<Index>& rows, const std::vec
   return out;
 }
 
+// K_00^-1 rhs for the massless DOFs, which must be held by stiffness alone: a pivot at round-off
+// level (a massless mechanism) is refused, naming its DOF (row k of P K_00 P^T is (P i)_k).
+Matrix condensed_solve(const Matrix& k00, const std::vector<Index>& massless, const Matrix& rhs) {
+  const Eigen::LDLT<Matrix> factor(k00);
+  const Vector& pivots = factor.vectorD();
+  const double scale = k00.diagonal().cwiseAbs().maxCoeff();
+  Vector order = Vector::LinSpaced(k00.rows(), 0.0, static_cast<double>(k00.rows() - 1));
+  order = factor.transpositionsP() * order;
+  for (Index k = 0; k < pivots.size(); ++k)
+    if (factor.info() != Eigen::Success || !(pivots[k] > 1e-13 * scale))
+      throw NotPositiveDefinite(massless[static_cast<std::size_t>(order[k])], pivots[k]);
+  return factor.solve(rhs);
+}
+
 // Static condensation of the massless DOFs: K_mm - K_m0 K_00^-1 K_0m, and x_0 = recovery x_m.
 struct Condensed {
   Matrix reduced;
@@ -44,8 +60,8 @@ Condensed condense(const Matrix& stiffness, const std::vector<Index>& with_mass,
   Condensed c{submatrix(stiffness, with_mass, with_mass),
               Matrix(static_cast<Index>(massless.size()), static_cast<Index>(with_mass.size()))};
   if (!massless.empty()) {
-    const Eigen::LDLT<Matrix> k00(submatrix(stiffness, massless, massless));
-    c.recovery = -k00.solve(submatrix(stiffness, massless, with_mass));
+    c.recovery = -condensed_solve(submatrix(stiffness, massless, massless), massless,
+                                  submatrix(stiffness, massless, with_mass));
     c.reduced += submatrix(stiffness, with_mass, massless) * c.recovery;
   }
   return c;
@@ -62,14 +78,20 @@ Modes modal_analysis(const StructuralSystem& system, Index max_dofs) {
                     n, max_dofs));
   const Matrix stiffness = stiffness_with_links(system);
   const Matrix mass = Matrix(system.mass_matrix());
+  if (!stiffness.allFinite() || !mass.allFinite())
+    throw ModalAnalysisError("the stiffness or mass matrix holds values that are not finite");
   // Split DOFs with and without mass; condense the massless ones statically.
   std::vector<Index> with_mass, massless;
   for (Index i = 0; i < n; ++i)
     (mass.row(i).cwiseAbs().maxCoeff() > 0.0 ? with_mass : massless).push_back(i);
+  if (with_mass.empty()) return Modes{Vector(0), Matrix::Zero(n, 0)};
   const Condensed condensed = condense(stiffness, with_mass, massless);
   const Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> solver(
       condensed.reduced, submatrix(mass, with_mass, with_mass));
-  if (solver.info() != Eigen::Success) throw std::runtime_error("modal analysis did not converge");
+  if (solver.info() != Eigen::Success || !solver.eigenvalues().allFinite())
+    throw ModalAnalysisError(
+        "the eigen-solver did not converge (are masses or stiffnesses many orders of magnitude "
+        "apart, or extreme?)");
   Modes modes;
   modes.omega_squared = solver.eigenvalues();
   modes.shapes = Matrix::Zero(n, static_cast<Index>(with_mass.size()));

@@ -4,18 +4,27 @@
 // open), undamped. Massless DOFs (rotations without rotary inertia) are condensed statically
 // first; the rest is a dense generalised eigenproblem K x = w^2 M x (Eigen), so it is meant for
 // models up to a few thousand DOFs.
+#include <stdexcept>
 #include <vector>
 
 #include "assembly/structural_system.hpp"
 
 namespace pound::assembly {
 
+class ModalAnalysisError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 struct Modes {
   Vector omega_squared;  // ascending, [1/T^2]; rigid-body modes ~ 0
   Matrix shapes;         // columns, mass-normalised (phi^T M phi = 1), all DOFs
 };
 
-// Throws std::length_error above `max_dofs` (dense solve).
+// A model without a DOF that has mass has no modes (empty). Throws std::length_error above
+// `max_dofs` (dense solve), NotPositiveDefinite when the massless DOFs are not held by stiffness
+// alone (its equation names one of them), and ModalAnalysisError when the eigen-solver fails
+// (matrices not finite, or masses and stiffnesses too far apart in scale).
 Modes modal_analysis(const StructuralSystem& system, Index max_dofs = 4000);
 // The first `count` periods 2 pi / w of the vibration modes (rigid-body modes left out).
 std::vector<double> natural_periods(const StructuralSystem& system, int count);

@@ -9,6 +9,7 @@
 #include <map>
 
 #include "assembly/banded_ldlt.hpp"
+#include "assembly/not_positive_definite.hpp"
 #include "assembly/twisted_tridiagonal.hpp"
 #include "core/errors.hpp"
 
@@ -29,8 +30,13 @@ class FactorSolver final : public integrators::LinearSolver {
 class SparseSolver final : public integrators::LinearSolver {
  public:
   explicit SparseSolver(const Eigen::SparseMatrix<double>& matrix) : factor_(matrix) {
-    if (factor_.info() != Eigen::Success)
-      throw std::domain_error("effective matrix is not positive definite");
+    // LDL^T of P A P^T: a pivot d_k that is not positive belongs to equation P^-1 k.
+    const Vector& pivots = factor_.vectorD();
+    if (factor_.info() == Eigen::Success && (pivots.array() > 0.0).all()) return;
+    Index k = 0;
+    while (k + 1 < pivots.size() && pivots[k] > 0.0) ++k;
+    const double pivot = k < pivots.size() ? pivots[k] : 0.0;
+    throw NotPositiveDefinite(factor_.permutationPinv().indices()[k], pivot);
   }
   void solve(const Vector& rhs, Vector& solution) const override { solution = factor_.solve(rhs); }
 

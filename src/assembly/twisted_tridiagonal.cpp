@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "assembly/not_positive_definite.hpp"
+
 namespace pound::assembly {
 
 namespace {
@@ -31,9 +33,7 @@ Tridiagonal tridiagonal_parts(const Eigen::SparseMatrix<double>& matrix) {
 }
 
 double inverse(double pivot, Index row) {
-  if (!(pivot > 0.0))
-    throw std::domain_error(
-        fmt::format("matrix is not positive definite at equation {} (pivot {:.3e})", row, pivot));
+  if (!(pivot > 0.0)) throw NotPositiveDefinite(row, pivot);
   return 1.0 / pivot;
 }
 

@@ -15,6 +15,7 @@
 #include "builder/excitations.hpp"
 #include "builder/generators.hpp"
 #include "builder/link_resolver.hpp"
+#include "builder/start_check.hpp"
 #include "core/errors.hpp"
 #include "integrators/central_difference.hpp"
 #include "integrators/newmark.hpp"
@@ -105,7 +106,14 @@ model::RayleighDamping rayleigh_damping(const DampingSpec& damping, const model:
   } else {
     const int highest = std::max((*damping.modes)[0], (*damping.modes)[1]);
     const assembly::StructuralSystem system(model);
-    const std::vector<double> found = assembly::natural_periods(system, highest);
+    std::vector<double> found;
+    try {
+      found = assembly::natural_periods(system, highest);
+    } catch (const assembly::ModalAnalysisError& error) {
+      throw InputError(
+          source, "/damping/modes",
+          fmt::format("the modes for Rayleigh damping cannot be found: {}", error.what()));
+    }
     if (static_cast<int>(found.size()) < highest)
       throw InputError(source, "/damping/modes",
                        fmt::format("mode {} asked for, the model has {} vibration modes", highest,
@@ -162,10 +170,15 @@ void resolve_nodal_data(const Resolver& resolver, model::Model& model) {
                                     spec.generated_from.initial_velocities);
   if (!spec.initial_velocities.empty())
     model.initial_velocity.assign(model.nodes.size(), {0.0, 0.0});
+  std::map<Index, std::size_t> given;  // node -> the entry that gave its velocity
   for (std::size_t k = 0; k < spec.initial_velocities.size(); ++k) {
     const InitialVelocitySpec& v = spec.initial_velocities[k];
-    model.initial_velocity[static_cast<std::size_t>(resolver.node(v.node, velocity(k) + "/node"))] =
-        {v.x, v.y};
+    const Index node = resolver.node(v.node, velocity(k) + "/node");
+    if (auto [first, fresh] = given.emplace(node, k); !fresh)
+      resolver.fail(velocity(k) + "/node",
+                    fmt::format("node '{}' already has an initial velocity (at {})", v.node,
+                                velocity(first->second)));
+    model.initial_velocity[static_cast<std::size_t>(node)] = {v.x, v.y};
   }
 }
 
@@ -189,6 +202,8 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
   model::Model& model = built.model;
   model.dimension = spec.dimension;
   for (const NodeSpec& node : spec.nodes) model.nodes.push_back({node.id, {node.x, node.y}});
+  const Origin node_origin = origin_of(user_spec.nodes.size(), "nodes", spec.generated_from.nodes);
+  for (std::size_t k = 0; k < spec.nodes.size(); ++k) built.node_origins.push_back(node_origin(k));
   model.elements = resolve_elements(resolver, model);
   resolve_nodal_data(resolver, model);
   model.links = resolve_links(resolver, model);
@@ -196,7 +211,14 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
   built.excitation_factors = resolve_excitations(resolver, motions, model);
   fit_analysis_to_records(built.analysis, model);
   if (!built.analysis.time_step_auto) check_step_count(built.analysis, spec.source);
-  if (spec.damping) model.damping = rayleigh_damping(*spec.damping, model, spec.source);
+  if (spec.damping) {
+    try {
+      model.damping = rayleigh_damping(*spec.damping, model, spec.source);
+    } catch (const assembly::NotPositiveDefinite& failure) {
+      throw not_held_error(built, model::DofMap(model), failure,
+                           "the modal analysis for Rayleigh damping (/damping/modes)", spec.source);
+    }
+  }
   built.recorders = resolve_recorders(resolver, model.links.size());
   built.drift_monitors = resolve_drift_monitors(resolver);
   built.joint_monitors = resolve_joint_monitors(resolver);

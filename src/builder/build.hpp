@@ -20,6 +20,8 @@ namespace pound::builder {
 struct BuiltModel {
   model::Model model;
   std::map<std::string, Index> node_index;
+  // The JSON path of each node: its own entry, or the generator that made it.
+  std::vector<std::string> node_origins;
   std::map<std::string, Index> link_index;
   AnalysisSpec analysis;
   std::vector<ResolvedRecorder> recorders;

@@ -102,6 +102,20 @@ std::shared_ptr<const model::Element> make_two_node(const Scene& scene, const El
       damping);
 }
 
+// E, A, I, a density or a length at the ends of the double range overflow an element's matrices:
+// refused here, naming the element, before they make the assembled ones non-finite.
+void check_finite_matrices(const Scene& scene, const model::Element& element,
+                           const ElementSpec& spec, const std::string& path) {
+  const model::ElementMass mass = element.mass();
+  const bool finite =
+      element.stiffness().allFinite() &&
+      (mass.is_consistent() ? mass.consistent.allFinite() : mass.lumped.allFinite());
+  if (!finite)
+    scene.fail(path, fmt::format("element '{}': its stiffness or mass is not finite (its "
+                                 "material, section or length overflows the number range)",
+                                 spec.id));
+}
+
 }  // namespace
 
 std::vector<std::shared_ptr<const model::Element>> resolve_elements(const Resolver& resolver,
@@ -131,6 +145,7 @@ std::vector<std::shared_ptr<const model::Element>> resolve_elements(const Resolv
     elements.push_back(element.type == ElementKind::quad
                            ? make_quad(scene, element, path, nodes, m, own)
                            : make_two_node(scene, element, path, nodes, m, own));
+    check_finite_matrices(scene, *elements.back(), element, path);
   }
   if (quads && beams)
     for (std::size_t k = 0; k < spec.elements.size(); ++k)

@@ -42,6 +42,9 @@ std::vector<ResolvedRecorder> resolve_recorders(const Resolver& resolver, std::s
 
 std::vector<DriftMonitor> resolve_drift_monitors(const Resolver& resolver) {
   const std::vector<DriftMonitorSpec>& specs = resolver.spec().drift_monitors;
+  const std::size_t user_count = resolver.user_spec().drift_monitors.size();
+  resolver.index_ids(specs, "drift monitor",
+                     [&](std::size_t k) { return monitor_path(k, user_count, "drifts"); });
   std::vector<DriftMonitor> monitors;
   for (std::size_t k = 0; k < specs.size(); ++k) {
     const DriftMonitorSpec& m = specs[k];
@@ -54,6 +57,9 @@ std::vector<DriftMonitor> resolve_drift_monitors(const Resolver& resolver) {
 
 std::vector<JointMonitor> resolve_joint_monitors(const Resolver& resolver) {
   const std::vector<JointMonitorSpec>& specs = resolver.spec().joint_monitors;
+  const std::size_t user_count = resolver.user_spec().joint_monitors.size();
+  resolver.index_ids(specs, "joint monitor",
+                     [&](std::size_t k) { return monitor_path(k, user_count, "joints"); });
   std::vector<JointMonitor> monitors;
   for (std::size_t k = 0; k < specs.size(); ++k) {
     const JointMonitorSpec& m = specs[k];

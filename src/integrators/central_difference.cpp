@@ -1,5 +1,7 @@
 #include "integrators/central_difference.hpp"
 
+#include <fmt/format.h>
+
 #include <Eigen/LU>
 #include <bit>
 #include <cmath>
@@ -444,6 +446,11 @@ double stable_time_step(SecondOrderSystem& system, bool contacts_active) {
   LinkSet& links = system.links();
   const LinkTangents tangents = link_tangents(links, contacts_active);
   HighestMode mode = highest_mode(system, inverse_mass, tangents);
+  if (!std::isfinite(mode.eigenvalue) || !tangents.stiffness.allFinite() ||
+      !tangents.damping.allFinite())
+    throw std::domain_error(
+        "the highest frequency overflows the number range (a stiffness or damping far beyond "
+        "physical ones, or masses near zero), so no explicit step is stable");
   const double omega = std::sqrt(std::max(mode.eigenvalue, 0.0));
   if (!(omega > 0.0)) return std::numeric_limits<double>::infinity();
   // Damping lowers the limit to (2 / w)(sqrt(1 + z^2) - z), with z the damping ratio of the
@@ -458,6 +465,11 @@ double stable_time_step(SecondOrderSystem& system, bool contacts_active) {
   for (Index r = 0; r < links.size(); ++r)
     if (tangents.stiffness[r] > 0.0 || tangents.damping[r] > 0.0)
       limit = std::min(limit, link_mode_stable_step(links, inverse_mass, tangents, r));
+  if (!(limit > 0.0))
+    throw std::domain_error(fmt::format(
+        "the stable step {:g} is not positive (a stiffness or damping far beyond physical ones, "
+        "or masses near zero)",
+        limit));
   return limit;
 }
 

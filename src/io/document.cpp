@@ -7,6 +7,17 @@ namespace pound::io {
 
 struct Document::Impl {
   nlohmann::ordered_json json = nlohmann::ordered_json::object();
+  std::vector<std::string> non_finite;
+
+  // A number under `pointer`: null when it is not finite, and then remembered.
+  nlohmann::ordered_json number(double value, const std::string& pointer) {
+    if (std::isfinite(value)) return value;
+    non_finite.push_back(pointer);
+    return nullptr;
+  }
+  void adopt(const Impl& child, const std::string& prefix) {
+    for (const std::string& pointer : child.non_finite) non_finite.push_back(prefix + pointer);
+  }
 };
 
 Document::Document() : impl_(std::make_unique<Impl>()) {}
@@ -20,10 +31,11 @@ Document::Document(Document&&) noexcept = default;
 Document& Document::operator=(Document&&) noexcept = default;
 
 Document& Document::set(const std::string& key, double value) {
-  if (std::isfinite(value))
-    impl_->json[key] = value;
-  else
-    impl_->json[key] = nullptr;
+  impl_->json[key] = impl_->number(value, "/" + key);
+  return *this;
+}
+Document& Document::set_null(const std::string& key) {
+  impl_->json[key] = nullptr;
   return *this;
 }
 Document& Document::set(const std::string& key, long value) {
@@ -40,23 +52,28 @@ Document& Document::set(const std::string& key, const std::string& value) {
 }
 Document& Document::set(const std::string& key, const Document& child) {
   impl_->json[key] = child.impl_->json;
+  impl_->adopt(*child.impl_, "/" + key);
   return *this;
 }
 Document& Document::set(const std::string& key, const std::vector<Document>& items) {
   auto array = nlohmann::ordered_json::array();
-  for (const Document& item : items) array.push_back(item.impl_->json);
+  for (const Document& item : items) {
+    impl_->adopt(*item.impl_, "/" + key + "/" + std::to_string(array.size()));
+    array.push_back(item.impl_->json);
+  }
   impl_->json[key] = std::move(array);
   return *this;
 }
 Document& Document::set(const std::string& key, const std::vector<double>& values) {
   auto array = nlohmann::ordered_json::array();
   for (double value : values)
-    array.push_back(std::isfinite(value) ? nlohmann::ordered_json(value) : nullptr);
+    array.push_back(impl_->number(value, "/" + key + "/" + std::to_string(array.size())));
   impl_->json[key] = std::move(array);
   return *this;
 }
 
 std::string Document::dump(int indent) const { return impl_->json.dump(indent); }
+const std::vector<std::string>& Document::non_finite() const { return impl_->non_finite; }
 
 std::vector<Document> warning_documents(const std::vector<std::string>& warnings) {
   return documents(warnings, [](const std::string& w) { return Document().set("warning", w); });

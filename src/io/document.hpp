@@ -26,7 +26,13 @@ class Document {
   Document& set(const std::string& key, const std::vector<Document>& items);
   Document& set(const std::string& key, const std::vector<double>& values);
 
+  // A value that is meant to be absent ("no limit"): null in the JSON, not counted below.
+  Document& set_null(const std::string& key);
+
   std::string dump(int indent = 2) const;
+  // JSON pointers of the numbers that were set non-finite (written as null): a result that
+  // overflowed, which a run must not report as completed.
+  const std::vector<std::string>& non_finite() const;
 
  private:
   struct Impl;

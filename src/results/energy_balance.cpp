@@ -5,11 +5,19 @@
 
 namespace pound::results {
 
+double EnergyTerms::largest_term() const {
+  return std::max({std::abs(input), kinetic, strain, std::abs(damping), std::abs(links), initial});
+}
+
 double EnergyTerms::created_fraction() const {
-  const double largest =
-      std::max({std::abs(input), kinetic, strain, std::abs(damping), std::abs(links), initial});
+  const double largest = largest_term();
   const double residual = kinetic + strain + damping + links - input - initial;
   return largest > 0.0 ? residual / largest : 0.0;
+}
+
+double EnergyTerms::link_created_fraction() const {
+  const double largest = largest_term();
+  return largest > 0.0 && links < 0.0 ? -links / largest : 0.0;
 }
 
 double EnergyTerms::balance_error() const { return std::abs(created_fraction()); }

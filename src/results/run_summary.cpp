@@ -89,6 +89,7 @@ RunObservers::RunObservers(const builder::BuiltModel& built,
                            : std::vector<std::unique_ptr<Recorder>>()),
       links_(normal_rows(system.links())),
       energy_(system),
+      passive_links_(!system.has_link_motion()),
       drifts_(drift_equations(built, system.dofs())),
       joints_(joint_places(built, system)) {}
 
@@ -109,6 +110,14 @@ void RunObservers::record(const integrators::State& state) {
                                  "creating energy, so the time step is too large for the "
                                  "integrator or for a stiff link",
                                  100.0 * created, 100.0 * kEnergyGrowthLimit));
+  const double from_links = passive_links_ ? energy_.terms().link_created_fraction() : 0.0;
+  if (from_links > kEnergyGrowthLimit)
+    throw SolveError(state.time,
+                     fmt::format("the links have given the structure {:.1f} % of the largest "
+                                 "energy term (limit {:.0f} %), which passive links cannot do: a "
+                                 "link is creating energy, so the time step is too large for its "
+                                 "stiffness (or its stiffness is meaninglessly large)",
+                                 100.0 * from_links, 100.0 * kEnergyGrowthLimit));
 }
 
 void check_histories_fit(const std::vector<std::unique_ptr<Recorder>>& recorders,

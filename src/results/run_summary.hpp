@@ -38,6 +38,9 @@ class RunObservers {
   std::vector<std::unique_ptr<Recorder>> recorders_;
   LinkSummaries links_;
   EnergyBalance energy_;
+  // Links are passive unless supports move under them (multi-support input, a moving belt),
+  // which then feed energy in through them.
+  bool passive_links_;
   DriftMonitors drifts_;
   JointMonitors joints_;
   std::vector<Observer*> extra_;

@@ -112,7 +112,13 @@ class RodHistory {
     return next < face_.size() ? face_[next].start + round_trip_ : kInfinity;
   }
 
-  double outgoing_at_face(double time) const { return face_[index_at(face_, time)].outgoing; }
+  double outgoing_at_face(double time) const {
+    // Only reachable without a recorded face when the rod's times lose all precision (a length
+    // or wave speed at the ends of the number range).
+    if (face_.empty())
+      throw std::range_error("ExactRodImpact: the rod's travel times are beyond double precision");
+    return face_[index_at(face_, time)].outgoing;
+  }
 
   void record_face(double time, double axial_force, double outgoing) {
     if (face_.empty()) {

@@ -72,9 +72,20 @@ LinkCheck check_contact(const model::Link& link, const links::LinkLaw& law,
 void check_explicit_steps(const builder::AnalysisSpec& analysis, assembly::StructuralSystem& system,
                           ModelCheck& check) {
   const bool lumped = system.lumped_mass() && (system.lumped_mass()->array() > 0.0).all();
-  if (!lumped) return;
-  check.explicit_step_open = integrators::stable_time_step(system, false);
-  check.explicit_step_contact = integrators::stable_time_step(system, true);
+  if (!lumped) {
+    check.explicit_unavailable = "a DOF has no lumped mass";
+    return;
+  }
+  try {
+    check.explicit_step_open = integrators::stable_time_step(system, false);
+    check.explicit_step_contact = integrators::stable_time_step(system, true);
+  } catch (const std::domain_error& error) {
+    check.explicit_step_open.reset();
+    check.explicit_unavailable = error.what();
+    check.warnings.push_back(
+        fmt::format("central difference cannot run this model: {}", error.what()));
+    return;
+  }
   if (analysis.integrator.is_explicit() && !analysis.time_step_auto &&
       analysis.time_step > *check.explicit_step_contact)
     check.warnings.push_back(
@@ -90,7 +101,13 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
   const builder::AnalysisSpec& analysis = built.analysis;
   const integrators::LinkSet& links = system.links();
   ModelCheck check{system.size(), system.dofs().dofs_per_node(), links.count()};
-  if (with_periods && system.size() <= 4000) check.periods = assembly::natural_periods(system, 6);
+  if (with_periods && system.size() <= 4000) {
+    try {
+      check.periods = assembly::natural_periods(system, 6);
+    } catch (const std::exception& error) {  // the modal analysis's typed failures
+      check.warnings.push_back(fmt::format("the periods cannot be found: {}", error.what()));
+    }
+  }
   check_explicit_steps(analysis, system, check);
   for (Index k = 0; k < links.count(); ++k) {
     const model::Link& link = built.model.links[static_cast<std::size_t>(k)];

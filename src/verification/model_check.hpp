@@ -31,6 +31,8 @@ struct ModelCheck {
   std::vector<double> periods;  // the first six; none above 4000 DOFs or when not asked
   // Central difference's stable step; none without a lumped mass on every DOF.
   std::optional<double> explicit_step_open, explicit_step_contact;
+  // Why there are no explicit steps: no lumped mass on some DOF, or no stable step at all.
+  std::string explicit_unavailable;
   std::vector<LinkCheck> contacts;
   std::vector<std::string> warnings;
 };

@@ -1,0 +1,66 @@
+#include "builder/start_check.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "assembly/static_equilibrium.hpp"
+
+namespace pound::builder {
+namespace {
+
+struct NodeDirection {
+  Index node = -1;
+  int direction = 0;
+};
+
+NodeDirection node_of(const model::Model& model, const model::DofMap& dofs, Index equation) {
+  for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
+    for (int d = 0; d < dofs.dofs_per_node(); ++d)
+      if (dofs.equation(node, d) == equation) return {node, d};
+  return {};
+}
+
+}  // namespace
+
+InputError not_held_error(const BuiltModel& built, const model::DofMap& dofs,
+                          const assembly::NotPositiveDefinite& failure, const std::string& during,
+                          const std::string& source) {
+  const NodeDirection place = node_of(built.model, dofs, failure.equation());
+  if (place.node < 0) return InputError(source, "", fmt::format("{}: {}", during, failure.what()));
+  const auto node = static_cast<std::size_t>(place.node);
+  const std::string what =
+      !std::isfinite(failure.pivot())
+          ? "the matrix overflows the number range there (a mass, stiffness or damping far "
+            "beyond physical ones, or one near zero beside them?)"
+      : failure.pivot() < 0.0
+          ? "the matrix is not positive there (a negative stiffness or mass?)"
+          : "nothing holds it: it belongs to a part that can move with neither mass nor stiffness "
+            "against it (a mechanism without mass; add mass to that part, e.g. a girder's "
+            "extra_mass, or an element, bearing or support that restrains it)";
+  return InputError(source, node < built.node_origins.size() ? built.node_origins[node] : "",
+                    fmt::format("{} fails at node '{}', direction {}: {} (pivot {:.3e})", during,
+                                built.model.nodes[node].id, model::direction_name(place.direction),
+                                what, failure.pivot()));
+}
+
+void check_first_step(const BuiltModel& built, const AnalysisSpec& analysis,
+                      assembly::StructuralSystem& system, const std::string& source) {
+  const std::unique_ptr<integrators::Integrator> integrator = make_integrator(analysis);
+  integrators::State start, next;
+  start.velocity = system.initial_velocity(built.model);
+  std::string during = "the static equilibrium at t = 0";
+  try {
+    if (analysis.static_initial_state)
+      start.displacement = assembly::static_equilibrium(system, 0.0).displacement;
+    during = fmt::format("the first step of {}", analysis.integrator.label());
+    integrator->initialize(system, start);
+    integrator->advance(system, start, analysis.time_step, next);
+    system.links().revert();
+  } catch (const assembly::NotPositiveDefinite& failure) {
+    system.links().revert();
+    throw not_held_error(built, system.dofs(), failure, during, source);
+  }
+}
+
+}  // namespace pound::builder

@@ -1,0 +1,170 @@
+// Every input ends in a clear answer (issue 14): the reproducers of the mutation sweep that
+// crashed, aborted or "completed" with overflowed numbers, each now refused before the run
+// (exit 2, file and JSON path, nothing written) or failed loudly (exit 3, when and why).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "support/process.hpp"
+
+namespace pound::testing {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+class Reliability : public PoundProcess {
+ protected:
+  // A bundled model with its records named by absolute path, so it runs from the test folder.
+  static json bundled(const std::string& name) {
+    json model = json::parse(read_text(fs::path(POUND_SOURCE_DIR) / "models" / (name + ".json")));
+    if (!model.contains("excitations")) return model;
+    for (json& excitation : model["excitations"])
+      if (excitation.contains("record"))
+        excitation["record"] =
+            (fs::path(POUND_SOURCE_DIR) / "models" / excitation["record"].get<std::string>())
+                .lexically_normal()
+                .string();
+    return model;
+  }
+  std::string write(const std::string& name, const json& model) const {
+    std::ofstream(path(name)) << model.dump();
+    return path(name).string();
+  }
+  // `pound <command> model`, expected refused: exit 2, the file and `where` named, no output.
+  void expect_refused(const std::string& command, const std::string& model,
+                      const std::vector<std::string>& parts) const {
+    std::vector<std::string> arguments{command, model};
+    if (command == "run") arguments.insert(arguments.end(), {"--out", path("out").string()});
+    const Outcome outcome = pound(arguments);
+    EXPECT_EQ(outcome.exit_code, 2) << command << ": " << outcome.err;
+    EXPECT_TRUE(contains(outcome.err, "error: " + model + ": ")) << outcome.err;
+    for (const std::string& part : parts) EXPECT_TRUE(contains(outcome.err, part)) << outcome.err;
+    EXPECT_FALSE(fs::exists(path("out"))) << command;
+  }
+  // `pound run model` expected to fail loudly: exit 3, the reason, a summary saying "failed".
+  Outcome expect_failed(const std::string& model, const std::string& reason) const {
+    const Outcome outcome = pound({"run", model, "--out", path("out").string(), "--quiet"});
+    EXPECT_EQ(outcome.exit_code, 3) << outcome.err;
+    EXPECT_TRUE(contains(outcome.err, "analysis failed at t = ")) << outcome.err;
+    EXPECT_TRUE(contains(outcome.err, reason)) << outcome.err;
+    const json summary = json::parse(read_text(path("out/summary.json")));
+    EXPECT_EQ(summary["status"], "failed");
+    return outcome;
+  }
+};
+
+// No DOFs with modal damping segfaulted in run, check and modes.
+TEST_F(Reliability, ModalDampingWithoutModesIsRefused) {
+  const std::string model = write("empty.json", json::parse(R"({"dimension": 1,
+      "damping": {"ratio": 0.05, "modes": [1, 3]},
+      "analysis": {"time_step": 0.01, "duration": 1.0}})"));
+  for (const char* command : {"run", "check", "modes"})
+    expect_refused(command, model, {"/damping/modes", "the model has 0 vibration modes"});
+}
+
+// The bundled bridge without its girders' extra mass: the girder is a mechanism without mass.
+// It aborted in run ("not positive definite at equation 24") while check passed; now both name
+// the node, at the generator that made it.
+TEST_F(Reliability, MasslessMechanismIsFoundBeforeTheRunNamingItsNode) {
+  json model = bundled("three_span_bridge");
+  model["generators"][0]["girder"].erase("extra_mass");
+  const std::string file = write("no_extra_mass.json", model);
+  for (const char* command : {"run", "check"})
+    expect_refused(command, file,
+                   {"/generators/0: the first step of newmark_average_acceleration fails at node "
+                    "'bridge.g0.",
+                    "a mechanism without mass"});
+}
+
+// A storey mass of 5e-324 (a denormal) aborted with "pivot -nan"; 1e-300 aborted check and
+// modes in the modal analysis.
+TEST_F(Reliability, DenormalAndTinyMassesEndInAClearAnswer) {
+  for (const double mass : {5e-324, 1e-300}) {
+    json model = bundled("adjacent_buildings");
+    model["generators"][0]["right"]["storeys"][4]["mass"] = mass;
+    const std::string file = write("tiny_mass.json", model);
+    for (const char* command : {"run", "check", "modes"}) {
+      std::vector<std::string> arguments{command, file};
+      if (std::string(command) == "run")
+        arguments.insert(arguments.end(), {"--out", path("out").string(), "--quiet"});
+      const Outcome outcome = pound(arguments);
+      std::cout << "mass " << mass << ", " << command << ": exit " << outcome.exit_code << "\n";
+      EXPECT_TRUE(outcome.exit_code == 0 || outcome.exit_code == 2 || outcome.exit_code == 3)
+          << command << " " << outcome.exit_code << ": " << outcome.err;
+      if (outcome.exit_code != 0) {
+        EXPECT_TRUE(contains(outcome.err, "error: ")) << outcome.err;
+      }
+      fs::remove_all(path("out"));
+    }
+  }
+}
+
+// E, A or I of 1e308 overflow an element's matrices: refused naming the element.
+TEST_F(Reliability, AnElementWhoseMatricesOverflowIsRefusedByName) {
+  json model = bundled("two_sdof_girders");
+  model["materials"][0]["youngs_modulus"] = 1e308;
+  model["elements"][0]["area"] = 10.0;
+  expect_refused("run", write("overflow.json", model),
+                 {"/elements/0: element 'pier_1': its stiffness or mass is not finite"});
+}
+
+// Link stiffness 1e20: the girder flew 1e10 m and the run "completed", because the links' negative
+// work cancelled the energy residual. Now the links' created energy stops it.
+TEST_F(Reliability, EnergyCreatedThroughALinkStopsTheRun) {
+  json model = bundled("two_sdof_girders");
+  model["links"][0]["law"]["stiffness"] = 1e20;
+  expect_failed(write("stiff.json", model), "the links have given the structure");
+}
+
+// A load of 1e300 overflowed the energy input, written as null in a "completed" summary.
+TEST_F(Reliability, ANonFiniteResultFailsTheRun) {
+  json model = bundled("block_on_floor");
+  model["loads"] = json::parse(R"([{"node": "block", "x": 1e300, "y": 0}])");
+  expect_failed(write("load.json", model), "a result is not finite");
+}
+
+// The exact rod solution's own limits (a gap of 1e308, a modulus of 5e-324) crashed after the
+// analysis, losing its results: the run now keeps them, with a warning.
+TEST_F(Reliability, RodPairBeyondTheExactSolutionKeepsItsResults) {
+  for (const auto& [pointer, value] :
+       std::vector<std::pair<std::string, double>>{{"/generators/0/gap", 1e308},
+                                                   {"/generators/0/right/youngs_modulus", 5e-324},
+                                                   {"/generators/0/right/length", 1e300}}) {
+    json model = bundled("rod_impact");
+    model[json::json_pointer(pointer)] = value;
+    const Outcome outcome =
+        pound({"run", write("rod.json", model), "--out", path("out").string(), "--quiet"});
+    std::cout << pointer << " = " << value << ": exit " << outcome.exit_code << "\n";
+    EXPECT_TRUE(outcome.exit_code == 0 || outcome.exit_code == 2 || outcome.exit_code == 3)
+        << outcome.err;
+    if (outcome.exit_code == 0) {
+      EXPECT_TRUE(fs::exists(path("out/summary.json")));
+      EXPECT_TRUE(contains(outcome.err, "the exact solution of the rod pair could not be computed"))
+          << outcome.err;
+    }
+    fs::remove_all(path("out"));
+  }
+}
+
+// Two initial velocities for one node (the last won) and repeated monitor ids are refused.
+TEST_F(Reliability, RepeatedInitialVelocitiesAndMonitorIdsAreRefused) {
+  json model = bundled("two_girders_joint");
+  model["initial_velocities"].push_back(model["initial_velocities"][0]);
+  expect_refused("run", write("velocities.json", model),
+                 {"/initial_velocities/2/node: node 'girder_1' already has an initial velocity "
+                  "(at /initial_velocities/0)"});
+  json monitored = bundled("two_sdof_girders");
+  monitored["monitors"]["joints"].push_back(monitored["monitors"]["joints"][0]);
+  expect_refused("run", write("monitors.json", monitored),
+                 {"/monitors/joints/1", "duplicate joint monitor id 'joint'"});
+}
+
+}  // namespace
+}  // namespace pound::testing
