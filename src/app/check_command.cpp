@@ -122,10 +122,11 @@ int check_command(const Arguments& arguments) {
   } catch (const InputError& error) {
     throw error.file().empty() ? error.in_file(model_path) : error;
   }
+  const verification::ModelCheck check = verification::check_model(loaded.built, *system, true);
+  // After the diagnostics: the first step leaves the laws committed at the start, as a run does.
   builder::AnalysisSpec analysis = loaded.built.analysis;
   builder::settle_time_step(analysis, loaded.built.model, *system, model_path);
   builder::check_first_step(loaded.built, analysis, *system, model_path);
-  const verification::ModelCheck check = verification::check_model(loaded.built, *system, true);
   const io::Document document = check_document(model_path, check);
   if (!document.non_finite().empty())
     throw InputError(model_path, "",

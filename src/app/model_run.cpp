@@ -73,7 +73,6 @@ PreparedRun prepare(const RunRequest& request) {
     throw error.in_file(model_path);
   }
   builder::settle_time_step(built.analysis, built.model, *run.system, model_path);
-  builder::check_first_step(built, built.analysis, *run.system, model_path);
   run.integrator = builder::make_integrator(built.analysis);
   run.observers = std::make_unique<results::RunObservers>(built, *run.system, request.histories);
   results::check_histories_fit(run.observers->recorders(), built.analysis,
@@ -82,6 +81,8 @@ PreparedRun prepare(const RunRequest& request) {
       verification::RodImpactObserver::attach(built, run.system->dofs(), run.system->links());
   if (run.verification) run.observers->add(*run.verification);
   run.warnings = verification::check_model(built, *run.system, false).warnings;
+  // After the diagnostics, which see the laws as built; the run's start commits them again.
+  builder::check_first_step(built, built.analysis, *run.system, model_path);
   for (std::string& warning : record_warnings(run.loaded)) run.warnings.push_back(warning);
   run.setup_s = stopwatch.seconds();
   return run;
