@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <map>
 #include <mutex>
@@ -14,8 +15,10 @@
 #include "app/model_run.hpp"
 #include "core/errors.hpp"
 #include "core/stopwatch.hpp"
+#include "io/batch_files.hpp"
 #include "io/case_rows.hpp"
 #include "io/document.hpp"
+#include "io/folder_lock.hpp"
 #include "io/json_reader.hpp"
 #include "io/model_reader.hpp"
 #include "io/output.hpp"
@@ -34,9 +37,24 @@ std::string scale_text(const builder::ExcitationSpec& e) {
   return "as recorded";
 }
 
-// What the cases are, in order: an earlier batch in the same folder is resumed only if this is
-// unchanged.
-std::string plan_text(const builder::SetSpec& set, const std::vector<builder::BatchCase>& cases) {
+// Every file the results depend on (the set, its models, its records), with its content hash.
+std::vector<io::InputFile> input_files(const builder::SetSpec& set) {
+  std::vector<io::InputFile> inputs;
+  auto add = [&](const std::string& path) {
+    for (const io::InputFile& known : inputs)
+      if (known.path == path) return;
+    inputs.push_back({path, io::file_hash(path)});
+  };
+  add(set.source);
+  for (const builder::BatchModel& model : set.models) add(model.path);
+  for (const builder::BatchRecord& record : set.records) add(record.excitation.record);
+  return inputs;
+}
+
+// What the cases are, in order, and what their inputs hold: an earlier batch in the same folder
+// is resumed only if this is unchanged.
+std::string plan_text(const builder::SetSpec& set, const std::vector<builder::BatchCase>& cases,
+                      const std::vector<io::InputFile>& inputs) {
   std::vector<io::Document> items;
   for (const builder::BatchCase& c : cases) {
     const builder::ExcitationSpec& e = set.records[c.record].excitation;
@@ -58,6 +76,12 @@ std::string plan_text(const builder::SetSpec& set, const std::vector<builder::Ba
              .set("set", set.source)
              .set("intensity_measure", intensity)
              .set("cases", items)
+             .set("inputs",
+                  io::documents(
+                      inputs,
+                      [](const io::InputFile& input) {
+                        return io::Document().set("file", input.path).set("fnv1a_64", input.hash);
+                      }))
              .dump() +
          "\n";
 }
@@ -124,6 +148,7 @@ CaseResult run_case(const builder::SetSpec& set, const builder::BatchCase& c,
   result.row = io::case_row(summary);
   io::write_text_atomic((fs::path(temporary) / "case.csv").string(),
                         io::case_row_header() + "\n" + result.row + "\n");
+  io::write_case_marker(temporary, c.name);  // last: until it is there, the case is not done
   io::move_folder_into_place(temporary, (fs::path(out) / c.name).string());
   // The row as it reads back, so statistics are the same whether a case ran now or is resumed.
   result.summary = io::parse_case_row(result.row, c.name);
@@ -137,41 +162,96 @@ std::string plan_path(const std::string& out) {
   return (fs::path(out) / "batch_plan.json").string();
 }
 
-// Checks that `out` can take this batch: empty or missing, or, with --resume, holding the same
-// batch (its plan unchanged).
-void check_out_folder(const BatchOptions& options, const std::string& plan) {
+// The inputs whose content changed since the batch in `out` began, as "a, b".
+std::string changed_inputs(const std::string& plan_file, const std::vector<io::InputFile>& inputs) {
+  std::string changed;
+  for (const io::InputFile& before : io::read_plan_inputs(plan_file))
+    for (const io::InputFile& now : inputs)
+      if (now.path == before.path && now.hash != before.hash)
+        changed += (changed.empty() ? "" : ", ") + now.path;
+  return changed;
+}
+
+// Checks, under the lock, that `out` can take this batch: empty or missing, or, with --resume,
+// holding the same batch (its cases and the content of its inputs unchanged).
+void check_out_folder(const BatchOptions& options, const std::string& plan,
+                      const std::vector<io::InputFile>& inputs) {
   const std::string& out = options.out;
   const std::string plan_file = plan_path(out);
   if (io::is_file(plan_file)) {
     if (!options.resume)
       throw InputError(out, "",
                        "holds a batch already: add --resume to finish it, or choose another --out");
+    // Resuming after an edit would mix rows of the old and the new file in one summary.
+    if (const std::string changed = changed_inputs(plan_file, inputs); !changed.empty())
+      throw InputError(plan_file, "",
+                       fmt::format("changed since the batch in {} began: {}; its results would "
+                                   "mix with the new ones: choose another --out, or remove {} "
+                                   "to start again",
+                                   out, changed, out));
     if (io::read_text_file(plan_file) != plan)
       throw InputError(plan_file, "",
                        fmt::format("the cases of {} are not those of the batch in {} (the set, a "
-                                   "record or a path changed): use another --out",
-                                   options.set_path, out));
-  } else if (!io::is_empty_or_missing_folder(out)) {
+                                   "record or a path changed): choose another --out, or remove {} "
+                                   "to start again",
+                                   options.set_path, out, out));
+  } else if (!io::is_empty_but_for_lock(out)) {
     throw InputError(out, "", "exists and is not a batch folder: choose another --out");
   }
 }
 
-void open_out_folder(const BatchOptions& options, const std::string& plan, const Cluster& cluster) {
+// Rank 0: locks `out` for this batch, checks it and writes the plan.
+io::FolderLock lock_out_folder(const BatchOptions& options, const builder::SetSpec& set,
+                               const std::vector<builder::BatchCase>& cases) {
   const std::string& out = options.out;
-  check_out_folder(options, plan);
-  cluster.barrier();  // every rank has checked before rank 0 writes
-  if (cluster.is_root()) {
-    io::create_output_folder(out);
-    io::remove_folder((fs::path(out) / ".partial").string());  // cases a killed run left unfinished
-    io::write_text_atomic(plan_path(out), plan);
-  }
-  cluster.barrier();
+  // Nothing, not even the lock file, goes into a folder that is not a batch's.
+  if (!io::is_file(plan_path(out)) && !io::is_empty_but_for_lock(out))
+    throw InputError(out, "", "exists and is not a batch folder: choose another --out");
+  io::create_output_folder(out);
+  io::FolderLock lock(out);
+  // Checked again under the lock: another batch may have started in the folder meanwhile.
+  const std::vector<io::InputFile> inputs = input_files(set);
+  const std::string plan = plan_text(set, cases, inputs);
+  check_out_folder(options, plan, inputs);
+  io::remove_folder((fs::path(out) / ".partial").string());  // cases a killed run left unfinished
+  io::write_text_atomic(plan_path(out), plan);
+  return lock;
 }
 
-// The row of a case an earlier run completed, if there is one.
+// Rank 0 takes the lock (held until the batch ends) for every rank of this mpirun: the other
+// ranks write only after it has, and all stop if it cannot.
+std::optional<io::FolderLock> open_out_folder(const BatchOptions& options,
+                                              const builder::SetSpec& set,
+                                              const std::vector<builder::BatchCase>& cases,
+                                              const Cluster& cluster) {
+  std::optional<io::FolderLock> lock;
+  std::exception_ptr failure;
+  int exit_code = 0;  // of the failure, to pass on to the other ranks
+  if (cluster.is_root()) {
+    try {
+      lock.emplace(lock_out_folder(options, set, cases));
+    } catch (const InputError&) {
+      failure = std::current_exception();
+      exit_code = 2;
+    } catch (const std::exception&) {
+      failure = std::current_exception();
+      exit_code = 4;
+    }
+  }
+  exit_code = cluster.max(exit_code);
+  if (failure) std::rethrow_exception(failure);
+  const std::string why = fmt::format("rank 0 could not open {} (see its message)", options.out);
+  if (exit_code == 2) throw InputError(options.out, "", why);
+  if (exit_code != 0) throw io::OutputError(why);
+  return lock;
+}
+
+// The row of a case an earlier run completed, if there is one: a case folder without its
+// marker, or missing or short of a file the marker lists, runs again.
 std::optional<std::string> completed_row(const builder::BatchCase& c, const std::string& out) {
-  const std::string row_file = (fs::path(out) / c.name / "case.csv").string();
-  if (!io::is_file(row_file)) return std::nullopt;
+  const std::string folder = (fs::path(out) / c.name).string();
+  if (!io::is_complete_case(folder, c.name)) return std::nullopt;
+  const std::string row_file = (fs::path(folder) / "case.csv").string();
   std::string row;
   try {
     if (io::read_case_file(row_file, row).name == c.name) return row;
@@ -315,7 +395,7 @@ BatchReport run_batch(const BatchOptions& options, const Cluster& cluster) {
   const builder::SetSpec set = io::read_set_file(options.set_path);
   for (const builder::BatchModel& model : set.models) (void)io::read_model_file(model.path);
   const std::vector<builder::BatchCase> cases = builder::plan_cases(set);
-  open_out_folder(options, plan_text(set, cases), cluster);
+  const std::optional<io::FolderLock> lock = open_out_folder(options, set, cases, cluster);
 
   // Complete cases (a whole folder with its row) are kept; the rest run, shared out over ranks.
   std::map<std::size_t, std::string> rows;

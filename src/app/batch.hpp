@@ -3,9 +3,12 @@
 // under mpirun, over MPI ranks. Each case writes the outputs of `pound run` into its own folder
 // <out>/<model>/<record>/x<scale>/ (plus case.csv, its summary row), built under <out>/.partial
 // and renamed into place when complete, so a killed batch leaves only whole cases and --resume
-// runs the rest. Rank 0 then writes batch_summary.csv (one row per case, in plan order) and
-// batch_stats.json. Every number in them is independent of --jobs and of the number of ranks;
-// only run_time_s varies.
+// runs the rest (a case is whole with its completion marker, written last). Rank 0 holds a lock
+// on <out> for the whole batch, so no second batch writes there meanwhile, and keeps a content
+// hash of every input in batch_plan.json, so a resume never mixes the results of an edited
+// input with the old ones. Rank 0 then writes batch_summary.csv (one row per case, in plan
+// order) and batch_stats.json. Every number in them is independent of --jobs and of the number
+// of ranks; only run_time_s varies.
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -43,8 +46,10 @@ struct BatchReport {
   results::BatchStatistics statistics;  // root only
 };
 
-// Throws InputError (bad set, model or --out) before any case runs; io::OutputError if results
-// cannot be written. A case that fails (bad record, analysis failure) does not stop the others.
+// Throws InputError (bad set, model or --out, or an input edited since the batch in --out began)
+// before any case runs; io::OutputError if results cannot be written, io::FolderInUse (an
+// OutputError) if another batch holds --out. A case that fails (bad record, analysis failure) does
+// not stop the others.
 BatchReport run_batch(const BatchOptions& options, const Cluster& cluster);
 
 }  // namespace pound::app

@@ -3,6 +3,7 @@
 
 #include <boost/program_options.hpp>
 #include <cmath>
+#include <exception>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
@@ -30,10 +31,14 @@ Runs every (model, record, scale) case of a set file (docs/batch_format.md) on N
                      drift ratio and ductility, energy balance error, run time
   batch_stats.json   per model and scale: median, 84th percentile and maximum of each response,
                      the fraction of records exceeding each limit, and lognormal fragility fits
-  batch_plan.json    the cases, so --resume can check it continues the same batch
-A case that fails (a broken record, an analysis that cannot go on) is reported in its row and does
-not stop the others. Exit code 0 when every case completed, 3 when some failed, 2 for a bad set
-or model (nothing written), 4 when results cannot be written.
+  batch_plan.json    the cases and a content hash of every input, so --resume can check it
+                     continues the same batch of the same files
+A case is done once its case_complete.json (written last) and every file it lists are there;
+--resume runs every other case. While it runs, a batch locks DIR (DIR/.lock): a second batch
+there is refused. A case that fails (a broken record, an analysis that cannot go on) is reported
+in its row and does not stop the others. Exit code 0 when every case completed, 3 when some
+failed, 2 for a bad set or model (nothing written) or an input edited since the batch in DIR
+began, 4 when results cannot be written or another batch is working in DIR.
 
 options)";
 
@@ -127,7 +132,7 @@ int batch_command(const Arguments& arguments) {
   }
   batch.resume = vm.count("resume") > 0;
   const bool quiet = vm.count("quiet") > 0;
-  const std::unique_ptr<Cluster> started = start_cluster();
+  std::unique_ptr<Cluster> started = start_cluster();
   if (!started) return 1;
   const Cluster& cluster = *started;
   const bool terminal = ::isatty(STDERR_FILENO) && cluster.size() == 1;
@@ -136,7 +141,16 @@ int batch_command(const Arguments& arguments) {
     batch.progress = [&](const BatchProgress& p) {
       show_progress(p, terminal, cluster.rank(), cluster.size());
     };
-  const BatchReport report = run_batch(batch, cluster);
+  BatchReport report;
+  try {
+    report = run_batch(batch, cluster);
+  } catch (...) {
+    // Boost.MPI aborts every rank, before the message is printed, if an exception unwinds its
+    // environment: end MPI first (every rank fails alike), then report as usual.
+    const std::exception_ptr failure = std::current_exception();
+    started.reset();
+    std::rethrow_exception(failure);
+  }
   if (!cluster.is_root()) return 0;
   if (!quiet) print_report(batch, report);
   if (report.failed > 0) {

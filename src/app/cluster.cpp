@@ -8,6 +8,7 @@
 #include <boost/mpi/collectives.hpp>
 #include <boost/mpi/communicator.hpp>
 #include <boost/mpi/environment.hpp>
+#include <boost/mpi/operations.hpp>
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/vector.hpp>
 #endif
@@ -58,6 +59,13 @@ bool Cluster::any(bool mine) const {
   return result;
 }
 
+int Cluster::max(int mine) const {
+  if (!impl_) return mine;
+  int result = 0;
+  boost::mpi::all_reduce(impl_->world, mine, result, boost::mpi::maximum<int>());
+  return result;
+}
+
 bool Cluster::available() { return true; }
 
 #else
@@ -77,6 +85,7 @@ std::vector<std::string> Cluster::gather(const std::vector<std::string>& mine) c
   return mine;
 }
 bool Cluster::any(bool mine) const { return mine; }
+int Cluster::max(int mine) const { return mine; }
 bool Cluster::available() { return false; }
 
 #endif

@@ -24,6 +24,8 @@ class Cluster {
   std::vector<std::string> gather(const std::vector<std::string>& mine) const;
   // True on every rank if any rank passes true.
   bool any(bool mine) const;
+  // The largest value any rank passes, on every rank.
+  int max(int mine) const;
 
   // Whether this binary was built with MPI (Boost.MPI).
   static bool available();

@@ -15,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "io/folder_lock.hpp"
 #include "support/process.hpp"
 #include "support/shared_records.hpp"
 
@@ -87,6 +88,20 @@ class Batch : public PoundProcess {
 }})",
         kSource, kSharedRecordsFolder, extra);
     std::ofstream(path("set.json")) << set;
+    return path("set.json").string();
+  }
+
+  // A set of the two-girder model under the bundled records, with the model and one record copied
+  // into the test's folder so that a test can edit them.
+  std::string write_bundled_set(const std::string& scales) {
+    fs::copy_file(kSource + "/models/two_sdof_girders.json", path("model.json"));
+    fs::copy_file(kSource + "/ground_motions/synthetic_firm_01.AT2", path("record.AT2"));
+    std::ofstream(path("set.json")) << fmt::format(
+        R"({{"models": ["model.json"],
+             "records": [{{"file": "record.AT2"}},
+                         {{"folder": "{}/ground_motions", "pattern": "*soft*.AT2"}}],
+             "scales": {}}})",
+        kSource, scales);
     return path("set.json").string();
   }
 };
@@ -218,6 +233,8 @@ TEST_F(Batch, SurvivesBeingKilledAndResumesToTheSameResults) {
   EXPECT_GE(kept, 3);
   EXPECT_LT(kept, 12);
   EXPECT_FALSE(fs::exists(path("killed/batch_summary.csv")));
+  // The killed batch's lock file stays; its lock died with it and blocks nothing below.
+  EXPECT_TRUE(fs::is_regular_file(path("killed/.lock")));
 
   const Outcome again = pound({"batch", set, "--out", path("killed").string()});
   EXPECT_EQ(again.exit_code, 2) << again.err;  // not without --resume
@@ -250,7 +267,133 @@ TEST_F(Batch, RefusesAChangedSetOnResume) {
   std::ofstream(path("set.json")) << text;
   const Outcome outcome = pound({"batch", set, "--out", path("out").string(), "--resume"});
   EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
-  EXPECT_NE(outcome.err.find("are not those of the batch in"), std::string::npos) << outcome.err;
+  EXPECT_NE(outcome.err.find("changed since the batch in"), std::string::npos) << outcome.err;
+  EXPECT_NE(outcome.err.find(set), std::string::npos) << outcome.err;
+}
+
+// Issue 14: a --resume started while the first batch still ran wrote into the same case folders
+// (one of the two exited 4, or a case kept case.csv without its histories). The folder is locked
+// for the whole batch: the second is refused, naming the folder and the first one's PID, and
+// the first completes untouched.
+TEST_F(Batch, ASecondBatchInABusyFolderIsRefusedAndTheFirstCompletes) {
+  const std::string set = write_bundled_set("[0.5, 1, 1.5, 2, 2.5, 3]");
+  const std::string out = path("out").string();
+  const pid_t first = ::fork();
+  ASSERT_GE(first, 0);
+  if (first == 0) {
+    ::execl(POUND_BINARY, POUND_BINARY, "batch", set.c_str(), "--out", out.c_str(), "--jobs", "1",
+            "-q", static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  // The plan is written under the lock, and the holder's PID before it.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!fs::exists(path("out/batch_plan.json")) && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  const Outcome resumed = pound({"batch", set, "--out", out, "--resume"});
+  const Outcome again = pound({"batch", set, "--out", out});
+  int status = 0;
+  ::waitpid(first, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status)) << "the first batch was killed";
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+
+  for (const Outcome& second : {resumed, again}) {
+    EXPECT_EQ(second.exit_code, 4) << second.err;
+    EXPECT_NE(second.err.find(out + ": in use by another batch (process " + std::to_string(first)),
+              std::string::npos)
+        << second.err;
+  }
+  const auto rows = rows_of(read_text(path("out/batch_summary.csv")));
+  ASSERT_EQ(rows.size(), 19u);
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    EXPECT_EQ(cell(rows, r, "status"), "completed") << cell(rows, r, "name");
+    EXPECT_TRUE(fs::is_regular_file(path("out") / cell(rows, r, "name") / "joint.csv"));
+  }
+  // Once it has finished, the folder is free again (the lock file stays, the lock does not).
+  const Outcome after = pound({"batch", set, "--out", out, "--resume"});
+  EXPECT_EQ(after.exit_code, 0) << after.err;
+  EXPECT_NE(after.out.find("18 cases (18 resumed, 0 run"), std::string::npos) << after.out;
+}
+
+#ifdef POUND_TEST_MPIRUN
+// Under mpirun, rank 0 takes the lock for every rank: all of them stop, with rank 0's message
+// and exit code 4 (not an MPI abort), when another process holds the folder (here, this test).
+TEST_F(Batch, UnderMpirunABusyFolderStopsEveryRank) {
+  const std::string set = write_bundled_set("[1]");
+  const std::string out = path("out").string();
+  ASSERT_EQ(pound({"batch", set, "--out", out, "-q"}).exit_code, 0);
+  const io::FolderLock held(out);
+  const std::string command = fmt::format(
+      "ASAN_OPTIONS=detect_leaks=0 {} --oversubscribe --allow-run-as-root "
+      "-x ASAN_OPTIONS -np 2 {} batch {} --out {} --resume >{} 2>{}",
+      shell_quoted(POUND_TEST_MPIRUN), shell_quoted(POUND_BINARY), shell_quoted(set),
+      shell_quoted(out), shell_quoted(path("mpi_out.txt").string()),
+      shell_quoted(path("mpi_err.txt").string()));
+  const int status = std::system(command.c_str());
+  const std::string err = read_text(path("mpi_err.txt"));
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 4) << err;
+  EXPECT_NE(err.find(fmt::format("{}: in use by another batch (process {}", out, ::getpid())),
+            std::string::npos)
+      << err;
+  EXPECT_EQ(err.find("MPI_ABORT"), std::string::npos) << err;
+}
+#endif
+
+// A case counts as done only with its marker (case_complete.json, written last) and every file
+// it lists at its size: a case left without its histories (issue 14), without its marker or with
+// a file cut short runs again on --resume, to the same results.
+TEST_F(Batch, ResumeRedoesEveryIncompleteCase) {
+  const std::string set = write_bundled_set("[1, 2]");
+  const std::string out = path("out").string();
+  ASSERT_EQ(pound({"batch", set, "--out", out, "-q"}).exit_code, 0);
+  const std::string summary = read_text(path("out/batch_summary.csv"));
+  const fs::path firm = path("out/model/record/x1"), soft = path("out/model/synthetic_soft_01/x2");
+  const std::string history = read_text(firm / "joint.csv");
+  fs::remove(firm / "joint.csv");  // case.csv without its histories
+  fs::remove(soft / "case_complete.json");
+  std::ofstream(path("out/model/synthetic_soft_02/x1/summary.json"), std::ios::trunc) << "{";
+
+  const Outcome resumed = pound({"batch", set, "--out", out, "--resume"});
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find("6 cases (3 resumed, 3 run"), std::string::npos) << resumed.out;
+  EXPECT_EQ(read_text(firm / "joint.csv"), history);
+  EXPECT_TRUE(fs::is_regular_file(soft / "case_complete.json"));
+  EXPECT_EQ(without_run_time(read_text(path("out/batch_summary.csv"))), without_run_time(summary));
+}
+
+// Issue 14: --resume after editing a model (or a record, or the set) mixed rows of the old and
+// the new file, as only paths were compared. batch_plan.json keeps a hash of each input's
+// content, and a resume with any of them changed is refused, naming the file.
+TEST_F(Batch, RefusesAResumeAfterAnInputFileChanged) {
+  const std::string set = write_bundled_set("[1]");
+  const std::string out = path("out").string();
+  ASSERT_EQ(pound({"batch", set, "--out", out, "-q"}).exit_code, 0);
+  const std::string model = read_text(path("model.json")), record = read_text(path("record.AT2"));
+
+  auto expect_refused = [&](const std::string& changed) {
+    const Outcome outcome = pound({"batch", set, "--out", out, "--resume"});
+    EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+    EXPECT_NE(outcome.err.find("changed since the batch in " + out + " began: " + changed),
+              std::string::npos)
+        << outcome.err;
+    EXPECT_NE(outcome.err.find("choose another --out, or remove " + out), std::string::npos)
+        << outcome.err;
+  };
+  std::ofstream(path("model.json"), std::ios::app) << "\n";  // any edit, however small
+  expect_refused(path("model.json").string());
+  std::ofstream(path("record.AT2"), std::ios::app) << "\n";
+  expect_refused(path("model.json").string() + ", " + path("record.AT2").string());
+  std::ofstream(path("model.json")) << model;
+  std::ofstream(path("record.AT2")) << record;
+  std::ofstream(path("set.json"), std::ios::app) << "\n";
+  expect_refused(set);
+
+  // The inputs as they were: the batch resumes.
+  std::string text = read_text(path("set.json"));
+  text.pop_back();
+  std::ofstream(path("set.json")) << text;
+  const Outcome resumed = pound({"batch", set, "--out", out, "--resume"});
+  EXPECT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find("3 cases (3 resumed, 0 run"), std::string::npos) << resumed.out;
 }
 
 TEST_F(Batch, ABadSetWritesNothing) {
