@@ -56,7 +56,7 @@ void read_records_and_build(const std::string& path, bool first_as_given, Loaded
       if (k == 0 && first_as_given) throw;  // the caller's path: its error names it
       // The record cannot be opened: the model's field that names it is what to fix.
       throw InputError(path, fmt::format("/excitations/{}/record", k),
-                       fmt::format("{} '{}'", error.reason(), error.file()));
+                       fmt::format("{}: '{}'", error.reason(), error.file()));
     }
   }
   try {

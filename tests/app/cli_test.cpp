@@ -400,7 +400,7 @@ TEST_F(Cli, MissingRecordNamesTheModelAndItsField) {
       "x.json", R"([{"op": "add", "path": "/excitations", "value": [{"record": "zzz"}]}])");
   const Outcome outcome = run_refused(model);
   EXPECT_TRUE(contains(
-      outcome.err, model + ": /excitations/0/record: no such file '" + path("zzz").string() + "'"))
+      outcome.err, model + ": /excitations/0/record: no such file: '" + path("zzz").string() + "'"))
       << outcome.err;
 }
 
