@@ -1,5 +1,8 @@
 #include "app/command_line.hpp"
 
+#include <fmt/format.h>
+
+#include <cmath>
 #include <iostream>
 
 namespace pound::app {
@@ -18,6 +21,12 @@ std::optional<po::variables_map> parse_command_line(const Arguments& arguments,
   po::variables_map vm;
   po::store(po::command_line_parser(arguments).options(all).positional(positional).run(), vm);
   po::notify(vm);
+  // No number an option takes may be NaN or infinite ("--eta nan" would run with it): the ranges
+  // each command checks then need not think of them.
+  for (const auto& [name, value] : vm)
+    if (const double* number = boost::any_cast<double>(&value.value()))
+      if (!std::isfinite(*number))
+        throw po::error(fmt::format("--{} must be a finite number, got {}", name, *number));
   if (vm.count("help")) {
     std::cout << options << "\n";
     return std::nullopt;

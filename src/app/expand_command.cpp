@@ -1,3 +1,5 @@
+#include <fmt/format.h>
+
 #include <boost/program_options.hpp>
 #include <filesystem>
 #include <iostream>
@@ -8,6 +10,7 @@
 #include "io/model_reader.hpp"
 #include "io/model_writer.hpp"
 #include "io/output.hpp"
+#include "io/output_paths.hpp"
 
 namespace pound::app {
 namespace po = boost::program_options;
@@ -57,6 +60,13 @@ int expand_command(const Arguments& arguments) {
     std::cout << io::model_to_json(expanded);
     return 0;
   }
+  // The expanded model may not replace the model or one of its records.
+  std::vector<io::NamedPath> inputs{{model_path, "the model"}};
+  for (std::size_t k = 0; k < expanded.excitations.size(); ++k)
+    inputs.push_back(
+        {(fs::path(model_path).parent_path() / expanded.excitations[k].record).string(),
+         fmt::format("{}: /excitations/{}/record", model_path, k)});
+  io::check_outputs_apart(inputs, {{out, "--out"}});
   rebase_records(expanded, model_path, out);
   io::write_text_atomic(out, io::model_to_json(expanded));
   return 0;

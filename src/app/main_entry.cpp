@@ -6,6 +6,7 @@
 
 #include "app/commands.hpp"
 #include "core/errors.hpp"
+#include "core/interrupt.hpp"
 #include "io/output.hpp"
 
 namespace pound::app {
@@ -32,7 +33,7 @@ commands:
 
 Run `pound <command> --help` for a command's options. Model format: docs/model_format.md.
 Exit codes: 0 ok, 1 usage error or failed verification, 2 bad input, 3 analysis failed,
-4 output could not be written.
+4 output could not be written, 130/143 interrupted by SIGINT/SIGTERM.
 )";
 
 }  // namespace
@@ -61,6 +62,10 @@ int main_entry(int argc, char** argv) {
     }
     std::cerr << fmt::format("pound: unknown command '{}'\n\n{}", command, kUsage);
     return 1;
+  } catch (const Interrupted& error) {
+    std::cerr << fmt::format("pound {}: {}: no result of this run was put in place\n", command,
+                             error.what());
+    return error.exit_code();
   } catch (const InputError& error) {
     std::cerr << "error: " << error.what() << "\n";
     return 2;
@@ -68,6 +73,11 @@ int main_entry(int argc, char** argv) {
     std::cerr << "error: " << error.what() << "\n";
     return 3;
   } catch (const io::OutputError& error) {
+    // A batch reports a case its workers stopped at as an output error.
+    if (const int signal = interrupt_signal()) {
+      std::cerr << fmt::format("pound {}: {}\n", command, Interrupted(signal).what());
+      return Interrupted(signal).exit_code();
+    }
     std::cerr << "error: " << error.what() << "\n";
     return 4;
   } catch (const boost::program_options::error& error) {

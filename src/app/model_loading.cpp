@@ -6,6 +6,7 @@
 
 #include "core/errors.hpp"
 #include "io/ground_motion_reader.hpp"
+#include "io/json_reader.hpp"
 #include "io/model_reader.hpp"
 #include "io/system_memory.hpp"
 
@@ -48,7 +49,15 @@ void read_records_and_build(const std::string& path, bool first_as_given, Loaded
     format.time_step = e.time_step;
     format.time_column = e.time_column;
     format.units = io::parse_acceleration_unit(e.units);
-    loaded.records.push_back(io::read_ground_motion(record, format, spec.units.gravity()));
+    loaded.record_paths.push_back(record);
+    try {
+      loaded.records.push_back(io::read_ground_motion(record, format, spec.units.gravity()));
+    } catch (const io::FileAccessError& error) {
+      if (k == 0 && first_as_given) throw;  // the caller's path: its error names it
+      // The record cannot be opened: the model's field that names it is what to fix.
+      throw InputError(path, fmt::format("/excitations/{}/record", k),
+                       fmt::format("{}: '{}'", error.reason(), error.file()));
+    }
   }
   try {
     loaded.built = builder::build(spec, loaded.records);

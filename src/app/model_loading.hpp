@@ -15,6 +15,7 @@ struct LoadedModel {
   builder::ModelSpec spec;
   builder::BuiltModel built;
   std::vector<model::GroundMotion> records;  // of spec.excitations, as read (before scaling)
+  std::vector<std::string> record_paths;     // the files they were read from
 };
 
 // `motion_override`: a record path replacing the first excitation's record (or adding a uniform

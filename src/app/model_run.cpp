@@ -64,6 +64,7 @@ PreparedRun prepare(const RunRequest& request) {
   const std::string& model_path = request.model_path;
   PreparedRun run{request.record ? load_model_with_record(model_path, *request.record)
                                  : load_model(model_path, request.motion)};
+  if (request.before_run) request.before_run(run.loaded);
   builder::BuiltModel& built = run.loaded.built;
   if (request.max_steps > 0) built.analysis.max_steps = request.max_steps;
   built.analysis.time_limit = request.time_limit;
@@ -215,10 +216,15 @@ RunOutcome run_model(const RunRequest& request) {
 
 void write_run_outputs(const std::string& folder, const RunOutcome& outcome) {
   io::create_output_folder(folder);
+  io::remove_stale_temporaries(folder);  // of an earlier run killed with SIGKILL
+  // All staged, then renamed into place with summary.json last: a folder with a summary.json has
+  // the histories of that run, and an interrupted run leaves the earlier run's files.
+  io::StagedFiles files;
   for (const auto& [file, table] : outcome.histories)
-    io::write_csv_atomic((std::filesystem::path(folder) / file).string(), table);
-  io::write_text_atomic((std::filesystem::path(folder) / "summary.json").string(),
-                        outcome.summary.dump() + "\n");
+    files.write_csv((std::filesystem::path(folder) / file).string(), table);
+  files.write((std::filesystem::path(folder) / "summary.json").string(),
+              outcome.summary.dump() + "\n");
+  files.commit();
 }
 
 }  // namespace pound::app

@@ -2,6 +2,7 @@
 // One analysis of a model file, from reading it to the results `pound run` writes: shared by
 // `run` (one model) and `batch` (many cases, on threads and MPI ranks). Nothing here writes to
 // the console, so cases can run side by side.
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -23,6 +24,9 @@ struct RunRequest {
   double time_limit = 0.0;                        // [s] of solving, 0: none
   builder::IntensityMeasure intensity;            // for the case summary
   bool histories = true;                          // record and write the model's recorders
+  // Called once the model and its records are read, before the run: where the caller checks
+  // that its outputs will not overwrite them (throwing InputError).
+  std::function<void(const LoadedModel&)> before_run;
 };
 
 struct RunOutcome {
@@ -41,7 +45,8 @@ struct RunOutcome {
 // (SolveError) is an outcome with `failure` set and the histories up to then.
 RunOutcome run_model(const RunRequest& request);
 
-// summary.json and the history CSVs into `folder` (created if needed), each file atomically.
+// summary.json and the history CSVs into `folder` (created if needed): written under temporary
+// names, then renamed into place together, summary.json last.
 void write_run_outputs(const std::string& folder, const RunOutcome& outcome);
 
 }  // namespace pound::app

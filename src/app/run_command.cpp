@@ -8,6 +8,7 @@
 #include "app/command_line.hpp"
 #include "app/commands.hpp"
 #include "app/model_run.hpp"
+#include "io/output_paths.hpp"
 
 namespace pound::app {
 namespace po = boost::program_options;
@@ -37,6 +38,28 @@ std::string request_error(const RunRequest& request) {
   if (!(request.time_limit >= 0.0) || !std::isfinite(request.time_limit))
     return "--time-limit must be a number of seconds >= 0";
   return {};
+}
+
+// summary.json and the recorders' CSVs in `out`: none may be the model, a record or another
+// output (a record named like a recorder's file in the folder given as --out).
+void check_run_outputs(const std::string& out, const RunRequest& request,
+                       const LoadedModel& loaded) {
+  namespace fs = std::filesystem;
+  std::vector<io::NamedPath> inputs{{request.model_path, "the model"}};
+  for (std::size_t k = 0; k < loaded.record_paths.size(); ++k)
+    inputs.push_back({loaded.record_paths[k],
+                      k == 0 && request.motion
+                          ? "--motion"
+                          : fmt::format("{}: /excitations/{}/record", request.model_path, k)});
+  std::vector<io::NamedPath> outputs{{(fs::path(out) / "summary.json").string(), "--out"}};
+  const auto& recorders = loaded.built.recorders;
+  const bool named_in_model =
+      loaded.spec.recorders_given && loaded.spec.recorders.size() == recorders.size();
+  for (std::size_t k = 0; k < recorders.size(); ++k)
+    outputs.push_back(
+        {(fs::path(out) / recorders[k].file).string(),
+         named_in_model ? fmt::format("{}: /recorders/{}/file", request.model_path, k) : "--out"});
+  io::check_outputs_apart(inputs, outputs);
 }
 
 // Prints the run's report and warnings; the exit code: 3 when the analysis failed.
@@ -76,9 +99,8 @@ int run_command(const Arguments& arguments) {
     return 1;
   }
   if (!motion.empty()) request.motion = motion;
-  if (out.empty())
-    out =
-        (std::filesystem::path("out") / std::filesystem::path(request.model_path).stem()).string();
+  if (out.empty()) out = io::folder_named_after("out", request.model_path, "--out");
+  request.before_run = [&](const LoadedModel& loaded) { check_run_outputs(out, request, loaded); };
 
   // Everything that can be wrong with the input is found before any output exists.
   const RunOutcome outcome = run_model(request);

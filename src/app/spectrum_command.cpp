@@ -13,6 +13,7 @@
 #include "io/document.hpp"
 #include "io/ground_motion_reader.hpp"
 #include "io/output.hpp"
+#include "io/output_paths.hpp"
 #include "model/ground_motion.hpp"
 
 namespace pound::app {
@@ -146,6 +147,7 @@ po::options_description spectrum_options(SpectrumRequest& r) {
 std::string request_error(const SpectrumRequest& r) {
   if (r.record.empty()) return "name the record file (see `pound spectrum --help`)";
   if (!(r.damping_ratio >= 0.0 && r.damping_ratio < 1.0)) return "--damping must be in [0, 1)";
+  if (r.column < 1) return "--column must be 1 or more";
   if (r.format != "auto" && r.format != "at2" && r.format != "columns")
     return fmt::format("unknown --format '{}' (known: at2, columns, auto)", r.format);
   return {};
@@ -157,7 +159,11 @@ io::RecordFormat record_format(const SpectrumRequest& r, const po::variables_map
   format.format = r.format;
   format.time_column = vm.count("time-column") > 0;
   format.column = vm.count("column") ? r.column : (format.time_column ? 2 : 1);
-  if (vm.count("dt")) format.time_step = vm["dt"].as<double>();
+  if (vm.count("dt")) {
+    format.time_step = vm["dt"].as<double>();
+    if (!(*format.time_step > 0.0) || !std::isfinite(*format.time_step))
+      throw std::invalid_argument("--dt must be a positive number of seconds");
+  }
   format.units = io::parse_acceleration_unit(r.units);
   return format;
 }
@@ -184,6 +190,8 @@ int spectrum_command(const Arguments& arguments) {
     return usage_error(error.what());
   }
 
+  if (!request.csv.empty())
+    io::check_outputs_apart({{request.record, "the record"}}, {{request.csv, "--csv"}});
   // Read in m/s^2 (the spectrum's SI units); Sa is printed in g.
   const model::GroundMotion motion =
       io::read_ground_motion(request.record, format, kStandardGravity);

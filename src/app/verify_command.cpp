@@ -12,6 +12,7 @@
 #include "integrators/integrator_catalog.hpp"
 #include "io/model_reader.hpp"
 #include "io/output.hpp"
+#include "io/output_paths.hpp"
 #include "verification/block_belt.hpp"
 #include "verification/rod_impact_2d.hpp"
 #include "verification/rod_impact_report.hpp"
@@ -222,6 +223,7 @@ std::optional<std::string> rod_impact_option_error(const VerifyOptions& options)
   if (options.courant_given && !(options.courant > 0.0)) return "--courant must be > 0";
   if (!(options.duration_ratio >= 1.5)) return "--duration-ratio must be >= 1.5 (the error window)";
   if (!(options.tolerance > 0.0)) return "--tolerance must be > 0";
+  if (!(options.eta >= 0.0)) return "--eta must be >= 0";
   return std::nullopt;
 }
 
@@ -278,6 +280,8 @@ int verify_rod_impact(const VerifyOptions& options) {
   verification::RodImpactOptions run;
   if (const std::optional<std::string> error = set_up_rod_impact(options, run))
     return usage_error(*error);
+  if (!options.csv.empty() && !options.profiles_csv.empty())
+    io::check_outputs_apart({}, {{options.csv, "--csv"}, {options.profiles_csv, "--profiles-csv"}});
   const verification::RodImpactResult result = verification::run_rod_impact(run);
   if (!options.csv.empty())
     io::write_csv_atomic(options.csv, verification::force_history_table(result));

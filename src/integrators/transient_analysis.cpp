@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "core/errors.hpp"
+#include "core/interrupt.hpp"
 
 namespace pound::integrators {
 
@@ -78,6 +79,7 @@ TransientStatistics TransientAnalysis::run(State& state, const StepObserver& obs
 }
 
 void TransientAnalysis::check_limits(const State& state) {
+  throw_if_interrupted();  // Ctrl-C or SIGTERM: unwind, so no half-written result is left
   const TransientStatistics& stats = statistics_;
   if (settings_.max_steps > 0 && stats.steps >= settings_.max_steps)
     throw SolveError(state.time,

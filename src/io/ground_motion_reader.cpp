@@ -657,7 +657,7 @@ std::string_view without_markers(std::string_view text) {
 
 model::GroundMotion read_ground_motion(const std::string& path, const RecordFormat& format,
                                        double g_in_model_units) {
-  return parse_ground_motion(read_text_file(path), path, format, g_in_model_units);
+  return parse_ground_motion(read_text_file(path, kMaxRecordBytes), path, format, g_in_model_units);
 }
 
 model::GroundMotion parse_ground_motion(const std::string& text, const std::string& path,

@@ -1,6 +1,9 @@
 #include "io/json_reader.hpp"
 
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
@@ -188,19 +191,102 @@ T read_integer(const JsonValue& value) {
 
 }  // namespace
 
-std::string read_text_file(const std::string& path) {
+namespace {
+
+// What a path that is not a regular file is, for the message.
+std::string kind_of_file(std::filesystem::file_type type) {
+  using std::filesystem::file_type;
+  switch (type) {
+    case file_type::directory:
+      return "is a folder, not a file";
+    case file_type::fifo:
+      return "not a regular file (a FIFO)";
+    case file_type::character:
+      return "not a regular file (a character device)";
+    case file_type::block:
+      return "not a regular file (a block device)";
+    case file_type::socket:
+      return "not a regular file (a socket)";
+    default:
+      return "not a regular file";
+  }
+}
+
+std::filesystem::file_type type_of_mode(mode_t mode) {
+  using std::filesystem::file_type;
+  if (S_ISREG(mode)) return file_type::regular;
+  if (S_ISDIR(mode)) return file_type::directory;
+  if (S_ISFIFO(mode)) return file_type::fifo;
+  if (S_ISCHR(mode)) return file_type::character;
+  if (S_ISBLK(mode)) return file_type::block;
+  if (S_ISSOCK(mode)) return file_type::socket;
+  return file_type::unknown;
+}
+
+std::string too_large(std::uintmax_t max_bytes) {
+  return fmt::format("the file is larger than {} MB, the most an input file may hold",
+                     max_bytes >> 20);
+}
+
+// Closes a descriptor on every way out.
+struct FileDescriptor {
+  int fd;
+  ~FileDescriptor() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+}  // namespace
+
+void check_input_file(const std::string& path, std::uintmax_t max_bytes) {
+  if (path.find('\0') != std::string::npos)
+    throw FileAccessError(path.substr(0, path.find('\0')) + "\\0...", "",
+                          "a NUL character in the file name");
   std::error_code error;
   const std::filesystem::file_status status = std::filesystem::status(path, error);
   if (status.type() == std::filesystem::file_type::not_found)
-    throw InputError(path, "", "no such file");
-  if (error) throw InputError(path, "", "cannot access: " + error.message());
-  if (std::filesystem::is_directory(status)) throw InputError(path, "", "is a folder, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", fmt::format("cannot open: {}", std::strerror(errno)));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(path, "", "cannot read the file");
-  return text.str();
+    throw FileAccessError(path, "", "no such file");
+  if (error) throw FileAccessError(path, "", "cannot access: " + error.message());
+  if (!std::filesystem::is_regular_file(status))
+    throw FileAccessError(path, "", kind_of_file(status.type()));
+  if (std::filesystem::file_size(path, error) > max_bytes && !error)
+    throw FileAccessError(path, "", too_large(max_bytes));
+}
+
+std::string read_text_file(const std::string& path, std::uintmax_t max_bytes) {
+  check_input_file(path, max_bytes);
+  // O_NONBLOCK: should the path turn into a FIFO after the check, opening it does not wait for a
+  // writer; fstat below then refuses it.
+  const FileDescriptor file{::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK)};
+  if (file.fd < 0)
+    throw FileAccessError(path, "", fmt::format("cannot open: {}", std::strerror(errno)));
+  struct stat opened {};
+  if (::fstat(file.fd, &opened) != 0)
+    throw FileAccessError(path, "", fmt::format("cannot access: {}", std::strerror(errno)));
+  if (!S_ISREG(opened.st_mode))
+    throw FileAccessError(path, "", kind_of_file(type_of_mode(opened.st_mode)));
+  if (static_cast<std::uintmax_t>(opened.st_size) > max_bytes)
+    throw FileAccessError(path, "", too_large(max_bytes));
+  // Read to the end, not to st_size: a file still growing is bounded all the same.
+  // One spare byte, so a file of its stated size ends with a read of 0 bytes and no copy.
+  std::string text(static_cast<std::size_t>(opened.st_size) + 1, '\0');
+  std::size_t length = 0;
+  for (;;) {
+    if (length == text.size()) {
+      if (length > max_bytes) throw FileAccessError(path, "", too_large(max_bytes));
+      text.resize(static_cast<std::size_t>(
+          std::min<std::uintmax_t>(max_bytes + 1, std::max<std::size_t>(4096, 2 * length))));
+    }
+    const ssize_t count = ::read(file.fd, text.data() + length, text.size() - length);
+    if (count < 0 && errno == EINTR) continue;
+    if (count < 0)
+      throw FileAccessError(path, "", fmt::format("cannot read: {}", std::strerror(errno)));
+    if (count == 0) break;
+    length += static_cast<std::size_t>(count);
+  }
+  if (length > max_bytes) throw FileAccessError(path, "", too_large(max_bytes));
+  text.resize(length);
+  return text;
 }
 
 Json parse_json(const std::string& text, const std::string& source) {
@@ -311,7 +397,10 @@ bool JsonValue::as<bool>() const {
 template <>
 std::string JsonValue::as<std::string>() const {
   if (!json_->is_string()) fail("expected a string, got " + kind());
-  return json_->get<std::string>();
+  std::string text = json_->get<std::string>();
+  // A file name "a\u0000b" would open "a": no value of a model or set may hold one.
+  if (text.find('\0') != std::string::npos) fail("a NUL character (\\u0000) in the string");
+  return text;
 }
 
 std::string JsonValue::as_one_of(const std::vector<std::string>& options) const {

@@ -8,6 +8,7 @@
 //   link.finish();                       // "/links/0/gpa: unknown field (did you mean 'gap'?)"
 #include <concepts>
 #include <cstddef>
+#include <cstdint>
 #include <initializer_list>
 #include <limits>
 #include <map>
@@ -23,8 +24,29 @@
 
 namespace pound::io {
 
-// Reads a whole file; missing files, folders and unreadable files are InputErrors naming `path`.
-std::string read_text_file(const std::string& path);
+// Upper bounds on one input file, checked before it is read, so a file named by mistake (a disk
+// image, a log) is refused at once rather than read into memory. A model or set is text a person
+// writes or a generator emits: the largest explicit models (10^6 nodes at ~100 bytes each) stay
+// well under 256 MB. A record of 10 minutes at 1 kHz is ~10 MB of text; 1 GB is ~60 million
+// samples, beyond any recorded or synthetic ground motion.
+inline constexpr std::uintmax_t kMaxDocumentBytes = std::uintmax_t{256} << 20;
+inline constexpr std::uintmax_t kMaxRecordBytes = std::uintmax_t{1} << 30;
+
+// An input file that cannot be read at all (missing, not a regular file, too large,
+// unreadable), as opposed to one whose content is wrong: a caller that knows where the name came
+// from (a model's JSON path) re-reports it there.
+class FileAccessError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
+// Fails as read_text_file would, without reading: for files checked early and read later.
+void check_input_file(const std::string& path, std::uintmax_t max_bytes = kMaxDocumentBytes);
+
+// Reads a whole regular file (symlinks followed) of at most `max_bytes`. Missing files, folders,
+// FIFOs, devices, sockets, larger files and unreadable files are FileAccessErrors naming `path`;
+// nothing blocks and nothing is read beyond `max_bytes`.
+std::string read_text_file(const std::string& path, std::uintmax_t max_bytes = kMaxDocumentBytes);
 
 // Parses JSON text. Syntax errors name the line and column; a key given twice in one object (which
 // JSON parsers silently resolve) names its JSON path; empty text is an error too.
@@ -71,7 +93,8 @@ class JsonValue {
   [[noreturn]] void fail(const std::string& what) const;
 
   // The value as T: double (any finite number), int or long (an integer in range; 2.0 counts),
-  // bool or std::string. Anything else fails with "expected a number, got a string".
+  // bool or std::string (without NUL characters, which would cut a file name short). Anything else
+  // fails with "expected a number, got a string".
   template <class T>
   T as() const;
 

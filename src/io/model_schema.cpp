@@ -777,8 +777,10 @@ Field<ExcitationSpec> scale_field() {
 const Fields<ExcitationSpec>& excitation_fields() {
   static const Fields<ExcitationSpec> fields = [] {
     Fields<ExcitationSpec> list = record_format_fields();
-    list.insert(list.begin(), required("record", &ExcitationSpec::record, Text{true},
-                                       "the record file, relative to the model file"));
+    list.insert(
+        list.begin(),
+        required("record", &ExcitationSpec::record, Text{true},
+                 "the record file, relative to the model file: a regular file of at most 1 GB"));
     list.insert(
         list.end(),
         {
@@ -934,13 +936,17 @@ void check_file_name(const std::string& name, const JsonValue& where) {
   if (!plain)
     where.fail(
         fmt::format("must be a plain file name ending in .csv (no folders), got '{}'", name));
+  // A batch case's folder holds the run's files and case.csv, its summary row.
+  if (name == "case.csv")
+    where.fail("'case.csv' is the name of a batch case's summary row: choose another file name");
 }
 
 // A file name unique among the recorders; by default "<type>_<index>.csv".
 Field<RecorderSpec> recorder_file() {
   return custom<RecorderSpec>(
       {"file", "string", "`\"<type>_<k>.csv\"`",
-       "a plain file name ending in .csv, unique; k counts the recorders from 0"},
+       "a plain file name ending in .csv, unique, not `case.csv` (a batch case's row); k counts "
+       "the recorders from 0"},
       [](JsonObject& object, RecorderSpec& recorder, Context& context) {
         const std::optional<JsonValue> file = object.find("file");
         const JsonValue& where = file ? *file : object.value();

@@ -2,6 +2,7 @@
 
 #include <fmt/compile.h>
 #include <fmt/format.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -9,9 +10,15 @@
 #include <cstring>
 #include <filesystem>
 
+#include "core/interrupt.hpp"
+
 namespace pound::io {
 
-void write_text_atomic(const std::string& path, std::string_view text) {
+namespace {
+
+// Writes `text` to <path>.tmp.<pid>, synced to disk; returns that name.
+std::string write_temporary(const std::string& path, std::string_view text) {
+  throw_if_interrupted();
   const std::string temporary = fmt::format("{}.tmp.{}", path, ::getpid());
   std::FILE* file = std::fopen(temporary.c_str(), "wb");
   if (!file) throw OutputError(fmt::format("{}: cannot write: {}", path, std::strerror(errno)));
@@ -25,10 +32,53 @@ void write_text_atomic(const std::string& path, std::string_view text) {
     throw OutputError(fmt::format("{}: cannot write: {}", path,
                                   std::strerror(!written ? write_errno : flush_errno)));
   }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    const int rename_errno = errno;
-    std::remove(temporary.c_str());
-    throw OutputError(fmt::format("{}: cannot write: {}", path, std::strerror(rename_errno)));
+  return temporary;
+}
+
+}  // namespace
+
+StagedFiles::~StagedFiles() {
+  for (const auto& [temporary, destination] : staged_) std::remove(temporary.c_str());
+}
+
+void StagedFiles::write(const std::string& path, std::string_view text) {
+  // Staged before it is written, so an interrupt while writing removes it too.
+  staged_.emplace_back(fmt::format("{}.tmp.{}", path, ::getpid()), path);
+  write_temporary(path, text);
+}
+
+void StagedFiles::commit() {
+  throw_if_interrupted();  // the last point at which nothing has been put in place
+  // Of several files the last marks them complete: an older one goes first, so a crash between
+  // the renames leaves no marker beside a mix of old and new files.
+  if (staged_.size() > 1) std::remove(staged_.back().second.c_str());
+  while (!staged_.empty()) {
+    const auto& [temporary, destination] = staged_.front();
+    if (std::rename(temporary.c_str(), destination.c_str()) != 0)
+      throw OutputError(fmt::format("{}: cannot write: {}", destination, std::strerror(errno)));
+    staged_.erase(staged_.begin());
+  }
+}
+
+void write_text_atomic(const std::string& path, std::string_view text) {
+  StagedFiles file;
+  file.write(path, text);
+  file.commit();
+}
+
+void remove_stale_temporaries(const std::string& folder) {
+  std::error_code error;
+  for (const std::filesystem::directory_entry& entry :
+       std::filesystem::directory_iterator(folder, error)) {
+    const std::string name = entry.path().filename().string();
+    const std::size_t mark = name.rfind(".tmp.");
+    if (mark == std::string::npos || mark + 5 == name.size()) continue;
+    const std::string digits = name.substr(mark + 5);
+    if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
+    const auto pid = static_cast<pid_t>(std::stol(digits));
+    // Only a process that no longer exists: another run may be writing into the same folder.
+    if (pid == ::getpid() || ::kill(pid, 0) == 0 || errno != ESRCH) continue;
+    std::filesystem::remove(entry.path(), error);
   }
 }
 
@@ -68,6 +118,12 @@ std::string to_csv(const TextTable& table) {
   std::string text = line(table.columns);
   for (const auto& row : table.rows) text += line(row);
   return text;
+}
+
+void StagedFiles::write_csv(const std::string& path, const Table& table) {
+  fmt::memory_buffer text;
+  format_csv(table, text);
+  write(path, std::string_view(text.data(), text.size()));
 }
 
 void write_csv_atomic(const std::string& path, const Table& table) {

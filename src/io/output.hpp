@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/table.hpp"
@@ -25,6 +26,30 @@ struct TextTable {
 };
 
 void write_text_atomic(const std::string& path, std::string_view text);
+
+// Files written under temporary names (<path>.tmp.<pid>) and put in place together: commit()
+// renames them in the order they were written, so the last one (a run's summary.json) appears
+// only after all the others; of several, the last one's older version is removed first. Whatever is
+// not committed is removed when this goes out of scope (an error, Ctrl-C: the writers throw
+// Interrupted once a signal arrived).
+class StagedFiles {
+ public:
+  StagedFiles() = default;
+  StagedFiles(const StagedFiles&) = delete;
+  StagedFiles& operator=(const StagedFiles&) = delete;
+  ~StagedFiles();
+
+  void write(const std::string& path, std::string_view text);
+  void write_csv(const std::string& path, const Table& table);
+  void commit();
+
+ private:
+  std::vector<std::pair<std::string, std::string>> staged_;  // temporary, destination
+};
+
+// Removes the <name>.tmp.<pid> files in `folder` whose process is no longer running: what a run
+// killed by SIGKILL (which cannot be handled) or a power cut left behind.
+void remove_stale_temporaries(const std::string& folder);
 std::string to_csv(const TextTable& table);
 void write_csv_atomic(const std::string& path, const Table& table);
 std::string to_csv(const Table& table);

@@ -22,20 +22,35 @@ bool is_safe_name_char(char c) {
          c == '_' || c == '-';
 }
 
-// Ids name folders: letters, digits, '.', '_', '-', and not "." or "..".
+// The names of the batch folder's own files and folders (app/batch.hpp): a model id names a
+// folder beside them. Names starting with '.' are the batch's too (.partial, locks).
+bool is_reserved_id(const std::string& id) {
+  return id.starts_with('.') || id == "batch_summary.csv" || id == "batch_plan.json" ||
+         id == "batch_stats.json";
+}
+
+// Ids name folders: letters, digits, '.', '_', '-', not starting with '.' and none of the batch
+// folder's own names.
 std::string read_id(const JsonValue& value) {
   std::string id = value.as<std::string>(non_empty);
   if (!std::all_of(id.begin(), id.end(), is_safe_name_char) || id == "." || id == "..")
     value.fail(fmt::format("id '{}' names a folder: use letters, digits, '.', '_' or '-'", id));
+  if (is_reserved_id(id))
+    value.fail(fmt::format("id '{}' is {}: choose another", id,
+                           id.starts_with('.') ? "a hidden folder name (it starts with '.')"
+                                               : "the name of a file of the batch folder"));
   return id;
 }
 
-// An id made from a file name, with anything unsafe for a folder name replaced by '_'.
+// An id made from a file name, with anything unsafe for a folder name replaced by '_' (a leading
+// '.' too) and '_' added to a name the batch folder uses itself.
 std::string id_from_file(const fs::path& file) {
   std::string id = file.stem().string();
   std::replace_if(
       id.begin(), id.end(), [](char c) { return !is_safe_name_char(c); }, '_');
-  return id.empty() || id == "." || id == ".." ? "record" : id;
+  if (id.starts_with('.')) id.front() = '_';
+  if (is_reserved_id(id)) id += '_';
+  return id.empty() ? "record" : id;
 }
 
 // A path in the set file, relative to the set file's folder.
@@ -43,11 +58,13 @@ std::string resolve(const fs::path& folder, const std::string& path) {
   return fs::path(path).is_absolute() ? path : (folder / path).lexically_normal().string();
 }
 
-void require_file(const JsonValue& where, const std::string& path, const char* what) {
-  std::error_code error;
-  if (!fs::is_regular_file(path, error))
-    where.fail(fmt::format("{} '{}' {}", what, path,
-                           fs::exists(path, error) ? "is not a file" : "does not exist"));
+void require_file(const JsonValue& where, const std::string& path, const char* what,
+                  std::uintmax_t max_bytes) {
+  try {
+    check_input_file(path, max_bytes);
+  } catch (const FileAccessError& error) {
+    where.fail(fmt::format("{} '{}': {}", what, path, error.reason()));
+  }
 }
 
 builder::BatchModel read_model_entry(const JsonValue& value, const fs::path& folder) {
@@ -55,13 +72,13 @@ builder::BatchModel read_model_entry(const JsonValue& value, const fs::path& fol
   if (value.json().is_string()) {
     model.path = resolve(folder, value.as<std::string>(non_empty));
     model.id = id_from_file(model.path);
-    require_file(value, model.path, "model file");
+    require_file(value, model.path, "model file", kMaxDocumentBytes);
     return model;
   }
   read_object(value, [&](JsonObject& object) {
     const JsonValue file = object.at("file");
     model.path = resolve(folder, file.as<std::string>(non_empty));
-    require_file(file, model.path, "model file");
+    require_file(file, model.path, "model file", kMaxDocumentBytes);
     const std::optional<JsonValue> id = object.find("id");
     model.id = id ? read_id(*id) : id_from_file(model.path);
   });
@@ -82,7 +99,7 @@ std::vector<builder::BatchRecord> read_record_entry(JsonObject& object, const fs
   std::vector<builder::BatchRecord> records;
   if (file) {
     excitation.record = resolve(folder, file->as<std::string>(non_empty));
-    require_file(*file, excitation.record, "record");
+    require_file(*file, excitation.record, "record", kMaxRecordBytes);
     records.push_back({id ? read_id(*id) : id_from_file(excitation.record) + suffix, excitation});
     return records;
   }

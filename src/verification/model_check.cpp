@@ -94,6 +94,31 @@ void check_explicit_steps(const builder::AnalysisSpec& analysis, assembly::Struc
                     analysis.time_step, *check.explicit_step_contact));
 }
 
+// A step that spans a good part of the analysis or many samples of a record computes something,
+// but not the response: a 100 s step on a 30 s record is one step. Ten is a loose bound (a
+// record's peaks last a few samples; a response needs many steps), so a warning is meant.
+void check_step_against_duration(const builder::BuiltModel& built,
+                                 std::vector<std::string>& warnings) {
+  constexpr double kFew = 10.0;
+  const builder::AnalysisSpec& analysis = built.analysis;
+  if (analysis.time_step_auto || !(analysis.time_step > 0.0)) return;
+  if (analysis.duration > 0.0 && analysis.time_step > analysis.duration / kFew)
+    warnings.push_back(fmt::format(
+        "the time step {:.4g} is more than a tenth of the duration {:.4g}: the analysis takes "
+        "only {:.0f} step(s) (is /analysis/time_step what you meant?)",
+        analysis.time_step, analysis.duration, std::ceil(analysis.duration / analysis.time_step)));
+  auto check_record = [&](const model::GroundMotion& motion) {
+    if (motion.time_step > 0.0 && analysis.time_step > kFew * motion.time_step)
+      warnings.push_back(fmt::format(
+          "the time step {:.4g} is {:.0f} times the sampling interval {:.4g} of record '{}': "
+          "the record's peaks are stepped over",
+          analysis.time_step, analysis.time_step / motion.time_step, motion.time_step,
+          motion.name));
+  };
+  for (const model::UniformExcitation& e : built.model.excitations) check_record(e.motion);
+  for (const model::SupportExcitation& e : built.model.support_excitations) check_record(e.motion);
+}
+
 }  // namespace
 
 ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSystem& system,
@@ -109,6 +134,7 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
     }
   }
   check_explicit_steps(analysis, system, check);
+  check_step_against_duration(built, check.warnings);
   for (Index k = 0; k < links.count(); ++k) {
     const model::Link& link = built.model.links[static_cast<std::size_t>(k)];
     if (link.role() != links::LinkRole::contact) continue;

@@ -2,10 +2,12 @@
 // not write). Each test runs the real binary with its output captured in a fresh temporary folder.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -377,6 +379,133 @@ TEST_F(Cli, CheckWarnsAboutMeaninglessSettingsOnly) {
   std::string ran;
   for (const json& w : summary["warnings"]) ran += w["warning"].get<std::string>() + "\n";
   EXPECT_TRUE(contains(ran, all)) << ran;
+}
+
+// ---- Issue 14: every input ends in a clear answer, and no output overwrites an input ----
+
+TEST_F(Cli, DeviceOrFifoAsModelIsRefusedAtOnce) {
+  const Outcome zero = pound({"check", "/dev/zero"});
+  EXPECT_EQ(zero.exit_code, 2) << zero.err;
+  EXPECT_TRUE(contains(zero.err, "/dev/zero: not a regular file (a character device)")) << zero.err;
+  const std::string fifo = path("model.json").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const Outcome waiting = pound({"run", fifo, "--out", path("out").string()});
+  EXPECT_EQ(waiting.exit_code, 2) << waiting.err;
+  EXPECT_TRUE(contains(waiting.err, "not a regular file (a FIFO)")) << waiting.err;
+  EXPECT_FALSE(fs::exists(path("out")));
+}
+
+TEST_F(Cli, MissingRecordNamesTheModelAndItsField) {
+  const std::string model = write_model(
+      "x.json", R"([{"op": "add", "path": "/excitations", "value": [{"record": "zzz"}]}])");
+  const Outcome outcome = run_refused(model);
+  EXPECT_TRUE(contains(
+      outcome.err, model + ": /excitations/0/record: no such file: '" + path("zzz").string() + "'"))
+      << outcome.err;
+}
+
+TEST_F(Cli, RunOutputsMayNotOverwriteTheModelOrItsRecords) {
+  // A record named like the recorder's file, in the folder given as --out.
+  fs::copy_file(fs::path(POUND_SOURCE_DIR) / "ground_motions" / "synthetic_firm_01.AT2",
+                path("links.csv"));
+  const std::string before = read_text(path("links.csv"));
+  const std::string model =
+      write_model("summary.json",
+                  R"([{"op": "add", "path": "/excitations", "value": [{"record": "links.csv",
+           "format": "at2"}]}, {"op": "remove", "path": "/analysis/duration"}])");
+  const std::string model_text = read_text(model);
+  const Outcome outcome = pound({"run", model, "--out", folder_.string()});
+  EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+  EXPECT_TRUE(contains(outcome.err, "--out: the output")) << outcome.err;
+  EXPECT_EQ(read_text(path("links.csv")), before);
+  EXPECT_EQ(read_text(model), model_text);
+  // The model alone in the folder: its summary would replace it.
+  const std::string plain = write_model("summary.json", "[]");
+  const Outcome own = pound({"run", plain, "--out", folder_.string()});
+  EXPECT_EQ(own.exit_code, 2) << own.err;
+  EXPECT_TRUE(contains(own.err, "would overwrite the input")) << own.err;
+  EXPECT_TRUE(json::parse(read_text(plain)).contains("nodes"));
+}
+
+TEST_F(Cli, ModelNameThatCannotNameAFolderNeedsOut) {
+  const std::string model = write_model("...json", "[]");
+  const Outcome outcome = pound({"run", model});
+  EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+  EXPECT_TRUE(contains(outcome.err, "--out: no output folder can be named after")) << outcome.err;
+}
+
+TEST_F(Cli, SpectrumAndExpandMayNotOverwriteTheirInput) {
+  const fs::path record = path("r.AT2");
+  fs::copy_file(fs::path(POUND_SOURCE_DIR) / "ground_motions" / "synthetic_firm_01.AT2", record);
+  const std::string text = read_text(record);
+  const Outcome spectrum = pound({"spectrum", record.string(), "--csv", record.string()});
+  EXPECT_EQ(spectrum.exit_code, 2) << spectrum.err;
+  EXPECT_TRUE(contains(spectrum.err, "--csv: the output")) << spectrum.err;
+  EXPECT_EQ(read_text(record), text);
+  const std::string model = write_model("m.json", "[]");
+  const std::string model_text = read_text(model);
+  const Outcome expand = pound({"expand", model, "--out", model});
+  EXPECT_EQ(expand.exit_code, 2) << expand.err;
+  EXPECT_TRUE(contains(expand.err, "--out: the output")) << expand.err;
+  EXPECT_EQ(read_text(model), model_text);
+}
+
+TEST_F(Cli, NumericOptionsMustBeFiniteAndInRange) {
+  for (const std::vector<std::string>& arguments :
+       {std::vector<std::string>{"verify", "rod-impact", "--eta", "-1"},
+        {"verify", "rod-impact", "--eta", "nan"},
+        {"verify", "rod-impact", "--k-ratio", "inf"},
+        {"spectrum", POUND_SOURCE_DIR "/ground_motions/synthetic_firm_01.AT2", "--dt", "nan"},
+        {"spectrum", POUND_SOURCE_DIR "/ground_motions/synthetic_firm_01.AT2", "--column", "0"},
+        {"run", kGirderModel, "--time-limit", "nan"},
+        {"modes", kGirderModel, "--count", "0"}}) {
+    const Outcome outcome = pound(arguments);
+    EXPECT_EQ(outcome.exit_code, 1) << arguments[0] << " " << arguments[2] << "\n" << outcome.err;
+    EXPECT_TRUE(contains(outcome.err, "--")) << outcome.err;
+  }
+  const Outcome nan = pound({"verify", "rod-impact", "--eta", "nan"});
+  EXPECT_TRUE(contains(nan.err, "--eta must be a finite number")) << nan.err;
+}
+
+TEST_F(Cli, StepLongerThanTheRecordIsWarned) {
+  const std::string model = write_model(
+      "long_step.json", R"([{"op": "replace", "path": "/analysis/time_step", "value": 0.05}])");
+  const Outcome outcome = pound({"check", model, "--json"});
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_TRUE(contains(outcome.out, "more than a tenth of the duration")) << outcome.out;
+}
+
+TEST_F(Cli, TerminatedRunLeavesNoTemporaryAndNoSummary) {
+  // Long enough to be stopped in the step loop; nothing recorded, so nothing is large.
+  const std::string model =
+      write_model("long.json", R"([{"op": "replace", "path": "/analysis/duration", "value": 1.0e5},
+                       {"op": "add", "path": "/recorders", "value": []}])");
+  const fs::path out = path("out");
+  fs::create_directories(out);
+  std::ofstream(out / "links.csv.tmp.999999999") << "left by a killed run";
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    ::execl(POUND_BINARY, POUND_BINARY, "run", model.c_str(), "--out", out.c_str(), "--quiet",
+            static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  ::sleep(2);
+  ASSERT_EQ(::kill(child, SIGTERM), 0);
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 143);
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
+  std::set<std::string> left;
+  for (const fs::directory_entry& entry : fs::directory_iterator(out))
+    left.insert(entry.path().filename().string());
+  EXPECT_EQ(left, std::set<std::string>{"links.csv.tmp.999999999"});  // only the stale one
+  // The next run into the folder removes what a run killed with SIGKILL left.
+  const Outcome next = pound({"run", write_model("short.json", "[]"), "--out", out.string()});
+  ASSERT_EQ(next.exit_code, 0) << next.err;
+  EXPECT_FALSE(fs::exists(out / "links.csv.tmp.999999999"));
+  EXPECT_TRUE(fs::exists(out / "summary.json"));
 }
 
 }  // namespace

@@ -2,8 +2,10 @@
 // write names the path and the reason and leaves the previous result as it was.
 #include "io/output.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -127,6 +129,39 @@ TEST(OutputCsv, FullPrecisionSoAHistoryReadsBackBitForBit) {
     EXPECT_EQ(std::stod(line.substr(comma + 1)), table.values[1][row]) << line;
   }
   EXPECT_FALSE(std::getline(lines, line)) << text;
+}
+
+TEST_F(Output, StagedFilesAppearTogetherOrNotAtAll) {
+  {
+    StagedFiles files;
+    files.write(path("links.csv").string(), "a\n");
+    files.write(path("summary.json").string(), "{}");
+    EXPECT_EQ(names().size(), 2u);  // the temporaries
+    // Not committed (an error or an interrupt on the way): nothing is left.
+  }
+  EXPECT_TRUE(names().empty());
+  std::ofstream(path("summary.json")) << "old";
+  StagedFiles files;
+  files.write(path("links.csv").string(), "a\n");
+  files.write(path("summary.json").string(), "{}");
+  files.commit();
+  EXPECT_EQ(names(), (std::vector<std::string>{"links.csv", "summary.json"}));
+  EXPECT_EQ(read_text(path("summary.json")), "{}");
+}
+
+TEST_F(Output, StaleTemporariesOfDeadProcessesAreRemoved) {
+  const pid_t dead = ::fork();
+  if (dead == 0) ::_exit(0);
+  ASSERT_GT(dead, 0);
+  int status = 0;
+  ::waitpid(dead, &status, 0);
+  const std::string stale = fmt::format("links.csv.tmp.{}", dead);
+  const std::string mine = fmt::format("summary.json.tmp.{}", ::getpid());
+  std::ofstream(path(stale)) << "x";
+  std::ofstream(path(mine)) << "x";
+  std::ofstream(path("notes.tmp.txt")) << "x";
+  remove_stale_temporaries(folder_.string());
+  EXPECT_EQ(names(), (std::vector<std::string>{"notes.tmp.txt", mine}));
 }
 
 }  // namespace
