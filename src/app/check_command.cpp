@@ -2,6 +2,7 @@
 
 #include <boost/program_options.hpp>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <numbers>
 
@@ -101,6 +102,18 @@ io::Document check_document(const std::string& model_path, const verification::M
   return doc;
 }
 
+// The model's JSON path behind a pointer into the check document: the link's own entry (or its
+// generator's) for "/links/N/...".
+std::string model_path_of(const std::string& pointer, const verification::ModelCheck& check,
+                          const builder::BuiltModel& built) {
+  unsigned index = 0;
+  if (std::sscanf(pointer.c_str(), "/links/%u", &index) == 1 && index < check.contacts.size())
+    if (auto found = built.link_index.find(check.contacts[index].id);
+        found != built.link_index.end())
+      return built.link_origins[static_cast<std::size_t>(found->second)];
+  return "";
+}
+
 }  // namespace
 
 int check_command(const Arguments& arguments) {
@@ -129,7 +142,7 @@ int check_command(const Arguments& arguments) {
   builder::check_first_step(loaded.built, analysis, *system, model_path);
   const io::Document document = check_document(model_path, check);
   if (!document.non_finite().empty())
-    throw InputError(model_path, "",
+    throw InputError(model_path, model_path_of(document.non_finite().front(), check, loaded.built),
                      fmt::format("the model's numbers overflow: its check finds {} not finite (a "
                                  "mass, stiffness or load far beyond physical ones?)",
                                  document.non_finite().front()));

@@ -133,7 +133,7 @@ int modes_command(const Arguments& arguments) {
     throw builder::not_held_error(loaded.built, system->dofs(), failure,
                                   "the condensation of the massless DOFs", model_path);
   } catch (const assembly::ModalAnalysisError& error) {
-    throw InputError(model_path, "", fmt::format("the modes cannot be found: {}", error.what()));
+    throw builder::extreme_mode_error(loaded.built, *system, error.what(), model_path);
   }
   if (vm.count("json")) {
     std::cout << modes_document(model_path, system->size(), modes).dump() << "\n";

@@ -224,6 +224,8 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
   built.joint_monitors = resolve_joint_monitors(resolver);
   built.node_index = resolver.node_index();
   built.link_index = resolver.link_index();
+  const Origin link_origin = origin_of(user_spec.links.size(), "links", spec.generated_from.links);
+  for (std::size_t k = 0; k < model.links.size(); ++k) built.link_origins.push_back(link_origin(k));
   built.sole_rod_pair = sole_rod_pair(user_spec);
   return built;
 }

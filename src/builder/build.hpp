@@ -23,6 +23,7 @@ struct BuiltModel {
   // The JSON path of each node: its own entry, or the generator that made it.
   std::vector<std::string> node_origins;
   std::map<std::string, Index> link_index;
+  std::vector<std::string> link_origins;  // the JSON path of each link, as node_origins
   AnalysisSpec analysis;
   std::vector<ResolvedRecorder> recorders;
   std::vector<DriftMonitor> drift_monitors;

@@ -44,6 +44,31 @@ InputError not_held_error(const BuiltModel& built, const model::DofMap& dofs,
                                 what, failure.pivot()));
 }
 
+InputError extreme_mode_error(const BuiltModel& built, const assembly::StructuralSystem& system,
+                              const std::string& reason, const std::string& source) {
+  const Vector mass = system.mass_matrix().diagonal(), stiffness = system.stiffness().diagonal();
+  Index worst = -1;
+  double worst_ratio = 0.0;
+  for (Index i = 0; i < mass.size(); ++i) {
+    const double ratio = std::abs(stiffness[i]) / mass[i];
+    if (mass[i] > 0.0 && (worst < 0 || !(ratio <= worst_ratio))) {
+      worst = i;
+      worst_ratio = ratio;
+    }
+  }
+  const NodeDirection place =
+      worst < 0 ? NodeDirection{} : node_of(built.model, system.dofs(), worst);
+  if (place.node < 0)
+    return InputError(source, "", fmt::format("the modes cannot be found: {}", reason));
+  const auto node = static_cast<std::size_t>(place.node);
+  return InputError(
+      source, node < built.node_origins.size() ? built.node_origins[node] : "",
+      fmt::format("the modes cannot be found: {}; the largest stiffness-to-mass ratio is at node "
+                  "'{}', direction {} ({:.3g} / {:.3g})",
+                  reason, built.model.nodes[node].id, model::direction_name(place.direction),
+                  stiffness[worst], mass[worst]));
+}
+
 void check_first_step(const BuiltModel& built, const AnalysisSpec& analysis,
                       assembly::StructuralSystem& system, const std::string& source) {
   const std::unique_ptr<integrators::Integrator> integrator = make_integrator(analysis);

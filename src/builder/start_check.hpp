@@ -23,4 +23,9 @@ InputError not_held_error(const BuiltModel& built, const model::DofMap& dofs,
                           const assembly::NotPositiveDefinite& failure, const std::string& during,
                           const std::string& source);
 
+// The error for a modal analysis that failed (`reason`): at the DOF with the largest ratio of
+// stiffness to mass, which is where extreme values make the eigenproblem unsolvable.
+InputError extreme_mode_error(const BuiltModel& built, const assembly::StructuralSystem& system,
+                              const std::string& reason, const std::string& source);
+
 }  // namespace pound::builder
