@@ -11,25 +11,30 @@
 #include "io/system_memory.hpp"
 
 namespace pound::app {
-namespace {
 
 constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
 
-// A model too large for this machine is refused before its generators allocate it. Measured:
-// 0.85 KiB per DOF for a 10^6-DOF rod pair (everything `run` holds, 200 steps); 2 KiB allows for
-// the wider bands of frames.
-void check_model_fits(const builder::ModelSpec& spec, const std::string& path) {
+// Measured: 0.85 KiB per DOF for a 10^6-DOF rod pair (everything `run` holds, 200 steps); 2 KiB
+// allows for the wider bands of frames.
+std::optional<std::string> memory_shortfall(double dofs) {
   constexpr double bytes_per_dof = 2048.0;
-  const builder::ModelSize size = builder::model_size(spec);
-  const double needed = bytes_per_dof * static_cast<double>(size.dofs);
+  const double needed = bytes_per_dof * dofs;
   const std::optional<std::size_t> available = io::available_memory_bytes();
-  if (available && needed > static_cast<double>(*available))
+  if (!available || needed <= static_cast<double>(*available)) return std::nullopt;
+  return fmt::format("need about {:.1f} GiB, more than the {:.1f} GiB of memory available",
+                     needed / kGiB, static_cast<double>(*available) / kGiB);
+}
+
+namespace {
+
+// A model too large for this machine is refused before its generators allocate it.
+void check_model_fits(const builder::ModelSpec& spec, const std::string& path) {
+  const builder::ModelSize size = builder::model_size(spec);
+  if (const std::optional<std::string> shortfall = memory_shortfall(static_cast<double>(size.dofs)))
     throw InputError(path, size.largest_path,
                      fmt::format("the model would have up to {} DOFs ({} nodes, {} of them from "
-                                 "here) and need about {:.1f} GiB, more than the {:.1f} GiB of "
-                                 "memory available",
-                                 size.dofs, size.nodes, size.largest_nodes, needed / kGiB,
-                                 static_cast<double>(*available) / kGiB));
+                                 "here) and {}",
+                                 size.dofs, size.nodes, size.largest_nodes, *shortfall));
 }
 
 // Reads the records of `loaded.spec` and builds it. `first_as_given`: the first record's path is

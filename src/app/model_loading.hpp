@@ -20,6 +20,10 @@ struct LoadedModel {
 
 // `motion_override`: a record path replacing the first excitation's record (or adding a uniform
 // x excitation in g when the model has none), as `pound run --motion` does.
+// When a model of `dofs` DOFs would not fit in the memory available: "need about X GiB, more
+// than the Y GiB ..." (run, check and the verify benchmarks refuse it before allocating).
+std::optional<std::string> memory_shortfall(double dofs);
+
 LoadedModel load_model(const std::string& path,
                        const std::optional<std::string>& motion_override = {});
 

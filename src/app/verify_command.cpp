@@ -8,6 +8,7 @@
 
 #include "app/command_line.hpp"
 #include "app/commands.hpp"
+#include "app/model_loading.hpp"
 #include "core/errors.hpp"
 #include "integrators/integrator_catalog.hpp"
 #include "io/model_reader.hpp"
@@ -144,6 +145,11 @@ int verify_rod_impact_2d(int elements_across, const std::string& csv) {
   if (elements_across < 1) return usage_error("--n-across must be >= 1");
   verification::RodImpact2dOptions run = verification::suzuki_toi_rods_2d();
   run.elements_across = elements_across;
+  // Two DOFs a node; each strip has (along + 1) x (across + 1) nodes.
+  const double along = run.pair.left.elements + run.pair.right.elements + 2.0;
+  if (const auto shortfall = memory_shortfall(2.0 * along * (elements_across + 1.0)))
+    return usage_error(
+        fmt::format("--n-across {}: the strips would {}", elements_across, *shortfall));
   const verification::RodImpact2dResult r = verification::run_rod_impact_2d(run);
   if (!csv.empty()) io::write_csv_atomic(csv, verification::rod_impact_2d_table(r));
   std::cout << fmt::format(
@@ -218,6 +224,8 @@ int verify_block_belt(const VerifyOptions& options) {
 // What is wrong with the numbers of a rod-impact run, if anything.
 std::optional<std::string> rod_impact_option_error(const VerifyOptions& options) {
   if (options.elements < 1) return "--n must be >= 1";
+  if (const auto shortfall = memory_shortfall(2.0 * (options.elements + 1.0)))
+    return fmt::format("--n {}: the rods would {}", options.elements, *shortfall);
   if (!(options.stiffness_ratio > 0.0)) return "--k-ratio must be > 0";
   if (!(options.dt_ratio > 0.0)) return "--dt-ratio must be > 0";
   if (options.courant_given && !(options.courant > 0.0)) return "--courant must be > 0";

@@ -174,11 +174,18 @@ HighestMode highest_mode(SecondOrderSystem& system, const Vector& inverse_mass,
   const LinkMassSolver mass_solver(inverse_mass, links.connectivity(), tangents.mass);
   double lambda = 0.0;
   for (int iteration = 0; iteration < 500; ++iteration) {
-    x.normalize();
+    // x /= ||x||, scaled first when ||x||^2 would overflow (omega^2 above ~1e154): plain
+    // normalize() would make x zero there and the iteration "settle" at 0.
+    if (const double norm = x.norm(); !std::isfinite(norm))
+      x.stableNormalize();
+    else if (norm > 0.0)
+      x /= norm;
     system.multiply_stiffness(x, kx);
     links.project(x, projected);
     kx.noalias() += links.connectivity().transpose() * tangents.stiffness.cwiseProduct(projected);
     mass_solver.solve(kx, y);
+    // An overflow would normalise to a zero vector and "settle" at 0: report it as infinite.
+    if (!y.allFinite()) return {std::numeric_limits<double>::infinity(), std::move(x)};
     const double next = x.dot(y);
     const bool settled = iteration > 20 && std::abs(next - lambda) <= 1e-10 * std::abs(next);
     lambda = next;

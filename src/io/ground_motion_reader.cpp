@@ -675,6 +675,13 @@ model::GroundMotion parse_ground_motion(const std::string& text, const std::stri
                             ? read_at2(path, lines, format, motion.time_step)
                             : read_columns(path, lines, format, motion.time_step);
   model::scale(motion, to_model_units(format.units, g_in_model_units));
+  // A value that overflows in model units (1.7e308 g) would make every result infinite.
+  for (std::size_t k = 0; k < motion.acceleration.size(); ++k)
+    if (!std::isfinite(motion.acceleration[k]))
+      throw InputError(path, "",
+                       fmt::format("sample {} overflows the number range in model units (a "
+                                   "value far beyond any ground acceleration)",
+                                   k + 1));
   return motion;
 }
 

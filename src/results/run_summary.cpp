@@ -71,6 +71,15 @@ std::vector<std::string> result_warnings(const RunSummary& run) {
       warnings.push_back(
           fmt::format("joint {}: the girder moved {:.4g} on a seat {:.4g} wide: unseated",
                       joint.monitor.id, joint.peak.peak_seat_movement, joint.monitor.seat_width));
+  // Pounding drifts are a few percent; 10 % is far past what a model of small displacements (and
+  // elastic storeys) describes, so such a number is not a result (a stiffness far too small?).
+  for (const DriftResult& drift : run.drifts)
+    if (drift.ratio() > 0.10)
+      warnings.push_back(fmt::format(
+          "{} {}: drift ratio {:.1f} %, far beyond what this small-displacement model describes: "
+          "the result is meaningless there (a stiffness far too small?)",
+          drift.monitor.kind == builder::DriftKind::pier ? "pier" : "storey", drift.monitor.id,
+          100.0 * drift.ratio()));
   if (run.worst_balance_error > 0.01)
     warnings.push_back(
         fmt::format("energy balance error reached {:.2f} % of the largest energy "

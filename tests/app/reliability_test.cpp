@@ -166,5 +166,47 @@ TEST_F(Reliability, RepeatedInitialVelocitiesAndMonitorIdsAreRefused) {
                  {"/monitors/joints/1", "duplicate joint monitor id 'joint'"});
 }
 
+// The verify benchmarks skipped the memory check that run applies: 10^8 elements per rod (2e8
+// DOFs, ~400 GB) and 10^6 elements across the 2-D strips are refused before allocating.
+TEST_F(Reliability, VerifyRefusesMeshesBeyondTheMemory) {
+  const Outcome rods = pound({"verify", "rod-impact", "--n", "100000000"});
+  EXPECT_EQ(rods.exit_code, 1) << rods.err;
+  EXPECT_TRUE(contains(rods.err, "--n 100000000: the rods would need about")) << rods.err;
+  const Outcome strips = pound({"verify", "rod-impact-2d", "--n-across", "1000000"});
+  EXPECT_EQ(strips.exit_code, 1) << strips.err;
+  EXPECT_TRUE(contains(strips.err, "--n-across 1000000: the strips would need about"))
+      << strips.err;
+}
+
+// A storey stiffness of 1e-300 aborted; it now runs, and its 100 % drift is called meaningless.
+TEST_F(Reliability, AVanishingStoreyStiffnessWarnsThatItsDriftIsMeaningless) {
+  json model = bundled("adjacent_buildings");
+  model["generators"][0]["left"]["storeys"][2]["stiffness"] = 1e-300;
+  const Outcome outcome =
+      pound({"run", write("soft.json", model), "--out", path("out").string(), "--quiet"});
+  EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_TRUE(contains(outcome.err, "storey pair.left.s3: drift ratio")) << outcome.err;
+  EXPECT_TRUE(contains(outcome.err, "the result is meaningless there")) << outcome.err;
+}
+
+// Central difference's "auto" step with a density of 1e-300 reached the integrator as infinite
+// (the power iteration's vector overflowed to zero): it is now the tiny limit it is, refused as
+// too many steps.
+TEST_F(Reliability, AnExplicitStepFromAnOverflowingFrequencyIsRefused) {
+  json model = bundled("rod_impact");
+  model["analysis"]["integrator"] = "central_difference";
+  model["analysis"]["time_step"] = "auto";
+  model["generators"][0]["left"]["density"] = 1e-300;
+  expect_refused("run", write("light.json", model), {"/analysis/time_step", "steps, more than"});
+}
+
+// A record value of 1.7e308 g overflowed every spectral value to inf under exit 0.
+TEST_F(Reliability, ARecordValueThatOverflowsIsRefused) {
+  std::ofstream(path("big.txt")) << "0.01\n0.5\n1.7e308\n0.2\n";
+  const Outcome outcome = pound({"spectrum", path("big.txt").string(), "--dt", "0.01"});
+  EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+  EXPECT_TRUE(contains(outcome.err, "big.txt: sample 3 overflows the number range")) << outcome.err;
+}
+
 }  // namespace
 }  // namespace pound::testing
