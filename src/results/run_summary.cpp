@@ -63,6 +63,13 @@ std::vector<JointMonitors::Where> joint_places(const builder::BuiltModel& built,
   return places;
 }
 
+// Stops the run when `fraction` of the largest energy term passes kEnergyGrowthLimit; `message`
+// takes the percentage and the limit.
+void stop_above_limit(double time, double fraction, fmt::format_string<double, double> message) {
+  if (fraction > kEnergyGrowthLimit)
+    throw SolveError(time, fmt::format(message, 100.0 * fraction, 100.0 * kEnergyGrowthLimit));
+}
+
 // Warnings for results an engineer should not trust as they are.
 std::vector<std::string> result_warnings(const RunSummary& run) {
   std::vector<std::string> warnings;
@@ -111,22 +118,16 @@ void RunObservers::record(const integrators::State& state) {
   for (Observer* observer : extra_) observer->record(state);
   // Energy the integration made up: an unstable step or an unresolved stiff contact. The
   // histories up to here are kept; the run stops rather than go on to a NaN.
-  const double created = energy_.terms().created_fraction();
-  if (created > kEnergyGrowthLimit)
-    throw SolveError(state.time,
-                     fmt::format("the structure holds {:.1f} % more energy than was put in (of the "
-                                 "largest energy term; limit {:.0f} %): the integration is "
-                                 "creating energy, so the time step is too large for the "
-                                 "integrator or for a stiff link",
-                                 100.0 * created, 100.0 * kEnergyGrowthLimit));
-  const double from_links = passive_links_ ? energy_.terms().link_created_fraction() : 0.0;
-  if (from_links > kEnergyGrowthLimit)
-    throw SolveError(state.time,
-                     fmt::format("the links have given the structure {:.1f} % of the largest "
-                                 "energy term (limit {:.0f} %), which passive links cannot do: a "
-                                 "link is creating energy, so the time step is too large for its "
-                                 "stiffness (or its stiffness is meaninglessly large)",
-                                 100.0 * from_links, 100.0 * kEnergyGrowthLimit));
+  stop_above_limit(state.time, energy_.terms().created_fraction(),
+                   "the structure holds {:.1f} % more energy than was put in (of the largest "
+                   "energy term; limit {:.0f} %): the integration is creating energy, so the time "
+                   "step is too large for the integrator or for a stiff link");
+  if (passive_links_)
+    stop_above_limit(state.time, energy_.terms().link_created_fraction(),
+                     "the links have given the structure {:.1f} % of the largest energy term "
+                     "(limit {:.0f} %), which passive links cannot do: a link is creating energy, "
+                     "so the time step is too large for its stiffness (or its stiffness is "
+                     "meaninglessly large)");
 }
 
 void check_histories_fit(const std::vector<std::unique_ptr<Recorder>>& recorders,
