@@ -24,9 +24,12 @@ std::vector<double> resolve_excitations(const Resolver& resolver,
                                    motion.name));
     double factor = e.scale_factor.value_or(1.0);
     if (e.target_pga) factor = model::scale_to_peak(motion, *e.target_pga * gravity);
-    if (e.target_sa)
-      factor = model::scale_to_spectral_acceleration(motion, *e.target_sa * gravity, e.sa_period,
-                                                     e.sa_damping);
+    if (e.target_sa) try {
+        factor = model::scale_to_spectral_acceleration(motion, *e.target_sa * gravity, e.sa_period,
+                                                       e.sa_damping);
+      } catch (const std::invalid_argument& error) {
+        throw InputError(spec.source, path, error.what());
+      }
     model::scale(motion, factor * e.extra_factor);
     factors.push_back(factor * e.extra_factor);
     const model::Coordinates direction{e.direction[0],

@@ -185,7 +185,9 @@ SdofResponse sdof_response(const GroundMotion& motion, double period, double dam
 }
 
 double spectral_acceleration(const GroundMotion& motion, double period, double damping_ratio) {
-  if (period == 0.0) {
+  // An oscillator a thousand times faster than the sampling follows the ground rigidly: its Sa is
+  // the PGA (to (T / dt)^2), and integrating it would overflow w^2 for periods near 1e-300.
+  if (period == 0.0 || period < 1e-3 * motion.time_step) {
     require_samples(motion);
     return motion.peak();
   }
@@ -193,7 +195,11 @@ double spectral_acceleration(const GroundMotion& motion, double period, double d
   integrate_sdof(motion, period, damping_ratio,
                  [&](std::size_t, double u, double) { largest = std::max(largest, std::abs(u)); });
   const double omega = 2.0 * std::numbers::pi / period;
-  return omega * omega * largest;
+  const double sa = omega * omega * largest;
+  if (!std::isfinite(sa))
+    throw std::invalid_argument("the spectral acceleration of ground motion '" + motion.name +
+                                "' at that period overflows the number range");
+  return sa;
 }
 
 double scale_to_peak(const GroundMotion& motion, double target_peak) {

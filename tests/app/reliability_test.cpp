@@ -208,5 +208,18 @@ TEST_F(Reliability, ARecordValueThatOverflowsIsRefused) {
   EXPECT_TRUE(contains(outcome.err, "big.txt: sample 3 overflows the number range")) << outcome.err;
 }
 
+// An Sa target at a period of 1e-300 s aborted (w^2 overflowed): an oscillator that much faster
+// than the sampling is rigid, so its Sa is the PGA and the record scales as to that PGA.
+TEST_F(Reliability, AnSaTargetAtAVanishingPeriodScalesAsThePga) {
+  json model = bundled("two_sdof_girders");
+  model["excitations"][0]["scale"] = json::parse(R"({"sa": 0.5, "period": 1e-300})");
+  const Outcome sa = pound({"run", write("sa.json", model), "--out", path("sa").string(), "-q"});
+  model["excitations"][0]["scale"] = json::parse(R"({"pga": 0.5})");
+  const Outcome pga = pound({"run", write("pga.json", model), "--out", path("pga").string(), "-q"});
+  ASSERT_EQ(sa.exit_code, 0) << sa.err;
+  ASSERT_EQ(pga.exit_code, 0) << pga.err;
+  EXPECT_EQ(read_text(path("sa/joint.csv")), read_text(path("pga/joint.csv")));
+}
+
 }  // namespace
 }  // namespace pound::testing
