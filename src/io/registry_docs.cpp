@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <regex>
 #include <set>
 #include <string>
 
@@ -135,11 +134,27 @@ std::string integrator_table() {
   return markdown_table({"type", "kind", "parameters", "presets", "method"}, rows);
 }
 
+// The words a text quotes ("[a-z0-9_/.]+"), left to right as a regex search would find them
+// (std::regex is avoided: GCC 12 warns inside it under the sanitizers, and -Werror stops).
+void insert_quoted_words(const std::string& text, std::set<std::string>& words) {
+  const auto allowed = [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '/' || c == '.';
+  };
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '"') continue;
+    std::size_t j = i + 1;
+    while (j < text.size() && allowed(text[j])) ++j;
+    if (j > i + 1 && j < text.size() && text[j] == '"') {
+      words.insert(text.substr(i + 1, j - i - 1));
+      i = j;
+    }
+  }
+}
+
 // Every key and name of the format: the schema's keys and the choices its tables quote, and the
 // registries' names, parameters and choices.
 std::set<std::string> vocabulary() {
   std::set<std::string> words;
-  const std::regex quoted("\"([a-z0-9_/.]+)\"");
   for (const FieldDoc& row : model_field_docs()) {
     // A nested object's rows are "scale.pga": its key and its field's.
     for (std::size_t start = 0; start <= row.key.size();) {
@@ -147,8 +162,7 @@ std::set<std::string> vocabulary() {
       words.insert(row.key.substr(start, dot - start));
       start = dot + 1;
     }
-    for (std::sregex_iterator it(row.type.begin(), row.type.end(), quoted), end; it != end; ++it)
-      words.insert((*it)[1]);
+    insert_quoted_words(row.type, words);
   }
   for (const links::LawEntry* law : links::law_registry()) {
     words.insert(law->name);
