@@ -187,7 +187,9 @@ SdofResponse sdof_response(const GroundMotion& motion, double period, double dam
 double spectral_acceleration(const GroundMotion& motion, double period, double damping_ratio) {
   // An oscillator a thousand times faster than the sampling follows the ground rigidly: its Sa is
   // the PGA (to (T / dt)^2), and integrating it would overflow w^2 for periods near 1e-300.
-  if (period == 0.0 || period < 1e-3 * motion.time_step) {
+  const bool rigid = period > 0.0 && period < 1e-3 * motion.time_step && damping_ratio >= 0.0 &&
+                     damping_ratio < 1.0;
+  if (period == 0.0 || rigid) {
     require_samples(motion);
     return motion.peak();
   }
