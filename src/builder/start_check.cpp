@@ -21,6 +21,17 @@ NodeDirection node_of(const model::Model& model, const model::DofMap& dofs, Inde
   return {};
 }
 
+// "node 'id', direction x" and the node's JSON path (its entry, or the generator that made it).
+std::string node_words(const BuiltModel& built, const NodeDirection& place) {
+  return fmt::format("node '{}', direction {}",
+                     built.model.nodes[static_cast<std::size_t>(place.node)].id,
+                     model::direction_name(place.direction));
+}
+std::string node_path(const BuiltModel& built, const NodeDirection& place) {
+  const auto node = static_cast<std::size_t>(place.node);
+  return node < built.node_origins.size() ? built.node_origins[node] : "";
+}
+
 }  // namespace
 
 InputError not_held_error(const BuiltModel& built, const model::DofMap& dofs,
@@ -28,7 +39,6 @@ InputError not_held_error(const BuiltModel& built, const model::DofMap& dofs,
                           const std::string& source) {
   const NodeDirection place = node_of(built.model, dofs, failure.equation());
   if (place.node < 0) return InputError(source, "", fmt::format("{}: {}", during, failure.what()));
-  const auto node = static_cast<std::size_t>(place.node);
   const std::string what =
       !std::isfinite(failure.pivot())
           ? "the matrix overflows the number range there (a mass, stiffness or damping far "
@@ -38,10 +48,9 @@ InputError not_held_error(const BuiltModel& built, const model::DofMap& dofs,
           : "nothing holds it: it belongs to a part that can move with neither mass nor stiffness "
             "against it (a mechanism without mass; add mass to that part, e.g. a girder's "
             "extra_mass, or an element, bearing or support that restrains it)";
-  return InputError(source, node < built.node_origins.size() ? built.node_origins[node] : "",
-                    fmt::format("{} fails at node '{}', direction {}: {} (pivot {:.3e})", during,
-                                built.model.nodes[node].id, model::direction_name(place.direction),
-                                what, failure.pivot()));
+  return InputError(source, node_path(built, place),
+                    fmt::format("{} fails at {}: {} (pivot {:.3e})", during,
+                                node_words(built, place), what, failure.pivot()));
 }
 
 InputError extreme_mode_error(const BuiltModel& built, const assembly::StructuralSystem& system,
@@ -50,8 +59,9 @@ InputError extreme_mode_error(const BuiltModel& built, const assembly::Structura
   Index worst = -1;
   double worst_ratio = 0.0;
   for (Index i = 0; i < mass.size(); ++i) {
+    if (!(mass[i] > 0.0)) continue;
     const double ratio = std::abs(stiffness[i]) / mass[i];
-    if (mass[i] > 0.0 && (worst < 0 || !(ratio <= worst_ratio))) {
+    if (worst < 0 || !(ratio <= worst_ratio)) {  // a NaN ratio is the worst of all
       worst = i;
       worst_ratio = ratio;
     }
@@ -60,13 +70,10 @@ InputError extreme_mode_error(const BuiltModel& built, const assembly::Structura
       worst < 0 ? NodeDirection{} : node_of(built.model, system.dofs(), worst);
   if (place.node < 0)
     return InputError(source, "", fmt::format("the modes cannot be found: {}", reason));
-  const auto node = static_cast<std::size_t>(place.node);
-  return InputError(
-      source, node < built.node_origins.size() ? built.node_origins[node] : "",
-      fmt::format("the modes cannot be found: {}; the largest stiffness-to-mass ratio is at node "
-                  "'{}', direction {} ({:.3g} / {:.3g})",
-                  reason, built.model.nodes[node].id, model::direction_name(place.direction),
-                  stiffness[worst], mass[worst]));
+  return InputError(source, node_path(built, place),
+                    fmt::format("the modes cannot be found: {}; the largest stiffness-to-mass "
+                                "ratio is at {} ({:.3g} / {:.3g})",
+                                reason, node_words(built, place), stiffness[worst], mass[worst]));
 }
 
 void check_first_step(const BuiltModel& built, const AnalysisSpec& analysis,

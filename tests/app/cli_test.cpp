@@ -78,9 +78,7 @@ class Cli : public pound::testing::PoundProcess {
   }
 };
 
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
+using pound::testing::contains;
 
 TEST_F(Cli, HelpListsTheCommands) {
   const Outcome outcome = pound({"--help"});

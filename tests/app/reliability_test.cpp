@@ -15,10 +15,6 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
-
 class Reliability : public PoundProcess {
  protected:
   // A bundled model with its records named by absolute path, so it runs from the test folder.

@@ -29,6 +29,10 @@ inline std::string shell_quoted(const std::string& text) {
   return quoted + "'";
 }
 
+inline bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
 struct Outcome {
   int exit_code = -1;
   std::string out;
