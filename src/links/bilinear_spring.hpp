@@ -34,6 +34,7 @@ class BilinearSpring final : public LinkLaw {
   void revert() override;
   // A spring is always attached; "in contact" means it carries a force.
   bool in_contact() const override { return committed_force_ != 0.0; }
+  std::optional<double> yield_deformation() const override { return yield_force_ / stiffness_; }
 
   double plastic_deformation() const { return committed_plastic_; }
   double back_force() const { return back_force_at(committed_plastic_); }

@@ -8,6 +8,7 @@
 // along the unit axis n from node i to node j (contact while delta > 0), and the force F is
 // positive in compression (it pushes node i back along -n and node j along +n).
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace pound::links {
@@ -43,6 +44,10 @@ class LinkLaw {
 
   // True while the committed state is in contact (for impact counting and recorders).
   virtual bool in_contact() const = 0;
+
+  // The deformation at first yield of a law that yields (a hysteretic spring or hinge), the
+  // reference of its ductility demand peak |delta| / delta_y; none for a law that does not yield.
+  virtual std::optional<double> yield_deformation() const { return std::nullopt; }
 };
 
 }  // namespace pound::links
