@@ -14,6 +14,7 @@ int batch_command(const Arguments& arguments);
 int verify_command(const Arguments& arguments);
 int spectrum_command(const Arguments& arguments);
 int modes_command(const Arguments& arguments);
+int pushover_command(const Arguments& arguments);
 int check_command(const Arguments& arguments);
 int study_command(const Arguments& arguments);
 int expand_command(const Arguments& arguments);

@@ -26,6 +26,7 @@ commands:
   check MODEL.json             before a run: periods, stable steps, link stiffness and contact
                                resolution, and a warning for every meaningless setting
   modes MODEL.json [--count N]  natural periods and modal masses of a model
+  pushover MODEL.json --node ID --to D  static pushover: capacity curve under constant gravity
   expand MODEL.json [--out FILE]  the model with its generators replaced by what they generate
   spectrum RECORD [options]    a ground motion's PGA and response spectrum (.AT2 or columns)
   docs [FOLDER] [--check]      rewrite the field tables of docs/model_format.md from the schema
@@ -49,9 +50,10 @@ int main_entry(int argc, char** argv) {
   try {
     using Command = int (*)(const Arguments&);
     const std::map<std::string, Command> commands = {
-        {"run", run_command},       {"batch", batch_command},       {"verify", verify_command},
-        {"modes", modes_command},   {"check", check_command},       {"study", study_command},
-        {"expand", expand_command}, {"spectrum", spectrum_command}, {"docs", docs_command}};
+        {"run", run_command},          {"batch", batch_command},       {"verify", verify_command},
+        {"modes", modes_command},      {"check", check_command},       {"study", study_command},
+        {"expand", expand_command},    {"spectrum", spectrum_command}, {"docs", docs_command},
+        {"pushover", pushover_command}};
     if (auto found = commands.find(command); found != commands.end()) return found->second(rest);
     if (command == "help" || command == "--help" || command == "-h") {
       if (!rest.empty())

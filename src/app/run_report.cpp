@@ -7,7 +7,18 @@
 namespace pound::app {
 namespace {
 
-// Contacts and restrainers one line each; structural springs (bearings) in one line.
+// A spring or hinge that yielded: its peak and residual deformation, and what it dissipated.
+std::string yielded_line(const results::LinkResult& link) {
+  const char* what = link.rotational ? "rotation" : "deformation";
+  return fmt::format(
+      "  {} {} yielded: peak {} {:.4g} ({:.2f} x yield), residual {:.4g}, hysteretic energy "
+      "{:.6g}\n",
+      link.law, link.id, what, link.peak_deformation(), *link.ductility(),
+      link.summary.final_deformation, link.hysteretic_energy().value_or(0.0));
+}
+
+// Contacts and restrainers one line each; yielded springs and hinges one line each; the other
+// structural springs (bearings) in one line.
 std::string link_lines(const results::RunSummary& run) {
   std::string text;
   int springs = 0;
@@ -18,6 +29,7 @@ std::string link_lines(const results::RunSummary& run) {
       case links::LinkRole::spring:
         ++springs;
         spring_force = std::max({spring_force, s.peak_force, s.peak_tension});
+        if (link.yield_deformation && *link.ductility() > 1.0) text += yielded_line(link);
         break;
       case links::LinkRole::tension:
         text += fmt::format("  {} {}: taut {} time(s), peak tension {:.6g}, peak opening {:.4g}\n",
@@ -50,10 +62,14 @@ std::string monitor_lines(const results::RunSummary& run) {
   for (const results::DriftResult& drift : run.drifts) {
     const builder::DriftMonitor& m = drift.monitor;
     const std::optional<double> ductility = drift.ductility();
-    text += fmt::format("  {} {}: peak drift {:.4g} ({:.3f} % of {:.4g}){}\n",
+    const std::optional<double> demand = drift.elastic_demand_ratio();
+    text += fmt::format("  {} {}: peak drift {:.4g} ({:.3f} % of {:.4g}), residual {:.4g}{}\n",
                         m.kind == builder::DriftKind::pier ? "pier" : "storey", m.id,
                         drift.peak.peak_drift, 100.0 * drift.peak.peak_drift / m.height, m.height,
-                        ductility ? fmt::format(", ductility {:.2f}", *ductility) : std::string());
+                        drift.peak.residual_drift,
+                        ductility ? fmt::format(", ductility {:.2f}", *ductility)
+                        : demand  ? fmt::format(", elastic, {:.2f} x its yield drift", *demand)
+                                  : std::string());
   }
   return text;
 }

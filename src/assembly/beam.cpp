@@ -88,4 +88,27 @@ Vector Beam::end_forces(const Vector& u) const {
   return local;
 }
 
+// Local geometric stiffness on (v'_i, theta_i, v'_j, theta_j) (Przemieniecki 1968, chapter 15),
+// global as K = T^T K'_G T.
+Matrix Beam::geometric_stiffness(const Vector& u, model::GeometricStiffness kind) const {
+  const double axial = end_forces(u)[3], l = axis_.length;  // N_j: tension positive
+  Matrix6 k = Matrix6::Zero();
+  constexpr int kTransverse[] = {1, 2, 4, 5};
+  if (kind == model::GeometricStiffness::chord) {
+    k(1, 1) = k(4, 4) = axial / l;
+    k(1, 4) = k(4, 1) = -axial / l;
+  } else {
+    const double c = axial / (30.0 * l);
+    const double shape[4][4] = {{36, 3 * l, -36, 3 * l},
+                                {3 * l, 4 * l * l, -3 * l, -l * l},
+                                {-36, -3 * l, 36, -3 * l},
+                                {3 * l, -l * l, -3 * l, 4 * l * l}};
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) k(kTransverse[a], kTransverse[b]) = c * shape[a][b];
+  }
+  const Matrix6 t = rotation();
+  const Matrix6 global = t.transpose() * k * t;
+  return global;
+}
+
 }  // namespace pound::assembly

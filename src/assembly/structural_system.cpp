@@ -305,6 +305,30 @@ Vector attached_link_coefficients(const std::vector<LinkRowGeometry>& rows, Inde
   return direct;
 }
 
+// k_0 of every link row: its normal law's stiffness at rest (tangential rows: 0).
+Vector initial_link_tangent(const integrators::LinkSet& links) {
+  Vector tangent = Vector::Zero(links.size());
+  for (Index k = 0; k < links.count(); ++k) {
+    const Index row = links.row(k);
+    tangent[row] = links.law(k).clone()->set_trial({-links.gaps()[row], 0.0, 0.0}).stiffness;
+  }
+  return tangent;
+}
+
+// K + B^T k_0 B: the structure held by its links at rest; DOFs nothing holds even then (a
+// backwall behind open backfill) are regularised with 1e-12 of the largest diagonal.
+Eigen::SparseMatrix<double> held_by_links(const Eigen::SparseMatrix<double>& stiffness,
+                                          const integrators::LinkSet& links,
+                                          const Vector& initial_tangent) {
+  const Matrix b(links.connectivity());
+  Eigen::SparseMatrix<double> held = stiffness;
+  held += (b.transpose() * initial_tangent.asDiagonal() * b).sparseView();
+  const double largest = held.size() > 0 ? held.diagonal().cwiseAbs().maxCoeff() : 0.0;
+  for (Index i = 0; i < held.rows(); ++i)
+    if (!(std::abs(held.coeff(i, i)) > 0.0)) held.coeffRef(i, i) = 1e-12 * largest;
+  return held;
+}
+
 // Any influence matrix R gives exact equations if the static term -(K_ff R + K_fs) u_s(t) is
 // loaded too; R is chosen as the quasi-static influence of the supports on the structure with
 // its links at their initial tangent (bearings hold the girders), so that u_dyn stays small.
@@ -331,18 +355,8 @@ class SupportInfluence {
 
 SupportInfluence::SupportInfluence(const Eigen::SparseMatrix<double>& stiffness,
                                    const integrators::LinkSet& links)
-    : b_(Matrix(links.connectivity())), initial_tangent_(Vector::Zero(links.size())) {
-  for (Index k = 0; k < links.count(); ++k) {
-    const Index row = links.row(k);
-    initial_tangent_[row] =
-        links.law(k).clone()->set_trial({-links.gaps()[row], 0.0, 0.0}).stiffness;
-  }
-  Eigen::SparseMatrix<double> held = stiffness;
-  held += (b_.transpose() * initial_tangent_.asDiagonal() * b_).sparseView();
-  const double largest = held.diagonal().cwiseAbs().maxCoeff();
-  for (Index i = 0; i < held.rows(); ++i)
-    if (!(std::abs(held.coeff(i, i)) > 0.0)) held.coeffRef(i, i) = 1e-12 * largest;
-  held_factor_.compute(held);
+    : b_(Matrix(links.connectivity())), initial_tangent_(initial_link_tangent(links)) {
+  held_factor_.compute(held_by_links(stiffness, links, initial_tangent_));
   if (held_factor_.info() != Eigen::Success)
     throw InputError("", "/excitations",
                      "multi-support excitation: the structure's stiffness "
@@ -373,6 +387,11 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
   }
 
   loads_ = nodal_loads(model, dofs_);
+  if (model.gravity) {
+    Vector weight(n);
+    multiply_mass(uniform_influence(model, dofs_, model.gravity->direction), weight);
+    loads_ += model.gravity->acceleration * weight;
+  }
   has_loads_ = loads_.any();
   for (const model::UniformExcitation& excitation : model.excitations) {
     Vector inertia(n);
@@ -386,6 +405,8 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
   links_ = integrators::LinkSet(n, std::move(links));
   const std::vector<LinkRowGeometry> rows = link_row_geometry(model);
   surface_rate_ = surface_rates(rows);
+  if (model.gravity && model.gravity->p_delta)
+    add_geometric_stiffness(model, *model.gravity->p_delta);
 
   if (model.support_excitations.empty()) return;
   const SupportInfluence supports(stiffness_, links_);
@@ -420,6 +441,43 @@ void StructuralSystem::store_stiffness_for_products() {
   } else {
     stiffness_rows_ = stiffness_;
   }
+}
+
+// The axial forces of the linear gravity analysis (K + B^T k_0 B) u = f, then K += K_G(u). A
+// structure that K + K_G no longer holds has passed its elastic buckling load under gravity.
+void StructuralSystem::add_geometric_stiffness(const model::Model& model,
+                                               model::GeometricStiffness kind) {
+  const Vector initial_tangent = initial_link_tangent(links_);
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> gravity_state(
+      held_by_links(stiffness_, links_, initial_tangent));
+  const Vector u = gravity_state.solve(loads_);
+  std::vector<Eigen::Triplet<double>> entries;
+  for (const auto& element : model.elements) {
+    std::vector<Index> rows;
+    Vector element_u = Vector::Zero(static_cast<Index>(element->dofs().size()));
+    for (const model::ElementDof& dof : element->dofs()) {
+      rows.push_back(dofs_.equation(dof.node, dof.direction));
+      if (rows.back() >= 0) element_u[static_cast<Index>(rows.size() - 1)] = u[rows.back()];
+    }
+    const Matrix k = element->geometric_stiffness(element_u, kind);
+    for (std::size_t a = 0; a < rows.size() && k.size() > 0; ++a)
+      for (std::size_t b = 0; b < rows.size(); ++b)
+        if (rows[a] >= 0 && rows[b] >= 0)
+          entries.emplace_back(rows[a], rows[b], k(static_cast<Index>(a), static_cast<Index>(b)));
+  }
+  Eigen::SparseMatrix<double> geometric(size(), size());
+  geometric.setFromTriplets(entries.begin(), entries.end());
+  elastic_stiffness_ = stiffness_;
+  stiffness_ += geometric;
+  stiffness_.prune(0.0);
+  store_stiffness_for_products();
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> second_order(
+      held_by_links(stiffness_, links_, initial_tangent));
+  if (second_order.info() != Eigen::Success || !(second_order.vectorD().array() > 0.0).all())
+    throw InputError("", "/gravity/p_delta",
+                     "the structure is not stable under its own weight with P-Delta: the gravity "
+                     "loads exceed its elastic buckling load (with the links at their initial "
+                     "stiffness); check the masses, the sections and the supports");
 }
 
 bool StructuralSystem::has_link_motion() const {
@@ -505,6 +563,11 @@ void StructuralSystem::multiply_damping(const Vector& x, Vector& y) const {
   }
   // C = a0 M + a1 K
   const double a0 = damping_.mass_coefficient, a1 = damping_.stiffness_coefficient;
+  if (elastic_stiffness_.size() > 0) {  // P-Delta: a1 times the first-order K
+    multiply_mass(x, y);
+    y = a0 * y + a1 * (elastic_stiffness_ * x);
+    return;
+  }
   if (mass_matrix_.size() == 0) {
     multiply_stiffness(x, y);
     y = a0 * mass_.cwiseProduct(x) + a1 * y;
@@ -594,6 +657,9 @@ std::unique_ptr<integrators::LinearSolver> StructuralSystem::factor(double c_m, 
     const double mass_factor = c_m + c_c * damping_.mass_coefficient;
     const double stiffness_factor = c_k + c_c * damping_.stiffness_coefficient;
     effective = stiffness_factor * stiffness_ + mass_factor * mass_matrix();
+    if (elastic_stiffness_.size() > 0)  // a1 K of the damping is the first-order K
+      effective = c_k * stiffness_ + (c_c * damping_.stiffness_coefficient) * elastic_stiffness_ +
+                  mass_factor * mass_matrix();
   }
   effective.prune(0.0);
   const Index bandwidth = BandedLdlt::bandwidth_of(effective);

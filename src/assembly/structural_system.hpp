@@ -41,7 +41,13 @@ class StructuralSystem final : public integrators::SecondOrderSystem {
   const Vector* lumped_mass() const override;
   Eigen::SparseMatrix<double> mass_matrix() const;
   const model::RayleighDamping& damping() const { return damping_; }
+  // K: the elements' stiffness, with their geometric stiffness under gravity when the model
+  // asks for P-Delta.
   const Eigen::SparseMatrix<double>& stiffness() const { return stiffness_; }
+  // The elements' own (first-order) stiffness, which Rayleigh damping a1 K stays proportional to.
+  const Eigen::SparseMatrix<double>& elastic_stiffness() const {
+    return elastic_stiffness_.size() > 0 ? elastic_stiffness_ : stiffness_;
+  }
   // What a link's law may need of the bodies it joins (masses and stiffnesses at its ends).
   links::LinkContext link_context(const model::Link& link) const;
   // u, v at t = 0 from the model's initial velocities (displacements zero).
@@ -69,6 +75,8 @@ class StructuralSystem final : public integrators::SecondOrderSystem {
   std::vector<MovingSupport> moving_supports_;
   Vector surface_rate_;  // d(delta)/dt of each link row from its moving j side (belts)
   Eigen::SparseMatrix<double> stiffness_;
+  Eigen::SparseMatrix<double> elastic_stiffness_;  // only with P-Delta: K without it
+  void add_geometric_stiffness(const model::Model& model, model::GeometricStiffness kind);
   // The same for K x, a large part of an explicit step. A band at least half full (chains
   // numbered in node order) is kept by diagonals, column b + k holding K(i, i + k): the product
   // is unit-stride and vectorises (by rows, K x took 2.7 us of a 5.0 us central-difference step

@@ -46,4 +46,16 @@ Vector Truss::end_forces(const Vector& u) const {
   return Vector::Constant(1, axial_stiffness_ * elongation);
 }
 
+// The string stiffness N / L across the bar (both kinds: a bar has no curvature), 2-D only.
+Matrix Truss::geometric_stiffness(const Vector& u, model::GeometricStiffness) const {
+  if (dimension_ == 1) return {};
+  const double string = end_forces(u)[0] / axis_.length;
+  const double across[2] = {-axis_.cosines[1], axis_.cosines[0]};
+  Matrix k(4, 4);
+  for (Index p = 0; p < 4; ++p)
+    for (Index q = 0; q < 4; ++q)
+      k(p, q) = (p / 2 == q / 2 ? 1.0 : -1.0) * string * across[p % 2] * across[q % 2];
+  return k;
+}
+
 }  // namespace pound::assembly

@@ -61,23 +61,65 @@ void add_joint_links(const std::string& joint, const std::string& node_i, const 
         make_link(joint + ".restrainer", node_i, node_j, {direction, 0.0}, 0.0, *spec.restrainer));
 }
 
-// A pier, fixed at the base; its top is the seat of the girder nodes above.
+// The pier's section: with hinges its E I is raised to (n + 1) / n E I (builder/spec.hpp).
+SectionSpec pier_section(const GirderBridgeSpec& spec) {
+  SectionSpec section = spec.pier;
+  if (spec.pier_hinge)
+    section.inertia *=
+        (spec.pier_hinge->stiffness_factor + 1.0) / spec.pier_hinge->stiffness_factor;
+  return section;
+}
+
+// The base hinge's law: the user's, with k_h = (n + 1) 3 E I / h and M_y; and the pier's yield
+// displacement M_y h^2 / (3 E I).
+struct PierHinge {
+  LawSpec law;
+  double yield_displacement;
+};
+PierHinge pier_hinge(const GirderBridgeSpec& spec) {
+  const PierHingeSpec& hinge = *spec.pier_hinge;
+  const double ei = spec.pier.youngs_modulus * spec.pier.inertia, h = spec.pier_height;
+  const double yield_moment = hinge.yield_moment.value_or(ei * hinge.yield_curvature.value_or(0.0));
+  PierHinge made{hinge.law, yield_moment * h * h / (3.0 * ei)};
+  made.law.parameters["stiffness"] = (hinge.stiffness_factor + 1.0) * 3.0 * ei / h;
+  made.law.parameters["yield_force"] = yield_moment;
+  return made;
+}
+
+// The pier's lowest node: the base support, or above it the hinge's free end.
+std::string add_pier_base(const Bridge& bridge, int pier, ModelSpec& out) {
+  const GirderBridgeSpec& spec = bridge.spec;
+  const std::string base = fmt::format("{}.p{}.base", spec.id, pier);
+  out.nodes.push_back({base, bridge.x[pier], 0.0});
+  out.supports.push_back({base, true, true, true});
+  if (!spec.pier_hinge) return base;
+  const std::string hinge = fmt::format("{}.p{}.hinge", spec.id, pier);
+  out.nodes.push_back({hinge, bridge.x[pier], 0.0});
+  out.supports.push_back({hinge, true, true, false});
+  LinkSpec link = make_link(hinge, hinge, base, {1.0, 0.0}, 0.0, pier_hinge(spec).law);
+  link.rotational = true;
+  out.links.push_back(link);
+  return hinge;
+}
+
+// A pier, fixed at the base (or on its hinge); its top is the seat of the girder nodes above.
 void add_pier(const Bridge& bridge, int pier, ModelSpec& out) {
   const GirderBridgeSpec& spec = bridge.spec;
   const std::string base = fmt::format("{}.p{}.base", spec.id, pier), top = pier_top(spec, pier);
-  out.nodes.push_back({base, bridge.x[pier], 0.0});
-  out.supports.push_back({base, true, true, true});
-  std::string previous = base;
+  std::string previous = add_pier_base(bridge, pier, out);
+  const SectionSpec section = pier_section(spec);
   for (int e = 1; e <= spec.pier.elements; ++e) {
     const std::string node =
         e == spec.pier.elements ? top : fmt::format("{}.p{}.n{}", spec.id, pier, e);
     out.nodes.push_back({node, bridge.x[pier], bridge.deck * e / spec.pier.elements});
     add_beam(fmt::format("{}.p{}.e{}", spec.id, pier, e), previous, node, bridge.pier_material,
-             spec.pier, out);
+             section, out);
     previous = node;
   }
+  const std::optional<double> yield_drift =
+      spec.pier_hinge ? std::optional(pier_hinge(spec).yield_displacement) : spec.pier_yield_drift;
   out.drift_monitors.push_back({fmt::format("{}.p{}", spec.id, pier), DriftKind::pier, spec.id,
-                                base, top, bridge.deck, spec.pier_yield_drift});
+                                base, top, bridge.deck, yield_drift, spec.pier_hinge.has_value()});
 }
 
 // Where the girder is cut, as span numbers: 0 and the last at the abutments, and the expansion

@@ -192,6 +192,15 @@ std::optional<RodPairSpec> sole_rod_pair(const ModelSpec& user) {
   return user.rod_pairs.front();
 }
 
+model::Gravity gravity(const GravitySpec& spec, const UnitsSpec& units) {
+  model::Gravity gravity{.direction = {spec.direction[0], spec.direction[1]},
+                         .acceleration = spec.acceleration.value_or(units.gravity())};
+  if (spec.p_delta == PDeltaKind::chord) gravity.p_delta = model::GeometricStiffness::chord;
+  if (spec.p_delta == PDeltaKind::consistent)
+    gravity.p_delta = model::GeometricStiffness::consistent;
+  return gravity;
+}
+
 }  // namespace
 
 BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMotion>& motions) {
@@ -218,6 +227,10 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
       throw not_held_error(built, model::DofMap(model), failure,
                            "the modal analysis for Rayleigh damping (/damping/modes)", spec.source);
     }
+  }
+  if (spec.gravity) {
+    model.gravity = gravity(*spec.gravity, spec.units);
+    built.analysis.static_initial_state = true;  // the record starts on the loaded structure
   }
   built.recorders = resolve_recorders(resolver, model.links.size());
   built.drift_monitors = resolve_drift_monitors(resolver);

@@ -64,6 +64,7 @@ void resolve_axis(const LinkPlace& place, model::Link& link) {
     return;
   }
   if (place.spec.segment_end) return;
+  if (place.spec.rotational) return;  // a hinge acts on theta_i - theta_j: no axis (nodes may meet)
   const auto& a = place.position(link.node_i);
   const auto& b = place.position(link.node_j);
   const double dx = b[0] - a[0], dy = place.model.dimension == 2 ? b[1] - a[1] : 0.0;

@@ -50,7 +50,7 @@ std::vector<DriftMonitor> resolve_drift_monitors(const Resolver& resolver) {
     const DriftMonitorSpec& m = specs[k];
     const std::string path = monitor_path(k, resolver.user_spec().drift_monitors.size(), "drifts");
     monitors.push_back({m.id, m.kind, m.group, resolver.node(m.bottom, path + "/bottom"),
-                        resolver.node(m.top, path + "/top"), m.height, m.yield_drift});
+                        resolver.node(m.top, path + "/top"), m.height, m.yield_drift, m.yields});
   }
   return monitors;
 }

@@ -22,6 +22,9 @@ struct DriftMonitor {
   Index bottom = 0, top = 0;  // nodes
   double height = 0.0;
   std::optional<double> yield_drift;
+  // The yield drift is where the model itself yields (hinged piers, a user's monitor), so
+  // drift / yield drift is a ductility; for an elastic pier it is only a demand ratio.
+  bool yields = true;
 };
 
 struct JointMonitor {

@@ -242,6 +242,22 @@ struct JointSpec {
   std::optional<LawSpec> restrainer;  // a tension law (restrainer / hook)
   double seat_width = 0.0;            // [L]; 0: not checked
 };
+// Plastic hinges at the piers' bases: a zero-length rotational link between the base support
+// and the pier (concentrated plasticity), whose moment-rotation law is the user's with
+//   M_y = yield_moment, or E I phi_y from the section's yield curvature phi_y,
+//   k_h = (n + 1) 3 E I / h elastic stiffness, the piers' E I raised to (n + 1) / n E I,
+// so that the pier's elastic lateral stiffness 3 E I / h^3 is unchanged (Ibarra & Krawinkler
+// 2005, for a member in single curvature: the girders sit on bearings, so a pier is a
+// cantilever). The pier then yields at the top displacement Delta_y = M_y h^2 / (3 E I), its
+// drift monitor's yield drift; with a plastic-hinge length L_p the curvature ductility is
+// 1 + theta_p / (phi_y L_p) (Priestley, Seible & Calvi 1996).
+struct PierHingeSpec {
+  std::optional<double> yield_moment;          // [F L]
+  std::optional<double> yield_curvature;       // [1/L]
+  std::optional<double> plastic_hinge_length;  // [L]
+  double stiffness_factor = 10.0;              // n
+  LawSpec law;                                 // stiffness and yield_force set by the generator
+};
 struct GirderBridgeSpec {
   std::string id;
   int generator_index = 0;
@@ -250,6 +266,7 @@ struct GirderBridgeSpec {
   SectionSpec pier;
   double pier_height = 0.0;                 // [L]
   std::optional<double> pier_yield_drift;   // [L], for displacement ductility
+  std::optional<PierHingeSpec> pier_hinge;  // yielding piers
   LawSpec bearing;                          // horizontal law of every bearing
   double bearing_vertical_stiffness = 0.0;  // [F/L]
   std::vector<int> expansion_joints;        // pier numbers (1 .. spans - 1) where the deck is cut
@@ -272,6 +289,7 @@ struct DriftMonitorSpec {
   std::string bottom, top;
   double height = 0.0;
   std::optional<double> yield_drift;
+  bool yields = true;  // as builder::DriftMonitor::yields
 };
 struct JointMonitorSpec {
   std::string id;
@@ -312,6 +330,15 @@ struct RecorderSpec {
   std::string file;  // output file name inside the output folder
 };
 
+// "gravity": the weight of every mass as constant loads, and optionally P-Delta
+// (model/model.hpp, Gravity).
+enum class PDeltaKind { none, chord, consistent };
+struct GravitySpec {
+  std::vector<double> direction{0.0, -1.0};  // unit vector
+  std::optional<double> acceleration;        // [L/T^2]; default: g in the model's units
+  PDeltaKind p_delta = PDeltaKind::none;
+};
+
 struct ModelSpec {
   std::string source;  // file name, for error messages
   std::string title;
@@ -337,6 +364,7 @@ struct ModelSpec {
   std::vector<JointMonitorSpec> joint_monitors;
   UnitsSpec units;
   std::optional<DampingSpec> damping;
+  std::optional<GravitySpec> gravity;
   std::vector<ExcitationSpec> excitations;
   AnalysisSpec analysis;
   std::vector<RecorderSpec> recorders;

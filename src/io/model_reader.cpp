@@ -43,10 +43,19 @@ LawSpec read_law(JsonObject& object, LawPlace place) {
   LawSpec law;
   law.type = object.one_of("type", links::law_names());
   const links::LawEntry& type = *links::find_law(law.type);
-  for (const std::string& name : type.required) (void)object.at(name);
+  const auto generated = [place](const std::string& name) {
+    return place == LawPlace::pier_hinge &&
+           std::ranges::find(kGeneratedHingeParameters, name) != kGeneratedHingeParameters.end();
+  };
+  for (const std::string& name : type.required)
+    if (!generated(name)) (void)object.at(name);
   for (const links::LawParameter& parameter : type.parameters) {
     const std::optional<JsonValue> value = object.find(parameter.name);
     if (!value) continue;
+    if (generated(parameter.name))
+      value->fail(
+          "set by the generator (the hinge's elastic stiffness and its yield moment): leave it "
+          "out");
     const double number = value->as<double>(lower_bound(parameter.range));
     if (parameter.range == Range::restitution && number > 1.0)
       value->fail(fmt::format("must be <= 1 (a coefficient of restitution), got {}", number));

@@ -466,6 +466,30 @@ Field<GirderBridgeSpec> joint_at_expansion_joints() {
       });
 }
 
+const Fields<builder::PierHingeSpec>& pier_hinge_fields() {
+  using builder::PierHingeSpec;
+  static const Fields<PierHingeSpec> fields = {
+      optional("yield_moment", &PierHingeSpec::yield_moment, Number<>{positive}, "M_y [F L]"),
+      optional("yield_curvature", &PierHingeSpec::yield_curvature, Number<>{positive},
+               "φ_y [1/L]: M_y = E I φ_y with the pier section's E I"),
+      optional("plastic_hinge_length", &PierHingeSpec::plastic_hinge_length, Number<>{positive},
+               "L_p [L], with yield_curvature: curvature ductility 1 + θ_p / (φ_y L_p)"),
+      rule<PierHingeSpec>([](JsonObject& object, PierHingeSpec& hinge, Context&) {
+        if (hinge.yield_moment.has_value() == hinge.yield_curvature.has_value())
+          object.fail("give either 'yield_moment' or 'yield_curvature', not both");
+        if (hinge.plastic_hinge_length && !hinge.yield_curvature)
+          object.at("plastic_hinge_length").fail("needs 'yield_curvature'");
+      }),
+      optional("stiffness_factor", &PierHingeSpec::stiffness_factor, Number<>{positive},
+               "n: hinge stiffness (n + 1)·3 E I / h, pier E I raised to (n + 1)/n E I")
+          .always_written(),
+      required("law", &PierHingeSpec::law, Law{LawPlace::pier_hinge},
+               "moment–rotation law of the hinges, without `stiffness` and `yield_force` (the "
+               "generator sets them)"),
+  };
+  return fields;
+}
+
 const Fields<GirderBridgeSpec>& girder_bridge_fields() {
   static const Object<SectionSpec> section{section_fields(), Docs::own_table};
   static const Fields<GirderBridgeSpec> fields = {
@@ -478,6 +502,14 @@ const Fields<GirderBridgeSpec>& girder_bridge_fields() {
                "deck level above the pier bases [L]"),
       optional("pier_yield_drift", &GirderBridgeSpec::pier_yield_drift, Number<>{positive},
                "for the piers' displacement ductility [L]"),
+      optional("pier_hinge", &GirderBridgeSpec::pier_hinge,
+               Object<builder::PierHingeSpec>{pier_hinge_fields(), Docs::own_table},
+               "plastic hinges at the piers' bases (yielding piers)"),
+      rule<GirderBridgeSpec>([](JsonObject& object, GirderBridgeSpec& bridge, Context&) {
+        if (bridge.pier_hinge && bridge.pier_yield_drift)
+          object.at("pier_yield_drift")
+              .fail("not with 'pier_hinge': the hinges' yield moment gives the yield drift");
+      }),
       required("bearing", &GirderBridgeSpec::bearing, Law{}, "horizontal law of every bearing"),
       required("bearing_vertical_stiffness", &GirderBridgeSpec::bearing_vertical_stiffness,
                Number<>{positive}, "the bearings' elastic vertical stiffness [F/L]"),
@@ -657,6 +689,9 @@ const Fields<DriftMonitorSpec>& drift_monitor_fields() {
       required("height", &DriftMonitorSpec::height, Number<>{positive}, "for the drift ratio [L]"),
       optional("yield_drift", &DriftMonitorSpec::yield_drift, Number<>{positive},
                "for the displacement ductility [L]"),
+      optional("yields", &DriftMonitorSpec::yields, Flag{},
+               "whether the model yields at `yield_drift` (peak / yield drift is a ductility); "
+               "false for an elastic member, whose ratio is only a demand"),
   };
   return fields;
 }
@@ -875,6 +910,31 @@ struct Adaptive {
   std::vector<FieldDoc> rows() const { return settings.rows(); }
 };
 
+const Fields<builder::GravitySpec>& gravity_fields() {
+  using builder::GravitySpec, builder::PDeltaKind;
+  static const Fields<GravitySpec> fields = {
+      rule<GravitySpec>([](JsonObject& object, GravitySpec&, Context& context) {
+        if (context.dimension != 2)
+          object.value().fail(
+              "gravity needs a 2-D scene (\"dimension\": 2): in a 1-D scene "
+              "the weight acts across every DOF");
+      }),
+      optional("direction", &GravitySpec::direction, UnitVector<std::vector<double>>{},
+               "the direction the weight acts along")
+          .always_written(),
+      optional("acceleration", &GravitySpec::acceleration, Number<>{positive}, "g [L/T²]")
+          .default_text("9.80665 m/s² in the model's units"),
+      optional("p_delta", &GravitySpec::p_delta,
+               Choice<PDeltaKind>{{{"none", PDeltaKind::none},
+                                   {"chord", PDeltaKind::chord},
+                                   {"consistent", PDeltaKind::consistent}}},
+               "second-order stiffness of beams and bars under the gravity axial forces: chord "
+               "(P-Δ, N/L on the chord rotation) or consistent (P-Δ and P-δ along the member, "
+               "converging to the Euler loads)"),
+  };
+  return fields;
+}
+
 const Fields<AnalysisSpec>& analysis_fields() {
   static const Fields<AnalysisSpec> fields = {
       optional("integrator", &AnalysisSpec::integrator, Integrator{},
@@ -1060,6 +1120,10 @@ const Fields<ModelSpec>& model_list() {
       optional("damping", &ModelSpec::damping,
                Object<DampingSpec>{damping_fields(), Docs::own_table},
                "Rayleigh damping of the linear elements"),
+      optional("gravity", &ModelSpec::gravity,
+               Object<builder::GravitySpec>{gravity_fields(), Docs::own_table},
+               "the weight of every mass as constant loads from t = 0; the run starts from "
+               "static equilibrium under them"),
       optional("excitations", &ModelSpec::excitations, Objects<ExcitationSpec>{excitation_fields()},
                "ground-motion records"),
       required("analysis", &ModelSpec::analysis,
@@ -1105,6 +1169,7 @@ const std::vector<NamedFields>& every_field_list() {
       named("storey", storey_fields()),
       named("girder_bridge", girder_bridge_fields()),
       named("section", section_fields()),
+      named("pier_hinge", pier_hinge_fields()),
       named("joint", joint_fields()),
       named("block", block_fields()),
       named("surfaces", surface_fields()),
@@ -1112,6 +1177,7 @@ const std::vector<NamedFields>& every_field_list() {
       named("drift_monitors", drift_monitor_fields()),
       named("joint_monitors", joint_monitor_fields()),
       named("damping", damping_fields()),
+      named("gravity", gravity_fields()),
       named("excitations", excitation_fields()),
       named("analysis", analysis_fields()),
       named("recorders", recorder_fields()),

@@ -16,6 +16,14 @@ Document link_document(const results::LinkResult& link) {
       .set("work", s.work);
   if (s.first_contact >= 0.0)
     doc.set("first_contact", s.first_contact).set("last_contact", s.last_contact);
+  if (link.yield_deformation) {  // a yielding law: its demand and what it dissipated
+    doc.set("yield_deformation", *link.yield_deformation)
+        .set("peak_deformation", link.peak_deformation())
+        .set("residual_deformation", s.final_deformation)
+        .set("ductility", *link.ductility());
+    if (const std::optional<double> energy = link.hysteretic_energy())
+      doc.set("hysteretic_energy", *energy);
+  }
   return doc;
 }
 
@@ -28,7 +36,11 @@ Document drift_document(const results::DriftResult& drift) {
       .set("peak_drift", drift.peak.peak_drift)
       .set("drift_ratio", drift.ratio())
       .set("time", drift.peak.time);
+  doc.set("residual_drift", drift.peak.residual_drift)
+      .set("residual_drift_ratio", drift.residual_ratio());
   if (const std::optional<double> ductility = drift.ductility()) doc.set("ductility", *ductility);
+  if (const std::optional<double> demand = drift.elastic_demand_ratio())
+    doc.set("elastic_demand_ratio", *demand);
   return doc;
 }
 
@@ -38,7 +50,8 @@ Document joint_document(const results::JointResult& joint) {
       .set("link", joint.link)
       .set("peak_opening", joint.peak.peak_opening)
       .set("peak_closing", joint.peak.peak_closing)
-      .set("peak_seat_movement", joint.peak.peak_seat_movement);
+      .set("peak_seat_movement", joint.peak.peak_seat_movement)
+      .set("residual_opening", joint.peak.residual_opening);
   if (const std::optional<double> margin = joint.margin())
     doc.set("seat_width", joint.monitor.seat_width)
         .set("unseating_margin", *margin)

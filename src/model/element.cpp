@@ -4,6 +4,8 @@
 
 namespace pound::model {
 
+Matrix Element::geometric_stiffness(const Vector&, GeometricStiffness) const { return {}; }
+
 std::vector<ElementDof> Element::dofs() const {
   std::vector<ElementDof> dofs;
   dofs.reserve(nodes_.size() * directions().size());

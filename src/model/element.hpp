@@ -28,6 +28,14 @@ struct RayleighDamping {
   double stiffness_coefficient = 0.0;  // a1 [T]
 };
 
+// The geometric stiffness of second-order (P-Delta) analysis, from an element's axial force N
+// (tension positive: tension stiffens, compression softens):
+//   chord       P-Delta: N / L on the relative transverse displacement of the ends (the axial
+//               force times the chord rotation; OpenSees' PDelta transformation, SAP2000's P-Delta)
+//   consistent  P-Delta and P-delta: the cubic Hermitian shapes' geometric stiffness, which also
+//               softens the member along its length and converges to the Euler buckling loads.
+enum class GeometricStiffness { chord, consistent };
+
 // A node of an element: its index in Model::nodes and where it is.
 struct ElementNode {
   Index index = 0;
@@ -69,6 +77,11 @@ class Element {
   // over dofs(): in the element's local axes, units of force (moments force x length).
   virtual std::span<const std::string_view> end_force_names() const = 0;
   virtual Vector end_forces(const Vector& u) const = 0;
+
+  // Its geometric stiffness over dofs() in global axes under the axial force it carries at
+  // displacements u (over dofs()); empty for an element without one (a quad: plane continua
+  // take no second-order effects here).
+  virtual Matrix geometric_stiffness(const Vector& u, GeometricStiffness kind) const;
 
  protected:
   Element(std::string id, std::vector<Index> nodes, std::optional<RayleighDamping> damping)

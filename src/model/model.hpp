@@ -88,6 +88,17 @@ struct Link {
   links::LinkRole role() const { return law ? law->traits.role : links::LinkRole::contact; }
 };
 
+// Gravity (2-D scenes): every mass weighs m g along `direction`, constant loads M iota g from
+// t = 0 beside the nodal loads, and the run starts from static equilibrium under them. With
+// `p_delta`, the elements' geometric stiffness under the axial forces of a linear gravity
+// analysis (links at their initial stiffness) joins K, held constant through the record: the
+// linearised second-order analysis of design codes (SAP2000's P-Delta from an initial case).
+struct Gravity {
+  Coordinates direction{0.0, -1.0};  // unit vector
+  double acceleration = 0.0;         // g [L/T^2]
+  std::optional<GeometricStiffness> p_delta;
+};
+
 struct Model {
   int dimension = 1;  // 1 or 2
   std::vector<Node> nodes;
@@ -101,6 +112,7 @@ struct Model {
   std::optional<RayleighDamping> damping;
   std::vector<UniformExcitation> excitations;
   std::vector<SupportExcitation> support_excitations;
+  std::optional<Gravity> gravity;
 
   // The scene's translations, or more where an element needs more (a beam's rotation).
   int dofs_per_node() const;

@@ -12,8 +12,9 @@
 namespace pound::results {
 
 struct DriftPeak {
-  double peak_drift = 0.0;  // max |u_top - u_bottom| along x [L]
-  double time = 0.0;        // when
+  double peak_drift = 0.0;      // max |u_top - u_bottom| along x [L]
+  double time = 0.0;            // when
+  double residual_drift = 0.0;  // u_top - u_bottom at the end of the run [L]
 };
 
 class DriftMonitors : public Observer {
@@ -33,6 +34,7 @@ struct JointPeak {
   double peak_opening = 0.0;        // max -(delta + gap): the joint wider than at the start [L]
   double peak_closing = 0.0;        // max (delta + gap): the joint narrower than at the start [L]
   double peak_seat_movement = 0.0;  // max |u_girder - u_seat| along x [L]
+  double residual_opening = 0.0;    // -(delta + gap) at the end of the run [L]
 };
 
 class JointMonitors : public Observer {

@@ -76,6 +76,8 @@ void LinkSummaries::record(const integrators::State& state) {
     s.peak_tension = std::max(s.peak_tension, -force);
     s.peak_penetration = std::max(s.peak_penetration, penetration);
     s.peak_opening = std::max(s.peak_opening, -penetration);
+    s.final_force = force;
+    s.final_deformation = penetration;
   }
   previous_.time = state.time;
   previous_.link_force = state.link_force;

@@ -57,16 +57,18 @@ class NodeRecorder final : public Recorder {
 
 // Pounding summary of one link over the run.
 struct LinkSummary {
-  int impacts = 0;                // engagements: open -> force (contact, or a taut restrainer)
-  double peak_force = 0.0;        // largest compression [F]
-  double peak_tension = 0.0;      // largest tension (restrainers, hooks) [F]
-  double peak_penetration = 0.0;  // [L]
-  double peak_opening = 0.0;      // largest -delta: how far the joint opened [L]
-  double impulse = 0.0;           // integral of F dt [F T]
-  double work = 0.0;              // integral of F d(delta) [F L]: energy left in or taken by
-                                  // the link; after separation, the energy it dissipated
-  double first_contact = -1.0;    // time of the first step in contact, -1 if never
-  double last_contact = -1.0;     // time of the last step in contact
+  int impacts = 0;                 // engagements: open -> force (contact, or a taut restrainer)
+  double peak_force = 0.0;         // largest compression [F]
+  double peak_tension = 0.0;       // largest tension (restrainers, hooks) [F]
+  double peak_penetration = 0.0;   // [L]
+  double peak_opening = 0.0;       // largest -delta: how far the joint opened [L]
+  double impulse = 0.0;            // integral of F dt [F T]
+  double work = 0.0;               // integral of F d(delta) [F L]: energy left in or taken by
+                                   // the link; after separation, the energy it dissipated
+  double first_contact = -1.0;     // time of the first step in contact, -1 if never
+  double last_contact = -1.0;      // time of the last step in contact
+  double final_force = 0.0;        // at the end of the run [F]
+  double final_deformation = 0.0;  // delta at the end of the run (residual) [L]
 };
 
 class LinkSummaries : public Observer {

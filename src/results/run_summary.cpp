@@ -87,6 +87,12 @@ std::vector<std::string> result_warnings(const RunSummary& run) {
           "the result is meaningless there (a stiffness far too small?)",
           drift.monitor.kind == builder::DriftKind::pier ? "pier" : "storey", drift.monitor.id,
           100.0 * drift.ratio()));
+  for (const DriftResult& drift : run.drifts)
+    if (const std::optional<double> demand = drift.elastic_demand_ratio(); demand && *demand > 1.0)
+      warnings.push_back(fmt::format(
+          "pier {}: drift {:.2f} times its yield drift, but the pier is elastic and cannot yield: "
+          "this is not a ductility demand (give the bridge a 'pier_hinge' for one)",
+          drift.monitor.id, *demand));
   if (run.worst_balance_error > 0.01)
     warnings.push_back(
         fmt::format("energy balance error reached {:.2f} % of the largest energy "
@@ -149,8 +155,24 @@ void check_histories_fit(const std::vector<std::unique_ptr<Recorder>>& recorders
 }
 
 std::optional<double> DriftResult::ductility() const {
-  if (!monitor.yield_drift) return std::nullopt;
+  if (!monitor.yield_drift || !monitor.yields) return std::nullopt;
   return peak.peak_drift / *monitor.yield_drift;
+}
+
+std::optional<double> DriftResult::elastic_demand_ratio() const {
+  if (!monitor.yield_drift || monitor.yields) return std::nullopt;
+  return peak.peak_drift / *monitor.yield_drift;
+}
+
+std::optional<double> LinkResult::ductility() const {
+  if (!yield_deformation) return std::nullopt;
+  return peak_deformation() / *yield_deformation;
+}
+
+std::optional<double> LinkResult::hysteretic_energy() const {
+  if (!yield_deformation || !initial_stiffness || !(*initial_stiffness > 0.0)) return std::nullopt;
+  const double force = summary.final_force;
+  return summary.work - force * force / (2.0 * *initial_stiffness);
 }
 
 std::optional<double> JointResult::margin() const {
@@ -167,8 +189,13 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
       system.size(),     statistics, built.analysis.adaptive};
   for (std::size_t k = 0; k < built.model.links.size(); ++k) {
     const model::Link& link = built.model.links[k];
-    run.links.push_back({link.id, system.links().law(static_cast<Index>(k)).name(), link.role(),
-                         observers.links().summaries()[k]});
+    const links::LinkLaw& law = system.links().law(static_cast<Index>(k));
+    LinkResult result{link.id, law.name(), link.role(), observers.links().summaries()[k],
+                      link.rotational};
+    if ((result.yield_deformation = law.yield_deformation()))
+      result.initial_stiffness =  // of a fresh law: this one has yielded
+          link.make_law(system.link_context(link))->set_trial({0.0, 0.0, 0.0}).stiffness;
+    run.links.push_back(result);
   }
   for (std::size_t k = 0; k < built.drift_monitors.size(); ++k)
     run.drifts.push_back({built.drift_monitors[k], observers.drifts().peaks()[k]});

@@ -64,13 +64,27 @@ struct LinkResult {
   std::string id, law;
   links::LinkRole role = links::LinkRole::contact;
   LinkSummary summary;
+  bool rotational = false;  // a hinge: deformations are rotations
+  // A yielding law's delta_y and its stiffness at rest (LinkLaw::yield_deformation).
+  std::optional<double> yield_deformation, initial_stiffness;
+  double peak_deformation() const {
+    return std::max(summary.peak_penetration, summary.peak_opening);
+  }
+  // peak |delta| / delta_y.
+  std::optional<double> ductility() const;
+  // Energy the law dissipated: its work less the elastic energy F^2 / (2 k_0) it still holds.
+  std::optional<double> hysteretic_energy() const;
 };
 
 struct DriftResult {
   builder::DriftMonitor monitor;
   DriftPeak peak;
   double ratio() const { return peak.peak_drift / monitor.height; }
+  double residual_ratio() const { return peak.residual_drift / monitor.height; }
+  // peak drift / yield drift where the model yields there (DriftMonitor::yields)
   std::optional<double> ductility() const;
+  // the same ratio for an elastic member given a yield drift: a demand, not a ductility
+  std::optional<double> elastic_demand_ratio() const;
 };
 
 struct JointResult {

@@ -22,7 +22,11 @@ expected=()
 header=$(head -n 1 "$batch/batch_summary.csv")
 for quantity in impacts max_pounding_force max_restrainer_force max_joint_opening \
                 max_seat_movement max_drift_ratio max_ductility; do
-  case ",$header," in *",$quantity,"*) expected+=("ida_$quantity.png") ;; esac
+  # a figure for every quantity some case has a value of (an elastic pier has no ductility)
+  "$python" -c 'import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+sys.exit(0 if any(row.get(sys.argv[2]) for row in rows) else 1)' "$batch/batch_summary.csv" \
+    "$quantity" && expected+=("ida_$quantity.png")
 done
 grep -q '"fitted"' "$batch/batch_stats.json" && expected+=(fragility.png)  # a fragility entry
 [ "${#expected[@]}" -ge 2 ] || fail "expected IDA and fragility figures, header: $header"
