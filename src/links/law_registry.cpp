@@ -9,6 +9,7 @@
 #include "links/backfill.hpp"
 #include "links/bilinear_impact.hpp"
 #include "links/bilinear_spring.hpp"
+#include "links/clough.hpp"
 #include "links/elastic_spring.hpp"
 #include "links/extended_penalty.hpp"
 #include "links/gap_spring.hpp"
@@ -17,6 +18,7 @@
 #include "links/jankowski.hpp"
 #include "links/kelvin_voigt.hpp"
 #include "links/restrainer.hpp"
+#include "links/takeda.hpp"
 #include "links/viscous_damper.hpp"
 
 namespace pound::links {
@@ -89,6 +91,8 @@ const std::vector<const LawEntry*>& law_registry() {
       &Restrainer::hook_entry(),
       &ElasticSpring::entry(),
       &BilinearSpring::entry(),
+      &Takeda::entry(),
+      &Clough::entry(),
       &Backfill::entry(),
       &ViscousDamper::entry(),
   };
