@@ -9,6 +9,8 @@
 #include "links/backfill.hpp"
 #include "links/bilinear_impact.hpp"
 #include "links/bilinear_spring.hpp"
+#include "links/bouc_wen.hpp"
+#include "links/elastic_perfectly_plastic.hpp"
 #include "links/elastic_spring.hpp"
 #include "links/extended_penalty.hpp"
 #include "links/gap_spring.hpp"
@@ -16,6 +18,7 @@
 #include "links/hertz_damp.hpp"
 #include "links/jankowski.hpp"
 #include "links/kelvin_voigt.hpp"
+#include "links/lead_rubber.hpp"
 #include "links/restrainer.hpp"
 #include "links/viscous_damper.hpp"
 
@@ -89,6 +92,9 @@ const std::vector<const LawEntry*>& law_registry() {
       &Restrainer::hook_entry(),
       &ElasticSpring::entry(),
       &BilinearSpring::entry(),
+      &ElasticPerfectlyPlastic::entry(),
+      &LeadRubber::entry(),
+      &BoucWen::entry(),
       &Backfill::entry(),
       &ViscousDamper::entry(),
   };
