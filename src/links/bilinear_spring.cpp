@@ -1,13 +1,16 @@
 #include "links/bilinear_spring.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "links/law_registry.hpp"
 
 namespace pound::links {
 
-BilinearSpring::BilinearSpring(double stiffness, double yield_force, double hardening_ratio)
-    : stiffness_(stiffness),
+BilinearSpring::BilinearSpring(double stiffness, double yield_force, double hardening_ratio,
+                               std::string name)
+    : name_(std::move(name)),
+      stiffness_(stiffness),
       yield_force_(yield_force),
       hardening_ratio_(hardening_ratio),
       hardening_modulus_(hardening_ratio * stiffness / (1.0 - hardening_ratio)) {}

@@ -15,15 +15,20 @@
 // +-delta_m (delta_m > delta_y = F_y / k) dissipates 4 (1 - b) F_y (delta_m - delta_y).
 //
 // Units: k [F/L], F_y [F], b [-] in [0, 1), delta and p [L].
+#include <string>
+
 #include "links/link_law.hpp"
 
 namespace pound::links {
 
 class BilinearSpring final : public LinkLaw {
  public:
-  BilinearSpring(double stiffness, double yield_force, double hardening_ratio);
+  // `name`: the law it was made as; elastic_perfectly_plastic and lead_rubber are bilinear springs
+  // given by other numbers (links/elastic_perfectly_plastic.hpp, links/lead_rubber.hpp).
+  BilinearSpring(double stiffness, double yield_force, double hardening_ratio,
+                 std::string name = "bilinear_spring");
 
-  std::string name() const override { return "bilinear_spring"; }
+  std::string name() const override { return name_; }
   // Its registry entry: parameters, traits, factory (links/law_registry.hpp).
   static const LawEntry& entry();
   std::unique_ptr<LinkLaw> clone() const override {
@@ -42,6 +47,7 @@ class BilinearSpring final : public LinkLaw {
  private:
   double back_force_at(double plastic) const { return hardening_modulus_ * plastic; }
 
+  std::string name_;
   double stiffness_, yield_force_, hardening_ratio_, hardening_modulus_;
   double committed_plastic_ = 0.0, trial_plastic_ = 0.0;
   double committed_force_ = 0.0, trial_force_ = 0.0;

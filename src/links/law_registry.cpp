@@ -10,6 +10,8 @@
 #include "links/bilinear_impact.hpp"
 #include "links/bilinear_spring.hpp"
 #include "links/clough.hpp"
+#include "links/bouc_wen.hpp"
+#include "links/elastic_perfectly_plastic.hpp"
 #include "links/elastic_spring.hpp"
 #include "links/extended_penalty.hpp"
 #include "links/gap_spring.hpp"
@@ -17,6 +19,7 @@
 #include "links/hertz_damp.hpp"
 #include "links/jankowski.hpp"
 #include "links/kelvin_voigt.hpp"
+#include "links/lead_rubber.hpp"
 #include "links/restrainer.hpp"
 #include "links/takeda.hpp"
 #include "links/viscous_damper.hpp"
@@ -93,6 +96,9 @@ const std::vector<const LawEntry*>& law_registry() {
       &BilinearSpring::entry(),
       &Takeda::entry(),
       &Clough::entry(),
+      &ElasticPerfectlyPlastic::entry(),
+      &LeadRubber::entry(),
+      &BoucWen::entry(),
       &Backfill::entry(),
       &ViscousDamper::entry(),
   };
