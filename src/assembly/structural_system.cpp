@@ -249,8 +249,8 @@ integrators::LinkSet::Link link_entry(const model::DofMap& dofs, const model::Li
   }
   entry.tangential_row = link_row(dofs, link, tangential_direction(link));
   const links::StickPenalty stick = stick_penalty(*law, *link.friction);
-  entry.friction =
-      std::make_unique<links::CoulombFriction>(std::move(law), link.friction->coefficient, stick);
+  entry.friction = std::make_unique<links::CoulombFriction>(
+      std::move(law), link.friction->coefficient, stick, link.friction->radius);
   return entry;
 }
 

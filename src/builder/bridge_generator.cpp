@@ -43,13 +43,25 @@ void add_beam(const std::string& id, const std::string& node_i, const std::strin
   out.elements.push_back(beam);
 }
 
-// A girder node sits on a seat: a horizontal bearing (the user's law) and a vertical one.
+// A girder node sits on a seat: a horizontal bearing (the user's law) and a vertical one. A
+// sliding bearing's vertical link is a contact pointing down from the girder to the seat, so
+// that the girder's weight presses it (R_n > 0) and its tangent, n turned by +90 degrees, is +x:
+// the slide s is u_girder,x - u_seat,x, as for bearing_x.
 void add_bearing(const GirderBridgeSpec& spec, const std::string& girder, const std::string& seat,
                  ModelSpec& out) {
-  out.links.push_back(
-      make_link(girder + ".bearing_x", girder, seat, {1.0, 0.0}, 0.0, spec.bearing));
-  out.links.push_back(make_link(girder + ".bearing_y", girder, seat, {0.0, 1.0}, 0.0,
-                                elastic(spec.bearing_vertical_stiffness)));
+  if (spec.bearing)
+    out.links.push_back(
+        make_link(girder + ".bearing_x", girder, seat, {1.0, 0.0}, 0.0, *spec.bearing));
+  if (!spec.bearing_friction) {
+    out.links.push_back(make_link(girder + ".bearing_y", girder, seat, {0.0, 1.0}, 0.0,
+                                  elastic(spec.bearing_vertical_stiffness)));
+    return;
+  }
+  const LawSpec contact{.type = "gap_spring",
+                        .parameters = {{"stiffness", spec.bearing_vertical_stiffness}}};
+  LinkSpec sliding = make_link(girder + ".bearing_y", girder, seat, {0.0, -1.0}, 0.0, contact);
+  sliding.friction = spec.bearing_friction;
+  out.links.push_back(std::move(sliding));
 }
 
 // The pounding link of a joint along x (`direction` +1 or -1) and its restrainer, if it has one.

@@ -103,8 +103,10 @@ void resolve_friction(const LinkPlace& place, model::Link& link) {
                fmt::format("give 'stick_stiffness': a {} law has no stiffness at first touch to "
                            "stick with",
                            type));
+  if (friction.radius && link.rotational)
+    place.fail("/friction/radius", "a friction pendulum slides: a rotational link has no slide");
   link.friction = model::LinkFriction{friction.coefficient, friction.stick_stiffness,
-                                      friction.stick_damping, friction.stick_mass};
+                                      friction.stick_damping, friction.stick_mass, friction.radius};
 }
 
 model::Link resolve_link(const LinkPlace& place) {

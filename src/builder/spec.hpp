@@ -85,6 +85,7 @@ using LoadSpec = NodalVectorSpec;
 struct FrictionSpec {
   double coefficient = 0.0;  // mu >= 0, static = kinetic
   std::optional<double> stick_stiffness, stick_damping, stick_mass;
+  std::optional<double> radius;  // a friction pendulum's radius of curvature [L] > 0 (links only)
 };
 
 struct LinkSpec {
@@ -267,13 +268,16 @@ struct GirderBridgeSpec {
   double pier_height = 0.0;                 // [L]
   std::optional<double> pier_yield_drift;   // [L], for displacement ductility
   std::optional<PierHingeSpec> pier_hinge;  // yielding piers
-  LawSpec bearing;                          // horizontal law of every bearing
+  std::optional<LawSpec> bearing;           // horizontal law of every bearing
   double bearing_vertical_stiffness = 0.0;  // [F/L]
   std::vector<int> expansion_joints;        // pier numbers (1 .. spans - 1) where the deck is cut
   JointSpec joint;                          // at the expansion joints
   JointSpec abutment;                       // girder end against the backwall
   std::optional<LawSpec> backfill;          // behind each backwall (compression-only)
   double backwall_mass = 0.0;               // [M], needed with backfill
+  // Sliding bearings: the vertical link is then compression-only and carries this friction
+  // (a friction pendulum with a radius), in parallel with `bearing` if that is given too.
+  std::optional<FrictionSpec> bearing_friction;
 };
 
 // What a run reports beyond links: drift of storeys and piers (peak of |u_top - u_bottom|

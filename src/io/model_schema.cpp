@@ -252,11 +252,28 @@ const Fields<FrictionSpec>& friction_fields() {
                "damping while sticking; default: the normal law's [F·T/L]"),
       optional("stick_mass", &FrictionSpec::stick_mass, Number<>{non_negative},
                "mass while sticking; default: the normal law's [M]"),
+      optional("radius", &FrictionSpec::radius, Number<>{positive},
+               "a friction pendulum's effective radius of curvature R: R_t gains R_n·s/R; "
+               "without it a flat slider; links and bridge bearings only [L]"),
   };
   return fields;
 }
 
 Object<FrictionSpec> friction_object() { return {friction_fields(), Docs::own_table}; }
+
+// A surface or a contact is not a bearing: a radius there would give every touching node its
+// own dish, which no structure has.
+template <class Spec>
+Field<Spec> no_pendulum(std::optional<FrictionSpec> Spec::*friction) {
+  return rule<Spec>([friction](JsonObject& object, Spec& spec, Context&) {
+    if (spec.*friction && (spec.*friction)->radius)
+      JsonObject(object.at("friction"))
+          .at("radius")
+          .fail(
+              "a friction pendulum's radius belongs to a link (a bearing), not to a surface or "
+              "a contact");
+  });
+}
 
 // Two nodes, or one with a "segment".
 Field<LinkSpec> link_nodes() {
@@ -510,9 +527,23 @@ const Fields<GirderBridgeSpec>& girder_bridge_fields() {
           object.at("pier_yield_drift")
               .fail("not with 'pier_hinge': the hinges' yield moment gives the yield drift");
       }),
-      required("bearing", &GirderBridgeSpec::bearing, Law{}, "horizontal law of every bearing"),
+      optional("bearing", &GirderBridgeSpec::bearing, Law{},
+               "horizontal law of every bearing; required without bearing_friction, in "
+               "parallel with it otherwise"),
       required("bearing_vertical_stiffness", &GirderBridgeSpec::bearing_vertical_stiffness,
-               Number<>{positive}, "the bearings' elastic vertical stiffness [F/L]"),
+               Number<>{positive},
+               "the bearings' vertical stiffness: elastic, or compression-only with "
+               "bearing_friction [F/L]"),
+      optional("bearing_friction", &GirderBridgeSpec::bearing_friction, friction_object(),
+               "sliding bearings: the vertical bearing becomes a compression-only gap_spring "
+               "that carries this friction (with a radius: a friction pendulum); the friction "
+               "follows its normal force, so the girders need their weight (\"gravity\")"),
+      rule<GirderBridgeSpec>([](JsonObject& object, GirderBridgeSpec& bridge, Context&) {
+        if (!bridge.bearing && !bridge.bearing_friction)
+          object.fail(
+              "needs 'bearing' (the bearings' horizontal law), 'bearing_friction' "
+              "(sliding bearings) or both");
+      }),
       expansion_joints(),
       joint_at_expansion_joints(),
       required("abutment", &GirderBridgeSpec::abutment,
@@ -656,6 +687,7 @@ const Fields<SurfaceSpec>& surface_fields() {
       required("nodes", &SurfaceSpec::nodes, Names{}, "node ids or node sets that may touch it"),
       required("law", &SurfaceSpec::law, Law{}, "the contact law, as for links"),
       optional("friction", &SurfaceSpec::friction, friction_object(), "as for links"),
+      no_pendulum(&SurfaceSpec::friction),
   };
   return fields;
 }
@@ -669,6 +701,7 @@ const Fields<ContactSpec>& contact_fields() {
                "the facing boundary, a chain of nodes counter-clockwise round its body"),
       required("law", &ContactSpec::law, Law{}, "the contact law, as for links"),
       optional("friction", &ContactSpec::friction, friction_object(), "as for links"),
+      no_pendulum(&ContactSpec::friction),
   };
   return fields;
 }

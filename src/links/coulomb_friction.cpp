@@ -5,22 +5,46 @@
 namespace pound::links {
 
 CoulombFriction::CoulombFriction(std::unique_ptr<LinkLaw> normal, double coefficient,
-                                 StickPenalty stick)
-    : normal_(std::move(normal)), coefficient_(coefficient), stick_(stick) {}
+                                 StickPenalty stick, std::optional<double> radius)
+    : normal_(std::move(normal)), coefficient_(coefficient), stick_(stick), radius_(radius) {}
 
 CoulombFriction::CoulombFriction(const CoulombFriction& other)
     : normal_(other.normal_->clone()),
       coefficient_(other.coefficient_),
       stick_(other.stick_),
+      radius_(other.radius_),
       committed_anchor_(other.committed_anchor_),
       trial_anchor_(other.committed_anchor_),
       committed_slip_(other.committed_slip_),
       trial_slip_(other.committed_slip_),
       committed_slide_(other.committed_slide_),
-      trial_slide_(other.committed_slide_) {}
+      trial_slide_(other.committed_slide_),
+      committed_normal_force_(other.committed_normal_force_),
+      trial_normal_force_(other.committed_normal_force_) {}
 
 FrictionResponse CoulombFriction::set_trial(const LinkKinematics& normal,
                                             const LinkKinematics& tangential) {
+  FrictionResponse out = coulomb(normal, tangential);
+  trial_normal_force_ = out.normal.force;
+  // A flat slider's arithmetic stays exactly the Coulomb law's (no "+ 0" anywhere).
+  if (radius_ && out.normal.force > 0.0) add_restoring(tangential, out);
+  return out;
+}
+
+// R_t += R_n s / R: its derivatives are R_n / R along s and (s / R) dR_n along the normal
+// quantities, the vertical load's share of the restoring force.
+void CoulombFriction::add_restoring(const LinkKinematics& tangential,
+                                    FrictionResponse& response) const {
+  const double lever = tangential.penetration / *radius_;
+  response.tangential_force += response.normal.force * lever;
+  response.tangential_on_slip.stiffness += response.normal.force / *radius_;
+  response.tangential_on_normal.stiffness += lever * response.normal.stiffness;
+  response.tangential_on_normal.damping += lever * response.normal.damping;
+  response.tangential_on_normal.mass += lever * response.normal.mass;
+}
+
+FrictionResponse CoulombFriction::coulomb(const LinkKinematics& normal,
+                                          const LinkKinematics& tangential) {
   FrictionResponse out;
   out.normal = normal_->set_trial(normal);
   trial_slide_ = tangential.penetration;
@@ -65,9 +89,13 @@ void CoulombFriction::commit() {
   committed_anchor_ = trial_anchor_;
   committed_slip_ = trial_slip_;
   committed_slide_ = trial_slide_;
+  committed_normal_force_ = trial_normal_force_;
 }
 
 void CoulombFriction::anchor_at_rest(double tangential_force) {
+  // Only F_c sticks: the pendulum's R_n s / R is not part of the stick penalty.
+  if (radius_ && committed_normal_force_ > 0.0)
+    tangential_force -= committed_normal_force_ * committed_slide_ / *radius_;
   if (stick_.stiffness > 0.0)
     committed_anchor_ = committed_slide_ - tangential_force / stick_.stiffness;
   trial_anchor_ = committed_anchor_;
@@ -78,6 +106,7 @@ void CoulombFriction::revert() {
   trial_anchor_ = committed_anchor_;
   trial_slip_ = committed_slip_;
   trial_slide_ = committed_slide_;
+  trial_normal_force_ = committed_normal_force_;
 }
 
 }  // namespace pound::links

@@ -65,9 +65,12 @@ struct SupportExcitation {
 // Node-to-segment: the j side is the point (1 - w) u_j + w u_k of the segment j-k, w fixed at
 // t = 0 (small sliding). A rigid moving surface (a belt) is a fixed node j whose side of the
 // link moves at a constant velocity: u_j + velocity_j t.
+// With a radius of curvature the friction is a friction pendulum bearing's
+// (links/coulomb_friction.hpp): a restoring force R_n s / R on top of the Coulomb part.
 struct LinkFriction {
   double coefficient = 0.0;
   std::optional<double> stick_stiffness, stick_damping, stick_mass;  // default: the normal law's
+  std::optional<double> radius;                                      // [L] > 0; none: a flat slider
 };
 
 struct Link {

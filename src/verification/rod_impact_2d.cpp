@@ -82,7 +82,7 @@ builder::ModelSpec strips_spec(const RodImpact2dOptions& options, double end_tim
   contact.nodes = {"left.right"};
   contact.segments = {"right.left"};
   contact.law = options.pair.law;
-  contact.friction = builder::FrictionSpec{options.friction, {}, {}, {}};
+  contact.friction = builder::FrictionSpec{options.friction, {}, {}, {}, {}};
   spec.contacts.push_back(contact);
   spec.analysis.integrator = integrators::IntegratorChoice::preset("central_difference");
   spec.analysis.time_step_auto = true;
