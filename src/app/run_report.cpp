@@ -9,11 +9,11 @@ namespace {
 
 // A spring or hinge that yielded: its peak and residual deformation, and what it dissipated.
 std::string yielded_line(const results::LinkResult& link) {
-  const char* what = link.rotational ? "rotation" : "deformation";
+  const std::optional<double> ductility = link.ductility();
   return fmt::format(
-      "  {} {} yielded: peak {} {:.4g} ({:.2f} x yield), residual {:.4g}, hysteretic energy "
-      "{:.6g}\n",
-      link.law, link.id, what, link.peak_deformation(), *link.ductility(),
+      "  {} {} yielded: peak {} {:.4g}{}, residual {:.4g}, hysteretic energy {:.6g}\n", link.law,
+      link.id, link.rotational ? "rotation" : "deformation", link.peak_deformation(),
+      ductility ? fmt::format(" ({:.2f} x yield)", *ductility) : std::string(),
       link.summary.final_deformation, link.hysteretic_energy().value_or(0.0));
 }
 
@@ -29,7 +29,8 @@ std::string link_lines(const results::RunSummary& run) {
       case links::LinkRole::spring:
         ++springs;
         spring_force = std::max({spring_force, s.peak_force, s.peak_tension});
-        if (link.yield_deformation && *link.ductility() > 1.0) text += yielded_line(link);
+        if (link.yield_deformation && link.peak_deformation() > *link.yield_deformation)
+          text += yielded_line(link);
         break;
       case links::LinkRole::tension:
         text += fmt::format("  {} {}: taut {} time(s), peak tension {:.6g}, peak opening {:.4g}\n",

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "assembly/static_equilibrium.hpp"
+
 namespace pound::assembly {
 namespace {
 
@@ -61,9 +63,10 @@ class BorderedNewton {
 
   Eigen::SparseMatrix<double> bordered_tangent() const {
     const Index n = system_.size();
-    const Eigen::SparseMatrix<double> structure =
+    Eigen::SparseMatrix<double> structure =
         system_.stiffness() +
         Eigen::SparseMatrix<double>(b_.transpose() * tangent_.sparseView() * b_);
+    hold_unheld_dofs(structure);
     std::vector<Eigen::Triplet<double>> entries;
     entries.reserve(static_cast<std::size_t>(structure.nonZeros() + 2 * n + 1));
     for (Index col = 0; col < structure.outerSize(); ++col)

@@ -11,6 +11,13 @@
 
 namespace pound::assembly {
 
+void hold_unheld_dofs(Eigen::SparseMatrix<double>& tangent) {
+  if (tangent.size() == 0) return;
+  const double largest = tangent.diagonal().cwiseAbs().maxCoeff();
+  for (Index i = 0; i < tangent.rows(); ++i)
+    if (tangent.coeff(i, i) == 0.0) tangent.coeffRef(i, i) = 1e-12 * largest;
+}
+
 StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
                                      double relative_tolerance, int max_iterations) {
   const Index n = system.size();
@@ -76,6 +83,7 @@ StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
       Eigen::SparseMatrix<double> matrix =
           system.stiffness() +
           Eigen::SparseMatrix<double>(b.transpose() * tangent.sparseView() * b);
+      hold_unheld_dofs(matrix);
       matrix.makeCompressed();
       Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
       solver.compute(matrix);

@@ -16,6 +16,11 @@ struct StaticEquilibrium {
   double unbalanced_force = 0.0;  // ||f - K u - B^T F|| at the solution [F]
 };
 
+// A DOF that nothing holds at rest (a backwall behind open backfill, held only when the joint
+// closes) has a zero diagonal: 1e-12 of the largest one there keeps the tangent regular, and
+// the DOF stays where it is unless a load acts on it (then the contact it moves into holds it).
+void hold_unheld_dofs(Eigen::SparseMatrix<double>& tangent);
+
 StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
                                      double relative_tolerance = 1e-10, int max_iterations = 50);
 

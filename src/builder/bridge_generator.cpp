@@ -110,6 +110,7 @@ std::string add_pier_base(const Bridge& bridge, int pier, ModelSpec& out) {
   out.supports.push_back({hinge, true, true, false});
   LinkSpec link = make_link(hinge, hinge, base, {1.0, 0.0}, 0.0, pier_hinge(spec).law);
   link.rotational = true;
+  link.axis.reset();  // a hinge acts on theta_i - theta_j
   out.links.push_back(link);
   return hinge;
 }

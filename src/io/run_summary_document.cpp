@@ -19,8 +19,8 @@ Document link_document(const results::LinkResult& link) {
   if (link.yield_deformation) {  // a yielding law: its demand and what it dissipated
     doc.set("yield_deformation", *link.yield_deformation)
         .set("peak_deformation", link.peak_deformation())
-        .set("residual_deformation", s.final_deformation)
-        .set("ductility", *link.ductility());
+        .set("residual_deformation", s.final_deformation);
+    if (const std::optional<double> ductility = link.ductility()) doc.set("ductility", *ductility);
     if (const std::optional<double> energy = link.hysteretic_energy())
       doc.set("hysteretic_energy", *energy);
   }

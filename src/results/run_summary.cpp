@@ -165,7 +165,7 @@ std::optional<double> DriftResult::elastic_demand_ratio() const {
 }
 
 std::optional<double> LinkResult::ductility() const {
-  if (!yield_deformation) return std::nullopt;
+  if (!yield_deformation || rotational) return std::nullopt;
   return peak_deformation() / *yield_deformation;
 }
 

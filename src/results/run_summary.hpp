@@ -70,7 +70,8 @@ struct LinkResult {
   double peak_deformation() const {
     return std::max(summary.peak_penetration, summary.peak_opening);
   }
-  // peak |delta| / delta_y.
+  // peak |delta| / delta_y; none for a hinge, whose elastic rotation is the numerical stiffness's
+  // (the member's ductility is its drift monitor's).
   std::optional<double> ductility() const;
   // Energy the law dissipated: its work less the elastic energy F^2 / (2 k_0) it still holds.
   std::optional<double> hysteretic_energy() const;

@@ -1,0 +1,128 @@
+// girder_bridge pier hinges: the hinged pier keeps the elastic pier's lateral stiffness (the
+// (n + 1) / n rule), its drift monitor yields at M_y h^2 / (3 E I) and calls the ratio a
+// ductility; an elastic pier's ratio is only a demand; what the generator sets may not be given.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "assembly/pushover.hpp"
+#include "builder/build.hpp"
+#include "core/errors.hpp"
+#include "io/model_reader.hpp"
+
+namespace pound::builder {
+namespace {
+
+using Json = nlohmann::json;
+
+// The bundled three-span bridge, its record left out, with `edit` applied to its generator.
+Json bridge(const std::function<void(Json&)>& edit = {}) {
+  std::ifstream file(std::string(POUND_SOURCE_DIR) + "/models/three_span_bridge.json");
+  Json model = Json::parse(file);
+  model.erase("excitations");
+  model["analysis"]["duration"] = 1.0;
+  if (edit) edit(model["generators"][0]);
+  return model;
+}
+
+void add_hinges(Json& generator) {
+  generator.erase("pier_yield_drift");
+  generator["pier_hinge"] = {{"yield_moment", 4.0e6},
+                             {"law", {{"type", "bilinear_spring"}, {"hardening_ratio", 0.02}}}};
+}
+
+BuiltModel built(const Json& model) { return build(io::parse_model(model.dump(), "bridge.json")); }
+
+// The lateral stiffness at a pier top, from one small elastic push.
+double pier_top_stiffness(const BuiltModel& model) {
+  assembly::StructuralSystem system(model.model);
+  assembly::PushoverControl control{
+      .equation = system.dofs().equation(model.node_index.at("bridge.p1.top"), 0),
+      .target = 1e-5,
+      .increments = 1};
+  control.pattern = Vector::Zero(system.size());
+  control.pattern[control.equation] = 1.0;
+  const auto result = assembly::pushover(system, Vector::Zero(system.size()), control);
+  EXPECT_TRUE(result.stopped.empty()) << result.stopped;
+  return result.curve.back().load_factor / result.curve.back().displacement;
+}
+
+TEST(PierHinge, KeepsTheElasticPiersLateralStiffness) {
+  const double elastic = pier_top_stiffness(built(bridge()));
+  const double hinged = pier_top_stiffness(built(bridge(add_hinges)));
+  const double error = std::abs(hinged / elastic - 1);
+  std::cout << "pier-top stiffness: elastic " << elastic << ", hinged " << hinged
+            << ", relative difference " << error << "\n";
+  EXPECT_LT(error, 1e-9);
+}
+
+TEST(PierHinge, TheDriftMonitorYieldsWhereTheHingeDoes) {
+  const BuiltModel hinged = built(bridge(add_hinges));
+  const double ei = 3.0e10 * 0.8, h = 8.0;
+  ASSERT_EQ(hinged.drift_monitors.size(), 2u);
+  for (const DriftMonitor& monitor : hinged.drift_monitors) {
+    EXPECT_TRUE(monitor.yields);
+    EXPECT_NEAR(*monitor.yield_drift, 4.0e6 * h * h / (3 * ei), 1e-15);
+  }
+  const BuiltModel elastic = built(bridge());
+  EXPECT_FALSE(elastic.drift_monitors[0].yields);  // pier_yield_drift: a demand, not a ductility
+  EXPECT_EQ(*elastic.drift_monitors[0].yield_drift, 0.04);
+  // The hinge links exist and act on rotations, with the generator's numbers.
+  const auto& link = hinged.model.links[hinged.link_index.at("bridge.p1.hinge")];
+  EXPECT_TRUE(link.rotational);
+  EXPECT_NEAR(*link.make_law({})->yield_deformation(), 4.0e6 / (11 * 3 * ei / h), 1e-18);
+}
+
+TEST(PierHinge, AYieldCurvatureGivesTheYieldMoment) {
+  const BuiltModel model = built(bridge([](Json& generator) {
+    add_hinges(generator);
+    generator["pier_hinge"].erase("yield_moment");
+    generator["pier_hinge"]["yield_curvature"] = 2.0e-4;
+    generator["pier_hinge"]["plastic_hinge_length"] = 0.8;
+  }));
+  // M_y = E I phi_y = 4.8e6 N m.
+  EXPECT_NEAR(*model.drift_monitors[0].yield_drift, 4.8e6 * 64 / (3 * 2.4e10), 1e-15);
+}
+
+void expect_refused(const Json& model, const std::string& path, const std::string& words) {
+  try {
+    built(model);
+    FAIL() << "accepted; expected an error at " << path;
+  } catch (const InputError& error) {
+    std::cout << error.what() << "\n";
+    EXPECT_NE(std::string(error.what()).find("bridge.json: " + path), std::string::npos);
+    EXPECT_NE(std::string(error.what()).find(words), std::string::npos);
+  }
+}
+
+TEST(PierHinge, BadHingesAreRefusedAtTheirPath) {
+  expect_refused(bridge([](Json& g) {
+                   add_hinges(g);
+                   g["pier_hinge"]["law"]["stiffness"] = 1e9;
+                 }),
+                 "/generators/0/pier_hinge/law/stiffness", "set by the generator");
+  expect_refused(bridge([](Json& g) {
+                   add_hinges(g);
+                   g["pier_hinge"]["yield_curvature"] = 1e-4;
+                 }),
+                 "/generators/0/pier_hinge", "either 'yield_moment' or 'yield_curvature'");
+  expect_refused(bridge([](Json& g) {
+                   add_hinges(g);
+                   g["pier_yield_drift"] = 0.04;
+                 }),
+                 "/generators/0/pier_yield_drift", "not with 'pier_hinge'");
+  Json one_d = Json::parse(R"({"nodes": [{"id": "a", "x": 0}], "masses": [{"node": "a", "mass": 1}],
+    "gravity": {}, "analysis": {"time_step": 0.1, "duration": 1}})");
+  try {
+    build(io::parse_model(one_d.dump(), "bridge.json"));
+    FAIL() << "gravity accepted in 1-D";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("/gravity"), std::string::npos) << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace pound::builder
