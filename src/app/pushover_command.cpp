@@ -35,6 +35,7 @@ acceleration (mass), or the masses times their height above the lowest node (tri
 scaled so that the load factor is the base shear. Writes into DIR (default out/<model name>):
   pushover.csv   control displacement, base shear, and the deformation of every yielding link
   pushover.json  initial stiffness, first yield, peak base shear, final slope
+(`python3 tools/plot_pushover.py DIR` draws the curve: pushover.png)
 A push that cannot reach D (a mechanism) writes the curve up to there and exits with code 3.
 
 options)";
