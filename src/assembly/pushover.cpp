@@ -63,10 +63,7 @@ class BorderedNewton {
 
   Eigen::SparseMatrix<double> bordered_tangent() const {
     const Index n = system_.size();
-    Eigen::SparseMatrix<double> structure =
-        system_.stiffness() +
-        Eigen::SparseMatrix<double>(b_.transpose() * tangent_.sparseView() * b_);
-    hold_unheld_dofs(structure);
+    const Eigen::SparseMatrix<double> structure = static_tangent(system_, tangent_);
     std::vector<Eigen::Triplet<double>> entries;
     entries.reserve(static_cast<std::size_t>(structure.nonZeros() + 2 * n + 1));
     for (Index col = 0; col < structure.outerSize(); ++col)

@@ -18,6 +18,17 @@ void hold_unheld_dofs(Eigen::SparseMatrix<double>& tangent) {
     if (tangent.coeff(i, i) == 0.0) tangent.coeffRef(i, i) = 1e-12 * largest;
 }
 
+Eigen::SparseMatrix<double> static_tangent(const StructuralSystem& system,
+                                           const Matrix& link_tangent) {
+  const Eigen::SparseMatrix<double>& b = system.links().connectivity();
+  Eigen::SparseMatrix<double> tangent =
+      system.stiffness() +
+      Eigen::SparseMatrix<double>(b.transpose() * link_tangent.sparseView() * b);
+  hold_unheld_dofs(tangent);
+  tangent.makeCompressed();
+  return tangent;
+}
+
 StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
                                      double relative_tolerance, int max_iterations) {
   const Index n = system.size();
@@ -80,13 +91,8 @@ StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
                                            "(unbalanced force {:.3g} of {:.3g})",
                                            max_iterations, 100 * increment / increments,
                                            result.unbalanced_force, scale));
-      Eigen::SparseMatrix<double> matrix =
-          system.stiffness() +
-          Eigen::SparseMatrix<double>(b.transpose() * tangent.sparseView() * b);
-      hold_unheld_dofs(matrix);
-      matrix.makeCompressed();
       Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
-      solver.compute(matrix);
+      solver.compute(static_tangent(system, tangent));
       if (solver.info() != Eigen::Success) throw mechanism();
       const Vector correction = solver.solve(residual);
       if (!correction.allFinite()) throw mechanism();

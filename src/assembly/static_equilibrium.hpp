@@ -21,6 +21,11 @@ struct StaticEquilibrium {
 // the DOF stays where it is unless a load acts on it (then the contact it moves into holds it).
 void hold_unheld_dofs(Eigen::SparseMatrix<double>& tangent);
 
+// K + B^T (dF/d delta) B with its unheld DOFs held: the static tangent at the links' trial state
+// (`link_tangent` as LinkSet::set_trial gives it).
+Eigen::SparseMatrix<double> static_tangent(const StructuralSystem& system,
+                                           const Matrix& link_tangent);
+
 StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
                                      double relative_tolerance = 1e-10, int max_iterations = 50);
 

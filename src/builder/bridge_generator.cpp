@@ -99,27 +99,30 @@ PierHinge pier_hinge(const GirderBridgeSpec& spec) {
 }
 
 // The pier's lowest node: the base support, or above it the hinge's free end.
-std::string add_pier_base(const Bridge& bridge, int pier, ModelSpec& out) {
+std::string add_pier_base(const Bridge& bridge, int pier, const std::optional<PierHinge>& hinge,
+                          ModelSpec& out) {
   const GirderBridgeSpec& spec = bridge.spec;
   const std::string base = fmt::format("{}.p{}.base", spec.id, pier);
   out.nodes.push_back({base, bridge.x[pier], 0.0});
   out.supports.push_back({base, true, true, true});
-  if (!spec.pier_hinge) return base;
-  const std::string hinge = fmt::format("{}.p{}.hinge", spec.id, pier);
-  out.nodes.push_back({hinge, bridge.x[pier], 0.0});
-  out.supports.push_back({hinge, true, true, false});
-  LinkSpec link = make_link(hinge, hinge, base, {1.0, 0.0}, 0.0, pier_hinge(spec).law);
+  if (!hinge) return base;
+  const std::string node = fmt::format("{}.p{}.hinge", spec.id, pier);
+  out.nodes.push_back({node, bridge.x[pier], 0.0});
+  out.supports.push_back({node, true, true, false});
+  LinkSpec link = make_link(node, node, base, {1.0, 0.0}, 0.0, hinge->law);
   link.rotational = true;
   link.axis.reset();  // a hinge acts on theta_i - theta_j
   out.links.push_back(link);
-  return hinge;
+  return node;
 }
 
 // A pier, fixed at the base (or on its hinge); its top is the seat of the girder nodes above.
 void add_pier(const Bridge& bridge, int pier, ModelSpec& out) {
   const GirderBridgeSpec& spec = bridge.spec;
   const std::string base = fmt::format("{}.p{}.base", spec.id, pier), top = pier_top(spec, pier);
-  std::string previous = add_pier_base(bridge, pier, out);
+  const std::optional<PierHinge> hinge =
+      spec.pier_hinge ? std::optional(pier_hinge(spec)) : std::nullopt;
+  std::string previous = add_pier_base(bridge, pier, hinge, out);
   const SectionSpec section = pier_section(spec);
   for (int e = 1; e <= spec.pier.elements; ++e) {
     const std::string node =
@@ -130,9 +133,9 @@ void add_pier(const Bridge& bridge, int pier, ModelSpec& out) {
     previous = node;
   }
   const std::optional<double> yield_drift =
-      spec.pier_hinge ? std::optional(pier_hinge(spec).yield_displacement) : spec.pier_yield_drift;
+      hinge ? std::optional(hinge->yield_displacement) : spec.pier_yield_drift;
   out.drift_monitors.push_back({fmt::format("{}.p{}", spec.id, pier), DriftKind::pier, spec.id,
-                                base, top, bridge.deck, yield_drift, spec.pier_hinge.has_value()});
+                                base, top, bridge.deck, yield_drift, hinge.has_value()});
 }
 
 // Where the girder is cut, as span numbers: 0 and the last at the abutments, and the expansion

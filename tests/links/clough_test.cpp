@@ -15,6 +15,7 @@
 #include "builder/build.hpp"
 #include "core/errors.hpp"
 #include "io/model_reader.hpp"
+#include "support/law_models.hpp"
 
 namespace pound::links {
 namespace {
@@ -190,22 +191,7 @@ TEST(Clough, SymmetricCyclesDissipateTheClosedFormLoopAreas) {
 }
 
 TEST(Clough, BadNumbersAreInputErrorsNamingTheirPath) {
-  const auto error_of = [](const std::string& law) -> std::optional<InputError> {
-    const std::string model = fmt::format(R"({{
-      "nodes": [{{"id": "deck", "x": 0.0}}, {{"id": "pier", "x": 0.0}}],
-      "masses": [{{"node": "deck", "mass": 1e5}}],
-      "supports": [{{"node": "pier", "fix": ["x"]}}],
-      "links": [{{"id": "hinge", "nodes": ["deck", "pier"], "axis": [1], "law": {}}}],
-      "analysis": {{"time_step": 0.01, "duration": 1}}
-    }})",
-                                          law);
-    try {
-      (void)builder::build(io::parse_model(model, "m.json"));
-    } catch (const InputError& error) {
-      return error;
-    }
-    return std::nullopt;
-  };
+  const auto error_of = testing::law_model_error;
   const auto unloading = error_of(
       R"({"type": "clough", "stiffness": 100, "yield_force": 3, "unloading_exponent": 1})");
   ASSERT_TRUE(unloading);

@@ -18,6 +18,7 @@
 #include "core/errors.hpp"
 #include "io/model_reader.hpp"
 #include "links/law_registry.hpp"
+#include "support/law_models.hpp"
 
 namespace pound::links {
 namespace {
@@ -289,24 +290,6 @@ TEST(Takeda, RandomWalksStayInsideTheSkeleton) {
   }
 }
 
-// A model with one link of this law, read and built as `pound run` does.
-std::optional<InputError> model_error(const std::string& law) {
-  const std::string model = fmt::format(R"({{
-    "nodes": [{{"id": "deck", "x": 0.0}}, {{"id": "pier", "x": 0.0}}],
-    "masses": [{{"node": "deck", "mass": 1e5}}],
-    "supports": [{{"node": "pier", "fix": ["x"]}}],
-    "links": [{{"id": "hinge", "nodes": ["deck", "pier"], "axis": [1], "law": {}}}],
-    "analysis": {{"time_step": 0.01, "duration": 1}}
-  }})",
-                                        law);
-  try {
-    (void)builder::build(io::parse_model(model, "m.json"));
-  } catch (const InputError& error) {
-    return error;
-  }
-  return std::nullopt;
-}
-
 TEST(Takeda, BadNumbersAreInputErrorsNamingTheirPath) {
   struct Bad {
     std::string law, where, phrase;
@@ -328,14 +311,15 @@ TEST(Takeda, BadNumbersAreInputErrorsNamingTheirPath) {
        "'yield_deformation' needs 'cracking_force'"},
   };
   for (const Bad& bad : cases) {
-    const std::optional<InputError> error = model_error("{" + bad.law + "}");
+    const std::optional<InputError> error = testing::law_model_error("{" + bad.law + "}");
     ASSERT_TRUE(error) << "accepted: " << bad.law;
     std::cout << error->what() << "\n";
     EXPECT_EQ(error->file(), "m.json");
     EXPECT_EQ(error->where(), bad.where) << error->what();
     EXPECT_NE(error->reason().find(bad.phrase), std::string::npos) << error->what();
   }
-  EXPECT_FALSE(model_error("{" + base + R"(, "cracking_force": 1, "yield_deformation": 0.05})"));
+  EXPECT_FALSE(testing::law_model_error("{" + base +
+                                        R"(, "cracking_force": 1, "yield_deformation": 0.05})"));
   EXPECT_THROW(Takeda({.stiffness = 100, .cracking_force = 3, .yield_force = 3}),
                std::invalid_argument);
 }
