@@ -49,7 +49,7 @@ Vector Truss::end_forces(const Vector& u) const {
 // The string stiffness N / L across the bar (both kinds: a bar has no curvature), 2-D only.
 Matrix Truss::geometric_stiffness(const Vector& u, model::GeometricStiffness) const {
   if (dimension_ == 1) return {};
-  const double string = end_forces(u)[0] / axis_.length;
+  const double string = section_.axial_force.value_or(end_forces(u)[0]) / axis_.length;
   const double across[2] = {-axis_.cosines[1], axis_.cosines[0]};
   Matrix k(4, 4);
   for (Index p = 0; p < 4; ++p)

@@ -10,6 +10,7 @@
 // structural analysis, e.g. Przemieniecki, "Theory of Matrix Structural Analysis" (1968),
 // chapter 5 (stiffness) and chapter 11 (lumped mass).
 #include <array>
+#include <optional>
 
 #include "model/element.hpp"
 
@@ -21,6 +22,9 @@ class Truss final : public model::Element {
     double youngs_modulus = 0.0;  // E [F/L^2]
     double area = 0.0;            // A [L^2]
     double density = 0.0;         // rho [M/L^3]
+    // The axial force [F] (tension +) of the geometric stiffness, instead of the one u gives: a
+    // leaning column whose ends the model holds vertically still carries the weight above it.
+    std::optional<double> axial_force;
   };
   // `dimension` 1 (y ignored) or 2; the ends are apart (the builder checks the length).
   Truss(std::string id, const std::array<model::ElementNode, 2>& ends, int dimension,

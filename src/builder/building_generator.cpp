@@ -114,7 +114,50 @@ std::vector<std::string> add_column_cuts(const Building& building, std::size_t s
   return chain;
 }
 
-// Storey s (from 0): its floor with the floor's mass, its column and its drift monitor.
+// A yielding storey's shear link between its floors: the user's law with the storey's
+// stiffness, drift positive when the upper floor moves along +x; beside it, with "initial"
+// storey damping, the dashpot a1 k0 its column would have given. Returns its yield drift.
+std::optional<double> add_storey_link(const Building& building, std::size_t s, ModelSpec& out) {
+  const StoreySpec& storey = building.spec.storeys[s];
+  const std::string id = storey_id(building, s);
+  const std::string top = floor_node_id(building, s + 1), bottom = floor_node_id(building, s);
+  LawSpec law = *storey.law;
+  law.parameters["stiffness"] = storey.stiffness;
+  out.links.push_back(make_link(id, top, bottom, {1.0, 0.0}, 0.0, law));
+  if (building.rayleigh && building.spec.storey_damping == StoreyDamping::initial) {
+    const LawSpec dashpot{
+        .type = "viscous_damper",
+        .parameters = {{"coefficient", (*building.rayleigh)[1] * storey.stiffness}}};
+    out.links.push_back(make_link(id + ".damping", top, bottom, {1.0, 0.0}, 0.0, dashpot));
+  }
+  const std::string path = fmt::format("/generators/{}/{}/storeys/{}/law",
+                                       building.pair.generator_index, kPairSides[building.side], s);
+  return links::make_law(law, {out.source, path})(links::LinkContext{})->yield_deformation();
+}
+
+// The weight above storey s on a pin-ended leaning column between its floors, whose geometric
+// stiffness -P/h on the storey drift is the storey's P-Delta: the storey columns cannot carry it
+// (the floors are held vertically, so the gravity analysis gives them no axial force).
+void add_leaning_column(const Building& building, std::size_t s, ModelSpec& out) {
+  if (!out.gravity || out.gravity->p_delta == PDeltaKind::none) return;
+  const double downward =
+      -out.gravity->direction[1] * out.gravity->acceleration.value_or(out.units.gravity());
+  double weight = 0.0;
+  for (std::size_t above = s; above < building.spec.storeys.size(); ++above)
+    weight += building.spec.storeys[above].mass * downward;
+  if (!(weight > 0.0)) return;
+  ElementSpec column{.id = storey_id(building, s) + ".leaning",
+                     .type = ElementKind::truss,
+                     .node_i = floor_node_id(building, s),
+                     .node_j = floor_node_id(building, s + 1),
+                     .material = building.material,
+                     .area = 1.0,
+                     .axial_force = -weight};
+  out.elements.push_back(column);
+}
+
+// Storey s (from 0): its floor with the floor's mass, its column (or its shear link) and its
+// drift monitor.
 void add_storey(const Building& building, std::size_t s, const std::vector<double>& contacts,
                 ModelSpec& out) {
   const StoreySpec& storey = building.spec.storeys[s];
@@ -126,15 +169,21 @@ void add_storey(const Building& building, std::size_t s, const std::vector<doubl
       building.rayleigh ? std::optional<double>((*building.rayleigh)[0]) : std::nullopt;
   out.masses.push_back({floor, storey.mass, 0.0, mass_damping});
   const std::vector<std::string> chain = add_column_cuts(building, s, contacts, out);
-  const double inertia = storey.stiffness * std::pow(storey.height, 3) / 12.0;  // E = 1
-  for (std::size_t c = 0; c + 1 < chain.size(); ++c) {
-    ElementSpec column = make_beam(fmt::format("{}.c{}", storey_id(building, s), c), chain[c],
-                                   chain[c + 1], building.material, 1.0, inertia);
-    column.rayleigh = building.rayleigh;
-    out.elements.push_back(column);
+  std::optional<double> yield_drift;
+  if (storey.law) {
+    yield_drift = add_storey_link(building, s, out);  // the reader left it no cuts
+  } else {
+    const double inertia = storey.stiffness * std::pow(storey.height, 3) / 12.0;  // E = 1
+    for (std::size_t c = 0; c + 1 < chain.size(); ++c) {
+      ElementSpec column = make_beam(fmt::format("{}.c{}", storey_id(building, s), c), chain[c],
+                                     chain[c + 1], building.material, 1.0, inertia);
+      column.rayleigh = building.rayleigh;
+      out.elements.push_back(column);
+    }
   }
+  add_leaning_column(building, s, out);
   out.drift_monitors.push_back({storey_id(building, s), DriftKind::storey, building.name,
-                                chain.front(), floor, storey.height, std::nullopt});
+                                chain.front(), floor, storey.height, yield_drift});
 }
 
 void add_building(const Building& building, const std::vector<double>& contacts, ModelSpec& out) {

@@ -98,7 +98,8 @@ std::shared_ptr<const model::Element> make_two_node(const Scene& scene, const El
       element.id, ends, scene.model.dimension,
       assembly::Truss::Section{.youngs_modulus = material.youngs_modulus,
                                .area = element.area,
-                               .density = material.density},
+                               .density = material.density,
+                               .axial_force = element.axial_force},
       damping);
 }
 

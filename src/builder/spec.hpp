@@ -52,6 +52,9 @@ struct ElementSpec {
   std::vector<std::string> more_nodes;  // quad: the third and fourth (counter-clockwise)
   double thickness = 0.0;               // quad [L], > 0
   bool plane_strain = false;            // quad: "plane": "strain" (default "stress")
+  // truss: the axial force [F] (tension +) of its geometric stiffness, in place of the gravity
+  // analysis's: a leaning column whose ends the model holds vertically (adjacent_buildings).
+  std::optional<double> axial_force;
 };
 
 struct MassSpec {
@@ -211,14 +214,23 @@ struct RodPairSpec {
 // (floor nodes move in x only), storey stiffness k as a column with E I = k h^3 / 12 between
 // floors whose rotations are fixed. Pounding links join the buildings at every height where a
 // floor of either meets the other (floor to floor, or floor to column mid-height).
+// A yielding storey: `law` is its storey shear-drift law (a spring law whose `stiffness` the
+// storey's own sets), a shear link between its floors in place of its column. The floors of the
+// other building must meet it at its own floors (a link has no column to hit mid-height).
 struct StoreySpec {
   double height = 0.0;     // [L]
   double mass = 0.0;       // floor mass [M]
   double stiffness = 0.0;  // lateral storey stiffness [F/L]
+  std::optional<LawSpec> law;
 };
+// What a yielding storey's link adds to the building's stiffness-proportional damping a1 K:
+// initial, a linear dashpot a1 k0 beside it (the elastic building's damping, whatever the
+// law's state); none.
+enum class StoreyDamping { initial, none };
 struct BuildingSpec {
   std::vector<StoreySpec> storeys;  // from the ground up
   double damping_ratio = 0.0;       // Rayleigh on the building's own modes 1 and 2 (0: none)
+  StoreyDamping storey_damping = StoreyDamping::initial;
 };
 struct AdjacentBuildingsSpec {
   std::string id;

@@ -43,9 +43,13 @@ LawSpec read_law(JsonObject& object, LawPlace place) {
   LawSpec law;
   law.type = object.one_of("type", links::law_names());
   const links::LawEntry& type = *links::find_law(law.type);
-  const auto generated = [place](const std::string& name) {
-    return place == LawPlace::pier_hinge &&
-           std::ranges::find(kGeneratedHingeParameters, name) != kGeneratedHingeParameters.end();
+  const std::vector<std::string> no_parameters;
+  const std::vector<std::string>& generated_parameters =
+      place == LawPlace::pier_hinge ? kGeneratedHingeParameters
+      : place == LawPlace::storey   ? kGeneratedStoreyParameters
+                                    : no_parameters;
+  const auto generated = [&generated_parameters](const std::string& name) {
+    return std::ranges::find(generated_parameters, name) != generated_parameters.end();
   };
   for (const std::string& name : type.required)
     if (!generated(name)) (void)object.at(name);
@@ -53,9 +57,10 @@ LawSpec read_law(JsonObject& object, LawPlace place) {
     const std::optional<JsonValue> value = object.find(parameter.name);
     if (!value) continue;
     if (generated(parameter.name))
-      value->fail(
-          "set by the generator (the hinge's elastic stiffness and its yield moment): leave it "
-          "out");
+      value->fail(place == LawPlace::storey
+                      ? "the storey's own `stiffness` sets it: leave it out"
+                      : "set by the generator (the hinge's elastic stiffness and its yield "
+                        "moment): leave it out");
     const double number = value->as<double>(lower_bound(parameter.range));
     if (parameter.range == Range::restitution && number > 1.0)
       value->fail(fmt::format("must be <= 1 (a coefficient of restitution), got {}", number));
@@ -63,7 +68,7 @@ LawSpec read_law(JsonObject& object, LawPlace place) {
       value->fail(fmt::format("must be < 1, got {}", number));
     if (parameter.range == Range::unit && number > 1.0)
       value->fail(fmt::format("must be <= 1, got {}", number));
-    if (parameter.generator_only && place == LawPlace::link)
+    if (parameter.generator_only && place != LawPlace::rod_pair)
       value->fail("only allowed inside a rod_pair generator");
     law.parameters[parameter.name] = number;
   }
@@ -79,7 +84,7 @@ LawSpec read_law(JsonObject& object, LawPlace place) {
                       : fmt::format("give only one of {}", quoted_list(group)));
     if (count == 0) {
       std::vector<std::string> allowed = group;
-      if (place == LawPlace::link)
+      if (place != LawPlace::rod_pair)
         std::erase_if(allowed, [&type](const std::string& name) {
           return type.parameter(name)->generator_only;
         });

@@ -103,6 +103,7 @@ const Fields<MaterialSpec>& material_fields() {
 
 bool is_beam(const ElementSpec& element) { return element.type == builder::ElementKind::beam; }
 bool is_quad(const ElementSpec& element) { return element.type == builder::ElementKind::quad; }
+bool is_truss(const ElementSpec& element) { return element.type == builder::ElementKind::truss; }
 
 // Two nodes, or four counter-clockwise for a quad; the struct keeps the first two apart.
 Field<ElementSpec> element_nodes() {
@@ -168,6 +169,11 @@ const Fields<ElementSpec>& element_fields() {
                 "beam and quad"),
       optional("damping", &ElementSpec::rayleigh, Object<Coefficients>{rayleigh_fields()},
                "its own Rayleigh coefficients instead of the model's"),
+      optional("axial_force", &ElementSpec::axial_force, Number<>{},
+               "with gravity P-Delta: the axial force N of its geometric stiffness, tension + "
+               "(a leaning column whose ends are held vertically carries the weight above it) "
+               "[F]")
+          .when(is_truss, "truss only"),
   };
   return fields;
 }
@@ -383,6 +389,9 @@ const Fields<StoreySpec>& storey_fields() {
       required("mass", &StoreySpec::mass, Number<>{positive}, "floor mass [M]"),
       required("stiffness", &StoreySpec::stiffness, Number<>{positive},
                "lateral storey stiffness k [F/L]"),
+      optional("law", &StoreySpec::law, Law{LawPlace::storey},
+               "a yielding storey: its shear–drift law, a spring law without `stiffness` (the "
+               "storey's)"),
   };
   return fields;
 }
@@ -395,8 +404,50 @@ const Fields<BuildingSpec>& building_fields() {
           .always_written(),
       required("storeys", &BuildingSpec::storeys, Objects<StoreySpec>{storey_fields(), 1},
                "from the ground up"),
+      optional("storey_damping", &BuildingSpec::storey_damping,
+               Choice<builder::StoreyDamping>{{{"initial", builder::StoreyDamping::initial},
+                                               {"none", builder::StoreyDamping::none}}},
+               "the stiffness-proportional damping of its yielding storeys: a1 times their "
+               "initial stiffness (a linear dashpot beside the law), or none"),
   };
   return fields;
+}
+
+// A storey law is a spring law in place of the storey's column, so nothing may hit the storey
+// between its floors: a floor of the other building there needs the column (docs/model_format.md).
+void check_storey_laws(JsonObject& object, const AdjacentBuildingsSpec& pair) {
+  const std::array<const BuildingSpec*, 2> buildings{&pair.left, &pair.right};
+  std::array<std::vector<double>, 2> floors;
+  for (std::size_t side = 0; side < 2; ++side) {
+    floors[side] = {0.0};
+    for (const StoreySpec& storey : buildings[side]->storeys)
+      floors[side].push_back(floors[side].back() + storey.height);
+  }
+  const double top = std::min(floors[0].back(), floors[1].back());
+  for (std::size_t side = 0; side < 2; ++side)
+    for (std::size_t s = 0; s < buildings[side]->storeys.size(); ++s) {
+      const std::optional<links::LawSpec>& law = buildings[side]->storeys[s].law;
+      if (!law) continue;
+      const auto where = [&] {
+        return JsonObject(JsonObject(object.at(side == 0 ? "left" : "right")).array("storeys")[s])
+            .at("law");
+      };
+      const links::LawEntry& entry = *links::find_law(law->type);
+      if (entry.traits.role != links::LinkRole::spring || !entry.parameter("stiffness"))
+        where().fail(
+            fmt::format("'{}' cannot be a storey's shear–drift law: give a spring law "
+                        "with a stiffness (bilinear_spring, takeda, clough, bouc_wen, "
+                        "elastic_perfectly_plastic, elastic_spring...)",
+                        law->type));
+      const double bottom = floors[side][s], upper = floors[side][s + 1];
+      for (double h : floors[1 - side])
+        if (h > bottom * (1 + 1e-12) && h < upper * (1 - 1e-12) && h <= top * (1 + 1e-12))
+          where().fail(fmt::format(
+              "the {} building's floor at {:g} meets this storey between its floors ({:g} to "
+              "{:g}): a yielding storey is a shear link with no column to hit there; give the "
+              "two buildings floors at the same heights here, or leave this storey elastic",
+              side == 0 ? "right" : "left", h, bottom, upper));
+    }
 }
 
 const Fields<AdjacentBuildingsSpec>& adjacent_buildings_fields() {
@@ -408,6 +459,9 @@ const Fields<AdjacentBuildingsSpec>& adjacent_buildings_fields() {
       required("right", &AdjacentBuildingsSpec::right, building, "the right building"),
       required("separation", &AdjacentBuildingsSpec::separation, Number<>{non_negative},
                "clear gap between the facades [L]"),
+      rule<AdjacentBuildingsSpec>([](JsonObject& object, AdjacentBuildingsSpec& pair, Context&) {
+        check_storey_laws(object, pair);
+      }),
       required("law", &AdjacentBuildingsSpec::law, Law{}, "pounding law of every link"),
   };
   return fields;

@@ -27,10 +27,12 @@ std::vector<FieldDoc> model_field_docs();
 // Where a contact law is given: a stiffness_ratio refers to the elements next to the contact,
 // which only a rod_pair generator knows.
 // Where a law object is: a link's, a rod_pair generator's (which may scale the stiffness by its
-// elements), or a girder_bridge pier hinge's (the generator sets the elastic stiffness and the
-// yield moment: kGeneratedHingeParameters must be left out).
-enum class LawPlace { link, rod_pair, pier_hinge };
+// elements), a girder_bridge pier hinge's (the generator sets the elastic stiffness and the
+// yield moment: kGeneratedHingeParameters must be left out) or an adjacent_buildings storey's
+// (its stiffness is the storey's).
+enum class LawPlace { link, rod_pair, pier_hinge, storey };
 inline const std::vector<std::string> kGeneratedHingeParameters{"stiffness", "yield_force"};
+inline const std::vector<std::string> kGeneratedStoreyParameters{"stiffness"};
 
 builder::LawSpec read_law_in(const JsonValue& value, LawPlace place);
 OrderedJson law_json(const builder::LawSpec& law);

@@ -14,7 +14,8 @@
 //  2. Unloading: a reversal at a point T on the skeleton or on a reloading line unloads on a
 //     straight line from T of slope k_u = k (d_y / d_p)^alpha, d_p the peak of side s (alpha = 0,
 //     the default, is Clough's elastic unloading with k; alpha > 0 degrades it as Takeda's),
-//     never softer than the secant F_T / d_T nor than the reloading line T is on; it reaches
+//     never softer than the secant F_T / d_T (T on the skeleton) nor than the reloading line T
+//     is on; it reaches
 //     zero force at d_0 = d_T - F_T / k_u.
 //  3. Inner loops: an unloading line reversed before zero force retraces itself to T and then
 //     continues on the branch T was on (skeleton, or the reloading line toward its target).

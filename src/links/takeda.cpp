@@ -183,8 +183,12 @@ void Takeda::along_unloading(State& state, double goal, int direction) const {
 void Takeda::start_unloading(State& state) const {
   const int side = sign_of(state.force);
   double slope = unloading_stiffness(state, side);
-  if (state.deformation * side > 0.0) slope = std::max(slope, state.force / state.deformation);
   state.departed_skeleton = state.branch == Branch::skeleton;
+  // From the skeleton the secant (at most k0) keeps zero force on T's side of the origin; from a
+  // reloading line its own slope keeps it past the line's start, and a secant to the origin
+  // there would grow without bound near d = 0 (OpenSees' Hysteretic unloads at k0 there).
+  if (state.departed_skeleton && state.deformation * side > 0.0)
+    slope = std::max(slope, state.force / state.deformation);
   if (!state.departed_skeleton) slope = std::max(slope, state.line.slope());
   state.departure = state.deformation;
   state.departure_force = state.force;

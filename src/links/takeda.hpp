@@ -29,10 +29,11 @@
 //                                      (Takeda's rule before yield);
 //       yielded:                       k_u = k_y (d_y / d_p)^alpha (Otani; alpha = 0.4 in
 //                                      Takeda et al. 1970);
-//     and never softer than the secant F_T / d_T to the origin (when d_T has the sign s) nor
+//     and never softer than the secant F_T / d_T to the origin when T is on the skeleton, nor
 //     than the reloading line T is on: so unloading reaches zero force at d_0 = d_T - F_T / k_u
 //     between the origin (or the start of that reloading line) and T. With the usual numbers
-//     (r small) the secant never governs.
+//     (r small) the secant never governs. (A secant to the origin from a reloading line would
+//     be unbounded near d = 0; OpenSees' Hysteretic unloads there at the elastic slope too.)
 //  3. Inner loops: an unloading line reversed before zero force retraces itself back to its
 //     departure point T (the point where it left the outer curve) and then continues on the
 //     outer branch T was on (skeleton, or the reloading line toward its target). Small cycles

@@ -6,7 +6,7 @@
 namespace pound::results {
 namespace {
 
-const std::array<BatchQuantity, 8> kQuantities = {{
+const std::array<BatchQuantity, 9> kQuantities = {{
     {"impacts", &CaseSummary::impacts,
      "engagements of the contact links (every law but springs, restrainers and hooks), summed "
      "over the links [-]",
@@ -29,6 +29,10 @@ const std::array<BatchQuantity, 8> kQuantities = {{
     {"max_ductility", &CaseSummary::max_ductility,
      "largest drift over yield drift of the storey and pier monitors that have one [-]",
      "peak displacement ductility [-]"},
+    {"max_residual_drift_ratio", &CaseSummary::max_residual_drift_ratio,
+     "largest |residual drift| over height at the end of the record, over the storey and pier "
+     "monitors [-]",
+     "residual drift ratio [-]"},
     {"energy_balance_error", &CaseSummary::energy_balance_error,
      "worst energy balance error over the run, as a fraction of the largest energy term [-]",
      "energy balance error [-]", false},

@@ -41,10 +41,11 @@ struct CaseSummary {
   std::optional<double> max_seat_movement;
   std::optional<double> min_unseating_margin;
   std::optional<bool> unseated;
-  // Over the storey and pier monitors: largest drift ratio and ductility demand.
+  // Over the storey and pier monitors: largest drift ratio, ductility demand and residual drift.
   std::optional<double> max_drift_ratio;
   std::optional<double> max_ductility;
-  std::optional<double> energy_balance_error;  // worst over the run
+  std::optional<double> max_residual_drift_ratio;  // |residual drift| over height, at the end
+  std::optional<double> energy_balance_error;      // worst over the run
   std::optional<double> run_time_s;  // of the solve; the one column that varies run to run
 };
 

@@ -245,6 +245,8 @@ void summarise_case(const RunSummary& run, CaseSummary& c) {
   }
   for (const DriftResult& drift : run.drifts) {
     c.max_drift_ratio = std::max(c.max_drift_ratio.value_or(0.0), drift.ratio());
+    c.max_residual_drift_ratio =
+        std::max(c.max_residual_drift_ratio.value_or(0.0), std::abs(drift.residual_ratio()));
     if (const std::optional<double> ductility = drift.ductility())
       c.max_ductility = std::max(c.max_ductility.value_or(0.0), *ductility);
   }

@@ -124,6 +124,20 @@ TEST(Clough, DegradedUnloadingFollowsTheExponent) {
   EXPECT_NEAR(law.set_trial(at(0.05)).force, expected, 1e-9 * kFy);
 }
 
+// Unloading from a reloading line just past the origin: at the elastic slope, as OpenSees'
+// Hysteretic does (a secant to the origin there was 49 k: found by the OpenSees fixtures).
+TEST(Clough, UnloadingNearTheOriginFromAReloadingLineIsElastic) {
+  Clough law(20.0, 100.0, 0.05);  // kN, mm
+  commit_at(law, 10.0);
+  // on the reloading line from d_0 = 4.75 toward (-5, -100)
+  const double force = commit_at(law, -0.05);
+  const LawResponse back = law.set_trial(at(0.5));
+  std::cout << "force at -0.05: " << force << ", unloading slope " << back.stiffness << "\n";
+  EXPECT_NEAR(force, -100.0 / 9.75 * 4.8, 1e-12);
+  EXPECT_NEAR(back.stiffness, 20.0, 1e-12);
+  EXPECT_NEAR(back.force, force + 20.0 * 0.55, 1e-12);  // -38.23, OpenSees' number
+}
+
 TEST(Clough, TrialsLeaveTheCommittedStateAndRevertRestoresIt) {
   Clough law(kK, kFy, kB);
   for (double delta : {0.06, -0.04, 0.03}) commit_at(law, delta);

@@ -36,12 +36,11 @@ constexpr double kRowStep = 0.1;            // rows every 0.1 d_y
 // side's reloading then aims at its yield point), reversals on reloading lines before their
 // target and after crossing zero force, partial unloadings reloaded inside a large cycle (inner
 // loops, with and without a zero-force crossing), growing amplitudes 0.5, 1, 2, 4, 5, 6 d_y and
-// a last excursion past every previous peak. The reversal after 2 d_y is at +0.5 d_y, past zero
-// force on the line toward the unyielded side's yield point: at -0.5 d_y pound's clough would
-// unload along its secant floor, a rule Hysteretic does not have
-// (tests/links/opensees_fixtures_test.cpp).
+// a last excursion past every previous peak. The reversal after 2 d_y is at -0.5 d_y, past zero
+// force on the line toward the unyielded side's yield point, where pound's clough once unloaded
+// along a secant to the origin (tests/links/opensees_fixtures_test.cpp).
 const std::vector<double> kTurningPoints = {
-    0.0,  0.5,  -0.5, 0.9,  -0.9, 2.0, 0.5,  1.0, -2.0, 4.0, 2.5,  3.5, 1.0,  3.0, 5.0,
+    0.0,  0.5,  -0.5, 0.9,  -0.9, 2.0, -0.5, 1.0, -2.0, 4.0, 2.5,  3.5, 1.0,  3.0, 5.0,
     -4.0, -2.0, -3.0, -1.0, -5.0, 6.0, -6.0, 3.0, 0.5,  2.0, -1.0, 0.5, -6.5, 0.0};
 
 std::vector<double> history() {

@@ -1,0 +1,91 @@
+// Cost of yielding storeys (issue 15): a 20-storey and a 15-storey building 5 cm apart, floors at
+// the same heights, with elastic storey columns against the same pair with Takeda storey links
+// (with their a1 k dashpots), gravity and chord P-Delta; the same record (the bundled
+// synthetic soft-ground record at PGA 0.4 g) and step. Counters: solve time per step of each (the
+// best of 5 runs, histories off), their ratio, and the link rows each iterates.
+#include <benchmark/benchmark.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "app/model_run.hpp"
+
+namespace {
+
+// One building's storeys: 3.2 m high, stiffness tapering up, yield shears from a base shear
+// coefficient over an inverted triangle when `yielding`.
+std::string storeys(int count, double mass, double base_stiffness, bool yielding) {
+  const double g = 9.80665, coefficient = 0.15;
+  double weighted = 0.0;
+  for (int s = 1; s <= count; ++s) weighted += mass * s;
+  std::string text;
+  double above = 0.0;
+  for (int s = count; s >= 1; --s) {
+    above += mass * s;
+    const double stiffness = base_stiffness * (1.0 - 0.5 * (s - 1) / count);
+    const std::string law =
+        yielding ? fmt::format(R"(, "law": {{"type": "takeda", "yield_force": {:.6g}, )"
+                               R"("hardening_ratio": 0.05}})",
+                               coefficient * count * mass * g * above / weighted)
+                 : "";
+    text =
+        fmt::format(R"({{"height": 3.2, "mass": {}, "stiffness": {}{}}})", mass, stiffness, law) +
+        (text.empty() ? "" : ", ") + text;
+  }
+  return text;
+}
+
+std::string pair_model(bool yielding) {
+  return fmt::format(R"({{"dimension": 2, "units": {{"length": "m", "time": "s"}},
+    "generators": [{{"type": "adjacent_buildings", "id": "pair", "separation": 0.05,
+      "left": {{"damping_ratio": 0.05, "storeys": [{}]}},
+      "right": {{"damping_ratio": 0.05, "storeys": [{}]}},
+      "law": {{"type": "jankowski", "stiffness": 2.75e9, "restitution": 0.65}}}}],
+    {}
+    "excitations": [{{"record": "{}/ground_motions/synthetic_soft_01.AT2", "units": "g",
+                      "scale": {{"pga": 0.4}}}}],
+    "analysis": {{"time_step": 0.002}}}})",
+                     storeys(20, 3.0e5, 6.0e8, yielding), storeys(15, 2.5e5, 4.0e8, yielding),
+                     yielding ? R"("gravity": {"p_delta": "chord"},)" : "", POUND_SOURCE_DIR);
+}
+
+// Solve seconds per step of a model, the best of `repeats` runs.
+double seconds_per_step(const std::string& text, int repeats) {
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / fmt::format("pound_bench_{}.json", ::getpid());
+  std::ofstream(file) << text;
+  pound::app::RunRequest request;
+  request.model_path = file.string();
+  request.histories = false;
+  double best = INFINITY;
+  for (int k = 0; k < repeats; ++k) {
+    const pound::app::RunOutcome outcome = pound::app::run_model(request);
+    if (!outcome.failure.empty()) {
+      best = NAN;
+      break;
+    }
+    best = std::min(best, *outcome.case_summary.run_time_s / *outcome.case_summary.steps);
+  }
+  std::filesystem::remove(file);
+  return best;
+}
+
+void yielding_buildings(benchmark::State& state) {
+  double elastic = 0.0, yielding = 0.0;
+  for (auto _ : state) {
+    elastic = seconds_per_step(pair_model(false), 5);
+    yielding = seconds_per_step(pair_model(true), 5);
+  }
+  if (!std::isfinite(elastic) || !std::isfinite(yielding)) state.SkipWithError("a run failed");
+  state.counters["us_per_step_elastic"] = 1e6 * elastic;
+  state.counters["us_per_step_takeda"] = 1e6 * yielding;
+  state.counters["ratio"] = yielding / elastic;
+}
+BENCHMARK(yielding_buildings)->Unit(benchmark::kSecond)->Iterations(1);
+
+}  // namespace
