@@ -13,7 +13,8 @@ std::string yielded_line(const results::LinkResult& link) {
   return fmt::format(
       "  {} {} yielded: peak {} {:.4g}{}, residual {:.4g}, hysteretic energy {:.6g}\n", link.law,
       link.id, link.rotational ? "rotation" : "deformation", link.peak_deformation(),
-      ductility ? fmt::format(" ({:.2f} x yield)", *ductility) : std::string(),
+      ductility ? fmt::format(" ({:.2f} x yield)", *ductility)
+                : fmt::format(" (plastic {:.4g})", link.peak_plastic_deformation().value_or(0.0)),
       link.summary.final_deformation, link.hysteretic_energy().value_or(0.0));
 }
 
@@ -89,10 +90,13 @@ std::string run_report(const results::RunSummary& run) {
 
 std::string energy_line(const results::RunSummary& run) {
   const results::EnergyTerms& e = run.energy;
+  const std::optional<double> hysteretic = run.hysteretic_energy();
   return fmt::format(
       "  energy: input {:.6g}, initial {:.6g}, kinetic {:.6g}, strain {:.6g}, "
-      "damping {:.6g}, links {:.6g}; balance error {:.2e}\n",
-      e.input, e.initial, e.kinetic, e.strain, e.damping, e.links, run.worst_balance_error);
+      "damping {:.6g}, links {:.6g}{}; balance error {:.2e}\n",
+      e.input, e.initial, e.kinetic, e.strain, e.damping, e.links,
+      hysteretic ? fmt::format(" (of which hysteretic {:.6g})", *hysteretic) : "",
+      run.worst_balance_error);
 }
 
 }  // namespace pound::app

@@ -19,6 +19,7 @@ Document link_document(const results::LinkResult& link) {
   if (link.yield_deformation) {  // a yielding law: its demand and what it dissipated
     doc.set("yield_deformation", *link.yield_deformation)
         .set("peak_deformation", link.peak_deformation())
+        .set("peak_plastic_deformation", *link.peak_plastic_deformation())
         .set("residual_deformation", s.final_deformation);
     if (const std::optional<double> ductility = link.ductility()) doc.set("ductility", *ductility);
     if (const std::optional<double> energy = link.hysteretic_energy())
@@ -61,14 +62,16 @@ Document joint_document(const results::JointResult& joint) {
 
 Document energy_document(const results::RunSummary& run) {
   const results::EnergyTerms& e = run.energy;
-  return Document()
-      .set("input", e.input)
-      .set("initial", e.initial)
-      .set("kinetic", e.kinetic)
-      .set("strain", e.strain)
-      .set("damping", e.damping)
-      .set("links", e.links)
-      .set("balance_error", e.balance_error())
+  Document energy = Document()
+                        .set("input", e.input)
+                        .set("initial", e.initial)
+                        .set("kinetic", e.kinetic)
+                        .set("strain", e.strain)
+                        .set("damping", e.damping)
+                        .set("links", e.links);
+  if (const std::optional<double> hysteretic = run.hysteretic_energy())
+    energy.set("links_hysteretic", *hysteretic);  // the yielding links' part of `links`
+  return energy.set("balance_error", e.balance_error())
       .set("worst_balance_error", run.worst_balance_error);
 }
 

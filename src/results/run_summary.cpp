@@ -169,10 +169,23 @@ std::optional<double> LinkResult::ductility() const {
   return peak_deformation() / *yield_deformation;
 }
 
+std::optional<double> LinkResult::peak_plastic_deformation() const {
+  if (!yield_deformation) return std::nullopt;
+  return std::max(0.0, peak_deformation() - *yield_deformation);
+}
+
 std::optional<double> LinkResult::hysteretic_energy() const {
   if (!yield_deformation || !initial_stiffness || !(*initial_stiffness > 0.0)) return std::nullopt;
   const double force = summary.final_force;
   return summary.work - force * force / (2.0 * *initial_stiffness);
+}
+
+std::optional<double> RunSummary::hysteretic_energy() const {
+  std::optional<double> total;
+  for (const LinkResult& link : links)
+    if (const std::optional<double> dissipated = link.hysteretic_energy())
+      total = total.value_or(0.0) + *dissipated;
+  return total;
 }
 
 std::optional<double> JointResult::margin() const {

@@ -73,6 +73,9 @@ struct LinkResult {
   // peak |delta| / delta_y; none for a hinge, whose elastic rotation is the numerical stiffness's
   // (the member's ductility is its drift monitor's).
   std::optional<double> ductility() const;
+  // peak |delta| - delta_y of a yielding law: a hinge's plastic rotation theta_p, the measure of
+  // ASCE 41's hinge acceptance criteria and of the curvature ductility 1 + theta_p / (phi_y L_p).
+  std::optional<double> peak_plastic_deformation() const;
   // Energy the law dissipated: its work less the elastic energy F^2 / (2 k_0) it still holds.
   std::optional<double> hysteretic_energy() const;
 };
@@ -112,6 +115,9 @@ struct RunSummary {
   EnergyTerms energy;
   double worst_balance_error = 0.0;
   std::vector<std::string> warnings;  // for results an engineer should not trust as they are
+  // The part of energy.links that yielding links dissipated (their hysteretic energy); none
+  // when no link yields.
+  std::optional<double> hysteretic_energy() const;
 };
 
 RunSummary summarise_run(const builder::BuiltModel& built, const assembly::StructuralSystem& system,
