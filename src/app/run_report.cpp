@@ -11,11 +11,13 @@ namespace {
 std::string yielded_line(const results::LinkResult& link) {
   const std::optional<double> ductility = link.ductility();
   return fmt::format(
-      "  {} {} yielded: peak {} {:.4g}{}, residual {:.4g}, hysteretic energy {:.6g}\n", link.law,
+      "  {} {} yielded: peak {} {:.4g}{}, residual {:.4g}, hysteretic energy {:.6g}{}\n", link.law,
       link.id, link.rotational ? "rotation" : "deformation", link.peak_deformation(),
       ductility ? fmt::format(" ({:.2f} x yield)", *ductility)
                 : fmt::format(" (plastic {:.4g})", link.peak_plastic_deformation().value_or(0.0)),
-      link.summary.final_deformation, link.hysteretic_energy().value_or(0.0));
+      link.summary.final_deformation, link.hysteretic_energy().value_or(0.0),
+      link.viscous.work != 0.0 ? fmt::format(", damping energy {:.6g}", link.viscous.work)
+                               : std::string());
 }
 
 // Contacts and restrainers one line each; yielded springs and hinges one line each; the other
@@ -65,13 +67,16 @@ std::string monitor_lines(const results::RunSummary& run) {
     const builder::DriftMonitor& m = drift.monitor;
     const std::optional<double> ductility = drift.ductility();
     const std::optional<double> demand = drift.elastic_demand_ratio();
-    text += fmt::format("  {} {}: peak drift {:.4g} ({:.3f} % of {:.4g}), residual {:.4g}{}\n",
-                        m.kind == builder::DriftKind::pier ? "pier" : "storey", m.id,
-                        drift.peak.peak_drift, 100.0 * drift.peak.peak_drift / m.height, m.height,
-                        drift.peak.residual_drift,
-                        ductility ? fmt::format(", ductility {:.2f}", *ductility)
-                        : demand  ? fmt::format(", elastic, {:.2f} x its yield drift", *demand)
-                                  : std::string());
+    text += fmt::format(
+        "  {} {}: peak drift {:.4g} ({:.3f} % of {:.4g}), residual {:.4g}{}{}\n",
+        m.kind == builder::DriftKind::pier ? "pier" : "storey", m.id, drift.peak.peak_drift,
+        100.0 * drift.peak.peak_drift / m.height, m.height, drift.peak.residual_drift,
+        ductility ? fmt::format(", ductility {:.2f}", *ductility)
+        : demand  ? fmt::format(", elastic, {:.2f} x its yield drift", *demand)
+                  : std::string(),
+        drift.curvature_ductility
+            ? fmt::format(", curvature ductility {:.2f}", *drift.curvature_ductility)
+            : std::string());
   }
   return text;
 }

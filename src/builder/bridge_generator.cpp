@@ -111,7 +111,9 @@ std::string add_pier_base(const Bridge& bridge, int pier, const std::optional<Pi
   out.supports.push_back({node, true, true, false});
   LinkSpec link = make_link(node, node, base, {1.0, 0.0}, 0.0, hinge->law);
   link.rotational = true;
-  link.axis.reset();  // a hinge acts on theta_i - theta_j
+  link.axis.reset();             // a hinge acts on theta_i - theta_j
+  if (spec.pier_hinge->damping)  // with the model's a1, known to the builder
+    link.rayleigh = LinkRayleighSpec{.stiffness = *spec.pier_hinge->damping};
   out.links.push_back(link);
   return node;
 }
@@ -134,8 +136,20 @@ void add_pier(const Bridge& bridge, int pier, ModelSpec& out) {
   }
   const std::optional<double> yield_drift =
       hinge ? std::optional(hinge->yield_displacement) : spec.pier_yield_drift;
-  out.drift_monitors.push_back({fmt::format("{}.p{}", spec.id, pier), DriftKind::pier, spec.id,
-                                base, top, bridge.deck, yield_drift, hinge.has_value()});
+  DriftMonitorSpec monitor{fmt::format("{}.p{}", spec.id, pier),
+                           DriftKind::pier,
+                           spec.id,
+                           base,
+                           top,
+                           bridge.deck,
+                           yield_drift,
+                           hinge.has_value()};
+  if (hinge && spec.pier_hinge->plastic_hinge_length) {
+    monitor.hinge = fmt::format("{}.p{}.hinge", spec.id, pier);
+    monitor.yield_curvature = spec.pier_hinge->yield_curvature;
+    monitor.plastic_hinge_length = spec.pier_hinge->plastic_hinge_length;
+  }
+  out.drift_monitors.push_back(monitor);
 }
 
 // Where the girder is cut, as span numbers: 0 and the last at the abutments, and the expansion

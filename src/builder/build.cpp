@@ -228,6 +228,7 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
                            "the modal analysis for Rayleigh damping (/damping/modes)", spec.source);
     }
   }
+  add_link_damping(resolver, model.damping, model.links);
   if (spec.gravity) {
     model.gravity = gravity(*spec.gravity, spec.units);
     built.analysis.static_initial_state = true;  // the record starts on the loaded structure

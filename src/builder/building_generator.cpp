@@ -116,14 +116,20 @@ std::vector<std::string> add_column_cuts(const Building& building, std::size_t s
 
 // A yielding storey's shear link between its floors: the user's law with the storey's
 // stiffness, drift positive when the upper floor moves along +x; beside it, with "initial"
-// storey damping, the dashpot a1 k0 its column would have given. Returns its yield drift.
+// storey damping, the dashpot a1 k0 its column would have given (a linear link, separate so its
+// force is seen), or in it with "committed", a1 times its tangent (links/stiffness_damping.hpp).
+// Returns its yield drift.
 std::optional<double> add_storey_link(const Building& building, std::size_t s, ModelSpec& out) {
   const StoreySpec& storey = building.spec.storeys[s];
   const std::string id = storey_id(building, s);
   const std::string top = floor_node_id(building, s + 1), bottom = floor_node_id(building, s);
   LawSpec law = *storey.law;
   law.parameters["stiffness"] = storey.stiffness;
-  out.links.push_back(make_link(id, top, bottom, {1.0, 0.0}, 0.0, law));
+  LinkSpec link = make_link(id, top, bottom, {1.0, 0.0}, 0.0, law);
+  if (building.rayleigh && building.spec.storey_damping == StoreyDamping::committed)
+    link.rayleigh = LinkRayleighSpec{.stiffness = links::DampingStiffness::committed,
+                                     .stiffness_coefficient = (*building.rayleigh)[1]};
+  out.links.push_back(link);
   if (building.rayleigh && building.spec.storey_damping == StoreyDamping::initial) {
     const LawSpec dashpot{
         .type = "viscous_damper",

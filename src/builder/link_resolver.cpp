@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "links/law_registry.hpp"
+#include "links/stiffness_damping.hpp"
 
 namespace pound::builder {
 namespace {
@@ -134,6 +135,29 @@ std::vector<model::Link> resolve_links(const Resolver& resolver, const model::Mo
   for (std::size_t k = 0; k < spec.links.size(); ++k)
     links.push_back(resolve_link({resolver, model, spec.links[k], origin(k)}));
   return links;
+}
+
+void add_link_damping(const Resolver& resolver,
+                      const std::optional<model::RayleighDamping>& damping,
+                      std::vector<model::Link>& links) {
+  const ModelSpec& spec = resolver.spec();
+  const Origin origin =
+      origin_of(resolver.user_spec().links.size(), "links", spec.generated_from.links);
+  for (std::size_t k = 0; k < spec.links.size(); ++k) {
+    const std::optional<LinkRayleighSpec>& rayleigh = spec.links[k].rayleigh;
+    if (!rayleigh) continue;
+    const std::optional<double> coefficient =
+        rayleigh->stiffness_coefficient
+            ? rayleigh->stiffness_coefficient
+            : (damping ? std::optional(damping->stiffness_coefficient) : std::nullopt);
+    if (!coefficient)
+      resolver.fail(origin(k) + "/rayleigh/stiffness_coefficient",
+                    "the model has no \"damping\" to take a1 from: give the link its own");
+    links[k].make_law = [inner = links[k].make_law, a1 = *coefficient,
+                         stiffness = rayleigh->stiffness](const links::LinkContext& context) {
+      return std::make_unique<links::StiffnessDamping>(inner(context), a1, stiffness);
+    };
+  }
 }
 
 }  // namespace pound::builder

@@ -49,8 +49,18 @@ std::vector<DriftMonitor> resolve_drift_monitors(const Resolver& resolver) {
   for (std::size_t k = 0; k < specs.size(); ++k) {
     const DriftMonitorSpec& m = specs[k];
     const std::string path = monitor_path(k, resolver.user_spec().drift_monitors.size(), "drifts");
-    monitors.push_back({m.id, m.kind, m.group, resolver.node(m.bottom, path + "/bottom"),
-                        resolver.node(m.top, path + "/top"), m.height, m.yield_drift, m.yields});
+    DriftMonitor monitor{m.id,
+                         m.kind,
+                         m.group,
+                         resolver.node(m.bottom, path + "/bottom"),
+                         resolver.node(m.top, path + "/top"),
+                         m.height,
+                         m.yield_drift,
+                         m.yields};
+    if (m.hinge)
+      monitor.curvature = DriftMonitor::Curvature{resolver.link(*m.hinge, path + "/hinge"),
+                                                  *m.yield_curvature, *m.plastic_hinge_length};
+    monitors.push_back(monitor);
   }
   return monitors;
 }

@@ -25,6 +25,13 @@ struct DriftMonitor {
   // The yield drift is where the model itself yields (hinged piers, a user's monitor), so
   // drift / yield drift is a ductility; for an elastic pier it is only a demand ratio.
   bool yields = true;
+  // The member's plastic hinge (a link) with its section's phi_y and L_p, for the curvature
+  // ductility 1 + theta_p / (phi_y L_p) (Priestley, Seible & Calvi 1996).
+  struct Curvature {
+    Index hinge = 0;
+    double yield_curvature = 0.0, plastic_hinge_length = 0.0;
+  };
+  std::optional<Curvature> curvature;
 };
 
 struct JointMonitor {

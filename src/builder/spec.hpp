@@ -14,6 +14,7 @@
 #include "integrators/integrator_catalog.hpp"
 #include "integrators/transient_analysis.hpp"
 #include "links/law_registry.hpp"
+#include "links/stiffness_damping.hpp"
 
 namespace pound::builder {
 
@@ -91,6 +92,13 @@ struct FrictionSpec {
   std::optional<double> radius;  // a friction pendulum's radius of curvature [L] > 0 (links only)
 };
 
+// Stiffness-proportional damping added to a structural spring or hinge
+// (links/stiffness_damping.hpp).
+struct LinkRayleighSpec {
+  links::DampingStiffness stiffness = links::DampingStiffness::initial;
+  std::optional<double> stiffness_coefficient;  // a1 [T]; default the model's Rayleigh a1
+};
+
 struct LinkSpec {
   std::string id;
   std::string node_i;
@@ -103,6 +111,7 @@ struct LinkSpec {
   // Node-to-segment: the j side is the point of segment node_j - segment_end nearest node i.
   std::optional<std::string> segment_end;
   std::array<double, 2> velocity_j{0.0, 0.0};  // a rigid surface's own motion (generated)
+  std::optional<LinkRayleighSpec> rayleigh;
 };
 
 // A rectangular plane body of quads ("block" generator): nodes "<id>.<column>.<row>" from the
@@ -226,7 +235,7 @@ struct StoreySpec {
 // What a yielding storey's link adds to the building's stiffness-proportional damping a1 K:
 // initial, a linear dashpot a1 k0 beside it (the elastic building's damping, whatever the
 // law's state); none.
-enum class StoreyDamping { initial, none };
+enum class StoreyDamping { initial, committed, none };
 struct BuildingSpec {
   std::vector<StoreySpec> storeys;  // from the ground up
   double damping_ratio = 0.0;       // Rayleigh on the building's own modes 1 and 2 (0: none)
@@ -265,11 +274,12 @@ struct JointSpec {
 // drift monitor's yield drift; with a plastic-hinge length L_p the curvature ductility is
 // 1 + theta_p / (phi_y L_p) (Priestley, Seible & Calvi 1996).
 struct PierHingeSpec {
-  std::optional<double> yield_moment;          // [F L]
-  std::optional<double> yield_curvature;       // [1/L]
-  std::optional<double> plastic_hinge_length;  // [L]
-  double stiffness_factor = 10.0;              // n
-  LawSpec law;                                 // stiffness and yield_force set by the generator
+  std::optional<double> yield_moment;              // [F L]
+  std::optional<double> yield_curvature;           // [1/L]
+  std::optional<double> plastic_hinge_length;      // [L]
+  double stiffness_factor = 10.0;                  // n
+  LawSpec law;                                     // stiffness and yield_force set by the generator
+  std::optional<links::DampingStiffness> damping;  // the model's a1 times k_0 or k_t; none
 };
 struct GirderBridgeSpec {
   std::string id;
@@ -306,6 +316,11 @@ struct DriftMonitorSpec {
   double height = 0.0;
   std::optional<double> yield_drift;
   bool yields = true;  // as builder::DriftMonitor::yields
+  // A plastic hinge's section, for the curvature ductility 1 + theta_p / (phi_y L_p) of the
+  // member: its hinge link (theta_p its peak plastic rotation), phi_y and L_p.
+  std::optional<std::string> hinge;
+  std::optional<double> yield_curvature;       // [1/L]
+  std::optional<double> plastic_hinge_length;  // [L]
 };
 struct JointMonitorSpec {
   std::string id;

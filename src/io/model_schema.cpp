@@ -267,6 +267,40 @@ const Fields<FrictionSpec>& friction_fields() {
 
 Object<FrictionSpec> friction_object() { return {friction_fields(), Docs::own_table}; }
 
+Choice<links::DampingStiffness> damping_stiffness_choice() {
+  return {{{"initial", links::DampingStiffness::initial},
+           {"committed", links::DampingStiffness::committed}}};
+}
+
+const Fields<builder::LinkRayleighSpec>& link_rayleigh_fields() {
+  using builder::LinkRayleighSpec;
+  static const Fields<LinkRayleighSpec> fields = {
+      required("stiffness", &LinkRayleighSpec::stiffness, damping_stiffness_choice(),
+               "k of a1·k·δ̇: the law's initial stiffness, or its tangent at the last converged "
+               "step"),
+      optional("stiffness_coefficient", &LinkRayleighSpec::stiffness_coefficient,
+               Number<>{non_negative}, "a1 [T]")
+          .default_text("the model's"),
+  };
+  return fields;
+}
+
+// Stiffness-proportional damping belongs to a member that deforms both ways, a spring or a
+// hinge; a contact or a restrainer law carries its own damping.
+Field<LinkSpec> link_rayleigh_role() {
+  return rule<LinkSpec>([](JsonObject& object, LinkSpec& link, Context&) {
+    if (!link.rayleigh) return;
+    const links::LawEntry* law = links::find_law(link.law.type);
+    if (law && law->traits.role != links::LinkRole::spring)
+      object.at("rayleigh")
+          .fail(fmt::format(
+              "Rayleigh damping is for structural springs and hinges; a {} law is a {} and carries "
+              "its own damping parameters",
+              link.law.type,
+              law->traits.role == links::LinkRole::contact ? "contact" : "restrainer"));
+  });
+}
+
 // A surface or a contact is not a bearing: a radius there would give every touching node its
 // own dish, which no structure has.
 template <class Spec>
@@ -345,6 +379,10 @@ const Fields<LinkSpec>& link_fields() {
         if (link.rotational && link.axis) object.at("axis").fail("a rotational link has no axis");
       }),
       optional("friction", &LinkSpec::friction, friction_object(), "Coulomb friction (2-D scenes)"),
+      optional("rayleigh", &LinkSpec::rayleigh,
+               Object<builder::LinkRayleighSpec>{link_rayleigh_fields(), Docs::own_table},
+               "stiffness-proportional damping a1·k·δ̇ of a spring or hinge (none without it)"),
+      link_rayleigh_role(),
   };
   return fields;
 }
@@ -406,9 +444,11 @@ const Fields<BuildingSpec>& building_fields() {
                "from the ground up"),
       optional("storey_damping", &BuildingSpec::storey_damping,
                Choice<builder::StoreyDamping>{{{"initial", builder::StoreyDamping::initial},
+                                               {"committed", builder::StoreyDamping::committed},
                                                {"none", builder::StoreyDamping::none}}},
                "the stiffness-proportional damping of its yielding storeys: a1 times their "
-               "initial stiffness (a linear dashpot beside the law), or none"),
+               "initial stiffness (a linear dashpot beside the law), a1 times their tangent at "
+               "the last converged step, or none"),
   };
   return fields;
 }
@@ -557,6 +597,11 @@ const Fields<builder::PierHingeSpec>& pier_hinge_fields() {
       required("law", &PierHingeSpec::law, Law{LawPlace::pier_hinge},
                "moment–rotation law of the hinges, without `stiffness` and `yield_force` (the "
                "generator sets them)"),
+      optional("damping", &PierHingeSpec::damping, damping_stiffness_choice(),
+               "stiffness-proportional damping of the hinges with the model's a1: times their "
+               "initial stiffness (the elastic pier's damping), or their tangent at the last "
+               "converged step (the link's `rayleigh`)")
+          .default_text("none"),
   };
   return fields;
 }
@@ -779,6 +824,20 @@ const Fields<DriftMonitorSpec>& drift_monitor_fields() {
       optional("yields", &DriftMonitorSpec::yields, Flag{},
                "whether the model yields at `yield_drift` (peak / yield drift is a ductility); "
                "false for an elastic member, whose ratio is only a demand"),
+      optional("hinge", &DriftMonitorSpec::hinge, Text{true},
+               "id of the member's plastic-hinge link, for its curvature ductility "
+               "1 + θ_p / (φ_y L_p)"),
+      optional("yield_curvature", &DriftMonitorSpec::yield_curvature, Number<>{positive},
+               "φ_y of the hinge's section, with hinge [1/L]"),
+      optional("plastic_hinge_length", &DriftMonitorSpec::plastic_hinge_length, Number<>{positive},
+               "L_p, with hinge [L]"),
+      rule<DriftMonitorSpec>([](JsonObject& object, DriftMonitorSpec& monitor, Context&) {
+        const bool all = monitor.hinge && monitor.yield_curvature && monitor.plastic_hinge_length;
+        const bool none =
+            !monitor.hinge && !monitor.yield_curvature && !monitor.plastic_hinge_length;
+        if (!all && !none)
+          object.fail("give 'hinge', 'yield_curvature' and 'plastic_hinge_length' together");
+      }),
   };
   return fields;
 }
@@ -1249,6 +1308,7 @@ const std::vector<NamedFields>& every_field_list() {
       named("loads", load_fields()),
       named("links", link_fields()),
       named("friction", friction_fields()),
+      named("rayleigh", link_rayleigh_fields()),
       named("rod_pair", rod_pair_fields()),
       named("rod", rod_fields()),
       named("adjacent_buildings", adjacent_buildings_fields()),

@@ -25,6 +25,8 @@ Document link_document(const results::LinkResult& link) {
     if (const std::optional<double> energy = link.hysteretic_energy())
       doc.set("hysteretic_energy", *energy);
   }
+  // stiffness-proportional damping added to the link ("rayleigh"): its part of `work`
+  if (link.viscous.work != 0.0) doc.set("damping_energy", link.viscous.work);
   return doc;
 }
 
@@ -42,6 +44,7 @@ Document drift_document(const results::DriftResult& drift) {
   if (const std::optional<double> ductility = drift.ductility()) doc.set("ductility", *ductility);
   if (const std::optional<double> demand = drift.elastic_demand_ratio())
     doc.set("elastic_demand_ratio", *demand);
+  if (drift.curvature_ductility) doc.set("curvature_ductility", *drift.curvature_ductility);
   return doc;
 }
 

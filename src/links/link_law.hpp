@@ -30,6 +30,13 @@ struct LawResponse {
   double mass = 0.0;       // dF/d(delta_ddot) [F T^2/L]
 };
 
+// The viscous part of a law's force that stiffness-proportional damping adds to a spring's
+// (links/stiffness_damping.hpp), so that its work is not taken for hysteresis.
+struct ViscousPart {
+  double work = 0.0;   // integral of F_viscous d(delta) up to the committed state [F L]
+  double force = 0.0;  // committed F_viscous [F]
+};
+
 class LinkLaw {
  public:
   virtual ~LinkLaw() = default;
@@ -48,6 +55,8 @@ class LinkLaw {
   // The deformation at first yield of a law that yields (a hysteretic spring or hinge), the
   // reference of its ductility demand peak |delta| / delta_y; none for a law that does not yield.
   virtual std::optional<double> yield_deformation() const { return std::nullopt; }
+  // Zero for every law but one with added stiffness-proportional damping.
+  virtual ViscousPart viscous_part() const { return {}; }
 };
 
 }  // namespace pound::links

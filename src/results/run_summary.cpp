@@ -176,8 +176,8 @@ std::optional<double> LinkResult::peak_plastic_deformation() const {
 
 std::optional<double> LinkResult::hysteretic_energy() const {
   if (!yield_deformation || !initial_stiffness || !(*initial_stiffness > 0.0)) return std::nullopt;
-  const double force = summary.final_force;
-  return summary.work - force * force / (2.0 * *initial_stiffness);
+  const double force = summary.final_force - viscous.force;  // the spring's own
+  return summary.work - viscous.work - force * force / (2.0 * *initial_stiffness);
 }
 
 std::optional<double> RunSummary::hysteretic_energy() const {
@@ -205,13 +205,21 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
     const links::LinkLaw& law = system.links().law(static_cast<Index>(k));
     LinkResult result{link.id, law.name(), link.role(), observers.links().summaries()[k],
                       link.rotational};
+    result.viscous = law.viscous_part();
     if ((result.yield_deformation = law.yield_deformation()))
       result.initial_stiffness =  // of a fresh law: this one has yielded
           link.make_law(system.link_context(link))->set_trial({0.0, 0.0, 0.0}).stiffness;
     run.links.push_back(result);
   }
-  for (std::size_t k = 0; k < built.drift_monitors.size(); ++k)
-    run.drifts.push_back({built.drift_monitors[k], observers.drifts().peaks()[k]});
+  for (std::size_t k = 0; k < built.drift_monitors.size(); ++k) {
+    DriftResult drift{built.drift_monitors[k], observers.drifts().peaks()[k]};
+    if (const auto& curvature = drift.monitor.curvature)
+      if (const std::optional<double> plastic =
+              run.links[static_cast<std::size_t>(curvature->hinge)].peak_plastic_deformation())
+        drift.curvature_ductility =
+            1.0 + *plastic / (curvature->yield_curvature * curvature->plastic_hinge_length);
+    run.drifts.push_back(drift);
+  }
   for (std::size_t k = 0; k < built.joint_monitors.size(); ++k) {
     const builder::JointMonitor& m = built.joint_monitors[k];
     run.joints.push_back(

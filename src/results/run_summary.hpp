@@ -10,6 +10,7 @@
 
 #include "builder/build.hpp"
 #include "integrators/transient_analysis.hpp"
+#include "links/link_law.hpp"
 #include "results/case_summary.hpp"
 #include "results/energy_balance.hpp"
 #include "results/monitors.hpp"
@@ -76,7 +77,11 @@ struct LinkResult {
   // peak |delta| - delta_y of a yielding law: a hinge's plastic rotation theta_p, the measure of
   // ASCE 41's hinge acceptance criteria and of the curvature ductility 1 + theta_p / (phi_y L_p).
   std::optional<double> peak_plastic_deformation() const;
-  // Energy the law dissipated: its work less the elastic energy F^2 / (2 k_0) it still holds.
+  // What its added stiffness-proportional damping did (LinkLaw::viscous_part): part of
+  // summary.work and of summary's forces, never of the hysteretic energy.
+  links::ViscousPart viscous;
+  // Energy the law dissipated: its work less the elastic energy F^2 / (2 k_0) it still holds,
+  // both without the viscous part.
   std::optional<double> hysteretic_energy() const;
 };
 
@@ -89,6 +94,8 @@ struct DriftResult {
   std::optional<double> ductility() const;
   // the same ratio for an elastic member given a yield drift: a demand, not a ductility
   std::optional<double> elastic_demand_ratio() const;
+  // 1 + theta_p / (phi_y L_p) of the member's hinge (DriftMonitor::curvature)
+  std::optional<double> curvature_ductility;
 };
 
 struct JointResult {

@@ -124,5 +124,47 @@ TEST(PierHinge, BadHingesAreRefusedAtTheirPath) {
   }
 }
 
+// "damping": the hinges get a1 k_h (initial) with the model's a1, the dashpot that makes the
+// hinge's damping stiffness-proportional like the pier's; without it none.
+TEST(PierHinge, HingeDampingTakesTheModelsStiffnessCoefficient) {
+  const double ei = 3.0e10 * 0.8, h = 8.0, hinge_stiffness = 11 * 3 * ei / h;
+  for (const char* kind : {"initial", "committed"}) {
+    const BuiltModel model = built(bridge([kind](Json& generator) {
+      add_hinges(generator);
+      generator["pier_hinge"]["damping"] = kind;
+    }));
+    const double a1 = model.model.damping->stiffness_coefficient;
+    ASSERT_GT(a1, 0.0);
+    const auto& link = model.model.links[model.link_index.at("bridge.p2.hinge")];
+    const double damping = link.make_law({})->set_trial({0.0, 1e-3, 0.0}).damping;
+    EXPECT_NEAR(damping, a1 * hinge_stiffness, 1e-12 * a1 * hinge_stiffness) << kind;
+  }
+  const BuiltModel undamped = built(bridge(add_hinges));
+  const auto& link = undamped.model.links[undamped.link_index.at("bridge.p2.hinge")];
+  EXPECT_EQ(link.make_law({})->set_trial({0.0, 1e-3, 0.0}).damping, 0.0);
+}
+
+TEST(PierHinge, LinkRayleighDampingIsRefusedWhereItMeansNothing) {
+  Json contact = bridge();
+  contact["links"] =
+      Json::parse(R"([{"id": "extra", "nodes": ["bridge.a0.ground", "bridge.g0.n0"], "axis": [1, 0],
+    "law": {"type": "kelvin_voigt", "stiffness": 1e9, "restitution": 0.6},
+    "rayleigh": {"stiffness": "committed"}}])");
+  expect_refused(contact, "/links/0/rayleigh", "for structural springs and hinges");
+  Json undamped = bridge();
+  undamped.erase("damping");
+  undamped["links"] =
+      Json::parse(R"([{"id": "extra", "nodes": ["bridge.a0.ground", "bridge.g0.n0"], "axis": [1, 0],
+    "law": {"type": "elastic_spring", "stiffness": 1e6}, "rayleigh": {"stiffness": "initial"}}])");
+  expect_refused(undamped, "/links/0/rayleigh/stiffness_coefficient", "give the link its own");
+  undamped["links"][0]["rayleigh"]["stiffness_coefficient"] = 0.002;
+  const BuiltModel made = built(undamped);
+  EXPECT_DOUBLE_EQ(made.model.links[made.link_index.at("extra")]
+                       .make_law({})
+                       ->set_trial({0.0, 1.0, 0.0})
+                       .damping,
+                   0.002 * 1e6);
+}
+
 }  // namespace
 }  // namespace pound::builder

@@ -94,6 +94,16 @@ TEST(StoreyLaw, ElasticStoreyLinksReproduceTheElasticBuilding) {
     change = std::max(change, std::abs(columns[k] - undamped[k]));
   std::cout << "storey_damping none changes the response by " << change / peak << "\n";
   EXPECT_GT(change / peak, 1e-3);
+  // An elastic law's committed tangent is its stiffness: a1 k in the link is the dashpot again.
+  for (const char* side : {"left", "right"})
+    linked["generators"][0][side]["storey_damping"] = "committed";
+  const std::vector<double> committed = floor_histories(linked);
+  double committed_difference = 0.0;
+  for (std::size_t k = 0; k < columns.size(); ++k)
+    committed_difference = std::max(committed_difference, std::abs(columns[k] - committed[k]));
+  std::cout << "storey_damping committed (elastic storeys) against the columns: "
+            << committed_difference / peak << "\n";
+  EXPECT_LT(committed_difference / peak, 1e-8);
 }
 
 // The left building's pushover at its top under gravity with chord P-Delta: storey 1 bilinear
