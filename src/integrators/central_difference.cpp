@@ -238,7 +238,8 @@ const IntegratorEntry& CentralDifference::entry() {
       .is_explicit = true,
       .presets = {{"central_difference", {}}},
       .make = [](const std::map<std::string, double>&, const ConvergenceTest&)
-          -> std::unique_ptr<Integrator> { return std::make_unique<CentralDifference>(); }};
+          -> std::unique_ptr<Integrator> { return std::make_unique<CentralDifference>(); },
+      .acceleration_energy = [](const std::map<std::string, double>&) { return -0.125; }};
   return entry;
 }
 

@@ -93,4 +93,8 @@ std::unique_ptr<Integrator> IntegratorChoice::make(const ConvergenceTest& test) 
   return method_->make(values(), test);
 }
 
+double IntegratorChoice::acceleration_energy() const {
+  return method_->acceleration_energy ? method_->acceleration_energy(values()) : 0.0;
+}
+
 }  // namespace pound::integrators

@@ -47,6 +47,11 @@ struct IntegratorEntry {
   std::function<std::unique_ptr<Integrator>(const std::map<std::string, double>& parameters,
                                             const ConvergenceTest& test)>
       make;
+  // c of the method's algorithmic energy c dt^2 a^T M a, with which the kinetic energy and the
+  // trapezoidal work sums of results/energy_balance.hpp balance exactly whatever the forces:
+  // Newmark with gamma = 1/2 has c = (beta - 1/4) / 2, central difference (beta = 0) -1/8.
+  // None (0) for the methods that dissipate by design.
+  std::function<double(const std::map<std::string, double>& parameters)> acceleration_energy;
 
   const IntegratorParameter* parameter(std::string_view wanted) const;
 };
@@ -79,6 +84,7 @@ class IntegratorChoice {
   // The name of the preset it equals, else the method's name.
   std::string label() const;
   std::unique_ptr<Integrator> make(const ConvergenceTest& test = {}) const;
+  double acceleration_energy() const;  // IntegratorEntry::acceleration_energy, or 0
 
  private:
   const IntegratorEntry* method_;

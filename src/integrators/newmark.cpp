@@ -80,7 +80,11 @@ const IntegratorEntry& Newmark::newmark_entry() {
       .make = [](const std::map<std::string, double>& p,
                  const ConvergenceTest& test) -> std::unique_ptr<Integrator> {
         return std::make_unique<Newmark>(p.at("beta"), p.at("gamma"), test);
-      }};
+      },
+      .acceleration_energy =
+          [](const std::map<std::string, double>& p) {
+            return p.at("gamma") == 0.5 ? 0.5 * (p.at("beta") - 0.25) : 0.0;
+          }};
   return entry;
 }
 

@@ -20,7 +20,16 @@ double EnergyTerms::link_created_fraction() const {
   return largest > 0.0 && links < 0.0 ? -links / largest : 0.0;
 }
 
-double EnergyTerms::balance_error() const { return std::abs(created_fraction()); }
+double EnergyTerms::balance_error() const {
+  const double largest = largest_term();
+  const double residual = kinetic + algorithmic + strain + damping + links - input - initial;
+  return largest > 0.0 ? std::abs(residual) / largest : 0.0;
+}
+
+double EnergyBalance::mass_norm(const Vector& acceleration) {
+  system_.multiply_mass(acceleration, work_);
+  return acceleration.dot(work_);
+}
 
 void EnergyBalance::record(const integrators::State& state) {
   const Index n = system_.size();
@@ -30,10 +39,17 @@ void EnergyBalance::record(const integrators::State& state) {
   terms_.kinetic = 0.5 * state.velocity.dot(work_);
   system_.multiply_stiffness(state.displacement, work_);
   terms_.strain = 0.5 * state.displacement.dot(work_);
+  const bool algorithmic = acceleration_energy_ != 0.0 && state.acceleration.size() == n;
   if (!started_) {
     terms_.initial = terms_.kinetic + terms_.strain;
+    if (algorithmic) initial_acceleration_norm_ = mass_norm(state.acceleration);
     started_ = true;
   } else {
+    if (algorithmic) {
+      const double dt = state.time - previous_.time;
+      terms_.algorithmic = acceleration_energy_ * dt * dt *
+                           (mass_norm(state.acceleration) - initial_acceleration_norm_);
+    }
     const Vector step = state.displacement - previous_.displacement;
     terms_.input += 0.5 * step.dot(external_ + previous_external_);
     if (system_.has_damping()) {
@@ -50,6 +66,7 @@ void EnergyBalance::record(const integrators::State& state) {
   }
   worst_ = std::max(worst_, terms_.balance_error());
   previous_external_.swap(external_);
+  previous_.time = state.time;
   previous_.displacement = state.displacement;
   previous_.velocity = state.velocity;
   previous_.link_force = state.link_force;

@@ -39,6 +39,7 @@ class RunObservers {
   std::vector<std::unique_ptr<Recorder>> recorders_;
   LinkSummaries links_;
   EnergyBalance energy_;
+  int steps_creating_ = 0;  // consecutive steps above kEnergyGrowthLimit
   // Links are passive unless supports move under them (multi-support input, a moving belt),
   // which then feed energy in through them.
   bool passive_links_;
