@@ -115,10 +115,10 @@ std::vector<std::string> add_column_cuts(const Building& building, std::size_t s
 }
 
 // A yielding storey's shear link between its floors: the user's law with the storey's
-// stiffness, drift positive when the upper floor moves along +x; beside it, with "initial"
-// storey damping, the dashpot a1 k0 its column would have given (a linear link, separate so its
-// force is seen), or in it with "committed", a1 times its tangent (links/stiffness_damping.hpp).
-// Returns its yield drift.
+// stiffness, drift positive when the upper floor moves along +x, and in it the storey's share of
+// the building's stiffness-proportional damping: a1 k0, the dashpot its column would have given
+// ("initial"), or a1 times its tangent ("committed"; links/stiffness_damping.hpp). In the link,
+// not beside it, so that the damping adds no link row to iterate. Returns its yield drift.
 std::optional<double> add_storey_link(const Building& building, std::size_t s, ModelSpec& out) {
   const StoreySpec& storey = building.spec.storeys[s];
   const std::string id = storey_id(building, s);
@@ -126,16 +126,13 @@ std::optional<double> add_storey_link(const Building& building, std::size_t s, M
   LawSpec law = *storey.law;
   law.parameters["stiffness"] = storey.stiffness;
   LinkSpec link = make_link(id, top, bottom, {1.0, 0.0}, 0.0, law);
-  if (building.rayleigh && building.spec.storey_damping == StoreyDamping::committed)
-    link.rayleigh = LinkRayleighSpec{.stiffness = links::DampingStiffness::committed,
-                                     .stiffness_coefficient = (*building.rayleigh)[1]};
+  if (building.rayleigh && building.spec.storey_damping != StoreyDamping::none)
+    link.rayleigh =
+        LinkRayleighSpec{.stiffness = building.spec.storey_damping == StoreyDamping::initial
+                                          ? links::DampingStiffness::initial
+                                          : links::DampingStiffness::committed,
+                         .stiffness_coefficient = (*building.rayleigh)[1]};
   out.links.push_back(link);
-  if (building.rayleigh && building.spec.storey_damping == StoreyDamping::initial) {
-    const LawSpec dashpot{
-        .type = "viscous_damper",
-        .parameters = {{"coefficient", (*building.rayleigh)[1] * storey.stiffness}}};
-    out.links.push_back(make_link(id + ".damping", top, bottom, {1.0, 0.0}, 0.0, dashpot));
-  }
   const std::string path = fmt::format("/generators/{}/{}/storeys/{}/law",
                                        building.pair.generator_index, kPairSides[building.side], s);
   return links::make_law(law, {out.source, path})(links::LinkContext{})->yield_deformation();

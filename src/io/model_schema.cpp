@@ -447,8 +447,8 @@ const Fields<BuildingSpec>& building_fields() {
                                                {"committed", builder::StoreyDamping::committed},
                                                {"none", builder::StoreyDamping::none}}},
                "the stiffness-proportional damping of its yielding storeys: a1 times their "
-               "initial stiffness (a linear dashpot beside the law), a1 times their tangent at "
-               "the last converged step, or none"),
+               "initial stiffness (the elastic column's), a1 times their tangent at the last "
+               "converged step, or none (the link's `rayleigh`)"),
   };
   return fields;
 }
