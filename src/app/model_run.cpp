@@ -67,6 +67,12 @@ PreparedRun prepare(const RunRequest& request) {
   if (request.before_run) request.before_run(run.loaded);
   builder::BuiltModel& built = run.loaded.built;
   if (request.max_steps > 0) built.analysis.max_steps = request.max_steps;
+  if (request.record_factor != 1.0) {
+    for (model::UniformExcitation& e : built.model.excitations)
+      for (double& a : e.motion.acceleration) a *= request.record_factor;
+    for (model::SupportExcitation& e : built.model.support_excitations)
+      for (double& a : e.motion.acceleration) a *= request.record_factor;
+  }
   built.analysis.time_limit = request.time_limit;
   try {
     run.system = std::make_unique<assembly::StructuralSystem>(built.model);
@@ -214,7 +220,8 @@ RunOutcome run_model(const RunRequest& request) {
   return summarise(request, run, solved);
 }
 
-void write_run_outputs(const std::string& folder, const RunOutcome& outcome) {
+void write_run_outputs(const std::string& folder, const RunOutcome& outcome,
+                       const std::vector<std::pair<std::string, io::Document>>& extra) {
   io::create_output_folder(folder);
   io::remove_stale_temporaries(folder);  // of an earlier run killed with SIGKILL
   // All staged, then renamed into place with summary.json last: a folder with a summary.json has
@@ -222,6 +229,8 @@ void write_run_outputs(const std::string& folder, const RunOutcome& outcome) {
   io::StagedFiles files;
   for (const auto& [file, table] : outcome.histories)
     files.write_csv((std::filesystem::path(folder) / file).string(), table);
+  for (const auto& [file, document] : extra)
+    files.write((std::filesystem::path(folder) / file).string(), document.dump() + "\n");
   files.write((std::filesystem::path(folder) / "summary.json").string(),
               outcome.summary.dump() + "\n");
   files.commit();

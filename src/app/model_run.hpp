@@ -24,6 +24,9 @@ struct RunRequest {
   double time_limit = 0.0;                        // [s] of solving, 0: none
   builder::IntensityMeasure intensity;            // for the case summary
   bool histories = true;                          // record and write the model's recorders
+  // Every excitation's acceleration times this: an ensemble member's perturbation
+  // (app/ensemble.hpp); 1 leaves the records as read.
+  double record_factor = 1.0;
   // Called once the model and its records are read, before the run: where the caller checks
   // that its outputs will not overwrite them (throwing InputError).
   std::function<void(const LoadedModel&)> before_run;
@@ -47,6 +50,8 @@ RunOutcome run_model(const RunRequest& request);
 
 // summary.json and the history CSVs into `folder` (created if needed): written under temporary
 // names, then renamed into place together, summary.json last.
-void write_run_outputs(const std::string& folder, const RunOutcome& outcome);
+// `extra`: more JSON files (name, document) written with them, before summary.json.
+void write_run_outputs(const std::string& folder, const RunOutcome& outcome,
+                       const std::vector<std::pair<std::string, io::Document>>& extra = {});
 
 }  // namespace pound::app

@@ -7,6 +7,7 @@
 
 #include "app/command_line.hpp"
 #include "app/commands.hpp"
+#include "app/ensemble.hpp"
 #include "app/model_run.hpp"
 #include "io/output_paths.hpp"
 
@@ -15,7 +16,8 @@ namespace po = boost::program_options;
 
 namespace {
 
-constexpr const char* kRunUsage = R"(usage: pound run MODEL.json [--motion RECORD] [--out DIR]
+constexpr const char* kRunUsage =
+    R"(usage: pound run MODEL.json [--motion RECORD] [--out DIR] [--ensemble N]
 
 Runs the time-history analysis of a model file (format: docs/model_format.md) and writes into
 DIR (default out/<model name>):
@@ -24,6 +26,10 @@ DIR (default out/<model name>):
   <recorder>.csv the time histories the model's recorders ask for (default links.csv)
 Nothing is written when the model is invalid (exit code 2). If the analysis fails (exit code 3)
 the histories up to the failure are written and summary.json says "status": "failed".
+With --ensemble N it also runs N copies with every record scaled by 1 + eps, 1 - eps, 1 + 2 eps,
+... (eps = --perturbation) and writes ensemble.json: for every number of summary.json the
+unperturbed value, the median, 16 and 84 % and range of the copies, and whether it is robust.
+Pounding peaks after the first impacts are chaotic: read those as distributions.
 
 options)";
 
@@ -40,10 +46,10 @@ std::string request_error(const RunRequest& request) {
   return {};
 }
 
-// summary.json and the recorders' CSVs in `out`: none may be the model, a record or another
-// output (a record named like a recorder's file in the folder given as --out).
-void check_run_outputs(const std::string& out, const RunRequest& request,
-                       const LoadedModel& loaded) {
+// summary.json, ensemble.json and the recorders' CSVs in `out`: none may be the model, a record or
+// another output (a record named like a recorder's file in the folder given as --out).
+void check_run_outputs(const std::string& out, const RunRequest& request, const LoadedModel& loaded,
+                       bool ensemble) {
   namespace fs = std::filesystem;
   std::vector<io::NamedPath> inputs{{request.model_path, "the model"}};
   for (std::size_t k = 0; k < loaded.record_paths.size(); ++k)
@@ -52,6 +58,7 @@ void check_run_outputs(const std::string& out, const RunRequest& request,
                           ? "--motion"
                           : fmt::format("{}: /excitations/{}/record", request.model_path, k)});
   std::vector<io::NamedPath> outputs{{(fs::path(out) / "summary.json").string(), "--out"}};
+  if (ensemble) outputs.push_back({(fs::path(out) / "ensemble.json").string(), "--out"});
   const auto& recorders = loaded.built.recorders;
   const bool named_in_model =
       loaded.spec.recorders_given && loaded.spec.recorders.size() == recorders.size();
@@ -81,6 +88,7 @@ int report_outcome(const RunOutcome& outcome, const std::string& model_path, con
 int run_command(const Arguments& arguments) {
   po::options_description options(kRunUsage);
   RunRequest request;
+  EnsembleOptions ensemble;
   std::string out, motion;
   options.add_options()("help,h", "show this help")("out,o", po::value(&out),
                                                     "output folder (default out/<model name>)")(
@@ -91,21 +99,43 @@ int run_command(const Arguments& arguments) {
       "stop with an error after this many steps (0: no limit)")(
       "time-limit", po::value(&request.time_limit),
       "stop with an error after this many seconds of solving (0: no limit); the histories so far "
-      "are kept")("quiet,q", "print nothing but errors");
+      "are kept")("ensemble", po::value(&ensemble.copies),
+                  "also run this many copies with the records perturbed, for the spread of every "
+                  "result (ensemble.json)")(
+      "perturbation", po::value(&ensemble.perturbation)->default_value(1e-4, "1e-4"),
+      "relative change of the records between copies, in (0, 0.01)")(
+      "robust-spread", po::value(&ensemble.robust_spread)->default_value(0.05, "0.05"),
+      "a result whose 16-84 % spread over the copies is within this share of its size is robust")(
+      "jobs,j", po::value(&ensemble.jobs)->default_value(0, "every core"),
+      "threads for the copies")("quiet,q", "print nothing but errors");
   const auto parsed = parse_command_line(arguments, options, "model", request.model_path);
   if (!parsed) return 0;
-  if (const std::string error = request_error(request); !error.empty()) {
+  const bool with_ensemble = parsed->count("ensemble") > 0;
+  std::string error = request_error(request);
+  if (error.empty() && with_ensemble) error = ensemble_options_error(ensemble);
+  if (!error.empty()) {
     std::cerr << "pound run: " << error << "\n";
     return 1;
   }
   if (!motion.empty()) request.motion = motion;
   if (out.empty()) out = io::folder_named_after("out", request.model_path, "--out");
-  request.before_run = [&](const LoadedModel& loaded) { check_run_outputs(out, request, loaded); };
+  request.before_run = [&](const LoadedModel& loaded) {
+    check_run_outputs(out, request, loaded, with_ensemble);
+  };
 
   // Everything that can be wrong with the input is found before any output exists.
-  const RunOutcome outcome = run_model(request);
-  write_run_outputs(out, outcome);
-  return report_outcome(outcome, request.model_path, out, parsed->count("quiet") > 0);
+  const bool quiet = parsed->count("quiet") > 0;
+  if (!with_ensemble) {
+    const RunOutcome outcome = run_model(request);
+    write_run_outputs(out, outcome);
+    return report_outcome(outcome, request.model_path, out, quiet);
+  }
+  const EnsembleResult result = run_ensemble(request, ensemble);
+  write_run_outputs(out, result.unperturbed,
+                    {{"ensemble.json", ensemble_document(result, ensemble)}});
+  const int code = report_outcome(result.unperturbed, request.model_path, out, quiet);
+  if (!quiet) std::cout << ensemble_report(result, ensemble);
+  return code;
 }
 
 }  // namespace pound::app

@@ -20,6 +20,32 @@ struct Document::Impl {
   }
 };
 
+namespace {
+
+void collect_numbers(const nlohmann::ordered_json& json, const std::string& path,
+                     std::vector<std::pair<std::string, double>>& out) {
+  if (json.is_number()) {
+    out.emplace_back(path, json.get<double>());
+  } else if (json.is_object()) {
+    for (const auto& [key, value] : json.items()) collect_numbers(value, path + "/" + key, out);
+  } else if (json.is_array()) {
+    for (std::size_t k = 0; k < json.size(); ++k) {
+      const nlohmann::ordered_json& item = json[k];
+      const bool named = item.is_object() && item.contains("id") && item["id"].is_string();
+      collect_numbers(
+          item, path + "/" + (named ? item["id"].get<std::string>() : std::to_string(k)), out);
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, double>> Document::numbers() const {
+  std::vector<std::pair<std::string, double>> out;
+  collect_numbers(impl_->json, "", out);
+  return out;
+}
+
 Document::Document() : impl_(std::make_unique<Impl>()) {}
 Document::~Document() = default;
 Document::Document(const Document& other) : impl_(std::make_unique<Impl>(*other.impl_)) {}

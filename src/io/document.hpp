@@ -3,6 +3,7 @@
 // order they were set in, numbers print in full precision, NaN/Inf print as null.
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pound::io {
@@ -33,6 +34,10 @@ class Document {
   // JSON pointers of the numbers that were set non-finite (written as null): a result that
   // overflowed, which a run must not report as completed.
   const std::vector<std::string>& non_finite() const;
+
+  // Every number in it with its path: "/links/bridge.a1.backfill/peak_force" (an array item
+  // named by its "id", else by its index), in document order. Booleans and text are left out.
+  std::vector<std::pair<std::string, double>> numbers() const;
 
  private:
   struct Impl;

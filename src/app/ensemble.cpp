@@ -1,0 +1,196 @@
+#include "app/ensemble.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <exception>
+#include <map>
+#include <thread>
+
+#include "results/batch_statistics.hpp"
+
+namespace pound::app {
+namespace {
+
+// 1 + eps, 1 - eps, 1 + 2 eps, 1 - 2 eps, ...
+std::vector<double> record_factors(const EnsembleOptions& options) {
+  std::vector<double> factors;
+  for (int k = 0; k < options.copies; ++k) {
+    const double sign = k % 2 == 0 ? 1.0 : -1.0;
+    factors.push_back(1.0 + sign * (k / 2 + 1) * options.perturbation);
+  }
+  return factors;
+}
+
+// The run's own statistics (steps, iterations, run time, balance errors) are not responses.
+bool is_response(const std::string& path) {
+  static const std::vector<std::string> statistics{
+      "/time_step", "/duration",          "/end_time",  "/dofs",
+      "/steps",     "/newton_iterations", "/step_cuts", "/max_unbalanced_force",
+      "/run_time_s"};
+  if (std::find(statistics.begin(), statistics.end(), path) != statistics.end()) return false;
+  return !path.ends_with("balance_error");
+}
+
+QuantitySpread spread_of(const std::string& path, double unperturbed,
+                         const std::vector<double>& values, double robust_spread) {
+  QuantitySpread q{path, unperturbed};
+  q.median = results::quantile(values, 0.5);
+  q.p16 = results::quantile(values, 0.16);
+  q.p84 = results::quantile(values, 0.84);
+  q.min = *std::min_element(values.begin(), values.end());
+  q.max = *std::max_element(values.begin(), values.end());
+  const double size = std::max({std::abs(unperturbed), std::abs(q.min), std::abs(q.max)});
+  q.spread = size > 0.0 ? (q.p84 - q.p16) / size : 0.0;
+  q.robust = q.spread <= robust_spread;
+  return q;
+}
+
+// Every number of the unperturbed summary that each completed copy also has.
+std::vector<QuantitySpread> spreads(const RunOutcome& unperturbed,
+                                    const std::vector<RunOutcome>& copies, double robust_spread) {
+  std::vector<std::map<std::string, double>> numbers;
+  for (const RunOutcome& copy : copies)
+    if (copy.failure.empty()) {
+      std::map<std::string, double> values;
+      for (const auto& [path, value] : copy.summary.numbers()) values[path] = value;
+      numbers.push_back(std::move(values));
+    }
+  std::vector<QuantitySpread> result;
+  if (numbers.empty()) return result;
+  for (const auto& [path, value] : unperturbed.summary.numbers()) {
+    if (!is_response(path)) continue;
+    std::vector<double> values;
+    for (const auto& copy : numbers)
+      if (const auto found = copy.find(path); found != copy.end()) values.push_back(found->second);
+    if (values.size() == numbers.size())
+      result.push_back(spread_of(path, value, values, robust_spread));
+  }
+  return result;
+}
+
+// The numbers damage is judged by, which the report lists; ensemble.json has them all.
+bool is_headline(const std::string& path) {
+  static const std::vector<std::string> keys{
+      "peak_force",       "peak_tension",        "impacts",      "peak_deformation",
+      "ductility",        "curvature_ductility", "peak_opening", "peak_seat_movement",
+      "unseating_margin", "residual_opening",    "peak_drift",   "residual_drift"};
+  const std::string key = path.substr(path.rfind('/') + 1);
+  return std::find(keys.begin(), keys.end(), key) != keys.end();
+}
+
+}  // namespace
+
+int EnsembleResult::failed() const {
+  return static_cast<int>(
+      std::count_if(failures.begin(), failures.end(), [](const auto& f) { return !f.empty(); }));
+}
+
+std::string ensemble_options_error(const EnsembleOptions& options) {
+  if (options.copies < 1) return "--ensemble must be a number of copies >= 1";
+  if (!(options.perturbation > 0.0 && options.perturbation < 1e-2))
+    return "--perturbation must be in (0, 0.01): a relative change of the records at the level "
+           "of numerical noise";
+  if (!(options.perturbation * (options.copies / 2 + 1) < 0.5))
+    return "--ensemble times --perturbation must stay below 1: the records would change sign";
+  if (!(options.robust_spread > 0.0 && options.robust_spread < 1.0))
+    return "--robust-spread must be in (0, 1)";
+  if (options.jobs < 0) return "--jobs must be >= 0";
+  return {};
+}
+
+EnsembleResult run_ensemble(const RunRequest& request, const EnsembleOptions& options) {
+  EnsembleResult result{run_model(request), record_factors(options)};
+  std::vector<RunOutcome> copies(result.factors.size());
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t jobs = std::min<std::size_t>(
+      options.jobs > 0 ? static_cast<std::size_t>(options.jobs) : cores, copies.size());
+  std::atomic<std::size_t> next{0};
+  // What a copy threw (Ctrl-C's Interrupted, say): the others stop taking copies, and it is
+  // thrown again here, after every thread has ended.
+  std::vector<std::exception_ptr> thrown(jobs);
+  auto work = [&](std::size_t job) {
+    try {
+      for (std::size_t k = next++; k < copies.size(); k = next++) {
+        RunRequest copy = request;
+        copy.histories = false;
+        copy.before_run = nullptr;  // writes nothing
+        copy.record_factor = result.factors[k];
+        copies[k] = run_model(copy);
+      }
+    } catch (...) {
+      thrown[job] = std::current_exception();
+      next = copies.size();
+    }
+  };
+  std::vector<std::thread> threads;
+  for (std::size_t j = 1; j < jobs; ++j) threads.emplace_back(work, j);
+  work(0);
+  for (std::thread& thread : threads) thread.join();
+  for (const std::exception_ptr& failure : thrown)
+    if (failure) std::rethrow_exception(failure);
+  for (const RunOutcome& copy : copies) result.failures.push_back(copy.failure);
+  result.quantities = spreads(result.unperturbed, copies, options.robust_spread);
+  return result;
+}
+
+std::string ensemble_report(const EnsembleResult& result, const EnsembleOptions& options) {
+  std::vector<const QuantitySpread*> loose;
+  std::size_t other = 0;
+  for (const QuantitySpread& q : result.quantities)
+    if (!q.robust) (is_headline(q.path) ? loose.push_back(&q) : void(++other));
+  std::sort(loose.begin(), loose.end(),
+            [](const auto* a, const auto* b) { return a->spread > b->spread; });
+  std::string text = fmt::format(
+      "ensemble: {} copies with the records scaled by 1 +- k {:g} (k up to {}), {} failed: {} of "
+      "{} numbers are not robust (16-84 % spread above {:g} of their size)\n",
+      result.factors.size(), options.perturbation, (options.copies + 1) / 2, result.failed(),
+      loose.size() + other, result.quantities.size(), options.robust_spread);
+  constexpr std::size_t kShown = 12;
+  for (std::size_t k = 0; k < std::min(kShown, loose.size()); ++k) {
+    const QuantitySpread& q = *loose[k];
+    text += fmt::format(
+        "  {}: {:.4g}; median {:.4g}, 16-84 % {:.4g} to {:.4g}, range {:.4g} to "
+        "{:.4g} (spread {:.0f} %)\n",
+        q.path, q.unperturbed, q.median, q.p16, q.p84, q.min, q.max, 100.0 * q.spread);
+  }
+  const std::size_t more = loose.size() - std::min(kShown, loose.size()) + other;
+  if (more > 0)
+    text += fmt::format(
+        "  ... and {} more (energies, impulses, contact times...) in "
+        "ensemble.json\n",
+        more);
+  return text;
+}
+
+io::Document ensemble_document(const EnsembleResult& result, const EnsembleOptions& options) {
+  io::Document doc;
+  doc.set("copies", static_cast<long>(result.factors.size()))
+      .set("perturbation", options.perturbation)
+      .set("robust_spread", options.robust_spread)
+      .set("record_factors", result.factors)
+      .set("failed", static_cast<long>(result.failed()));
+  std::vector<io::Document> failures;
+  for (std::size_t k = 0; k < result.failures.size(); ++k)
+    if (!result.failures[k].empty())
+      failures.push_back(
+          io::Document().set("record_factor", result.factors[k]).set("reason", result.failures[k]));
+  doc.set("failures", failures);
+  doc.set("quantities", io::documents(result.quantities, [](const QuantitySpread& q) {
+            return io::Document()
+                .set("path", q.path)
+                .set("unperturbed", q.unperturbed)
+                .set("median", q.median)
+                .set("p16", q.p16)
+                .set("p84", q.p84)
+                .set("min", q.min)
+                .set("max", q.max)
+                .set("spread", q.spread)
+                .set("robust", q.robust);
+          }));
+  return doc;
+}
+
+}  // namespace pound::app
