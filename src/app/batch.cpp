@@ -12,6 +12,7 @@
 #include <optional>
 #include <thread>
 
+#include "app/ensemble.hpp"
 #include "app/model_run.hpp"
 #include "core/errors.hpp"
 #include "core/stopwatch.hpp"
@@ -101,10 +102,31 @@ struct CaseResult {
   double write_s = 0.0;   // writing its folder
 };
 
+// A case's run, and with the set's ensemble its copies (one thread: the cases are the parallel
+// work) with ensemble.json and, when the set asks for medians, the copies' medians in its row.
+struct CaseRun {
+  RunOutcome outcome;
+  std::vector<std::pair<std::string, io::Document>> extra;  // ensemble.json
+};
+
+CaseRun run_case_model(const RunRequest& request, const std::optional<builder::SetEnsemble>& set) {
+  if (!set) return {run_model(request), {}};
+  const EnsembleOptions options{.copies = set->copies,
+                                .perturbation = set->perturbation,
+                                .robust_spread = set->robust_spread,
+                                .jobs = 1};
+  EnsembleResult result = run_ensemble(request, options);
+  CaseRun run{result.unperturbed, {{"ensemble.json", ensemble_document(result, options)}}};
+  if (set->medians && result.unperturbed.failure.empty())
+    run.outcome.case_summary = result.median_summary();
+  return run;
+}
+
 // A case whose model or record cannot be read fails alone: an outcome saying why.
-RunOutcome run_or_report_input_error(const RunRequest& request) {
+CaseRun run_or_report_input_error(const RunRequest& request,
+                                  const std::optional<builder::SetEnsemble>& ensemble) {
   try {
-    return run_model(request);
+    return run_case_model(request, ensemble);
   } catch (const InputError& error) {
     RunOutcome outcome;
     outcome.case_summary.status = results::CaseStatus::input_error;
@@ -112,7 +134,7 @@ RunOutcome run_or_report_input_error(const RunRequest& request) {
     outcome.summary.set("model", request.model_path)
         .set("status", "input_error")
         .set("failure", outcome.case_summary.reason);
-    return outcome;
+    return {outcome, {}};
   }
 }
 
@@ -126,7 +148,8 @@ CaseResult run_case(const builder::SetSpec& set, const builder::BatchCase& c,
   request.record->extra_factor = c.scale;
   request.intensity = set.intensity;
   request.histories = set.histories;
-  RunOutcome outcome = run_or_report_input_error(request);
+  CaseRun run = run_or_report_input_error(request, set.ensemble);
+  RunOutcome& outcome = run.outcome;
   results::CaseSummary& summary = outcome.case_summary;
   summary.name = c.name;
   summary.model = set.models[c.model].id;
@@ -142,7 +165,7 @@ CaseResult run_case(const builder::SetSpec& set, const builder::BatchCase& c,
   const std::string temporary =
       (fs::path(out) / ".partial" / fmt::format("{}.r{}", c.index, rank)).string();
   io::remove_folder(temporary);
-  write_run_outputs(temporary, outcome);
+  write_run_outputs(temporary, outcome, run.extra);
   CaseResult result;
   result.index = c.index;
   result.row = io::case_row(summary);

@@ -9,6 +9,7 @@
 #include <map>
 #include <thread>
 
+#include "results/batch_quantities.hpp"
 #include "results/batch_statistics.hpp"
 
 namespace pound::app {
@@ -88,6 +89,21 @@ int EnsembleResult::failed() const {
       std::count_if(failures.begin(), failures.end(), [](const auto& f) { return !f.empty(); }));
 }
 
+results::CaseSummary EnsembleResult::median_summary() const {
+  results::CaseSummary summary = unperturbed.case_summary;
+  for (const results::BatchQuantity& quantity : results::batch_quantities()) {
+    if (!(summary.*quantity.value) || !quantity.response) continue;
+    std::vector<double> values;
+    for (std::size_t k = 0; k < copies.size(); ++k)
+      if (failures[k].empty() && copies[k].*quantity.value)
+        values.push_back(*(copies[k].*quantity.value));
+    const std::size_t completed = static_cast<std::size_t>(copies.size()) - failed();
+    if (!values.empty() && values.size() == completed)
+      summary.*quantity.value = results::quantile(values, 0.5);
+  }
+  return summary;
+}
+
 std::string ensemble_options_error(const EnsembleOptions& options) {
   if (options.copies < 1) return "--ensemble must be a number of copies >= 1";
   if (!(options.perturbation > 0.0 && options.perturbation < 1e-2))
@@ -131,7 +147,10 @@ EnsembleResult run_ensemble(const RunRequest& request, const EnsembleOptions& op
   for (std::thread& thread : threads) thread.join();
   for (const std::exception_ptr& failure : thrown)
     if (failure) std::rethrow_exception(failure);
-  for (const RunOutcome& copy : copies) result.failures.push_back(copy.failure);
+  for (const RunOutcome& copy : copies) {
+    result.failures.push_back(copy.failure);
+    result.copies.push_back(copy.case_summary);
+  }
   result.quantities = spreads(result.unperturbed, copies, options.robust_spread);
   return result;
 }

@@ -35,7 +35,12 @@ struct EnsembleResult {
   std::vector<double> factors;        // the copies' record factors, in order
   std::vector<std::string> failures;  // per copy: empty when it completed
   std::vector<QuantitySpread> quantities;
+  std::vector<results::CaseSummary> copies;  // each copy's case summary, in order
   int failed() const;
+  // The unperturbed case summary with each response (results/batch_quantities.hpp) replaced by
+  // its median over the completed copies (left as it is where a copy lacks it, or none
+  // completed): a batch row that a chaotic peak does not decide alone.
+  results::CaseSummary median_summary() const;
 };
 
 // What is wrong with the options, or empty (named as the command-line options).

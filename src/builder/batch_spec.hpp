@@ -40,6 +40,15 @@ struct ResponseLimit {
   double value = 0.0;
 };
 
+// Each case run as an ensemble (app/ensemble.hpp): its copies' spread in ensemble.json, and its
+// row the copies' medians (or the unperturbed run's numbers).
+struct SetEnsemble {
+  int copies = 0;  // >= 1
+  double perturbation = 1e-4;
+  double robust_spread = 0.05;
+  bool medians = true;  // "rows": "median"; false: "unperturbed"
+};
+
 struct SetSpec {
   std::string source;  // the set file, for messages
   std::string title;
@@ -51,6 +60,7 @@ struct SetSpec {
   // Whether each case writes the time histories its model's recorders ask for (false: only
   // summary.json and case.csv, for large IDA sets where the histories would fill the disk).
   bool histories = true;
+  std::optional<SetEnsemble> ensemble;
 };
 
 // One analysis of a batch: a model under a record at a scale.

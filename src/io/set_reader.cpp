@@ -138,6 +138,34 @@ builder::IntensityMeasure read_intensity(JsonObject& object) {
   return measure;
 }
 
+// "ensemble": {"copies": N, "perturbation": eps, "robust_spread": s, "rows": "median"}
+builder::SetEnsemble read_ensemble(JsonObject& object) {
+  builder::SetEnsemble ensemble;
+  const JsonValue copies = object.at("copies");
+  ensemble.copies = copies.as<int>();
+  if (ensemble.copies < 1 || ensemble.copies > 1000)
+    copies.fail(fmt::format("the number of copies must be 1 to 1000, got {}", ensemble.copies));
+  if (const std::optional<JsonValue> value = object.find("perturbation")) {
+    ensemble.perturbation = value->as<double>();
+    if (!(ensemble.perturbation > 0.0 && ensemble.perturbation < 1e-2))
+      value->fail(
+          fmt::format("a relative change of the records at the level of numerical noise "
+                      "is in (0, 0.01), got {}",
+                      ensemble.perturbation));
+    if (!(ensemble.perturbation * (ensemble.copies / 2 + 1) < 0.5))
+      value->fail("copies times perturbation must stay below 1: the records would change sign");
+  }
+  if (const std::optional<JsonValue> value = object.find("robust_spread")) {
+    ensemble.robust_spread = value->as<double>();
+    if (!(ensemble.robust_spread > 0.0 && ensemble.robust_spread < 1.0))
+      value->fail(fmt::format("must be in (0, 1), got {}", ensemble.robust_spread));
+  }
+  if (const std::optional<JsonValue> rows = object.find("rows"))
+    ensemble.medians = rows->as_one_of({"median", "unperturbed"}) == "median";
+  object.finish();
+  return ensemble;
+}
+
 builder::SetSpec read_set(JsonObject& top) {
   builder::SetSpec set;
   set.source = top.value().file();
@@ -172,6 +200,8 @@ builder::SetSpec read_set(JsonObject& top) {
     }
   }
   set.histories = top.optional<bool>("histories", true);
+  if (const std::optional<JsonValue> ensemble = top.find("ensemble"))
+    set.ensemble = read_object(*ensemble, read_ensemble);
   if (const std::optional<JsonValue> intensity = top.find("intensity_measure"))
     set.intensity = read_object(*intensity, read_intensity);
   if (const std::optional<JsonValue> limits = top.find("limits")) {

@@ -396,6 +396,52 @@ TEST_F(Batch, RefusesAResumeAfterAnInputFileChanged) {
   EXPECT_NE(resumed.out.find("3 cases (3 resumed, 0 run"), std::string::npos) << resumed.out;
 }
 
+// "ensemble": each case runs with copies of its record perturbed by 1 +- k 1e-4; ensemble.json in
+// its folder, and its row the copies' medians ("rows": "median"), or the unperturbed run's numbers,
+// which are then those of a batch without the ensemble.
+TEST_F(Batch, AnEnsembleSetRowsTheCopiesMedians) {
+  auto write = [&](const std::string& name, const std::string& ensemble) {
+    std::ofstream(path(name)) << fmt::format(
+        R"({{"models": ["{0}/models/three_span_bridge.json"],
+             "records": [{{"folder": "{0}/ground_motions", "pattern": "*soft*.AT2",
+                           "scale": {{"pga": 0.4}}}}]{1}}})",
+        kSource, ensemble);
+    return path(name).string();
+  };
+  const std::string median = write("median.json", R"(, "ensemble": {"copies": 4})");
+  const std::string unperturbed =
+      write("unperturbed.json", R"(, "ensemble": {"copies": 4, "rows": "unperturbed"})");
+  const std::string plain = write("plain.json", "");
+  for (const auto& [set, out] :
+       {std::pair{median, "median"}, {unperturbed, "unperturbed"}, {plain, "plain"}}) {
+    const Outcome outcome = pound({"batch", set, "--out", path(out).string(), "-q"});
+    ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  }
+  EXPECT_EQ(without_run_time(read_text(path("unperturbed/batch_summary.csv"))),
+            without_run_time(read_text(path("plain/batch_summary.csv"))));
+  const auto medians = rows_of(read_text(path("median/batch_summary.csv")));
+  const auto singles = rows_of(read_text(path("plain/batch_summary.csv")));
+  ASSERT_GE(medians.size(), 3u);  // header and two records
+  int differ = 0;
+  for (std::size_t row = 1; row < medians.size(); ++row) {
+    const std::string name = cell(medians, row, "name");
+    const nlohmann::json ensemble =
+        nlohmann::json::parse(read_text(path("median") / name / "ensemble.json"));
+    EXPECT_EQ(ensemble["record_factors"].size(), 4u);
+    const std::string m = cell(medians, row, "max_pounding_force"),
+                      u = cell(singles, row, "max_pounding_force");
+    std::cout << name << ": max pounding force, median of 4 copies " << m << ", unperturbed " << u
+              << "\n";
+    differ += m != u;
+  }
+  EXPECT_GT(differ, 0) << "the abutment peaks are chaotic: some median differs";
+  const Outcome bad = pound({"batch", write("bad.json", R"(, "ensemble": {"copies": 0})"), "--out",
+                             path("bad").string()});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("/ensemble/copies"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(path("bad")));
+}
+
 TEST_F(Batch, ABadSetWritesNothing) {
   std::ofstream(path("set.json")) << R"({"models": ["nowhere.json"], "records": []})";
   const Outcome outcome =

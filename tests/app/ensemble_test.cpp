@@ -108,6 +108,29 @@ TEST_F(Ensemble, TheBridgesLateAbutmentPeaksAreNotRobustItsPierDriftsAre) {
             std::string::npos);
 }
 
+// A batch row of an ensemble case: each response the median of the copies' (type 7), the rest
+// as the unperturbed run has them.
+TEST_F(Ensemble, TheMedianSummaryTakesEachResponsesMedianOverTheCopies) {
+  RunRequest request;
+  request.model_path = kModels + "three_span_bridge.json";
+  request.histories = false;
+  const EnsembleResult result = run_ensemble(request, {.copies = 5});
+  const results::CaseSummary median = result.median_summary();
+  std::vector<double> forces, drifts;
+  for (const results::CaseSummary& copy : result.copies) {
+    forces.push_back(*copy.max_pounding_force);
+    drifts.push_back(*copy.max_drift_ratio);
+  }
+  std::sort(forces.begin(), forces.end());
+  std::sort(drifts.begin(), drifts.end());
+  EXPECT_EQ(*median.max_pounding_force, forces[2]);
+  EXPECT_EQ(*median.max_drift_ratio, drifts[2]);
+  EXPECT_EQ(median.max_pounding_link, result.unperturbed.case_summary.max_pounding_link);
+  EXPECT_EQ(median.energy_balance_error, result.unperturbed.case_summary.energy_balance_error);
+  std::cout << "bridge: max pounding force " << *result.unperturbed.case_summary.max_pounding_force
+            << ", median of 5 copies " << *median.max_pounding_force << "\n";
+}
+
 TEST_F(Ensemble, TheCommandWritesEnsembleJsonBesideTheRunsOwnOutputs) {
   const testing::Outcome outcome = pound({"run", linear_model(path(".")), "--ensemble", "2",
                                           "--out", path("out").string(), "--jobs", "2"});
