@@ -11,6 +11,8 @@ DIR, each when its data is there (one line printed per file):
   drift_envelopes.png    peak storey drift ratio against height, pier drift ratio and ductility
   energy.png             energy components (energy.csv) and the balance error
   displacements.png      u_x histories of the recorded nodes
+  ensemble.png           with ensemble.json (`pound run --ensemble N`): the spread over the
+                         perturbed copies of the peaks damage is judged by, least robust first
 Figures with more links or joints than fit on a page continue in link_forces_2.png, ...
 CSV files are recognised by their columns, not their names. Units are the model's own.
 
@@ -41,6 +43,33 @@ TIME_LABEL = "time [model units]"
 
 LINK_QUANTITIES = ("force", "penetration", "tangential_force", "slide")
 ENERGY_TERMS = ("kinetic", "strain", "damping", "links")
+# The summary numbers ensemble.png shows (app/ensemble.cpp lists the same in its report).
+ENSEMBLE_KEYS = ("peak_force", "peak_tension", "impacts", "peak_deformation", "ductility",
+                 "curvature_ductility", "peak_opening", "peak_seat_movement", "unseating_margin",
+                 "residual_opening", "peak_drift", "residual_drift")
+ENSEMBLE_SHOWN = 24
+
+
+def load_ensemble(folder):
+    """The quantities of ensemble.json with the keys ENSEMBLE_KEYS, or None without the file."""
+    path = os.path.join(folder, "ensemble.json")
+    if not os.path.isfile(path):
+        return None
+    ensemble = read_json(path)
+    quantities = ensemble.get("quantities") if isinstance(ensemble, dict) else None
+    if not isinstance(quantities, list) or not all(isinstance(q, dict) for q in quantities):
+        raise InputError(f"{path}: expected an object with a list of \"quantities\"")
+    shown = []
+    for q in quantities:
+        values = [number(q, key) for key in ("unperturbed", "median", "p16", "p84", "min", "max",
+                                             "spread")]
+        if not isinstance(q.get("path"), str) or any(v is None for v in values):
+            raise InputError(f"{path}: every quantity needs a path and its numbers")
+        if q["path"].rsplit("/", 1)[-1] in ENSEMBLE_KEYS:
+            shown.append(q)
+    return {"path": path, "quantities": shown, "copies": ensemble.get("copies"),
+            "perturbation": ensemble.get("perturbation"),
+            "robust_spread": number(ensemble, "robust_spread") or 0.05}
 
 
 # ----------------------------------------------------------------------------------------------
@@ -482,6 +511,47 @@ class Plotter:
         bottom.grid(alpha=0.3, which="both")
         self.save(fig, "energy.png", "Energy balance")
 
+    # -- ensemble -------------------------------------------------------------------------------
+
+    def plot_ensemble(self, ensemble):
+        limit = ensemble["robust_spread"]
+        present = [q for q in ensemble["quantities"]
+                   if max(abs(q["min"]), abs(q["max"]), abs(q["unperturbed"])) > 0.0]
+        # The least robust first, then, for contrast, robust peak drifts, ductilities and forces.
+        loose = sorted((q for q in present if q["spread"] > limit), key=lambda q: -q["spread"])
+        loose = loose[:ENSEMBLE_SHOWN * 2 // 3]
+        contrast = ("peak_drift", "ductility", "peak_force")
+        robust = sorted((q for q in present if q["spread"] <= limit
+                         and q["path"].rsplit("/", 1)[-1] in contrast),
+                        key=lambda q: contrast.index(q["path"].rsplit("/", 1)[-1]))
+        quantities = loose + robust[:ENSEMBLE_SHOWN - len(loose)]
+        if not quantities:
+            return
+        fig = self.Figure(figsize=(11.0, 1.6 + 0.32 * len(quantities)))
+        ax = fig.subplots(1, 1)
+        for row, q in enumerate(quantities):
+            size = max(abs(q["min"]), abs(q["max"]), abs(q["unperturbed"]))
+            y = len(quantities) - 1 - row
+            ax.plot([q["min"] / size, q["max"] / size], [y, y], color="0.6", lw=1.0)
+            robust = q["spread"] <= limit
+            ax.plot([q["p16"] / size, q["p84"] / size], [y, y], lw=6.0, solid_capstyle="butt",
+                    color="C0" if robust else "C3", alpha=0.8)
+            ax.plot(q["median"] / size, y, "|", color="k", ms=12, mew=2.0)
+            ax.plot(q["unperturbed"] / size, y, "o", color="k", mfc="white", ms=5)
+        ax.set_yticks(range(len(quantities)))
+        ax.set_yticklabels([f"{q['path'].lstrip('/')} ({100 * q['spread']:.0f} %)"
+                            for q in reversed(quantities)], fontsize="small")
+        for label, q in zip(ax.get_yticklabels(), reversed(quantities)):
+            label.set_color("C3" if q["spread"] > limit else "k")
+        ax.axvline(0.0, color="0.6", lw=0.5)
+        ax.set_xlabel("value / its largest |value| over the runs [-]")
+        ax.set_title(f"{ensemble['copies']} copies, records scaled by 1 ± k·{ensemble['perturbation']:g}\n"
+                     f"range (grey), 16–84 % (bar; red: spread above {100 * limit:g} %, not robust), "
+                     "median (|), unperturbed run (o)", fontsize="medium")
+        ax.grid(alpha=0.3, axis="x")
+        fig.subplots_adjust(left=0.42, right=0.98)
+        self.save(fig, "ensemble.png", "Spread of the peaks over the ensemble")
+
     # -- nodes ----------------------------------------------------------------------------------
 
     def plot_displacements(self, histories):
@@ -527,6 +597,7 @@ def main(argv):
     def draw():
         summary = load_summary(args.folder)
         histories = read_histories(args.folder, numpy)
+        ensemble = load_ensemble(args.folder)  # read (and checked) before any figure is written
         plotter = Plotter(args.folder, summary, args.dpi, figure_class, numpy)
         links = plotter.link_series(histories)
         if links:
@@ -536,6 +607,8 @@ def main(argv):
         plotter.plot_drift_envelopes()
         plotter.plot_energy(histories)
         plotter.plot_displacements(histories)
+        if ensemble is not None:
+            plotter.plot_ensemble(ensemble)
         return plotter.written
 
     return run_plots(PROG, draw, args.folder, "no time histories to plot")

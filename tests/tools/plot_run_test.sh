@@ -50,4 +50,16 @@ mkdir "$tmp/bad_json"
 printf '{"links": [' >"$tmp/bad_json/summary.json"
 expect_input_error "$tmp/bad_json" "$tmp/bad_json/summary.json"
 
-echo "plot_run_test: ok (${expected[*]})"
+# 4. An ensemble run: ensemble.png beside the run's figures; a malformed ensemble.json is bad input.
+ensemble="$tmp/ensemble"
+"$pound" run "$root/models/two_girders_joint.json" --ensemble 2 --out "$ensemble" --quiet ||
+  fail "pound run --ensemble 2 failed"
+"$python" "$script" "$ensemble" --dpi 60 >/dev/null 2>"$tmp/stderr" ||
+  fail "plot_run.py failed on an ensemble run: $(cat "$tmp/stderr")"
+is_png "$ensemble/ensemble.png"
+mkdir "$tmp/bad_ensemble"
+cp "$run/summary.json" "$tmp/bad_ensemble/"
+printf '{"quantities": [{"path": "/links/joint/peak_force"}]}' >"$tmp/bad_ensemble/ensemble.json"
+expect_input_error "$tmp/bad_ensemble" "$tmp/bad_ensemble/ensemble.json"
+
+echo "plot_run_test: ok (${expected[*]} ensemble.png)"
