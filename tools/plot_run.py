@@ -3,7 +3,7 @@
 
 usage: python3 tools/plot_run.py DIR [--dpi 120]
 
-DIR is the --out folder of `pound run` (summary.json and the CSV time histories). Written into
+DIR is the --out folder of `pound run` (summary.json and the CSV or .npy time histories). Written into
 DIR, each when its data is there (one line printed per file):
   link_forces.png        force history of every link (compression +, tension -)
   force_penetration.png  force against penetration per link (impact, restrainer, spring loops)
@@ -195,11 +195,33 @@ def is_float(text):
         return False
 
 
+def read_npy_history(path, numpy):
+    """A recorder's .npy (a structured array of float64 columns), as a History; None if not one."""
+    try:
+        data = numpy.load(path, allow_pickle=False)
+    except (ValueError, OSError) as error:
+        raise InputError(f"{path}: not a NumPy .npy file: {error}") from None
+    names = data.dtype.names
+    if not names or names[0] != "time":
+        sys.stderr.write(f"note: {path}: not a structured array starting with 'time', not a pound "
+                         "history: skipped\n")
+        return None
+    history = History(path, list(names))
+    history.values = {name: numpy.asarray(data[name], dtype=float) for name in history.wanted()}
+    history.rows = len(data)
+    return history
+
+
 def read_histories(folder, numpy):
-    """Every CSV of the folder whose first column is time, with its plotted columns loaded."""
+    """Every CSV (or .npy) of the folder whose first column is time, its plotted columns loaded."""
     histories = []
     for name in sorted(os.listdir(folder)):
         path = os.path.join(folder, name)
+        if name.lower().endswith(".npy") and os.path.isfile(path):
+            history = read_npy_history(path, numpy)
+            if history is not None and history.kinds() and history.rows > 0:
+                histories.append(history)
+            continue
         if not name.lower().endswith(".csv") or not os.path.isfile(path):
             continue
         with csv_reader(path) as reader:

@@ -228,7 +228,7 @@ void write_run_outputs(const std::string& folder, const RunOutcome& outcome,
   // the histories of that run, and an interrupted run leaves the earlier run's files.
   io::StagedFiles files;
   for (const auto& [file, table] : outcome.histories)
-    files.write_csv((std::filesystem::path(folder) / file).string(), table);
+    files.write_table((std::filesystem::path(folder) / file).string(), table);
   for (const auto& [file, document] : extra)
     files.write((std::filesystem::path(folder) / file).string(), document.dump() + "\n");
   files.write((std::filesystem::path(folder) / "summary.json").string(),

@@ -1136,12 +1136,12 @@ const Fields<AnalysisSpec>& analysis_fields() {
 
 // Recorder files are written inside the output folder: a name must not lead out of it.
 void check_file_name(const std::string& name, const JsonValue& where) {
-  const bool plain = name.size() > 4 && name.ends_with(".csv") &&
+  const bool plain = name.size() > 4 && (name.ends_with(".csv") || name.ends_with(".npy")) &&
                      name.find_first_of("/\\") == std::string::npos &&
                      name.find("..") == std::string::npos;
   if (!plain)
-    where.fail(
-        fmt::format("must be a plain file name ending in .csv (no folders), got '{}'", name));
+    where.fail(fmt::format(
+        "must be a plain file name ending in .csv or .npy (no folders), got '{}'", name));
   // A batch case's folder holds the run's files and case.csv, its summary row.
   if (name == "case.csv")
     where.fail("'case.csv' is the name of a batch case's summary row: choose another file name");
@@ -1151,7 +1151,8 @@ void check_file_name(const std::string& name, const JsonValue& where) {
 Field<RecorderSpec> recorder_file() {
   return custom<RecorderSpec>(
       {"file", "string", "`\"<type>_<k>.csv\"`",
-       "a plain file name ending in .csv, unique, not `case.csv` (a batch case's row); k counts "
+       "a plain file name ending in .csv, or .npy for NumPy's binary format (a structured array "
+       "whose fields are the columns), unique, not `case.csv` (a batch case's row); k counts "
        "the recorders from 0"},
       [](JsonObject& object, RecorderSpec& recorder, Context& context) {
         const std::optional<JsonValue> file = object.find("file");

@@ -5,6 +5,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <bit>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -102,6 +103,48 @@ void format_csv(const Table& table, fmt::memory_buffer& text) {
 }
 
 }  // namespace
+
+std::string to_npy(const Table& table) {
+  static_assert(std::endian::native == std::endian::little, "the .npy writer assumes '<f8'");
+  std::string fields;
+  for (const std::string& column : table.columns) {
+    std::string name;  // a Python string literal: quotes and backslashes escaped
+    for (char c : column)
+      name += (c == '\'' || c == '\\') ? std::string("\\") + c : std::string(1, c);
+    fmt::format_to(std::back_inserter(fields), "('{}', '<f8'), ", name);
+  }
+  const std::size_t rows = table.values.empty() ? 0 : table.values.front().size();
+  std::string header =
+      fmt::format("{{'descr': [{}], 'fortran_order': False, 'shape': ({},), }}", fields, rows);
+  // magic (6) + version (2) + header length (2, or 4 in 2.0) + header, padded with spaces and a
+  // newline to a multiple of 64 bytes.
+  const bool version2 = header.size() + 11 > 65535;
+  const std::size_t preamble = version2 ? 12 : 10;
+  header.append(63 - (preamble + header.size()) % 64, ' ');
+  header.push_back('\n');
+  std::string out("\x93NUMPY", 6);
+  out.push_back(version2 ? '\x02' : '\x01');
+  out.push_back('\x00');
+  const std::size_t length = header.size();
+  for (std::size_t b = 0; b < (version2 ? 4u : 2u); ++b)
+    out.push_back(static_cast<char>((length >> (8 * b)) & 0xff));
+  out += header;
+  const std::size_t columns = table.values.size();
+  std::vector<double> record(columns);
+  out.reserve(out.size() + rows * columns * sizeof(double));
+  for (std::size_t r = 0; r < rows; ++r) {
+    for (std::size_t c = 0; c < columns; ++c) record[c] = table.values[c][r];
+    out.append(reinterpret_cast<const char*>(record.data()), columns * sizeof(double));
+  }
+  return out;
+}
+
+void StagedFiles::write_table(const std::string& path, const Table& table) {
+  if (path.ends_with(".npy"))
+    write(path, to_npy(table));
+  else
+    write_csv(path, table);
+}
 
 std::string to_csv(const Table& table) {
   fmt::memory_buffer text;

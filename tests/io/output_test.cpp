@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <csignal>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -162,6 +163,48 @@ TEST_F(Output, StaleTemporariesOfDeadProcessesAreRemoved) {
   std::ofstream(path("notes.tmp.txt")) << "x";
   remove_stale_temporaries(folder_.string());
   EXPECT_EQ(names(), (std::vector<std::string>{"notes.tmp.txt", mine}));
+}
+
+// The .npy writer against the format's definition (numpy.lib.format): magic, version, a
+// little-endian header length, a header dict padded to 64 bytes ending in a newline, then each
+// row's doubles as they are.
+TEST(Npy, StructuredArrayOfTheColumnsAsNumPyDefinesIt) {
+  Table table = table_with_columns({"time", "joint's.force"});
+  append_row(table, {0.0, 1.5});
+  append_row(table, {0.01, -2.25e-300});
+  const std::string npy = to_npy(table);
+  ASSERT_GT(npy.size(), 10u);
+  EXPECT_EQ(npy.substr(0, 8), std::string("\x93NUMPY\x01\x00", 8));
+  const std::size_t length =
+      static_cast<unsigned char>(npy[8]) + 256u * static_cast<unsigned char>(npy[9]);
+  EXPECT_EQ((10 + length) % 64, 0u);
+  const std::string header = npy.substr(10, length);
+  EXPECT_EQ(header.back(), '\n');
+  EXPECT_NE(header.find("'descr': [('time', '<f8'), ('joint\\'s.force', '<f8'), ]"),
+            std::string::npos)
+      << header;
+  EXPECT_NE(header.find("'fortran_order': False, 'shape': (2,)"), std::string::npos) << header;
+  ASSERT_EQ(npy.size(), 10 + length + 4 * sizeof(double));
+  double values[4];
+  std::memcpy(values, npy.data() + 10 + length, sizeof(values));
+  EXPECT_EQ(values[0], 0.0);
+  EXPECT_EQ(values[1], 1.5);
+  EXPECT_EQ(values[2], 0.01);
+  EXPECT_EQ(values[3], -2.25e-300);
+}
+
+// A header past 64 KiB (thousands of columns) takes version 2.0's 4-byte length.
+TEST(Npy, ManyColumnsTakeVersionTwo) {
+  std::vector<std::string> columns{"time"};
+  for (int k = 0; k < 3000; ++k) columns.push_back(fmt::format("node_{}.u_x", k));
+  Table table = table_with_columns(columns);
+  for (auto& column : table.values) column.push_back(1.0);
+  const std::string npy = to_npy(table);
+  EXPECT_EQ(npy[6], '\x02');
+  std::size_t length = 0;
+  for (int b = 3; b >= 0; --b) length = length * 256 + static_cast<unsigned char>(npy[8 + b]);
+  EXPECT_EQ((12 + length) % 64, 0u);
+  EXPECT_EQ(npy.size(), 12 + length + columns.size() * sizeof(double));
 }
 
 }  // namespace

@@ -50,7 +50,17 @@ mkdir "$tmp/bad_json"
 printf '{"links": [' >"$tmp/bad_json/summary.json"
 expect_input_error "$tmp/bad_json" "$tmp/bad_json/summary.json"
 
-# 4. An ensemble run: ensemble.png beside the run's figures; a malformed ensemble.json is bad input.
+# 4. Histories as .npy (recorder files ending in .npy): the same figures.
+npy="$tmp/npy"
+sed 's/\.csv"/.npy"/' "$root/models/two_girders_joint.json" >"$tmp/npy_model.json"
+"$pound" run "$tmp/npy_model.json" --out "$npy" --quiet || fail "pound run with .npy recorders failed"
+[ -f "$npy/links.npy" ] || fail "no links.npy written"
+"$python" "$script" "$npy" --dpi 60 >/dev/null 2>"$tmp/stderr" ||
+  fail "plot_run.py failed on .npy histories: $(cat "$tmp/stderr")"
+is_png "$npy/link_forces.png"
+is_png "$npy/displacements.png"
+
+# 5. An ensemble run: ensemble.png beside the run's figures; a malformed ensemble.json is bad input.
 ensemble="$tmp/ensemble"
 "$pound" run "$root/models/two_girders_joint.json" --ensemble 2 --out "$ensemble" --quiet ||
   fail "pound run --ensemble 2 failed"
