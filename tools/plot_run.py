@@ -43,15 +43,12 @@ TIME_LABEL = "time [model units]"
 
 LINK_QUANTITIES = ("force", "penetration", "tangential_force", "slide")
 ENERGY_TERMS = ("kinetic", "strain", "damping", "links")
-# The summary numbers ensemble.png shows (app/ensemble.cpp lists the same in its report).
-ENSEMBLE_KEYS = ("peak_force", "peak_tension", "impacts", "peak_deformation", "ductility",
-                 "curvature_ductility", "peak_opening", "peak_seat_movement", "unseating_margin",
-                 "residual_opening", "peak_drift", "residual_drift")
 ENSEMBLE_SHOWN = 24
 
 
 def load_ensemble(folder):
-    """The quantities of ensemble.json with the keys ENSEMBLE_KEYS, or None without the file."""
+    """The headline quantities of ensemble.json (those damage is judged by, as pound marks them),
+    or None without the file."""
     path = os.path.join(folder, "ensemble.json")
     if not os.path.isfile(path):
         return None
@@ -65,7 +62,7 @@ def load_ensemble(folder):
                                              "spread")]
         if not isinstance(q.get("path"), str) or any(v is None for v in values):
             raise InputError(f"{path}: every quantity needs a path and its numbers")
-        if q["path"].rsplit("/", 1)[-1] in ENSEMBLE_KEYS:
+        if q.get("headline") is True:
             shown.append(q)
     return {"path": path, "quantities": shown, "copies": ensemble.get("copies"),
             "perturbation": ensemble.get("perturbation"),

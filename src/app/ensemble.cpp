@@ -9,6 +9,7 @@
 #include <map>
 #include <thread>
 
+#include "builder/batch_spec.hpp"
 #include "results/batch_quantities.hpp"
 #include "results/batch_statistics.hpp"
 
@@ -35,6 +36,16 @@ bool is_response(const std::string& path) {
   return !path.ends_with("balance_error");
 }
 
+// The numbers damage is judged by, which the report lists; ensemble.json has them all.
+bool is_headline(const std::string& path) {
+  static const std::vector<std::string> keys{
+      "peak_force",       "peak_tension",        "impacts",      "peak_deformation",
+      "ductility",        "curvature_ductility", "peak_opening", "peak_seat_movement",
+      "unseating_margin", "residual_opening",    "peak_drift",   "residual_drift"};
+  const std::string key = path.substr(path.rfind('/') + 1);
+  return std::find(keys.begin(), keys.end(), key) != keys.end();
+}
+
 QuantitySpread spread_of(const std::string& path, double unperturbed,
                          const std::vector<double>& values, double robust_spread) {
   QuantitySpread q{path, unperturbed};
@@ -46,6 +57,7 @@ QuantitySpread spread_of(const std::string& path, double unperturbed,
   const double size = std::max({std::abs(unperturbed), std::abs(q.min), std::abs(q.max)});
   q.spread = size > 0.0 ? (q.p84 - q.p16) / size : 0.0;
   q.robust = q.spread <= robust_spread;
+  q.headline = is_headline(path);
   return q;
 }
 
@@ -72,16 +84,6 @@ std::vector<QuantitySpread> spreads(const RunOutcome& unperturbed,
   return result;
 }
 
-// The numbers damage is judged by, which the report lists; ensemble.json has them all.
-bool is_headline(const std::string& path) {
-  static const std::vector<std::string> keys{
-      "peak_force",       "peak_tension",        "impacts",      "peak_deformation",
-      "ductility",        "curvature_ductility", "peak_opening", "peak_seat_movement",
-      "unseating_margin", "residual_opening",    "peak_drift",   "residual_drift"};
-  const std::string key = path.substr(path.rfind('/') + 1);
-  return std::find(keys.begin(), keys.end(), key) != keys.end();
-}
-
 }  // namespace
 
 int EnsembleResult::failed() const {
@@ -91,13 +93,13 @@ int EnsembleResult::failed() const {
 
 results::CaseSummary EnsembleResult::median_summary() const {
   results::CaseSummary summary = unperturbed.case_summary;
+  const std::size_t completed = copies.size() - static_cast<std::size_t>(failed());
   for (const results::BatchQuantity& quantity : results::batch_quantities()) {
     if (!(summary.*quantity.value) || !quantity.response) continue;
     std::vector<double> values;
     for (std::size_t k = 0; k < copies.size(); ++k)
       if (failures[k].empty() && copies[k].*quantity.value)
         values.push_back(*(copies[k].*quantity.value));
-    const std::size_t completed = static_cast<std::size_t>(copies.size()) - failed();
     if (!values.empty() && values.size() == completed)
       summary.*quantity.value = results::quantile(values, 0.5);
   }
@@ -105,14 +107,14 @@ results::CaseSummary EnsembleResult::median_summary() const {
 }
 
 std::string ensemble_options_error(const EnsembleOptions& options) {
-  if (options.copies < 1) return "--ensemble must be a number of copies >= 1";
-  if (!(options.perturbation > 0.0 && options.perturbation < 1e-2))
-    return "--perturbation must be in (0, 0.01): a relative change of the records at the level "
-           "of numerical noise";
-  if (!(options.perturbation * (options.copies / 2 + 1) < 0.5))
-    return "--ensemble times --perturbation must stay below 1: the records would change sign";
-  if (!(options.robust_spread > 0.0 && options.robust_spread < 1.0))
-    return "--robust-spread must be in (0, 1)";
+  if (const auto error =
+          builder::ensemble_error(options.copies, options.perturbation, options.robust_spread)) {
+    const char* option = error->number == builder::EnsembleNumber::copies ? "--ensemble"
+                         : error->number == builder::EnsembleNumber::perturbation
+                             ? "--perturbation"
+                             : "--robust-spread";
+    return fmt::format("{}: {}", option, error->why);
+  }
   if (options.jobs < 0) return "--jobs must be >= 0";
   return {};
 }
@@ -159,7 +161,7 @@ std::string ensemble_report(const EnsembleResult& result, const EnsembleOptions&
   std::vector<const QuantitySpread*> loose;
   std::size_t other = 0;
   for (const QuantitySpread& q : result.quantities)
-    if (!q.robust) (is_headline(q.path) ? loose.push_back(&q) : void(++other));
+    if (!q.robust) (q.headline ? loose.push_back(&q) : void(++other));
   std::sort(loose.begin(), loose.end(),
             [](const auto* a, const auto* b) { return a->spread > b->spread; });
   std::string text = fmt::format(
@@ -207,7 +209,8 @@ io::Document ensemble_document(const EnsembleResult& result, const EnsembleOptio
                 .set("min", q.min)
                 .set("max", q.max)
                 .set("spread", q.spread)
-                .set("robust", q.robust);
+                .set("robust", q.robust)
+                .set("headline", q.headline);
           }));
   return doc;
 }

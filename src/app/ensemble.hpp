@@ -28,6 +28,9 @@ struct QuantitySpread {
   double median = 0.0, p16 = 0.0, p84 = 0.0, min = 0.0, max = 0.0;  // over the completed copies
   double spread = 0.0;  // (p84 - p16) / the largest |value| over the runs (0 when all are 0)
   bool robust = true;
+  // One of the numbers damage is judged by (peak forces, impacts, drifts, ductilities, joint
+  // openings and seat movements), which the report and ensemble.png show.
+  bool headline = false;
 };
 
 struct EnsembleResult {

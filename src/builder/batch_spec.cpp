@@ -6,6 +6,29 @@ namespace pound::builder {
 
 const char* intensity_name(IntensityKind kind) { return kind == IntensityKind::sa ? "sa" : "pga"; }
 
+std::optional<EnsembleError> ensemble_error(int copies, double perturbation, double robust_spread) {
+  constexpr int kMostCopies = 1000;  // each copy is a whole run
+  if (copies < 1 || copies > kMostCopies)
+    return EnsembleError{
+        EnsembleNumber::copies,
+        fmt::format("the number of copies must be 1 to {}, got {}", kMostCopies, copies)};
+  if (!(perturbation > 0.0 && perturbation < 1e-2))
+    return EnsembleError{EnsembleNumber::perturbation,
+                         fmt::format("a relative change of the records at the level of numerical "
+                                     "noise is in (0, 0.01), got {}",
+                                     perturbation)};
+  // The copies' factors reach 1 +- (copies / 2 + 1) eps at most.
+  if (!(perturbation * (copies / 2 + 1) < 0.5))
+    return EnsembleError{EnsembleNumber::perturbation,
+                         fmt::format("(copies / 2 + 1) times the perturbation must stay below 0.5, "
+                                     "or the records change sign; got {} copies of {}",
+                                     copies, perturbation)};
+  if (!(robust_spread > 0.0 && robust_spread < 1.0))
+    return EnsembleError{EnsembleNumber::robust_spread,
+                         fmt::format("must be in (0, 1), got {}", robust_spread)};
+  return std::nullopt;
+}
+
 std::vector<BatchCase> plan_cases(const SetSpec& set) {
   std::vector<BatchCase> cases;
   cases.reserve(set.models.size() * set.records.size() * set.scales.size());

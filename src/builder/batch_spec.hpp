@@ -49,6 +49,15 @@ struct SetEnsemble {
   bool medians = true;  // "rows": "median"; false: "unperturbed"
 };
 
+// The bounds of an ensemble's numbers, for `pound run --ensemble` and a set's "ensemble" alike:
+// which number is wrong and why (each caller names it its own way), or none.
+enum class EnsembleNumber { copies, perturbation, robust_spread };
+struct EnsembleError {
+  EnsembleNumber number;
+  std::string why;
+};
+std::optional<EnsembleError> ensemble_error(int copies, double perturbation, double robust_spread);
+
 struct SetSpec {
   std::string source;  // the set file, for messages
   std::string title;

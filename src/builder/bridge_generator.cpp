@@ -98,6 +98,11 @@ PierHinge pier_hinge(const GirderBridgeSpec& spec) {
   return made;
 }
 
+// A pier's base hinge: the hinge's free end node and the link, of one name.
+std::string hinge_id(const GirderBridgeSpec& spec, int pier) {
+  return fmt::format("{}.p{}.hinge", spec.id, pier);
+}
+
 // The pier's lowest node: the base support, or above it the hinge's free end.
 std::string add_pier_base(const Bridge& bridge, int pier, const std::optional<PierHinge>& hinge,
                           ModelSpec& out) {
@@ -106,7 +111,7 @@ std::string add_pier_base(const Bridge& bridge, int pier, const std::optional<Pi
   out.nodes.push_back({base, bridge.x[pier], 0.0});
   out.supports.push_back({base, true, true, true});
   if (!hinge) return base;
-  const std::string node = fmt::format("{}.p{}.hinge", spec.id, pier);
+  const std::string node = hinge_id(spec, pier);
   out.nodes.push_back({node, bridge.x[pier], 0.0});
   out.supports.push_back({node, true, true, false});
   LinkSpec link = make_link(node, node, base, {1.0, 0.0}, 0.0, hinge->law);
@@ -145,7 +150,7 @@ void add_pier(const Bridge& bridge, int pier, ModelSpec& out) {
                            yield_drift,
                            hinge.has_value()};
   if (hinge && spec.pier_hinge->plastic_hinge_length) {
-    monitor.hinge = fmt::format("{}.p{}.hinge", spec.id, pier);
+    monitor.hinge = hinge_id(spec, pier);
     monitor.yield_curvature = spec.pier_hinge->yield_curvature;
     monitor.plastic_hinge_length = spec.pier_hinge->plastic_hinge_length;
   }

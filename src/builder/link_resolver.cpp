@@ -110,6 +110,12 @@ void resolve_friction(const LinkPlace& place, model::Link& link) {
                                       friction.stick_damping, friction.stick_mass, friction.radius};
 }
 
+// Link k's JSON path: its entry in "links", or its generator's.
+Origin link_origin(const Resolver& resolver) {
+  return origin_of(resolver.user_spec().links.size(), "links",
+                   resolver.spec().generated_from.links);
+}
+
 model::Link resolve_link(const LinkPlace& place) {
   const LinkSpec& spec = place.spec;
   model::Link link;
@@ -129,8 +135,7 @@ model::Link resolve_link(const LinkPlace& place) {
 
 std::vector<model::Link> resolve_links(const Resolver& resolver, const model::Model& model) {
   const ModelSpec& spec = resolver.spec();
-  const Origin origin =
-      origin_of(resolver.user_spec().links.size(), "links", spec.generated_from.links);
+  const Origin origin = link_origin(resolver);
   std::vector<model::Link> links;
   for (std::size_t k = 0; k < spec.links.size(); ++k)
     links.push_back(resolve_link({resolver, model, spec.links[k], origin(k)}));
@@ -141,8 +146,7 @@ void add_link_damping(const Resolver& resolver,
                       const std::optional<model::RayleighDamping>& damping,
                       std::vector<model::Link>& links) {
   const ModelSpec& spec = resolver.spec();
-  const Origin origin =
-      origin_of(resolver.user_spec().links.size(), "links", spec.generated_from.links);
+  const Origin origin = link_origin(resolver);
   for (std::size_t k = 0; k < spec.links.size(); ++k) {
     const std::optional<LinkRayleighSpec>& rayleigh = spec.links[k].rayleigh;
     if (!rayleigh) continue;

@@ -143,26 +143,22 @@ builder::SetEnsemble read_ensemble(JsonObject& object) {
   builder::SetEnsemble ensemble;
   const JsonValue copies = object.at("copies");
   ensemble.copies = copies.as<int>();
-  if (ensemble.copies < 1 || ensemble.copies > 1000)
-    copies.fail(fmt::format("the number of copies must be 1 to 1000, got {}", ensemble.copies));
-  if (const std::optional<JsonValue> value = object.find("perturbation")) {
-    ensemble.perturbation = value->as<double>();
-    if (!(ensemble.perturbation > 0.0 && ensemble.perturbation < 1e-2))
-      value->fail(
-          fmt::format("a relative change of the records at the level of numerical noise "
-                      "is in (0, 0.01), got {}",
-                      ensemble.perturbation));
-    if (!(ensemble.perturbation * (ensemble.copies / 2 + 1) < 0.5))
-      value->fail("copies times perturbation must stay below 1: the records would change sign");
-  }
-  if (const std::optional<JsonValue> value = object.find("robust_spread")) {
-    ensemble.robust_spread = value->as<double>();
-    if (!(ensemble.robust_spread > 0.0 && ensemble.robust_spread < 1.0))
-      value->fail(fmt::format("must be in (0, 1), got {}", ensemble.robust_spread));
-  }
+  const std::optional<JsonValue> perturbation = object.find("perturbation");
+  if (perturbation) ensemble.perturbation = perturbation->as<double>();
+  const std::optional<JsonValue> robust_spread = object.find("robust_spread");
+  if (robust_spread) ensemble.robust_spread = robust_spread->as<double>();
   if (const std::optional<JsonValue> rows = object.find("rows"))
     ensemble.medians = rows->as_one_of({"median", "unperturbed"}) == "median";
   object.finish();
+  if (const auto error =
+          builder::ensemble_error(ensemble.copies, ensemble.perturbation, ensemble.robust_spread)) {
+    // A number left at its default is valid alone: the one named is there (else "copies").
+    const JsonValue where =
+        error->number == builder::EnsembleNumber::perturbation    ? perturbation.value_or(copies)
+        : error->number == builder::EnsembleNumber::robust_spread ? robust_spread.value_or(copies)
+                                                                  : copies;
+    where.fail(error->why);
+  }
   return ensemble;
 }
 

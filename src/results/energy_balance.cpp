@@ -9,10 +9,13 @@ double EnergyTerms::largest_term() const {
   return std::max({std::abs(input), kinetic, strain, std::abs(damping), std::abs(links), initial});
 }
 
+double EnergyTerms::residual() const {
+  return kinetic + strain + damping + links - input - initial;
+}
+
 double EnergyTerms::created_fraction() const {
   const double largest = largest_term();
-  const double residual = kinetic + strain + damping + links - input - initial;
-  return largest > 0.0 ? residual / largest : 0.0;
+  return largest > 0.0 ? residual() / largest : 0.0;
 }
 
 double EnergyTerms::link_created_fraction() const {
@@ -22,8 +25,7 @@ double EnergyTerms::link_created_fraction() const {
 
 double EnergyTerms::balance_error() const {
   const double largest = largest_term();
-  const double residual = kinetic + algorithmic + strain + damping + links - input - initial;
-  return largest > 0.0 ? std::abs(residual) / largest : 0.0;
+  return largest > 0.0 ? std::abs(residual() + algorithmic) / largest : 0.0;
 }
 
 double EnergyBalance::mass_norm(const Vector& acceleration) {

@@ -29,6 +29,8 @@ struct EnergyTerms {
   double algorithmic = 0.0;     // c dt^2 a^T M a now less at the start (0: trapezoidal rule)
   double initial = 0.0;         // kinetic + strain at the start
   double largest_term() const;  // max(|input|, kinetic, strain, |damping|, |links|, initial)
+  // kinetic + strain + damping + links - input - initial: the physical energy made up.
+  double residual() const;
   // |kinetic + algorithmic + strain + damping + links - input - initial| over the largest term.
   double balance_error() const;
   // The same without the absolute value and the algorithmic energy: > 0 when the structure holds

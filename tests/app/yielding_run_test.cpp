@@ -1,12 +1,14 @@
 // The yielding building pair example as `pound run` reports it: each yielding storey's link gives
 // its plastic drift (peak - yield) and what it dissipated, the energy balance names the part of
 // the links' energy that is hysteretic (their sum), and the balance still closes to rounding.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -43,26 +45,36 @@ TEST(YieldingRun, SummaryGivesPlasticDemandsAndTheHystereticPartOfTheBalance) {
   EXPECT_LT(energy["worst_balance_error"].get<double>(), 1e-9);
 }
 
-// The hinged bridge with its hinges given by a yield curvature and a plastic-hinge length: each
-// pier's curvature ductility is 1 + theta_p / (phi_y L_p) of its hinge's plastic rotation.
-TEST(YieldingRun, HingedPiersReportTheirCurvatureDuctility) {
+// A bundled model edited by `edit`, its record named from the models' folder, run with its
+// histories off.
+RunOutcome run_edited(const std::string& name, const std::string& record,
+                      const std::function<void(nlohmann::json&)>& edit) {
   const std::string models = std::string(POUND_SOURCE_DIR) + "/models/";
-  nlohmann::json model =
-      nlohmann::json::parse(std::ifstream(models + "three_span_bridge_takeda.json"));
-  const double phi_y = 4.0e6 / (3.0e10 * 0.8), hinge_length = 0.8;  // M_y = E I phi_y as before
-  nlohmann::json& hinge = model["generators"][0]["pier_hinge"];
-  hinge.erase("yield_moment");
-  hinge["yield_curvature"] = phi_y;
-  hinge["plastic_hinge_length"] = hinge_length;
-  model["excitations"][0]["record"] = models + "../ground_motions/synthetic_firm_01.AT2";
-  const std::filesystem::path file = std::filesystem::temp_directory_path() /
-                                     ("pound_curvature_" + std::to_string(::getpid()) + ".json");
+  nlohmann::json model = nlohmann::json::parse(std::ifstream(models + name));
+  edit(model);
+  model["excitations"][0]["record"] = models + "../ground_motions/" + record;
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / fmt::format("pound_edited_{}_{}", ::getpid(), name);
   std::ofstream(file) << model.dump();
   RunRequest request;
   request.model_path = file.string();
   request.histories = false;
-  const RunOutcome outcome = run_model(request);
+  RunOutcome outcome = run_model(request);
   std::filesystem::remove(file);
+  return outcome;
+}
+
+// The hinged bridge with its hinges given by a yield curvature and a plastic-hinge length: each
+// pier's curvature ductility is 1 + theta_p / (phi_y L_p) of its hinge's plastic rotation.
+TEST(YieldingRun, HingedPiersReportTheirCurvatureDuctility) {
+  const double phi_y = 4.0e6 / (3.0e10 * 0.8), hinge_length = 0.8;  // M_y = E I phi_y as before
+  const RunOutcome outcome =
+      run_edited("three_span_bridge_takeda.json", "synthetic_firm_01.AT2", [&](nlohmann::json& m) {
+        nlohmann::json& hinge = m["generators"][0]["pier_hinge"];
+        hinge.erase("yield_moment");
+        hinge["yield_curvature"] = phi_y;
+        hinge["plastic_hinge_length"] = hinge_length;
+      });
   ASSERT_TRUE(outcome.failure.empty()) << outcome.failure;
   const nlohmann::json summary = nlohmann::json::parse(outcome.summary.dump());
   std::map<std::string, double> plastic;
@@ -83,23 +95,13 @@ TEST(YieldingRun, HingedPiersReportTheirCurvatureDuctility) {
   EXPECT_NE(outcome.report.find("curvature ductility"), std::string::npos) << outcome.report;
 }
 
-// The pair run with `storey_damping` set: the summary of each run (histories off).
+// The yielding pair with `storey_damping` set on both buildings.
 nlohmann::json run_with_storey_damping(const std::string& damping) {
-  const std::string models = std::string(POUND_SOURCE_DIR) + "/models/";
-  nlohmann::json model =
-      nlohmann::json::parse(std::ifstream(models + "adjacent_buildings_yielding.json"));
-  for (const char* side : {"left", "right"})
-    model["generators"][0][side]["storey_damping"] = damping;
-  model["excitations"][0]["record"] = models + "../ground_motions/synthetic_soft_01.AT2";
-  const std::filesystem::path file =
-      std::filesystem::temp_directory_path() /
-      ("pound_storey_damping_" + damping + std::to_string(::getpid()) + ".json");
-  std::ofstream(file) << model.dump();
-  RunRequest request;
-  request.model_path = file.string();
-  request.histories = false;
-  const RunOutcome outcome = run_model(request);
-  std::filesystem::remove(file);
+  const RunOutcome outcome = run_edited(
+      "adjacent_buildings_yielding.json", "synthetic_soft_01.AT2", [&](nlohmann::json& model) {
+        for (const char* side : {"left", "right"})
+          model["generators"][0][side]["storey_damping"] = damping;
+      });
   EXPECT_TRUE(outcome.failure.empty()) << outcome.failure;
   return nlohmann::json::parse(outcome.summary.dump());
 }

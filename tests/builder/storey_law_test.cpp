@@ -68,17 +68,26 @@ std::vector<double> floor_histories(const Json& model) {
   return history;
 }
 
+// max_k |a_k - b_k|
+double largest_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  double largest = 0.0;
+  for (std::size_t k = 0; k < a.size(); ++k) largest = std::max(largest, std::abs(a[k] - b[k]));
+  return largest;
+}
+
+void set_storey_damping(Json& model, const char* kind) {
+  for (const char* side : {"left", "right"}) model["generators"][0][side]["storey_damping"] = kind;
+}
+
 TEST(StoreyLaw, ElasticStoreyLinksReproduceTheElasticBuilding) {
   Json elastic = pair_model(), linked = pair_model();
   for (const char* side : {"left", "right"})
     for (Json& storey : storeys(linked, side)) storey["law"] = {{"type", "elastic_spring"}};
   const std::vector<double> columns = floor_histories(elastic), links = floor_histories(linked);
   ASSERT_EQ(columns.size(), links.size());
-  double difference = 0.0, peak = 0.0;
-  for (std::size_t k = 0; k < columns.size(); ++k) {
-    difference = std::max(difference, std::abs(columns[k] - links[k]));
-    peak = std::max(peak, std::abs(columns[k]));
-  }
+  double peak = 0.0;
+  for (double u : columns) peak = std::max(peak, std::abs(u));
+  const double difference = largest_difference(columns, links);
   std::cout << "storey links against storey columns (with their a1 k dashpots): max difference "
             << difference / peak << " of the peak floor displacement " << peak << "\n";
   EXPECT_GT(peak, 1e-3);
@@ -86,21 +95,13 @@ TEST(StoreyLaw, ElasticStoreyLinksReproduceTheElasticBuilding) {
   // tolerance 1e-10 on the link rows).
   EXPECT_LT(difference / peak, 1e-8);
   // Without its dashpots the building loses its stiffness-proportional damping.
-  for (const char* side : {"left", "right"})
-    linked["generators"][0][side]["storey_damping"] = "none";
-  const std::vector<double> undamped = floor_histories(linked);
-  double change = 0.0;
-  for (std::size_t k = 0; k < columns.size(); ++k)
-    change = std::max(change, std::abs(columns[k] - undamped[k]));
+  set_storey_damping(linked, "none");
+  const double change = largest_difference(columns, floor_histories(linked));
   std::cout << "storey_damping none changes the response by " << change / peak << "\n";
   EXPECT_GT(change / peak, 1e-3);
   // An elastic law's committed tangent is its stiffness: a1 k in the link is the dashpot again.
-  for (const char* side : {"left", "right"})
-    linked["generators"][0][side]["storey_damping"] = "committed";
-  const std::vector<double> committed = floor_histories(linked);
-  double committed_difference = 0.0;
-  for (std::size_t k = 0; k < columns.size(); ++k)
-    committed_difference = std::max(committed_difference, std::abs(columns[k] - committed[k]));
+  set_storey_damping(linked, "committed");
+  const double committed_difference = largest_difference(columns, floor_histories(linked));
   std::cout << "storey_damping committed (elastic storeys) against the columns: "
             << committed_difference / peak << "\n";
   EXPECT_LT(committed_difference / peak, 1e-8);
