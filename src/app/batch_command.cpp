@@ -145,11 +145,12 @@ int batch_command(const Arguments& arguments) {
   try {
     report = run_batch(batch, cluster);
   } catch (...) {
-    // Boost.MPI aborts every rank, before the message is printed, if an exception unwinds its
-    // environment: end MPI first (every rank fails alike), then report as usual.
-    const std::exception_ptr failure = std::current_exception();
+    // Boost.MPI aborts every rank if an exception unwinds its environment, so MPI ends here. The
+    // message comes first: MPI_Finalize waits for every rank, and mpirun kills the ranks still
+    // running once one exits with an error, so rank 0 says why before any rank can exit.
+    const int exit_code = report_failure("batch", std::current_exception());
     started.reset();
-    std::rethrow_exception(failure);
+    return exit_code;
   }
   if (!cluster.is_root()) return 0;
   if (!quiet) print_report(batch, report);

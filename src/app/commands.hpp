@@ -2,6 +2,7 @@
 // Subcommands of the `pound` program. Each takes the arguments after its name and returns the
 // process exit code: 0 success, 1 verification failed / usage error, 2 input error, 3 the
 // analysis failed, 4 output could not be written.
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,9 @@ int check_command(const Arguments& arguments);
 int study_command(const Arguments& arguments);
 int expand_command(const Arguments& arguments);
 int docs_command(const Arguments& arguments);
+
+// Prints the message for a command's failure and returns its exit code.
+int report_failure(const std::string& command, const std::exception_ptr& failure);
 
 // Dispatches argv to a subcommand, turning errors into messages and exit codes.
 int main_entry(int argc, char** argv);

@@ -39,31 +39,9 @@ Exit codes: 0 ok, 1 usage error or failed verification, 2 bad input, 3 analysis 
 
 }  // namespace
 
-int main_entry(int argc, char** argv) {
-  const Arguments all(argv + 1, argv + argc);
-  if (all.empty()) {
-    std::cerr << kUsage;
-    return 1;
-  }
-  const std::string command = all.front();
-  Arguments rest(all.begin() + 1, all.end());
+int report_failure(const std::string& command, const std::exception_ptr& failure) {
   try {
-    using Command = int (*)(const Arguments&);
-    const std::map<std::string, Command> commands = {
-        {"run", run_command},          {"batch", batch_command},       {"verify", verify_command},
-        {"modes", modes_command},      {"check", check_command},       {"study", study_command},
-        {"expand", expand_command},    {"spectrum", spectrum_command}, {"docs", docs_command},
-        {"pushover", pushover_command}};
-    if (auto found = commands.find(command); found != commands.end()) return found->second(rest);
-    if (command == "help" || command == "--help" || command == "-h") {
-      if (!rest.empty())
-        if (auto found = commands.find(rest.front()); found != commands.end())
-          return found->second({"--help"});
-      std::cout << kUsage;
-      return 0;
-    }
-    std::cerr << fmt::format("pound: unknown command '{}'\n\n{}", command, kUsage);
-    return 1;
+    std::rethrow_exception(failure);
   } catch (const Interrupted& error) {
     std::cerr << fmt::format("pound {}: {}: no result of this run was put in place\n", command,
                              error.what());
@@ -97,6 +75,36 @@ int main_entry(int argc, char** argv) {
         "error: pound {} stopped: {} (an unexpected failure: please report it with the input)\n",
         command, error.what());
     return 3;
+  }
+}
+
+int main_entry(int argc, char** argv) {
+  const Arguments all(argv + 1, argv + argc);
+  if (all.empty()) {
+    std::cerr << kUsage;
+    return 1;
+  }
+  const std::string command = all.front();
+  Arguments rest(all.begin() + 1, all.end());
+  try {
+    using Command = int (*)(const Arguments&);
+    const std::map<std::string, Command> commands = {
+        {"run", run_command},          {"batch", batch_command},       {"verify", verify_command},
+        {"modes", modes_command},      {"check", check_command},       {"study", study_command},
+        {"expand", expand_command},    {"spectrum", spectrum_command}, {"docs", docs_command},
+        {"pushover", pushover_command}};
+    if (auto found = commands.find(command); found != commands.end()) return found->second(rest);
+    if (command == "help" || command == "--help" || command == "-h") {
+      if (!rest.empty())
+        if (auto found = commands.find(rest.front()); found != commands.end())
+          return found->second({"--help"});
+      std::cout << kUsage;
+      return 0;
+    }
+    std::cerr << fmt::format("pound: unknown command '{}'\n\n{}", command, kUsage);
+    return 1;
+  } catch (...) {
+    return report_failure(command, std::current_exception());
   }
 }
 
