@@ -69,11 +69,18 @@ TransientStatistics TransientAnalysis::run(State& state, const StepObserver& obs
   // Steps are counted, not accumulated, so the end time has no round-off drift.
   const double span = settings_.end_time - start;
   const long nominal_steps = static_cast<long>(std::ceil(span / settings_.time_step - 1e-9));
+  // Every step is the nominal dt exactly (the last one may be shorter), with the time set to
+  // the step's end: differences of targets vary in their last bits, and each distinct dt would
+  // cost a factorisation of the implicit integrators.
   for (long k = 1; k <= nominal_steps; ++k) {
     const double target = (k == nominal_steps)
                               ? settings_.end_time
                               : start + static_cast<double>(k) * settings_.time_step;
-    advance(state, target - state.time, 0, observer);
+    const double remaining = target - state.time;
+    const double dt = std::abs(remaining - settings_.time_step) <= 1e-9 * settings_.time_step
+                          ? settings_.time_step
+                          : remaining;
+    advance(state, dt, target, 0, observer);
   }
   return statistics_;
 }
@@ -103,12 +110,14 @@ void TransientAnalysis::accept(State& state, const StepResult& result) {
   stats.max_unbalanced_force = std::max(stats.max_unbalanced_force, result.unbalanced_force);
 }
 
-void TransientAnalysis::advance(State& state, double dt, int depth, const StepObserver& observer) {
+void TransientAnalysis::advance(State& state, double dt, double end, int depth,
+                                const StepObserver& observer) {
   TransientStatistics& stats = statistics_;
   check_limits(state);
   const StepResult result = integrator_.advance(system_, state, dt, next_);
   if (result.converged) {
     accept(state, result);
+    state.time = end;  // from + dt up to rounding
     if (observer) observer(state, result);
     return;
   }
@@ -117,9 +126,8 @@ void TransientAnalysis::advance(State& state, double dt, int depth, const StepOb
     throw SolveError(state.time, fmt::format("{} after cutting the step {} times to dt = {:.3e}",
                                              result.failure, depth, dt));
   ++stats.step_cuts;
-  const double end = state.time + dt;
-  advance(state, 0.5 * dt, depth + 1, observer);
-  advance(state, end - state.time, depth + 1, observer);
+  advance(state, 0.5 * dt, state.time + 0.5 * dt, depth + 1, observer);
+  advance(state, 0.5 * dt, end, depth + 1, observer);
 }
 
 namespace {

@@ -58,7 +58,8 @@ class TransientAnalysis {
 
  private:
   class AdaptiveRun;
-  void advance(State& state, double dt, int depth, const StepObserver& observer);
+  // One step of dt ending at `end` (the time the accepted state gets), halved on failure.
+  void advance(State& state, double dt, double end, int depth, const StepObserver& observer);
   // The trial in next_ becomes the state, and counts.
   void accept(State& state, const StepResult& result);
   void check_limits(const State& state);

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <set>
+#include <vector>
 
 #include "core/errors.hpp"
 #include "integrators/newmark.hpp"
@@ -182,6 +184,46 @@ TEST(TransientAnalysis, EndTimeIsReachedExactlyWithoutDrift) {
   const integrators::TransientStatistics stats = analysis.run(state);
   EXPECT_EQ(stats.steps, 11);  // ten steps of 0.1 and a last one of 0.05
   EXPECT_EQ(state.time, 1.05);
+}
+
+// Issue 20: the steps were the differences of their end times, which vary in their last bits
+// (16 distinct values over the bundled bridge's 16,667 steps), and the implicit integrators
+// made a factorisation for each. Every step is now the nominal dt exactly, cut steps its exact
+// halves, and the recorded times are still k dt without drift.
+class StepSizeSpy final : public integrators::Integrator {
+ public:
+  std::string name() const override { return newmark.name(); }
+  void initialize(integrators::SecondOrderSystem& system, integrators::State& state) override {
+    newmark.initialize(system, state);
+  }
+  integrators::StepResult advance(integrators::SecondOrderSystem& system,
+                                  const integrators::State& from, double dt,
+                                  integrators::State& to) override {
+    steps.insert(dt);
+    return newmark.advance(system, from, dt, to);
+  }
+  integrators::Newmark newmark = integrators::Newmark::average_acceleration();
+  std::set<double> steps;
+};
+
+TEST(TransientAnalysis, EveryStepIsTheNominalStepExactly) {
+  testing::Oscillator system(1.0, 0.05, 40.0);
+  StepSizeSpy spy;
+  integrators::TransientAnalysis analysis(system, spy, {.time_step = 0.0015, .end_time = 25.0});
+  integrators::State state;
+  state.displacement = Vector::Constant(1, 1.0);
+  std::vector<double> times;
+  analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
+    times.push_back(s.time);
+  });
+  std::cout << "distinct step sizes: " << spy.steps.size() << "\n";
+  // 16,666 steps of 0.0015 and a last one of 0.001.
+  EXPECT_EQ(spy.steps.size(), 2u);
+  EXPECT_EQ(*spy.steps.rbegin(), 0.0015);
+  ASSERT_EQ(times.size(), 16668u);
+  for (std::size_t k = 1; k + 1 < times.size(); ++k)
+    ASSERT_EQ(times[k], static_cast<double>(k) * 0.0015) << k;
+  EXPECT_EQ(times.back(), 25.0);
 }
 
 }  // namespace
