@@ -61,14 +61,51 @@ void BandedLdlt::solve(const Vector& rhs, Vector& solution) const {
     for (Index i = n - 2; i >= 0; --i) next = x[i] = x[i] * inv_d[i] - l[i + 1] * next;
     return;
   }
+  switch (b) {
+    case 2:
+      return substitute<2>(r, x);
+    case 3:
+      return substitute<3>(r, x);
+    case 4:
+      return substitute<4>(r, x);
+    case 5:
+      return substitute<5>(r, x);
+    case 6:
+      return substitute<6>(r, x);
+    case 7:
+      return substitute<7>(r, x);
+    case 8:
+      return substitute<8>(r, x);
+    default:
+      return substitute<0>(r, x);
+  }
+}
+
+// Forward and back substitution; a Band > 0 fixes the bandwidth at compile time, so the inner
+// loops of the rows away from the ends unroll (the bridge's b = 5: a quarter of the time).
+template <Index Band>
+void BandedLdlt::substitute(const double* rhs, double* x) const {
+  const Index n = size_, b = Band > 0 ? Band : bandwidth_;
+  const double* inv_d = inverse_pivot_.data();
+  const double* lower = lower_.data();  // row i of L at lower + i * b
   for (Index i = 0; i < n; ++i) {
-    double value = r[i];
-    for (Index j = std::max<Index>(0, i - b); j < i; ++j) value -= lower_(i - j - 1, i) * x[j];
+    double value = rhs[i];
+    const double* row = lower + i * b;
+    // In column order, as the factorisation's own products.
+    if (i >= b) {
+      for (Index k = b - 1; k >= 0; --k) value -= row[k] * x[i - k - 1];
+    } else {
+      for (Index k = i - 1; k >= 0; --k) value -= row[k] * x[i - k - 1];
+    }
     x[i] = value;
   }
   for (Index i = n - 1; i >= 0; --i) {
     double value = x[i] * inv_d[i];
-    for (Index j = i + 1; j <= std::min(n - 1, i + b); ++j) value -= lower_(j - i - 1, j) * x[j];
+    if (i + b < n) {
+      for (Index k = 0; k < b; ++k) value -= lower[(i + k + 1) * b + k] * x[i + k + 1];
+    } else {
+      for (Index k = 0; i + k + 1 < n; ++k) value -= lower[(i + k + 1) * b + k] * x[i + k + 1];
+    }
     x[i] = value;
   }
 }

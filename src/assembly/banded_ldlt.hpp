@@ -21,6 +21,9 @@ class BandedLdlt {
   static Index bandwidth_of(const Eigen::SparseMatrix<double>& matrix);
 
  private:
+  template <Index Band>
+  void substitute(const double* rhs, double* x) const;
+
   Index size_;
   Index bandwidth_;
   // lower_(k, i) = L(i, i - k - 1) for k < b; stored column by row so a row is contiguous.

@@ -326,11 +326,7 @@ bool Newmark::solve_link_forces(SecondOrderSystem& system, const Factorization& 
           test_.max_iterations, result.unbalanced_force, reference);
       return false;
     }
-    // d(residual)/dF = I + T G
-    jacobian_.noalias() = tangent_ * f.coupling;
-    jacobian_.diagonal().array() += 1.0;
-    jacobian_lu_.compute(jacobian_);
-    correction_ = jacobian_lu_.solve(residual_);
+    solve_correction(f);
     assumed_force_ -= correction_;
     ++result.iterations;
     // Converged to machine precision: with a very stiff penalty the residual cannot fall below
@@ -340,6 +336,47 @@ bool Newmark::solve_link_forces(SecondOrderSystem& system, const Factorization& 
       return true;
     }
   }
+}
+
+// d(residual)/dF = I + T G, with T block diagonal (a link's row, or its normal and tangential
+// rows). A row whose tangent is zero (an open contact, a slack restrainer) is the identity row,
+// so its correction is its residual; only the rows with a tangent form the system that is
+// factored, at no more than the size of the active links.
+void Newmark::solve_correction(const Factorization& f) {
+  const Index m = residual_.size();
+  correction_ = residual_;
+  active_rows_.clear();
+  moved_rows_.clear();
+  for (Index r = 0; r < m; ++r) {
+    if (tangent_(r, r) != 0.0 || (r > 0 && tangent_(r, r - 1) != 0.0))
+      active_rows_.push_back(r);
+    else if (residual_[r] != 0.0)
+      moved_rows_.push_back(r);
+  }
+  const Index size = static_cast<Index>(active_rows_.size());
+  if (size == 0) return;
+  // Row r of T G: T(r, r) G(r, :) + T(r, r - 1) G(r - 1, :), the second only inside a link.
+  const auto jacobian_entry = [&](Index r, Index c) {
+    double entry = tangent_(r, r) * f.coupling(r, c);
+    if (r > 0 && tangent_(r, r - 1) != 0.0) entry += tangent_(r, r - 1) * f.coupling(r - 1, c);
+    return entry;
+  };
+  jacobian_.resize(size, size);
+  reduced_residual_.resize(size);
+  for (Index i = 0; i < size; ++i) {
+    const Index r = active_rows_[static_cast<std::size_t>(i)];
+    for (Index j = 0; j < size; ++j)
+      jacobian_(i, j) = jacobian_entry(r, active_rows_[static_cast<std::size_t>(j)]);
+    jacobian_(i, i) += 1.0;
+    // The identity rows' known corrections move to the right-hand side.
+    double rhs = residual_[r];
+    for (const Index c : moved_rows_) rhs -= jacobian_entry(r, c) * residual_[c];
+    reduced_residual_[i] = rhs;
+  }
+  jacobian_lu_.compute(jacobian_);
+  reduced_correction_.noalias() = jacobian_lu_.solve(reduced_residual_);
+  for (Index i = 0; i < size; ++i)
+    correction_[active_rows_[static_cast<std::size_t>(i)]] = reduced_correction_[i];
 }
 
 void Newmark::evaluate_links(LinkSet& links, const Factorization& f, double c_m, double c_c) {

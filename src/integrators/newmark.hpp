@@ -12,6 +12,7 @@
 // unbalanced force of the whole system is exactly B^T (F - F_law).
 #include <Eigen/LU>
 #include <map>
+#include <vector>
 
 #include "integrators/integrator.hpp"
 #include "integrators/integrator_catalog.hpp"
@@ -76,6 +77,8 @@ class Newmark final : public Integrator {
   // F_{n+1} by the condensed Newton iteration; false, with result.failure, when it fails.
   bool solve_link_forces(SecondOrderSystem& system, const Factorization& f, double c_m, double c_c,
                          double external_norm, StepResult& result);
+  // The Newton correction of the link forces from residual_ and tangent_, in correction_.
+  void solve_correction(const Factorization& f);
   // delta, rate and acceleration of the links at the assumed F, the laws' forces and tangent
   // there, and the residual F - F_law.
   void evaluate_links(LinkSet& links, const Factorization& f, double c_m, double c_c);
@@ -108,6 +111,9 @@ class Newmark final : public Integrator {
   Vector delta_, rate_, acceleration_, assumed_force_, law_force_, residual_, correction_;
   Matrix tangent_, jacobian_;
   Eigen::PartialPivLU<Matrix> jacobian_lu_;
+  std::vector<Index> active_rows_;  // link rows with a tangent, in order
+  std::vector<Index> moved_rows_;   // the others with a residual
+  Vector reduced_residual_, reduced_correction_;
   Vector link_offset_, link_offset_rate_, link_offset_acceleration_;
   bool links_move_ = false;  // this step's links see the supports' motion (predict_links)
 };

@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <mutex>
@@ -89,21 +91,26 @@ double damping_for_restitution(const LawEntry& entry, const LawSpec& law, double
   const auto reached = [&](double damping) {
     return impact_restitution(*entry.calibration->unit_law(damping, law));
   };
+  // e falls monotonically with the knob: bracket the target by doubling, then close in with
+  // TOMS 748 (Alefeld, Potra & Shi 1995; Boost.Math), about a quarter of bisection's impact
+  // integrations for the same knob to 1e-12.
   double low = 0.0, high = 1.0;
-  while (reached(high) > restitution) {
+  double high_excess = reached(high) - restitution;
+  while (high_excess > 0.0) {
     low = high;
     high *= 2.0;
     if (high > 1e4)
       throw std::domain_error(
           fmt::format("restitution {} cannot be reached by {}", restitution, entry.name));
+    high_excess = reached(high) - restitution;
   }
-  for (int iteration = 0; iteration < 60 && high - low > 1e-12 * high; ++iteration) {
-    const double middle = 0.5 * (low + high);
-    const double e = reached(middle);
-    if (std::abs(e - restitution) < 1e-9) return cache[key] = middle;
-    (e > restitution ? low : high) = middle;
-  }
-  return cache[key] = 0.5 * (low + high);
+  if (high_excess == 0.0) return cache[key] = high;
+  const double low_excess = low == 0.0 ? 1.0 - restitution : reached(low) - restitution;
+  std::uintmax_t evaluations = 60;
+  const auto [from, to] = boost::math::tools::toms748_solve(
+      [&](double knob) { return reached(knob) - restitution; }, low, high, low_excess, high_excess,
+      [](double a, double b) { return b - a <= 1e-12 * b; }, evaluations);
+  return cache[key] = 0.5 * (from + to);
 }
 
 double calibrated_damping(const LawEntry& entry, const LawSpec& law, const LawSource& where) {
