@@ -427,7 +427,7 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
 void StructuralSystem::store_stiffness_for_products() {
   const Index n = stiffness_.rows();
   if (const Index b = BandedLdlt::bandwidth_of(stiffness_);
-      n > 0 && (2 * b + 1) * n <= 2 * stiffness_.nonZeros()) {
+      n > 0 && (2 * b + 1) * n <= 4 * stiffness_.nonZeros()) {
     stiffness_bandwidth_ = b;
     stiffness_band_ = Matrix::Zero(n, 2 * b + 1);
     for (Index col = 0; col < stiffness_.outerSize(); ++col)

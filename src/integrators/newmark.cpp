@@ -182,6 +182,7 @@ const Newmark::Factorization& Newmark::factorization(SecondOrderSystem& system, 
   const double c_m = (1.0 - alpha_m_) / (1.0 - alpha_f_) / (beta_ * dt * dt);
   const double c_c = gamma_ / (beta_ * dt);
   Factorization f;
+  f.id = ++factorization_count_;
   f.solver = system.factor(c_m, system.has_damping() ? c_c : 0.0, 1.0);
   const LinkSet& links = system.links();
   const Index n = system.size(), m = links.size();
@@ -361,19 +362,34 @@ void Newmark::solve_correction(const Factorization& f) {
     if (r > 0 && tangent_(r, r - 1) != 0.0) entry += tangent_(r, r - 1) * f.coupling(r - 1, c);
     return entry;
   };
-  jacobian_.resize(size, size);
   reduced_residual_.resize(size);
   for (Index i = 0; i < size; ++i) {
     const Index r = active_rows_[static_cast<std::size_t>(i)];
-    for (Index j = 0; j < size; ++j)
-      jacobian_(i, j) = jacobian_entry(r, active_rows_[static_cast<std::size_t>(j)]);
-    jacobian_(i, i) += 1.0;
     // The identity rows' known corrections move to the right-hand side.
     double rhs = residual_[r];
     for (const Index c : moved_rows_) rhs -= jacobian_entry(r, c) * residual_[c];
     reduced_residual_[i] = rhs;
   }
-  jacobian_lu_.compute(jacobian_);
+  // The same rows with the same tangents (linear laws, or branches that did not change): the
+  // same matrix, whose factors are kept.
+  active_tangents_.clear();
+  for (const Index r : active_rows_)
+    active_tangents_.insert(active_tangents_.end(),
+                            {tangent_(r, r), r > 0 ? tangent_(r, r - 1) : 0.0});
+  if (f.id != factored_id_ || active_rows_ != factored_rows_ ||
+      active_tangents_ != factored_tangents_) {
+    jacobian_.resize(size, size);
+    for (Index i = 0; i < size; ++i) {
+      const Index r = active_rows_[static_cast<std::size_t>(i)];
+      for (Index j = 0; j < size; ++j)
+        jacobian_(i, j) = jacobian_entry(r, active_rows_[static_cast<std::size_t>(j)]);
+      jacobian_(i, i) += 1.0;
+    }
+    jacobian_lu_.compute(jacobian_);
+    factored_id_ = f.id;
+    factored_rows_ = active_rows_;
+    factored_tangents_ = active_tangents_;
+  }
   reduced_correction_.noalias() = jacobian_lu_.solve(reduced_residual_);
   for (Index i = 0; i < size; ++i)
     correction_[active_rows_[static_cast<std::size_t>(i)]] = reduced_correction_[i];

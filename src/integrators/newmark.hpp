@@ -62,6 +62,7 @@ class Newmark final : public Integrator {
     std::unique_ptr<LinearSolver> solver;
     Matrix influence;  // Z = A^{-1} B^T (n x m)
     Matrix coupling;   // G = B Z (m x m)
+    long id = 0;       // serial number, for the link system factored with it
   };
   const Factorization& factorization(SecondOrderSystem& system, double dt);
 
@@ -113,6 +114,11 @@ class Newmark final : public Integrator {
   Eigen::PartialPivLU<Matrix> jacobian_lu_;
   std::vector<Index> active_rows_;  // link rows with a tangent, in order
   std::vector<Index> moved_rows_;   // the others with a residual
+  std::vector<double> active_tangents_;  // T(r, r), T(r, r - 1) of each active row
+  // What jacobian_lu_ holds: the factorisation's id, the rows and their tangents.
+  long factorization_count_ = 0, factored_id_ = 0;
+  std::vector<Index> factored_rows_;
+  std::vector<double> factored_tangents_;
   Vector reduced_residual_, reduced_correction_;
   Vector link_offset_, link_offset_rate_, link_offset_acceleration_;
   bool links_move_ = false;  // this step's links see the supports' motion (predict_links)

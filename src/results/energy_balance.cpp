@@ -52,7 +52,8 @@ void EnergyBalance::record(const integrators::State& state) {
       terms_.algorithmic = acceleration_energy_ * dt * dt *
                            (mass_norm(state.acceleration) - initial_acceleration_norm_);
     }
-    const Vector step = state.displacement - previous_.displacement;
+    step_ = state.displacement - previous_.displacement;
+    const Vector& step = step_;
     terms_.input += 0.5 * step.dot(external_ + previous_external_);
     if (system_.has_damping()) {
       average_ = 0.5 * (state.velocity + previous_.velocity);

@@ -73,7 +73,7 @@ class EnergyBalance : public Observer {
   double worst_ = 0.0;
   bool started_ = false;
   integrators::State previous_;
-  Vector previous_external_, external_, work_, average_;
+  Vector previous_external_, external_, work_, average_, step_;
 };
 
 }  // namespace pound::results
