@@ -112,8 +112,8 @@ class Newmark final : public Integrator {
   Vector delta_, rate_, acceleration_, assumed_force_, law_force_, residual_, correction_;
   Matrix tangent_, jacobian_;
   Eigen::PartialPivLU<Matrix> jacobian_lu_;
-  std::vector<Index> active_rows_;  // link rows with a tangent, in order
-  std::vector<Index> moved_rows_;   // the others with a residual
+  std::vector<Index> active_rows_;       // link rows with a tangent, in order
+  std::vector<Index> moved_rows_;        // the others with a residual
   std::vector<double> active_tangents_;  // T(r, r), T(r, r - 1) of each active row
   // What jacobian_lu_ holds: the factorisation's id, the rows and their tangents.
   long factorization_count_ = 0, factored_id_ = 0;

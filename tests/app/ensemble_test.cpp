@@ -104,8 +104,13 @@ TEST_F(Ensemble, TheBridgesLateAbutmentPeaksAreNotRobustItsPierDriftsAre) {
     std::cout << pier << ": spread " << drift.spread << "\n";
     EXPECT_TRUE(drift.robust) << pier;
   }
-  EXPECT_NE(ensemble_report(serial, options).find("/links/bridge.a1.joint/peak_force"),
-            std::string::npos);
+  // The report lists the least robust headline numbers first (which ones depends on the chaos).
+  const QuantitySpread* loosest = nullptr;
+  for (const QuantitySpread& q : serial.quantities)
+    if (q.headline && !q.robust && (!loosest || q.spread > loosest->spread)) loosest = &q;
+  ASSERT_NE(loosest, nullptr);
+  const std::string report = ensemble_report(serial, options);
+  EXPECT_NE(report.find("\n  " + loosest->path + ": "), std::string::npos) << report;
 }
 
 // A batch row of an ensemble case: each response the median of the copies' (type 7), the rest
