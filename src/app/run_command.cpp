@@ -113,6 +113,10 @@ int run_command(const Arguments& arguments) {
   const bool with_ensemble = parsed->count("ensemble") > 0;
   std::string error = request_error(request);
   if (error.empty() && with_ensemble) error = ensemble_options_error(ensemble);
+  for (const char* option : {"perturbation", "robust-spread", "jobs"})
+    if (error.empty() && !with_ensemble && !(*parsed)[option].defaulted())
+      error =
+          fmt::format("--{} applies to the copies of --ensemble N only: add --ensemble N", option);
   if (!error.empty()) {
     std::cerr << "pound run: " << error << "\n";
     return 1;

@@ -163,6 +163,16 @@ TEST_F(Ensemble, BadOptionsAreRefusedByNameAndNothingIsWritten) {
     EXPECT_NE(outcome.err.find(option), std::string::npos) << outcome.err;
     EXPECT_FALSE(std::filesystem::exists(path("bad"))) << option;
   }
+  // The ensemble's options without --ensemble did nothing, silently; now they are refused.
+  for (const std::string option : {"--perturbation", "--robust-spread", "--jobs"}) {
+    const testing::Outcome outcome = pound(
+        {"run", model, "--out", path("bad").string(), option, option == "--jobs" ? "1" : "0.001"});
+    EXPECT_EQ(outcome.exit_code, 1) << option;
+    EXPECT_NE(outcome.err.find(option + " applies to the copies of --ensemble N only"),
+              std::string::npos)
+        << outcome.err;
+    EXPECT_FALSE(std::filesystem::exists(path("bad"))) << option;
+  }
 }
 
 }  // namespace
