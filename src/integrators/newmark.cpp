@@ -345,6 +345,14 @@ bool Newmark::solve_link_forces(SecondOrderSystem& system, const Factorization& 
 // factored, at no more than the size of the active links.
 void Newmark::solve_correction(const Factorization& f) {
   const Index m = residual_.size();
+  if (general_correction_) {
+    jacobian_.noalias() = tangent_ * f.coupling;
+    jacobian_.diagonal().array() += 1.0;
+    jacobian_lu_.compute(jacobian_);
+    correction_ = jacobian_lu_.solve(residual_);
+    factored_id_ = 0;
+    return;
+  }
   correction_ = residual_;
   active_rows_.clear();
   moved_rows_.clear();

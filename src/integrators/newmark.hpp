@@ -50,6 +50,11 @@ class Newmark final : public Integrator {
   void initialize(SecondOrderSystem& system, State& state) override;
   StepResult advance(SecondOrderSystem& system, const State& from, double dt, State& to) override;
 
+  // The general path of the Newton correction: I + T G over every link row, factored at every
+  // iteration. Off by default (the active rows only, factors kept while their tangents stay);
+  // on, to verify that the fast path gives the same results.
+  void set_general_correction(bool general) { general_correction_ = general; }
+
   double beta() const { return beta_; }
   double gamma() const { return gamma_; }
   double alpha_m() const { return alpha_m_; }
@@ -112,6 +117,7 @@ class Newmark final : public Integrator {
   Vector delta_, rate_, acceleration_, assumed_force_, law_force_, residual_, correction_;
   Matrix tangent_, jacobian_;
   Eigen::PartialPivLU<Matrix> jacobian_lu_;
+  bool general_correction_ = false;
   std::vector<Index> active_rows_;       // link rows with a tangent, in order
   std::vector<Index> moved_rows_;        // the others with a residual
   std::vector<double> active_tangents_;  // T(r, r), T(r, r - 1) of each active row
