@@ -53,12 +53,14 @@ std::string check_text(const std::string& model_path, const verification::ModelC
     if (c.adjacent > 0.0 && c.stiff_at_first_touch)
       text +=
           fmt::format(", k-ratio {:.3g} (adjacent {:.4g})", c.stiffness / c.adjacent, c.adjacent);
-    if (c.automatic)
+    if (c.automatic && c.law == "extended_penalty")
       text +=
           fmt::format("; automatic extended penalty alpha0 {:.4g}, alpha1 {:.4g}, alpha2 {:.4g}",
                       c.automatic->alpha0, c.automatic->alpha1, c.automatic->alpha2);
     if (c.contact_duration > 0.0)
       text += fmt::format("; contact lasts ~{:.4g}", c.contact_duration);
+    if (c.approach_velocity > 0.0)
+      text += fmt::format(" at an approach velocity of {:.3g}", c.approach_velocity);
     text += "\n";
   }
   for (const std::string& w : check.warnings) text += "warning: " + w + "\n";
@@ -84,18 +86,27 @@ io::Document check_document(const std::string& model_path, const verification::M
     set_step("explicit_stable_step_contact", *check.explicit_step_contact);
   }
   std::vector<io::Document> link_documents;
+  // What does not apply to a link is null, not 0: a Hertz-type law's stiffness at first touch,
+  // the adjacent stiffness of bare masses, a duration not claimed, the extended penalty's numbers
+  // of any other law.
+  auto set_positive = [](io::Document& link, const char* key, double value) {
+    if (value > 0.0)
+      link.set(key, value);
+    else
+      link.set_null(key);
+  };
   for (const verification::LinkCheck& c : check.contacts) {
-    const links::ExtendedPenalty::Numbers automatic =
-        c.automatic.value_or(links::ExtendedPenalty::Numbers{});
-    link_documents.push_back(io::Document()
-                                 .set("id", c.id)
-                                 .set("law", c.law)
-                                 .set("stiffness", c.stiffness)
-                                 .set("adjacent_stiffness", c.adjacent)
-                                 .set("contact_duration", c.contact_duration)
-                                 .set("automatic_alpha0", automatic.alpha0)
-                                 .set("automatic_alpha1", automatic.alpha1)
-                                 .set("automatic_alpha2", automatic.alpha2));
+    io::Document link;
+    link.set("id", c.id).set("law", c.law);
+    set_positive(link, "stiffness", c.stiff_at_first_touch ? c.stiffness : 0.0);
+    set_positive(link, "adjacent_stiffness", c.adjacent);
+    set_positive(link, "contact_duration", c.contact_duration);
+    set_positive(link, "approach_velocity", c.approach_velocity);
+    const bool extended = c.automatic && c.law == "extended_penalty";
+    set_positive(link, "automatic_alpha0", extended ? c.automatic->alpha0 : 0.0);
+    set_positive(link, "automatic_alpha1", extended ? c.automatic->alpha1 : 0.0);
+    set_positive(link, "automatic_alpha2", extended ? c.automatic->alpha2 : 0.0);
+    link_documents.push_back(std::move(link));
   }
   doc.set("links", link_documents);
   doc.set("warnings", io::warning_documents(check.warnings));

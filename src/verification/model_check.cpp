@@ -5,9 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "assembly/modal_analysis.hpp"
 #include "integrators/central_difference.hpp"
+#include "links/restitution.hpp"
+#include "model/ground_motion.hpp"
 
 namespace pound::verification {
 namespace {
@@ -33,21 +36,39 @@ void warn_k_ratio(const LinkCheck& c, std::vector<std::string>& warnings) {
 void warn_contact_steps(const LinkCheck& c, const builder::AnalysisSpec& analysis,
                         std::vector<std::string>& warnings) {
   if (c.contact_duration == 0.0 || analysis.time_step_auto) return;
+  const std::string assumed =
+      c.approach_velocity > 0.0
+          ? fmt::format(
+                " (a Hertz-type contact at an approach velocity of {:.3g}, twice the "
+                "peak ground velocity or the initial closing velocity; faster impacts "
+                "are shorter)",
+                c.approach_velocity)
+          : "";
   if (analysis.time_step > 0.5 * c.contact_duration)
     warnings.push_back(
         fmt::format("link {}: the time step {:.4g} is more than half the contact "
-                    "duration {:.4g}: the impact is not resolved and the result is "
+                    "duration {:.4g}{}: the impact is not resolved and the result is "
                     "meaningless",
-                    c.id, analysis.time_step, c.contact_duration));
+                    c.id, analysis.time_step, c.contact_duration, assumed));
   else if (analysis.time_step > c.contact_duration / 20.0)
     warnings.push_back(
         fmt::format("link {}: the time step {:.4g} gives fewer than 20 steps per "
-                    "contact ({:.4g}); Kawashima asks dt <= T_contact / 20",
-                    c.id, analysis.time_step, c.contact_duration));
+                    "contact ({:.4g}{}); Kawashima asks dt <= T_contact / 20",
+                    c.id, analysis.time_step, c.contact_duration, assumed));
+}
+
+// k_h of a law that is F = k_h delta^1.5 at rest (Hertz, Hertz-damp, Jankowski), probed on a
+// copy at two depths; nothing for any other law.
+std::optional<double> hertz_stiffness(const links::LinkLaw& law) {
+  constexpr double kDepth = 1e-4;
+  const double shallow = law.clone()->set_trial({kDepth, 0.0, 0.0}).force;
+  const double deep = law.clone()->set_trial({4.0 * kDepth, 0.0, 0.0}).force;
+  if (!(shallow > 0.0) || std::abs(deep / shallow / 8.0 - 1.0) > 1e-9) return std::nullopt;
+  return shallow / std::pow(kDepth, 1.5);
 }
 
 LinkCheck check_contact(const model::Link& link, const links::LinkLaw& law,
-                        const assembly::StructuralSystem& system) {
+                        const assembly::StructuralSystem& system, double approach_velocity) {
   const links::LawTraits traits = link.law ? link.law->traits : links::LawTraits{};
   const links::LinkContext context = system.link_context(link);
   LinkCheck c{link.id, law.name(), traits.stiff_at_first_touch};
@@ -66,7 +87,33 @@ LinkCheck check_contact(const model::Link& link, const links::LinkLaw& law,
   const bool link_governs = c.adjacent == 0.0 || c.stiffness >= 10.0 * c.adjacent;
   if (c.stiffness > 0.0 && m_eff > 0.0 && link_governs)
     c.contact_duration = std::numbers::pi * std::sqrt(m_eff / c.stiffness);
+  // A Hertz-type contact: its elastic impact's closed form, where the link at its peak
+  // penetration is stiff against its neighbours.
+  const std::optional<double> k_h = c.stiff_at_first_touch ? std::nullopt : hertz_stiffness(law);
+  if (k_h && m_eff > 0.0 && approach_velocity > 0.0) {
+    const links::HertzImpact impact = links::hertz_impact(*k_h, m_eff, approach_velocity);
+    const double peak_stiffness = 1.5 * *k_h * std::sqrt(impact.max_penetration);
+    if (c.adjacent == 0.0 || peak_stiffness >= 10.0 * c.adjacent) {
+      c.contact_duration = impact.duration;
+      c.approach_velocity = approach_velocity;
+    }
+  }
   return c;
+}
+
+// The largest peak ground velocity of the model's excitations, as applied.
+double peak_ground_velocity(const model::Model& model) {
+  double peak = 0.0;
+  auto scan = [&peak](const model::GroundMotion& motion) {
+    const model::GroundKinematics kinematics(motion, 0.0);
+    const std::size_t samples = motion.acceleration.size();
+    for (std::size_t k = 0; k < samples; ++k)
+      peak = std::max(peak,
+                      std::abs(kinematics.at(static_cast<double>(k) * motion.time_step).velocity));
+  };
+  for (const model::UniformExcitation& e : model.excitations) scan(e.motion);
+  for (const model::SupportExcitation& e : model.support_excitations) scan(e.motion);
+  return peak;
 }
 
 void check_explicit_steps(const builder::AnalysisSpec& analysis, assembly::StructuralSystem& system,
@@ -135,10 +182,14 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
   }
   check_explicit_steps(analysis, system, check);
   check_step_against_duration(built, check.warnings);
+  const double ground_velocity = peak_ground_velocity(built.model);
+  Vector closing;
+  links.project(system.initial_velocity(built.model), closing);
   for (Index k = 0; k < links.count(); ++k) {
     const model::Link& link = built.model.links[static_cast<std::size_t>(k)];
     if (link.role() != links::LinkRole::contact) continue;
-    const LinkCheck c = check_contact(link, links.law(k), system);
+    const double approach = std::max(2.0 * ground_velocity, std::abs(closing[links.row(k)]));
+    const LinkCheck c = check_contact(link, links.law(k), system, approach);
     // A penalty spring without the extended penalty's mass: Kawashima's advice.
     const bool plain_penalty = link.law && link.law->traits.penalty &&
                                links.law(k).clone()->set_trial({1e-9, 1e-9, 0.0}).mass == 0.0;

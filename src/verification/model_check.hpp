@@ -3,8 +3,9 @@
 // first periods, the stable step of explicit central difference with the contacts open and in
 // contact, and for every contact link its stiffness against the elements next to it
 // (Kawashima's k-ratio), Suzuki & Toi's automatic penalty numbers and the expected contact
-// duration against the time step (Kawashima: dt <= T_contact / 20). Every setting the benchmarks
-// show to give meaningless results is a warning.
+// duration against the time step (Kawashima: dt <= T_contact / 20; for Hertz-type laws the
+// closed-form duration of an elastic Hertz impact at an estimated approach velocity). Every setting
+// the benchmarks show to give meaningless results is a warning.
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +22,10 @@ struct LinkCheck {
   double stiffness = 0.0;            // at first touch
   double adjacent = 0.0;             // of the softer element next to it; 0: bare masses
   double contact_duration = 0.0;     // when the link governs it; 0: not claimed
+  // For a Hertz-type law (F = k_h delta^1.5), whose contact shortens as v0^(-1/5): the approach
+  // velocity its duration is estimated at, twice the largest peak ground velocity of the
+  // excitations or the link's initial closing velocity, whichever is larger; 0: none.
+  double approach_velocity = 0.0;
   std::optional<links::ExtendedPenalty::Numbers> automatic;  // with an adjacent stiffness
 };
 
