@@ -394,9 +394,10 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
   }
   has_loads_ = loads_.any();
   for (const model::UniformExcitation& excitation : model.excitations) {
-    Vector inertia(n);
-    multiply_mass(uniform_influence(model, dofs_, excitation.direction), inertia);
-    excitations_.push_back({excitation.motion, std::move(inertia)});
+    Vector inertia(n), influence = uniform_influence(model, dofs_, excitation.direction);
+    multiply_mass(influence, inertia);
+    excitations_.push_back(
+        {excitation.motion, std::move(inertia), std::move(influence), excitation.direction});
   }
 
   std::vector<integrators::LinkSet::Link> links;
@@ -416,8 +417,13 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
           support_coupling(elements.support_coupling, dofs_, node, excitation.direction);
       const Vector direct = attached_link_coefficients(rows, node, excitation.direction);
       const Vector influence = supports.influence(coupling, direct);
-      MovingSupport moving{model::GroundKinematics(excitation.motion, delay), Vector(n),
-                           supports.link_coefficients(influence, direct), Vector(n)};
+      MovingSupport moving{model::GroundKinematics(excitation.motion, delay),
+                           Vector(n),
+                           supports.link_coefficients(influence, direct),
+                           Vector(n),
+                           influence,
+                           node,
+                           excitation.direction};
       multiply_mass(influence, moving.inertia);
       moving.static_load = -(stiffness_ * influence + coupling);
       moving_supports_.push_back(std::move(moving));
@@ -634,6 +640,26 @@ void StructuralSystem::multiply_band(const Vector& x, Vector& y, Index first, In
     const Index end = std::min(last, n - k);
     for (Index i = std::max(first, -k); i < end; ++i) out[i] += band[i] * in[i + k];
   }
+}
+
+void StructuralSystem::frame_acceleration(double time, Vector& acceleration) const {
+  acceleration.setZero(size());
+  for (const Excitation& excitation : excitations_)
+    acceleration += excitation.motion.at(time) * excitation.influence;
+  for (const MovingSupport& support : moving_supports_)
+    acceleration += support.kinematics.at(time).acceleration * support.influence;
+}
+
+double StructuralSystem::support_acceleration(Index node, int direction, double time) const {
+  if (direction > 1) return 0.0;  // the ground does not turn
+  const auto component = static_cast<std::size_t>(direction);
+  double acceleration = 0.0;
+  for (const Excitation& excitation : excitations_)
+    acceleration += excitation.motion.at(time) * excitation.direction[component];
+  for (const MovingSupport& support : moving_supports_)
+    if (support.node == node)
+      acceleration += support.kinematics.at(time).acceleration * support.direction[component];
+  return acceleration;
 }
 
 void StructuralSystem::external_force(double time, Vector& force) const {

@@ -52,6 +52,13 @@ class StructuralSystem final : public integrators::SecondOrderSystem {
   links::LinkContext link_context(const model::Link& link) const;
   // u, v at t = 0 from the model's initial velocities (displacements zero).
   Vector initial_velocity(const model::Model& model) const;
+  // u is measured from the ground's motion (u = u_abs - iota u_g for a uniform excitation, the
+  // quasi-static R u_s removed for moving supports): the acceleration of that frame at each
+  // free DOF, sum iota a_g(t) + sum r a_s(t), so that a + frame is the absolute acceleration.
+  void frame_acceleration(double time, Vector& acceleration) const;
+  // The absolute acceleration of a supported DOF (node, direction 0 = x, 1 = y): the ground's
+  // along the excitations' directions, and a moving support's own record.
+  double support_acceleration(Index node, int direction, double time) const;
 
  private:
   model::DofMap dofs_;
@@ -63,7 +70,9 @@ class StructuralSystem final : public integrators::SecondOrderSystem {
   bool has_loads_ = false;
   struct Excitation {
     model::GroundMotion motion;
-    Vector inertia;  // M iota
+    Vector inertia;    // M iota
+    Vector influence;  // iota
+    model::Coordinates direction;
   };
   std::vector<Excitation> excitations_;
   struct MovingSupport {
@@ -71,6 +80,9 @@ class StructuralSystem final : public integrators::SecondOrderSystem {
     Vector inertia;                      // M r
     Vector link_coefficients;            // d(delta) / d(u_support) of every link row
     Vector static_load;                  // -(K_ff r + K_fs): zero when r is K_ff's own
+    Vector influence;                    // r
+    Index node = -1;                     // the support
+    model::Coordinates direction;
   };
   std::vector<MovingSupport> moving_supports_;
   Vector surface_rate_;  // d(delta)/dt of each link row from its moving j side (belts)

@@ -12,7 +12,7 @@ std::vector<Index> every(std::size_t count) {
 ResolvedRecorder resolve_recorder(const Resolver& resolver, const RecorderSpec& recorder,
                                   std::size_t index, std::size_t link_count) {
   const bool nodes = recorder.type == RecorderKind::node;
-  ResolvedRecorder resolved{recorder.type, {}, recorder.file};
+  ResolvedRecorder resolved{recorder.type, {}, recorder.file, recorder.accelerations};
   for (std::size_t i = 0; i < recorder.ids.size(); ++i) {
     const std::string path =
         fmt::format("/recorders/{}/{}/{}", index, nodes ? "nodes" : "links", i);

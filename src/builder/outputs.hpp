@@ -13,6 +13,7 @@ struct ResolvedRecorder {
   RecorderKind kind = RecorderKind::link;
   std::vector<Index> items;  // links or nodes
   std::string file;
+  AccelerationFrame accelerations = AccelerationFrame::both;  // node recorders
 };
 
 struct DriftMonitor {

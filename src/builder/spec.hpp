@@ -354,9 +354,13 @@ struct AnalysisSpec {
 // Time histories written as CSV: "link" records force and penetration of the named links (all
 // links when `ids` is empty); "node" records displacement, velocity, acceleration of nodes.
 enum class RecorderKind { link, node };
+// A node recorder's accelerations: relative to the ground (what the equations of motion carry),
+// absolute (what contents and non-structural parts feel), or both.
+enum class AccelerationFrame { both, relative, absolute };
 
 struct RecorderSpec {
   RecorderKind type = RecorderKind::link;
+  AccelerationFrame accelerations = AccelerationFrame::both;
   std::vector<std::string> ids;
   std::string file;  // output file name inside the output folder
 };

@@ -1184,6 +1184,15 @@ const Fields<RecorderSpec>& recorder_fields() {
           .when(records_links, "link recorders"),
       required("nodes", &RecorderSpec::ids, Names{}, "the nodes recorded")
           .when(std::not_fn(records_links), "node recorders"),
+      optional(
+          "accelerations", &RecorderSpec::accelerations,
+          Choice<builder::AccelerationFrame>{{{"both", builder::AccelerationFrame::both},
+                                              {"relative", builder::AccelerationFrame::relative},
+                                              {"absolute", builder::AccelerationFrame::absolute}}},
+          "which accelerations: `a_rel` relative to the ground (as u and v are), `a_abs` "
+          "absolute (relative plus the ground's), or both")
+          .default_text("`\"both\"`")
+          .when(std::not_fn(records_links), "node recorders"),
       recorder_file(),
   };
   return fields;

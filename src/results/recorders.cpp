@@ -32,24 +32,44 @@ void LinkRecorder::record(const integrators::State& state) {
 }
 
 NodeRecorder::NodeRecorder(std::string file, std::vector<std::vector<Index>> equations,
-                           const std::vector<std::string>& ids)
-    : file_(std::move(file)), equations_(std::move(equations)) {
+                           std::vector<Index> nodes, const std::vector<std::string>& ids,
+                           builder::AccelerationFrame accelerations, GroundAcceleration ground)
+    : file_(std::move(file)),
+      equations_(std::move(equations)),
+      nodes_(std::move(nodes)),
+      relative_(accelerations != builder::AccelerationFrame::absolute),
+      absolute_(accelerations != builder::AccelerationFrame::relative),
+      ground_(std::move(ground)) {
   static const char* kDirection[] = {"x", "y", "rz"};
   table_.columns.push_back("time");
   for (std::size_t k = 0; k < ids.size(); ++k)
-    for (std::size_t d = 0; d < equations_[k].size(); ++d)
-      for (const char* quantity : {"u", "v", "a"})
-        table_.columns.push_back(ids[k] + "." + quantity + "_" + kDirection[d]);
+    for (std::size_t d = 0; d < equations_[k].size(); ++d) {
+      const std::string name = ids[k] + ".";
+      table_.columns.push_back(name + "u_" + kDirection[d]);
+      table_.columns.push_back(name + "v_" + kDirection[d]);
+      if (relative_) table_.columns.push_back(name + "a_rel_" + kDirection[d]);
+      if (absolute_) table_.columns.push_back(name + "a_abs_" + kDirection[d]);
+    }
   table_.values.resize(table_.columns.size());
 }
 
 void NodeRecorder::record(const integrators::State& state) {
   std::size_t column = 0;
   table_.values[column++].push_back(state.time);
-  for (const auto& node : equations_)
-    for (Index equation : node)
-      for (const Vector* quantity : {&state.displacement, &state.velocity, &state.acceleration})
-        table_.values[column++].push_back(equation < 0 ? 0.0 : (*quantity)[equation]);
+  if (absolute_) ground_.frame(state.time, frame_);
+  for (std::size_t k = 0; k < equations_.size(); ++k)
+    for (std::size_t d = 0; d < equations_[k].size(); ++d) {
+      const Index equation = equations_[k][d];
+      const bool free = equation >= 0;
+      table_.values[column++].push_back(free ? state.displacement[equation] : 0.0);
+      table_.values[column++].push_back(free ? state.velocity[equation] : 0.0);
+      const double relative = free ? state.acceleration[equation] : 0.0;
+      if (relative_) table_.values[column++].push_back(relative);
+      if (absolute_)
+        table_.values[column++].push_back(
+            free ? relative + frame_[equation]
+                 : ground_.support(nodes_[k], static_cast<int>(d), state.time));
+    }
 }
 
 void LinkSummaries::record(const integrators::State& state) {

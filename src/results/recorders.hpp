@@ -1,9 +1,11 @@
 #pragma once
 // Recorders: what a run keeps of each accepted step, only for what the user asked for.
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "builder/spec.hpp"
 #include "core/table.hpp"
 #include "integrators/integrator.hpp"
 #include "results/observer.hpp"
@@ -39,12 +41,21 @@ class LinkRecorder final : public Recorder {
   Table table_;
 };
 
-// Columns time, <id>.u_x, <id>.v_x, <id>.a_x (and _y in 2-D) per node; fixed DOFs record 0.
+// The ground's acceleration (assembly::StructuralSystem's), for absolute accelerations.
+struct GroundAcceleration {
+  std::function<void(double time, Vector& free_dofs)> frame;  // added to a at the free DOFs
+  std::function<double(Index node, int direction, double time)> support;  // of a fixed DOF
+};
+
+// Columns time, <id>.u_x, <id>.v_x, <id>.a_rel_x, <id>.a_abs_x (and _y, _rz as the scene has
+// them) per node. u, v and a_rel are relative to the ground (fixed DOFs record 0); a_abs is
+// a_rel plus the ground's acceleration (a fixed DOF's is the ground's).
 class NodeRecorder final : public Recorder {
  public:
-  // equations[k][d]: equation of node k in direction d, or -1 where fixed.
+  // equations[k][d]: equation of node k in direction d, or -1 where fixed; nodes[k] its index.
   NodeRecorder(std::string file, std::vector<std::vector<Index>> equations,
-               const std::vector<std::string>& ids);
+               std::vector<Index> nodes, const std::vector<std::string>& ids,
+               builder::AccelerationFrame accelerations, GroundAcceleration ground);
   void record(const integrators::State& state) override;
   const Table& table() const override { return table_; }
   const std::string& file() const override { return file_; }
@@ -52,6 +63,10 @@ class NodeRecorder final : public Recorder {
  private:
   std::string file_;
   std::vector<std::vector<Index>> equations_;
+  std::vector<Index> nodes_;
+  bool relative_, absolute_;
+  GroundAcceleration ground_;
+  Vector frame_;  // this step's frame acceleration
   Table table_;
 };
 

@@ -12,8 +12,14 @@ namespace pound::results {
 namespace {
 
 std::vector<std::unique_ptr<Recorder>> make_recorders(const builder::BuiltModel& built,
-                                                      const model::DofMap& dofs,
-                                                      const integrators::LinkSet& links) {
+                                                      const assembly::StructuralSystem& system) {
+  const model::DofMap& dofs = system.dofs();
+  const integrators::LinkSet& links = system.links();
+  const GroundAcceleration ground{
+      [&system](double time, Vector& frame) { system.frame_acceleration(time, frame); },
+      [&system](Index node, int direction, double time) {
+        return system.support_acceleration(node, direction, time);
+      }};
   std::vector<std::unique_ptr<Recorder>> recorders;
   for (const builder::ResolvedRecorder& spec : built.recorders) {
     std::vector<std::string> ids;
@@ -34,7 +40,8 @@ std::vector<std::unique_ptr<Recorder>> make_recorders(const builder::BuiltModel&
         per_direction.push_back(dofs.equation(node, d));
       equations.push_back(std::move(per_direction));
     }
-    recorders.push_back(std::make_unique<NodeRecorder>(spec.file, std::move(equations), ids));
+    recorders.push_back(std::make_unique<NodeRecorder>(spec.file, std::move(equations), spec.items,
+                                                       ids, spec.accelerations, ground));
   }
   return recorders;
 }
@@ -107,7 +114,7 @@ std::vector<std::string> result_warnings(const RunSummary& run) {
 RunObservers::RunObservers(const builder::BuiltModel& built,
                            const assembly::StructuralSystem& system, bool histories)
     // Without histories nothing is recorded, not just not written.
-    : recorders_(histories ? make_recorders(built, system.dofs(), system.links())
+    : recorders_(histories ? make_recorders(built, system)
                            : std::vector<std::unique_ptr<Recorder>>()),
       links_(normal_rows(system.links())),
       energy_(system, built.analysis.integrator.acceleration_energy()),

@@ -185,7 +185,7 @@ TEST_F(Cli, RunGirderWritesItsRecorders) {
   ASSERT_FALSE(joint.empty());
   ASSERT_FALSE(girder.empty());
   EXPECT_EQ(joint.front(), "time,joint.force,joint.penetration");
-  EXPECT_EQ(girder.front(), "time,girder.u_x,girder.v_x,girder.a_x");
+  EXPECT_EQ(girder.front(), "time,girder.u_x,girder.v_x,girder.a_rel_x,girder.a_abs_x");
   const json summary = json::parse(read_text(out / "summary.json"));
   EXPECT_EQ(summary["status"], "completed");
   EXPECT_FALSE(summary.contains("verification"));

@@ -40,11 +40,24 @@ TEST(LinkRecorder, WritesForceAndPenetrationAndForAFrictionLinkItsTangentialRow)
   EXPECT_EQ(values[6], (std::vector<double>{0.0, 0.17}));
 }
 
+// A ground accelerating at 10 t along x and 100 t along y, with node 7's y support moving too.
+GroundAcceleration test_ground() {
+  return {[](double time, Vector& frame) {
+            frame = entries({10.0 * time, 10.0 * time});
+          },
+          [](Index node, int direction, double time) {
+            return direction == 0 ? 10.0 * time : (node == 7 ? 100.0 : 0.0) * time;
+          }};
+}
+
 TEST(NodeRecorder, WritesDisplacementVelocityAccelerationPerDirectionAndZeroWhereFixed) {
-  // Node "top": x is equation 1, y fixed; node "tip": x equation 0 only (1-D).
-  NodeRecorder recorder("nodes.csv", {{1, -1}, {0}}, {"top", "tip"});
-  const std::vector<std::string> columns = {"time",    "top.u_x", "top.v_x", "top.a_x", "top.u_y",
-                                            "top.v_y", "top.a_y", "tip.u_x", "tip.v_x", "tip.a_x"};
+  // Node "top" (7): x is equation 1, y fixed; node "tip" (3): x equation 0 only.
+  NodeRecorder recorder("nodes.csv", {{1, -1}, {0}}, {7, 3}, {"top", "tip"},
+                        builder::AccelerationFrame::both, test_ground());
+  const std::vector<std::string> columns = {"time",        "top.u_x", "top.v_x", "top.a_rel_x",
+                                            "top.a_abs_x", "top.u_y", "top.v_y", "top.a_rel_y",
+                                            "top.a_abs_y", "tip.u_x", "tip.v_x", "tip.a_rel_x",
+                                            "tip.a_abs_x"};
   EXPECT_EQ(recorder.table().columns, columns);
   integrators::State state;
   state.time = 0.25;
@@ -54,7 +67,20 @@ TEST(NodeRecorder, WritesDisplacementVelocityAccelerationPerDirectionAndZeroWher
   recorder.record(state);
   std::vector<double> row;
   for (const auto& column : recorder.table().values) row.push_back(column.at(0));
-  EXPECT_EQ(row, (std::vector<double>{0.25, 2.0, 4.0, 6.0, 0.0, 0.0, 0.0, 1.0, 3.0, 5.0}));
+  // Absolute: relative + the frame's 2.5 where free; the support's own 25 where fixed.
+  EXPECT_EQ(row, (std::vector<double>{0.25, 2.0, 4.0, 6.0, 8.5, 0.0, 0.0, 0.0, 25.0, 1.0, 3.0, 5.0,
+                                      7.5}));
+}
+
+TEST(NodeRecorder, WritesOnlyTheAccelerationsAskedFor) {
+  for (const auto frame :
+       {builder::AccelerationFrame::relative, builder::AccelerationFrame::absolute}) {
+    NodeRecorder recorder("nodes.csv", {{0}}, {3}, {"tip"}, frame, test_ground());
+    const bool relative = frame == builder::AccelerationFrame::relative;
+    EXPECT_EQ(recorder.table().columns,
+              (std::vector<std::string>{"time", "tip.u_x", "tip.v_x",
+                                        relative ? "tip.a_rel_x" : "tip.a_abs_x"}));
+  }
 }
 
 TEST(LinkSummaries, CountEngagementsAndIntegrateImpulseAndWorkByTrapezoids) {
