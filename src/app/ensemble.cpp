@@ -38,10 +38,20 @@ bool is_response(const std::string& path) {
 
 // The numbers damage is judged by, which the report lists; ensemble.json has them all.
 bool is_headline(const std::string& path) {
-  static const std::vector<std::string> keys{
-      "peak_force",       "peak_tension",        "impacts",      "peak_deformation",
-      "ductility",        "curvature_ductility", "peak_opening", "peak_seat_movement",
-      "unseating_margin", "residual_opening",    "peak_drift",   "residual_drift"};
+  static const std::vector<std::string> keys{"peak_force",
+                                             "peak_tension",
+                                             "impacts",
+                                             "peak_deformation",
+                                             "ductility",
+                                             "curvature_ductility",
+                                             "peak_opening",
+                                             "peak_seat_movement",
+                                             "unseating_margin",
+                                             "residual_opening",
+                                             "peak_drift",
+                                             "residual_drift",
+                                             "peak_absolute_acceleration",
+                                             "peak_girder_acceleration"};
   const std::string key = path.substr(path.rfind('/') + 1);
   return std::find(keys.begin(), keys.end(), key) != keys.end();
 }

@@ -58,17 +58,21 @@ std::string monitor_lines(const results::RunSummary& run) {
   for (const results::JointResult& joint : run.joints) {
     const std::optional<double> margin = joint.margin();
     text += fmt::format(
-        "  joint {}: opened {:.4g}, closed {:.4g}, moved {:.4g} on its seat{}\n", joint.monitor.id,
-        joint.peak.peak_opening, joint.peak.peak_closing, joint.peak.peak_seat_movement,
+        "  joint {}: opened {:.4g}, closed {:.4g}, moved {:.4g} on its seat{}, girder end "
+        "acceleration {:.4g} (absolute)\n",
+        joint.monitor.id, joint.peak.peak_opening, joint.peak.peak_closing,
+        joint.peak.peak_seat_movement,
         margin ? fmt::format(" (seat {:.4g}, margin {:.4g})", joint.monitor.seat_width, *margin)
-               : std::string());
+               : std::string(),
+        joint.peak.peak_girder_acceleration);
   }
   for (const results::DriftResult& drift : run.drifts) {
     const builder::DriftMonitor& m = drift.monitor;
     const std::optional<double> ductility = drift.ductility();
     const std::optional<double> demand = drift.elastic_demand_ratio();
     text += fmt::format(
-        "  {} {}: peak drift {:.4g} ({:.3f} % of {:.4g}), residual {:.4g}{}{}\n",
+        "  {} {}: peak drift {:.4g} ({:.3f} % of {:.4g}), residual {:.4g}{}{}, {} acceleration "
+        "{:.4g} (absolute)\n",
         m.kind == builder::DriftKind::pier ? "pier" : "storey", m.id, drift.peak.peak_drift,
         100.0 * drift.peak.peak_drift / m.height, m.height, drift.peak.residual_drift,
         ductility ? fmt::format(", ductility {:.2f}", *ductility)
@@ -76,7 +80,8 @@ std::string monitor_lines(const results::RunSummary& run) {
                   : std::string(),
         drift.curvature_ductility
             ? fmt::format(", curvature ductility {:.2f}", *drift.curvature_ductility)
-            : std::string());
+            : std::string(),
+        m.kind == builder::DriftKind::pier ? "top" : "floor", drift.peak.peak_acceleration);
   }
   return text;
 }

@@ -40,7 +40,9 @@ Document drift_document(const results::DriftResult& drift) {
       .set("drift_ratio", drift.ratio())
       .set("time", drift.peak.time);
   doc.set("residual_drift", drift.peak.residual_drift)
-      .set("residual_drift_ratio", drift.residual_ratio());
+      .set("residual_drift_ratio", drift.residual_ratio())
+      .set("peak_absolute_acceleration", drift.peak.peak_acceleration)
+      .set("acceleration_time", drift.peak.acceleration_time);
   if (const std::optional<double> ductility = drift.ductility()) doc.set("ductility", *ductility);
   if (const std::optional<double> demand = drift.elastic_demand_ratio())
     doc.set("elastic_demand_ratio", *demand);
@@ -55,7 +57,8 @@ Document joint_document(const results::JointResult& joint) {
       .set("peak_opening", joint.peak.peak_opening)
       .set("peak_closing", joint.peak.peak_closing)
       .set("peak_seat_movement", joint.peak.peak_seat_movement)
-      .set("residual_opening", joint.peak.residual_opening);
+      .set("residual_opening", joint.peak.residual_opening)
+      .set("peak_girder_acceleration", joint.peak.peak_girder_acceleration);
   if (const std::optional<double> margin = joint.margin())
     doc.set("seat_width", joint.monitor.seat_width)
         .set("unseating_margin", *margin)

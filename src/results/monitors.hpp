@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "integrators/integrator.hpp"
+#include "results/ground_acceleration.hpp"
 #include "results/observer.hpp"
 
 namespace pound::results {
@@ -15,18 +16,28 @@ struct DriftPeak {
   double peak_drift = 0.0;      // max |u_top - u_bottom| along x [L]
   double time = 0.0;            // when
   double residual_drift = 0.0;  // u_top - u_bottom at the end of the run [L]
+  // The top node's absolute acceleration along x (the floor's, the pier top's) [L/T^2]
+  double peak_acceleration = 0.0;
+  double acceleration_time = 0.0;
 };
 
 class DriftMonitors : public Observer {
  public:
-  // For each monitor: x equations of its bottom and top node (-1 where fixed).
-  explicit DriftMonitors(std::vector<std::pair<Index, Index>> equations)
-      : equations_(std::move(equations)), peaks_(equations_.size()) {}
+  // For each monitor: x equations of its bottom and top node (-1 where fixed), and its top node.
+  DriftMonitors(std::vector<std::pair<Index, Index>> equations, std::vector<Index> top_nodes,
+                GroundAcceleration ground)
+      : equations_(std::move(equations)),
+        top_nodes_(std::move(top_nodes)),
+        ground_(std::move(ground)),
+        peaks_(equations_.size()) {}
   void record(const integrators::State& state) override;
   const std::vector<DriftPeak>& peaks() const { return peaks_; }
 
  private:
   std::vector<std::pair<Index, Index>> equations_;
+  std::vector<Index> top_nodes_;
+  GroundAcceleration ground_;
+  Vector frame_;
   std::vector<DriftPeak> peaks_;
 };
 
@@ -35,6 +46,7 @@ struct JointPeak {
   double peak_closing = 0.0;        // max (delta + gap): the joint narrower than at the start [L]
   double peak_seat_movement = 0.0;  // max |u_girder - u_seat| along x [L]
   double residual_opening = 0.0;    // -(delta + gap) at the end of the run [L]
+  double peak_girder_acceleration = 0.0;  // the girder end's absolute, along x [L/T^2]
 };
 
 class JointMonitors : public Observer {
@@ -43,14 +55,17 @@ class JointMonitors : public Observer {
     Index link_row;  // the pounding link's normal row
     double gap;
     Index girder_x, seat_x;  // equations, -1 where fixed
+    Index girder;            // node
   };
-  explicit JointMonitors(std::vector<Where> joints)
-      : joints_(std::move(joints)), peaks_(joints_.size()) {}
+  JointMonitors(std::vector<Where> joints, GroundAcceleration ground)
+      : joints_(std::move(joints)), ground_(std::move(ground)), peaks_(joints_.size()) {}
   void record(const integrators::State& state) override;
   const std::vector<JointPeak>& peaks() const { return peaks_; }
 
  private:
   std::vector<Where> joints_;
+  GroundAcceleration ground_;
+  Vector frame_;
   std::vector<JointPeak> peaks_;
 };
 

@@ -8,6 +8,7 @@
 #include "builder/spec.hpp"
 #include "core/table.hpp"
 #include "integrators/integrator.hpp"
+#include "results/ground_acceleration.hpp"
 #include "results/observer.hpp"
 
 namespace pound::results {
@@ -39,12 +40,6 @@ class LinkRecorder final : public Recorder {
   std::string file_;
   std::vector<LinkRows> links_;
   Table table_;
-};
-
-// The ground's acceleration (assembly::StructuralSystem's), for absolute accelerations.
-struct GroundAcceleration {
-  std::function<void(double time, Vector& free_dofs)> frame;  // added to a at the free DOFs
-  std::function<double(Index node, int direction, double time)> support;  // of a fixed DOF
 };
 
 // Columns time, <id>.u_x, <id>.v_x, <id>.a_rel_x, <id>.a_abs_x (and _y, _rz as the scene has

@@ -11,15 +11,18 @@
 namespace pound::results {
 namespace {
 
+GroundAcceleration ground_of(const assembly::StructuralSystem& system) {
+  return {[&system](double time, Vector& frame) { system.frame_acceleration(time, frame); },
+          [&system](Index node, int direction, double time) {
+            return system.support_acceleration(node, direction, time);
+          }};
+}
+
 std::vector<std::unique_ptr<Recorder>> make_recorders(const builder::BuiltModel& built,
                                                       const assembly::StructuralSystem& system) {
   const model::DofMap& dofs = system.dofs();
   const integrators::LinkSet& links = system.links();
-  const GroundAcceleration ground{
-      [&system](double time, Vector& frame) { system.frame_acceleration(time, frame); },
-      [&system](Index node, int direction, double time) {
-        return system.support_acceleration(node, direction, time);
-      }};
+  const GroundAcceleration ground = ground_of(system);
   std::vector<std::unique_ptr<Recorder>> recorders;
   for (const builder::ResolvedRecorder& spec : built.recorders) {
     std::vector<std::string> ids;
@@ -60,13 +63,19 @@ std::vector<std::pair<Index, Index>> drift_equations(const builder::BuiltModel& 
   return equations;
 }
 
+std::vector<Index> top_nodes(const builder::BuiltModel& built) {
+  std::vector<Index> nodes;
+  for (const builder::DriftMonitor& m : built.drift_monitors) nodes.push_back(m.top);
+  return nodes;
+}
+
 std::vector<JointMonitors::Where> joint_places(const builder::BuiltModel& built,
                                                const assembly::StructuralSystem& system) {
   std::vector<JointMonitors::Where> places;
   for (const builder::JointMonitor& m : built.joint_monitors)
-    places.push_back({system.links().row(m.link),
-                      built.model.links[static_cast<std::size_t>(m.link)].gap,
-                      system.dofs().equation(m.girder, 0), system.dofs().equation(m.seat, 0)});
+    places.push_back(
+        {system.links().row(m.link), built.model.links[static_cast<std::size_t>(m.link)].gap,
+         system.dofs().equation(m.girder, 0), system.dofs().equation(m.seat, 0), m.girder});
   return places;
 }
 
@@ -119,8 +128,8 @@ RunObservers::RunObservers(const builder::BuiltModel& built,
       links_(normal_rows(system.links())),
       energy_(system, built.analysis.integrator.acceleration_energy()),
       passive_links_(!system.has_link_motion()),
-      drifts_(drift_equations(built, system.dofs())),
-      joints_(joint_places(built, system)) {}
+      drifts_(drift_equations(built, system.dofs()), top_nodes(built), ground_of(system)),
+      joints_(joint_places(built, system), ground_of(system)) {}
 
 void RunObservers::record(const integrators::State& state) {
   for (auto& recorder : recorders_) recorder->record(state);

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "app/model_run.hpp"
@@ -23,8 +24,13 @@ namespace fs = std::filesystem;
 constexpr double kMass = 2.0e5, kStiffness = 8.0e6, kMassDamping = 0.6;  // c = 0.6 m
 
 // The run's node table of a mass on a truss spring to "ground", excited by the bundled record
-// uniformly or by moving "ground".
-Table run_oscillator(bool moving_support) {
+// uniformly or by moving "ground", and its drift monitor's peak absolute acceleration.
+struct Oscillator {
+  Table nodes;
+  double monitored_peak = 0.0;
+};
+
+Oscillator run_oscillator(bool moving_support) {
   const std::string record =
       (fs::path(POUND_SOURCE_DIR) / "ground_motions" / "synthetic_firm_01.AT2").string();
   const std::string excitation =
@@ -41,6 +47,7 @@ Table run_oscillator(bool moving_support) {
     "supports": [{{"node": "ground", "fix": ["x"]}}],
     "excitations": [{}],
     "analysis": {{"time_step": 0.005, "duration": 10}},
+    "monitors": {{"drifts": [{{"id": "spring", "bottom": "ground", "top": "mass", "height": 1}}]}},
     "recorders": [{{"type": "node", "nodes": ["ground", "mass"], "file": "nodes.csv"}}]
   }})",
                                        kStiffness, kMass, kMassDamping, excitation);
@@ -53,7 +60,9 @@ Table run_oscillator(bool moving_support) {
   const RunOutcome outcome = run_model(request);
   fs::remove_all(folder);
   EXPECT_TRUE(outcome.failure.empty()) << outcome.failure;
-  return outcome.histories.at(0).second;
+  const nlohmann::json summary = nlohmann::json::parse(outcome.summary.dump());
+  return {outcome.histories.at(0).second,
+          summary["storeys"][0]["peak_absolute_acceleration"].get<double>()};
 }
 
 const std::vector<double>& column(const Table& table, const std::string& name) {
@@ -65,7 +74,8 @@ const std::vector<double>& column(const Table& table, const std::string& name) {
 }
 
 void expect_equation_of_motion(bool moving_support) {
-  const Table table = run_oscillator(moving_support);
+  const Oscillator run = run_oscillator(moving_support);
+  const Table& table = run.nodes;
   const auto& u = column(table, "mass.u_x");
   const auto& v = column(table, "mass.v_x");
   const auto& relative = column(table, "mass.a_rel_x");
@@ -90,6 +100,8 @@ void expect_equation_of_motion(bool moving_support) {
   // At rest at t = 0 the mass's absolute acceleration is 0, its relative one -a_g(0).
   EXPECT_NEAR(absolute.front(), 0.0, 1e-12);
   EXPECT_NEAR(relative.front(), -ground.front(), 1e-12);
+  // The summary's peak floor acceleration is the recorded one's.
+  EXPECT_EQ(run.monitored_peak, peak);
 }
 
 TEST(AbsoluteAcceleration, UnderAUniformExcitationFollowsTheEquationOfMotion) {

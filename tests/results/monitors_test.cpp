@@ -14,13 +14,20 @@ integrators::State state(double time, const Vector& displacement, const Vector& 
   integrators::State s;
   s.time = time;
   s.displacement = displacement;
+  s.acceleration = Vector::Zero(displacement.size());
   s.link_penetration = penetration;
   return s;
 }
 
+// A ground accelerating at 2 t everywhere: its supports' too.
+GroundAcceleration ramp_ground() {
+  return {[](double time, Vector& frame) { frame = Vector::Constant(3, 2.0 * time); },
+          [](Index, int, double time) { return 2.0 * time; }};
+}
+
 TEST(DriftMonitors, KeepTheLargestDriftEitherWayAndItsTime) {
   // Storey 1 from a fixed base (-1) to equation 0; storey 2 from equation 0 to equation 1.
-  DriftMonitors drifts({{-1, 0}, {0, 1}});
+  DriftMonitors drifts({{-1, 0}, {0, 1}}, {10, 11}, ramp_ground());
   drifts.record(state(0.0, entries({0.0, 0.0})));
   drifts.record(state(0.1, entries({0.25, 0.75})));     // drifts 0.25, 0.5
   drifts.record(state(0.2, entries({-0.5, -0.25})));    // 0.5, 0.25
@@ -32,11 +39,25 @@ TEST(DriftMonitors, KeepTheLargestDriftEitherWayAndItsTime) {
   EXPECT_EQ(drifts.peaks()[1].time, 0.1);
 }
 
+// The top node's absolute acceleration: relative plus the ground's, largest either way.
+TEST(DriftMonitors, KeepTheTopsLargestAbsoluteAcceleration) {
+  DriftMonitors drifts({{-1, 0}}, {10}, ramp_ground());
+  integrators::State s = state(0.5, entries({0.0}));
+  s.acceleration = entries({-4.0});  // absolute -4 + 1 = -3
+  drifts.record(s);
+  s = state(1.0, entries({0.0}));
+  s.acceleration = entries({0.5});  // absolute 2.5
+  drifts.record(s);
+  EXPECT_EQ(drifts.peaks()[0].peak_acceleration, 3.0);
+  EXPECT_EQ(drifts.peaks()[0].acceleration_time, 0.5);
+}
+
 TEST(JointMonitors, OpeningClosingAndSeatMovementFromTheLinkAndTheGirder) {
   // A joint whose link (row 1) has a 0.05 gap; the girder is equation 2, the seat fixed; a
   // second joint on row 0 with its seat on equation 0.
-  JointMonitors joints({{.link_row = 1, .gap = 0.05, .girder_x = 2, .seat_x = -1},
-                        {.link_row = 0, .gap = 0.1, .girder_x = 1, .seat_x = 0}});
+  JointMonitors joints({{.link_row = 1, .gap = 0.05, .girder_x = 2, .seat_x = -1, .girder = 5},
+                        {.link_row = 0, .gap = 0.1, .girder_x = 1, .seat_x = 0, .girder = 4}},
+                       ramp_ground());
   // delta = -(gap) is the joint as built: neither opened nor closed.
   joints.record(state(0.0, entries({0.0, 0.0, 0.0}), entries({-0.1, -0.05})));
   // Joint 1 closes by 0.03 (delta = -0.02), its girder 0.03 along -x; joint 2 opens by 0.01.
@@ -52,6 +73,8 @@ TEST(JointMonitors, OpeningClosingAndSeatMovementFromTheLinkAndTheGirder) {
   EXPECT_NEAR(second.peak_closing, 0.0, 1e-15);
   EXPECT_NEAR(second.peak_opening, 0.01, 1e-15);
   EXPECT_NEAR(second.peak_seat_movement, 0.01, 1e-15);  // |0.02 - 0.01|
+  // At rest relative to the ground, the girders' absolute acceleration is the ground's, 2 t.
+  EXPECT_NEAR(first.peak_girder_acceleration, 0.4, 1e-15);
 }
 
 }  // namespace
