@@ -13,6 +13,9 @@ DIR, each when its data is there (one line printed per file):
   displacements.png      u_x histories of the recorded nodes
   ensemble.png           with ensemble.json (`pound run --ensemble N`): the spread over the
                          perturbed copies of the peaks damage is judged by, least robust first
+  report.html            one self-contained page for people: the run's facts, warnings, the
+                         excitations the model names, the tables of summary.json, the
+                         ensemble's spread and every figure above (inlined)
 Figures with more links or joints than fit on a page continue in link_forces_2.png, ...
 CSV files are recognised by their columns, not their names. Units are the model's own.
 
@@ -33,6 +36,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from plot_common import (InputError, check_column_names, check_folder, check_width,  # noqa: E402
                          csv_reader, folder_parser, import_matplotlib, not_a_number, read_json,
                          run_plots, save_png, strip_header)
+from run_report_html import write_report  # noqa: E402
 
 PROG = "plot_run.py"
 REEXEC_MARK = "POUND_PLOT_RUN_REEXEC"
@@ -628,7 +632,9 @@ def main(argv):
         plotter.plot_displacements(histories)
         if ensemble is not None:
             plotter.plot_ensemble(ensemble)
-        return plotter.written
+        report = write_report(args.folder, summary, list(plotter.written), ensemble)
+        print(report)
+        return plotter.written + [report]
 
     return run_plots(PROG, draw, args.folder, "no time histories to plot")
 

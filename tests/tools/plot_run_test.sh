@@ -19,7 +19,18 @@ expected=(link_forces.png force_penetration.png displacements.png)
 [ -f "$run/joints.csv" ] && expected+=(joint_openings.png)
 [ -f "$run/energy.csv" ] && expected+=(energy.png)
 grep -q '"storeys"\|"piers"' "$run/summary.json" && expected+=(drift_envelopes.png)
+# report.html: printed last, one page holding every figure inline and nothing from outside.
+report="$run/report.html"
+[ "$(tail -n 1 "$tmp/stdout")" = "$report" ] || fail "plot_run.py did not print $report last"
+sed -i '$d' "$tmp/stdout"
 check_folder "$run" "${expected[@]}"
+head -c 15 "$report" | grep -qi '<!doctype html>' || fail "$report is not an HTML page"
+figures=$(grep -o 'src="data:image/png;base64,' "$report" | wc -l)
+[ "$figures" -eq "$(find "$run" -maxdepth 1 -name '*.png' | wc -l)" ] ||
+  fail "$report inlines $figures figures, the folder has $(find "$run" -maxdepth 1 -name '*.png' | wc -l)"
+! grep -qiE '(src|href)="(https?:|//|[a-z_]+\.png)' "$report" || fail "$report refers to outside files"
+grep -q '<td>joint</td>' "$report" || fail "$report has no row for the link joint"
+grep -q 'Energy balance' "$report" || fail "$report has no energy balance"
 
 # 2. The python3 on PATH works too (it starts /usr/bin/python3 if it has no matplotlib).
 if command -v python3 >/dev/null 2>&1; then
@@ -67,9 +78,11 @@ ensemble="$tmp/ensemble"
 "$python" "$script" "$ensemble" --dpi 60 >/dev/null 2>"$tmp/stderr" ||
   fail "plot_run.py failed on an ensemble run: $(cat "$tmp/stderr")"
 is_png "$ensemble/ensemble.png"
+grep -q 'Robustness over the ensemble' "$ensemble/report.html" ||
+  fail "the ensemble run's report.html has no robustness table"
 mkdir "$tmp/bad_ensemble"
 cp "$run/summary.json" "$tmp/bad_ensemble/"
 printf '{"quantities": [{"path": "/links/joint/peak_force"}]}' >"$tmp/bad_ensemble/ensemble.json"
 expect_input_error "$tmp/bad_ensemble" "$tmp/bad_ensemble/ensemble.json"
 
-echo "plot_run_test: ok (${expected[*]} ensemble.png)"
+echo "plot_run_test: ok (${expected[*]} ensemble.png report.html)"

@@ -1,0 +1,182 @@
+"""report.html of a `pound run` folder: one self-contained page (figures inlined as PNG data, no
+external file, script or font) with the run's facts, its warnings, the excitations the model file
+names, the tables of links, joints, piers and storeys, the energy balance, the ensemble's spread
+when there is one, and every figure plot_run.py drew. Attach it to a design note as it is.
+
+Used by plot_run.py, which writes it after the figures."""
+
+import base64
+import html
+import json
+import os
+
+from plot_common import OutputError
+
+STYLE = """
+body { font-family: sans-serif; margin: 2em auto; max-width: 70em; color: #222; }
+h1 { font-size: 1.4em; } h2 { font-size: 1.15em; margin-top: 1.6em; border-bottom: 1px solid #ccc; }
+table { border-collapse: collapse; font-size: 0.85em; margin: 0.5em 0; }
+th, td { border: 1px solid #ccc; padding: 0.2em 0.5em; text-align: right; }
+th:first-child, td:first-child { text-align: left; }
+th { background: #f0f0f0; }
+.failed { color: #b00; font-weight: bold; } .warning { color: #a50; }
+.note { color: #666; font-size: 0.85em; }
+figure { margin: 1em 0; } figure img { max-width: 100%; border: 1px solid #ddd; }
+"""
+
+# (key in summary, column heading), per table; a column is shown when any row has it.
+LINK_COLUMNS = [("impacts", "impacts"), ("peak_force", "peak force"),
+                ("peak_penetration", "peak penetration"), ("peak_tension", "peak tension"),
+                ("peak_opening", "peak opening"), ("impulse", "impulse"), ("work", "work"),
+                ("ductility", "ductility"), ("hysteretic_energy", "hysteretic energy"),
+                ("first_contact", "first contact"), ("last_contact", "last contact")]
+JOINT_COLUMNS = [("peak_opening", "peak opening"), ("peak_closing", "peak closing"),
+                 ("peak_seat_movement", "seat movement"), ("seat_width", "seat width"),
+                 ("unseating_margin", "margin"), ("residual_opening", "residual opening"),
+                 ("peak_girder_acceleration", "girder end acceleration (absolute)")]
+DRIFT_COLUMNS = [("height", "height"), ("peak_drift", "peak drift"),
+                 ("drift_ratio", "drift ratio"), ("residual_drift", "residual drift"),
+                 ("ductility", "ductility"), ("elastic_demand_ratio", "elastic demand ratio"),
+                 ("curvature_ductility", "curvature ductility"),
+                 ("peak_absolute_acceleration", "peak acceleration (absolute)")]
+ENSEMBLE_COLUMNS = [("unperturbed", "unperturbed"), ("median", "median"), ("p16", "16 %"),
+                    ("p84", "84 %"), ("min", "min"), ("max", "max"), ("spread", "spread")]
+
+
+def escape(value):
+    return html.escape(str(value), quote=True)
+
+
+def cell(value):
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, float):
+        return f"{value:.4g}"
+    return escape(value)
+
+
+def table(rows, columns, first="id"):
+    """An HTML table of `rows` (dicts): `first` and each column some row has."""
+    shown = [(key, title) for key, title in columns if any(key in row for row in rows)]
+    if not rows:
+        return "<p class=\"note\">none</p>"
+    head = "".join(f"<th>{escape(title)}</th>" for _, title in shown)
+    body = "".join(
+        "<tr><td>" + escape(row.get(first, "")) + "</td>" +
+        "".join(f"<td>{cell(row[key]) if key in row else ''}</td>" for key, _ in shown) + "</tr>"
+        for row in rows)
+    return f"<table><tr><th>{escape(first)}</th>{head}</tr>{body}</table>"
+
+
+def facts(summary):
+    status = summary.get("status", "?")
+    lines = [("model", summary.get("model")), ("status", status),
+             ("integrator", summary.get("integrator")), ("time step", summary.get("time_step")),
+             ("duration", summary.get("duration")), ("DOFs", summary.get("dofs")),
+             ("steps", summary.get("steps")), ("Newton iterations", summary.get("newton_iterations")),
+             ("solve time [s]", summary.get("run_time_s"))]
+    if status == "failed":
+        lines.append(("failed at", summary.get("failure_time")))
+        lines.append(("reason", summary.get("failure")))
+    rows = "".join(f"<tr><td>{escape(name)}</td><td>{cell(value)}</td></tr>"
+                   for name, value in lines if value is not None)
+    css = " class=\"failed\"" if status == "failed" else ""
+    return f"<table{css}>{rows}</table>"
+
+
+def excitations(summary, folder):
+    """The excitations the model file names, read from it when it can be found."""
+    model = summary.get("model")
+    candidates = [model, os.path.join(folder, model)] if isinstance(model, str) else []
+    for path in candidates:
+        if path and os.path.isfile(path):
+            try:
+                with open(path, encoding="utf-8") as f:
+                    spec = json.load(f)
+            except (OSError, ValueError):
+                break
+            items = spec.get("excitations") if isinstance(spec, dict) else None
+            if not isinstance(items, list) or not items:
+                return "<p class=\"note\">The model has no excitations (initial velocities only).</p>"
+            rows = [{"record": e.get("record", ""), "units": e.get("units", ""),
+                     "scale": json.dumps(e.get("scale")) if "scale" in e else "",
+                     "direction": json.dumps(e.get("direction")) if "direction" in e else ""}
+                    for e in items if isinstance(e, dict)]
+            return (table(rows, [("units", "units"), ("scale", "scale"),
+                                 ("direction", "direction")], first="record") +
+                    f"<p class=\"note\">As {escape(path)} names them (a <code>--motion</code> "
+                    "given to <code>pound run</code> replaced the first).</p>")
+    return "<p class=\"note\">The model file was not found from here: see summary.json.</p>"
+
+
+def energy(summary):
+    terms = summary.get("energy")
+    if not isinstance(terms, dict):
+        return "<p class=\"note\">none</p>"
+    rows = "".join(f"<tr><td>{escape(k)}</td><td>{cell(v)}</td></tr>" for k, v in terms.items()
+                   if isinstance(v, (int, float)))
+    return f"<table>{rows}</table>"
+
+
+def ensemble_table(ensemble):
+    """The headline quantities of plot_run.load_ensemble's result, least robust first."""
+    if not ensemble or not ensemble.get("quantities"):
+        return ""
+    rows = sorted((dict(q) for q in ensemble["quantities"]),
+                  key=lambda q: -(q.get("spread") or 0.0))
+    for row in rows:
+        row["robust"] = bool(row.get("robust"))
+    return ("<h2>Robustness over the ensemble</h2><p class=\"note\">Headline numbers over copies "
+            "with the records perturbed at the level of numerical noise, least robust first: read "
+            "the late pounding peaks as distributions.</p>" +
+            table(rows, ENSEMBLE_COLUMNS + [("robust", "robust")], first="path"))
+
+
+def figures(paths):
+    parts = []
+    for path in paths:
+        with open(path, "rb") as f:
+            data = base64.b64encode(f.read()).decode("ascii")
+        name = escape(os.path.basename(path))
+        parts.append(f"<figure><img alt=\"{name}\" src=\"data:image/png;base64,{data}\">"
+                     f"<figcaption class=\"note\">{name}</figcaption></figure>")
+    return "".join(parts) or "<p class=\"note\">none</p>"
+
+
+def write_report(folder, summary, pngs, ensemble=None):
+    """Writes folder/report.html; returns its path."""
+    title = summary.get("title") or summary.get("model") or os.path.basename(folder)
+    warnings = summary.get("warnings") or []
+    warning_items = "".join(
+        f"<li class=\"warning\">{escape(w.get('warning', w) if isinstance(w, dict) else w)}</li>"
+        for w in warnings)
+    piers = [dict(p, kind="pier") for p in summary.get("piers") or []]
+    storeys = [dict(s, kind="storey") for s in summary.get("storeys") or []]
+    page = (
+        "<!doctype html><html lang=\"en\"><head><meta charset=\"utf-8\">"
+        f"<title>pound run: {escape(title)}</title><style>{STYLE}</style></head><body>"
+        f"<h1>{escape(title)}</h1>{facts(summary)}"
+        "<h2>Warnings</h2>" + (f"<ul>{warning_items}</ul>" if warnings else "<p>none</p>") +
+        "<h2>Excitations</h2>" + excitations(summary, folder) +
+        "<h2>Links</h2>" + table(summary.get("links") or [], LINK_COLUMNS) +
+        "<h2>Joints</h2>" + table(summary.get("joints") or [], JOINT_COLUMNS) +
+        "<h2>Piers and storeys</h2>" + table(piers + storeys, [("kind", "kind")] + DRIFT_COLUMNS) +
+        "<h2>Energy balance</h2>" + energy(summary) + ensemble_table(ensemble) +
+        "<h2>Figures</h2>" + figures(pngs) +
+        "<p class=\"note\">Units are the model's own. Written by tools/plot_run.py from "
+        "summary.json and the histories in this folder.</p></body></html>\n")
+    path = os.path.join(folder, "report.html")
+    temporary = f"{path}.tmp.{os.getpid()}"
+    try:
+        with open(temporary, "w", encoding="utf-8") as f:
+            f.write(page)
+        os.replace(temporary, path)
+    except OSError as error:
+        try:
+            os.remove(temporary)
+        except OSError:
+            pass
+        raise OutputError(f"{path}: cannot write: {error}") from None
+    return path
