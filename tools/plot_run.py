@@ -11,6 +11,7 @@ DIR, each when its data is there (one line printed per file):
   drift_envelopes.png    peak storey drift ratio against height, pier drift ratio and ductility
   energy.png             energy components (energy.csv) and the balance error
   displacements.png      u_x histories of the recorded nodes
+  accelerations.png      their absolute accelerations a_abs_x (node recorders write them)
   ensemble.png           with ensemble.json (`pound run --ensemble N`): the spread over the
                          perturbed copies of the peaks damage is judged by, least robust first
   report.html            one self-contained page for people: the run's facts, warnings, the
@@ -158,7 +159,7 @@ class History:
             if owner is None:
                 if quantity in ENERGY_TERMS or quantity in ("input", "initial"):
                     names.append(name)
-            elif quantity in LINK_QUANTITIES or quantity in ("opening", "u_x"):
+            elif quantity in LINK_QUANTITIES or quantity in ("opening", "u_x", "a_abs_x"):
                 names.append(name)
         return names
 
@@ -578,10 +579,19 @@ class Plotter:
     # -- nodes ----------------------------------------------------------------------------------
 
     def plot_displacements(self, histories):
+        self.plot_node_histories(histories, "u_x", "displacement u_x", "displacements.png",
+                                 "Node displacement histories")
+
+    def plot_accelerations(self, histories):
+        self.plot_node_histories(histories, "a_abs_x", "absolute acceleration\na_abs_x",
+                                 "accelerations.png",
+                                 "Absolute node accelerations (what floor contents feel)")
+
+    def plot_node_histories(self, histories, quantity, label, file_name, title_text):
         panels = []
         for history in histories:
             nodes = [(split_column(name)[0], name) for name in history.columns[1:]
-                     if split_column(name)[1] == "u_x" and split_column(name)[0] is not None]
+                     if split_column(name)[1] == quantity and split_column(name)[0] is not None]
             if nodes:
                 panels.append((history, nodes))
         if not panels:
@@ -602,10 +612,10 @@ class Plotter:
                 title += f" ({len(shown)} of {len(nodes)} nodes shown)"
             ax.set_title(title, fontsize="medium")
             ax.set_xlabel(TIME_LABEL)
-            ax.set_ylabel("displacement u_x\n[model units]")
+            ax.set_ylabel(f"{label}\n[model units]")
             ax.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize="small")
             ax.grid(alpha=0.3)
-        self.save(fig, "displacements.png", "Node displacement histories")
+        self.save(fig, file_name, title_text)
 
 
 # ----------------------------------------------------------------------------------------------
@@ -630,6 +640,7 @@ def main(argv):
         plotter.plot_drift_envelopes()
         plotter.plot_energy(histories)
         plotter.plot_displacements(histories)
+        plotter.plot_accelerations(histories)
         if ensemble is not None:
             plotter.plot_ensemble(ensemble)
         report = write_report(args.folder, summary, list(plotter.written), ensemble)

@@ -15,7 +15,7 @@ run="$tmp/run"
 status=0
 "$python" "$script" "$run" --dpi 80 >"$tmp/stdout" 2>"$tmp/stderr" || status=$?
 [ "$status" -eq 0 ] || fail "plot_run.py exited $status on a good run folder: $(cat "$tmp/stderr")"
-expected=(link_forces.png force_penetration.png displacements.png)
+expected=(link_forces.png force_penetration.png displacements.png accelerations.png)
 [ -f "$run/joints.csv" ] && expected+=(joint_openings.png)
 [ -f "$run/energy.csv" ] && expected+=(energy.png)
 grep -q '"storeys"\|"piers"' "$run/summary.json" && expected+=(drift_envelopes.png)
