@@ -197,12 +197,11 @@ def tight_layout(fig):
         fig.tight_layout()
 
 
-def save_png(fig, path, dpi):
-    """Lays the figure out and writes it to path through a temporary file (never half a PNG)."""
-    tight_layout(fig)
+def write_atomically(path, write):
+    """Calls write(temporary) and renames the temporary file to path: never half a file."""
     temporary = f"{path}.tmp.{os.getpid()}"
     try:
-        fig.savefig(temporary, format="png", dpi=dpi)
+        write(temporary)
         os.replace(temporary, path)
     except (OSError, ValueError) as error:
         try:
@@ -210,3 +209,9 @@ def save_png(fig, path, dpi):
         except OSError:
             pass
         raise OutputError(f"{path}: cannot write: {error}") from None
+
+
+def save_png(fig, path, dpi):
+    """Lays the figure out and writes it to path through a temporary file (never half a PNG)."""
+    tight_layout(fig)
+    write_atomically(path, lambda temporary: fig.savefig(temporary, format="png", dpi=dpi))

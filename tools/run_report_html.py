@@ -10,7 +10,7 @@ import html
 import json
 import os
 
-from plot_common import OutputError
+from plot_common import write_atomically
 
 STYLE = """
 body { font-family: sans-serif; margin: 2em auto; max-width: 70em; color: #222; }
@@ -168,15 +168,10 @@ def write_report(folder, summary, pngs, ensemble=None):
         "<p class=\"note\">Units are the model's own. Written by tools/plot_run.py from "
         "summary.json and the histories in this folder.</p></body></html>\n")
     path = os.path.join(folder, "report.html")
-    temporary = f"{path}.tmp.{os.getpid()}"
-    try:
+
+    def write(temporary):
         with open(temporary, "w", encoding="utf-8") as f:
             f.write(page)
-        os.replace(temporary, path)
-    except OSError as error:
-        try:
-            os.remove(temporary)
-        except OSError:
-            pass
-        raise OutputError(f"{path}: cannot write: {error}") from None
+
+    write_atomically(path, write)
     return path

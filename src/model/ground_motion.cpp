@@ -143,6 +143,12 @@ GroundKinematics::GroundKinematics(const GroundMotion& motion, double delay)
   }
 }
 
+double GroundKinematics::peak_velocity() const {
+  double largest = 0.0;
+  for (double v : velocity_) largest = std::max(largest, std::abs(v));
+  return largest;
+}
+
 GroundState GroundKinematics::at(double time) const {
   const double t = time - delay_;
   const std::size_t n = motion_.acceleration.size();

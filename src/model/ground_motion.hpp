@@ -29,6 +29,7 @@ class GroundKinematics {
  public:
   GroundKinematics(const GroundMotion& motion, double delay);
   GroundState at(double time) const;
+  double peak_velocity() const;  // max |velocity| over the samples
 
  private:
   GroundMotion motion_;

@@ -9,19 +9,17 @@ double value_at(const Vector& v, Index equation) { return equation < 0 ? 0.0 : v
 }  // namespace
 
 void DriftMonitors::record(const integrators::State& state) {
-  if (equations_.empty()) return;
-  ground_.frame(state.time, frame_);
-  for (std::size_t k = 0; k < equations_.size(); ++k) {
+  for (std::size_t k = 0; k < storeys_.size(); ++k) {
+    const Where& w = storeys_[k];
     DriftPeak& p = peaks_[k];
-    const double signed_drift = value_at(state.displacement, equations_[k].second) -
-                                value_at(state.displacement, equations_[k].first);
+    const double signed_drift =
+        value_at(state.displacement, w.top_x) - value_at(state.displacement, w.bottom_x);
     p.residual_drift = signed_drift;
     if (std::abs(signed_drift) > p.peak_drift) {
       p.peak_drift = std::abs(signed_drift);
       p.time = state.time;
     }
-    const double acceleration = std::abs(ground_.absolute(
-        state.acceleration, frame_, equations_[k].second, top_nodes_[k], 0, state.time));
+    const double acceleration = std::abs(ground_.absolute(state, w.top_x, w.top, 0));
     if (acceleration > p.peak_acceleration) {
       p.peak_acceleration = acceleration;
       p.acceleration_time = state.time;
@@ -30,8 +28,6 @@ void DriftMonitors::record(const integrators::State& state) {
 }
 
 void JointMonitors::record(const integrators::State& state) {
-  if (joints_.empty()) return;
-  ground_.frame(state.time, frame_);
   for (std::size_t k = 0; k < joints_.size(); ++k) {
     const Where& w = joints_[k];
     const double closing = state.link_penetration[w.link_row] + w.gap;
@@ -42,10 +38,8 @@ void JointMonitors::record(const integrators::State& state) {
     p.peak_seat_movement =
         std::max(p.peak_seat_movement, std::abs(value_at(state.displacement, w.girder_x) -
                                                 value_at(state.displacement, w.seat_x)));
-    p.peak_girder_acceleration =
-        std::max(p.peak_girder_acceleration,
-                 std::abs(ground_.absolute(state.acceleration, frame_, w.girder_x, w.girder, 0,
-                                           state.time)));
+    p.peak_girder_acceleration = std::max(
+        p.peak_girder_acceleration, std::abs(ground_.absolute(state, w.girder_x, w.girder, 0)));
   }
 }
 

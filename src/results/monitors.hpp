@@ -23,21 +23,18 @@ struct DriftPeak {
 
 class DriftMonitors : public Observer {
  public:
-  // For each monitor: x equations of its bottom and top node (-1 where fixed), and its top node.
-  DriftMonitors(std::vector<std::pair<Index, Index>> equations, std::vector<Index> top_nodes,
-                GroundAcceleration ground)
-      : equations_(std::move(equations)),
-        top_nodes_(std::move(top_nodes)),
-        ground_(std::move(ground)),
-        peaks_(equations_.size()) {}
+  struct Where {
+    Index bottom_x, top_x;  // equations, -1 where fixed
+    Index top;              // node
+  };
+  DriftMonitors(std::vector<Where> storeys, GroundAcceleration& ground)
+      : storeys_(std::move(storeys)), ground_(ground), peaks_(storeys_.size()) {}
   void record(const integrators::State& state) override;
   const std::vector<DriftPeak>& peaks() const { return peaks_; }
 
  private:
-  std::vector<std::pair<Index, Index>> equations_;
-  std::vector<Index> top_nodes_;
-  GroundAcceleration ground_;
-  Vector frame_;
+  std::vector<Where> storeys_;
+  GroundAcceleration& ground_;
   std::vector<DriftPeak> peaks_;
 };
 
@@ -57,15 +54,14 @@ class JointMonitors : public Observer {
     Index girder_x, seat_x;  // equations, -1 where fixed
     Index girder;            // node
   };
-  JointMonitors(std::vector<Where> joints, GroundAcceleration ground)
-      : joints_(std::move(joints)), ground_(std::move(ground)), peaks_(joints_.size()) {}
+  JointMonitors(std::vector<Where> joints, GroundAcceleration& ground)
+      : joints_(std::move(joints)), ground_(ground), peaks_(joints_.size()) {}
   void record(const integrators::State& state) override;
   const std::vector<JointPeak>& peaks() const { return peaks_; }
 
  private:
   std::vector<Where> joints_;
-  GroundAcceleration ground_;
-  Vector frame_;
+  GroundAcceleration& ground_;
   std::vector<JointPeak> peaks_;
 };
 

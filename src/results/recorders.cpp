@@ -33,13 +33,13 @@ void LinkRecorder::record(const integrators::State& state) {
 
 NodeRecorder::NodeRecorder(std::string file, std::vector<std::vector<Index>> equations,
                            std::vector<Index> nodes, const std::vector<std::string>& ids,
-                           builder::AccelerationFrame accelerations, GroundAcceleration ground)
+                           builder::AccelerationFrame accelerations, GroundAcceleration& ground)
     : file_(std::move(file)),
       equations_(std::move(equations)),
       nodes_(std::move(nodes)),
       relative_(accelerations != builder::AccelerationFrame::absolute),
       absolute_(accelerations != builder::AccelerationFrame::relative),
-      ground_(std::move(ground)) {
+      ground_(ground) {
   static const char* kDirection[] = {"x", "y", "rz"};
   table_.columns.push_back("time");
   for (std::size_t k = 0; k < ids.size(); ++k)
@@ -56,19 +56,16 @@ NodeRecorder::NodeRecorder(std::string file, std::vector<std::vector<Index>> equ
 void NodeRecorder::record(const integrators::State& state) {
   std::size_t column = 0;
   table_.values[column++].push_back(state.time);
-  if (absolute_) ground_.frame(state.time, frame_);
   for (std::size_t k = 0; k < equations_.size(); ++k)
     for (std::size_t d = 0; d < equations_[k].size(); ++d) {
       const Index equation = equations_[k][d];
       const bool free = equation >= 0;
       table_.values[column++].push_back(free ? state.displacement[equation] : 0.0);
       table_.values[column++].push_back(free ? state.velocity[equation] : 0.0);
-      const double relative = free ? state.acceleration[equation] : 0.0;
-      if (relative_) table_.values[column++].push_back(relative);
+      if (relative_) table_.values[column++].push_back(free ? state.acceleration[equation] : 0.0);
       if (absolute_)
         table_.values[column++].push_back(
-            free ? relative + frame_[equation]
-                 : ground_.support(nodes_[k], static_cast<int>(d), state.time));
+            ground_.absolute(state, equation, nodes_[k], static_cast<int>(d)));
     }
 }
 

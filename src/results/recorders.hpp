@@ -1,6 +1,5 @@
 #pragma once
 // Recorders: what a run keeps of each accepted step, only for what the user asked for.
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -50,7 +49,7 @@ class NodeRecorder final : public Recorder {
   // equations[k][d]: equation of node k in direction d, or -1 where fixed; nodes[k] its index.
   NodeRecorder(std::string file, std::vector<std::vector<Index>> equations,
                std::vector<Index> nodes, const std::vector<std::string>& ids,
-               builder::AccelerationFrame accelerations, GroundAcceleration ground);
+               builder::AccelerationFrame accelerations, GroundAcceleration& ground);
   void record(const integrators::State& state) override;
   const Table& table() const override { return table_; }
   const std::string& file() const override { return file_; }
@@ -60,8 +59,7 @@ class NodeRecorder final : public Recorder {
   std::vector<std::vector<Index>> equations_;
   std::vector<Index> nodes_;
   bool relative_, absolute_;
-  GroundAcceleration ground_;
-  Vector frame_;  // this step's frame acceleration
+  GroundAcceleration& ground_;
   Table table_;
 };
 

@@ -19,10 +19,10 @@ GroundAcceleration ground_of(const assembly::StructuralSystem& system) {
 }
 
 std::vector<std::unique_ptr<Recorder>> make_recorders(const builder::BuiltModel& built,
-                                                      const assembly::StructuralSystem& system) {
+                                                      const assembly::StructuralSystem& system,
+                                                      GroundAcceleration& ground) {
   const model::DofMap& dofs = system.dofs();
   const integrators::LinkSet& links = system.links();
-  const GroundAcceleration ground = ground_of(system);
   std::vector<std::unique_ptr<Recorder>> recorders;
   for (const builder::ResolvedRecorder& spec : built.recorders) {
     std::vector<std::string> ids;
@@ -55,18 +55,12 @@ std::vector<Index> normal_rows(const integrators::LinkSet& links) {
   return rows;
 }
 
-std::vector<std::pair<Index, Index>> drift_equations(const builder::BuiltModel& built,
-                                                     const model::DofMap& dofs) {
-  std::vector<std::pair<Index, Index>> equations;
+std::vector<DriftMonitors::Where> drift_places(const builder::BuiltModel& built,
+                                               const model::DofMap& dofs) {
+  std::vector<DriftMonitors::Where> places;
   for (const builder::DriftMonitor& m : built.drift_monitors)
-    equations.emplace_back(dofs.equation(m.bottom, 0), dofs.equation(m.top, 0));
-  return equations;
-}
-
-std::vector<Index> top_nodes(const builder::BuiltModel& built) {
-  std::vector<Index> nodes;
-  for (const builder::DriftMonitor& m : built.drift_monitors) nodes.push_back(m.top);
-  return nodes;
+    places.push_back({dofs.equation(m.bottom, 0), dofs.equation(m.top, 0), m.top});
+  return places;
 }
 
 std::vector<JointMonitors::Where> joint_places(const builder::BuiltModel& built,
@@ -123,13 +117,14 @@ std::vector<std::string> result_warnings(const RunSummary& run) {
 RunObservers::RunObservers(const builder::BuiltModel& built,
                            const assembly::StructuralSystem& system, bool histories)
     // Without histories nothing is recorded, not just not written.
-    : recorders_(histories ? make_recorders(built, system)
+    : ground_(ground_of(system)),
+      recorders_(histories ? make_recorders(built, system, ground_)
                            : std::vector<std::unique_ptr<Recorder>>()),
       links_(normal_rows(system.links())),
       energy_(system, built.analysis.integrator.acceleration_energy()),
       passive_links_(!system.has_link_motion()),
-      drifts_(drift_equations(built, system.dofs()), top_nodes(built), ground_of(system)),
-      joints_(joint_places(built, system), ground_of(system)) {}
+      drifts_(drift_places(built, system.dofs()), ground_),
+      joints_(joint_places(built, system), ground_) {}
 
 void RunObservers::record(const integrators::State& state) {
   for (auto& recorder : recorders_) recorder->record(state);

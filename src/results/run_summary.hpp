@@ -22,6 +22,9 @@ class RunObservers {
  public:
   RunObservers(const builder::BuiltModel& built, const assembly::StructuralSystem& system,
                bool histories);
+  // Its recorders and monitors refer to its ground_: it stays where it was made.
+  RunObservers(const RunObservers&) = delete;
+  RunObservers& operator=(const RunObservers&) = delete;
   // Every observer, then the check that the integration has not created energy: a run holding
   // more than kEnergyGrowthLimit of its largest energy term beyond what was put in stops (a
   // SolveError at the state's time) before it goes on to a NaN.
@@ -36,6 +39,7 @@ class RunObservers {
   const JointMonitors& joints() const { return joints_; }
 
  private:
+  GroundAcceleration ground_;  // shared by the recorders and monitors below
   std::vector<std::unique_ptr<Recorder>> recorders_;
   LinkSummaries links_;
   EnergyBalance energy_;

@@ -104,15 +104,10 @@ LinkCheck check_contact(const model::Link& link, const links::LinkLaw& law,
 // The largest peak ground velocity of the model's excitations, as applied.
 double peak_ground_velocity(const model::Model& model) {
   double peak = 0.0;
-  auto scan = [&peak](const model::GroundMotion& motion) {
-    const model::GroundKinematics kinematics(motion, 0.0);
-    const std::size_t samples = motion.acceleration.size();
-    for (std::size_t k = 0; k < samples; ++k)
-      peak = std::max(peak,
-                      std::abs(kinematics.at(static_cast<double>(k) * motion.time_step).velocity));
-  };
-  for (const model::UniformExcitation& e : model.excitations) scan(e.motion);
-  for (const model::SupportExcitation& e : model.support_excitations) scan(e.motion);
+  for (const model::UniformExcitation& e : model.excitations)
+    peak = std::max(peak, model::GroundKinematics(e.motion, 0.0).peak_velocity());
+  for (const model::SupportExcitation& e : model.support_excitations)
+    peak = std::max(peak, model::GroundKinematics(e.motion, 0.0).peak_velocity());
   return peak;
 }
 

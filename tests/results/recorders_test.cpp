@@ -52,8 +52,9 @@ GroundAcceleration test_ground() {
 
 TEST(NodeRecorder, WritesDisplacementVelocityAccelerationPerDirectionAndZeroWhereFixed) {
   // Node "top" (7): x is equation 1, y fixed; node "tip" (3): x equation 0 only.
+  GroundAcceleration ground = test_ground();
   NodeRecorder recorder("nodes.csv", {{1, -1}, {0}}, {7, 3}, {"top", "tip"},
-                        builder::AccelerationFrame::both, test_ground());
+                        builder::AccelerationFrame::both, ground);
   const std::vector<std::string> columns = {"time",        "top.u_x", "top.v_x", "top.a_rel_x",
                                             "top.a_abs_x", "top.u_y", "top.v_y", "top.a_rel_y",
                                             "top.a_abs_y", "tip.u_x", "tip.v_x", "tip.a_rel_x",
@@ -75,7 +76,8 @@ TEST(NodeRecorder, WritesDisplacementVelocityAccelerationPerDirectionAndZeroWher
 TEST(NodeRecorder, WritesOnlyTheAccelerationsAskedFor) {
   for (const auto frame :
        {builder::AccelerationFrame::relative, builder::AccelerationFrame::absolute}) {
-    NodeRecorder recorder("nodes.csv", {{0}}, {3}, {"tip"}, frame, test_ground());
+    GroundAcceleration ground = test_ground();
+    NodeRecorder recorder("nodes.csv", {{0}}, {3}, {"tip"}, frame, ground);
     const bool relative = frame == builder::AccelerationFrame::relative;
     EXPECT_EQ(recorder.table().columns,
               (std::vector<std::string>{"time", "tip.u_x", "tip.v_x",
