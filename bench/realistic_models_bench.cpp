@@ -5,8 +5,9 @@
 // Goals (issue 20): bridge <= 15 ms, two SDOF girders <= 0.7 ms per 4,000 steps.
 // And the cost of histories: the bridge run as `pound run` does it (read, build, solve, record
 // every step, write joints and pier tops as CSV or as .npy), against its solve alone; goal: the
-// whole <= 1.5 x the solve. In one process the restitution calibration is cached after the first
-// run, so the whole `pound run` command adds that (about 10 ms) and the program's start.
+// whole <= 1.5 x the solve; and with every tenth step kept (issue 16), time and bytes written. In
+// one process the restitution calibration is cached after the first run, so the whole `pound run`
+// command adds that (about 10 ms) and the program's start.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -58,12 +59,17 @@ void two_sdof_girders_solve(benchmark::State& state) {
 BENCHMARK(three_span_bridge_solve)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(two_sdof_girders_solve)->Unit(benchmark::kMillisecond)->Iterations(1);
 
-// The bundled bridge with its recorders writing `extension` files, in a temporary folder.
-std::string bridge_with_histories(const std::string& extension) {
+// The bundled bridge with its recorders writing `extension` files, keeping every `every`-th step,
+// in a temporary folder.
+std::string bridge_with_histories(const std::string& extension, long every) {
   std::ifstream in(std::string(POUND_SOURCE_DIR) + "/models/three_span_bridge.json");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  for (const std::string file : {"joints", "pier_tops"})
-    text.replace(text.find(file + ".csv"), file.size() + 4, file + "." + extension);
+  for (const std::string file : {"joints", "pier_tops"}) {
+    const std::string field = "\"file\": \"" + file + ".csv\"";
+    text.replace(
+        text.find(field), field.size(),
+        "\"every\": " + std::to_string(every) + ", \"file\": \"" + file + "." + extension + "\"");
+  }
   text.replace(text.find("\"../ground_motions/"), 4, "\"" + std::string(POUND_SOURCE_DIR) + "/");
   const std::filesystem::path folder =
       std::filesystem::temp_directory_path() / ("pound_histories_bench_" + extension);
@@ -72,11 +78,20 @@ std::string bridge_with_histories(const std::string& extension) {
   return (folder / "model.json").string();
 }
 
-// range(0): 0 for CSV histories, 1 for .npy.
+// The bytes of the files in `folder`.
+double folder_bytes(const std::filesystem::path& folder) {
+  double bytes = 0.0;
+  for (const auto& entry : std::filesystem::directory_iterator(folder))
+    if (entry.is_regular_file()) bytes += static_cast<double>(entry.file_size());
+  return bytes;
+}
+
+// range(0): 0 for CSV histories, 1 for .npy; range(1): the recorders' "every" (issue 16: an
+// output interval cuts the time and size of the histories).
 void three_span_bridge_histories(benchmark::State& state) {
   const std::string extension = state.range(0) ? "npy" : "csv";
   pound::app::RunRequest request;
-  request.model_path = bridge_with_histories(extension);
+  request.model_path = bridge_with_histories(extension, state.range(1));
   const std::string out = std::filesystem::path(request.model_path).parent_path() / "out";
   double best_whole = INFINITY, solve = 0.0;
   for (auto _ : state) {
@@ -92,15 +107,17 @@ void three_span_bridge_histories(benchmark::State& state) {
       }
     }
   }
+  state.counters["kB_written"] = folder_bytes(out) / 1e3;
   std::filesystem::remove_all(std::filesystem::path(request.model_path).parent_path());
   state.counters["ms_solve"] = 1e3 * solve;
   state.counters["ms_whole"] = 1e3 * best_whole;
   state.counters["whole_over_solve"] = best_whole / solve;
 }
 BENCHMARK(three_span_bridge_histories)
-    ->ArgNames({"npy"})
-    ->Arg(0)
-    ->Arg(1)
+    ->ArgNames({"npy", "every"})
+    ->Args({0, 1})
+    ->Args({1, 1})
+    ->Args({0, 10})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 

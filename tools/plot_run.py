@@ -12,6 +12,8 @@ DIR, each when its data is there (one line printed per file):
   energy.png             energy components (energy.csv) and the balance error
   displacements.png      u_x histories of the recorded nodes
   accelerations.png      their absolute accelerations a_abs_x (node recorders write them)
+  floor_spectra.png      floor response spectra Sa(T) of spectrum recorders, one panel per
+                         damping ratio
   ensemble.png           with ensemble.json (`pound run --ensemble N`): the spread over the
                          perturbed copies of the peaks damage is judged by, least robust first
   report.html            one self-contained page for people: the run's facts, warnings, the
@@ -204,6 +206,8 @@ def read_npy_history(path, numpy):
     except (ValueError, OSError) as error:
         raise InputError(f"{path}: not a NumPy .npy file: {error}") from None
     names = data.dtype.names
+    if names and names[0] in ("period", "quantity"):  # a spectrum (read_spectra) or an envelope
+        return None
     if not names or names[0] != "time":
         sys.stderr.write(f"note: {path}: not a structured array starting with 'time', not a pound "
                          "history: skipped\n")
@@ -228,6 +232,8 @@ def read_histories(folder, numpy):
             continue
         with csv_reader(path) as reader:
             header = strip_header(path, next(reader, None))
+        if header[0] in ("period", "quantity"):  # a spectrum or an envelope: read_spectra's
+            continue
         if header[0] != "time":
             sys.stderr.write(f"note: {path}: first column is not 'time', not a pound history: skipped\n")
             continue
@@ -241,6 +247,54 @@ def read_histories(folder, numpy):
             continue
         histories.append(history)
     return histories
+
+
+def read_spectra(folder, numpy):
+    """The spectrum recorders' tables (first column 'period'): [(path, periods, {column: Sa})]."""
+    spectra = []
+    for name in sorted(os.listdir(folder)):
+        path = os.path.join(folder, name)
+        if not os.path.isfile(path):
+            continue
+        if name.lower().endswith(".npy"):
+            try:
+                data = numpy.load(path, allow_pickle=False)
+            except (ValueError, OSError):
+                continue  # read_histories reports it
+            if not data.dtype.names or data.dtype.names[0] != "period":
+                continue
+            spectra.append((path, numpy.asarray(data["period"], dtype=float),
+                            {c: numpy.asarray(data[c], dtype=float)
+                             for c in data.dtype.names[1:]}))
+            continue
+        if not name.lower().endswith(".csv"):
+            continue
+        with csv_reader(path) as reader:
+            header = strip_header(path, next(reader, None))
+            if header[0] != "period":
+                continue
+            rows = []
+            for row in reader:
+                if not row:
+                    continue
+                check_width(path, reader.line_num, row, len(header))
+                bad = next((i for i, cell in enumerate(row) if not is_float(cell)), None)
+                if bad is not None:
+                    raise not_a_number(path, reader.line_num, header[bad], row[bad])
+                rows.append([float(cell) for cell in row])
+        table = numpy.array(rows, dtype=float).reshape(len(rows), len(header))
+        spectra.append((path, table[:, 0], {c: table[:, i] for i, c in enumerate(header)
+                                            if i > 0}))
+    return spectra
+
+
+def spectrum_column(name):
+    """'roof.sa_x_5%' -> ('roof', 'x', '5%'); None for another column."""
+    owner, quantity = split_column(name)
+    parts = quantity.split("_")
+    if owner is None or len(parts) != 3 or parts[0] != "sa" or not parts[2].endswith("%"):
+        return None
+    return owner, parts[1], parts[2]
 
 
 # ----------------------------------------------------------------------------------------------
@@ -587,6 +641,33 @@ class Plotter:
                                  "accelerations.png",
                                  "Absolute node accelerations (what floor contents feel)")
 
+    def plot_floor_spectra(self, spectra):
+        """One panel per damping ratio: Sa against period of every node and direction."""
+        panels = {}
+        for path, periods, columns in spectra:
+            for name, sa in columns.items():
+                parsed = spectrum_column(name)
+                if parsed is not None:
+                    node, direction, damping = parsed
+                    panels.setdefault(damping, []).append((f"{node} {direction}", periods, sa))
+        if not panels:
+            return
+        dampings = sorted(panels, key=lambda d: float(d.rstrip("%")))[:PER_PAGE]
+        fig, axes = self.figure(len(dampings), 1, 3.2)
+        for ax, damping in zip(axes, dampings):
+            curves = panels[damping][:NODES_PER_AXES]
+            for label, periods, sa in curves:
+                positive = periods > 0.0
+                ax.plot(periods[positive], sa[positive], lw=1.2, label=label)
+            ax.set_xscale("log")
+            ax.set_title(f"{damping} damping", fontsize="medium")
+            ax.set_xlabel("period T [model units of time]")
+            ax.set_ylabel("pseudo-spectral acceleration\nSa [model units]")
+            ax.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize="small")
+            ax.grid(alpha=0.3, which="both")
+        self.save(fig, "floor_spectra.png",
+                  "Floor response spectra of the recorded nodes' absolute accelerations")
+
     def plot_node_histories(self, histories, quantity, label, file_name, title_text):
         panels = []
         for history in histories:
@@ -630,6 +711,7 @@ def main(argv):
     def draw():
         summary = load_summary(args.folder)
         histories = read_histories(args.folder, numpy)
+        spectra = read_spectra(args.folder, numpy)
         ensemble = load_ensemble(args.folder)  # read (and checked) before any figure is written
         plotter = Plotter(args.folder, summary, args.dpi, figure_class, numpy)
         links = plotter.link_series(histories)
@@ -641,6 +723,7 @@ def main(argv):
         plotter.plot_energy(histories)
         plotter.plot_displacements(histories)
         plotter.plot_accelerations(histories)
+        plotter.plot_floor_spectra(spectra)
         if ensemble is not None:
             plotter.plot_ensemble(ensemble)
         report = write_report(args.folder, summary, list(plotter.written), ensemble)

@@ -32,17 +32,6 @@ Default periods: 40 log-spaced from 0.02 s to 10 s.
 options)";
 
 constexpr double kStandardGravity = 9.80665;  // m/s^2
-constexpr double kFirstPeriod = 0.02, kLastPeriod = 10.0;
-constexpr int kDefaultPeriods = 40;
-
-std::vector<double> default_periods() {
-  std::vector<double> periods;
-  for (int k = 0; k < kDefaultPeriods; ++k)
-    periods.push_back(kFirstPeriod * std::pow(kLastPeriod / kFirstPeriod,
-                                              static_cast<double>(k) / (kDefaultPeriods - 1)));
-  return periods;
-}
-
 // "0.1,0.2,1" -> periods >= 0; throws std::invalid_argument naming the bad entry.
 std::vector<double> parse_periods(const std::string& text) {
   std::vector<double> periods;
@@ -182,7 +171,7 @@ int spectrum_command(const Arguments& arguments) {
   };
   if (const std::string error = request_error(request); !error.empty()) return usage_error(error);
   io::RecordFormat format;
-  std::vector<double> periods = default_periods();
+  std::vector<double> periods = model::default_spectrum_periods();
   try {
     format = record_format(request, vm);
     if (!request.periods_text.empty()) periods = parse_periods(request.periods_text);

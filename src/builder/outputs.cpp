@@ -1,5 +1,7 @@
 #include "builder/outputs.hpp"
 
+#include "model/ground_motion.hpp"
+
 namespace pound::builder {
 namespace {
 
@@ -11,8 +13,20 @@ std::vector<Index> every(std::size_t count) {
 
 ResolvedRecorder resolve_recorder(const Resolver& resolver, const RecorderSpec& recorder,
                                   std::size_t index, std::size_t link_count) {
-  const bool nodes = recorder.type == RecorderKind::node;
-  ResolvedRecorder resolved{recorder.type, {}, recorder.file, recorder.accelerations};
+  const bool nodes = recorder.type != RecorderKind::link;
+  ResolvedRecorder resolved{recorder.type,
+                            {},
+                            recorder.file,
+                            recorder.accelerations,
+                            {recorder.every, recorder.interval.value_or(0.0)},
+                            recorder.envelope,
+                            recorder.damping_ratios,
+                            recorder.periods};
+  if (recorder.type == RecorderKind::spectrum && resolved.periods.empty()) {
+    const double second = resolver.spec().units.second();
+    for (double period : model::default_spectrum_periods())
+      resolved.periods.push_back(period * second);
+  }
   for (std::size_t i = 0; i < recorder.ids.size(); ++i) {
     const std::string path =
         fmt::format("/recorders/{}/{}/{}", index, nodes ? "nodes" : "links", i);

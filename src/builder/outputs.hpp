@@ -14,6 +14,9 @@ struct ResolvedRecorder {
   std::vector<Index> items;  // links or nodes
   std::string file;
   AccelerationFrame accelerations = AccelerationFrame::both;  // node recorders
+  OutputSampling sampling;                                    // histories
+  bool envelope = false;
+  std::vector<double> damping_ratios, periods;  // spectrum recorders; periods in model units
 };
 
 struct DriftMonitor {

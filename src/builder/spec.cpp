@@ -13,4 +13,6 @@ double UnitsSpec::gravity() const {
   return 9.80665 / metre * second * second;
 }
 
+double UnitsSpec::second() const { return time == "ms" ? 1000.0 : 1.0; }
+
 }  // namespace pound::builder

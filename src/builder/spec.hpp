@@ -163,6 +163,7 @@ struct UnitsSpec {
   std::string time = "s";    // s, ms
   // The acceleration of gravity (9.80665 m/s^2) in these units.
   double gravity() const;
+  double second() const;  // one second in these units of time
 };
 
 // Rayleigh damping C = a0 M + a1 K of the linear elements: `ratio` at two periods (or at the
@@ -351,18 +352,35 @@ struct AnalysisSpec {
   bool static_initial_state = false;
 };
 
-// Time histories written as CSV: "link" records force and penetration of the named links (all
-// links when `ids` is empty); "node" records displacement, velocity, acceleration of nodes.
-enum class RecorderKind { link, node };
+// What a run writes of its steps: "link" records force and penetration of the named links (all
+// links when `ids` is empty); "node" records displacement, velocity, acceleration of nodes;
+// "spectrum" the response spectra of nodes' absolute accelerations (floor spectra).
+enum class RecorderKind { link, node, spectrum };
 // A node recorder's accelerations: relative to the ground (what the equations of motion carry),
 // absolute (what contents and non-structural parts feel), or both.
 enum class AccelerationFrame { both, relative, absolute };
+
+// Which steps a history keeps: every k-th accepted step (counting the start as step 0), or the
+// first step at or after each multiple of `interval` [T] (0: none given).
+struct OutputSampling {
+  int every = 1;
+  double interval = 0.0;
+};
 
 struct RecorderSpec {
   RecorderKind type = RecorderKind::link;
   AccelerationFrame accelerations = AccelerationFrame::both;
   std::vector<std::string> ids;
   std::string file;  // output file name inside the output folder
+  int every = 1;     // histories: OutputSampling
+  std::optional<double> interval;
+  // Link and node recorders: the envelope (max, min, the time of each, |max|) of each quantity
+  // over every step, instead of the history.
+  bool envelope = false;
+  // Spectrum recorders: the oscillators' damping ratios and periods [T] (empty: 40 log-spaced
+  // from 0.02 s to 10 s, model::default_spectrum_periods).
+  std::vector<double> damping_ratios{0.05};
+  std::vector<double> periods;
 };
 
 // "gravity": the weight of every mass as constant loads, and optionally P-Delta

@@ -11,6 +11,10 @@ namespace pound {
 struct Table {
   std::vector<std::string> columns;
   std::vector<std::vector<double>> values;  // values[column][row]
+  // A first column of text when label_column is named (an envelope's quantities): a label per
+  // row.
+  std::string label_column;
+  std::vector<std::string> labels;
 };
 
 // A table with these columns and no rows yet.

@@ -1157,11 +1157,10 @@ Field<RecorderSpec> recorder_file() {
       [](JsonObject& object, RecorderSpec& recorder, Context& context) {
         const std::optional<JsonValue> file = object.find("file");
         const JsonValue& where = file ? *file : object.value();
+        static const char* kType[] = {"link", "node", "spectrum"};
         recorder.file =
             file ? file->as<std::string>()
-                 : fmt::format("{}_{}.csv",
-                               recorder.type == builder::RecorderKind::link ? "link" : "node",
-                               context.index);
+                 : fmt::format("{}_{}.csv", kType[static_cast<int>(recorder.type)], context.index);
         check_file_name(recorder.file, where);
         context.unique("recorder files", "file name").add(recorder.file, where);
       },
@@ -1170,20 +1169,48 @@ Field<RecorderSpec> recorder_file() {
       });
 }
 
+// A list of damping ratios, each in (0, 1).
+struct DampingRatios {
+  using value_type = std::vector<double>;
+  Numbers numbers{1, 20, positive};
+
+  void read(const JsonValue& value, value_type& target, Context& context) const {
+    numbers.read(value, target, context);
+    const std::vector<JsonValue> items = value.elements(1);
+    for (std::size_t k = 0; k < target.size(); ++k)
+      if (!(target[k] < 1.0))
+        items[k].fail(fmt::format("a damping ratio must be in (0, 1), got {}", target[k]));
+  }
+  OrderedJson write(const value_type& value, const Context&) const { return value; }
+  std::string type() const { return "1 to 20 numbers in (0, 1)"; }
+};
+
 const Fields<RecorderSpec>& recorder_fields() {
+  using builder::RecorderKind;
   static const auto records_links = [](const RecorderSpec& recorder) {
-    return recorder.type == builder::RecorderKind::link;
+    return recorder.type == RecorderKind::link;
+  };
+  static const auto records_histories = [](const RecorderSpec& recorder) {
+    return recorder.type != RecorderKind::spectrum;
+  };
+  static const auto takes_nodes = [](const RecorderSpec& recorder) {
+    return recorder.type != RecorderKind::link;
+  };
+  static const auto is_spectrum = [](const RecorderSpec& recorder) {
+    return recorder.type == RecorderKind::spectrum;
   };
   static const Fields<RecorderSpec> fields = {
       required("type", &RecorderSpec::type,
-               Choice<builder::RecorderKind>{
-                   {{"link", builder::RecorderKind::link}, {"node", builder::RecorderKind::node}}},
-               "link: force and penetration; node: displacement, velocity, acceleration"),
+               Choice<RecorderKind>{{{"link", RecorderKind::link},
+                                     {"node", RecorderKind::node},
+                                     {"spectrum", RecorderKind::spectrum}}},
+               "link: force and penetration; node: displacement, velocity, acceleration; "
+               "spectrum: response spectra of the nodes' absolute accelerations (floor spectra)"),
       optional("links", &RecorderSpec::ids, Names{.what = "link"}, "the links recorded")
           .default_text("every link")
           .when(records_links, "link recorders"),
       required("nodes", &RecorderSpec::ids, Names{}, "the nodes recorded")
-          .when(std::not_fn(records_links), "node recorders"),
+          .when(takes_nodes, "node and spectrum recorders"),
       optional(
           "accelerations", &RecorderSpec::accelerations,
           Choice<builder::AccelerationFrame>{{{"both", builder::AccelerationFrame::both},
@@ -1192,7 +1219,35 @@ const Fields<RecorderSpec>& recorder_fields() {
           "which accelerations: `a_rel` relative to the ground (as u and v are), `a_abs` "
           "absolute (relative plus the ground's), or both")
           .default_text("`\"both\"`")
-          .when(std::not_fn(records_links), "node recorders"),
+          .when([](const RecorderSpec& r) { return r.type == RecorderKind::node; },
+                "node recorders"),
+      optional("envelope", &RecorderSpec::envelope, Flag{},
+               "instead of the history, a row per quantity: `max`, `time_of_max`, `min`, "
+               "`time_of_min`, `abs_max` over every step (label column `quantity`)")
+          .when(records_histories, "link and node recorders"),
+      rule<RecorderSpec>([](JsonObject& object, RecorderSpec& recorder, Context&) {
+        const std::optional<JsonValue> every = object.find("every");
+        const std::optional<JsonValue> interval = object.find("interval");
+        if (every && interval) interval->fail("give \"every\" or \"interval\", not both");
+        if (recorder.envelope && (every || interval))
+          (every ? *every : *interval)
+              .fail("an envelope takes every step; \"every\" and \"interval\" thin histories");
+      }),
+      optional("every", &RecorderSpec::every, Number<int>{at_least(1)},
+               "keep every k-th step of the history (the start is step 0)")
+          .when(records_histories, "link and node recorders"),
+      optional("interval", &RecorderSpec::interval, Number<>{positive},
+               "keep the first step at or after each multiple of this time [T] (uniform output "
+               "of an adaptive run)")
+          .when(records_histories, "link and node recorders"),
+      optional("damping", &RecorderSpec::damping_ratios, DampingRatios{},
+               "the oscillators' damping ratios")
+          .default_text("[0.05]")
+          .when(is_spectrum, "spectrum recorders"),
+      optional("periods", &RecorderSpec::periods, Numbers{1, 1000, non_negative},
+               "the oscillators' periods [T]; 0 gives the peak acceleration")
+          .default_text("40 log-spaced from 0.02 s to 10 s")
+          .when(is_spectrum, "spectrum recorders"),
       recorder_file(),
   };
   return fields;

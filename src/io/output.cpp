@@ -5,11 +5,13 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <bit>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <string>
 
 #include "core/interrupt.hpp"
 
@@ -85,15 +87,26 @@ void remove_stale_temporaries(const std::string& folder) {
 
 namespace {
 
+// A text cell: quoted (with quotes doubled) when it holds a comma, quote or line break.
+std::string csv_cell(const std::string& text) {
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
 // Numbers in their shortest form that reads back to the same double (fmt's Dragonbox): exact,
 // and several times faster to write than a fixed 17 digits, which matters for a batch's histories.
 void format_csv(const Table& table, fmt::memory_buffer& text) {
   const std::size_t rows = table.values.empty() ? 0 : table.values.front().size();
+  const bool labelled = !table.label_column.empty();
   text.reserve(64 + (rows + 1) * table.columns.size() * 24);  // one allocation for most tables
+  if (labelled) fmt::format_to(std::back_inserter(text), "{},", csv_cell(table.label_column));
   for (std::size_t c = 0; c < table.columns.size(); ++c)
     fmt::format_to(std::back_inserter(text), "{}{}", c ? "," : "", table.columns[c]);
   text.push_back('\n');
   for (std::size_t r = 0; r < rows; ++r) {
+    if (labelled) fmt::format_to(std::back_inserter(text), "{},", csv_cell(table.labels.at(r)));
     for (std::size_t c = 0; c < table.values.size(); ++c) {
       if (c) text.push_back(',');
       fmt::format_to(std::back_inserter(text), FMT_COMPILE("{}"), table.values[c][r]);
@@ -102,17 +115,55 @@ void format_csv(const Table& table, fmt::memory_buffer& text) {
   }
 }
 
+// UTF-8 text as the code points of NumPy's '<U' fields (an invalid byte stands for itself).
+std::u32string code_points(const std::string& text) {
+  std::u32string points;
+  for (std::size_t i = 0; i < text.size();) {
+    const auto byte = static_cast<unsigned char>(text[i]);
+    const int length = byte < 0x80         ? 1
+                       : (byte >> 5) == 6  ? 2
+                       : (byte >> 4) == 14 ? 3
+                       : (byte >> 3) == 30 ? 4
+                                           : 1;
+    char32_t point = length == 1 ? byte : byte & (0x7f >> length);
+    bool valid = i + static_cast<std::size_t>(length) <= text.size();
+    for (int k = 1; valid && k < length; ++k) {
+      const auto next = static_cast<unsigned char>(text[i + static_cast<std::size_t>(k)]);
+      valid = (next >> 6) == 2;
+      point = (point << 6) | (next & 0x3f);
+    }
+    points.push_back(valid ? point : byte);
+    i += valid ? static_cast<std::size_t>(length) : 1;
+  }
+  return points;
+}
+
+// A Python string literal's body: quotes and backslashes escaped.
+std::string python_literal(const std::string& text) {
+  std::string literal;
+  for (char c : text)
+    literal += (c == '\'' || c == '\\') ? std::string("\\") + c : std::string(1, c);
+  return literal;
+}
+
 }  // namespace
 
 std::string to_npy(const Table& table) {
   static_assert(std::endian::native == std::endian::little, "the .npy writer assumes '<f8'");
+  const bool labelled = !table.label_column.empty();
+  std::vector<std::u32string> labels;
+  std::size_t label_width = 1;
+  if (labelled)
+    for (const std::string& label : table.labels) {
+      labels.push_back(code_points(label));
+      label_width = std::max(label_width, labels.back().size());
+    }
   std::string fields;
-  for (const std::string& column : table.columns) {
-    std::string name;  // a Python string literal: quotes and backslashes escaped
-    for (char c : column)
-      name += (c == '\'' || c == '\\') ? std::string("\\") + c : std::string(1, c);
-    fmt::format_to(std::back_inserter(fields), "('{}', '<f8'), ", name);
-  }
+  if (labelled)
+    fmt::format_to(std::back_inserter(fields), "('{}', '<U{}'), ",
+                   python_literal(table.label_column), label_width);
+  for (const std::string& column : table.columns)
+    fmt::format_to(std::back_inserter(fields), "('{}', '<f8'), ", python_literal(column));
   const std::size_t rows = table.values.empty() ? 0 : table.values.front().size();
   std::string header =
       fmt::format("{{'descr': [{}], 'fortran_order': False, 'shape': ({},), }}", fields, rows);
@@ -133,6 +184,12 @@ std::string to_npy(const Table& table) {
   std::vector<double> record(columns);
   out.reserve(out.size() + rows * columns * sizeof(double));
   for (std::size_t r = 0; r < rows; ++r) {
+    if (labelled) {
+      std::u32string label = labels.at(r);
+      label.resize(label_width, U'\0');  // NumPy pads with NUL
+      for (char32_t point : label)
+        for (int b = 0; b < 4; ++b) out.push_back(static_cast<char>((point >> (8 * b)) & 0xff));
+    }
     for (std::size_t c = 0; c < columns; ++c) record[c] = table.values[c][r];
     out.append(reinterpret_cast<const char*>(record.data()), columns * sizeof(double));
   }

@@ -58,10 +58,7 @@ double y_minus_sin(double y) {
 // opposite sign for short periods, and their sum rounded separately would lose digits. Likewise
 // 1 - a11, 1 - a22 and dt - a12 are formed from expm1, 2 sin^2(y/2) and y - sin y so that long
 // periods (w dt << 1) keep theirs.
-struct StepMap {
-  double a11, a12, a21, a22;
-  double step_u, ramp_u, step_v, ramp_v;  // b11 + b12, b12, b21 + b22, b22
-};
+using StepMap = OscillatorStep;
 
 StepMap nigam_jennings_map(double omega, double zeta, double dt) {
   const double root = std::sqrt(1.0 - zeta * zeta);
@@ -112,7 +109,48 @@ void integrate_sdof(const GroundMotion& motion, double period, double damping_ra
   }
 }
 
+// A period this far below the step: the oscillator follows its base rigidly, Sa is the peak base
+// acceleration (to (T / dt)^2), and w^2 would overflow for periods near 1e-300.
+bool is_rigid(double period, double time_step) { return period < 1e-3 * time_step; }
+
 }  // namespace
+
+std::vector<double> default_spectrum_periods() {
+  constexpr double first = 0.02, last = 10.0;
+  constexpr int count = 40;
+  std::vector<double> periods;
+  for (int k = 0; k < count; ++k)
+    periods.push_back(first * std::pow(last / first, static_cast<double>(k) / (count - 1)));
+  return periods;
+}
+
+ResponseOscillator::ResponseOscillator(double period, double damping_ratio)
+    : period_(period), damping_ratio_(damping_ratio) {
+  if (period != 0.0) require_oscillator(period, damping_ratio);
+  omega_ = period > 0.0 ? 2.0 * std::numbers::pi / period : 0.0;
+}
+
+void ResponseOscillator::advance(double base_start, double base_end, double dt) {
+  peak_base_ = std::max({peak_base_, std::abs(base_start), std::abs(base_end)});
+  if (period_ == 0.0 || is_rigid(period_, dt)) return;
+  // Steps that differ in their last bits (times k dt rounded) share a map: recomputing it would
+  // cost more than the step and change Sa by parts in 1e9 at most.
+  if (!(std::abs(dt - map_dt_) <= 1e-9 * dt)) {
+    map_ = nigam_jennings_map(omega_, damping_ratio_, dt);
+    map_dt_ = dt;
+  }
+  const double increment = base_end - base_start;
+  const double u =
+      map_.a11 * u_ + map_.a12 * v_ + map_.step_u * base_start + map_.ramp_u * increment;
+  v_ = map_.a21 * u_ + map_.a22 * v_ + map_.step_v * base_start + map_.ramp_v * increment;
+  u_ = u;
+  peak_displacement_ = std::max(peak_displacement_, std::abs(u_));
+}
+
+double ResponseOscillator::pseudo_acceleration() const {
+  if (period_ == 0.0 || (map_dt_ == 0.0 && peak_displacement_ == 0.0)) return peak_base_;
+  return omega_ * omega_ * peak_displacement_;
+}
 
 double GroundMotion::duration() const {
   return acceleration.empty() ? 0.0 : static_cast<double>(acceleration.size() - 1) * time_step;
@@ -193,7 +231,7 @@ SdofResponse sdof_response(const GroundMotion& motion, double period, double dam
 double spectral_acceleration(const GroundMotion& motion, double period, double damping_ratio) {
   // An oscillator a thousand times faster than the sampling follows the ground rigidly: its Sa is
   // the PGA (to (T / dt)^2), and integrating it would overflow w^2 for periods near 1e-300.
-  const bool rigid = period > 0.0 && period < 1e-3 * motion.time_step && damping_ratio >= 0.0 &&
+  const bool rigid = period > 0.0 && is_rigid(period, motion.time_step) && damping_ratio >= 0.0 &&
                      damping_ratio < 1.0;
   if (period == 0.0 || rigid) {
     require_samples(motion);

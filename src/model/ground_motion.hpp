@@ -42,6 +42,34 @@ class GroundKinematics {
 // it is exact for the linearly interpolated record. Period 0 gives the peak acceleration.
 double spectral_acceleration(const GroundMotion& motion, double period, double damping_ratio);
 
+// 40 periods log-spaced from 0.02 s to 10 s: the default of spectra [s].
+std::vector<double> default_spectrum_periods();
+
+// The coefficients of one step of the exact recurrence below (ground_motion.cpp derives them).
+struct OscillatorStep {
+  double a11, a12, a21, a22;
+  double step_u, ramp_u, step_v, ramp_v;
+};
+
+// A linear SDOF (period, damping ratio) from rest on a base whose acceleration is linear within
+// each step, advanced step by step (steps of any length) with Nigam & Jennings' exact
+// recurrence: the spectrum of a signal known only as it is computed (a floor's acceleration).
+// Period 0 follows the base rigidly: its Sa is the peak base acceleration. The peak is taken at
+// the step ends, so shorter steps can only find a larger one.
+class ResponseOscillator {
+ public:
+  ResponseOscillator(double period, double damping_ratio);
+  void advance(double base_start, double base_end, double dt);
+  // S_a = w^2 max|u| so far; the peak |base| for period 0 or periods far below the step.
+  double pseudo_acceleration() const;
+
+ private:
+  double period_, damping_ratio_, omega_ = 0.0;
+  double u_ = 0.0, v_ = 0.0, peak_displacement_ = 0.0, peak_base_ = 0.0;
+  OscillatorStep map_{};
+  double map_dt_ = 0.0;  // the step map_ is for
+};
+
 // Relative displacement, velocity and absolute acceleration history of a linear SDOF under the
 // record at the record's own samples (Nigam & Jennings); used for spectra and as an exact
 // reference for the time integrators.

@@ -1,72 +1,139 @@
 #include "results/recorders.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace pound::results {
 
-LinkRecorder::LinkRecorder(std::string file, std::vector<LinkRows> links,
-                           const std::vector<std::string>& ids)
-    : file_(std::move(file)), links_(std::move(links)) {
-  table_.columns.push_back("time");
+LinkQuantities::LinkQuantities(std::vector<LinkRows> links, const std::vector<std::string>& ids)
+    : links_(std::move(links)) {
   for (std::size_t k = 0; k < ids.size(); ++k) {
-    table_.columns.push_back(ids[k] + ".force");
-    table_.columns.push_back(ids[k] + ".penetration");
+    names_.push_back(ids[k] + ".force");
+    names_.push_back(ids[k] + ".penetration");
     if (links_[k].friction) {
-      table_.columns.push_back(ids[k] + ".tangential_force");
-      table_.columns.push_back(ids[k] + ".slide");
+      names_.push_back(ids[k] + ".tangential_force");
+      names_.push_back(ids[k] + ".slide");
     }
   }
-  table_.values.resize(table_.columns.size());
 }
 
-void LinkRecorder::record(const integrators::State& state) {
-  std::size_t column = 0;
-  table_.values[column++].push_back(state.time);
+void LinkQuantities::take(const integrators::State& state, double* values) const {
   for (const LinkRows& link : links_) {
     const Index rows = link.friction ? 2 : 1;
     for (Index r = link.row; r < link.row + rows; ++r) {
-      table_.values[column++].push_back(state.link_force[r]);
-      table_.values[column++].push_back(state.link_penetration[r]);
+      *values++ = state.link_force[r];
+      *values++ = state.link_penetration[r];
     }
   }
 }
 
-NodeRecorder::NodeRecorder(std::string file, std::vector<std::vector<Index>> equations,
-                           std::vector<Index> nodes, const std::vector<std::string>& ids,
-                           builder::AccelerationFrame accelerations, GroundAcceleration& ground)
-    : file_(std::move(file)),
-      equations_(std::move(equations)),
+NodeQuantities::NodeQuantities(std::vector<std::vector<Index>> equations, std::vector<Index> nodes,
+                               const std::vector<std::string>& ids,
+                               builder::AccelerationFrame accelerations, GroundAcceleration& ground,
+                               std::vector<std::vector<int>> directions)
+    : equations_(std::move(equations)),
       nodes_(std::move(nodes)),
       relative_(accelerations != builder::AccelerationFrame::absolute),
       absolute_(accelerations != builder::AccelerationFrame::relative),
-      ground_(ground) {
+      ground_(ground),
+      directions_(std::move(directions)) {
   static const char* kDirection[] = {"x", "y", "rz"};
-  table_.columns.push_back("time");
-  for (std::size_t k = 0; k < ids.size(); ++k)
-    for (std::size_t d = 0; d < equations_[k].size(); ++d) {
-      const std::string name = ids[k] + ".";
-      table_.columns.push_back(name + "u_" + kDirection[d]);
-      table_.columns.push_back(name + "v_" + kDirection[d]);
-      if (relative_) table_.columns.push_back(name + "a_rel_" + kDirection[d]);
-      if (absolute_) table_.columns.push_back(name + "a_abs_" + kDirection[d]);
+  if (directions_.empty())
+    for (const std::vector<Index>& node : equations_) {
+      std::vector<int>& each = directions_.emplace_back();
+      for (std::size_t i = 0; i < node.size(); ++i) each.push_back(static_cast<int>(i));
     }
+  for (std::size_t k = 0; k < ids.size(); ++k)
+    for (std::size_t i = 0; i < equations_[k].size(); ++i) {
+      const std::string name = ids[k] + ".";
+      const char* direction = kDirection[directions_[k].at(i)];
+      names_.push_back(name + "u_" + direction);
+      names_.push_back(name + "v_" + direction);
+      if (relative_) names_.push_back(name + "a_rel_" + direction);
+      if (absolute_) names_.push_back(name + "a_abs_" + direction);
+    }
+}
+
+void NodeQuantities::take(const integrators::State& state, double* values) const {
+  for (std::size_t k = 0; k < equations_.size(); ++k)
+    for (std::size_t i = 0; i < equations_[k].size(); ++i) {
+      const Index equation = equations_[k][i];
+      const bool free = equation >= 0;
+      *values++ = free ? state.displacement[equation] : 0.0;
+      *values++ = free ? state.velocity[equation] : 0.0;
+      if (relative_) *values++ = free ? state.acceleration[equation] : 0.0;
+      if (absolute_) *values++ = ground_.absolute(state, equation, nodes_[k], directions_[k][i]);
+    }
+}
+
+HistoryRecorder::HistoryRecorder(std::string file, std::unique_ptr<Quantities> quantities,
+                                 builder::OutputSampling sampling)
+    : file_(std::move(file)),
+      quantities_(std::move(quantities)),
+      sampling_(sampling),
+      row_(quantities_->names().size()) {
+  table_.columns.push_back("time");
+  for (const std::string& name : quantities_->names()) table_.columns.push_back(name);
   table_.values.resize(table_.columns.size());
 }
 
-void NodeRecorder::record(const integrators::State& state) {
-  std::size_t column = 0;
-  table_.values[column++].push_back(state.time);
-  for (std::size_t k = 0; k < equations_.size(); ++k)
-    for (std::size_t d = 0; d < equations_[k].size(); ++d) {
-      const Index equation = equations_[k][d];
-      const bool free = equation >= 0;
-      table_.values[column++].push_back(free ? state.displacement[equation] : 0.0);
-      table_.values[column++].push_back(free ? state.velocity[equation] : 0.0);
-      if (relative_) table_.values[column++].push_back(free ? state.acceleration[equation] : 0.0);
-      if (absolute_)
-        table_.values[column++].push_back(
-            ground_.absolute(state, equation, nodes_[k], static_cast<int>(d)));
+bool HistoryRecorder::due(double time) {
+  const long step = step_++;
+  if (sampling_.interval <= 0.0) return step % sampling_.every == 0;
+  // Times are k dt rounded: a step a rounding error short of the multiple is on it.
+  const double interval = sampling_.interval;
+  if (step > 0 && time < next_time_ - 1e-9 * interval) return false;
+  next_time_ = interval * (std::floor(time / interval + 1e-9) + 1.0);
+  return true;
+}
+
+void HistoryRecorder::record(const integrators::State& state) {
+  if (!due(state.time)) return;
+  quantities_->take(state, row_.data());
+  table_.values[0].push_back(state.time);
+  for (std::size_t c = 0; c < row_.size(); ++c) table_.values[c + 1].push_back(row_[c]);
+}
+
+double HistoryRecorder::held_values(double steps, double duration) const {
+  const double rows = sampling_.interval > 0.0
+                          ? std::min(steps, std::floor(duration / sampling_.interval) + 1.0)
+                          : std::ceil(steps / sampling_.every);
+  return rows * static_cast<double>(table_.columns.size());
+}
+
+EnvelopeRecorder::EnvelopeRecorder(std::string file, std::unique_ptr<Quantities> quantities)
+    : file_(std::move(file)), quantities_(std::move(quantities)) {
+  const std::size_t count = quantities_->names().size();
+  row_.resize(count);
+  max_.resize(count);
+  min_.resize(count);
+  time_of_max_.resize(count);
+  time_of_min_.resize(count);
+}
+
+void EnvelopeRecorder::record(const integrators::State& state) {
+  quantities_->take(state, row_.data());
+  for (std::size_t q = 0; q < row_.size(); ++q) {
+    if (!started_ || row_[q] > max_[q]) {
+      max_[q] = row_[q];
+      time_of_max_[q] = state.time;
     }
+    if (!started_ || row_[q] < min_[q]) {
+      min_[q] = row_[q];
+      time_of_min_[q] = state.time;
+    }
+  }
+  started_ = true;
+}
+
+Table EnvelopeRecorder::table() const {
+  Table table = table_with_columns({"max", "time_of_max", "min", "time_of_min", "abs_max"});
+  table.label_column = "quantity";
+  table.labels = quantities_->names();
+  for (std::size_t q = 0; q < row_.size(); ++q)
+    append_row(table, {max_[q], time_of_max_[q], min_[q], time_of_min_[q],
+                       std::max(std::abs(max_[q]), std::abs(min_[q]))});
+  return table;
 }
 
 void LinkSummaries::record(const integrators::State& state) {

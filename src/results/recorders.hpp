@@ -15,8 +15,23 @@ namespace pound::results {
 class Recorder : public Observer {
  public:
   virtual ~Recorder() = default;
-  virtual const Table& table() const = 0;
+  virtual Table table() const = 0;  // what is written
   virtual const std::string& file() const = 0;
+  // The values it holds after `steps` steps over `duration` [T], for the memory check; 0 for a
+  // recorder of constant size.
+  virtual double held_values(double steps, double duration) const = 0;
+};
+
+// The quantities a recorder takes from each state, with their column names.
+class Quantities {
+ public:
+  virtual ~Quantities() = default;
+  const std::vector<std::string>& names() const { return names_; }
+  // values: one per name, in order.
+  virtual void take(const integrators::State& state, double* values) const = 0;
+
+ protected:
+  std::vector<std::string> names_;
 };
 
 // Where a link's values sit in the state's link vectors: its normal row, and the tangential
@@ -26,41 +41,76 @@ struct LinkRows {
   bool friction = false;
 };
 
-// Columns time, <id>.force, <id>.penetration per link, and <id>.tangential_force, <id>.slide
-// for a link with friction.
-class LinkRecorder final : public Recorder {
+// <id>.force, <id>.penetration per link, and <id>.tangential_force, <id>.slide for a link with
+// friction.
+class LinkQuantities final : public Quantities {
  public:
-  LinkRecorder(std::string file, std::vector<LinkRows> links, const std::vector<std::string>& ids);
-  void record(const integrators::State& state) override;
-  const Table& table() const override { return table_; }
-  const std::string& file() const override { return file_; }
+  LinkQuantities(std::vector<LinkRows> links, const std::vector<std::string>& ids);
+  void take(const integrators::State& state, double* values) const override;
 
  private:
-  std::string file_;
   std::vector<LinkRows> links_;
-  Table table_;
 };
 
-// Columns time, <id>.u_x, <id>.v_x, <id>.a_rel_x, <id>.a_abs_x (and _y, _rz as the scene has
-// them) per node. u, v and a_rel are relative to the ground (fixed DOFs record 0); a_abs is
-// a_rel plus the ground's acceleration (a fixed DOF's is the ground's).
-class NodeRecorder final : public Recorder {
+// <id>.u_x, <id>.v_x, <id>.a_rel_x, <id>.a_abs_x (and _y, _rz as the scene has them) per node.
+// u, v and a_rel are relative to the ground (fixed DOFs give 0); a_abs is a_rel plus the
+// ground's acceleration (a fixed DOF's is the ground's).
+class NodeQuantities final : public Quantities {
  public:
-  // equations[k][d]: equation of node k in direction d, or -1 where fixed; nodes[k] its index.
-  NodeRecorder(std::string file, std::vector<std::vector<Index>> equations,
-               std::vector<Index> nodes, const std::vector<std::string>& ids,
-               builder::AccelerationFrame accelerations, GroundAcceleration& ground);
-  void record(const integrators::State& state) override;
-  const Table& table() const override { return table_; }
-  const std::string& file() const override { return file_; }
+  // equations[k][i]: equation of node k in direction directions[k][i] (0 x, 1 y, 2 rz), or -1
+  // where fixed; nodes[k] its index. Without directions, equations[k][i] is direction i.
+  NodeQuantities(std::vector<std::vector<Index>> equations, std::vector<Index> nodes,
+                 const std::vector<std::string>& ids, builder::AccelerationFrame accelerations,
+                 GroundAcceleration& ground, std::vector<std::vector<int>> directions = {});
+  void take(const integrators::State& state, double* values) const override;
 
  private:
-  std::string file_;
   std::vector<std::vector<Index>> equations_;
   std::vector<Index> nodes_;
   bool relative_, absolute_;
   GroundAcceleration& ground_;
+  std::vector<std::vector<int>> directions_;
+};
+
+// A time history: columns time and the quantities, a row per sampled step.
+class HistoryRecorder final : public Recorder {
+ public:
+  HistoryRecorder(std::string file, std::unique_ptr<Quantities> quantities,
+                  builder::OutputSampling sampling = {});
+  void record(const integrators::State& state) override;
+  Table table() const override { return table_; }
+  const Table& history() const { return table_; }
+  const std::string& file() const override { return file_; }
+  double held_values(double steps, double duration) const override;
+
+ private:
+  bool due(double time);
+
+  std::string file_;
+  std::unique_ptr<Quantities> quantities_;
+  builder::OutputSampling sampling_;
+  long step_ = 0;            // states seen
+  double next_time_ = 0.0;   // with an interval: the next multiple due
+  std::vector<double> row_;  // scratch
   Table table_;
+};
+
+// The envelope of the quantities over every step: a row per quantity (label column
+// "quantity") with max, time_of_max, min, time_of_min and abs_max (the larger of |max|, |min|).
+// The first time a value is reached counts.
+class EnvelopeRecorder final : public Recorder {
+ public:
+  EnvelopeRecorder(std::string file, std::unique_ptr<Quantities> quantities);
+  void record(const integrators::State& state) override;
+  Table table() const override;
+  const std::string& file() const override { return file_; }
+  double held_values(double, double) const override { return 0.0; }
+
+ private:
+  std::string file_;
+  std::unique_ptr<Quantities> quantities_;
+  std::vector<double> row_, max_, min_, time_of_max_, time_of_min_;
+  bool started_ = false;
 };
 
 // Pounding summary of one link over the run.

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "core/errors.hpp"
+#include "results/spectrum_recorder.hpp"
 
 namespace pound::results {
 namespace {
@@ -18,34 +19,79 @@ GroundAcceleration ground_of(const assembly::StructuralSystem& system) {
           }};
 }
 
+std::unique_ptr<Quantities> link_quantities(const builder::BuiltModel& built,
+                                            const integrators::LinkSet& links,
+                                            const std::vector<Index>& items) {
+  std::vector<std::string> ids;
+  std::vector<LinkRows> rows;
+  for (Index link : items) {
+    ids.push_back(built.model.links[static_cast<std::size_t>(link)].id);
+    rows.push_back({links.row(link), links.has_friction(link)});
+  }
+  return std::make_unique<LinkQuantities>(rows, ids);
+}
+
+// The directions a node moves in: its free DOFs (a floor of a shear building has no y or
+// rotation); a node fixed in every direction moves with its support, whose x is recorded.
+std::vector<int> free_directions(const model::DofMap& dofs, Index node, int count) {
+  std::vector<int> directions;
+  for (int d = 0; d < count; ++d)
+    if (dofs.equation(node, d) >= 0) directions.push_back(d);
+  if (directions.empty()) directions.push_back(0);
+  return directions;
+}
+
+std::unique_ptr<Quantities> node_quantities(const builder::BuiltModel& built,
+                                            const model::DofMap& dofs,
+                                            const builder::ResolvedRecorder& spec,
+                                            GroundAcceleration& ground) {
+  std::vector<std::string> ids;
+  std::vector<std::vector<Index>> equations;
+  std::vector<std::vector<int>> directions;
+  for (Index node : spec.items) {
+    ids.push_back(built.model.nodes[static_cast<std::size_t>(node)].id);
+    directions.push_back(free_directions(dofs, node, dofs.dofs_per_node()));
+    std::vector<Index>& per_direction = equations.emplace_back();
+    for (int d : directions.back()) per_direction.push_back(dofs.equation(node, d));
+  }
+  return std::make_unique<NodeQuantities>(std::move(equations), spec.items, ids, spec.accelerations,
+                                          ground, std::move(directions));
+}
+
+// A node's free translational directions (x when it has none: its support's motion).
+std::vector<SpectrumPlace> spectrum_places(const builder::BuiltModel& built,
+                                           const model::DofMap& dofs,
+                                           const std::vector<Index>& nodes) {
+  std::vector<SpectrumPlace> places;
+  for (Index node : nodes)
+    for (int d : free_directions(dofs, node, std::min(2, dofs.dofs_per_node())))
+      places.push_back(
+          {built.model.nodes[static_cast<std::size_t>(node)].id, dofs.equation(node, d), node, d});
+  return places;
+}
+
+std::unique_ptr<Recorder> make_recorder(const builder::BuiltModel& built,
+                                        const assembly::StructuralSystem& system,
+                                        const builder::ResolvedRecorder& spec,
+                                        GroundAcceleration& ground) {
+  if (spec.kind == builder::RecorderKind::spectrum)
+    return std::make_unique<SpectrumRecorder>(spec.file,
+                                              spectrum_places(built, system.dofs(), spec.items),
+                                              spec.periods, spec.damping_ratios, ground);
+  std::unique_ptr<Quantities> quantities =
+      spec.kind == builder::RecorderKind::link
+          ? link_quantities(built, system.links(), spec.items)
+          : node_quantities(built, system.dofs(), spec, ground);
+  if (spec.envelope) return std::make_unique<EnvelopeRecorder>(spec.file, std::move(quantities));
+  return std::make_unique<HistoryRecorder>(spec.file, std::move(quantities), spec.sampling);
+}
+
 std::vector<std::unique_ptr<Recorder>> make_recorders(const builder::BuiltModel& built,
                                                       const assembly::StructuralSystem& system,
                                                       GroundAcceleration& ground) {
-  const model::DofMap& dofs = system.dofs();
-  const integrators::LinkSet& links = system.links();
   std::vector<std::unique_ptr<Recorder>> recorders;
-  for (const builder::ResolvedRecorder& spec : built.recorders) {
-    std::vector<std::string> ids;
-    if (spec.kind == builder::RecorderKind::link) {
-      std::vector<LinkRows> rows;
-      for (Index link : spec.items) {
-        ids.push_back(built.model.links[static_cast<std::size_t>(link)].id);
-        rows.push_back({links.row(link), links.has_friction(link)});
-      }
-      recorders.push_back(std::make_unique<LinkRecorder>(spec.file, rows, ids));
-      continue;
-    }
-    std::vector<std::vector<Index>> equations;
-    for (Index node : spec.items) {
-      ids.push_back(built.model.nodes[static_cast<std::size_t>(node)].id);
-      std::vector<Index> per_direction;
-      for (int d = 0; d < dofs.dofs_per_node(); ++d)
-        per_direction.push_back(dofs.equation(node, d));
-      equations.push_back(std::move(per_direction));
-    }
-    recorders.push_back(std::make_unique<NodeRecorder>(spec.file, std::move(equations), spec.items,
-                                                       ids, spec.accelerations, ground));
-  }
+  for (const builder::ResolvedRecorder& spec : built.recorders)
+    recorders.push_back(make_recorder(built, system, spec, ground));
   return recorders;
 }
 
@@ -155,19 +201,20 @@ void RunObservers::record(const integrators::State& state) {
 void check_histories_fit(const std::vector<std::unique_ptr<Recorder>>& recorders,
                          const builder::AnalysisSpec& analysis,
                          std::optional<std::size_t> available, const std::string& model_path) {
-  std::size_t columns = 0;
-  for (const auto& recorder : recorders) columns += recorder->table().columns.size();
-  if (columns == 0) return;
   const double steps = std::ceil(analysis.duration / analysis.time_step) + 1.0;
-  const double needed = 3.0 * 8.0 * steps * static_cast<double>(columns);
+  double values = 0.0;
+  for (const auto& recorder : recorders) values += recorder->held_values(steps, analysis.duration);
+  if (values == 0.0) return;
+  const double needed = 3.0 * 8.0 * values;
   constexpr double gib = 1024.0 * 1024.0 * 1024.0;
   if (available && needed > static_cast<double>(*available))
     throw InputError(
         model_path, "/recorders",
-        fmt::format("recording {} columns over {:.0f} steps needs about {:.1f} GiB, "
+        fmt::format("recording {:.3g} values over {:.0f} steps needs about {:.1f} GiB, "
                     "more than the {:.1f} GiB of memory available: record fewer "
-                    "links or nodes, or a shorter duration",
-                    columns, steps, needed / gib, static_cast<double>(*available) / gib));
+                    "links or nodes, a shorter duration, or every k-th step (\"every\", "
+                    "\"interval\")",
+                    values, steps, needed / gib, static_cast<double>(*available) / gib));
 }
 
 std::optional<double> DriftResult::ductility() const {

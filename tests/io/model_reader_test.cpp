@@ -365,6 +365,12 @@ std::string replaced(const std::string& path, const std::string& value) {
 std::string added(const std::string& path, const std::string& value) {
   return patch("add", path, value);
 }
+// Two additions in one patch.
+std::string added(const std::string& path, const std::string& value, const std::string& second_path,
+                  const std::string& second_value) {
+  const std::string first = added(path, value), second = added(second_path, second_value);
+  return first.substr(0, first.size() - 1) + ", " + second.substr(1);
+}
 std::string removed(const std::string& path) {
   return R"([{"op": "remove", "path": ")" + path + R"("}])";
 }
@@ -466,8 +472,38 @@ INSTANTIATE_TEST_SUITE_P(
                 "unknown field (did you mean 'max_iterations'?)"},
         BadCase{"unknown_integrator_field", added("/analysis/integrator/alpha", "0.1"),
                 "/analysis/integrator/alpha", "unknown field"},
-        BadCase{"unknown_recorder_field", added("/recorders/0/every", "2"), "/recorders/0/every",
-                "unknown field"},
+        BadCase{"unknown_recorder_field", added("/recorders/0/every_step", "2"),
+                "/recorders/0/every_step", "unknown field"},
+        BadCase{"zero_output_interval", added("/recorders/0/interval", "0"),
+                "/recorders/0/interval", "must be > 0"},
+        BadCase{"negative_output_interval", added("/recorders/1/interval", "-0.01"),
+                "/recorders/1/interval", "must be > 0"},
+        BadCase{"zero_every", added("/recorders/0/every", "0"), "/recorders/0/every",
+                "must be >= 1"},
+        BadCase{"every_and_interval",
+                added("/recorders/0/every", "2", "/recorders/0/interval", "0.01"),
+                "/recorders/0/interval", "give \"every\" or \"interval\", not both"},
+        BadCase{"thinned_envelope",
+                added("/recorders/1/envelope", "true", "/recorders/1/every", "3"),
+                "/recorders/1/every", "an envelope takes every step"},
+        BadCase{"spectrum_damping_of_one",
+                replaced("/recorders/1", R"({"type": "spectrum", "nodes": ["girder_1"],
+                                             "damping": [0.05, 1.0]})"),
+                "/recorders/1/damping/1", "a damping ratio must be in (0, 1), got 1"},
+        BadCase{"spectrum_damping_zero",
+                replaced("/recorders/1", R"({"type": "spectrum", "nodes": ["girder_1"],
+                                             "damping": [0]})"),
+                "/recorders/1/damping/0", "must be > 0"},
+        BadCase{"negative_spectrum_period",
+                replaced("/recorders/1", R"({"type": "spectrum", "nodes": ["girder_1"],
+                                             "periods": [0.1, -1]})"),
+                "/recorders/1/periods/1", ">= 0"},
+        BadCase{"damping_on_a_node_recorder", added("/recorders/1/damping", "[0.05]"),
+                "/recorders/1/damping", "unknown field"},
+        BadCase{"envelope_of_a_spectrum",
+                replaced("/recorders/1", R"({"type": "spectrum", "nodes": ["girder_1"],
+                                             "envelope": true})"),
+                "/recorders/1/envelope", "unknown field"},
         BadCase{"links_in_node_recorder", added("/recorders/1/links", R"(["joint"])"),
                 "/recorders/1/links", "unknown field"},
         // Ranges.
@@ -692,7 +728,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"file_clashes_with_default", replaced("/recorders/0/file", R"("node_1.csv")"),
                 "/recorders/1", "duplicate file name 'node_1.csv' (first at /recorders/0/file)"},
         BadCase{"unknown_recorder_type", replaced("/recorders/0/type", R"("element")"),
-                "/recorders/0/type", "expected one of 'link', 'node', got 'element'"},
+                "/recorders/0/type", "expected one of 'link', 'node', 'spectrum', got 'element'"},
         BadCase{"empty_link_list", replaced("/recorders/0/links", "[]"), "/recorders/0/links",
                 "expected at least 1 element, got 0"},
         BadCase{"recorder_node_is_number", replaced("/recorders/1/nodes/0", "1"),

@@ -193,6 +193,45 @@ TEST(Npy, StructuredArrayOfTheColumnsAsNumPyDefinesIt) {
   EXPECT_EQ(values[3], -2.25e-300);
 }
 
+// A labelled table (an envelope): the labels are its first column, quoted in CSV where they
+// hold a comma or quote, and a '<U' field of NumPy (UTF-32, NUL-padded to the longest).
+TEST(OutputCsv, LabelsAreTheFirstColumnQuotedWhereNeeded) {
+  Table table = table_with_columns({"max", "min"});
+  table.label_column = "quantity";
+  table.labels = {"a.force", "b,\"c\".force"};
+  append_row(table, {1.5, -2.0});
+  append_row(table, {3.0, 0.25});
+  EXPECT_EQ(to_csv(table), "quantity,max,min\na.force,1.5,-2\n\"b,\"\"c\"\".force\",3,0.25\n");
+}
+
+TEST(Npy, LabelsAreAUnicodeFieldBeforeTheNumbers) {
+  Table table = table_with_columns({"max"});
+  table.label_column = "quantity";
+  table.labels = {"u", "\xc3\xa9t\xc3\xa9"};  // "été": 3 code points from 5 bytes
+  append_row(table, {1.0});
+  append_row(table, {-4.0});
+  const std::string npy = to_npy(table);
+  const std::size_t length =
+      static_cast<unsigned char>(npy[8]) + 256u * static_cast<unsigned char>(npy[9]);
+  const std::string header = npy.substr(10, length);
+  EXPECT_NE(header.find("'descr': [('quantity', '<U3'), ('max', '<f8'), ]"), std::string::npos)
+      << header;
+  const std::size_t record = 3 * 4 + 8;
+  ASSERT_EQ(npy.size(), 10 + length + 2 * record);
+  const char* second = npy.data() + 10 + length + record;
+  const char32_t expected[] = {U'\u00e9', U't', U'\u00e9'};
+  for (int k = 0; k < 3; ++k) {
+    char32_t point = 0;
+    for (int b = 3; b >= 0; --b)
+      point = point * 256 + static_cast<unsigned char>(second[4 * k + b]);
+    EXPECT_EQ(point, expected[k]);
+  }
+  double value = 0.0;
+  std::memcpy(&value, second + 12, sizeof(value));
+  EXPECT_EQ(value, -4.0);
+  EXPECT_EQ(npy[10 + length + 4], '\0');  // "u" padded with NULs
+}
+
 // A header past 64 KiB (thousands of columns) takes version 2.0's 4-byte length.
 TEST(Npy, ManyColumnsTakeVersionTwo) {
   std::vector<std::string> columns{"time"};

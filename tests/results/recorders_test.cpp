@@ -21,7 +21,9 @@ integrators::State link_state(double time, const Vector& force, const Vector& pe
 }
 
 TEST(LinkRecorder, WritesForceAndPenetrationAndForAFrictionLinkItsTangentialRow) {
-  LinkRecorder recorder("links.csv", {{0, false}, {1, true}}, {"joint", "pad"});
+  HistoryRecorder recorder(
+      "links.csv", std::make_unique<LinkQuantities>(std::vector<LinkRows>{{0, false}, {1, true}},
+                                                    std::vector<std::string>{"joint", "pad"}));
   EXPECT_EQ(recorder.file(), "links.csv");
   const std::vector<std::string> columns = {"time",      "joint.force",     "joint.penetration",
                                             "pad.force", "pad.penetration", "pad.tangential_force",
@@ -29,7 +31,7 @@ TEST(LinkRecorder, WritesForceAndPenetrationAndForAFrictionLinkItsTangentialRow)
   EXPECT_EQ(recorder.table().columns, columns);
   recorder.record(link_state(0.0, entries({0, 0, 0}), entries({-0.1, -0.2, 0})));
   recorder.record(link_state(0.5, entries({7, 4, -2}), entries({0.05, 0.02, 0.17})));
-  const auto& values = recorder.table().values;
+  const auto& values = recorder.history().values;
   ASSERT_EQ(values.size(), columns.size());
   EXPECT_EQ(values[0], (std::vector<double>{0.0, 0.5}));
   EXPECT_EQ(values[1], (std::vector<double>{0.0, 7.0}));
@@ -53,8 +55,11 @@ GroundAcceleration test_ground() {
 TEST(NodeRecorder, WritesDisplacementVelocityAccelerationPerDirectionAndZeroWhereFixed) {
   // Node "top" (7): x is equation 1, y fixed; node "tip" (3): x equation 0 only.
   GroundAcceleration ground = test_ground();
-  NodeRecorder recorder("nodes.csv", {{1, -1}, {0}}, {7, 3}, {"top", "tip"},
-                        builder::AccelerationFrame::both, ground);
+  HistoryRecorder recorder(
+      "nodes.csv", std::make_unique<NodeQuantities>(std::vector<std::vector<Index>>{{1, -1}, {0}},
+                                                    std::vector<Index>{7, 3},
+                                                    std::vector<std::string>{"top", "tip"},
+                                                    builder::AccelerationFrame::both, ground));
   const std::vector<std::string> columns = {"time",        "top.u_x", "top.v_x", "top.a_rel_x",
                                             "top.a_abs_x", "top.u_y", "top.v_y", "top.a_rel_y",
                                             "top.a_abs_y", "tip.u_x", "tip.v_x", "tip.a_rel_x",
@@ -67,7 +72,7 @@ TEST(NodeRecorder, WritesDisplacementVelocityAccelerationPerDirectionAndZeroWher
   state.acceleration = entries({5.0, 6.0});
   recorder.record(state);
   std::vector<double> row;
-  for (const auto& column : recorder.table().values) row.push_back(column.at(0));
+  for (const auto& column : recorder.history().values) row.push_back(column.at(0));
   // Absolute: relative + the frame's 2.5 where free; the support's own 25 where fixed.
   EXPECT_EQ(row, (std::vector<double>{0.25, 2.0, 4.0, 6.0, 8.5, 0.0, 0.0, 0.0, 25.0, 1.0, 3.0, 5.0,
                                       7.5}));
@@ -77,12 +82,87 @@ TEST(NodeRecorder, WritesOnlyTheAccelerationsAskedFor) {
   for (const auto frame :
        {builder::AccelerationFrame::relative, builder::AccelerationFrame::absolute}) {
     GroundAcceleration ground = test_ground();
-    NodeRecorder recorder("nodes.csv", {{0}}, {3}, {"tip"}, frame, ground);
+    HistoryRecorder recorder("nodes.csv",
+                             std::make_unique<NodeQuantities>(
+                                 std::vector<std::vector<Index>>{{0}}, std::vector<Index>{3},
+                                 std::vector<std::string>{"tip"}, frame, ground));
     const bool relative = frame == builder::AccelerationFrame::relative;
     EXPECT_EQ(recorder.table().columns,
               (std::vector<std::string>{"time", "tip.u_x", "tip.v_x",
                                         relative ? "tip.a_rel_x" : "tip.a_abs_x"}));
   }
+}
+
+// One link "gap" whose force is 10 t: the rows kept say which steps a sampling took.
+std::vector<double> kept_times(builder::OutputSampling sampling, double dt, int steps) {
+  HistoryRecorder recorder("gap.csv",
+                           std::make_unique<LinkQuantities>(std::vector<LinkRows>{{0, false}},
+                                                            std::vector<std::string>{"gap"}),
+                           sampling);
+  for (int k = 0; k <= steps; ++k) {
+    const double time = k * dt;
+    recorder.record(link_state(time, entries({10.0 * time}), entries({0.0})));
+  }
+  const Table& table = recorder.history();
+  EXPECT_EQ(table.values[0].size(), table.values[1].size());
+  for (std::size_t r = 0; r < table.values[0].size(); ++r)
+    EXPECT_EQ(table.values[1][r], 10.0 * table.values[0][r]);  // rows stay whole
+  return table.values[0];
+}
+
+TEST(HistoryRecorder, KeepsEveryKthStepCountingTheStartAsStepZero) {
+  EXPECT_EQ(kept_times({3, 0.0}, 0.5, 7), (std::vector<double>{0.0, 1.5, 3.0}));
+  EXPECT_EQ(kept_times({1, 0.0}, 0.5, 3), (std::vector<double>{0.0, 0.5, 1.0, 1.5}));
+}
+
+TEST(HistoryRecorder, KeepsTheFirstStepAtOrAfterEachMultipleOfTheInterval) {
+  // Steps of 0.003 (times rounded as k dt): an interval of 10 steps keeps every tenth exactly,
+  // though k * 0.003 misses 0.03 multiples in the last bits.
+  const std::vector<double> tenth = kept_times({1, 0.03}, 0.003, 100);
+  ASSERT_EQ(tenth.size(), 11u);
+  for (std::size_t k = 0; k < tenth.size(); ++k)
+    EXPECT_EQ(tenth[k], 10.0 * static_cast<double>(k) * 0.003);
+  // An interval that is no multiple of the step: the first step past each multiple.
+  EXPECT_EQ(kept_times({1, 0.25}, 0.1, 10),
+            (std::vector<double>{0.0, 0.30000000000000004, 0.5, 0.8, 1.0}));
+}
+
+TEST(HistoryRecorder, HoldsWhatItsSamplingKeepsForTheMemoryCheck) {
+  auto recorder = [](builder::OutputSampling sampling) {
+    return HistoryRecorder("gap.csv",
+                           std::make_unique<LinkQuantities>(std::vector<LinkRows>{{0, false}},
+                                                            std::vector<std::string>{"gap"}),
+                           sampling);
+  };
+  EXPECT_EQ(recorder({}).held_values(1001, 10.0), 3.0 * 1001);
+  EXPECT_EQ(recorder({10, 0.0}).held_values(1001, 10.0), 3.0 * 101);
+  EXPECT_EQ(recorder({1, 0.5}).held_values(1001, 10.0), 3.0 * 21);
+}
+
+TEST(EnvelopeRecorder, GivesMaxMinTheirFirstTimesAndTheLargestMagnitudePerQuantity) {
+  EnvelopeRecorder recorder(
+      "envelope.csv", std::make_unique<LinkQuantities>(std::vector<LinkRows>{{0, false}, {1, true}},
+                                                       std::vector<std::string>{"joint", "pad"}));
+  const double forces[][3] = {{0, 1, -1}, {5, 2, 3}, {5, -7, 0}, {-2, 2, 1}};
+  for (int k = 0; k < 4; ++k)
+    recorder.record(link_state(0.1 * k, entries({forces[k][0], forces[k][1], forces[k][2]}),
+                               entries({-0.1 * k, 0.0, 0.01 * k})));
+  const Table table = recorder.table();
+  EXPECT_EQ(table.label_column, "quantity");
+  EXPECT_EQ(table.labels,
+            (std::vector<std::string>{"joint.force", "joint.penetration", "pad.force",
+                                      "pad.penetration", "pad.tangential_force", "pad.slide"}));
+  EXPECT_EQ(table.columns,
+            (std::vector<std::string>{"max", "time_of_max", "min", "time_of_min", "abs_max"}));
+  auto row = [&](std::size_t r) {
+    std::vector<double> values;
+    for (const auto& column : table.values) values.push_back(column.at(r));
+    return values;
+  };
+  EXPECT_EQ(row(0), (std::vector<double>{5.0, 0.1, -2.0, 0.30000000000000004, 5.0}));  // first 5
+  EXPECT_EQ(row(2), (std::vector<double>{2.0, 0.1, -7.0, 0.2, 7.0}));
+  EXPECT_EQ(row(4), (std::vector<double>{3.0, 0.1, -1.0, 0.0, 3.0}));
+  EXPECT_EQ(recorder.held_values(1e9, 1e3), 0.0);
 }
 
 TEST(LinkSummaries, CountEngagementsAndIntegrateImpulseAndWorkByTrapezoids) {

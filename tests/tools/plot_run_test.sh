@@ -85,4 +85,16 @@ cp "$run/summary.json" "$tmp/bad_ensemble/"
 printf '{"quantities": [{"path": "/links/joint/peak_force"}]}' >"$tmp/bad_ensemble/ensemble.json"
 expect_input_error "$tmp/bad_ensemble" "$tmp/bad_ensemble/ensemble.json"
 
-echo "plot_run_test: ok (${expected[*]} ensemble.png report.html)"
+# 6. Envelopes and floor spectra (models/adjacent_buildings_outputs.json, 6 s of it): the
+# spectra figure, no note about the envelope and spectrum tables, which are no histories.
+outputs="$tmp/outputs"
+sed 's/"analysis": {"time_step": 0.002}/"analysis": {"time_step": 0.002, "duration": 6}/' \
+  "$root/models/adjacent_buildings_outputs.json" >"$tmp/outputs_model.json"
+sed -i "s|\.\./ground_motions/|$(cd "$root" && pwd)/ground_motions/|" "$tmp/outputs_model.json"
+"$pound" run "$tmp/outputs_model.json" --out "$outputs" --quiet || fail "pound run of the outputs model failed"
+"$python" "$script" "$outputs" --dpi 60 >/dev/null 2>"$tmp/stderr" ||
+  fail "plot_run.py failed on envelopes and spectra: $(cat "$tmp/stderr")"
+is_png "$outputs/floor_spectra.png"
+[ ! -s "$tmp/stderr" ] || fail "plot_run.py noted: $(cat "$tmp/stderr")"
+
+echo "plot_run_test: ok (${expected[*]} ensemble.png report.html floor_spectra.png)"
