@@ -87,7 +87,25 @@ def facts(summary):
 
 
 def excitations(summary, folder):
-    """The excitations the model file names, read from it when it can be found."""
+    """The excitations as the run applied them (summary.json), else as the model file names them."""
+    applied = summary.get("excitations")
+    if isinstance(applied, list) and applied:
+        rows = []
+        for e in applied:
+            if not isinstance(e, dict):
+                continue
+            scaling = e.get("scaling") if isinstance(e.get("scaling"), dict) else {}
+            rows.append({"record": e.get("record", ""), "sha1": e.get("sha1", ""),
+                         "format": e.get("format", ""), "units": e.get("units", ""),
+                         "scaling": ", ".join(f"{k} {v}" for k, v in scaling.items()),
+                         "factor": e.get("factor"), "pga_g": e.get("pga_g"),
+                         "replaced_by": e.get("replaced_by", "")})
+        return (table(rows, [("sha1", "SHA-1"), ("format", "format"), ("units", "units"),
+                             ("scaling", "scaling asked"), ("factor", "factor applied"),
+                             ("pga_g", "PGA [g]"), ("replaced_by", "replaced by")],
+                      first="record") +
+                "<p class=\"note\">As the run applied them (summary.json); <code>sha1sum</code> "
+                "of a record file gives its SHA-1.</p>")
     model = summary.get("model")
     candidates = [model, os.path.join(folder, model)] if isinstance(model, str) else []
     for path in candidates:

@@ -56,7 +56,8 @@ void read_records_and_build(const std::string& path, bool first_as_given, Loaded
     format.units = io::parse_acceleration_unit(e.units);
     loaded.record_paths.push_back(record);
     try {
-      loaded.records.push_back(io::read_ground_motion(record, format, spec.units.gravity()));
+      loaded.records.push_back(io::read_ground_motion(record, format, spec.units.gravity(),
+                                                      &loaded.record_sources.emplace_back()));
     } catch (const io::FileAccessError& error) {
       if (k == 0 && first_as_given) throw;  // the caller's path: its error names it
       // The record cannot be opened: the model's field that names it is what to fix.
@@ -73,15 +74,36 @@ void read_records_and_build(const std::string& path, bool first_as_given, Loaded
 
 }  // namespace
 
-LoadedModel load_model(const std::string& path, const std::optional<std::string>& motion_override) {
+namespace {
+
+// The first excitation reads `motion` instead; the model's direction, supports and (unless the
+// override scales) scaling stay.
+void override_motion(const MotionOverride& motion, builder::ModelSpec& spec) {
+  if (spec.excitations.empty()) spec.excitations.push_back({});
+  builder::ExcitationSpec& first = spec.excitations.front();
+  first.record = motion.path;
+  first.format = "auto";
+  if (motion.units) first.units = *motion.units;
+  first.time_column = motion.time_column;
+  first.column = motion.column.value_or(motion.time_column ? 2 : 1);
+  first.time_step = motion.time_step;
+  if (motion.scale_factor || motion.target_pga) {
+    first.scale_factor = motion.scale_factor;
+    first.target_pga = motion.target_pga;
+    first.target_sa.reset();
+  }
+}
+
+}  // namespace
+
+LoadedModel load_model(const std::string& path,
+                       const std::optional<MotionOverride>& motion_override) {
   LoadedModel loaded;
   loaded.spec = io::read_model_file(path);
   check_model_fits(loaded.spec, path);
-  builder::ModelSpec& spec = loaded.spec;
   if (motion_override) {
-    if (spec.excitations.empty()) spec.excitations.push_back({});
-    spec.excitations.front().record = *motion_override;
-    spec.excitations.front().format = "auto";
+    override_motion(*motion_override, loaded.spec);
+    loaded.first_record_replaced_by = "--motion";
   }
   read_records_and_build(path, motion_override.has_value(), loaded);
   return loaded;
@@ -100,6 +122,7 @@ LoadedModel load_model_with_record(const std::string& path, const builder::Excit
   replaced.apparent_velocity = first.apparent_velocity;
   replaced.wave_origin = first.wave_origin;
   first = replaced;
+  loaded.first_record_replaced_by = "the batch case";
   read_records_and_build(path, true, loaded);
   return loaded;
 }

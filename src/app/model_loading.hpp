@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "builder/build.hpp"
+#include "io/ground_motion_reader.hpp"
 #include "model/ground_motion.hpp"
 
 namespace pound::app {
@@ -14,8 +15,22 @@ namespace pound::app {
 struct LoadedModel {
   builder::ModelSpec spec;
   builder::BuiltModel built;
-  std::vector<model::GroundMotion> records;  // of spec.excitations, as read (before scaling)
-  std::vector<std::string> record_paths;     // the files they were read from
+  std::vector<model::GroundMotion> records;      // of spec.excitations, as read (before scaling)
+  std::vector<std::string> record_paths;         // the files they were read from
+  std::vector<io::RecordSource> record_sources;  // their format and content hash
+  // Who replaced the first excitation's record: "--motion", "the batch case", or empty.
+  std::string first_record_replaced_by;
+};
+
+// `pound run --motion RECORD` and its options: the record replacing the model's first one, how to
+// read it, and, when given, the scaling replacing the model's.
+struct MotionOverride {
+  std::string path;
+  std::optional<std::string> units;  // of the file's values: "g", "m/s2", "cm/s2", "model"
+  std::optional<int> column;
+  std::optional<double> time_step;
+  bool time_column = false;
+  std::optional<double> scale_factor, target_pga;  // target in g
 };
 
 // `motion_override`: a record path replacing the first excitation's record (or adding a uniform
@@ -25,7 +40,7 @@ struct LoadedModel {
 std::optional<std::string> memory_shortfall(double dofs);
 
 LoadedModel load_model(const std::string& path,
-                       const std::optional<std::string>& motion_override = {});
+                       const std::optional<MotionOverride>& motion_override = {});
 
 // A batch case: `record` (its path as the program opens it, format, units, scale and IDA
 // factor) replaces the first excitation's; the model keeps its direction, supports and wave

@@ -164,11 +164,81 @@ std::string verification_line(const verification::RodImpactMetrics& metrics) {
       metrics.peak_force_ratio);
 }
 
-// The summary of a run, with its verification when there is one.
+// How excitation k was scaled: "as recorded", or its factor or target.
+io::Document scaling_document(const builder::ExcitationSpec& e) {
+  io::Document scaling;
+  if (e.target_pga) return scaling.set("target_pga_g", *e.target_pga);
+  if (e.target_sa)
+    return scaling.set("target_sa_g", *e.target_sa)
+        .set("period", e.sa_period)
+        .set("damping_ratio", e.sa_damping);
+  if (e.scale_factor) return scaling.set("factor", *e.scale_factor);
+  return scaling.set("as_recorded", true);
+}
+
+// Each excitation as applied, so that a run can be traced to its records: the file (as opened)
+// and its SHA-1, format, units, the scaling asked for, the factor applied (with a batch's IDA
+// factor) and the resulting PGA.
+std::vector<io::Document> excitation_documents(const LoadedModel& loaded) {
+  std::vector<io::Document> items;
+  const double gravity = loaded.spec.units.gravity();
+  for (std::size_t k = 0; k < loaded.records.size(); ++k) {
+    const builder::ExcitationSpec& e = loaded.spec.excitations[k];
+    const double factor = loaded.built.excitation_factors.at(k);
+    const double pga = factor * loaded.records[k].peak();
+    io::Document item;
+    item.set("record", loaded.record_paths[k])
+        .set("sha1", loaded.record_sources[k].sha1)
+        .set("format", loaded.record_sources[k].format)
+        .set("units", e.units)
+        .set("points", static_cast<long>(loaded.records[k].acceleration.size()))
+        .set("dt", loaded.records[k].time_step)
+        .set("scaling", scaling_document(e))
+        .set("factor", factor)
+        .set("pga", pga)
+        .set("pga_g", pga / gravity);
+    if (k == 0 && !loaded.first_record_replaced_by.empty())
+      item.set("replaced_by", loaded.first_record_replaced_by);
+    items.push_back(item);
+  }
+  return items;
+}
+
+// The model's title, unless it may name a record that was replaced: then what ran.
+std::string run_title(const LoadedModel& loaded, const std::string& model_path) {
+  if (loaded.first_record_replaced_by.empty() || loaded.records.empty()) return loaded.spec.title;
+  return fmt::format("{} under {} (record replaced by {})",
+                     std::filesystem::path(model_path).stem().string(), loaded.records.front().name,
+                     loaded.first_record_replaced_by);
+}
+
+// A line per excitation for the report: what was applied, from which file.
+std::string excitation_lines(const LoadedModel& loaded) {
+  std::string text;
+  const double gravity = loaded.spec.units.gravity();
+  for (std::size_t k = 0; k < loaded.records.size(); ++k) {
+    const double factor = loaded.built.excitation_factors.at(k);
+    text += fmt::format("  record {} (sha1 {}): scale factor {:.4g}, PGA {:.4g} g{}\n",
+                        loaded.record_paths[k], loaded.record_sources[k].sha1.substr(0, 12), factor,
+                        factor * loaded.records[k].peak() / gravity,
+                        k == 0 && !loaded.first_record_replaced_by.empty()
+                            ? fmt::format(" (replaced by {})", loaded.first_record_replaced_by)
+                            : "");
+  }
+  return text;
+}
+
+// The summary of a run, with its excitations and its verification when there is one.
 io::Document summary_document(const results::RunSummary& summary, const RunRequest& request,
                               const PreparedRun& run,
                               const std::optional<verification::RodImpactMetrics>& metrics) {
-  io::Document document = io::to_document(summary, request.model_path, run.loaded.spec.title);
+  io::Document document =
+      io::to_document(summary, request.model_path, run_title(run.loaded, request.model_path));
+  if (!run.loaded.records.empty()) {
+    document.set("excitations", excitation_documents(run.loaded));
+    if (!run.loaded.first_record_replaced_by.empty())
+      document.set("model_title", run.loaded.spec.title);
+  }
   if (metrics) document.set("verification", verification::to_document(*metrics));
   return document;
 }
@@ -199,8 +269,8 @@ RunOutcome summarise(const RunRequest& request, const PreparedRun& run, const So
     outcome.summary = summary_document(summary, request, run, metrics);
   }
   outcome.headline = run_headline(request.model_path, summary);
-  outcome.report =
-      run_report(summary) + (metrics ? verification_line(*metrics) : "") + energy_line(summary);
+  outcome.report = excitation_lines(run.loaded) + run_report(summary) +
+                   (metrics ? verification_line(*metrics) : "") + energy_line(summary);
   outcome.warnings = summary.warnings;
   outcome.failure = summary.status.failure;
   outcome.failure_time = summary.status.end_time;

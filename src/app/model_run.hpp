@@ -18,7 +18,7 @@ namespace pound::app {
 
 struct RunRequest {
   std::string model_path;
-  std::optional<std::string> motion;              // `pound run --motion`
+  std::optional<MotionOverride> motion;           // `pound run --motion` and its options
   std::optional<builder::ExcitationSpec> record;  // a batch case's record (replaces `motion`)
   long max_steps = 0;                             // 0: the model's
   double time_limit = 0.0;                        // [s] of solving, 0: none

@@ -9,6 +9,7 @@
 #include "app/commands.hpp"
 #include "app/ensemble.hpp"
 #include "app/model_run.hpp"
+#include "io/ground_motion_reader.hpp"
 #include "io/output_paths.hpp"
 
 namespace pound::app {
@@ -36,6 +37,39 @@ options)";
 }  // namespace
 
 namespace {
+
+// The options that say how to read and scale --motion's record.
+constexpr const char* kMotionOptions[] = {"units", "column", "dt", "time-column", "scale", "pga"};
+
+// --motion and its options; throws std::invalid_argument naming a bad option.
+MotionOverride motion_override(const std::string& path, const po::variables_map& vm) {
+  MotionOverride motion{path, {}, {}, {}, vm.count("time-column") > 0, {}, {}};
+  if (vm.count("units")) {
+    motion.units = vm["units"].as<std::string>();
+    try {
+      (void)io::parse_acceleration_unit(*motion.units);
+    } catch (const std::invalid_argument& unknown) {
+      throw std::invalid_argument(std::string("--units: ") + unknown.what());
+    }
+  }
+  if (vm.count("column")) {
+    motion.column = vm["column"].as<int>();
+    if (*motion.column < 1) throw std::invalid_argument("--column must be 1 or more");
+  }
+  auto positive = [&](const char* option) -> std::optional<double> {
+    if (!vm.count(option)) return std::nullopt;
+    const double value = vm[option].as<double>();
+    if (!(value > 0.0) || !std::isfinite(value))
+      throw std::invalid_argument(fmt::format("--{} must be a positive number", option));
+    return value;
+  };
+  motion.time_step = positive("dt");
+  motion.scale_factor = positive("scale");
+  motion.target_pga = positive("pga");
+  if (motion.scale_factor && motion.target_pga)
+    throw std::invalid_argument("give --scale or --pga, not both");
+  return motion;
+}
 
 // What is wrong with the command line, or empty.
 std::string request_error(const RunRequest& request) {
@@ -93,8 +127,19 @@ int run_command(const Arguments& arguments) {
   options.add_options()("help,h", "show this help")("out,o", po::value(&out),
                                                     "output folder (default out/<model name>)")(
       "motion", po::value(&motion),
-      "ground-motion record (.AT2, or columns) replacing the model's first excitation, or "
-      "exciting it along x in g when it has none")(
+      "ground-motion record (.AT2, or columns) replacing the model's first excitation's (its "
+      "direction, supports and, without --scale or --pga, its scaling stay), or exciting the "
+      "model along x when it has none; summary.json records the file, its SHA-1 and the PGA "
+      "applied")("units", po::value<std::string>(),
+                 "--motion: units of the file's values, g | m/s2 | cm/s2 | model (default: the "
+                 "model's excitation's, else g)")(
+      "column", po::value<int>(),
+      "--motion: the column to read in a columns file, from 1 (default 1, or 2 with "
+      "--time-column)")("dt", po::value<double>(),
+                        "--motion: time step [s] of a columns file that does not state it")(
+      "time-column", "--motion: the first column of a columns file is time")(
+      "scale", po::value<double>(), "--motion: multiply the record by this factor")(
+      "pga", po::value<double>(), "--motion: scale the record to this peak acceleration [g]")(
       "max-steps", po::value(&request.max_steps),
       "stop with an error after this many steps (0: no limit)")(
       "time-limit", po::value(&request.time_limit),
@@ -117,11 +162,19 @@ int run_command(const Arguments& arguments) {
     if (error.empty() && !with_ensemble && !(*parsed)[option].defaulted())
       error =
           fmt::format("--{} applies to the copies of --ensemble N only: add --ensemble N", option);
+  for (const char* option : kMotionOptions)
+    if (error.empty() && motion.empty() && parsed->count(option))
+      error =
+          fmt::format("--{} says how to read the record of --motion: add --motion RECORD", option);
+  if (error.empty() && !motion.empty()) try {
+      request.motion = motion_override(motion, *parsed);
+    } catch (const std::invalid_argument& bad) {
+      error = bad.what();
+    }
   if (!error.empty()) {
     std::cerr << "pound run: " << error << "\n";
     return 1;
   }
-  if (!motion.empty()) request.motion = motion;
   if (out.empty()) out = io::folder_named_after("out", request.model_path, "--out");
   request.before_run = [&](const LoadedModel& loaded) {
     check_run_outputs(out, request, loaded, with_ensemble);

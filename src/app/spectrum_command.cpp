@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iostream>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -27,7 +28,8 @@ Reads a ground-acceleration record (PEER .AT2, or text columns) and prints its n
 time step, duration, peak ground acceleration and its linear elastic response spectrum:
 pseudo-spectral acceleration Sa [g], pseudo-velocity Sv = Sa/w [m/s] and displacement
 Sd = Sa/w^2 [m], computed with the exact piecewise-linear recurrence of Nigam & Jennings (1969).
-Default periods: 40 log-spaced from 0.02 s to 10 s.
+Default periods: 40 log-spaced from 0.02 s to 10 s. --scale or --pga scale the record first, as
+a model's excitation "scale" does.
 
 options)";
 
@@ -73,12 +75,12 @@ Spectrum response_spectrum(const model::GroundMotion& motion, const std::vector<
 }
 
 std::string format_spectrum(const model::GroundMotion& motion, const Spectrum& spectrum,
-                            double damping_ratio) {
+                            double damping_ratio, double factor) {
   std::string text = fmt::format(
-      "record     {}\npoints     {}\ndt         {:g} s\nduration   {:g} s\n"
+      "record     {}\npoints     {}\ndt         {:g} s\nduration   {:g} s\nscaled by  {:.6g}\n"
       "PGA        {:.4f} g ({:.4g} m/s^2)\ndamping    {:g} %\n\n"
       "{:>10}  {:>10}  {:>11}  {:>11}\n",
-      motion.name, motion.acceleration.size(), motion.time_step, motion.duration(),
+      motion.name, motion.acceleration.size(), motion.time_step, motion.duration(), factor,
       motion.peak() / kStandardGravity, motion.peak(), 100.0 * damping_ratio, "period [s]",
       "Sa [g]", "Sv [m/s]", "Sd [m]");
   for (std::size_t k = 0; k < spectrum.periods.size(); ++k)
@@ -88,10 +90,11 @@ std::string format_spectrum(const model::GroundMotion& motion, const Spectrum& s
 }
 
 io::Document spectrum_document(const std::string& path, const model::GroundMotion& motion,
-                               const Spectrum& spectrum, double damping_ratio) {
+                               const Spectrum& spectrum, double damping_ratio, double factor) {
   io::Document document;
   document.set("record", motion.name)
       .set("path", path)
+      .set("scale_factor", factor)
       .set("npts", static_cast<long>(motion.acceleration.size()))
       .set("dt", motion.time_step)
       .set("duration", motion.duration())
@@ -110,6 +113,7 @@ struct SpectrumRequest {
   std::string format = "auto", units = "g", periods_text, csv;
   int column = 1;
   double damping_ratio = 0.05;
+  std::optional<double> scale, pga;  // factor; target peak [g]
 };
 
 po::options_description spectrum_options(SpectrumRequest& r) {
@@ -123,6 +127,8 @@ po::options_description spectrum_options(SpectrumRequest& r) {
       "time-column", "columns file: the first column is time (gives dt)")(
       "units", po::value(&r.units)->default_value(r.units),
       "of the values in the file: g | m/s2 | cm/s2 (AT2 files are in g)")(
+      "scale", po::value<double>(), "multiply the record by this factor")(
+      "pga", po::value<double>(), "scale the record to this peak acceleration [g]")(
       "damping", po::value(&r.damping_ratio)->default_value(r.damping_ratio, "0.05"),
       "damping ratio of the oscillators")(
       "periods", po::value(&r.periods_text),
@@ -139,7 +145,20 @@ std::string request_error(const SpectrumRequest& r) {
   if (r.column < 1) return "--column must be 1 or more";
   if (r.format != "auto" && r.format != "at2" && r.format != "columns")
     return fmt::format("unknown --format '{}' (known: at2, columns, auto)", r.format);
+  for (const auto& [value, option] : {std::pair{r.scale, "--scale"}, std::pair{r.pga, "--pga"}})
+    if (value && (!(*value > 0.0) || !std::isfinite(*value)))
+      return fmt::format("{} must be a positive number", option);
+  if (r.scale && r.pga) return "give --scale or --pga, not both";
   return {};
+}
+
+// The factor --scale or --pga asks for (1 without them); the record must not be all zeros.
+double scale_factor(const SpectrumRequest& r, const model::GroundMotion& motion) {
+  if (r.scale) return *r.scale;
+  if (!r.pga) return 1.0;
+  if (!(motion.peak() > 0.0))
+    throw InputError(r.record, "", "the record is all zeros: it cannot be scaled to --pga");
+  return model::scale_to_peak(motion, *r.pga * kStandardGravity);
 }
 
 // How to read the record; throws std::invalid_argument on unknown units.
@@ -169,6 +188,8 @@ int spectrum_command(const Arguments& arguments) {
     std::cerr << "pound spectrum: " << what << "\n";
     return 1;
   };
+  if (vm.count("scale")) request.scale = vm["scale"].as<double>();
+  if (vm.count("pga")) request.pga = vm["pga"].as<double>();
   if (const std::string error = request_error(request); !error.empty()) return usage_error(error);
   io::RecordFormat format;
   std::vector<double> periods = model::default_spectrum_periods();
@@ -182,18 +203,20 @@ int spectrum_command(const Arguments& arguments) {
   if (!request.csv.empty())
     io::check_outputs_apart({{request.record, "the record"}}, {{request.csv, "--csv"}});
   // Read in m/s^2 (the spectrum's SI units); Sa is printed in g.
-  const model::GroundMotion motion =
-      io::read_ground_motion(request.record, format, kStandardGravity);
+  model::GroundMotion motion = io::read_ground_motion(request.record, format, kStandardGravity);
+  const double factor = scale_factor(request, motion);
+  model::scale(motion, factor);
   const Spectrum spectrum = response_spectrum(motion, periods, request.damping_ratio);
   if (!request.csv.empty())
     io::write_csv_atomic(request.csv,
                          Table{{"period", "sa_g", "sv_m_per_s", "sd_m"},
                                {spectrum.periods, spectrum.sa_g, spectrum.sv, spectrum.sd}});
   if (vm.count("json"))
-    std::cout << spectrum_document(request.record, motion, spectrum, request.damping_ratio).dump()
-              << "\n";
+    std::cout
+        << spectrum_document(request.record, motion, spectrum, request.damping_ratio, factor).dump()
+        << "\n";
   else
-    std::cout << format_spectrum(motion, spectrum, request.damping_ratio);
+    std::cout << format_spectrum(motion, spectrum, request.damping_ratio, factor);
   return 0;
 }
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <boost/uuid/detail/sha1.hpp>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -656,8 +657,25 @@ std::string_view without_markers(std::string_view text) {
 }  // namespace
 
 model::GroundMotion read_ground_motion(const std::string& path, const RecordFormat& format,
-                                       double g_in_model_units) {
-  return parse_ground_motion(read_text_file(path, kMaxRecordBytes), path, format, g_in_model_units);
+                                       double g_in_model_units, RecordSource* source) {
+  const std::string text = read_text_file(path, kMaxRecordBytes);
+  model::GroundMotion motion = parse_ground_motion(text, path, format, g_in_model_units);
+  if (source) {
+    const std::vector<Line> lines = split_lines(without_markers(text));
+    source->format = reads_as_at2(path, format.format, lines) ? "at2" : "columns";
+    source->sha1 = sha1_hex(text);
+  }
+  return motion;
+}
+
+std::string sha1_hex(std::string_view bytes) {
+  boost::uuids::detail::sha1 hash;
+  hash.process_bytes(bytes.data(), bytes.size());
+  boost::uuids::detail::sha1::digest_type digest;
+  hash.get_digest(digest);
+  std::string hex;
+  for (unsigned int word : digest) hex += fmt::format("{:08x}", word);
+  return hex;
 }
 
 model::GroundMotion parse_ground_motion(const std::string& text, const std::string& path,

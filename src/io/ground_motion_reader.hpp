@@ -11,6 +11,7 @@
 // what was expected.
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "model/ground_motion.hpp"
 
@@ -30,11 +31,21 @@ struct RecordFormat {
   AccelerationUnit units = AccelerationUnit::g;  // of the values in the file; AT2 files are in g
 };
 
+// What a record was read from, for a run to be traced to it: the format read ("at2" or
+// "columns", after "auto") and the SHA-1 of the file's bytes (as `sha1sum` prints it).
+struct RecordSource {
+  std::string format;
+  std::string sha1;
+};
+
 // Reads a record and converts it to model units: `g_in_model_units` is the acceleration of
 // gravity in the model's units (9.80665 for m and s). Throws pound::InputError(file, "line N",
-// what) for anything wrong in the file.
+// what) for anything wrong in the file. `source`, when given, is filled.
 model::GroundMotion read_ground_motion(const std::string& path, const RecordFormat& format,
-                                       double g_in_model_units);
+                                       double g_in_model_units, RecordSource* source = nullptr);
+
+// The SHA-1 of `bytes` in lowercase hex.
+std::string sha1_hex(std::string_view bytes);
 
 // Same from the file's text; `path` names it in messages and in the motion, and its extension
 // counts for "auto" as the file's would.

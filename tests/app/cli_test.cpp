@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "io/ground_motion_reader.hpp"
 #include "links/restitution.hpp"
 #include "support/process.hpp"
 
@@ -378,6 +379,103 @@ TEST_F(Cli, CheckWarnsAboutMeaninglessSettingsOnly) {
   std::string ran;
   for (const json& w : summary["warnings"]) ran += w["warning"].get<std::string>() + "\n";
   EXPECT_TRUE(contains(ran, all)) << ran;
+}
+
+// ---- Issue 16 item 6: a run says which records it applied, how scaled ----
+
+// A columns file of the bundled record's first 500 values in m/s^2 (0.02 s), time in column 1.
+std::string columns_record(const fs::path& file) {
+  std::ifstream at2(fs::path(POUND_SOURCE_DIR) / "ground_motions" / "synthetic_firm_01.AT2");
+  std::string line, text = "# time [s], acceleration [m/s2]\n";
+  for (int k = 0; k < 4; ++k) std::getline(at2, line);  // the AT2 header
+  int sample = 0;
+  for (double value; sample < 500 && at2 >> value; ++sample)
+    text += fmt::format("{}, {}\n", 0.01 * sample, 9.80665 * value);
+  std::ofstream(file) << text;
+  return text;
+}
+
+TEST_F(Cli, SummaryRecordsEachExcitationsFileHashScalingAndPga) {
+  const fs::path record = path("motion.txt");
+  const std::string bytes = columns_record(record);
+  const Outcome outcome =
+      pound({"run", POUND_SOURCE_DIR "/models/two_sdof_girders.json", "--motion", record.string(),
+             "--time-column", "--units", "m/s2", "--pga", "0.25", "--out", path("out").string()});
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const json summary = json::parse(read_text(path("out") / "summary.json"));
+  ASSERT_EQ(summary["excitations"].size(), 1u);
+  const json& e = summary["excitations"][0];
+  EXPECT_EQ(e["record"], record.string());
+  EXPECT_EQ(e["sha1"], pound::io::sha1_hex(bytes));
+  EXPECT_EQ(e["format"], "columns");
+  EXPECT_EQ(e["units"], "m/s2");
+  EXPECT_EQ(e["points"], 500);
+  EXPECT_NEAR(e["dt"].get<double>(), 0.01, 1e-15);
+  EXPECT_EQ(e["scaling"], json({{"target_pga_g", 0.25}}));
+  EXPECT_NEAR(e["pga_g"].get<double>(), 0.25, 1e-15);
+  EXPECT_EQ(e["replaced_by"], "--motion");
+  // The model's title names its own record: what ran is said instead, the title kept aside.
+  EXPECT_EQ(summary["title"], "two_sdof_girders under motion.txt (record replaced by --motion)");
+  EXPECT_EQ(summary["model_title"], json::parse(read_text(fs::path(POUND_SOURCE_DIR) / "models" /
+                                                          "two_sdof_girders.json"))["title"]);
+  EXPECT_TRUE(contains(outcome.out, "record " + record.string() + " (sha1 " +
+                                        pound::io::sha1_hex(bytes).substr(0, 12) +
+                                        "): scale factor"))
+      << outcome.out;
+}
+
+TEST_F(Cli, ModelRunsRecordTheirOwnExcitationsAsTheModelScalesThem) {
+  const Outcome outcome = pound({"run", POUND_SOURCE_DIR "/models/three_span_bridge.json", "--out",
+                                 path("out").string(), "--max-steps", "5"});
+  const json summary = json::parse(read_text(path("out") / "summary.json"));
+  const json& e = summary["excitations"][0];
+  EXPECT_EQ(e["format"], "at2");
+  EXPECT_EQ(e["scaling"], json({{"target_pga_g", 0.4}}));
+  EXPECT_NEAR(e["pga_g"].get<double>(), 0.4, 1e-15);
+  EXPECT_FALSE(e.contains("replaced_by"));
+  EXPECT_FALSE(summary.contains("model_title"));
+  EXPECT_EQ(e["sha1"], pound::io::sha1_hex(read_text(fs::path(POUND_SOURCE_DIR) / "ground_motions" /
+                                                     "synthetic_firm_01.AT2")));
+}
+
+TEST_F(Cli, MotionOptionsNeedMotionAndSensibleValues) {
+  const std::string record = POUND_SOURCE_DIR "/ground_motions/synthetic_firm_01.AT2";
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--pga", "0.3"}, "--pga says how to read the record of --motion"},
+      {{"--units", "m/s2"}, "--units says how to read the record of --motion"},
+      {{"--motion", record, "--pga", "0"}, "--pga must be a positive number"},
+      {{"--motion", record, "--scale", "-2"}, "--scale must be a positive number"},
+      {{"--motion", record, "--scale", "nan"}, "--scale must be a finite number"},
+      {{"--motion", record, "--scale", "2", "--pga", "0.3"}, "give --scale or --pga, not both"},
+      {{"--motion", record, "--units", "furlongs"}, "--units: unknown acceleration unit"},
+      {{"--motion", record, "--column", "0"}, "--column must be 1 or more"},
+  };
+  for (const auto& [options, message] : cases) {
+    std::vector<std::string> arguments = {"run", kRodModel, "--out", path("out").string()};
+    arguments.insert(arguments.end(), options.begin(), options.end());
+    const Outcome outcome = pound(arguments);
+    EXPECT_EQ(outcome.exit_code, 1) << outcome.err;
+    EXPECT_TRUE(contains(outcome.err, message)) << outcome.err;
+    EXPECT_FALSE(fs::exists(path("out")));
+  }
+}
+
+TEST_F(Cli, SpectrumScalesTheRecordAsAskedAndSaysBy) {
+  const std::string record = POUND_SOURCE_DIR "/ground_motions/synthetic_firm_01.AT2";
+  const Outcome scaled = pound({"spectrum", record, "--pga", "0.25", "--periods", "0,1", "--json"});
+  ASSERT_EQ(scaled.exit_code, 0) << scaled.err;
+  const Outcome doubled = pound({"spectrum", record, "--scale", "2", "--periods", "0,1", "--json"});
+  const Outcome plain = pound({"spectrum", record, "--periods", "0,1", "--json"});
+  const json a = json::parse(scaled.out), b = json::parse(doubled.out), c = json::parse(plain.out);
+  EXPECT_NEAR(a["pga_g"].get<double>(), 0.25, 1e-15);
+  EXPECT_NEAR(a["sa_g"][0].get<double>(), 0.25, 1e-15);  // period 0: the PGA
+  EXPECT_EQ(b["scale_factor"], 2.0);
+  EXPECT_EQ(b["sa_g"][1].get<double>(), 2.0 * c["sa_g"][1].get<double>());
+  EXPECT_NEAR(a["sa_g"][1].get<double>() / c["sa_g"][1].get<double>(),
+              a["scale_factor"].get<double>(), 1e-14);
+  const Outcome both = pound({"spectrum", record, "--pga", "0.25", "--scale", "2"});
+  EXPECT_EQ(both.exit_code, 1);
+  EXPECT_TRUE(contains(both.err, "give --scale or --pga, not both")) << both.err;
 }
 
 // ---- Issue 14: every input ends in a clear answer, and no output overwrites an input ----

@@ -171,6 +171,27 @@ TEST(GroundMotionReader, AutoFormatAndUnitConversion) {
   EXPECT_NEAR(kobe_si.peak(), 0.841 * 9.80665, 0.0005 * 9.80665);
 }
 
+// FIPS 180 test vectors: a record's hash is what `sha1sum` prints for it.
+TEST(RecordHash, Sha1OfTheStandardTestVectors) {
+  EXPECT_EQ(sha1_hex(""), "da39a3ee5e6b4b0d3255bfef95601890afd80709");
+  EXPECT_EQ(sha1_hex("abc"), "a9993e364706816aba3e25717850c26c9cd0d89d");
+  EXPECT_EQ(sha1_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
+            "84983e441c3bd26ebaae4aa1f95129e5e54670f1");
+  EXPECT_EQ(sha1_hex(std::string(1000000, 'a')), "34aa973cd4c4daa4f61eeb2bdbad27316534016f");
+}
+
+TEST(RecordHash, ReadingARecordGivesItsFormatAndHash) {
+  const std::string at2 =
+      (std::filesystem::path(POUND_SOURCE_DIR) / "ground_motions" / "synthetic_firm_01.AT2")
+          .string();
+  RecordSource source;
+  (void)read_ground_motion(at2, {}, 9.80665, &source);
+  EXPECT_EQ(source.format, "at2");
+  std::ifstream file(at2, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(source.sha1, sha1_hex(bytes));
+}
+
 TEST(GroundMotionReader, AccelerationUnitNames) {
   EXPECT_EQ(parse_acceleration_unit("cm/s2"), AccelerationUnit::cm_per_s2);
   EXPECT_EQ(parse_acceleration_unit("m/s2"), AccelerationUnit::m_per_s2);
