@@ -6,7 +6,7 @@
 namespace pound::results {
 namespace {
 
-const std::array<BatchQuantity, 9> kQuantities = {{
+const std::array<BatchQuantity, 11> kQuantities = {{
     {"impacts", &CaseSummary::impacts,
      "engagements of the contact links (every law but springs, restrainers and hooks), summed "
      "over the links [-]",
@@ -36,6 +36,14 @@ const std::array<BatchQuantity, 9> kQuantities = {{
     {"energy_balance_error", &CaseSummary::energy_balance_error,
      "worst energy balance error over the run, as a fraction of the largest energy term [-]",
      "energy balance error [-]", false},
+    {"max_top_acceleration", &CaseSummary::max_top_acceleration,
+     "largest absolute acceleration along x at the top of a storey or pier monitor (a floor, a "
+     "pier top) [model acceleration units]",
+     "peak floor / pier top acceleration [model acceleration units]"},
+    {"max_deck_acceleration", &CaseSummary::max_deck_acceleration,
+     "largest absolute acceleration along x of a girder end at a joint monitor [model "
+     "acceleration units]",
+     "peak deck acceleration [model acceleration units]"},
 }};
 
 }  // namespace

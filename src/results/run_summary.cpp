@@ -321,6 +321,8 @@ void summarise_case(const RunSummary& run, CaseSummary& c) {
     c.max_joint_opening = std::max(c.max_joint_opening.value_or(0.0), joint.peak.peak_opening);
     c.max_seat_movement =
         std::max(c.max_seat_movement.value_or(0.0), joint.peak.peak_seat_movement);
+    c.max_deck_acceleration =
+        std::max(c.max_deck_acceleration.value_or(0.0), joint.peak.peak_girder_acceleration);
     if (const std::optional<double> margin = joint.margin()) {
       c.min_unseating_margin = std::min(
           c.min_unseating_margin.value_or(std::numeric_limits<double>::infinity()), *margin);
@@ -329,6 +331,8 @@ void summarise_case(const RunSummary& run, CaseSummary& c) {
   }
   for (const DriftResult& drift : run.drifts) {
     c.max_drift_ratio = std::max(c.max_drift_ratio.value_or(0.0), drift.ratio());
+    c.max_top_acceleration =
+        std::max(c.max_top_acceleration.value_or(0.0), drift.peak.peak_acceleration);
     c.max_residual_drift_ratio =
         std::max(c.max_residual_drift_ratio.value_or(0.0), std::abs(drift.residual_ratio()));
     if (const std::optional<double> ductility = drift.ductility())

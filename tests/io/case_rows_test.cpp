@@ -62,7 +62,8 @@ TEST(CaseRows, HeaderKeepsItsColumnsAndTheirOrder) {
             "name,model,record,scale,status,reason,pga_g,intensity,end_time,steps,impacts,"
             "max_pounding_force,max_pounding_link,max_restrainer_force,max_restrainer_link,"
             "max_joint_opening,max_seat_movement,min_unseating_margin,unseated,max_drift_ratio,"
-            "max_ductility,max_residual_drift_ratio,energy_balance_error,run_time_s");
+            "max_ductility,max_residual_drift_ratio,energy_balance_error,max_top_acceleration,"
+            "max_deck_acceleration,run_time_s");
 }
 
 // Every quantity of the table is a column, and reads back into its own member.

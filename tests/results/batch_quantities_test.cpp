@@ -13,10 +13,11 @@ namespace {
 TEST(BatchQuantities, AreTheResponseColumnsInTheirOrder) {
   std::vector<std::string> names;
   for (const BatchQuantity& q : batch_quantities()) names.emplace_back(q.name);
-  EXPECT_EQ(names, (std::vector<std::string>{
-                       "impacts", "max_pounding_force", "max_restrainer_force", "max_joint_opening",
-                       "max_seat_movement", "max_drift_ratio", "max_ductility",
-                       "max_residual_drift_ratio", "energy_balance_error"}));
+  EXPECT_EQ(names,
+            (std::vector<std::string>{
+                "impacts", "max_pounding_force", "max_restrainer_force", "max_joint_opening",
+                "max_seat_movement", "max_drift_ratio", "max_ductility", "max_residual_drift_ratio",
+                "energy_balance_error", "max_top_acceleration", "max_deck_acceleration"}));
 }
 
 TEST(BatchQuantities, EachReadsItsOwnMemberAndSaysWhatItIsWithUnits) {

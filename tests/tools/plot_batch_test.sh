@@ -21,7 +21,8 @@ status=0
 expected=()
 header=$(head -n 1 "$batch/batch_summary.csv")
 for quantity in impacts max_pounding_force max_restrainer_force max_joint_opening \
-                max_seat_movement max_drift_ratio max_ductility max_residual_drift_ratio; do
+                max_seat_movement max_drift_ratio max_ductility max_residual_drift_ratio \
+                max_top_acceleration max_deck_acceleration; do
   # a figure for every quantity some case has a value of (an elastic pier has no ductility)
   "$python" -c 'import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
@@ -39,8 +40,8 @@ mkdir "$only"
 cp "$batch/batch_stats.json" "$only/"
 {
   cat "$batch/batch_summary.csv"
-  echo 'extra/failed/x1,three_span_bridge,synthetic_firm_01,1,failed,"stopped: ""diverged"", at t = 3",0.3,0.3,3,,,,,,,,,,,,,,,'
-  echo 'extra/missing/x1,three_span_bridge,missing,1,input_error,"cannot read record, no such file",,,,,,,,,,,,,,,,,,'
+  echo 'extra/failed/x1,three_span_bridge,synthetic_firm_01,1,failed,"stopped: ""diverged"", at t = 3",0.3,0.3,3,,,,,,,,,,,,,,,,,'
+  echo 'extra/missing/x1,three_span_bridge,missing,1,input_error,"cannot read record, no such file",,,,,,,,,,,,,,,,,,,,'
 } >"$only/batch_summary.csv"
 interpreter=$python
 command -v python3 >/dev/null 2>&1 && interpreter=python3
