@@ -72,7 +72,7 @@ std::string monitor_lines(const results::RunSummary& run) {
     const std::optional<double> demand = drift.elastic_demand_ratio();
     text += fmt::format(
         "  {} {}: peak drift {:.4g} ({:.3f} % of {:.4g}), residual {:.4g}{}{}, {} acceleration "
-        "{:.4g} (absolute)\n",
+        "{:.4g} (absolute){}{}\n",
         m.kind == builder::DriftKind::pier ? "pier" : "storey", m.id, drift.peak.peak_drift,
         100.0 * drift.peak.peak_drift / m.height, m.height, drift.peak.residual_drift,
         ductility ? fmt::format(", ductility {:.2f}", *ductility)
@@ -81,7 +81,13 @@ std::string monitor_lines(const results::RunSummary& run) {
         drift.curvature_ductility
             ? fmt::format(", curvature ductility {:.2f}", *drift.curvature_ductility)
             : std::string(),
-        m.kind == builder::DriftKind::pier ? "top" : "floor", drift.peak.peak_acceleration);
+        m.kind == builder::DriftKind::pier ? "top" : "floor", drift.peak.peak_acceleration,
+        drift.peak_shear ? fmt::format(", {} {:.4g}",
+                                       m.kind == builder::DriftKind::pier ? "base shear" : "shear",
+                                       *drift.peak_shear)
+                         : std::string(),
+        drift.peak_base_moment ? fmt::format(", base moment {:.4g}", *drift.peak_base_moment)
+                               : std::string());
   }
   return text;
 }

@@ -149,6 +149,7 @@ void add_pier(const Bridge& bridge, int pier, ModelSpec& out) {
                            bridge.deck,
                            yield_drift,
                            hinge.has_value()};
+  monitor.base_element = fmt::format("{}.p{}.e1", spec.id, pier);
   if (hinge && spec.pier_hinge->plastic_hinge_length) {
     monitor.hinge = hinge_id(spec, pier);
     monitor.yield_curvature = spec.pier_hinge->yield_curvature;

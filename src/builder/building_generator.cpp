@@ -185,8 +185,14 @@ void add_storey(const Building& building, std::size_t s, const std::vector<doubl
     }
   }
   add_leaning_column(building, s, out);
-  out.drift_monitors.push_back({storey_id(building, s), DriftKind::storey, building.name,
-                                chain.front(), floor, storey.height, yield_drift});
+  DriftMonitorSpec monitor{
+      storey_id(building, s), DriftKind::storey, building.name, chain.front(), floor,
+      storey.height,          yield_drift};
+  if (storey.law)
+    monitor.shear_link = storey_id(building, s);
+  else
+    monitor.base_element = fmt::format("{}.c0", storey_id(building, s));
+  out.drift_monitors.push_back(monitor);
 }
 
 void add_building(const Building& building, const std::vector<double>& contacts, ModelSpec& out) {

@@ -13,7 +13,7 @@ std::vector<Index> every(std::size_t count) {
 
 ResolvedRecorder resolve_recorder(const Resolver& resolver, const RecorderSpec& recorder,
                                   std::size_t index, std::size_t link_count) {
-  const bool nodes = recorder.type != RecorderKind::link;
+  const bool nodes = recorder.type == RecorderKind::node || recorder.type == RecorderKind::spectrum;
   ResolvedRecorder resolved{recorder.type,
                             {},
                             recorder.file,
@@ -22,16 +22,31 @@ ResolvedRecorder resolve_recorder(const Resolver& resolver, const RecorderSpec& 
                             recorder.envelope,
                             recorder.damping_ratios,
                             recorder.periods};
+  // Under moving supports u is measured from their quasi-static motion R u_s, which deforms the
+  // members too: K_e u_e alone would miss it.
+  if (recorder.type == RecorderKind::element)
+    for (std::size_t k = 0; k < resolver.spec().excitations.size(); ++k)
+      if (!resolver.spec().excitations[k].supports.empty())
+        resolver.fail(fmt::format("/recorders/{}/type", index),
+                      fmt::format("element forces under moving supports (/excitations/{}/supports) "
+                                  "are not available yet: they would miss the members' "
+                                  "deformation by the supports' quasi-static motion (record node "
+                                  "displacements, or links, instead)",
+                                  k));
   if (recorder.type == RecorderKind::spectrum && resolved.periods.empty()) {
     const double second = resolver.spec().units.second();
     for (double period : model::default_spectrum_periods())
       resolved.periods.push_back(period * second);
   }
   for (std::size_t i = 0; i < recorder.ids.size(); ++i) {
-    const std::string path =
-        fmt::format("/recorders/{}/{}/{}", index, nodes ? "nodes" : "links", i);
-    resolved.items.push_back(nodes ? resolver.node(recorder.ids[i], path)
-                                   : resolver.link(recorder.ids[i], path));
+    const std::string& id = recorder.ids[i];
+    if (recorder.type == RecorderKind::element)
+      resolved.items.push_back(
+          resolver.element(id, fmt::format("/recorders/{}/elements/{}", index, i)));
+    else if (nodes)
+      resolved.items.push_back(resolver.node(id, fmt::format("/recorders/{}/nodes/{}", index, i)));
+    else
+      resolved.items.push_back(resolver.link(id, fmt::format("/recorders/{}/links/{}", index, i)));
   }
   if (!nodes && recorder.ids.empty()) resolved.items = every(link_count);
   return resolved;
@@ -74,6 +89,9 @@ std::vector<DriftMonitor> resolve_drift_monitors(const Resolver& resolver) {
     if (m.hinge)
       monitor.curvature = DriftMonitor::Curvature{resolver.link(*m.hinge, path + "/hinge"),
                                                   *m.yield_curvature, *m.plastic_hinge_length};
+    if (m.base_element)
+      monitor.base_element = resolver.element(*m.base_element, path + "/base_element");
+    if (m.shear_link) monitor.shear_link = resolver.link(*m.shear_link, path + "/shear_link");
     monitors.push_back(monitor);
   }
   return monitors;

@@ -36,6 +36,8 @@ struct DriftMonitor {
     double yield_curvature = 0.0, plastic_hinge_length = 0.0;
   };
   std::optional<Curvature> curvature;
+  // What carries the shear (DriftMonitorSpec): an element (end i at the bottom) or a link.
+  std::optional<Index> base_element, shear_link;
 };
 
 struct JointMonitor {

@@ -17,8 +17,9 @@ Resolver::Resolver(const ModelSpec& user_spec, const ModelSpec& spec)
   materials_ =
       index_ids(spec.materials, "material",
                 origin_of(user_spec.materials.size(), "materials", spec.generated_from.materials));
-  index_ids(spec.elements, "element",
-            origin_of(user_spec.elements.size(), "elements", spec.generated_from.elements));
+  elements_ =
+      index_ids(spec.elements, "element",
+                origin_of(user_spec.elements.size(), "elements", spec.generated_from.elements));
   links_ = index_ids(spec.links, "link",
                      origin_of(user_spec.links.size(), "links", spec.generated_from.links));
 }
@@ -26,6 +27,12 @@ Resolver::Resolver(const ModelSpec& user_spec, const ModelSpec& spec)
 Index Resolver::node(const std::string& id, const std::string& path) const {
   auto found = nodes_.find(id);
   if (found == nodes_.end()) fail(path, fmt::format("node '{}' does not exist", id));
+  return found->second;
+}
+
+Index Resolver::element(const std::string& id, const std::string& path) const {
+  auto found = elements_.find(id);
+  if (found == elements_.end()) fail(path, fmt::format("element '{}' does not exist", id));
   return found->second;
 }
 

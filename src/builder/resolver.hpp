@@ -33,8 +33,9 @@ class Resolver {
     throw InputError(spec_.source, path, what);
   }
 
-  // Index of node / link `id`, named at `path` (an error when there is none).
+  // Index of node / element / link `id`, named at `path` (an error when there is none).
   Index node(const std::string& id, const std::string& path) const;
+  Index element(const std::string& id, const std::string& path) const;
   Index link(const std::string& id, const std::string& path) const;
   const std::map<std::string, Index>& node_index() const { return nodes_; }
   const std::map<std::string, Index>& link_index() const { return links_; }
@@ -57,7 +58,7 @@ class Resolver {
  private:
   const ModelSpec& user_spec_;
   const ModelSpec& spec_;
-  std::map<std::string, Index> nodes_, materials_, links_;
+  std::map<std::string, Index> nodes_, materials_, elements_, links_;
 };
 
 }  // namespace pound::builder

@@ -322,6 +322,9 @@ struct DriftMonitorSpec {
   std::optional<std::string> hinge;
   std::optional<double> yield_curvature;       // [1/L]
   std::optional<double> plastic_hinge_length;  // [L]
+  // What carries its shear: the member's lowest element (its end i forces: base shear V_i and,
+  // for a beam, base moment M_i), or a link whose force is the storey shear.
+  std::optional<std::string> base_element, shear_link;
 };
 struct JointMonitorSpec {
   std::string id;
@@ -354,8 +357,9 @@ struct AnalysisSpec {
 
 // What a run writes of its steps: "link" records force and penetration of the named links (all
 // links when `ids` is empty); "node" records displacement, velocity, acceleration of nodes;
-// "spectrum" the response spectra of nodes' absolute accelerations (floor spectra).
-enum class RecorderKind { link, node, spectrum };
+// "spectrum" the response spectra of nodes' absolute accelerations (floor spectra); "element"
+// the end forces of elements (beams N, V, M at each end; trusses N).
+enum class RecorderKind { link, node, spectrum, element };
 // A node recorder's accelerations: relative to the ground (what the equations of motion carry),
 // absolute (what contents and non-structural parts feel), or both.
 enum class AccelerationFrame { both, relative, absolute };

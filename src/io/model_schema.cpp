@@ -831,6 +831,16 @@ const Fields<DriftMonitorSpec>& drift_monitor_fields() {
                "φ_y of the hinge's section, with hinge [1/L]"),
       optional("plastic_hinge_length", &DriftMonitorSpec::plastic_hinge_length, Number<>{positive},
                "L_p, with hinge [L]"),
+      optional("base_element", &DriftMonitorSpec::base_element, Text{true},
+               "id of the member's lowest element, end i at the bottom: the summary's peak "
+               "`shear` |V_i| and, for a beam, `base_moment` |M_i|"),
+      optional("shear_link", &DriftMonitorSpec::shear_link, Text{true},
+               "id of a link whose force is the storey shear (a yielding storey): the summary's "
+               "peak `shear`"),
+      rule<DriftMonitorSpec>([](JsonObject& object, DriftMonitorSpec& monitor, Context&) {
+        if (monitor.base_element && monitor.shear_link)
+          object.at("shear_link").fail("give 'base_element' or 'shear_link', not both");
+      }),
       rule<DriftMonitorSpec>([](JsonObject& object, DriftMonitorSpec& monitor, Context&) {
         const bool all = monitor.hinge && monitor.yield_curvature && monitor.plastic_hinge_length;
         const bool none =
@@ -1157,7 +1167,7 @@ Field<RecorderSpec> recorder_file() {
       [](JsonObject& object, RecorderSpec& recorder, Context& context) {
         const std::optional<JsonValue> file = object.find("file");
         const JsonValue& where = file ? *file : object.value();
-        static const char* kType[] = {"link", "node", "spectrum"};
+        static const char* kType[] = {"link", "node", "spectrum", "element"};
         recorder.file =
             file ? file->as<std::string>()
                  : fmt::format("{}_{}.csv", kType[static_cast<int>(recorder.type)], context.index);
@@ -1194,7 +1204,7 @@ const Fields<RecorderSpec>& recorder_fields() {
     return recorder.type != RecorderKind::spectrum;
   };
   static const auto takes_nodes = [](const RecorderSpec& recorder) {
-    return recorder.type != RecorderKind::link;
+    return recorder.type == RecorderKind::node || recorder.type == RecorderKind::spectrum;
   };
   static const auto is_spectrum = [](const RecorderSpec& recorder) {
     return recorder.type == RecorderKind::spectrum;
@@ -1203,14 +1213,19 @@ const Fields<RecorderSpec>& recorder_fields() {
       required("type", &RecorderSpec::type,
                Choice<RecorderKind>{{{"link", RecorderKind::link},
                                      {"node", RecorderKind::node},
+                                     {"element", RecorderKind::element},
                                      {"spectrum", RecorderKind::spectrum}}},
                "link: force and penetration; node: displacement, velocity, acceleration; "
-               "spectrum: response spectra of the nodes' absolute accelerations (floor spectra)"),
+               "element: end forces in the element's axes; spectrum: response spectra of the "
+               "nodes' absolute accelerations (floor spectra)"),
       optional("links", &RecorderSpec::ids, Names{.what = "link"}, "the links recorded")
           .default_text("every link")
           .when(records_links, "link recorders"),
       required("nodes", &RecorderSpec::ids, Names{}, "the nodes recorded")
           .when(takes_nodes, "node and spectrum recorders"),
+      required("elements", &RecorderSpec::ids, Names{.what = "element"}, "the elements recorded")
+          .when([](const RecorderSpec& r) { return r.type == RecorderKind::element; },
+                "element recorders"),
       optional(
           "accelerations", &RecorderSpec::accelerations,
           Choice<builder::AccelerationFrame>{{{"both", builder::AccelerationFrame::both},
@@ -1224,7 +1239,7 @@ const Fields<RecorderSpec>& recorder_fields() {
       optional("envelope", &RecorderSpec::envelope, Flag{},
                "instead of the history, a row per quantity: `max`, `time_of_max`, `min`, "
                "`time_of_min`, `abs_max` over every step (label column `quantity`)")
-          .when(records_histories, "link and node recorders"),
+          .when(records_histories, "link, node and element recorders"),
       rule<RecorderSpec>([](JsonObject& object, RecorderSpec& recorder, Context&) {
         const std::optional<JsonValue> every = object.find("every");
         const std::optional<JsonValue> interval = object.find("interval");
@@ -1235,11 +1250,11 @@ const Fields<RecorderSpec>& recorder_fields() {
       }),
       optional("every", &RecorderSpec::every, Number<int>{at_least(1)},
                "keep every k-th step of the history (the start is step 0)")
-          .when(records_histories, "link and node recorders"),
+          .when(records_histories, "link, node and element recorders"),
       optional("interval", &RecorderSpec::interval, Number<>{positive},
                "keep the first step at or after each multiple of this time [T] (uniform output "
                "of an adaptive run)")
-          .when(records_histories, "link and node recorders"),
+          .when(records_histories, "link, node and element recorders"),
       optional("damping", &RecorderSpec::damping_ratios, DampingRatios{},
                "the oscillators' damping ratios")
           .default_text("[0.05]")

@@ -47,6 +47,8 @@ Document drift_document(const results::DriftResult& drift) {
   if (const std::optional<double> demand = drift.elastic_demand_ratio())
     doc.set("elastic_demand_ratio", *demand);
   if (drift.curvature_ductility) doc.set("curvature_ductility", *drift.curvature_ductility);
+  if (drift.peak_shear) doc.set("peak_shear", *drift.peak_shear);
+  if (drift.peak_base_moment) doc.set("peak_base_moment", *drift.peak_base_moment);
   return doc;
 }
 

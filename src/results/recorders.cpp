@@ -66,6 +66,26 @@ void NodeQuantities::take(const integrators::State& state, double* values) const
     }
 }
 
+ElementQuantities::ElementQuantities(std::vector<std::shared_ptr<const model::Element>> elements,
+                                     std::vector<std::vector<Index>> equations)
+    : elements_(std::move(elements)), equations_(std::move(equations)) {
+  for (const auto& element : elements_)
+    for (std::string_view force : element->end_force_names())
+      names_.push_back(element->id() + "." + std::string(force));
+}
+
+void ElementQuantities::take(const integrators::State& state, double* values) const {
+  for (std::size_t k = 0; k < elements_.size(); ++k) {
+    const std::vector<Index>& equations = equations_[k];
+    Vector displacement(static_cast<Index>(equations.size()));
+    for (std::size_t d = 0; d < equations.size(); ++d)
+      displacement[static_cast<Index>(d)] =
+          equations[d] >= 0 ? state.displacement[equations[d]] : 0.0;
+    const Vector forces = elements_[k]->end_forces(displacement);
+    for (Index f = 0; f < forces.size(); ++f) *values++ = forces[f];
+  }
+}
+
 HistoryRecorder::HistoryRecorder(std::string file, std::unique_ptr<Quantities> quantities,
                                  builder::OutputSampling sampling)
     : file_(std::move(file)),

@@ -1,5 +1,7 @@
 #pragma once
 // Recorders: what a run keeps of each accepted step, only for what the user asked for.
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -7,6 +9,7 @@
 #include "builder/spec.hpp"
 #include "core/table.hpp"
 #include "integrators/integrator.hpp"
+#include "model/element.hpp"
 #include "results/ground_acceleration.hpp"
 #include "results/observer.hpp"
 
@@ -72,6 +75,21 @@ class NodeQuantities final : public Quantities {
   std::vector<std::vector<int>> directions_;
 };
 
+// <id>.<force> per element, Element::end_force_names (beams N_i, V_i, M_i, N_j, V_j, M_j;
+// trusses N), from the displacements of its DOFs (fixed ones 0): the elastic forces K_e u_e in
+// the element's axes, as the nodes act on it, without damping or second-order terms.
+class ElementQuantities final : public Quantities {
+ public:
+  // equations[k]: the equation of each of elements[k]'s dofs(), -1 where fixed.
+  ElementQuantities(std::vector<std::shared_ptr<const model::Element>> elements,
+                    std::vector<std::vector<Index>> equations);
+  void take(const integrators::State& state, double* values) const override;
+
+ private:
+  std::vector<std::shared_ptr<const model::Element>> elements_;
+  std::vector<std::vector<Index>> equations_;
+};
+
 // A time history: columns time and the quantities, a row per sampled step.
 class HistoryRecorder final : public Recorder {
  public:
@@ -105,6 +123,9 @@ class EnvelopeRecorder final : public Recorder {
   Table table() const override;
   const std::string& file() const override { return file_; }
   double held_values(double, double) const override { return 0.0; }
+  // The larger of |max| and |min| of quantity q so far.
+  double abs_max(std::size_t q) const { return std::max(std::abs(max_[q]), std::abs(min_[q])); }
+  std::size_t count() const { return row_.size(); }
 
  private:
   std::string file_;

@@ -70,6 +70,20 @@ std::vector<SpectrumPlace> spectrum_places(const builder::BuiltModel& built,
   return places;
 }
 
+std::unique_ptr<Quantities> element_quantities(const builder::BuiltModel& built,
+                                               const model::DofMap& dofs,
+                                               const std::vector<Index>& items) {
+  std::vector<std::shared_ptr<const model::Element>> elements;
+  std::vector<std::vector<Index>> equations;
+  for (Index item : items) {
+    elements.push_back(built.model.elements[static_cast<std::size_t>(item)]);
+    std::vector<Index>& each = equations.emplace_back();
+    for (const model::ElementDof& dof : elements.back()->dofs())
+      each.push_back(dofs.equation(dof.node, dof.direction));
+  }
+  return std::make_unique<ElementQuantities>(std::move(elements), std::move(equations));
+}
+
 std::unique_ptr<Recorder> make_recorder(const builder::BuiltModel& built,
                                         const assembly::StructuralSystem& system,
                                         const builder::ResolvedRecorder& spec,
@@ -79,8 +93,9 @@ std::unique_ptr<Recorder> make_recorder(const builder::BuiltModel& built,
                                               spectrum_places(built, system.dofs(), spec.items),
                                               spec.periods, spec.damping_ratios, ground);
   std::unique_ptr<Quantities> quantities =
-      spec.kind == builder::RecorderKind::link
-          ? link_quantities(built, system.links(), spec.items)
+      spec.kind == builder::RecorderKind::link ? link_quantities(built, system.links(), spec.items)
+      : spec.kind == builder::RecorderKind::element
+          ? element_quantities(built, system.dofs(), spec.items)
           : node_quantities(built, system.dofs(), spec, ground);
   if (spec.envelope) return std::make_unique<EnvelopeRecorder>(spec.file, std::move(quantities));
   return std::make_unique<HistoryRecorder>(spec.file, std::move(quantities), spec.sampling);
@@ -99,6 +114,31 @@ std::vector<Index> normal_rows(const integrators::LinkSet& links) {
   std::vector<Index> rows;
   for (Index k = 0; k < links.count(); ++k) rows.push_back(links.row(k));
   return rows;
+}
+
+// Where each drift monitor's base element's end forces sit in the envelope of base_forces().
+std::vector<std::optional<std::size_t>> base_rows(const builder::BuiltModel& built) {
+  std::vector<std::optional<std::size_t>> rows;
+  std::size_t next = 0;
+  for (const builder::DriftMonitor& m : built.drift_monitors) {
+    if (!m.base_element) {
+      rows.emplace_back();
+      continue;
+    }
+    rows.emplace_back(next);
+    next +=
+        built.model.elements[static_cast<std::size_t>(*m.base_element)]->end_force_names().size();
+  }
+  return rows;
+}
+
+std::unique_ptr<EnvelopeRecorder> base_forces(const builder::BuiltModel& built,
+                                              const model::DofMap& dofs) {
+  std::vector<Index> elements;
+  for (const builder::DriftMonitor& m : built.drift_monitors)
+    if (m.base_element) elements.push_back(*m.base_element);
+  if (elements.empty()) return nullptr;
+  return std::make_unique<EnvelopeRecorder>("", element_quantities(built, dofs, elements));
 }
 
 std::vector<DriftMonitors::Where> drift_places(const builder::BuiltModel& built,
@@ -170,6 +210,8 @@ RunObservers::RunObservers(const builder::BuiltModel& built,
       energy_(system, built.analysis.integrator.acceleration_energy()),
       passive_links_(!system.has_link_motion()),
       drifts_(drift_places(built, system.dofs()), ground_),
+      base_rows_(base_rows(built)),
+      base_forces_(base_forces(built, system.dofs())),
       joints_(joint_places(built, system), ground_) {}
 
 void RunObservers::record(const integrators::State& state) {
@@ -177,6 +219,7 @@ void RunObservers::record(const integrators::State& state) {
   links_.record(state);
   energy_.record(state);
   drifts_.record(state);
+  if (base_forces_) base_forces_->record(state);
   joints_.record(state);
   for (Observer* observer : extra_) observer->record(state);
   // Energy the integration made up: an unstable step or an unresolved stiff contact, which keeps
@@ -196,6 +239,19 @@ void RunObservers::record(const integrators::State& state) {
                      "(limit {:.0f} %), which passive links cannot do: a link is creating energy, "
                      "so the time step is too large for its stiffness (or its stiffness is "
                      "meaninglessly large)");
+}
+
+std::optional<double> RunObservers::base_shear(std::size_t monitor) const {
+  const std::optional<std::size_t> row = base_rows_.at(monitor);
+  // A beam's end forces are N_i, V_i, M_i, ...; a truss has only N.
+  if (!row || *row + 1 >= base_forces_->count()) return std::nullopt;
+  return base_forces_->abs_max(*row + 1);
+}
+
+std::optional<double> RunObservers::base_moment(std::size_t monitor) const {
+  const std::optional<std::size_t> row = base_rows_.at(monitor);
+  if (!row || *row + 2 >= base_forces_->count()) return std::nullopt;
+  return base_forces_->abs_max(*row + 2);
 }
 
 void check_histories_fit(const std::vector<std::unique_ptr<Recorder>>& recorders,
@@ -281,6 +337,14 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
               run.links[static_cast<std::size_t>(curvature->hinge)].peak_plastic_deformation())
         drift.curvature_ductility =
             1.0 + *plastic / (curvature->yield_curvature * curvature->plastic_hinge_length);
+    drift.peak_shear = observers.base_shear(k);
+    // A storey's column carries only its storey stiffness: its moments mean nothing.
+    if (drift.monitor.kind == builder::DriftKind::pier)
+      drift.peak_base_moment = observers.base_moment(k);
+    if (const std::optional<Index> link = drift.monitor.shear_link) {
+      const LinkSummary& s = run.links[static_cast<std::size_t>(*link)].summary;
+      drift.peak_shear = std::max(s.peak_force, s.peak_tension);
+    }
     run.drifts.push_back(drift);
   }
   for (std::size_t k = 0; k < built.joint_monitors.size(); ++k) {

@@ -36,6 +36,9 @@ class RunObservers {
   const LinkSummaries& links() const { return links_; }
   const EnergyBalance& energy() const { return energy_; }
   const DriftMonitors& drifts() const { return drifts_; }
+  // The peak |V_i| and |M_i| (none for a truss) of drift monitor k's base element, if it has one.
+  std::optional<double> base_shear(std::size_t monitor) const;
+  std::optional<double> base_moment(std::size_t monitor) const;
   const JointMonitors& joints() const { return joints_; }
 
  private:
@@ -48,6 +51,10 @@ class RunObservers {
   // which then feed energy in through them.
   bool passive_links_;
   DriftMonitors drifts_;
+  // The envelope of the drift monitors' base elements' end forces; base_rows_[k]: where monitor
+  // k's first end force is in it.
+  std::vector<std::optional<std::size_t>> base_rows_;
+  std::unique_ptr<EnvelopeRecorder> base_forces_;
   JointMonitors joints_;
   std::vector<Observer*> extra_;
 };
@@ -101,6 +108,9 @@ struct DriftResult {
   std::optional<double> elastic_demand_ratio() const;
   // 1 + theta_p / (phi_y L_p) of the member's hinge (DriftMonitor::curvature)
   std::optional<double> curvature_ductility;
+  // Peak |shear| at the base of the storey or pier and, for a beam, |moment| there [F], [F L]
+  // (DriftMonitor::base_element, shear_link).
+  std::optional<double> peak_shear, peak_base_moment;
 };
 
 struct JointResult {

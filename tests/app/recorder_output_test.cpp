@@ -178,5 +178,98 @@ TEST(RecorderOutput, AnIntervalKeepsTheHistorysRowsAtItsMultiplesAndRecordsOnlyF
   }
 }
 
+// Issue 16 item 3: member forces. A cantilever column (L = 4, two beams) under a constant tip
+// load P along x, starting from static equilibrium with no excitation, so that it stays there:
+// statics gives every end force (tension positive along the element's axis, which runs from
+// base to tip; V and M as the nodes act on each element).
+TEST(RecorderOutput, ElementEndForcesOfACantileverAreTheStaticOnes) {
+  constexpr double P = 2.5e4, L = 4.0;
+  const fs::path folder = fs::temp_directory_path() / fmt::format("pound_members_{}", ::getpid());
+  fs::create_directories(folder);
+  std::ofstream(folder / "model.json") << R"({
+    "dimension": 2,
+    "nodes": [{"id": "base", "x": 0, "y": 0}, {"id": "mid", "x": 0, "y": 2},
+              {"id": "tip", "x": 0, "y": 4}],
+    "materials": [{"id": "steel", "youngs_modulus": 2e11, "density": 7850}],
+    "elements": [{"id": "e1", "type": "beam", "nodes": ["base", "mid"], "material": "steel",
+                  "area": 0.01, "inertia": 1e-4},
+                 {"id": "e2", "type": "beam", "nodes": ["mid", "tip"], "material": "steel",
+                  "area": 0.01, "inertia": 1e-4}],
+    "supports": [{"node": "base", "fix": ["x", "y", "rz"]}],
+    "loads": [{"node": "tip", "x": 25000}],
+    "monitors": {"drifts": [{"id": "column", "kind": "pier", "bottom": "base", "top": "tip",
+                             "height": 4, "base_element": "e1"}]},
+    "analysis": {"time_step": 0.001, "duration": 0.01, "initial_state": "static"},
+    "recorders": [{"type": "element", "elements": ["e1", "e2"], "file": "members.csv"},
+                  {"type": "element", "elements": ["e1"], "envelope": true,
+                   "file": "base.csv"}]
+  })";
+  RunRequest request;
+  request.model_path = (folder / "model.json").string();
+  const RunOutcome outcome = run_model(request);
+  fs::remove_all(folder);
+  ASSERT_TRUE(outcome.failure.empty()) << outcome.failure;
+  const Table& members = outcome.histories.at(0).second;
+  EXPECT_EQ(members.columns, (std::vector<std::string>{
+                                 "time", "e1.N_i", "e1.V_i", "e1.M_i", "e1.N_j", "e1.V_j", "e1.M_j",
+                                 "e2.N_i", "e2.V_i", "e2.M_i", "e2.N_j", "e2.V_j", "e2.M_j"}));
+  // Magnitudes: no axial force; shear P in both; moment P L at the base, P L / 2 at mid-height,
+  // none at the tip.
+  const double expected[] = {0, P, P * L, 0, P, P * L / 2, 0, P, P * L / 2, 0, P, 0};
+  double worst = 0.0;
+  for (std::size_t c = 1; c < members.columns.size(); ++c)
+    for (double value : members.values[c])
+      worst = std::max(worst, std::abs(std::abs(value) - expected[c - 1]) / (P * L));
+  std::printf("cantilever end forces against statics: largest error %.2e of P L\n", worst);
+  EXPECT_LT(worst, 1e-9);
+  // End i and end j of an element balance: V_i = -V_j, and M_i + M_j + V_j l = 0.
+  EXPECT_NEAR(members.values[2][0], -members.values[5][0], 1e-9 * P);
+  EXPECT_NEAR(members.values[3][0] + members.values[6][0] + members.values[5][0] * 2.0, 0.0,
+              1e-9 * P * L);
+  const nlohmann::json summary = nlohmann::json::parse(outcome.summary.dump());
+  EXPECT_NEAR(summary["piers"][0]["peak_shear"].get<double>(), P, 1e-9 * P);
+  EXPECT_NEAR(summary["piers"][0]["peak_base_moment"].get<double>(), P * L, 1e-9 * P * L);
+  const Table& base = outcome.histories.at(1).second;
+  EXPECT_EQ(base.labels.at(1), "e1.V_i");
+  EXPECT_NEAR(base.values[4][1], P, 1e-9 * P);  // abs_max
+}
+
+// A shear-building storey's shear is its stiffness times its drift at every step (its floors
+// hold the mass, its column none): apart, with no pounding, the peaks match exactly.
+TEST(RecorderOutput, StoreyShearOfTheBuildingsIsStiffnessTimesDrift) {
+  const fs::path source = fs::path(POUND_SOURCE_DIR) / "models";
+  nlohmann::json model = nlohmann::json::parse(std::ifstream(source / "adjacent_buildings.json"));
+  model["excitations"][0]["record"] =
+      (source / model["excitations"][0]["record"].get<std::string>()).string();
+  model["analysis"]["duration"] = 5.0;
+  model["generators"][0]["separation"] = 0.5;
+  const fs::path folder = fs::temp_directory_path() / fmt::format("pound_storeys_{}", ::getpid());
+  fs::create_directories(folder);
+  std::ofstream(folder / "model.json") << model.dump();
+  RunRequest request;
+  request.model_path = (folder / "model.json").string();
+  const RunOutcome outcome = run_model(request);
+  fs::remove_all(folder);
+  ASSERT_TRUE(outcome.failure.empty()) << outcome.failure;
+  const nlohmann::json summary = nlohmann::json::parse(outcome.summary.dump());
+  double worst = 0.0;
+  std::size_t checked = 0;
+  for (const nlohmann::json& storey : summary["storeys"]) {
+    const std::string id = storey["id"];
+    const bool left = id.starts_with("pair.left.");
+    const std::size_t s = std::stoul(id.substr(id.rfind(".s") + 2)) - 1;
+    const double stiffness =
+        model["generators"][0][left ? "left" : "right"]["storeys"][s]["stiffness"].get<double>();
+    const double expected = stiffness * storey["peak_drift"].get<double>();
+    worst = std::max(worst, std::abs(storey["peak_shear"].get<double>() - expected) / expected);
+    EXPECT_FALSE(storey.contains("peak_base_moment"));
+    ++checked;
+  }
+  EXPECT_EQ(checked, 13u);
+  std::printf("storey shear against k x drift over %zu storeys: largest error %.2e\n", checked,
+              worst);
+  EXPECT_LT(worst, 1e-9);
+}
+
 }  // namespace
 }  // namespace pound::app
