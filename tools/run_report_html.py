@@ -25,9 +25,11 @@ figure { margin: 1em 0; } figure img { max-width: 100%; border: 1px solid #ddd; 
 """
 
 # (key in summary, column heading), per table; a column is shown when any row has it.
-LINK_COLUMNS = [("impacts", "impacts"), ("peak_force", "peak force"),
+LINK_COLUMNS = [("role", "role"), ("impacts", "impacts"), ("peak_force", "peak force"),
                 ("peak_penetration", "peak penetration"), ("peak_tension", "peak tension"),
-                ("peak_opening", "peak opening"), ("impulse", "impulse"), ("work", "work"),
+                ("peak_opening", "peak opening"), ("peak_deformation", "peak deformation"),
+                ("residual_deformation", "residual deformation"), ("impulse", "impulse"),
+                ("work", "work"),
                 ("ductility", "ductility"), ("hysteretic_energy", "hysteretic energy"),
                 ("first_contact", "first contact"), ("last_contact", "last contact")]
 JOINT_COLUMNS = [("peak_opening", "peak opening"), ("peak_closing", "peak closing"),

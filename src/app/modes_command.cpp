@@ -13,16 +13,22 @@
 #include "builder/start_check.hpp"
 #include "core/errors.hpp"
 #include "io/document.hpp"
+#include "io/output.hpp"
+#include "io/output_paths.hpp"
 
 namespace pound::app {
 namespace po = boost::program_options;
 
 namespace {
-constexpr const char* kModesUsage = R"(usage: pound modes MODEL.json [--count N] [--json]
+constexpr const char* kModesUsage =
+    R"(usage: pound modes MODEL.json [--count N] [--json] [--shapes F]
 
 Natural periods of a model as it starts (linear elements, structural springs at their initial
-stiffness, contact links open), with each mode's effective modal mass in x and y as a fraction of
-the total: the periods Rayleigh damping is chosen from and the ones a time step must resolve.
+stiffness, contact links open), with each mode's effective modal mass in x (and y, in a scene
+that moves along y) as a fraction of the total: the periods Rayleigh damping is chosen from and
+the ones a time step must resolve. --shapes writes the mode shapes (.csv, or .npy): a row per
+free DOF (label column "dof": <node>.u_x, <node>.u_y, <node>.r_z) and a column per mode,
+mode_1, mode_2, ..., each scaled so that its largest component is +1.
 
 options)";
 
@@ -32,6 +38,13 @@ struct ListedMode {
   int number = 0;
   double period = 0.0;
   std::array<double, 2> mass_ratio{0.0, 0.0};
+  Vector shape;  // over the free DOFs, largest component +1
+};
+
+// The modes and the directions along which the scene moves (x always; y when a DOF moves so).
+struct ListedModes {
+  std::vector<ListedMode> modes;
+  int directions = 1;
 };
 
 std::unique_ptr<assembly::StructuralSystem> assemble(const LoadedModel& loaded,
@@ -55,8 +68,8 @@ std::array<Vector, 2> influence_vectors(const assembly::StructuralSystem& system
 }
 
 // The first `count` modes that are not rigid-body motion.
-std::vector<ListedMode> list_modes(const assembly::StructuralSystem& system, std::size_t node_count,
-                                   int count) {
+ListedModes list_modes(const assembly::StructuralSystem& system, std::size_t node_count,
+                       int count) {
   const assembly::Modes modes = assembly::modal_analysis(system);
   // Effective modal mass along x and y: (phi^T M iota)^2 with mass-normalised phi.
   const std::array<Vector, 2> influence = influence_vectors(system, node_count);
@@ -65,7 +78,9 @@ std::vector<ListedMode> list_modes(const assembly::StructuralSystem& system, std
   for (int d = 0; d < 2; ++d) total[d] = influence[d].dot(mass * influence[d]);
 
   const double largest = modes.omega_squared.size() ? modes.omega_squared.maxCoeff() : 0.0;
-  std::vector<ListedMode> listed;
+  ListedModes result;
+  result.directions = total[1] > 0.0 ? 2 : 1;
+  std::vector<ListedMode>& listed = result.modes;
   for (Index k = 0; k < modes.omega_squared.size() && static_cast<int>(listed.size()) < count;
        ++k) {
     if (!(modes.omega_squared[k] > 1e-10 * largest)) continue;  // rigid-body motion
@@ -76,31 +91,57 @@ std::vector<ListedMode> list_modes(const assembly::StructuralSystem& system, std
       const double participation = modes.shapes.col(k).dot(mass * influence[d]);
       mode.mass_ratio[d] = total[d] > 0.0 ? participation * participation / total[d] : 0.0;
     }
+    mode.shape = modes.shapes.col(k);
+    Index at = 0;
+    mode.shape.cwiseAbs().maxCoeff(&at);
+    if (mode.shape[at] != 0.0) mode.shape /= mode.shape[at];
     listed.push_back(mode);
   }
-  return listed;
+  return result;
 }
 
-std::string modes_table(const std::string& model_path, Index dofs,
-                        const std::vector<ListedMode>& modes) {
-  std::string table = fmt::format("{}: {} DOFs\n{:>5} {:>12} {:>12} {:>10} {:>10}\n", model_path,
-                                  dofs, "mode", "period", "frequency", "mass x", "mass y");
-  for (const ListedMode& mode : modes)
-    table += fmt::format("{:>5} {:>12.5g} {:>12.5g} {:>10.4f} {:>10.4f}\n", mode.number,
-                         mode.period, 1.0 / mode.period, mode.mass_ratio[0], mode.mass_ratio[1]);
+// The shapes as a table: a row per free DOF, a column per mode.
+Table shapes_table(const LoadedModel& loaded, const assembly::StructuralSystem& system,
+                   const std::vector<ListedMode>& modes) {
+  static const char* kDirection[] = {"u_x", "u_y", "r_z"};
+  std::vector<std::string> columns;
+  for (const ListedMode& mode : modes) columns.push_back(fmt::format("mode_{}", mode.number));
+  Table table = table_with_columns(columns);
+  table.label_column = "dof";
+  const model::DofMap& dofs = system.dofs();
+  for (Index node = 0; node < static_cast<Index>(loaded.built.model.nodes.size()); ++node)
+    for (int d = 0; d < dofs.dofs_per_node(); ++d) {
+      const Index row = dofs.equation(node, d);
+      if (row < 0) continue;
+      table.labels.push_back(loaded.built.model.nodes[static_cast<std::size_t>(node)].id + "." +
+                             kDirection[d]);
+      for (std::size_t m = 0; m < modes.size(); ++m)
+        table.values[m].push_back(modes[m].shape[row] + 0.0);  // no -0
+    }
   return table;
 }
 
-io::Document modes_document(const std::string& model_path, Index dofs,
-                            const std::vector<ListedMode>& modes) {
+std::string modes_table(const std::string& model_path, Index dofs, const ListedModes& listed) {
+  const bool y = listed.directions > 1;
+  std::string table =
+      fmt::format("{}: {} DOFs\n{:>5} {:>12} {:>12} {:>10}{}\n", model_path, dofs, "mode", "period",
+                  "frequency", "mass x", y ? fmt::format(" {:>10}", "mass y") : "");
+  for (const ListedMode& mode : listed.modes)
+    table += fmt::format("{:>5} {:>12.5g} {:>12.5g} {:>10.4f}{}\n", mode.number, mode.period,
+                         1.0 / mode.period, mode.mass_ratio[0],
+                         y ? fmt::format(" {:>10.4f}", mode.mass_ratio[1]) : "");
+  return table;
+}
+
+io::Document modes_document(const std::string& model_path, Index dofs, const ListedModes& listed) {
   std::vector<io::Document> rows;
-  for (const ListedMode& mode : modes) {
+  for (const ListedMode& mode : listed.modes) {
     io::Document row;
     row.set("mode", mode.number)
         .set("period", mode.period)
         .set("frequency", 1.0 / mode.period)
-        .set("mass_ratio_x", mode.mass_ratio[0])
-        .set("mass_ratio_y", mode.mass_ratio[1]);
+        .set("mass_ratio_x", mode.mass_ratio[0]);
+    if (listed.directions > 1) row.set("mass_ratio_y", mode.mass_ratio[1]);
     rows.push_back(row);
   }
   io::Document doc;
@@ -114,9 +155,11 @@ int modes_command(const Arguments& arguments) {
   po::options_description options(kModesUsage);
   std::string model_path;
   int count = 12;
+  std::string shapes;
   options.add_options()("help,h", "show this help")(
       "count,n", po::value(&count)->default_value(count), "how many modes to list")(
-      "json", "print the modes as one JSON object");
+      "json", "print the modes as one JSON object")(
+      "shapes", po::value(&shapes), "write the mode shapes to this .csv or .npy file");
   const auto parsed = parse_command_line(arguments, options, "model", model_path);
   if (!parsed) return 0;
   const po::variables_map& vm = *parsed;
@@ -124,9 +167,19 @@ int modes_command(const Arguments& arguments) {
     std::cerr << "pound modes: name a model file and a --count >= 1 (see `pound modes --help`)\n";
     return 1;
   }
+  if (!shapes.empty() && !shapes.ends_with(".csv") && !shapes.ends_with(".npy")) {
+    std::cerr << "pound modes: --shapes: a file name ending in .csv or .npy, got '" << shapes
+              << "'\n";
+    return 1;
+  }
   const LoadedModel loaded = load_model(model_path);
+  if (!shapes.empty()) {
+    std::vector<io::NamedPath> inputs{{model_path, "the model"}};
+    for (const std::string& record : loaded.record_paths) inputs.push_back({record, "a record"});
+    io::check_outputs_apart(inputs, {{shapes, "--shapes"}});
+  }
   const std::unique_ptr<assembly::StructuralSystem> system = assemble(loaded, model_path);
-  std::vector<ListedMode> modes;
+  ListedModes modes;
   try {
     modes = list_modes(*system, loaded.built.model.nodes.size(), count);
   } catch (const assembly::NotPositiveDefinite& failure) {
@@ -134,6 +187,11 @@ int modes_command(const Arguments& arguments) {
                                   "the condensation of the massless DOFs", model_path);
   } catch (const assembly::ModalAnalysisError& error) {
     throw builder::extreme_mode_error(loaded.built, *system, error.what(), model_path);
+  }
+  if (!shapes.empty()) {
+    io::StagedFiles file;
+    file.write_table(shapes, shapes_table(loaded, *system, modes.modes));
+    file.commit();
   }
   if (vm.count("json")) {
     std::cout << modes_document(model_path, system->size(), modes).dump() << "\n";

@@ -606,6 +606,28 @@ const Fields<builder::PierHingeSpec>& pier_hinge_fields() {
   return fields;
 }
 
+// A displacement [L] named `key`, also read under its older name `old_key` (which read as a
+// ratio): one of the two, written under `key`.
+template <class Spec>
+Field<Spec> renamed_displacement(std::string key, std::string old_key,
+                                 std::optional<double> Spec::*member, std::string meaning) {
+  return custom<Spec>(
+      {key, "number > 0", "–",
+       fmt::format("{} [L]: a displacement, not a ratio (also read as `{}`, its older name)",
+                   meaning, old_key)},
+      [key, old_key, member](JsonObject& object, Spec& spec, Context&) {
+        const std::optional<JsonValue> value = object.find(key);
+        const std::optional<JsonValue> old = object.find(old_key);
+        if (value && old)
+          old->fail(fmt::format("'{}' is the older name of '{}': give one of them", old_key, key));
+        if (value || old) spec.*member = (value ? *value : *old).template as<double>(positive);
+      },
+      [member](const Spec& spec, const Context&) -> std::optional<OrderedJson> {
+        if (!(spec.*member)) return std::nullopt;
+        return *(spec.*member);
+      });
+}
+
 const Fields<GirderBridgeSpec>& girder_bridge_fields() {
   static const Object<SectionSpec> section{section_fields(), Docs::own_table};
   static const Fields<GirderBridgeSpec> fields = {
@@ -616,14 +638,16 @@ const Fields<GirderBridgeSpec>& girder_bridge_fields() {
       required("pier", &GirderBridgeSpec::pier, section, "the piers' section"),
       required("pier_height", &GirderBridgeSpec::pier_height, Number<>{positive},
                "deck level above the pier bases [L]"),
-      optional("pier_yield_drift", &GirderBridgeSpec::pier_yield_drift, Number<>{positive},
-               "for the piers' displacement ductility [L]"),
+      renamed_displacement<GirderBridgeSpec>(
+          "pier_yield_displacement", "pier_yield_drift", &GirderBridgeSpec::pier_yield_drift,
+          "the pier top's drift at yield, for the piers' displacement ductility"),
       optional("pier_hinge", &GirderBridgeSpec::pier_hinge,
                Object<builder::PierHingeSpec>{pier_hinge_fields(), Docs::own_table},
                "plastic hinges at the piers' bases (yielding piers)"),
       rule<GirderBridgeSpec>([](JsonObject& object, GirderBridgeSpec& bridge, Context&) {
         if (bridge.pier_hinge && bridge.pier_yield_drift)
-          object.at("pier_yield_drift")
+          (object.has("pier_yield_displacement") ? object.at("pier_yield_displacement")
+                                                 : object.at("pier_yield_drift"))
               .fail("not with 'pier_hinge': the hinges' yield moment gives the yield drift");
       }),
       optional("bearing", &GirderBridgeSpec::bearing, Law{},
@@ -819,10 +843,12 @@ const Fields<DriftMonitorSpec>& drift_monitor_fields() {
       required("bottom", &DriftMonitorSpec::bottom, Text{true}, "id of the lower node"),
       required("top", &DriftMonitorSpec::top, Text{true}, "id of the upper node"),
       required("height", &DriftMonitorSpec::height, Number<>{positive}, "for the drift ratio [L]"),
-      optional("yield_drift", &DriftMonitorSpec::yield_drift, Number<>{positive},
-               "for the displacement ductility [L]"),
+      renamed_displacement<DriftMonitorSpec>("yield_displacement", "yield_drift",
+                                             &DriftMonitorSpec::yield_drift,
+                                             "the drift at yield, for the displacement ductility"),
       optional("yields", &DriftMonitorSpec::yields, Flag{},
-               "whether the model yields at `yield_drift` (peak / yield drift is a ductility); "
+               "whether the model yields at `yield_displacement` (peak / yield drift is a "
+               "ductility); "
                "false for an elastic member, whose ratio is only a demand"),
       optional("hinge", &DriftMonitorSpec::hinge, Text{true},
                "id of the member's plastic-hinge link, for its curvature ductility "

@@ -1,13 +1,26 @@
 #include "io/run_summary_document.hpp"
 
+#include <algorithm>
+
 namespace pound::io {
 namespace {
 
-Document link_document(const results::LinkResult& link) {
-  const results::LinkSummary& s = link.summary;
-  Document doc;
-  doc.set("id", link.id)
-      .set("impacts", s.impacts)
+const char* role_name(links::LinkRole role) {
+  switch (role) {
+    case links::LinkRole::contact:
+      return "contact";
+    case links::LinkRole::tension:
+      return "restrainer";
+    case links::LinkRole::spring:
+      return "spring";
+  }
+  return "";
+}
+
+// A contact or restrainer in the words of pounding: impacts (or times taut), the peak force in
+// compression and in tension, penetration and opening, impulse, when in contact.
+void add_pounding(const results::LinkSummary& s, Document& doc) {
+  doc.set("impacts", s.impacts)
       .set("peak_force", s.peak_force)
       .set("peak_tension", s.peak_tension)
       .set("peak_penetration", s.peak_penetration)
@@ -16,6 +29,26 @@ Document link_document(const results::LinkResult& link) {
       .set("work", s.work);
   if (s.first_contact >= 0.0)
     doc.set("first_contact", s.first_contact).set("last_contact", s.last_contact);
+}
+
+// A spring (bearing, hinge, storey, damper) in the words of springs: the largest force and
+// deformation either way, and where it ended (a residual deformation after yielding).
+void add_spring(const results::LinkResult& link, Document& doc) {
+  const results::LinkSummary& s = link.summary;
+  doc.set("peak_force", std::max(s.peak_force, s.peak_tension))
+      .set("peak_deformation", link.peak_deformation())
+      .set("residual_deformation", s.final_deformation)
+      .set("work", s.work);
+}
+
+Document link_document(const results::LinkResult& link) {
+  const results::LinkSummary& s = link.summary;
+  Document doc;
+  doc.set("id", link.id).set("role", role_name(link.role));
+  if (link.role == links::LinkRole::spring)
+    add_spring(link, doc);
+  else
+    add_pounding(s, doc);
   if (link.yield_deformation) {  // a yielding law: its demand and what it dissipated
     doc.set("yield_deformation", *link.yield_deformation)
         .set("peak_deformation", link.peak_deformation())

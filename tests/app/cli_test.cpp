@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -476,6 +477,48 @@ TEST_F(Cli, SpectrumScalesTheRecordAsAskedAndSaysBy) {
   const Outcome both = pound({"spectrum", record, "--pga", "0.25", "--scale", "2"});
   EXPECT_EQ(both.exit_code, 1);
   EXPECT_TRUE(contains(both.err, "give --scale or --pga, not both")) << both.err;
+}
+
+// ---- Issue 16 item 8: `pound modes` shows the directions the scene has, and writes shapes ----
+
+TEST_F(Cli, ModesListOnlyTheDirectionsTheSceneMovesInAndWriteTheShapes) {
+  const std::string buildings = POUND_SOURCE_DIR "/models/adjacent_buildings.json";
+  const Outcome listed = pound({"modes", buildings, "--count", "3"});
+  ASSERT_EQ(listed.exit_code, 0) << listed.err;
+  EXPECT_TRUE(contains(listed.out, "mass x")) << listed.out;
+  EXPECT_FALSE(contains(listed.out, "mass y")) << listed.out;  // floors sway along x only
+  const json modes = json::parse(pound({"modes", buildings, "--count", "3", "--json"}).out);
+  EXPECT_FALSE(modes["modes"][0].contains("mass_ratio_y"));
+  const json bridge = json::parse(
+      pound({"modes", POUND_SOURCE_DIR "/models/three_span_bridge.json", "--count", "2", "--json"})
+          .out);
+  EXPECT_TRUE(bridge["modes"][0].contains("mass_ratio_y"));  // its girders and piers move in y
+
+  const Outcome written =
+      pound({"modes", buildings, "--count", "3", "--shapes", path("shapes.csv").string()});
+  ASSERT_EQ(written.exit_code, 0) << written.err;
+  const std::vector<std::string> lines = read_lines(path("shapes.csv"));
+  ASSERT_EQ(lines.size(), 1u + modes["dofs"].get<std::size_t>());  // a row per free DOF
+  EXPECT_EQ(lines[0], "dof,mode_1,mode_2,mode_3");
+  std::set<std::string> labels;
+  std::vector<double> largest(3, 0.0);
+  for (std::size_t r = 1; r < lines.size(); ++r) {
+    std::stringstream row(lines[r]);
+    std::string label, cell;
+    std::getline(row, label, ',');
+    labels.insert(label);
+    for (std::size_t m = 0; std::getline(row, cell, ','); ++m)
+      largest[m] = std::max(largest[m], std::stod(cell));
+  }
+  EXPECT_EQ(labels.size(), lines.size() - 1);
+  EXPECT_TRUE(labels.count("pair.right.f8.u_x"));
+  EXPECT_EQ(largest, (std::vector<double>{1.0, 1.0, 1.0}));  // each scaled to +1
+
+  const Outcome refused = pound({"modes", buildings, "--shapes", path("shapes.txt").string()});
+  EXPECT_EQ(refused.exit_code, 1);
+  EXPECT_TRUE(contains(refused.err, "--shapes: a file name ending in .csv or .npy")) << refused.err;
+  const Outcome over = pound({"modes", buildings, "--shapes", buildings});
+  EXPECT_NE(over.exit_code, 0);
 }
 
 // ---- Issue 14: every input ends in a clear answer, and no output overwrites an input ----

@@ -29,7 +29,7 @@ Json bridge(const std::function<void(Json&)>& edit = {}) {
 }
 
 void add_hinges(Json& generator) {
-  generator.erase("pier_yield_drift");
+  generator.erase("pier_yield_displacement");
   generator["pier_hinge"] = {{"yield_moment", 4.0e6},
                              {"law", {{"type", "bilinear_spring"}, {"hardening_ratio", 0.02}}}};
 }

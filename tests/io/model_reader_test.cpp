@@ -1,5 +1,6 @@
 #include "io/model_reader.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -333,6 +334,23 @@ TEST(JsonReader, SuggestsTheClosestName) {
   EXPECT_EQ(closest_name("gpa", {"id", "gap"}), "gap");
 }
 
+// Issue 16 item 8: a yield drift is a displacement; its new name says so, its old one still reads.
+TEST(ModelReader, YieldDisplacementIsAlsoReadUnderItsOlderName) {
+  for (const char* name : {"yield_displacement", "yield_drift"}) {
+    const std::string monitors = fmt::format(
+        R"({{"drifts": [{{"id": "s", "bottom": "a0", "top": "a1", "height": 3, "{}": 0.02}}]}})",
+        name);
+    const builder::ModelSpec spec =
+        parse_model(nlohmann::json::parse(kModel)
+                        .patch(nlohmann::json::parse(
+                            R"([{"op": "add", "path": "/monitors", "value": )" + monitors + "}]"))
+                        .dump(),
+                    "x.json");
+    ASSERT_EQ(spec.drift_monitors.size(), 1u);
+    EXPECT_EQ(spec.drift_monitors[0].yield_drift, 0.02) << name;
+  }
+}
+
 // A bad input, the JSON path (or line and column) its error must name, and a phrase of the
 // message. `input` is the whole text for text cases and a JSON patch of kModel for edit cases.
 struct BadCase {
@@ -472,6 +490,12 @@ INSTANTIATE_TEST_SUITE_P(
                 "unknown field (did you mean 'max_iterations'?)"},
         BadCase{"unknown_integrator_field", added("/analysis/integrator/alpha", "0.1"),
                 "/analysis/integrator/alpha", "unknown field"},
+        BadCase{"yield_displacement_under_both_names",
+                added("/monitors", R"({"drifts": [{"id": "s", "bottom": "a0", "top": "a1",
+                                         "height": 3, "yield_drift": 0.02,
+                                         "yield_displacement": 0.02}]})"),
+                "/monitors/drifts/0/yield_drift",
+                "'yield_drift' is the older name of 'yield_displacement': give one of them"},
         BadCase{"unknown_recorder_field", added("/recorders/0/every_step", "2"),
                 "/recorders/0/every_step", "unknown field"},
         BadCase{"zero_output_interval", added("/recorders/0/interval", "0"),

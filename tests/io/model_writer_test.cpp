@@ -97,7 +97,7 @@ constexpr const char* kRichModel = R"({
                 "extra_mass": 25000.0, "elements": 3},
      "pier": {"youngs_modulus": 3.0e10, "area": 3.0, "inertia": 0.8, "density": 2500.0,
               "extra_mass": 0.0, "elements": 2},
-     "pier_height": 8.0, "pier_yield_drift": 0.04,
+     "pier_height": 8.0, "pier_yield_displacement": 0.04,
      "bearing": {"type": "bilinear_spring", "stiffness": 2.0e7, "yield_force": 3.0e5},
      "bearing_vertical_stiffness": 1.0e10, "expansion_joints": [2],
      "joint": {"gap": 0.05, "seat_width": 0.6,
@@ -111,7 +111,7 @@ constexpr const char* kRichModel = R"({
   ],
   "monitors": {
     "drifts": [{"id": "storey", "kind": "storey", "group": "frame", "bottom": "a", "top": "b",
-                "height": 3.0, "yield_drift": 0.03},
+                "height": 3.0, "yield_displacement": 0.03},
                {"id": "column", "kind": "pier", "bottom": "c", "top": "d", "height": 8.0}],
     "joints": [{"id": "seat", "link": "impact", "girder": "c", "seat": "d", "seat_width": 0.4}]
   },
