@@ -33,8 +33,14 @@ options)";
 
 // The findings as text: the model, its periods and stable steps, a line per contact link.
 std::string check_text(const std::string& model_path, const verification::ModelCheck& check) {
-  std::string text = fmt::format("{}: {} DOFs ({} per node), {} links\n", model_path, check.dofs,
-                                 check.dofs_per_node, check.links);
+  static const char* kDirection[] = {"x", "y", "rotation"};
+  std::string directions;
+  for (std::size_t d = 0; d < 3; ++d)
+    if (check.dofs_by_direction[d] > 0)
+      directions += fmt::format("{}{} {}", directions.empty() ? "" : ", ",
+                                check.dofs_by_direction[d], kDirection[d]);
+  std::string text = fmt::format("{}: {} DOFs ({}), {} links\n", model_path, check.dofs,
+                                 directions.empty() ? "none free" : directions, check.links);
   if (!check.periods.empty()) {
     text += "  periods:";
     for (double t : check.periods) text += fmt::format(" {:.4g}", t);
@@ -73,6 +79,9 @@ io::Document check_document(const std::string& model_path, const verification::M
   doc.set("model", model_path)
       .set("dofs", static_cast<long>(check.dofs))
       .set("dofs_per_node", check.dofs_per_node)
+      .set("dofs_x", static_cast<long>(check.dofs_by_direction[0]))
+      .set("dofs_y", static_cast<long>(check.dofs_by_direction[1]))
+      .set("dofs_rotation", static_cast<long>(check.dofs_by_direction[2]))
       .set("periods", check.periods);
   // An unbounded stable step (nothing vibrates) is null: "no limit".
   auto set_step = [&doc](const char* key, double step) {

@@ -168,6 +168,10 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
   const builder::AnalysisSpec& analysis = built.analysis;
   const integrators::LinkSet& links = system.links();
   ModelCheck check{system.size(), system.dofs().dofs_per_node(), links.count()};
+  for (Index node = 0; node < static_cast<Index>(built.model.nodes.size()); ++node)
+    for (int d = 0; d < system.dofs().dofs_per_node(); ++d)
+      if (system.dofs().equation(node, d) >= 0)
+        ++check.dofs_by_direction[static_cast<std::size_t>(d)];
   if (with_periods && system.size() <= 4000) {
     try {
       check.periods = assembly::natural_periods(system, 6);

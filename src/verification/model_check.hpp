@@ -6,6 +6,7 @@
 // duration against the time step (Kawashima: dt <= T_contact / 20; for Hertz-type laws the
 // closed-form duration of an elastic Hertz impact at an estimated approach velocity). Every setting
 // the benchmarks show to give meaningless results is a warning.
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -33,6 +34,9 @@ struct ModelCheck {
   Index dofs = 0;
   int dofs_per_node = 0;
   Index links = 0;
+  // The free DOFs along x, y and rotation: the directions the scene moves in (a shear building in
+  // a plane has x and, at its column cuts, rotation, but no y).
+  std::array<Index, 3> dofs_by_direction{0, 0, 0};
   std::vector<double> periods;  // the first six; none above 4000 DOFs or when not asked
   // Central difference's stable step; none without a lumped mass on every DOF.
   std::optional<double> explicit_step_open, explicit_step_contact;

@@ -521,6 +521,22 @@ TEST_F(Cli, ModesListOnlyTheDirectionsTheSceneMovesInAndWriteTheShapes) {
   EXPECT_NE(over.exit_code, 0);
 }
 
+// Issue 16 item 7: `pound check` counts the DOFs along the directions the scene moves in.
+TEST_F(Cli, CheckCountsTheDofsOfEachDirectionTheSceneHas) {
+  const Outcome buildings = pound({"check", POUND_SOURCE_DIR "/models/adjacent_buildings.json"});
+  EXPECT_TRUE(contains(buildings.out, ": 33 DOFs (23 x, 10 rotation), 10 links")) << buildings.out;
+  const json bridge = json::parse(
+      pound({"check", POUND_SOURCE_DIR "/models/three_span_bridge.json", "--json"}).out);
+  EXPECT_EQ(bridge["dofs_x"].get<long>() + bridge["dofs_y"].get<long>() +
+                bridge["dofs_rotation"].get<long>(),
+            bridge["dofs"].get<long>());
+  EXPECT_GT(bridge["dofs_y"].get<long>(), 0);
+  const json girders =
+      json::parse(pound({"check", POUND_SOURCE_DIR "/models/two_sdof_girders.json", "--json"}).out);
+  EXPECT_EQ(girders["dofs_x"], 2);
+  EXPECT_EQ(girders["dofs_y"], 0);
+}
+
 // ---- Issue 14: every input ends in a clear answer, and no output overwrites an input ----
 
 TEST_F(Cli, DeviceOrFifoAsModelIsRefusedAtOnce) {
