@@ -20,7 +20,8 @@ DIR, each when its data is there (one line printed per file):
                          excitations the model names, the tables of summary.json, the
                          ensemble's spread and every figure above (inlined)
 Figures with more links or joints than fit on a page continue in link_forces_2.png, ...
-CSV files are recognised by their columns, not their names. Units are the model's own.
+CSV files are recognised by their columns, not their names. Axes name the units summary.json
+gives (its "units": the model's units block), "model units" where it names none.
 
 Needs matplotlib (Debian: python3-matplotlib, installed by tools/install_dependencies.sh).
 Run it with the interpreter that has it; if `python3` is another one (pyenv, a venv) without
@@ -46,7 +47,21 @@ REEXEC_MARK = "POUND_PLOT_RUN_REEXEC"
 
 PER_PAGE = 8          # subplots per page of the per-link and per-joint figures
 NODES_PER_AXES = 10   # node histories overlaid in one subplot of displacements.png
-TIME_LABEL = "time [model units]"
+MODEL_UNITS = "model units"
+
+
+def units_of(summary):
+    """The units summary.json names (its "units"), "model units" where it names none."""
+    given = summary.get("units") if isinstance(summary.get("units"), dict) else {}
+
+    def named(key):
+        value = given.get(key)
+        return value if isinstance(value, str) and value and "own" not in value else MODEL_UNITS
+
+    units = {key: named(key) for key in ("length", "time", "force", "acceleration", "moment")}
+    force, length = units["force"], units["length"]
+    units["energy"] = (f"{force}·{length}" if MODEL_UNITS not in (force, length) else MODEL_UNITS)
+    return units
 
 LINK_QUANTITIES = ("force", "penetration", "tangential_force", "slide")
 ENERGY_TERMS = ("kinetic", "strain", "damping", "links")
@@ -319,6 +334,8 @@ class Plotter:
         if summary.get("status") == "failed":
             self.model += f" (analysis failed at t = {fmt(number(summary, 'failure_time'))})"
         self.written = []
+        self.units = units_of(summary)
+        self.time_label = f"time [{self.units['time']}]"
 
     def figure(self, count, columns, row_height, width=11.0):
         rows = max(1, math.ceil(count / columns))
@@ -387,8 +404,8 @@ class Plotter:
                     ax.legend(loc="best", fontsize="small")
                 ax.axhline(0.0, color="0.6", lw=0.5)
                 ax.set_title(self.link_title(link_id, summaries.get(link_id, {})), fontsize="medium")
-                ax.set_xlabel(TIME_LABEL)
-                ax.set_ylabel("force (compression +)\n[model units]")
+                ax.set_xlabel(self.time_label)
+                ax.set_ylabel(f"force (compression +)\n[{self.units['force']}]")
                 ax.grid(alpha=0.3)
             self.save(fig, self.page_name("link_forces", page), "Link force histories")
 
@@ -428,12 +445,12 @@ class Plotter:
                     ax.set_xlim(*window)
                 if kind == "normal":
                     title = self.link_title(link_id, summaries.get(link_id, {}))
-                    ax.set_xlabel("penetration (closing +) [model units]")
-                    ax.set_ylabel("force (compression +) [model units]")
+                    ax.set_xlabel(f"penetration (closing +) [{self.units['length']}]")
+                    ax.set_ylabel(f"force (compression +) [{self.units['force']}]")
                 else:
                     title = f"{link_id}\nfriction: tangential force against slide"
-                    ax.set_xlabel("slide [model units]")
-                    ax.set_ylabel("tangential force [model units]")
+                    ax.set_xlabel(f"slide [{self.units['length']}]")
+                    ax.set_ylabel(f"tangential force [{self.units['force']}]")
                 if window is None:
                     title += " (never engaged)"
                 ax.xaxis.set_major_locator(self.MaxNLocator(4, steps=[1, 2, 5, 10]))
@@ -473,8 +490,8 @@ class Plotter:
                     parts.append(f"unseating margin {fmt(number(info, 'unseating_margin'))}")
                 ax.set_title(f"{joint_id}\n" + ", ".join(parts) if parts else joint_id,
                              fontsize="medium")
-                ax.set_xlabel(TIME_LABEL)
-                ax.set_ylabel("opening [model units]")
+                ax.set_xlabel(self.time_label)
+                ax.set_ylabel(f"opening [{self.units['length']}]")
                 ax.grid(alpha=0.3)
             self.save(fig, self.page_name("joint_openings", page), "Joint opening histories")
 
@@ -523,7 +540,7 @@ class Plotter:
         ax.set_xlim(left=0.0)
         ax.set_ylim(bottom=0.0)
         ax.set_xlabel("peak storey drift ratio [-]")
-        ax.set_ylabel("height [model units]" if use_heights else "storey")
+        ax.set_ylabel(f"height [{self.units['length']}]" if use_heights else "storey")
         ax.set_title("Storey drift ratio envelopes", fontsize="medium")
         if any(buildings):
             ax.legend(loc="best", fontsize="small")
@@ -571,7 +588,7 @@ class Plotter:
         top.stackplot(t, *terms, labels=["kinetic", "strain (linear elements)",
                                          "damping (dissipated)", "links (work on links)"], alpha=0.8)
         top.plot(t, supplied, "k--", lw=1.2, label="initial + input")
-        top.set_ylabel("energy [model units]")
+        top.set_ylabel(f"energy [{self.units['energy']}]")
         top.set_title("Energy components (stacked) against the energy supplied", fontsize="medium")
         top.legend(loc="best", fontsize="small")
         top.grid(alpha=0.3)
@@ -583,7 +600,7 @@ class Plotter:
         if worst is not None or final is not None:
             title += f" (summary: final {fmt(final)}, worst {fmt(worst)})"
         bottom.set_title(title, fontsize="medium")
-        bottom.set_xlabel(TIME_LABEL)
+        bottom.set_xlabel(self.time_label)
         bottom.set_ylabel("balance error [-]")
         bottom.legend(loc="best", fontsize="small")
         bottom.grid(alpha=0.3, which="both")
@@ -634,12 +651,13 @@ class Plotter:
 
     def plot_displacements(self, histories):
         self.plot_node_histories(histories, "u_x", "displacement u_x", "displacements.png",
-                                 "Node displacement histories")
+                                 "Node displacement histories", self.units["length"])
 
     def plot_accelerations(self, histories):
         self.plot_node_histories(histories, "a_abs_x", "absolute acceleration\na_abs_x",
                                  "accelerations.png",
-                                 "Absolute node accelerations (what floor contents feel)")
+                                 "Absolute node accelerations (what floor contents feel)",
+                                 self.units["acceleration"])
 
     def plot_floor_spectra(self, spectra):
         """One panel per damping ratio: Sa against period of every node and direction."""
@@ -661,14 +679,14 @@ class Plotter:
                 ax.plot(periods[positive], sa[positive], lw=1.2, label=label)
             ax.set_xscale("log")
             ax.set_title(f"{damping} damping", fontsize="medium")
-            ax.set_xlabel("period T [model units of time]")
-            ax.set_ylabel("pseudo-spectral acceleration\nSa [model units]")
+            ax.set_xlabel(f"period T [{self.units['time']}]")
+            ax.set_ylabel(f"pseudo-spectral acceleration\nSa [{self.units['acceleration']}]")
             ax.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize="small")
             ax.grid(alpha=0.3, which="both")
         self.save(fig, "floor_spectra.png",
                   "Floor response spectra of the recorded nodes' absolute accelerations")
 
-    def plot_node_histories(self, histories, quantity, label, file_name, title_text):
+    def plot_node_histories(self, histories, quantity, label, file_name, title_text, unit):
         panels = []
         for history in histories:
             nodes = [(split_column(name)[0], name) for name in history.columns[1:]
@@ -692,8 +710,8 @@ class Plotter:
             if len(shown) < len(nodes):
                 title += f" ({len(shown)} of {len(nodes)} nodes shown)"
             ax.set_title(title, fontsize="medium")
-            ax.set_xlabel(TIME_LABEL)
-            ax.set_ylabel(f"{label}\n[model units]")
+            ax.set_xlabel(self.time_label)
+            ax.set_ylabel(f"{label}\n[{unit}]")
             ax.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize="small")
             ax.grid(alpha=0.3)
         self.save(fig, file_name, title_text)
@@ -703,7 +721,7 @@ class Plotter:
 
 def main(argv):
     parser = folder_parser(PROG, __doc__, "the --out folder of `pound run`",
-                           epilog="Units on the axes are the model's own.")
+                           epilog="Axes name the units of summary.json, else 'model units'.")
     args = parser.parse_checked(argv)
     figure_class = import_matplotlib(PROG, REEXEC_MARK, __file__)
     import numpy

@@ -228,12 +228,27 @@ std::string excitation_lines(const LoadedModel& loaded) {
   return text;
 }
 
+// The units the numbers are in: length and time always (m and s unless the model says otherwise:
+// records in g are converted with them); force, moment and mass only with a mass unit.
+io::Document units_document(const builder::UnitsSpec& units) {
+  io::Document doc;
+  doc.set("length", units.length)
+      .set("time", units.time)
+      .set("acceleration", fmt::format("{}/{}²", units.length, units.time));
+  if (const std::optional<std::string> force = units.force())
+    doc.set("mass", *units.mass).set("force", *force).set("moment", *force + "·" + units.length);
+  else
+    doc.set("force", "the model's own (give units.mass to name it)");
+  return doc;
+}
+
 // The summary of a run, with its excitations and its verification when there is one.
 io::Document summary_document(const results::RunSummary& summary, const RunRequest& request,
                               const PreparedRun& run,
                               const std::optional<verification::RodImpactMetrics>& metrics) {
   io::Document document =
       io::to_document(summary, request.model_path, run_title(run.loaded, request.model_path));
+  document.set("units", units_document(run.loaded.spec.units));
   if (!run.loaded.records.empty()) {
     document.set("excitations", excitation_documents(run.loaded));
     if (!run.loaded.first_record_replaced_by.empty())

@@ -1,7 +1,9 @@
 #include "builder/spec.hpp"
 
+#include <cmath>
 #include <map>
 #include <stdexcept>
+#include <utility>
 
 namespace pound::builder {
 
@@ -14,5 +16,17 @@ double UnitsSpec::gravity() const {
 }
 
 double UnitsSpec::second() const { return time == "ms" ? 1000.0 : 1.0; }
+
+std::optional<std::string> UnitsSpec::force() const {
+  if (!mass) return std::nullopt;
+  static const std::map<std::string, double> metres = {
+      {"m", 1.0}, {"cm", 0.01}, {"mm", 1e-3}, {"km", 1000.0}, {"in", 0.0254}, {"ft", 0.3048}};
+  static const std::map<std::string, double> kilograms = {{"kg", 1.0}, {"t", 1000.0}};
+  const double second = time == "ms" ? 1e-3 : 1.0;
+  const double newtons = kilograms.at(*mass) * metres.at(length) / (second * second);
+  for (const auto& [name, size] : {std::pair{"N", 1.0}, {"kN", 1e3}, {"MN", 1e6}, {"mN", 1e-3}})
+    if (std::abs(newtons / size - 1.0) < 1e-12) return name;
+  return *mass + "·" + length + "/" + time + "²";
+}
 
 }  // namespace pound::builder

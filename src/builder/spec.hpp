@@ -159,11 +159,15 @@ struct ContactSpec {
 
 // The model's units, for converting records: only length and time matter.
 struct UnitsSpec {
-  std::string length = "m";  // m, cm, mm, km, in, ft
-  std::string time = "s";    // s, ms
+  std::string length = "m";         // m, cm, mm, km, in, ft
+  std::string time = "s";           // s, ms
+  std::optional<std::string> mass;  // kg, t: with it, forces have a unit too
   // The acceleration of gravity (9.80665 m/s^2) in these units.
   double gravity() const;
   double second() const;  // one second in these units of time
+  // The force unit mass x length / time^2 ("N", "kN", "MN", "mN", else the product written out);
+  // none without a mass unit.
+  std::optional<std::string> force() const;
 };
 
 // Rayleigh damping C = a0 M + a1 K of the linear elements: `ratio` at two periods (or at the

@@ -898,6 +898,9 @@ const Fields<UnitsSpec>& unit_fields() {
           .always_written(),
       optional("time", &UnitsSpec::time, names_choice({"s", "ms"}), "time unit of the model")
           .always_written(),
+      optional("mass", &UnitsSpec::mass, names_choice({"kg", "t"}),
+               "mass unit of the model: with it the outputs name the force unit (kg m/s²: N, "
+               "t m/s²: kN, t mm/s²: N ...)"),
   };
   return fields;
 }
@@ -1368,7 +1371,8 @@ const Fields<ModelSpec>& model_list() {
           },
           "what the summary reports beyond links"),
       optional("units", &ModelSpec::units, Object<UnitsSpec>{unit_fields()},
-               "the model's units, for records in g"),
+               "the model's units: for records in g, and named in the outputs (summary.json, "
+               "plots)"),
       optional("damping", &ModelSpec::damping,
                Object<DampingSpec>{damping_fields(), Docs::own_table},
                "Rayleigh damping of the linear elements"),

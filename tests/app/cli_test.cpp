@@ -435,6 +435,13 @@ TEST_F(Cli, ModelRunsRecordTheirOwnExcitationsAsTheModelScalesThem) {
   EXPECT_NEAR(e["pga_g"].get<double>(), 0.4, 1e-15);
   EXPECT_FALSE(e.contains("replaced_by"));
   EXPECT_FALSE(summary.contains("model_title"));
+  // Issue 16 item 5: the model's units block, named (its mass unit gives the force unit).
+  EXPECT_EQ(summary["units"], json({{"length", "m"},
+                                    {"time", "s"},
+                                    {"acceleration", "m/s²"},
+                                    {"mass", "kg"},
+                                    {"force", "N"},
+                                    {"moment", "N·m"}}));
   EXPECT_EQ(e["sha1"], pound::io::sha1_hex(read_text(fs::path(POUND_SOURCE_DIR) / "ground_motions" /
                                                      "synthetic_firm_01.AT2")));
 }
