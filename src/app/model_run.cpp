@@ -120,19 +120,32 @@ Solved solve(PreparedRun& run) {
   return solved;
 }
 
+// Excitation k as applied: the factor on the record as read (with a batch's IDA factor), the
+// resulting PGA in model units and in g, and who replaced the model's record (empty if none).
+struct AppliedRecord {
+  double factor = 1.0, pga = 0.0, pga_g = 0.0;
+  std::string replaced_by;
+};
+
+AppliedRecord applied_record(const LoadedModel& loaded, std::size_t k) {
+  const double factor = loaded.built.excitation_factors.at(k);
+  const double pga = factor * loaded.records[k].peak();
+  return {factor, pga, pga / loaded.spec.units.gravity(),
+          k == 0 ? loaded.first_record_replaced_by : std::string()};
+}
+
 // The case's record as applied, in g: its peak and the set's intensity measure.
 void summarise_record(const LoadedModel& loaded, const builder::IntensityMeasure& intensity,
                       results::CaseSummary& c) {
   if (loaded.records.empty() || loaded.built.excitation_factors.empty()) return;
-  const double gravity = loaded.spec.units.gravity();
-  const double factor = loaded.built.excitation_factors.front();
-  const model::GroundMotion& record = loaded.records.front();
-  c.pga_g = factor * record.peak() / gravity;
-  c.intensity =
-      intensity.type == builder::IntensityKind::sa
-          ? factor * model::spectral_acceleration(record, intensity.period, intensity.damping) /
-                gravity
-          : *c.pga_g;
+  const AppliedRecord applied = applied_record(loaded, 0);
+  c.pga_g = applied.pga_g;
+  c.intensity = intensity.type == builder::IntensityKind::sa
+                    ? applied.factor *
+                          model::spectral_acceleration(loaded.records.front(), intensity.period,
+                                                       intensity.damping) /
+                          loaded.spec.units.gravity()
+                    : applied.pga_g;
 }
 
 // The verification of a rod pair against the exact solution. The exact solution has limits of
@@ -177,28 +190,23 @@ io::Document scaling_document(const builder::ExcitationSpec& e) {
 }
 
 // Each excitation as applied, so that a run can be traced to its records: the file (as opened)
-// and its SHA-1, format, units, the scaling asked for, the factor applied (with a batch's IDA
-// factor) and the resulting PGA.
+// and its SHA-1, format, units, the scaling asked for, the factor applied and the resulting PGA.
 std::vector<io::Document> excitation_documents(const LoadedModel& loaded) {
   std::vector<io::Document> items;
-  const double gravity = loaded.spec.units.gravity();
   for (std::size_t k = 0; k < loaded.records.size(); ++k) {
-    const builder::ExcitationSpec& e = loaded.spec.excitations[k];
-    const double factor = loaded.built.excitation_factors.at(k);
-    const double pga = factor * loaded.records[k].peak();
+    const AppliedRecord applied = applied_record(loaded, k);
     io::Document item;
     item.set("record", loaded.record_paths[k])
         .set("sha1", loaded.record_sources[k].sha1)
         .set("format", loaded.record_sources[k].format)
-        .set("units", e.units)
+        .set("units", loaded.spec.excitations[k].units)
         .set("points", static_cast<long>(loaded.records[k].acceleration.size()))
         .set("dt", loaded.records[k].time_step)
-        .set("scaling", scaling_document(e))
-        .set("factor", factor)
-        .set("pga", pga)
-        .set("pga_g", pga / gravity);
-    if (k == 0 && !loaded.first_record_replaced_by.empty())
-      item.set("replaced_by", loaded.first_record_replaced_by);
+        .set("scaling", scaling_document(loaded.spec.excitations[k]))
+        .set("factor", applied.factor)
+        .set("pga", applied.pga)
+        .set("pga_g", applied.pga_g);
+    if (!applied.replaced_by.empty()) item.set("replaced_by", applied.replaced_by);
     items.push_back(item);
   }
   return items;
@@ -215,15 +223,12 @@ std::string run_title(const LoadedModel& loaded, const std::string& model_path) 
 // A line per excitation for the report: what was applied, from which file.
 std::string excitation_lines(const LoadedModel& loaded) {
   std::string text;
-  const double gravity = loaded.spec.units.gravity();
   for (std::size_t k = 0; k < loaded.records.size(); ++k) {
-    const double factor = loaded.built.excitation_factors.at(k);
-    text += fmt::format("  record {} (sha1 {}): scale factor {:.4g}, PGA {:.4g} g{}\n",
-                        loaded.record_paths[k], loaded.record_sources[k].sha1.substr(0, 12), factor,
-                        factor * loaded.records[k].peak() / gravity,
-                        k == 0 && !loaded.first_record_replaced_by.empty()
-                            ? fmt::format(" (replaced by {})", loaded.first_record_replaced_by)
-                            : "");
+    const AppliedRecord applied = applied_record(loaded, k);
+    text += fmt::format(
+        "  record {} (sha1 {}): scale factor {:.4g}, PGA {:.4g} g{}\n", loaded.record_paths[k],
+        loaded.record_sources[k].sha1.substr(0, 12), applied.factor, applied.pga_g,
+        applied.replaced_by.empty() ? "" : fmt::format(" (replaced by {})", applied.replaced_by));
   }
   return text;
 }

@@ -13,7 +13,6 @@ std::vector<Index> every(std::size_t count) {
 
 ResolvedRecorder resolve_recorder(const Resolver& resolver, const RecorderSpec& recorder,
                                   std::size_t index, std::size_t link_count) {
-  const bool nodes = recorder.type == RecorderKind::node || recorder.type == RecorderKind::spectrum;
   ResolvedRecorder resolved{recorder.type,
                             {},
                             recorder.file,
@@ -40,15 +39,24 @@ ResolvedRecorder resolve_recorder(const Resolver& resolver, const RecorderSpec& 
   }
   for (std::size_t i = 0; i < recorder.ids.size(); ++i) {
     const std::string& id = recorder.ids[i];
-    if (recorder.type == RecorderKind::element)
-      resolved.items.push_back(
-          resolver.element(id, fmt::format("/recorders/{}/elements/{}", index, i)));
-    else if (nodes)
-      resolved.items.push_back(resolver.node(id, fmt::format("/recorders/{}/nodes/{}", index, i)));
-    else
-      resolved.items.push_back(resolver.link(id, fmt::format("/recorders/{}/links/{}", index, i)));
+    switch (recorder.type) {
+      case RecorderKind::link:
+        resolved.items.push_back(
+            resolver.link(id, fmt::format("/recorders/{}/links/{}", index, i)));
+        break;
+      case RecorderKind::element:
+        resolved.items.push_back(
+            resolver.element(id, fmt::format("/recorders/{}/elements/{}", index, i)));
+        break;
+      case RecorderKind::node:
+      case RecorderKind::spectrum:
+        resolved.items.push_back(
+            resolver.node(id, fmt::format("/recorders/{}/nodes/{}", index, i)));
+        break;
+    }
   }
-  if (!nodes && recorder.ids.empty()) resolved.items = every(link_count);
+  if (recorder.type == RecorderKind::link && recorder.ids.empty())
+    resolved.items = every(link_count);
   return resolved;
 }
 

@@ -185,10 +185,11 @@ std::string to_npy(const Table& table) {
   out.reserve(out.size() + rows * columns * sizeof(double));
   for (std::size_t r = 0; r < rows; ++r) {
     if (labelled) {
-      std::u32string label = labels.at(r);
-      label.resize(label_width, U'\0');  // NumPy pads with NUL
-      for (char32_t point : label)
+      const std::u32string& label = labels.at(r);
+      for (std::size_t i = 0; i < label_width; ++i) {
+        const char32_t point = i < label.size() ? label[i] : U'\0';  // NumPy pads with NUL
         for (int b = 0; b < 4; ++b) out.push_back(static_cast<char>((point >> (8 * b)) & 0xff));
+      }
     }
     for (std::size_t c = 0; c < columns; ++c) record[c] = table.values[c][r];
     out.append(reinterpret_cast<const char*>(record.data()), columns * sizeof(double));

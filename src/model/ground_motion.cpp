@@ -58,9 +58,7 @@ double y_minus_sin(double y) {
 // opposite sign for short periods, and their sum rounded separately would lose digits. Likewise
 // 1 - a11, 1 - a22 and dt - a12 are formed from expm1, 2 sin^2(y/2) and y - sin y so that long
 // periods (w dt << 1) keep theirs.
-using StepMap = OscillatorStep;
-
-StepMap nigam_jennings_map(double omega, double zeta, double dt) {
+OscillatorStep nigam_jennings_map(double omega, double zeta, double dt) {
   const double root = std::sqrt(1.0 - zeta * zeta);
   const double omega_d = omega * root;
   const double x = zeta * omega * dt, y = omega_d * dt;
@@ -70,7 +68,7 @@ StepMap nigam_jennings_map(double omega, double zeta, double dt) {
   const double one_minus_ec = one_minus_e + one_minus_c - one_minus_e * one_minus_c;
   const double skew = e * zeta / root * s;  // E z' S
 
-  StepMap map{};
+  OscillatorStep map{};
   map.a11 = e * c + skew;
   map.a12 = e * s / omega_d;
   map.a21 = -e * omega * s / root;
@@ -90,21 +88,26 @@ StepMap nigam_jennings_map(double omega, double zeta, double dt) {
   return map;
 }
 
+// One step of the recurrence from (u, v), the base going linearly from a_start to a_end.
+void step(const OscillatorStep& m, double a_start, double a_end, double& u, double& v) {
+  const double increment = a_end - a_start;
+  const double u_next = m.a11 * u + m.a12 * v + m.step_u * a_start + m.ramp_u * increment;
+  v = m.a21 * u + m.a22 * v + m.step_v * a_start + m.ramp_v * increment;
+  u = u_next;
+}
+
 // Runs the recurrence from rest, calling visit(k, u, v) at every sample k.
 template <class Visit>
 void integrate_sdof(const GroundMotion& motion, double period, double damping_ratio, Visit visit) {
   require_samples(motion);
   require_oscillator(period, damping_ratio);
   const double omega = 2.0 * std::numbers::pi / period;
-  const StepMap m = nigam_jennings_map(omega, damping_ratio, motion.time_step);
+  const OscillatorStep m = nigam_jennings_map(omega, damping_ratio, motion.time_step);
   const std::vector<double>& a = motion.acceleration;
   double u = 0.0, v = 0.0;
   visit(std::size_t{0}, u, v);
   for (std::size_t k = 0; k + 1 < a.size(); ++k) {
-    const double increment = a[k + 1] - a[k];
-    const double u_next = m.a11 * u + m.a12 * v + m.step_u * a[k] + m.ramp_u * increment;
-    v = m.a21 * u + m.a22 * v + m.step_v * a[k] + m.ramp_v * increment;
-    u = u_next;
+    step(m, a[k], a[k + 1], u, v);
     visit(k + 1, u, v);
   }
 }
@@ -139,11 +142,7 @@ void ResponseOscillator::advance(double base_start, double base_end, double dt) 
     map_ = nigam_jennings_map(omega_, damping_ratio_, dt);
     map_dt_ = dt;
   }
-  const double increment = base_end - base_start;
-  const double u =
-      map_.a11 * u_ + map_.a12 * v_ + map_.step_u * base_start + map_.ramp_u * increment;
-  v_ = map_.a21 * u_ + map_.a22 * v_ + map_.step_v * base_start + map_.ramp_v * increment;
-  u_ = u;
+  step(map_, base_start, base_end, u_, v_);
   peak_displacement_ = std::max(peak_displacement_, std::abs(u_));
 }
 

@@ -48,7 +48,7 @@ std::vector<double> default_spectrum_periods();
 // The coefficients of one step of the exact recurrence below (ground_motion.cpp derives them).
 struct OscillatorStep {
   double a11, a12, a21, a22;
-  double step_u, ramp_u, step_v, ramp_v;
+  double step_u, ramp_u, step_v, ramp_v;  // b11 + b12, b12, b21 + b22, b22
 };
 
 // A linear SDOF (period, damping ratio) from rest on a base whose acceleration is linear within

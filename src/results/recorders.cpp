@@ -27,10 +27,10 @@ void LinkQuantities::take(const integrators::State& state, double* values) const
   }
 }
 
-NodeQuantities::NodeQuantities(std::vector<std::vector<Index>> equations, std::vector<Index> nodes,
+NodeQuantities::NodeQuantities(std::vector<std::vector<Index>> equations,
+                               std::vector<std::vector<int>> directions, std::vector<Index> nodes,
                                const std::vector<std::string>& ids,
-                               builder::AccelerationFrame accelerations, GroundAcceleration& ground,
-                               std::vector<std::vector<int>> directions)
+                               builder::AccelerationFrame accelerations, GroundAcceleration& ground)
     : equations_(std::move(equations)),
       nodes_(std::move(nodes)),
       relative_(accelerations != builder::AccelerationFrame::absolute),
@@ -38,11 +38,6 @@ NodeQuantities::NodeQuantities(std::vector<std::vector<Index>> equations, std::v
       ground_(ground),
       directions_(std::move(directions)) {
   static const char* kDirection[] = {"x", "y", "rz"};
-  if (directions_.empty())
-    for (const std::vector<Index>& node : equations_) {
-      std::vector<int>& each = directions_.emplace_back();
-      for (std::size_t i = 0; i < node.size(); ++i) each.push_back(static_cast<int>(i));
-    }
   for (std::size_t k = 0; k < ids.size(); ++k)
     for (std::size_t i = 0; i < equations_[k].size(); ++i) {
       const std::string name = ids[k] + ".";
@@ -69,15 +64,17 @@ void NodeQuantities::take(const integrators::State& state, double* values) const
 ElementQuantities::ElementQuantities(std::vector<std::shared_ptr<const model::Element>> elements,
                                      std::vector<std::vector<Index>> equations)
     : elements_(std::move(elements)), equations_(std::move(equations)) {
-  for (const auto& element : elements_)
-    for (std::string_view force : element->end_force_names())
-      names_.push_back(element->id() + "." + std::string(force));
+  for (std::size_t k = 0; k < elements_.size(); ++k) {
+    for (std::string_view force : elements_[k]->end_force_names())
+      names_.push_back(elements_[k]->id() + "." + std::string(force));
+    displacements_.emplace_back(static_cast<Index>(equations_[k].size()));
+  }
 }
 
 void ElementQuantities::take(const integrators::State& state, double* values) const {
   for (std::size_t k = 0; k < elements_.size(); ++k) {
     const std::vector<Index>& equations = equations_[k];
-    Vector displacement(static_cast<Index>(equations.size()));
+    Vector& displacement = displacements_[k];
     for (std::size_t d = 0; d < equations.size(); ++d)
       displacement[static_cast<Index>(d)] =
           equations[d] >= 0 ? state.displacement[equations[d]] : 0.0;
@@ -151,8 +148,7 @@ Table EnvelopeRecorder::table() const {
   table.label_column = "quantity";
   table.labels = quantities_->names();
   for (std::size_t q = 0; q < row_.size(); ++q)
-    append_row(table, {max_[q], time_of_max_[q], min_[q], time_of_min_[q],
-                       std::max(std::abs(max_[q]), std::abs(min_[q]))});
+    append_row(table, {max_[q], time_of_max_[q], min_[q], time_of_min_[q], abs_max(q)});
   return table;
 }
 

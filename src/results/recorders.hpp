@@ -61,10 +61,11 @@ class LinkQuantities final : public Quantities {
 class NodeQuantities final : public Quantities {
  public:
   // equations[k][i]: equation of node k in direction directions[k][i] (0 x, 1 y, 2 rz), or -1
-  // where fixed; nodes[k] its index. Without directions, equations[k][i] is direction i.
-  NodeQuantities(std::vector<std::vector<Index>> equations, std::vector<Index> nodes,
+  // where fixed; nodes[k] its index.
+  NodeQuantities(std::vector<std::vector<Index>> equations,
+                 std::vector<std::vector<int>> directions, std::vector<Index> nodes,
                  const std::vector<std::string>& ids, builder::AccelerationFrame accelerations,
-                 GroundAcceleration& ground, std::vector<std::vector<int>> directions = {});
+                 GroundAcceleration& ground);
   void take(const integrators::State& state, double* values) const override;
 
  private:
@@ -88,6 +89,7 @@ class ElementQuantities final : public Quantities {
  private:
   std::vector<std::shared_ptr<const model::Element>> elements_;
   std::vector<std::vector<Index>> equations_;
+  mutable std::vector<Vector> displacements_;  // scratch: each element's u_e
 };
 
 // A time history: columns time and the quantities, a row per sampled step.
@@ -125,7 +127,6 @@ class EnvelopeRecorder final : public Recorder {
   double held_values(double, double) const override { return 0.0; }
   // The larger of |max| and |min| of quantity q so far.
   double abs_max(std::size_t q) const { return std::max(std::abs(max_[q]), std::abs(min_[q])); }
-  std::size_t count() const { return row_.size(); }
 
  private:
   std::string file_;

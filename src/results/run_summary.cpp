@@ -54,8 +54,8 @@ std::unique_ptr<Quantities> node_quantities(const builder::BuiltModel& built,
     std::vector<Index>& per_direction = equations.emplace_back();
     for (int d : directions.back()) per_direction.push_back(dofs.equation(node, d));
   }
-  return std::make_unique<NodeQuantities>(std::move(equations), spec.items, ids, spec.accelerations,
-                                          ground, std::move(directions));
+  return std::make_unique<NodeQuantities>(std::move(equations), std::move(directions), spec.items,
+                                          ids, spec.accelerations, ground);
 }
 
 // A node's free translational directions (x when it has none: its support's motion).
@@ -114,31 +114,6 @@ std::vector<Index> normal_rows(const integrators::LinkSet& links) {
   std::vector<Index> rows;
   for (Index k = 0; k < links.count(); ++k) rows.push_back(links.row(k));
   return rows;
-}
-
-// Where each drift monitor's base element's end forces sit in the envelope of base_forces().
-std::vector<std::optional<std::size_t>> base_rows(const builder::BuiltModel& built) {
-  std::vector<std::optional<std::size_t>> rows;
-  std::size_t next = 0;
-  for (const builder::DriftMonitor& m : built.drift_monitors) {
-    if (!m.base_element) {
-      rows.emplace_back();
-      continue;
-    }
-    rows.emplace_back(next);
-    next +=
-        built.model.elements[static_cast<std::size_t>(*m.base_element)]->end_force_names().size();
-  }
-  return rows;
-}
-
-std::unique_ptr<EnvelopeRecorder> base_forces(const builder::BuiltModel& built,
-                                              const model::DofMap& dofs) {
-  std::vector<Index> elements;
-  for (const builder::DriftMonitor& m : built.drift_monitors)
-    if (m.base_element) elements.push_back(*m.base_element);
-  if (elements.empty()) return nullptr;
-  return std::make_unique<EnvelopeRecorder>("", element_quantities(built, dofs, elements));
 }
 
 std::vector<DriftMonitors::Where> drift_places(const builder::BuiltModel& built,
@@ -210,9 +185,24 @@ RunObservers::RunObservers(const builder::BuiltModel& built,
       energy_(system, built.analysis.integrator.acceleration_energy()),
       passive_links_(!system.has_link_motion()),
       drifts_(drift_places(built, system.dofs()), ground_),
-      base_rows_(base_rows(built)),
-      base_forces_(base_forces(built, system.dofs())),
-      joints_(joint_places(built, system), ground_) {}
+      joints_(joint_places(built, system), ground_) {
+  std::vector<Index> elements;
+  std::size_t first = 0;
+  for (const builder::DriftMonitor& m : built.drift_monitors) {
+    if (!m.base_element) {
+      base_rows_.emplace_back();
+      continue;
+    }
+    elements.push_back(*m.base_element);
+    const std::size_t count =
+        built.model.elements[static_cast<std::size_t>(*m.base_element)]->end_force_names().size();
+    base_rows_.push_back(BaseRows{first, count});
+    first += count;
+  }
+  if (!elements.empty())
+    base_forces_ =
+        std::make_unique<EnvelopeRecorder>("", element_quantities(built, system.dofs(), elements));
+}
 
 void RunObservers::record(const integrators::State& state) {
   for (auto& recorder : recorders_) recorder->record(state);
@@ -241,17 +231,19 @@ void RunObservers::record(const integrators::State& state) {
                      "meaninglessly large)");
 }
 
+std::optional<double> RunObservers::base_force(std::size_t monitor, std::size_t which) const {
+  const std::optional<BaseRows>& rows = base_rows_.at(monitor);
+  if (!rows || which >= rows->count) return std::nullopt;
+  return base_forces_->abs_max(rows->first + which);
+}
+
+// A beam's end forces are N_i, V_i, M_i, ...; a truss has only N.
 std::optional<double> RunObservers::base_shear(std::size_t monitor) const {
-  const std::optional<std::size_t> row = base_rows_.at(monitor);
-  // A beam's end forces are N_i, V_i, M_i, ...; a truss has only N.
-  if (!row || *row + 1 >= base_forces_->count()) return std::nullopt;
-  return base_forces_->abs_max(*row + 1);
+  return base_force(monitor, 1);
 }
 
 std::optional<double> RunObservers::base_moment(std::size_t monitor) const {
-  const std::optional<std::size_t> row = base_rows_.at(monitor);
-  if (!row || *row + 2 >= base_forces_->count()) return std::nullopt;
-  return base_forces_->abs_max(*row + 2);
+  return base_force(monitor, 2);
 }
 
 void check_histories_fit(const std::vector<std::unique_ptr<Recorder>>& recorders,

@@ -51,10 +51,15 @@ class RunObservers {
   // which then feed energy in through them.
   bool passive_links_;
   DriftMonitors drifts_;
-  // The envelope of the drift monitors' base elements' end forces; base_rows_[k]: where monitor
-  // k's first end force is in it.
-  std::vector<std::optional<std::size_t>> base_rows_;
+  // The envelope of the drift monitors' base elements' end forces, and where monitor k's are in
+  // it (none without a base element).
+  struct BaseRows {
+    std::size_t first = 0, count = 0;  // its element's end forces: N_i, V_i, M_i, ... or N
+  };
+  std::vector<std::optional<BaseRows>> base_rows_;
   std::unique_ptr<EnvelopeRecorder> base_forces_;
+  // Peak |end force `which`| of monitor k's base element; none past the element's forces.
+  std::optional<double> base_force(std::size_t monitor, std::size_t which) const;
   JointMonitors joints_;
   std::vector<Observer*> extra_;
 };

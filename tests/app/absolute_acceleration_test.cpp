@@ -16,6 +16,7 @@
 #include <string>
 
 #include "app/model_run.hpp"
+#include "support/tables.hpp"
 
 namespace pound::app {
 namespace {
@@ -68,13 +69,7 @@ Oscillator run_oscillator(bool moving_support) {
           outcome.case_summary.max_top_acceleration};
 }
 
-const std::vector<double>& column(const Table& table, const std::string& name) {
-  for (std::size_t c = 0; c < table.columns.size(); ++c)
-    if (table.columns[c] == name) return table.values[c];
-  ADD_FAILURE() << "no column " << name;
-  static const std::vector<double> none;
-  return none;
-}
+using testing::column;
 
 void expect_equation_of_motion(bool moving_support) {
   const Oscillator run = run_oscillator(moving_support);

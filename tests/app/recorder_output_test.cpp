@@ -16,20 +16,26 @@
 
 #include "app/model_run.hpp"
 #include "model/ground_motion.hpp"
+#include "support/tables.hpp"
 
 namespace pound::app {
 namespace {
 
 namespace fs = std::filesystem;
 
-// The bundled buildings (10 s of the record) with `recorders`, `separation` apart (0.5 m: they
-// never meet, so the run is linear, with no cut steps); the run's tables by file name.
-std::map<std::string, Table> run_buildings(const nlohmann::json& recorders,
-                                           double separation = 0.03) {
+// The bundled buildings, their record named from anywhere.
+nlohmann::json bundled_buildings() {
   const fs::path source = fs::path(POUND_SOURCE_DIR) / "models";
   nlohmann::json model = nlohmann::json::parse(std::ifstream(source / "adjacent_buildings.json"));
   model["excitations"][0]["record"] =
       (source / model["excitations"][0]["record"].get<std::string>()).string();
+  return model;
+}
+
+// The bundled buildings (10 s of the record) with `recorders`, `separation` apart (0.5 m: they
+// never meet, so the run is linear, with no cut steps).
+RunOutcome run_buildings_model(const nlohmann::json& recorders, double separation) {
+  nlohmann::json model = bundled_buildings();
   model["analysis"]["duration"] = 10.0;
   model["generators"][0]["separation"] = separation;
   model["recorders"] = recorders;
@@ -40,19 +46,20 @@ std::map<std::string, Table> run_buildings(const nlohmann::json& recorders,
   request.model_path = (folder / "model.json").string();
   const RunOutcome outcome = run_model(request);
   fs::remove_all(folder);
+  return outcome;
+}
+
+// The same run's tables by file name.
+std::map<std::string, Table> run_buildings(const nlohmann::json& recorders,
+                                           double separation = 0.03) {
+  const RunOutcome outcome = run_buildings_model(recorders, separation);
   EXPECT_TRUE(outcome.failure.empty()) << outcome.failure;
   std::map<std::string, Table> tables;
   for (const auto& [file, table] : outcome.histories) tables[file] = table;
   return tables;
 }
 
-const std::vector<double>& column(const Table& table, const std::string& name) {
-  for (std::size_t c = 0; c < table.columns.size(); ++c)
-    if (table.columns[c] == name) return table.values[c];
-  ADD_FAILURE() << "no column " << name;
-  static const std::vector<double> none;
-  return none;
-}
+using testing::column;
 
 const nlohmann::json kRoofs = {"pair.left.f5", "pair.right.f8"};
 
@@ -189,15 +196,19 @@ TEST(RecorderOutput, ElementEndForcesOfACantileverAreTheStaticOnes) {
   std::ofstream(folder / "model.json") << R"({
     "dimension": 2,
     "nodes": [{"id": "base", "x": 0, "y": 0}, {"id": "mid", "x": 0, "y": 2},
-              {"id": "tip", "x": 0, "y": 4}],
+              {"id": "tip", "x": 0, "y": 4}, {"id": "anchor", "x": 0, "y": 8}],
     "materials": [{"id": "steel", "youngs_modulus": 2e11, "density": 7850}],
     "elements": [{"id": "e1", "type": "beam", "nodes": ["base", "mid"], "material": "steel",
                   "area": 0.01, "inertia": 1e-4},
                  {"id": "e2", "type": "beam", "nodes": ["mid", "tip"], "material": "steel",
-                  "area": 0.01, "inertia": 1e-4}],
-    "supports": [{"node": "base", "fix": ["x", "y", "rz"]}],
+                  "area": 0.01, "inertia": 1e-4},
+                 {"id": "tie", "type": "truss", "nodes": ["anchor", "tip"], "material": "steel",
+                  "area": 1e-4}],
+    "supports": [{"node": "base", "fix": ["x", "y", "rz"]}, {"node": "anchor", "fix": ["x", "y"]}],
     "loads": [{"node": "tip", "x": 25000}],
-    "monitors": {"drifts": [{"id": "column", "kind": "pier", "bottom": "base", "top": "tip",
+    "monitors": {"drifts": [{"id": "tie", "bottom": "anchor", "top": "tip", "height": 4,
+                             "base_element": "tie"},
+                            {"id": "column", "kind": "pier", "bottom": "base", "top": "tip",
                              "height": 4, "base_element": "e1"}]},
     "analysis": {"time_step": 0.001, "duration": 0.01, "initial_state": "static"},
     "recorders": [{"type": "element", "elements": ["e1", "e2"], "file": "members.csv"},
@@ -229,6 +240,8 @@ TEST(RecorderOutput, ElementEndForcesOfACantileverAreTheStaticOnes) {
   const nlohmann::json summary = nlohmann::json::parse(outcome.summary.dump());
   EXPECT_NEAR(summary["piers"][0]["peak_shear"].get<double>(), P, 1e-9 * P);
   EXPECT_NEAR(summary["piers"][0]["peak_base_moment"].get<double>(), P * L, 1e-9 * P * L);
+  // A vertical tie at the tip carries no load here, and a truss has no shear: none reported.
+  EXPECT_FALSE(summary["storeys"][0].contains("peak_shear"));
   const Table& base = outcome.histories.at(1).second;
   EXPECT_EQ(base.labels.at(1), "e1.V_i");
   EXPECT_NEAR(base.values[4][1], P, 1e-9 * P);  // abs_max
@@ -237,19 +250,8 @@ TEST(RecorderOutput, ElementEndForcesOfACantileverAreTheStaticOnes) {
 // A shear-building storey's shear is its stiffness times its drift at every step (its floors
 // hold the mass, its column none): apart, with no pounding, the peaks match exactly.
 TEST(RecorderOutput, StoreyShearOfTheBuildingsIsStiffnessTimesDrift) {
-  const fs::path source = fs::path(POUND_SOURCE_DIR) / "models";
-  nlohmann::json model = nlohmann::json::parse(std::ifstream(source / "adjacent_buildings.json"));
-  model["excitations"][0]["record"] =
-      (source / model["excitations"][0]["record"].get<std::string>()).string();
-  model["analysis"]["duration"] = 5.0;
-  model["generators"][0]["separation"] = 0.5;
-  const fs::path folder = fs::temp_directory_path() / fmt::format("pound_storeys_{}", ::getpid());
-  fs::create_directories(folder);
-  std::ofstream(folder / "model.json") << model.dump();
-  RunRequest request;
-  request.model_path = (folder / "model.json").string();
-  const RunOutcome outcome = run_model(request);
-  fs::remove_all(folder);
+  const nlohmann::json model = bundled_buildings();
+  const RunOutcome outcome = run_buildings_model(model["recorders"], 0.5);
   ASSERT_TRUE(outcome.failure.empty()) << outcome.failure;
   const nlohmann::json summary = nlohmann::json::parse(outcome.summary.dump());
   double worst = 0.0;
