@@ -14,6 +14,7 @@ import csv
 import importlib
 import json
 import os
+import re
 import sys
 import warnings
 
@@ -154,10 +155,11 @@ def csv_reader(path):
 
 
 def strip_header(path, header):
-    """A CSV header row (None: the file is empty) with its names stripped."""
+    """A CSV header row (None: the file is empty) with its names stripped, and without the
+    " [unit]" pound writes after a name (the units are summary.json's)."""
     if header is None:
         raise InputError(f"{path}: empty file (no header line)")
-    return [column.strip() for column in header]
+    return [re.sub(r"\s*\[[^\[\]]*\]$", "", column.strip()) for column in header]
 
 
 def check_column_names(path, header):

@@ -56,7 +56,9 @@ def units_of(summary):
 
     def named(key):
         value = given.get(key)
-        return value if isinstance(value, str) and value and "own" not in value else MODEL_UNITS
+        if not isinstance(value, str) or not value or "own" in value:
+            return MODEL_UNITS
+        return value.replace("^2", "²").replace("*", "·")  # pound's ASCII, typeset
 
     units = {key: named(key) for key in ("length", "time", "force", "acceleration", "moment")}
     force, length = units["force"], units["length"]

@@ -236,12 +236,15 @@ std::string excitation_lines(const LoadedModel& loaded) {
 // The units the numbers are in: length and time always (m and s unless the model says otherwise:
 // records in g are converted with them); force, moment and mass only with a mass unit.
 io::Document units_document(const builder::UnitsSpec& units) {
+  const UnitNames names = units.names();
   io::Document doc;
   doc.set("length", units.length)
       .set("time", units.time)
-      .set("acceleration", fmt::format("{}/{}²", units.length, units.time));
-  if (const std::optional<std::string> force = units.force())
-    doc.set("mass", *units.mass).set("force", *force).set("moment", *force + "·" + units.length);
+      .set("acceleration", names.of(Dimension::acceleration));
+  if (units.mass)
+    doc.set("mass", *units.mass)
+        .set("force", names.of(Dimension::force))
+        .set("moment", names.of(Dimension::moment));
   else
     doc.set("force", "the model's own (give units.mass to name it)");
   return doc;

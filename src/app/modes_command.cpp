@@ -107,14 +107,14 @@ Table shapes_table(const LoadedModel& loaded, const assembly::StructuralSystem& 
   std::vector<std::string> columns;
   for (const ListedMode& mode : modes) columns.push_back(fmt::format("mode_{}", mode.number));
   Table table = table_with_columns(columns);
-  table.label_column = "dof";
+  std::vector<std::string>& labels = table.text_columns.emplace_back(TextColumn{"dof", {}}).values;
   const model::DofMap& dofs = system.dofs();
   for (Index node = 0; node < static_cast<Index>(loaded.built.model.nodes.size()); ++node)
     for (int d = 0; d < dofs.dofs_per_node(); ++d) {
       const Index row = dofs.equation(node, d);
       if (row < 0) continue;
-      table.labels.push_back(loaded.built.model.nodes[static_cast<std::size_t>(node)].id + "." +
-                             kDirection[d]);
+      labels.push_back(loaded.built.model.nodes[static_cast<std::size_t>(node)].id + "." +
+                       kDirection[d]);
       for (std::size_t m = 0; m < modes.size(); ++m)
         table.values[m].push_back(modes[m].shape[row] + 0.0);  // no -0
     }

@@ -4,7 +4,9 @@ namespace pound::assembly {
 namespace {
 
 constexpr int kDirections[] = {0, 1, 2};
-constexpr std::string_view kEndForces[] = {"N_i", "V_i", "M_i", "N_j", "V_j", "M_j"};
+constexpr model::EndForce kEndForces[] = {{"N_i", Dimension::force},  {"V_i", Dimension::force},
+                                          {"M_i", Dimension::moment}, {"N_j", Dimension::force},
+                                          {"V_j", Dimension::force},  {"M_j", Dimension::moment}};
 
 }  // namespace
 
@@ -81,7 +83,7 @@ model::ElementMass Beam::mass() const {
   return {.lumped = Vector{{half, half, 0.0, half, half, 0.0}}};
 }
 
-std::span<const std::string_view> Beam::end_force_names() const { return kEndForces; }
+std::span<const model::EndForce> Beam::end_force_names() const { return kEndForces; }
 
 Vector Beam::end_forces(const Vector& u) const {
   const Eigen::Matrix<double, 6, 1> local = local_stiffness() * (rotation() * u);

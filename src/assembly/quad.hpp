@@ -40,7 +40,7 @@ class Quad final : public model::Element {
   std::span<const int> directions() const override;
   Matrix stiffness() const override;
   model::ElementMass mass() const override;
-  std::span<const std::string_view> end_force_names() const override { return {}; }
+  std::span<const model::EndForce> end_force_names() const override { return {}; }
   Vector end_forces(const Vector&) const override { return {}; }
 
   Eigen::Matrix3d elasticity() const;  // D

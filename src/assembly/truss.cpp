@@ -4,7 +4,7 @@ namespace pound::assembly {
 namespace {
 
 constexpr int kDirections[] = {0, 1};
-constexpr std::string_view kEndForces[] = {"N"};
+constexpr model::EndForce kEndForces[] = {{"N", Dimension::force}};
 
 }  // namespace
 
@@ -37,7 +37,7 @@ model::ElementMass Truss::mass() const {
                                      0.5 * section_.density * section_.area * axis_.length)};
 }
 
-std::span<const std::string_view> Truss::end_force_names() const { return kEndForces; }
+std::span<const model::EndForce> Truss::end_force_names() const { return kEndForces; }
 
 Vector Truss::end_forces(const Vector& u) const {
   double elongation = 0.0;

@@ -33,7 +33,7 @@ class Truss final : public model::Element {
   std::span<const int> directions() const override;
   Matrix stiffness() const override;
   model::ElementMass mass() const override;
-  std::span<const std::string_view> end_force_names() const override;
+  std::span<const model::EndForce> end_force_names() const override;
   Vector end_forces(const Vector& u) const override;
   Matrix geometric_stiffness(const Vector& u, model::GeometricStiffness kind) const override;
 

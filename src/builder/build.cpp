@@ -218,6 +218,7 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
   model.links = resolve_links(resolver, model);
   built.analysis = spec.analysis;
   built.excitation_factors = resolve_excitations(resolver, motions, model);
+  built.units = spec.units.names();
   fit_analysis_to_records(built.analysis, model);
   if (!built.analysis.time_step_auto) check_step_count(built.analysis, spec.source);
   if (spec.damping) {

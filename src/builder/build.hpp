@@ -33,6 +33,7 @@ struct BuiltModel {
   std::optional<RodPairSpec> sole_rod_pair;
   // The factor each record of spec.excitations was multiplied by (its scale times extra_factor).
   std::vector<double> excitation_factors;
+  UnitNames units;  // of spec.units, for the outputs' headers
 };
 
 // The size of the model a spec makes, generators included, known before anything is built (a

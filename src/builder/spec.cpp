@@ -26,7 +26,27 @@ std::optional<std::string> UnitsSpec::force() const {
   const double newtons = kilograms.at(*mass) * metres.at(length) / (second * second);
   for (const auto& [name, size] : {std::pair{"N", 1.0}, {"kN", 1e3}, {"MN", 1e6}, {"mN", 1e-3}})
     if (std::abs(newtons / size - 1.0) < 1e-12) return name;
-  return *mass + "·" + length + "/" + time + "²";
+  return *mass + "*" + length + "/" + time + "^2";
+}
+
+// ASCII, so that a CSV header reads the same in every spreadsheet.
+UnitNames UnitsSpec::names() const {
+  UnitNames units;
+  auto set = [&units](Dimension dimension, std::string name) {
+    units.names[static_cast<std::size_t>(dimension)] = std::move(name);
+  };
+  set(Dimension::time, time);
+  set(Dimension::length, length);
+  set(Dimension::velocity, length + "/" + time);
+  set(Dimension::acceleration, length + "/" + time + "^2");
+  set(Dimension::angle, "rad");
+  set(Dimension::angular_velocity, "rad/" + time);
+  set(Dimension::angular_acceleration, "rad/" + time + "^2");
+  if (const std::optional<std::string> newton = force()) {
+    set(Dimension::force, *newton);
+    set(Dimension::moment, *newton + "*" + length);
+  }
+  return units;
 }
 
 }  // namespace pound::builder

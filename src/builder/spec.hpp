@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/units.hpp"
 #include "integrators/integrator_catalog.hpp"
 #include "integrators/transient_analysis.hpp"
 #include "links/law_registry.hpp"
@@ -168,6 +169,8 @@ struct UnitsSpec {
   // The force unit mass x length / time^2 ("N", "kN", "MN", "mN", else the product written out);
   // none without a mass unit.
   std::optional<std::string> force() const;
+  // The unit of each dimension in these units (forces and moments "" without a mass unit).
+  UnitNames names() const;
 };
 
 // Rayleigh damping C = a0 M + a1 K of the linear elements: `ratio` at two periods (or at the

@@ -8,13 +8,20 @@
 
 namespace pound {
 
+// A column of text (an envelope's quantities and their units): a value per row.
+struct TextColumn {
+  std::string name;
+  std::vector<std::string> values;
+};
+
 struct Table {
   std::vector<std::string> columns;
   std::vector<std::vector<double>> values;  // values[column][row]
-  // A first column of text when label_column is named (an envelope's quantities): a label per
-  // row.
-  std::string label_column;
-  std::vector<std::string> labels;
+  // Each numeric column's unit ("" for none), written into CSV headers as "name [unit]"; empty
+  // when the table names no units.
+  std::vector<std::string> units;
+  // Written before the numeric columns.
+  std::vector<TextColumn> text_columns;
 };
 
 // A table with these columns and no rows yet.

@@ -1267,7 +1267,7 @@ const Fields<RecorderSpec>& recorder_fields() {
                 "node recorders"),
       optional("envelope", &RecorderSpec::envelope, Flag{},
                "instead of the history, a row per quantity: `max`, `time_of_max`, `min`, "
-               "`time_of_min`, `abs_max` over every step (label column `quantity`)")
+               "`time_of_min`, `abs_max` over every step (text columns `quantity` and its `unit`)")
           .when(records_histories, "link, node and element recorders"),
       rule<RecorderSpec>([](JsonObject& object, RecorderSpec& recorder, Context&) {
         const std::optional<JsonValue> every = object.find("every");
@@ -1371,8 +1371,8 @@ const Fields<ModelSpec>& model_list() {
           },
           "what the summary reports beyond links"),
       optional("units", &ModelSpec::units, Object<UnitsSpec>{unit_fields()},
-               "the model's units: for records in g, and named in the outputs (summary.json, "
-               "plots)"),
+               "the model's units: for records in g, and named in the outputs (CSV headers, "
+               "summary.json, plots)"),
       optional("damping", &ModelSpec::damping,
                Object<DampingSpec>{damping_fields(), Docs::own_table},
                "Rayleigh damping of the linear elements"),

@@ -99,14 +99,19 @@ std::string csv_cell(const std::string& text) {
 // and several times faster to write than a fixed 17 digits, which matters for a batch's histories.
 void format_csv(const Table& table, fmt::memory_buffer& text) {
   const std::size_t rows = table.values.empty() ? 0 : table.values.front().size();
-  const bool labelled = !table.label_column.empty();
   text.reserve(64 + (rows + 1) * table.columns.size() * 24);  // one allocation for most tables
-  if (labelled) fmt::format_to(std::back_inserter(text), "{},", csv_cell(table.label_column));
-  for (std::size_t c = 0; c < table.columns.size(); ++c)
-    fmt::format_to(std::back_inserter(text), "{}{}", c ? "," : "", table.columns[c]);
+  for (const TextColumn& column : table.text_columns)
+    fmt::format_to(std::back_inserter(text), "{},", csv_cell(column.name));
+  for (std::size_t c = 0; c < table.columns.size(); ++c) {
+    const bool unit = c < table.units.size() && !table.units[c].empty();
+    fmt::format_to(std::back_inserter(text), "{}{}", c ? "," : "",
+                   unit ? csv_cell(table.columns[c] + " [" + table.units[c] + "]")
+                        : csv_cell(table.columns[c]));
+  }
   text.push_back('\n');
   for (std::size_t r = 0; r < rows; ++r) {
-    if (labelled) fmt::format_to(std::back_inserter(text), "{},", csv_cell(table.labels.at(r)));
+    for (const TextColumn& column : table.text_columns)
+      fmt::format_to(std::back_inserter(text), "{},", csv_cell(column.values.at(r)));
     for (std::size_t c = 0; c < table.values.size(); ++c) {
       if (c) text.push_back(',');
       fmt::format_to(std::back_inserter(text), FMT_COMPILE("{}"), table.values[c][r]);
@@ -150,18 +155,20 @@ std::string python_literal(const std::string& text) {
 
 std::string to_npy(const Table& table) {
   static_assert(std::endian::native == std::endian::little, "the .npy writer assumes '<f8'");
-  const bool labelled = !table.label_column.empty();
-  std::vector<std::u32string> labels;
-  std::size_t label_width = 1;
-  if (labelled)
-    for (const std::string& label : table.labels) {
-      labels.push_back(code_points(label));
-      label_width = std::max(label_width, labels.back().size());
-    }
+  // Each text column as code points, and its field's width (the longest value, at least 1).
+  std::vector<std::vector<std::u32string>> texts;
+  std::vector<std::size_t> widths;
   std::string fields;
-  if (labelled)
-    fmt::format_to(std::back_inserter(fields), "('{}', '<U{}'), ",
-                   python_literal(table.label_column), label_width);
+  for (const TextColumn& column : table.text_columns) {
+    std::vector<std::u32string>& points = texts.emplace_back();
+    std::size_t& width = widths.emplace_back(1);
+    for (const std::string& value : column.values) {
+      points.push_back(code_points(value));
+      width = std::max(width, points.back().size());
+    }
+    fmt::format_to(std::back_inserter(fields), "('{}', '<U{}'), ", python_literal(column.name),
+                   width);
+  }
   for (const std::string& column : table.columns)
     fmt::format_to(std::back_inserter(fields), "('{}', '<f8'), ", python_literal(column));
   const std::size_t rows = table.values.empty() ? 0 : table.values.front().size();
@@ -184,10 +191,10 @@ std::string to_npy(const Table& table) {
   std::vector<double> record(columns);
   out.reserve(out.size() + rows * columns * sizeof(double));
   for (std::size_t r = 0; r < rows; ++r) {
-    if (labelled) {
-      const std::u32string& label = labels.at(r);
-      for (std::size_t i = 0; i < label_width; ++i) {
-        const char32_t point = i < label.size() ? label[i] : U'\0';  // NumPy pads with NUL
+    for (std::size_t t = 0; t < texts.size(); ++t) {
+      const std::u32string& text = texts[t].at(r);
+      for (std::size_t i = 0; i < widths[t]; ++i) {
+        const char32_t point = i < text.size() ? text[i] : U'\0';  // NumPy pads with NUL
         for (int b = 0; b < 4; ++b) out.push_back(static_cast<char>((point >> (8 * b)) & 0xff));
       }
     }

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "core/units.hpp"
 
 namespace pound::model {
 
@@ -55,6 +56,12 @@ struct ElementMass {
   bool is_consistent() const { return consistent.size() > 0; }
 };
 
+// An end force's name (N_i, M_j, ...) and whether it is a force or a moment.
+struct EndForce {
+  std::string_view name;
+  Dimension dimension = Dimension::force;
+};
+
 class Element {
  public:
   virtual ~Element() = default;
@@ -73,9 +80,9 @@ class Element {
   virtual Matrix stiffness() const = 0;
   virtual ElementMass mass() const = 0;
 
-  // Names of its end forces (none when it reports none), and their values for displacements u
-  // over dofs(): in the element's local axes, units of force (moments force x length).
-  virtual std::span<const std::string_view> end_force_names() const = 0;
+  // Its end forces (none when it reports none), and their values for displacements u over
+  // dofs(): in the element's local axes, units of force (moments force x length).
+  virtual std::span<const EndForce> end_force_names() const = 0;
   virtual Vector end_forces(const Vector& u) const = 0;
 
   // Its geometric stiffness over dofs() in global axes under the axial force it carries at

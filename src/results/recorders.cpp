@@ -5,14 +5,21 @@
 
 namespace pound::results {
 
+std::vector<std::string> unit_names(const UnitNames& units,
+                                    const std::vector<Dimension>& dimensions) {
+  std::vector<std::string> names;
+  for (Dimension dimension : dimensions) names.push_back(units.of(dimension));
+  return names;
+}
+
 LinkQuantities::LinkQuantities(std::vector<LinkRows> links, const std::vector<std::string>& ids)
     : links_(std::move(links)) {
   for (std::size_t k = 0; k < ids.size(); ++k) {
-    names_.push_back(ids[k] + ".force");
-    names_.push_back(ids[k] + ".penetration");
+    add(ids[k] + ".force", Dimension::force);
+    add(ids[k] + ".penetration", Dimension::length);
     if (links_[k].friction) {
-      names_.push_back(ids[k] + ".tangential_force");
-      names_.push_back(ids[k] + ".slide");
+      add(ids[k] + ".tangential_force", Dimension::force);
+      add(ids[k] + ".slide", Dimension::length);
     }
   }
 }
@@ -41,11 +48,15 @@ NodeQuantities::NodeQuantities(std::vector<std::vector<Index>> equations,
   for (std::size_t k = 0; k < ids.size(); ++k)
     for (std::size_t i = 0; i < equations_[k].size(); ++i) {
       const std::string name = ids[k] + ".";
-      const char* direction = kDirection[directions_[k].at(i)];
-      names_.push_back(name + "u_" + direction);
-      names_.push_back(name + "v_" + direction);
-      if (relative_) names_.push_back(name + "a_rel_" + direction);
-      if (absolute_) names_.push_back(name + "a_abs_" + direction);
+      const int d = directions_[k].at(i);
+      const char* direction = kDirection[d];
+      const bool rotation = d == 2;
+      add(name + "u_" + direction, rotation ? Dimension::angle : Dimension::length);
+      add(name + "v_" + direction, rotation ? Dimension::angular_velocity : Dimension::velocity);
+      const Dimension acceleration =
+          rotation ? Dimension::angular_acceleration : Dimension::acceleration;
+      if (relative_) add(name + "a_rel_" + direction, acceleration);
+      if (absolute_) add(name + "a_abs_" + direction, acceleration);
     }
 }
 
@@ -65,8 +76,8 @@ ElementQuantities::ElementQuantities(std::vector<std::shared_ptr<const model::El
                                      std::vector<std::vector<Index>> equations)
     : elements_(std::move(elements)), equations_(std::move(equations)) {
   for (std::size_t k = 0; k < elements_.size(); ++k) {
-    for (std::string_view force : elements_[k]->end_force_names())
-      names_.push_back(elements_[k]->id() + "." + std::string(force));
+    for (const model::EndForce& force : elements_[k]->end_force_names())
+      add(elements_[k]->id() + "." + std::string(force.name), force.dimension);
     displacements_.emplace_back(static_cast<Index>(equations_[k].size()));
   }
 }
@@ -84,7 +95,7 @@ void ElementQuantities::take(const integrators::State& state, double* values) co
 }
 
 HistoryRecorder::HistoryRecorder(std::string file, std::unique_ptr<Quantities> quantities,
-                                 builder::OutputSampling sampling)
+                                 builder::OutputSampling sampling, const UnitNames& units)
     : file_(std::move(file)),
       quantities_(std::move(quantities)),
       sampling_(sampling),
@@ -92,6 +103,9 @@ HistoryRecorder::HistoryRecorder(std::string file, std::unique_ptr<Quantities> q
   table_.columns.push_back("time");
   for (const std::string& name : quantities_->names()) table_.columns.push_back(name);
   table_.values.resize(table_.columns.size());
+  table_.units.push_back(units.of(Dimension::time));
+  for (std::string& unit : unit_names(units, quantities_->dimensions()))
+    table_.units.push_back(std::move(unit));
 }
 
 bool HistoryRecorder::due(double time) {
@@ -118,8 +132,9 @@ double HistoryRecorder::held_values(double steps, double duration) const {
   return rows * static_cast<double>(table_.columns.size());
 }
 
-EnvelopeRecorder::EnvelopeRecorder(std::string file, std::unique_ptr<Quantities> quantities)
-    : file_(std::move(file)), quantities_(std::move(quantities)) {
+EnvelopeRecorder::EnvelopeRecorder(std::string file, std::unique_ptr<Quantities> quantities,
+                                   const UnitNames& units)
+    : file_(std::move(file)), quantities_(std::move(quantities)), units_(units) {
   const std::size_t count = quantities_->names().size();
   row_.resize(count);
   max_.resize(count);
@@ -145,8 +160,10 @@ void EnvelopeRecorder::record(const integrators::State& state) {
 
 Table EnvelopeRecorder::table() const {
   Table table = table_with_columns({"max", "time_of_max", "min", "time_of_min", "abs_max"});
-  table.label_column = "quantity";
-  table.labels = quantities_->names();
+  const std::string& time = units_.of(Dimension::time);
+  table.units = {"", time, "", time, ""};  // the values' units differ by row: column "unit"
+  table.text_columns = {{"quantity", quantities_->names()},
+                        {"unit", unit_names(units_, quantities_->dimensions())}};
   for (std::size_t q = 0; q < row_.size(); ++q)
     append_row(table, {max_[q], time_of_max_[q], min_[q], time_of_min_[q], abs_max(q)});
   return table;

@@ -8,6 +8,7 @@
 
 #include "builder/spec.hpp"
 #include "core/table.hpp"
+#include "core/units.hpp"
 #include "integrators/integrator.hpp"
 #include "model/element.hpp"
 #include "results/ground_acceleration.hpp"
@@ -25,17 +26,30 @@ class Recorder : public Observer {
   virtual double held_values(double steps, double duration) const = 0;
 };
 
-// The quantities a recorder takes from each state, with their column names.
+// The quantities a recorder takes from each state, with their column names and what each
+// measures.
 class Quantities {
  public:
   virtual ~Quantities() = default;
   const std::vector<std::string>& names() const { return names_; }
+  const std::vector<Dimension>& dimensions() const { return dimensions_; }
   // values: one per name, in order.
   virtual void take(const integrators::State& state, double* values) const = 0;
 
  protected:
+  void add(std::string name, Dimension dimension) {
+    names_.push_back(std::move(name));
+    dimensions_.push_back(dimension);
+  }
+
+ private:
   std::vector<std::string> names_;
+  std::vector<Dimension> dimensions_;
 };
+
+// The units of these dimensions, in order.
+std::vector<std::string> unit_names(const UnitNames& units,
+                                    const std::vector<Dimension>& dimensions);
 
 // Where a link's values sit in the state's link vectors: its normal row, and the tangential
 // row right after it when the link has friction.
@@ -92,11 +106,12 @@ class ElementQuantities final : public Quantities {
   mutable std::vector<Vector> displacements_;  // scratch: each element's u_e
 };
 
-// A time history: columns time and the quantities, a row per sampled step.
+// A time history: columns time and the quantities, a row per sampled step; `units` name the
+// columns' units.
 class HistoryRecorder final : public Recorder {
  public:
   HistoryRecorder(std::string file, std::unique_ptr<Quantities> quantities,
-                  builder::OutputSampling sampling = {});
+                  builder::OutputSampling sampling = {}, const UnitNames& units = {});
   void record(const integrators::State& state) override;
   Table table() const override { return table_; }
   const Table& history() const { return table_; }
@@ -115,12 +130,13 @@ class HistoryRecorder final : public Recorder {
   Table table_;
 };
 
-// The envelope of the quantities over every step: a row per quantity (label column
-// "quantity") with max, time_of_max, min, time_of_min and abs_max (the larger of |max|, |min|).
-// The first time a value is reached counts.
+// The envelope of the quantities over every step: a row per quantity (text columns "quantity"
+// and its "unit") with max, time_of_max, min, time_of_min and abs_max (the larger of |max|,
+// |min|). The first time a value is reached counts.
 class EnvelopeRecorder final : public Recorder {
  public:
-  EnvelopeRecorder(std::string file, std::unique_ptr<Quantities> quantities);
+  EnvelopeRecorder(std::string file, std::unique_ptr<Quantities> quantities,
+                   const UnitNames& units = {});
   void record(const integrators::State& state) override;
   Table table() const override;
   const std::string& file() const override { return file_; }
@@ -131,6 +147,7 @@ class EnvelopeRecorder final : public Recorder {
  private:
   std::string file_;
   std::unique_ptr<Quantities> quantities_;
+  UnitNames units_;
   std::vector<double> row_, max_, min_, time_of_max_, time_of_min_;
   bool started_ = false;
 };

@@ -89,16 +89,18 @@ std::unique_ptr<Recorder> make_recorder(const builder::BuiltModel& built,
                                         const builder::ResolvedRecorder& spec,
                                         GroundAcceleration& ground) {
   if (spec.kind == builder::RecorderKind::spectrum)
-    return std::make_unique<SpectrumRecorder>(spec.file,
-                                              spectrum_places(built, system.dofs(), spec.items),
-                                              spec.periods, spec.damping_ratios, ground);
+    return std::make_unique<SpectrumRecorder>(
+        spec.file, spectrum_places(built, system.dofs(), spec.items), spec.periods,
+        spec.damping_ratios, ground, built.units);
   std::unique_ptr<Quantities> quantities =
       spec.kind == builder::RecorderKind::link ? link_quantities(built, system.links(), spec.items)
       : spec.kind == builder::RecorderKind::element
           ? element_quantities(built, system.dofs(), spec.items)
           : node_quantities(built, system.dofs(), spec, ground);
-  if (spec.envelope) return std::make_unique<EnvelopeRecorder>(spec.file, std::move(quantities));
-  return std::make_unique<HistoryRecorder>(spec.file, std::move(quantities), spec.sampling);
+  if (spec.envelope)
+    return std::make_unique<EnvelopeRecorder>(spec.file, std::move(quantities), built.units);
+  return std::make_unique<HistoryRecorder>(spec.file, std::move(quantities), spec.sampling,
+                                           built.units);
 }
 
 std::vector<std::unique_ptr<Recorder>> make_recorders(const builder::BuiltModel& built,

@@ -6,12 +6,13 @@ namespace pound::results {
 
 SpectrumRecorder::SpectrumRecorder(std::string file, std::vector<SpectrumPlace> places,
                                    std::vector<double> periods, std::vector<double> damping_ratios,
-                                   GroundAcceleration& ground)
+                                   GroundAcceleration& ground, const UnitNames& units)
     : file_(std::move(file)),
       places_(std::move(places)),
       periods_(std::move(periods)),
       damping_ratios_(std::move(damping_ratios)),
       ground_(ground),
+      units_(units),
       previous_(places_.size()) {
   for (std::size_t p = 0; p < places_.size(); ++p)
     for (double damping : damping_ratios_)
@@ -38,11 +39,13 @@ Table SpectrumRecorder::table() const {
   static const char* kDirection[] = {"x", "y"};
   Table table = table_with_columns({"period"});
   table.values[0] = periods_;
+  table.units.push_back(units_.of(Dimension::time));
   std::size_t k = 0;
   for (const SpectrumPlace& place : places_)
     for (double damping : damping_ratios_) {
       table.columns.push_back(
           fmt::format("{}.sa_{}_{:g}%", place.id, kDirection[place.direction], 100.0 * damping));
+      table.units.push_back(units_.of(Dimension::acceleration));
       std::vector<double>& column = table.values.emplace_back();
       for (std::size_t p = 0; p < periods_.size(); ++p)
         column.push_back(oscillators_[k++].pseudo_acceleration());

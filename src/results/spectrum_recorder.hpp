@@ -24,7 +24,8 @@ struct SpectrumPlace {
 class SpectrumRecorder final : public Recorder {
  public:
   SpectrumRecorder(std::string file, std::vector<SpectrumPlace> places, std::vector<double> periods,
-                   std::vector<double> damping_ratios, GroundAcceleration& ground);
+                   std::vector<double> damping_ratios, GroundAcceleration& ground,
+                   const UnitNames& units = {});
   void record(const integrators::State& state) override;
   Table table() const override;
   const std::string& file() const override { return file_; }
@@ -35,6 +36,7 @@ class SpectrumRecorder final : public Recorder {
   std::vector<SpectrumPlace> places_;
   std::vector<double> periods_, damping_ratios_;
   GroundAcceleration& ground_;
+  UnitNames units_;
   // oscillators_[(place * damping_ratios + damping) * periods + period]
   std::vector<model::ResponseOscillator> oscillators_;
   std::vector<double> previous_;  // each place's acceleration at the previous step

@@ -186,8 +186,11 @@ TEST_F(Cli, RunGirderWritesItsRecorders) {
   const std::vector<std::string> girder = read_lines(out / "girder.csv");
   ASSERT_FALSE(joint.empty());
   ASSERT_FALSE(girder.empty());
-  EXPECT_EQ(joint.front(), "time,joint.force,joint.penetration");
-  EXPECT_EQ(girder.front(), "time,girder.u_x,girder.v_x,girder.a_rel_x,girder.a_abs_x");
+  // Issue 16 item 5: headers name the units; without units.mass forces have none to name.
+  EXPECT_EQ(joint.front(), "time [s],joint.force,joint.penetration [m]");
+  EXPECT_EQ(girder.front(),
+            "time [s],girder.u_x [m],girder.v_x [m/s],girder.a_rel_x [m/s^2],girder.a_abs_x "
+            "[m/s^2]");
   const json summary = json::parse(read_text(out / "summary.json"));
   EXPECT_EQ(summary["status"], "completed");
   EXPECT_FALSE(summary.contains("verification"));
@@ -438,12 +441,22 @@ TEST_F(Cli, ModelRunsRecordTheirOwnExcitationsAsTheModelScalesThem) {
   // Issue 16 item 5: the model's units block, named (its mass unit gives the force unit).
   EXPECT_EQ(summary["units"], json({{"length", "m"},
                                     {"time", "s"},
-                                    {"acceleration", "m/s²"},
+                                    {"acceleration", "m/s^2"},
                                     {"mass", "kg"},
                                     {"force", "N"},
-                                    {"moment", "N·m"}}));
+                                    {"moment", "N*m"}}));
   EXPECT_EQ(e["sha1"], pound::io::sha1_hex(read_text(fs::path(POUND_SOURCE_DIR) / "ground_motions" /
                                                      "synthetic_firm_01.AT2")));
+  // ... and so do the CSV headers: histories per column, envelopes per row (column "unit").
+  EXPECT_TRUE(
+      read_lines(path("out") / "joints.csv")
+          .front()
+          .starts_with("time [s],bridge.a0.joint.force [N],bridge.a0.joint.penetration [m],"));
+  const std::vector<std::string> forces = read_lines(path("out") / "pier_base_forces.csv");
+  ASSERT_GE(forces.size(), 4u);
+  EXPECT_EQ(forces[0], "quantity,unit,max,time_of_max [s],min,time_of_min [s],abs_max");
+  EXPECT_TRUE(forces[2].starts_with("bridge.p1.e1.V_i,N,")) << forces[2];
+  EXPECT_TRUE(forces[3].starts_with("bridge.p1.e1.M_i,N*m,")) << forces[3];
 }
 
 TEST_F(Cli, MotionOptionsNeedMotionAndSensibleValues) {

@@ -133,18 +133,19 @@ TEST(RecorderOutput, AnEnvelopeIsTheHistorysExtremesAndTheirFirstTimes) {
        {std::pair{"roofs.csv", "roofs_envelope.csv"}, {"links.csv", "links_envelope.npy"}}) {
     const Table& history = tables.at(history_file);
     const Table& envelope = tables.at(envelope_file);
-    ASSERT_EQ(envelope.labels.size() + 1, history.columns.size());
-    for (std::size_t q = 0; q < envelope.labels.size(); ++q) {
-      ASSERT_EQ(envelope.labels[q], history.columns[q + 1]);
+    const std::vector<std::string>& labels = envelope.text_columns.at(0).values;
+    ASSERT_EQ(labels.size() + 1, history.columns.size());
+    for (std::size_t q = 0; q < labels.size(); ++q) {
+      ASSERT_EQ(labels[q], history.columns[q + 1]);
       const std::vector<double>& values = history.values[q + 1];
       const auto max = std::max_element(values.begin(), values.end());
       const auto min = std::min_element(values.begin(), values.end());
       const double time_of_max = history.values[0][static_cast<std::size_t>(max - values.begin())];
       const double time_of_min = history.values[0][static_cast<std::size_t>(min - values.begin())];
-      EXPECT_EQ(envelope.values[0][q], *max) << envelope.labels[q];
-      EXPECT_EQ(envelope.values[1][q], time_of_max) << envelope.labels[q];
-      EXPECT_EQ(envelope.values[2][q], *min) << envelope.labels[q];
-      EXPECT_EQ(envelope.values[3][q], time_of_min) << envelope.labels[q];
+      EXPECT_EQ(envelope.values[0][q], *max) << labels[q];
+      EXPECT_EQ(envelope.values[1][q], time_of_max) << labels[q];
+      EXPECT_EQ(envelope.values[2][q], *min) << labels[q];
+      EXPECT_EQ(envelope.values[3][q], time_of_min) << labels[q];
       EXPECT_EQ(envelope.values[4][q], std::max(std::abs(*max), std::abs(*min)));
     }
   }
@@ -243,7 +244,7 @@ TEST(RecorderOutput, ElementEndForcesOfACantileverAreTheStaticOnes) {
   // A vertical tie at the tip carries no load here, and a truss has no shear: none reported.
   EXPECT_FALSE(summary["storeys"][0].contains("peak_shear"));
   const Table& base = outcome.histories.at(1).second;
-  EXPECT_EQ(base.labels.at(1), "e1.V_i");
+  EXPECT_EQ(base.text_columns.at(0).values.at(1), "e1.V_i");
   EXPECT_NEAR(base.values[4][1], P, 1e-9 * P);  // abs_max
 }
 

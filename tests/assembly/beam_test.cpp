@@ -136,9 +136,15 @@ TEST(Beam, EndForcesAreTheNodalForcesInLocalAxes) {
   const Vector global = inclined.stiffness() * u;
   EXPECT_LE((t.transpose() * forces - global).norm(), 1e-14 * global.norm());
   EXPECT_NEAR((t * u).dot(forces), u.dot(global), 1e-14 * std::abs(u.dot(global)));
-  const std::span<const std::string_view> names = inclined.end_force_names();
-  EXPECT_EQ(std::vector<std::string_view>(names.begin(), names.end()),
-            (std::vector<std::string_view>{"N_i", "V_i", "M_i", "N_j", "V_j", "M_j"}));
+  std::vector<std::string_view> names;
+  std::vector<Dimension> dimensions;
+  for (const model::EndForce& force : inclined.end_force_names()) {
+    names.push_back(force.name);
+    dimensions.push_back(force.dimension);
+  }
+  EXPECT_EQ(names, (std::vector<std::string_view>{"N_i", "V_i", "M_i", "N_j", "V_j", "M_j"}));
+  const Dimension F = Dimension::force, M = Dimension::moment;
+  EXPECT_EQ(dimensions, (std::vector<Dimension>{F, F, M, F, F, M}));
 }
 
 // A cantilever of 4 beams at 30 degrees, fixed at its base, under a tip load P across its axis

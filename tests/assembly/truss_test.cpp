@@ -73,7 +73,8 @@ TEST(Truss, LumpedMassIsHalfOfRhoALAtEachEndInEachDirection) {
 
 TEST(Truss, AxialForceIsEaOverLTimesTheElongation) {
   ASSERT_EQ(kInclined.end_force_names().size(), 1u);
-  EXPECT_EQ(kInclined.end_force_names()[0], "N");
+  EXPECT_EQ(kInclined.end_force_names()[0].name, "N");
+  EXPECT_EQ(kInclined.end_force_names()[0].dimension, Dimension::force);
   // Node j moves 0.01 along the bar and 0.3 across it; node i stays (across: no first-order
   // elongation, so no force).
   const double along = 0.01, across = 0.3;

@@ -197,17 +197,28 @@ TEST(Npy, StructuredArrayOfTheColumnsAsNumPyDefinesIt) {
 // hold a comma or quote, and a '<U' field of NumPy (UTF-32, NUL-padded to the longest).
 TEST(OutputCsv, LabelsAreTheFirstColumnQuotedWhereNeeded) {
   Table table = table_with_columns({"max", "min"});
-  table.label_column = "quantity";
-  table.labels = {"a.force", "b,\"c\".force"};
+  table.text_columns = {{"quantity", {"a.force", "b,\"c\".force"}}};
   append_row(table, {1.5, -2.0});
   append_row(table, {3.0, 0.25});
   EXPECT_EQ(to_csv(table), "quantity,max,min\na.force,1.5,-2\n\"b,\"\"c\"\".force\",3,0.25\n");
 }
 
+// Units follow a column's name in brackets; a column without one keeps its bare name, and .npy
+// field names are always bare.
+TEST(OutputCsv, HeadersNameTheUnitsAfterTheColumns) {
+  Table table = table_with_columns({"time", "a.force", "a.count"});
+  table.units = {"s", "kN", ""};
+  table.text_columns = {{"quantity", {"x"}}, {"unit", {"m/s^2"}}};
+  append_row(table, {0.5, 2.0, 3.0});
+  EXPECT_EQ(to_csv(table), "quantity,unit,time [s],a.force [kN],a.count\nx,m/s^2,0.5,2,3\n");
+  const std::string npy = to_npy(table);
+  EXPECT_NE(npy.find("('time', '<f8'), ('a.force', '<f8')"), std::string::npos);
+  EXPECT_NE(npy.find("('quantity', '<U1'), ('unit', '<U5')"), std::string::npos);
+}
+
 TEST(Npy, LabelsAreAUnicodeFieldBeforeTheNumbers) {
   Table table = table_with_columns({"max"});
-  table.label_column = "quantity";
-  table.labels = {"u", "\xc3\xa9t\xc3\xa9"};  // "été": 3 code points from 5 bytes
+  table.text_columns = {{"quantity", {"u", "\xc3\xa9t\xc3\xa9"}}};  // "été": 3 code points
   append_row(table, {1.0});
   append_row(table, {-4.0});
   const std::string npy = to_npy(table);

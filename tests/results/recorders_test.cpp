@@ -149,10 +149,12 @@ TEST(EnvelopeRecorder, GivesMaxMinTheirFirstTimesAndTheLargestMagnitudePerQuanti
     recorder.record(link_state(0.1 * k, entries({forces[k][0], forces[k][1], forces[k][2]}),
                                entries({-0.1 * k, 0.0, 0.01 * k})));
   const Table table = recorder.table();
-  EXPECT_EQ(table.label_column, "quantity");
-  EXPECT_EQ(table.labels,
+  ASSERT_EQ(table.text_columns.size(), 2u);
+  EXPECT_EQ(table.text_columns[0].name, "quantity");
+  EXPECT_EQ(table.text_columns[0].values,
             (std::vector<std::string>{"joint.force", "joint.penetration", "pad.force",
                                       "pad.penetration", "pad.tangential_force", "pad.slide"}));
+  EXPECT_EQ(table.text_columns[1].name, "unit");
   EXPECT_EQ(table.columns,
             (std::vector<std::string>{"max", "time_of_max", "min", "time_of_min", "abs_max"}));
   auto row = [&](std::size_t r) {
