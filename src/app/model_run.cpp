@@ -320,8 +320,10 @@ void write_run_outputs(const std::string& folder, const RunOutcome& outcome,
   // All staged, then renamed into place with summary.json last: a folder with a summary.json has
   // the histories of that run, and an interrupted run leaves the earlier run's files.
   io::StagedFiles files;
+  std::vector<std::pair<std::string, const Table*>> tables;
   for (const auto& [file, table] : outcome.histories)
-    files.write_table((std::filesystem::path(folder) / file).string(), table);
+    tables.emplace_back((std::filesystem::path(folder) / file).string(), &table);
+  files.write_tables(tables);
   for (const auto& [file, document] : extra)
     files.write((std::filesystem::path(folder) / file).string(), document.dump() + "\n");
   files.write((std::filesystem::path(folder) / "summary.json").string(),

@@ -99,12 +99,14 @@ void BandedLdlt::substitute(const double* rhs, double* x) const {
     }
     x[i] = value;
   }
+  // The farthest terms first, as in the forward pass: each row waits for the one before it only
+  // for its last product, so the rows' chains overlap.
   for (Index i = n - 1; i >= 0; --i) {
     double value = x[i] * inv_d[i];
     if (i + b < n) {
-      for (Index k = 0; k < b; ++k) value -= lower[(i + k + 1) * b + k] * x[i + k + 1];
+      for (Index k = b - 1; k >= 0; --k) value -= lower[(i + k + 1) * b + k] * x[i + k + 1];
     } else {
-      for (Index k = 0; i + k + 1 < n; ++k) value -= lower[(i + k + 1) * b + k] * x[i + k + 1];
+      for (Index k = n - i - 2; k >= 0; --k) value -= lower[(i + k + 1) * b + k] * x[i + k + 1];
     }
     x[i] = value;
   }

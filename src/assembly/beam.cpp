@@ -15,11 +15,13 @@ Beam::Beam(std::string id, const std::array<model::ElementNode, 2>& ends, const 
     : Element(std::move(id), {ends[0].index, ends[1].index}, damping),
       section_(section),
       consistent_mass_(consistent_mass),
-      axis_(model::element_axis(ends, 2)) {}
+      axis_(model::element_axis(ends, 2)),
+      local_stiffness_(make_local_stiffness()),
+      rotation_(make_rotation()) {}
 
 std::span<const int> Beam::directions() const { return kDirections; }
 
-Beam::Matrix6 Beam::local_stiffness() const {
+Beam::Matrix6 Beam::make_local_stiffness() const {
   const double ea = section_.youngs_modulus * section_.area / axis_.length;
   const double ei = section_.youngs_modulus * section_.inertia;
   const double l2 = axis_.length * axis_.length, l3 = l2 * axis_.length;
@@ -52,7 +54,7 @@ Beam::Matrix6 Beam::local_consistent_mass() const {
   return mass;
 }
 
-Beam::Matrix6 Beam::rotation() const {
+Beam::Matrix6 Beam::make_rotation() const {
   const double cosine = axis_.cosines[0], sine = axis_.cosines[1];
   Matrix6 t = Matrix6::Zero();
   for (int node = 0; node < 2; ++node) {
@@ -68,14 +70,14 @@ Beam::Matrix6 Beam::rotation() const {
 
 // The products at fixed size, as the assembly has always rounded them.
 Matrix Beam::stiffness() const {
-  const Matrix6 t = rotation();
-  const Matrix6 k = t.transpose() * local_stiffness() * t;
+  const Matrix6& t = rotation_;
+  const Matrix6 k = t.transpose() * local_stiffness_ * t;
   return k;
 }
 
 model::ElementMass Beam::mass() const {
   if (consistent_mass_) {
-    const Matrix6 t = rotation();
+    const Matrix6& t = rotation_;
     const Matrix6 m = t.transpose() * local_consistent_mass() * t;
     return {.consistent = m};
   }
@@ -86,7 +88,7 @@ model::ElementMass Beam::mass() const {
 std::span<const model::EndForce> Beam::end_force_names() const { return kEndForces; }
 
 Vector Beam::end_forces(const Vector& u) const {
-  const Eigen::Matrix<double, 6, 1> local = local_stiffness() * (rotation() * u);
+  const Eigen::Matrix<double, 6, 1> local = local_stiffness_ * (rotation_ * u);
   return local;
 }
 
@@ -108,7 +110,7 @@ Matrix Beam::geometric_stiffness(const Vector& u, model::GeometricStiffness kind
     for (int a = 0; a < 4; ++a)
       for (int b = 0; b < 4; ++b) k(kTransverse[a], kTransverse[b]) = c * shape[a][b];
   }
-  const Matrix6 t = rotation();
+  const Matrix6& t = rotation_;
   const Matrix6 global = t.transpose() * k * t;
   return global;
 }

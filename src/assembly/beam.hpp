@@ -49,14 +49,16 @@ class Beam final : public model::Element {
 
  private:
   using Matrix6 = Eigen::Matrix<double, 6, 6>;
-  Matrix6 local_stiffness() const;
+  Matrix6 make_local_stiffness() const;
   Matrix6 local_consistent_mass() const;
-  Matrix6 rotation() const;  // T: u' = T u
+  Matrix6 make_rotation() const;  // T: u' = T u
   double mass_per_length() const { return section_.density * section_.area + section_.extra_mass; }
 
   Section section_;
   bool consistent_mass_;
   model::ElementAxis axis_;
+  // Kept: a recorder or drift monitor asks for end forces at every step.
+  Matrix6 local_stiffness_, rotation_;
 };
 
 }  // namespace pound::assembly

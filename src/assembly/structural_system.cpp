@@ -562,6 +562,13 @@ void StructuralSystem::multiply_mass(const Vector& x, Vector& y) const {
     y = mass_.cwiseProduct(x);
 }
 
+std::optional<integrators::SecondOrderSystem::Rayleigh> StructuralSystem::rayleigh() const {
+  // Elements damping on their own assemble C; P-Delta's C takes the first-order K.
+  if (!has_damping() || damping_matrix_.size() > 0 || elastic_stiffness_.size() > 0)
+    return std::nullopt;
+  return Rayleigh{damping_.mass_coefficient, damping_.stiffness_coefficient};
+}
+
 void StructuralSystem::multiply_damping(const Vector& x, Vector& y) const {
   if (damping_matrix_.size() > 0) {
     y.noalias() = damping_matrix_ * x;

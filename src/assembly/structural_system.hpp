@@ -17,6 +17,7 @@ class StructuralSystem final : public integrators::SecondOrderSystem {
 
   Index size() const override { return dofs_.size(); }
   void multiply_mass(const Vector& x, Vector& y) const override;
+  std::optional<Rayleigh> rayleigh() const override;
   bool has_damping() const override {
     return damping_matrix_.size() > 0 || damping_.mass_coefficient != 0.0 ||
            damping_.stiffness_coefficient != 0.0;

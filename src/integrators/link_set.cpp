@@ -55,7 +55,8 @@ void LinkSet::project(const Vector& x, Vector& projected) const {
 }
 
 double LinkSet::nodal_norm(const Vector& row_values) const {
-  return std::sqrt(std::max(0.0, row_values.dot(gram_ * row_values)));
+  nodal_scratch_.noalias() = gram_ * row_values;  // into kept storage: no allocation per call
+  return std::sqrt(std::max(0.0, row_values.dot(nodal_scratch_)));
 }
 
 void LinkSet::set_trial(const Vector& delta, const Vector& rate, const Vector& acceleration,

@@ -83,7 +83,8 @@ class LinkSet {
   std::vector<Link> links_;
   std::vector<Index> first_row_;
   SparseRowMatrix connectivity_;
-  Matrix gram_;  // B B^T
+  Matrix gram_;                   // B B^T
+  mutable Vector nodal_scratch_;  // of nodal_norm
   Vector gaps_;
 };
 

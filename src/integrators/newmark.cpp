@@ -333,7 +333,7 @@ bool Newmark::solve_link_forces(SecondOrderSystem& system, const Factorization& 
     // Converged to machine precision: with a very stiff penalty the residual cannot fall below
     // its round-off (stiffness x eps x displacement) while the correction already has.
     if (iteration > 0 && correction_.norm() <= 1e-14 * std::max(assumed_force_.norm(), 1e-300)) {
-      delta_.noalias() = delta_linear_ - f.coupling * assumed_force_;
+      deform_links(f);
       return true;
     }
   }
@@ -403,8 +403,22 @@ void Newmark::solve_correction(const Factorization& f) {
     correction_[active_rows_[static_cast<std::size_t>(i)]] = reduced_correction_[i];
 }
 
+// delta = delta_lin - G F over the links that carry a force (most are open at most steps); a
+// dense product when most carry one.
+void Newmark::deform_links(const Factorization& f) {
+  Index loaded = 0;
+  for (Index k = 0; k < assumed_force_.size(); ++k) loaded += assumed_force_[k] != 0.0;
+  if (2 * loaded > assumed_force_.size()) {
+    delta_.noalias() = delta_linear_ - f.coupling * assumed_force_;
+    return;
+  }
+  delta_ = delta_linear_;
+  for (Index k = 0; k < assumed_force_.size(); ++k)
+    if (assumed_force_[k] != 0.0) delta_.noalias() -= assumed_force_[k] * f.coupling.col(k);
+}
+
 void Newmark::evaluate_links(LinkSet& links, const Factorization& f, double c_m, double c_c) {
-  delta_.noalias() = delta_linear_ - f.coupling * assumed_force_;
+  deform_links(f);
   rate_ = rate_predicted_ + c_c * (delta_ - delta_predicted_);
   acceleration_ = c_m * (delta_ - delta_predicted_);
   if (links_move_) acceleration_ += link_offset_acceleration_;

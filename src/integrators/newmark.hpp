@@ -87,6 +87,7 @@ class Newmark final : public Integrator {
   void solve_correction(const Factorization& f);
   // delta, rate and acceleration of the links at the assumed F, the laws' forces and tangent
   // there, and the residual F - F_law.
+  void deform_links(const Factorization& f);
   void evaluate_links(LinkSet& links, const Factorization& f, double c_m, double c_c);
   // u_{n+1} = u_lin - Z F and the link state of `to`.
   void apply_link_forces(const Factorization& f, State& to) const;

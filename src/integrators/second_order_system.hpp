@@ -5,6 +5,7 @@
 // only nonlinearity. Integrators see nothing else, so they are tested on a one-DOF oscillator.
 #include <concepts>
 #include <memory>
+#include <optional>
 #include <type_traits>
 
 #include "core/types.hpp"
@@ -46,7 +47,13 @@ class SecondOrderSystem {
   // updates into one pass; nullptr otherwise.
   virtual const Vector* lumped_mass() const { return nullptr; }
   virtual bool has_damping() const = 0;
-  virtual void multiply_damping(const Vector& x, Vector& y) const = 0;    // y = C x
+  virtual void multiply_damping(const Vector& x, Vector& y) const = 0;  // y = C x
+  // The coefficients when C = a0 M + a1 K with the K of multiply_stiffness, so that C x can
+  // follow from products already made; none otherwise (an assembled C, or no damping).
+  struct Rayleigh {
+    double mass_coefficient = 0.0, stiffness_coefficient = 0.0;
+  };
+  virtual std::optional<Rayleigh> rayleigh() const { return std::nullopt; }
   virtual void multiply_stiffness(const Vector& x, Vector& y) const = 0;  // y = K x
   // y = K x with x made on the way, so that a step's vector passes can share one trip through
   // the cache: make(first, last) writes x[first, last) and is called in order, before any entry

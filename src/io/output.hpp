@@ -43,6 +43,8 @@ class StagedFiles {
   void write_csv(const std::string& path, const Table& table);
   // As CSV, or as NumPy's .npy when `path` ends in .npy (to_npy).
   void write_table(const std::string& path, const Table& table);
+  // write_table for each (path, table), the formatting of several tables in parallel.
+  void write_tables(const std::vector<std::pair<std::string, const Table*>>& tables);
   void commit();
 
  private:

@@ -39,8 +39,8 @@ void EnergyBalance::record(const integrators::State& state) {
   if (system_.has_external_force()) system_.external_force(state.time, external_);
   system_.multiply_mass(state.velocity, work_);
   terms_.kinetic = 0.5 * state.velocity.dot(work_);
-  system_.multiply_stiffness(state.displacement, work_);
-  terms_.strain = 0.5 * state.displacement.dot(work_);
+  system_.multiply_stiffness(state.displacement, stiffness_force_);
+  terms_.strain = 0.5 * state.displacement.dot(stiffness_force_);
   const bool algorithmic = acceleration_energy_ != 0.0 && state.acceleration.size() == n;
   if (!started_) {
     terms_.initial = terms_.kinetic + terms_.strain;
@@ -57,8 +57,15 @@ void EnergyBalance::record(const integrators::State& state) {
     terms_.input += 0.5 * step.dot(external_ + previous_external_);
     if (system_.has_damping()) {
       average_ = 0.5 * (state.velocity + previous_.velocity);
-      system_.multiply_damping(average_, work_);
-      terms_.damping += step.dot(work_);
+      if (const auto rayleigh = system_.rayleigh()) {
+        system_.multiply_mass(average_, work_);
+        terms_.damping += rayleigh->mass_coefficient * step.dot(work_) +
+                          rayleigh->stiffness_coefficient *
+                              average_.dot(stiffness_force_ - previous_stiffness_force_);
+      } else {
+        system_.multiply_damping(average_, work_);
+        terms_.damping += step.dot(work_);
+      }
     }
     if (state.link_force.size() > 0) {
       // Work of the link forces on the structure (B du): with moving supports the links also
@@ -69,6 +76,7 @@ void EnergyBalance::record(const integrators::State& state) {
   }
   worst_ = std::max(worst_, terms_.balance_error());
   previous_external_.swap(external_);
+  previous_stiffness_force_.swap(stiffness_force_);
   previous_.time = state.time;
   previous_.displacement = state.displacement;
   previous_.velocity = state.velocity;

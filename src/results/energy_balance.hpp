@@ -74,6 +74,9 @@ class EnergyBalance : public Observer {
   bool started_ = false;
   integrators::State previous_;
   Vector previous_external_, external_, work_, average_, step_;
+  // K u at this step and the previous one: with Rayleigh damping the damping work follows from
+  // them (du^T K v_avg = v_avg^T (K u_{n+1} - K u_n)), one band product less per step.
+  Vector stiffness_force_, previous_stiffness_force_;
 };
 
 }  // namespace pound::results

@@ -255,7 +255,9 @@ void check_histories_fit(const std::vector<std::unique_ptr<Recorder>>& recorders
   double values = 0.0;
   for (const auto& recorder : recorders) values += recorder->held_values(steps, analysis.duration);
   if (values == 0.0) return;
-  const double needed = 3.0 * 8.0 * values;
+  // 8 bytes per value held, 8 in the table handed to the writer, up to 24 of decimal text (every
+  // table's text is formatted before any is written).
+  const double needed = 40.0 * values;
   constexpr double gib = 1024.0 * 1024.0 * 1024.0;
   if (available && needed > static_cast<double>(*available))
     throw InputError(

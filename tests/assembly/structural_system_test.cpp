@@ -328,6 +328,20 @@ TEST(StructuralSystem, AssemblyLosesNothing) {
   system.multiply_mass(u, m_u);
   const Vector expected = kA0 * m_u + kA1 * k_u;
   EXPECT_LE((c_u - expected).norm(), 1e-14 * expected.norm());
+  // Assembled from the parts' own damping, C is not given as a0 M + a1 K.
+  EXPECT_FALSE(system.rayleigh());
+}
+
+// The model's Rayleigh damping is said to be so (the energy balance then takes C x from K x and
+// M x); none without damping.
+TEST(StructuralSystem, ModelRayleighDampingIsSaidToBeSo) {
+  model::Model m = chain();
+  EXPECT_FALSE(StructuralSystem(m).rayleigh());
+  m.damping = model::RayleighDamping{0.3, 0.002};
+  const auto rayleigh = StructuralSystem(m).rayleigh();
+  ASSERT_TRUE(rayleigh);
+  EXPECT_EQ(rayleigh->mass_coefficient, 0.3);
+  EXPECT_EQ(rayleigh->stiffness_coefficient, 0.002);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <csignal>
 #include <cstring>
 #include <filesystem>
@@ -148,6 +149,28 @@ TEST_F(Output, StagedFilesAppearTogetherOrNotAtAll) {
   files.commit();
   EXPECT_EQ(names(), (std::vector<std::string>{"links.csv", "summary.json"}));
   EXPECT_EQ(read_text(path("summary.json")), "{}");
+}
+
+// Tables formatted in blocks of rows on several threads are the files each gives alone: a long
+// CSV (with units and text columns), a short one and a .npy, in one commit.
+TEST_F(Output, TablesWrittenTogetherAreTheFilesEachGivesAlone) {
+  Table long_table = table_with_columns({"time", "a.force"});
+  long_table.units = {"s", "kN"};
+  TextColumn& labels = long_table.text_columns.emplace_back(TextColumn{"quantity", {}});
+  for (int r = 0; r < 5000; ++r) {
+    append_row(long_table, {1e-3 * r, std::sin(0.01 * r) * 1e6 / 3.0});
+    labels.values.push_back(fmt::format("q{}", r));
+  }
+  Table short_table = table_with_columns({"x"});
+  append_row(short_table, {0.1});
+  StagedFiles files;
+  files.write_tables({{path("long.csv").string(), &long_table},
+                      {path("short.csv").string(), &short_table},
+                      {path("long.npy").string(), &long_table}});
+  files.commit();
+  EXPECT_EQ(read_text(path("long.csv")), to_csv(long_table));
+  EXPECT_EQ(read_text(path("short.csv")), to_csv(short_table));
+  EXPECT_EQ(read_text(path("long.npy")), to_npy(long_table));
 }
 
 TEST_F(Output, StaleTemporariesOfDeadProcessesAreRemoved) {

@@ -61,6 +61,28 @@ double dissipation_error(double dt) {
   return std::abs(e.damping - dissipated) / dissipated;
 }
 
+// With Rayleigh damping the damping work is taken from the stiffness forces already computed
+// (du^T K v_avg = v_avg^T (K u_{n+1} - K u_n)) instead of a product by C: the same sum to
+// round-off.
+TEST(EnergyBalance, RayleighDampingWorkEqualsTheProductByC) {
+  const FreeVibration f;
+  const double a0 = 0.4 * f.damping / f.mass, a1 = 0.6 * f.damping / f.stiffness;
+  Oscillator general(f.mass, a0 * f.mass + a1 * f.stiffness, f.stiffness);
+  Oscillator rayleigh(f.mass, 0.0, f.stiffness);
+  rayleigh.set_rayleigh(a0, a1);
+  EnergyBalance by_c(general), by_stiffness(rayleigh);
+  const double dt = 0.01;
+  for (int k = 0; k <= 200; ++k) {
+    by_c.record(sample(k * dt, f.u(k * dt), f.v(k * dt)));
+    by_stiffness.record(sample(k * dt, f.u(k * dt), f.v(k * dt)));
+  }
+  const double expected = by_c.terms().damping, found = by_stiffness.terms().damping;
+  std::cout << "damping work " << found << " against " << expected << " by C, relative difference "
+            << std::abs(found - expected) / expected << "\n";
+  EXPECT_GT(expected, 0.01);
+  EXPECT_NEAR(found, expected, 1e-13 * expected);
+}
+
 TEST(EnergyBalance, DampingWorkConvergesToTheDissipationAtSecondOrder) {
   const double coarse = dissipation_error(0.01), fine = dissipation_error(0.005);
   std::cout << "dissipation error " << coarse << " at dt = 0.01, " << fine << " at 0.005\n";

@@ -1,6 +1,7 @@
 #pragma once
 // A one-DOF system m u'' + c u' + k u + F_links = f(t) for testing integrators without a model.
 #include <functional>
+#include <optional>
 
 #include "integrators/second_order_system.hpp"
 
@@ -33,6 +34,12 @@ class Oscillator final : public integrators::SecondOrderSystem {
     return std::make_unique<Scalar>(c_m * mass_ + c_c * damping_ + c_k * stiffness_);
   }
   integrators::LinkSet& links() override { return links_; }
+  // Its damping as a0 m + a1 k, said so (as a Rayleigh-damped structure does).
+  void set_rayleigh(double a0, double a1) {
+    damping_ = a0 * mass_ + a1 * stiffness_;
+    rayleigh_ = Rayleigh{a0, a1};
+  }
+  std::optional<Rayleigh> rayleigh() const override { return rayleigh_; }
 
  private:
   struct Scalar final : integrators::LinearSolver {
@@ -44,6 +51,7 @@ class Oscillator final : public integrators::SecondOrderSystem {
   integrators::LinkSet links_;
   std::function<double(double)> force_;
   Vector lumped_;
+  std::optional<Rayleigh> rayleigh_;
 };
 
 }  // namespace pound::testing
