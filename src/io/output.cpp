@@ -13,6 +13,7 @@
 #include <cstring>
 #include <filesystem>
 #include <future>
+#include <span>
 #include <string>
 #include <thread>
 
@@ -23,12 +24,15 @@ namespace pound::io {
 namespace {
 
 // Writes `text` to <path>.tmp.<pid>, synced to disk; returns that name.
-std::string write_temporary(const std::string& path, std::string_view text) {
+// `parts` one after the other (a table formatted in blocks is written without joining them).
+std::string write_temporary(const std::string& path, std::span<const std::string_view> parts) {
   throw_if_interrupted();
   const std::string temporary = fmt::format("{}.tmp.{}", path, ::getpid());
   std::FILE* file = std::fopen(temporary.c_str(), "wb");
   if (!file) throw OutputError(fmt::format("{}: cannot write: {}", path, std::strerror(errno)));
-  const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
+  bool written = true;
+  for (const std::string_view part : parts)
+    written = written && std::fwrite(part.data(), 1, part.size(), file) == part.size();
   const int write_errno = errno;
   const bool flushed = std::fflush(file) == 0 && ::fsync(::fileno(file)) == 0;
   const int flush_errno = errno;
@@ -48,9 +52,13 @@ StagedFiles::~StagedFiles() {
 }
 
 void StagedFiles::write(const std::string& path, std::string_view text) {
+  write_parts(path, {&text, 1});
+}
+
+void StagedFiles::write_parts(const std::string& path, std::span<const std::string_view> parts) {
   // Staged before it is written, so an interrupt while writing removes it too.
   staged_.emplace_back(fmt::format("{}.tmp.{}", path, ::getpid()), path);
-  write_temporary(path, text);
+  write_temporary(path, parts);
 }
 
 void StagedFiles::commit() {
@@ -245,7 +253,7 @@ void StagedFiles::write_tables(const std::vector<std::pair<std::string, const Ta
       pieces.push_back({k, first, std::min(rows, first + kBlockRows)});
   }
   std::vector<fmt::memory_buffer> texts(pieces.size());
-  std::vector<std::string> npy(pieces.size());
+  std::vector<std::string> npy(pieces.size());  // a .npy table's bytes, in its one piece
   std::atomic<std::size_t> next{0};
   const auto work = [&] {
     for (std::size_t p; (p = next++) < pieces.size();) {
@@ -265,12 +273,14 @@ void StagedFiles::write_tables(const std::vector<std::pair<std::string, const Ta
   for (std::size_t t = 1; t < threads; ++t) helpers.push_back(std::async(std::launch::async, work));
   work();
   for (std::future<void>& helper : helpers) helper.get();  // rethrows a helper's exception
+  std::vector<std::string_view> parts;
   for (std::size_t p = 0; p < pieces.size();) {
     const std::size_t table = pieces[p].table;
-    std::string text = std::move(npy[p]);
+    parts.clear();
     for (; p < pieces.size() && pieces[p].table == table; ++p)
-      text.append(texts[p].data(), texts[p].size());
-    write(tables[table].first, text);
+      parts.push_back(npy[p].empty() ? std::string_view(texts[p].data(), texts[p].size())
+                                     : std::string_view(npy[p]));
+    write_parts(tables[table].first, parts);
   }
 }
 

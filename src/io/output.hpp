@@ -2,6 +2,7 @@
 // Writing results. Every file is written to a temporary name beside its destination and renamed
 // when complete, so a crash or a full disk never leaves a half-written result under the real
 // name. Failures throw OutputError naming the path and the system's reason.
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -40,6 +41,8 @@ class StagedFiles {
   ~StagedFiles();
 
   void write(const std::string& path, std::string_view text);
+  // The parts one after the other, as one file.
+  void write_parts(const std::string& path, std::span<const std::string_view> parts);
   void write_csv(const std::string& path, const Table& table);
   // As CSV, or as NumPy's .npy when `path` ends in .npy (to_npy).
   void write_table(const std::string& path, const Table& table);
