@@ -101,7 +101,21 @@ std::string run_headline(const std::string& model_path, const results::RunSummar
 }
 
 std::string run_report(const results::RunSummary& run) {
-  return link_lines(run) + monitor_lines(run);
+  return step_line(run) + link_lines(run) + monitor_lines(run);
+}
+
+std::string step_line(const results::RunSummary& run) {
+  const results::StepChoice& step = run.step_choice;
+  if (!step.automatic || !step.stable_time_step) return {};
+  const std::string rule =
+      step.defaulted ? "no \"time_step\" given, so \"auto\"" : "\"time_step\": \"auto\"";
+  if (step.record_step)
+    return fmt::format(
+        "  time step {:.4g}: the record's step, below {:g} x the stable step {:.4g} of {} ({})\n",
+        run.time_step, step.safety_factor, *step.stable_time_step, run.integrator, rule);
+  return fmt::format("  time step {:.4g}: {:g} x the stable step {:.4g} of {} ({})\n",
+                     run.time_step, step.safety_factor, *step.stable_time_step, run.integrator,
+                     rule);
 }
 
 std::string energy_line(const results::RunSummary& run) {
@@ -109,10 +123,12 @@ std::string energy_line(const results::RunSummary& run) {
   const std::optional<double> hysteretic = run.hysteretic_energy();
   return fmt::format(
       "  energy: input {:.6g}, initial {:.6g}, kinetic {:.6g}, strain {:.6g}, "
-      "damping {:.6g}, links {:.6g}{}; balance error {:.2e}\n",
+      "damping {:.6g}, links {:.6g}{}; balance error {:.2e}; created by contacts {:.3g} "
+      "({:.2f} % of the input)\n",
       e.input, e.initial, e.kinetic, e.strain, e.damping, e.links,
       hysteretic ? fmt::format(" (of which hysteretic {:.6g})", *hysteretic) : "",
-      run.worst_balance_error);
+      run.worst_balance_error, run.contact_created_energy(),
+      100.0 * run.contact_created_fraction());
 }
 
 }  // namespace pound::app

@@ -11,6 +11,8 @@ namespace pound::app {
 std::string run_headline(const std::string& model_path, const results::RunSummary& run);
 // The lines of links, joints and drifts.
 std::string run_report(const results::RunSummary& run);
+// How an automatic explicit step was chosen (the stable step and the fraction); empty otherwise.
+std::string step_line(const results::RunSummary& run);
 std::string energy_line(const results::RunSummary& run);
 
 }  // namespace pound::app

@@ -44,6 +44,16 @@ void check_step_count(const AnalysisSpec& analysis, const std::string& source) {
                                  analysis.time_step, analysis.duration, steps, kMostSteps));
 }
 
+// The shortest sampling step of the model's records (infinite without records).
+double shortest_record_step(const model::Model& model) {
+  double shortest = std::numeric_limits<double>::infinity();
+  for (const model::UniformExcitation& e : model.excitations)
+    shortest = std::min(shortest, e.motion.time_step);
+  for (const model::SupportExcitation& e : model.support_excitations)
+    shortest = std::min(shortest, e.motion.time_step);
+  return shortest;
+}
+
 }  // namespace
 
 void settle_time_step(AnalysisSpec& analysis, const model::Model& model,
@@ -72,8 +82,15 @@ void settle_time_step(AnalysisSpec& analysis, const model::Model& model,
   } catch (const std::domain_error& error) {
     throw InputError(source, "/analysis/integrator", error.what());
   }
+  analysis.stable_time_step = limit;
   if (analysis.time_step_auto) {
     analysis.time_step = analysis.safety_factor * limit;
+    // A step longer than a record's samples would step over its peaks.
+    const double record_step = shortest_record_step(model);
+    if (record_step < analysis.time_step) {
+      analysis.time_step = record_step;
+      analysis.time_step_is_record_step = true;
+    }
     check_step_count(analysis, source);
   } else if (analysis.time_step > limit) {
     throw InputError(source, "/analysis/time_step",

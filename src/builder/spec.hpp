@@ -346,9 +346,15 @@ using IntegratorSpec = integrators::IntegratorChoice;
 struct AnalysisSpec {
   IntegratorSpec integrator;
   double time_step = 0.0;  // > 0
-  // "time_step": "auto" (central difference): safety_factor times the stable limit.
+  // "time_step": "auto" (central difference): safety_factor times the stable limit, no more
+  // than the shortest record step.
   bool time_step_auto = false;
+  bool time_step_defaulted = false;       // "auto" because an explicit integrator was given no step
+  bool time_step_is_record_step = false;  // "auto" capped at the shortest record step
   double safety_factor = 0.8;
+  // Central difference's stable step with the links in contact (settle_time_step); none for
+  // implicit integrators.
+  std::optional<double> stable_time_step;
   double duration = 0.0;  // > 0; 0 in a file without it: the longest record's duration
   double relative_tolerance = 1e-10;
   double absolute_tolerance = 0.0;

@@ -1035,9 +1035,16 @@ const Fields<ExcitationSpec>& excitation_fields() {
 
 Field<AnalysisSpec> time_step_field() {
   return custom<AnalysisSpec>(
-      {"time_step", "number > 0 or `\"auto\"`", "required",
-       "Δt [T]; `\"auto\"` (central difference): safety_factor × the stable step"},
+      {"time_step", "number > 0 or `\"auto\"`", "required (implicit), `\"auto\"` (explicit)",
+       "Δt [T]; `\"auto\"` (central difference): safety_factor × the stable step, no more "
+       "than the shortest record step; also when an explicit integrator is given no step"},
       [](JsonObject& object, AnalysisSpec& analysis, Context&) {
+        // An explicit method has one right step, its stable one: without a number it takes it.
+        if (analysis.integrator.is_explicit() && !object.find("time_step")) {
+          analysis.time_step_auto = true;
+          analysis.time_step_defaulted = true;
+          return;
+        }
         const JsonValue step = object.at("time_step");
         if (!step.json().is_string()) {
           analysis.time_step = step.as<double>(positive);

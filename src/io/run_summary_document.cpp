@@ -26,7 +26,8 @@ void add_pounding(const results::LinkSummary& s, Document& doc) {
       .set("peak_penetration", s.peak_penetration)
       .set("peak_opening", s.peak_opening)
       .set("impulse", s.impulse)
-      .set("work", s.work);
+      .set("work", s.work)
+      .set("created_energy", s.created_energy());
   if (s.first_contact >= 0.0)
     doc.set("first_contact", s.first_contact).set("last_contact", s.last_contact);
 }
@@ -112,6 +113,8 @@ Document energy_document(const results::RunSummary& run) {
                         .set("links", e.links);
   if (const std::optional<double> hysteretic = run.hysteretic_energy())
     energy.set("links_hysteretic", *hysteretic);  // the yielding links' part of `links`
+  energy.set("contact_created", run.contact_created_energy())
+      .set("contact_created_fraction", run.contact_created_fraction());
   return energy.set("balance_error", e.balance_error())
       .set("worst_balance_error", run.worst_balance_error);
 }
@@ -132,6 +135,11 @@ void set_status(const results::RunSummary& run, Document& summary) {
       .set("step_cuts", stats.step_cuts)
       .set("max_unbalanced_force", stats.max_unbalanced_force)
       .set("run_time_s", run.run_time_s);
+  if (const results::StepChoice& step = run.step_choice; step.stable_time_step)
+    summary.set("stable_time_step", *step.stable_time_step)
+        .set("time_step_rule", !step.automatic  ? "given"
+                               : step.defaulted ? "auto (no time_step given)"
+                                                : "auto");
   if (run.adaptive)
     summary.set("adaptive", Document()
                                 .set("tolerance", run.adaptive->tolerance)

@@ -180,8 +180,15 @@ void LinkSummaries::record(const integrators::State& state) {
       const double previous_force = previous_.link_force[link];
       const double dt = state.time - previous_.time;
       s.impulse += 0.5 * (force + previous_force) * dt;
-      s.work += 0.5 * (force + previous_force) * (penetration - previous_.link_penetration[link]);
+      const double work =
+          0.5 * (force + previous_force) * (penetration - previous_.link_penetration[link]);
+      s.work += work;
+      s.engagement_work += work;
       if (contact && previous_force == 0.0) ++s.impacts;
+      if (!contact && previous_force != 0.0) {  // an engagement ended this step
+        s.finished_created_energy += std::max(0.0, -s.engagement_work);
+        s.engagement_work = 0.0;
+      }
     } else if (contact) {
       ++s.impacts;
     }

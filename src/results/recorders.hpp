@@ -166,6 +166,17 @@ struct LinkSummary {
   double last_contact = -1.0;      // time of the last step in contact
   double final_force = 0.0;        // at the end of the run [F]
   double final_deformation = 0.0;  // delta at the end of the run (residual) [L]
+  // Work done on the link in its current engagement (0 while open) [F L].
+  double engagement_work = 0.0;
+  // Energy the link gave the structure beyond what it had taken, summed over its engagements:
+  // a passive contact or restrainer stores nothing once open, so an engagement that ends with
+  // negative work has created that much (a penalty contact starting or ending inside a step).
+  // Before its end an engagement counts when its work is negative, since what a law holds is
+  // never negative [F L].
+  double finished_created_energy = 0.0;
+  double created_energy() const {
+    return finished_created_energy + std::max(0.0, -engagement_work);
+  }
 };
 
 class LinkSummaries : public Observer {

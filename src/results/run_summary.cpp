@@ -166,6 +166,19 @@ std::vector<std::string> result_warnings(const RunSummary& run) {
           "pier {}: drift {:.2f} times its yield drift, but the pier is elastic and cannot yield: "
           "this is not a ductility demand (give the bridge a 'pier_hinge' for one)",
           drift.monitor.id, *demand));
+  if (const double created = run.contact_created_fraction(); created > kContactCreatedWarning) {
+    const LinkResult* most = nullptr;
+    for (const LinkResult& link : run.links)
+      if (link.role != links::LinkRole::spring &&
+          (!most || link.summary.created_energy() > most->summary.created_energy()))
+        most = &link;
+    warnings.push_back(fmt::format(
+        "contact links created {:.4g}, {:.2f} % of the energy put in (link {} {:.4g}): a penalty "
+        "contact that starts or ends inside a step gives back more than it took, so the pounding "
+        "forces and what follows them are not to be trusted; reduce the time step, or use a law "
+        "that resolves the impact (the extended penalty)",
+        run.contact_created_energy(), 100.0 * created, most->id, most->summary.created_energy()));
+  }
   if (run.worst_balance_error > 0.01)
     warnings.push_back(
         fmt::format("energy balance error reached {:.2f} % of the largest energy "
@@ -303,6 +316,19 @@ std::optional<double> RunSummary::hysteretic_energy() const {
   return total;
 }
 
+double RunSummary::contact_created_energy() const {
+  double created = 0.0;
+  for (const LinkResult& link : links)
+    if (link.role != links::LinkRole::spring) created += link.summary.created_energy();
+  return created;
+}
+
+double RunSummary::contact_created_fraction() const {
+  const double put_in = std::max(std::abs(energy.input), energy.initial);
+  const double created = contact_created_energy();
+  return put_in > 0.0 ? created / put_in : (created > 0.0 ? 1.0 : 0.0);
+}
+
 std::optional<double> JointResult::margin() const {
   if (!(monitor.seat_width > 0.0)) return std::nullopt;
   return monitor.seat_width - peak.peak_seat_movement;
@@ -312,9 +338,17 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
                          const RunObservers& observers, RunStatus status,
                          const integrators::TransientStatistics& statistics,
                          const std::string& integrator, double run_time) {
-  RunSummary run{
-      std::move(status), integrator, built.analysis.time_step, built.analysis.duration, run_time,
-      system.size(),     statistics, built.analysis.adaptive};
+  const builder::AnalysisSpec& analysis = built.analysis;
+  RunSummary run{std::move(status),
+                 integrator,
+                 analysis.time_step,
+                 analysis.duration,
+                 run_time,
+                 {analysis.stable_time_step, analysis.time_step_auto, analysis.time_step_defaulted,
+                  analysis.safety_factor, analysis.time_step_is_record_step},
+                 system.size(),
+                 statistics,
+                 analysis.adaptive};
   for (std::size_t k = 0; k < built.model.links.size(); ++k) {
     const model::Link& link = built.model.links[k];
     const links::LinkLaw& law = system.links().law(static_cast<Index>(k));

@@ -11,6 +11,8 @@
 #include "integrators/central_difference.hpp"
 #include "links/restitution.hpp"
 #include "model/ground_motion.hpp"
+#include "results/run_summary.hpp"
+#include "verification/contact_energy_probe.hpp"
 
 namespace pound::verification {
 namespace {
@@ -99,6 +101,24 @@ LinkCheck check_contact(const model::Link& link, const links::LinkLaw& law,
     }
   }
   return c;
+}
+
+// An impact of the link's end masses at the run's integrator and step that creates more than
+// kContactCreatedWarning of its approach energy.
+void warn_created_energy(const model::Link& link, const links::LinkLaw& law,
+                         const assembly::StructuralSystem& system,
+                         const builder::AnalysisSpec& analysis, double approach_velocity,
+                         std::vector<std::string>& warnings) {
+  const std::optional<ContactEnergyProbe> probe =
+      probe_contact_energy(law, system.link_context(link), analysis, approach_velocity);
+  if (!probe || !(probe->created_fraction > results::kContactCreatedWarning)) return;
+  warnings.push_back(fmt::format(
+      "link {}: an impact of its end masses at {:.3g} (twice the peak ground velocity or the "
+      "initial closing velocity) creates up to {:.2f} % of its approach energy with this "
+      "integrator and time step {:.4g} (contact {:.4g}, starting inside a step): reduce the "
+      "step, or use a law that resolves the impact (the extended penalty)",
+      link.id, approach_velocity, 100.0 * probe->created_fraction, analysis.time_step,
+      probe->contact_duration));
 }
 
 // The largest peak ground velocity of the model's excitations, as applied.
@@ -195,6 +215,7 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
     if (c.adjacent > 0.0 && c.stiff_at_first_touch && plain_penalty)
       warn_k_ratio(c, check.warnings);
     warn_contact_steps(c, analysis, check.warnings);
+    warn_created_energy(link, links.law(k), system, analysis, approach, check.warnings);
     check.contacts.push_back(c);
   }
   if (!check.periods.empty() && !analysis.time_step_auto &&

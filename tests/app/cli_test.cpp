@@ -346,6 +346,118 @@ TEST_F(Cli, ExplicitStepAboveTheStableLimitIsRefused) {
   EXPECT_LT(summary["verification"]["duration_error"].get<double>(), 0.05);
 }
 
+// An explicit integrator given no step takes its stable one ("auto") and says so, in the run's
+// report and in summary.json; an implicit one still needs a number.
+TEST_F(Cli, ExplicitMethodWithoutAStepTakesTheStableOneAndSaysSo) {
+  json model = json::parse(read_text(fs::path(POUND_SOURCE_DIR) / "models" / "rod_impact.json"));
+  model["analysis"].erase("time_step");
+  const fs::path file = path("no_step.json");
+  std::ofstream(file) << model.dump();
+  const Outcome refused = pound({"run", file.string(), "--out", path("implicit").string()});
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_TRUE(contains(refused.err, "/analysis/time_step")) << refused.err;
+  EXPECT_FALSE(fs::exists(path("implicit")));
+
+  model["analysis"]["integrator"] = "central_difference";
+  std::ofstream(file) << model.dump();
+  const fs::path out = path("out");
+  const Outcome ran = pound({"run", file.string(), "--out", out.string()});
+  ASSERT_EQ(ran.exit_code, 0) << ran.err;
+  EXPECT_TRUE(contains(ran.out, "0.8 x the stable step")) << ran.out;
+  EXPECT_TRUE(contains(ran.out, "no \"time_step\" given")) << ran.out;
+  const json summary = json::parse(read_text(out / "summary.json"));
+  const double stable = summary["stable_time_step"].get<double>();
+  std::printf("time step %.6g = %.6g x stable step %.6g\n", summary["time_step"].get<double>(),
+              summary["time_step"].get<double>() / stable, stable);
+  EXPECT_NEAR(summary["time_step"].get<double>(), 0.8 * stable, 1e-15 * stable);
+  EXPECT_EQ(summary["time_step_rule"], "auto (no time_step given)");
+  EXPECT_LT(summary["verification"]["duration_error"].get<double>(), 0.05);
+}
+
+// "auto" goes no further than the record's own step, whose samples it would step over.
+TEST_F(Cli, AutomaticExplicitStepStaysWithinTheRecordStep) {
+  json model =
+      json::parse(read_text(fs::path(POUND_SOURCE_DIR) / "models" / "two_sdof_girders.json"));
+  model["analysis"] = {{"integrator", "central_difference"}};
+  model["excitations"][0]["record"] =
+      (fs::path(POUND_SOURCE_DIR) / "ground_motions" / "synthetic_firm_02.AT2").string();
+  const fs::path file = path("girders.json");
+  std::ofstream(file) << model.dump();
+  const fs::path out = path("out");
+  const Outcome ran = pound({"run", file.string(), "--out", out.string()});
+  ASSERT_EQ(ran.exit_code, 0) << ran.err;
+  EXPECT_TRUE(contains(ran.out, "the record's step")) << ran.out;
+  const json summary = json::parse(read_text(out / "summary.json"));
+  std::printf("0.8 x stable step %.4g, record step 0.01, time step %.4g\n",
+              0.8 * summary["stable_time_step"].get<double>(), summary["time_step"].get<double>());
+  EXPECT_GT(0.8 * summary["stable_time_step"].get<double>(), 0.01);
+  EXPECT_EQ(summary["time_step"].get<double>(), 0.01);
+}
+
+// The energy a contact creates: two free masses closing through an elastic gap spring whose
+// contact starts and ends inside steps. Newmark's trapezoidal rule balances energy exactly, so
+// what the link gave back beyond what it took is exactly the kinetic energy the pair gained.
+// Above 1 % of the energy put in the run warns; at a step that happens to lose energy, nothing.
+TEST_F(Cli, EnergyCreatedByAContactIsTheKineticEnergyGainedAndWarnedAbove1Percent) {
+  const auto run_at = [&](double time_step) {
+    const json model = {
+        {"dimension", 1},
+        {"nodes", {{{"id", "a"}, {"x", 0.0}}, {{"id", "b"}, {"x", 0.0}}}},
+        {"masses", {{{"node", "a"}, {"mass", 1.0}}, {{"node", "b"}, {"mass", 2.0}}}},
+        {"initial_velocities", {{{"node", "a"}, {"x", 1.0}}, {{"node", "b"}, {"x", -0.5}}}},
+        {"links",
+         {{{"id", "c"},
+           {"nodes", {"a", "b"}},
+           {"axis", {1}},
+           {"gap", 0.00123},
+           {"law", {{"type", "gap_spring"}, {"stiffness", 1e4}}}}}},
+        {"analysis",
+         {{"integrator", "newmark_average_acceleration"},
+          {"time_step", time_step},
+          {"duration", 0.1}}}};
+    const fs::path file = path("pair.json"), out = path(fmt::format("out_{}", time_step));
+    std::ofstream(file) << model.dump();
+    const Outcome ran = pound({"run", file.string(), "--out", out.string()});
+    EXPECT_EQ(ran.exit_code, 0) << ran.err;
+    // `pound check` probes the same impact beforehand.
+    const Outcome checked = pound({"check", file.string()});
+    return std::pair{json::parse(read_text(out / "summary.json")), ran.err + checked.out};
+  };
+  const auto [gaining, gaining_err] = run_at(0.0047);
+  const json& e = gaining["energy"];
+  const double gained = e["kinetic"].get<double>() - e["initial"].get<double>();
+  const double created = e["contact_created"].get<double>();
+  std::printf("dt 0.0047: kinetic energy gained %.10g, contact created %.10g (%.3f %% of %.3g)\n",
+              gained, created, 100.0 * e["contact_created_fraction"].get<double>(),
+              e["initial"].get<double>());
+  EXPECT_GT(gained, 0.01 * e["initial"].get<double>());
+  EXPECT_NEAR(created, gained, 1e-9 * gained);
+  EXPECT_EQ(gaining["links"][0]["created_energy"].get<double>(), created);
+  EXPECT_TRUE(contains(gaining_err, "contact links created")) << gaining_err;
+  EXPECT_TRUE(contains(gaining_err, "creates up to")) << gaining_err;
+
+  const auto [losing, losing_err] = run_at(0.0021);
+  std::printf("dt 0.0021: kinetic energy gained %.4g, contact created %.4g\n",
+              losing["energy"]["kinetic"].get<double>() - losing["energy"]["initial"].get<double>(),
+              losing["energy"]["contact_created"].get<double>());
+  EXPECT_EQ(losing["energy"]["contact_created"].get<double>(), 0.0);
+  EXPECT_FALSE(contains(losing_err, "contact links created")) << losing_err;
+  EXPECT_FALSE(contains(losing_err, "creates up to")) << losing_err;
+}
+
+// `verify rod-impact` with an explicit integrator and no step option runs at the stable step.
+TEST_F(Cli, VerifyExplicitWithoutAStepTakesTheStableOne) {
+  const Outcome ran = pound({"verify", "rod-impact", "--integrator", "central_difference", "--n",
+                             "1000", "--duration-ratio", "1.5"});
+  ASSERT_EQ(ran.exit_code, 0) << ran.err;
+  EXPECT_TRUE(contains(ran.out, "0.8 x the stable step: no --dt-ratio or --courant given"))
+      << ran.out;
+  const Outcome refused = pound({"verify", "rod-impact", "--integrator", "central_difference",
+                                 "--n", "1000", "--dt-ratio", "0.01"});
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_TRUE(contains(refused.err, "above the stable limit")) << refused.err;
+}
+
 }  // namespace
 
 namespace {

@@ -193,6 +193,34 @@ TEST(LinkSummaries, CountEngagementsAndIntegrateImpulseAndWorkByTrapezoids) {
   EXPECT_EQ(s.last_contact, 0.4);
 }
 
+// An engagement whose work ends negative gave the structure that much (an open contact holds
+// nothing); one still going counts when its work so far is negative.
+TEST(LinkSummaries, CreatedEnergyIsTheNegativeWorkOfEachEngagement) {
+  LinkSummaries summaries({0});
+  const double forces[] = {0.0, 2.0, 4.0, 0.0, 0.0, 1.0};
+  const double penetrations[] = {-0.001, 0.01, 0.005, -0.05, -0.05, -0.06};
+  for (int k = 0; k < 6; ++k)
+    summaries.record(link_state(0.1 * k, entries({forces[k]}), entries({penetrations[k]})));
+  const LinkSummary& s = summaries.summaries().at(0);
+  // First engagement: (2 0.011 + 6 (-0.005) + 4 (-0.055)) / 2 = -0.114; the second, going on:
+  // 1 (-0.01) / 2 = -0.005.
+  EXPECT_NEAR(s.finished_created_energy, 0.114, 1e-15);
+  EXPECT_NEAR(s.engagement_work, -0.005, 1e-15);
+  EXPECT_NEAR(s.created_energy(), 0.119, 1e-15);
+  EXPECT_NEAR(s.work, -0.119, 1e-15);
+}
+
+// A positive engagement creates nothing (the first test's history: +0.01, then +0.0075).
+TEST(LinkSummaries, AnEngagementThatTookEnergyCreatedNone) {
+  LinkSummaries summaries({0});
+  const double forces[] = {0.0, 2.0, 4.0, 0.0, 1.0};
+  const double penetrations[] = {-0.02, 0.01, 0.03, -0.01, 0.005};
+  for (int k = 0; k < 5; ++k)
+    summaries.record(link_state(0.1 * k, entries({forces[k]}), entries({penetrations[k]})));
+  EXPECT_EQ(summaries.summaries().at(0).created_energy(), 0.0);
+  EXPECT_NEAR(summaries.summaries().at(0).engagement_work, 0.0075, 1e-15);
+}
+
 TEST(LinkSummaries, ARestrainerReportsTensionAndAContactAtTheStartIsAnImpact) {
   LinkSummaries summaries({0});
   summaries.record(link_state(0.0, entries({-3.0}), entries({-0.2})));
