@@ -53,7 +53,8 @@ std::string check_text(const std::string& model_path, const verification::ModelC
   else
     text += fmt::format("  central difference: not available ({})\n", check.explicit_unavailable);
   for (const verification::LinkCheck& c : check.contacts) {
-    text += c.stiff_at_first_touch
+    text += c.constraint ? fmt::format("  link {} ({}): a constraint, no stiffness", c.id, c.law)
+            : c.stiff_at_first_touch
                 ? fmt::format("  link {} ({}): stiffness {:.4g}", c.id, c.law, c.stiffness)
                 : fmt::format("  link {} ({}): stiffness grows with penetration", c.id, c.law);
     if (c.adjacent > 0.0 && c.stiff_at_first_touch)

@@ -42,8 +42,13 @@ std::string link_lines(const results::RunSummary& run) {
       case links::LinkRole::contact:
         text += fmt::format(
             "  contact {}: {} impact(s), peak force {:.6g}, peak penetration {:.4g}, impulse "
-            "{:.6g}\n",
-            link.id, s.impacts, s.peak_force, s.peak_penetration, s.impulse);
+            "{:.6g}{}\n",
+            link.id, s.impacts, s.peak_force, s.peak_penetration, s.impulse,
+            // Between lumped masses a hard contact's impact is an impulse within one step.
+            link.law == "hard_contact"
+                ? " (hard contact: an impact of lumped masses lasts about a step, so its peak "
+                  "force is that impact's impulse / dt)"
+                : "");
         break;
     }
   }

@@ -93,9 +93,10 @@ void add_verify_options(po::options_description& description, VerifyOptions& opt
       "duration-ratio", po::value(&options.duration_ratio)->default_value(options.duration_ratio),
       "run length after first contact / exact contact duration")(
       "law", po::value(&options.law)->default_value(options.law),
-      "contact law: gap_spring (stiffness from --k-ratio) or extended_penalty (Suzuki & Toi's "
-      "automatic numbers)")("eta", po::value(&options.eta)->default_value(options.eta),
-                            "extended_penalty: damping factor of alpha1")(
+      "contact law: gap_spring (stiffness from --k-ratio), extended_penalty (Suzuki & Toi's "
+      "automatic numbers) or hard_contact (a constraint, e = 0; central_difference)")(
+      "eta", po::value(&options.eta)->default_value(options.eta),
+      "extended_penalty: damping factor of alpha1")(
       "integrator", po::value(&options.integrator)->default_value("newmark_average_acceleration"),
       integrator_option_help().c_str())(
       "alpha", po::value(&options.hht_alpha)->default_value(options.hht_alpha),

@@ -85,6 +85,12 @@ void resolve_law(const LinkPlace& place, model::Link& link) {
     place.fail("/gap", fmt::format("a {} has 'slack' in its law, not a gap: the link's gap must "
                                    "be 0, got {}",
                                    type, place.spec.gap));
+  if (link.law->traits.constraint && !place.resolver.spec().analysis.integrator.is_explicit())
+    place.fail("/law", fmt::format("a {} is enforced by the explicit integrator only in this "
+                                   "version: set /analysis/integrator to \"central_difference\" "
+                                   "(with no time_step it takes its stable step), or use a "
+                                   "penalty law such as extended_penalty",
+                                   type));
   link.make_law =
       links::make_law(place.spec.law, {place.resolver.spec().source, place.path + "/law"});
 }
@@ -99,6 +105,10 @@ void resolve_friction(const LinkPlace& place, model::Link& link) {
                "friction needs a tangential direction: a 2-D scene (\"dimension\": 2)");
   if (link.role() == links::LinkRole::tension)
     place.fail("/friction", fmt::format("a {} carries no normal contact force to rub with", type));
+  if (link.law->traits.constraint)
+    place.fail("/friction", fmt::format("friction on a {} is not available yet: give the link a "
+                                        "penalty law (extended_penalty) to rub with",
+                                        type));
   if (!link.law->traits.stiff_at_first_touch && !friction.stick_stiffness)
     place.fail("/friction",
                fmt::format("give 'stick_stiffness': a {} law has no stiffness at first touch to "

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <bit>
 #include <cmath>
@@ -9,6 +10,9 @@
 #include <limits>
 #include <stdexcept>
 #include <vector>
+
+#include "core/errors.hpp"
+#include "links/hard_contact.hpp"
 
 namespace pound::integrators {
 namespace {
@@ -243,7 +247,7 @@ const IntegratorEntry& CentralDifference::entry() {
   return entry;
 }
 
-void CentralDifference::initialize(SecondOrderSystem& system, State& state) {
+void CentralDifference::initialize(SecondOrderSystem& system, State& state, double first_step) {
   const Index n = system.size();
   inverse_mass_ = diagonal_mass(system).cwiseInverse();
   coupling_.resize(0, 0);  // G = B M^-1 B^T and B by columns, built at the first step with links
@@ -270,6 +274,7 @@ void CentralDifference::initialize(SecondOrderSystem& system, State& state) {
   rhs -= work_;
   rhs.noalias() -= links.connectivity().transpose() * state.link_force;
   state.acceleration = inverse_mass_.cwiseProduct(rhs);
+  if (links.size() > 0) initial_hard_contacts(system, state, first_step);
 }
 
 StepResult CentralDifference::advance(SecondOrderSystem& system, const State& from, double dt,
@@ -277,17 +282,20 @@ StepResult CentralDifference::advance(SecondOrderSystem& system, const State& fr
   LinkSet& links = system.links();
   const Index n = system.size(), m = links.size();
   if (inverse_mass_.size() != n) inverse_mass_ = diagonal_mass(system).cwiseInverse();
+  StepResult result;
   to.time = from.time + dt;
   const double half_dt = 0.5 * dt;
   to.displacement.resize(n);
   to.acceleration.resize(n);
   to.velocity.resize(n);
   bool finite_state = advance_without_links(system, from, dt, to);
-  StepResult result;
   if (m > 0) {
     if (coupling_.rows() != m) prepare_links(links);
     link_kinematics(system, from, half_dt, to);
+    for (links::HardContact* hard : hard_laws_)
+      if (hard) hard->impose(0.0);  // the force laws' solve sees no constraint force
     if (!solve_link_forces(links, to, result)) return result;
+    if (!hard_groups_.empty() && !solve_hard_contacts(to, dt, result)) return result;
     finite_state &= apply_link_forces(from, half_dt, to);
   } else {
     to.link_penetration.resize(0);
@@ -351,6 +359,155 @@ void CentralDifference::prepare_links(const LinkSet& links) {
   link_groups_ = coupled_row_groups(coupling_, links);
   group_jacobians_.resize(link_groups_.size());
   group_lus_.resize(link_groups_.size());
+  hard_laws_.assign(static_cast<std::size_t>(links.size()), nullptr);
+  for (Index k = 0; k < links.count(); ++k)
+    hard_laws_[static_cast<std::size_t>(links.row(k))] =
+        const_cast<LinkSet&>(links).hard_contact(k);
+  hard_groups_.clear();
+  for (const std::vector<Index>& group : link_groups_) {
+    std::vector<Index> hard;
+    for (const Index r : group)
+      if (hard_laws_[static_cast<std::size_t>(r)]) hard.push_back(r);
+    if (!hard.empty()) hard_groups_.push_back(std::move(hard));
+  }
+}
+
+bool CentralDifference::solve_hard_contacts(State& to, double dt, StepResult& result) {
+  // delta~_{n+2} of every row: delta_{n+1} + dt (w_{n+1/2} + dt B a_{n+1}), with a_{n+1} carrying
+  // the force laws' forces already.
+  link_acceleration_ = free_acceleration_;
+  link_acceleration_.noalias() -= coupling_ * to.link_force;
+  for (const std::vector<Index>& rows : hard_groups_)
+    if (!solve_hard_group(rows, dt, dt * dt, to.link_penetration, rate_, link_acceleration_,
+                          to.link_force)) {
+      result.failure =
+          "the hard contacts' forces did not settle (a contact closing and "
+          "releasing without end)";
+      return false;
+    }
+  return true;
+}
+
+void CentralDifference::initial_hard_contacts(SecondOrderSystem& system, State& state, double dt) {
+  LinkSet& links = system.links();
+  prepare_links(links);
+  if (hard_groups_.empty()) return;
+  Vector acceleration, force = Vector::Zero(links.size());
+  links.project(state.velocity, rate_);
+  links.project(state.acceleration, acceleration);
+  if (system.has_link_motion()) {
+    system.link_motion(state.time, offset_, offset_rate_, offset_acceleration_);
+    rate_ += offset_rate_;
+    acceleration += offset_acceleration_;
+  }
+  for (const std::vector<Index>& rows : hard_groups_)
+    if (!solve_hard_group(rows, dt, 0.5 * dt * dt, state.link_penetration, rate_, acceleration,
+                          force))
+      throw SolveError(state.time, "the hard contacts' forces at the start did not settle");
+  links.commit();
+  for (const std::vector<Index>& rows : hard_groups_)
+    for (const Index r : rows) state.link_force[r] = force[r];
+  for (const Index j : link_dofs_) {
+    double sum = 0.0;
+    for (Eigen::SparseMatrix<double>::InnerIterator it(link_columns_, j); it; ++it)
+      sum += it.value() * force[it.row()];
+    state.acceleration[j] -= inverse_mass_[j] * sum;
+  }
+}
+
+bool CentralDifference::solve_hard_group(const std::vector<Index>& rows, double dt, double scale,
+                                         const Vector& penetration, const Vector& rate,
+                                         const Vector& acceleration, Vector& forces) {
+  const auto size = static_cast<Index>(rows.size());
+  free_next_.resize(size);
+  bound_.resize(size);
+  candidate_.assign(rows.size(), 0);
+  active_.assign(rows.size(), 0);
+  for (Index i = 0; i < size; ++i) {
+    const Index r = rows[static_cast<std::size_t>(i)];
+    const double now = penetration[r];
+    const double next = now + dt * rate[r] + scale * acceleration[r];
+    free_next_[i] = next;
+    const links::HardContact& law = *hard_laws_[static_cast<std::size_t>(r)];
+    const bool holding = law.in_contact();
+    // Holding: no further approach. Closing in this step: the impact law on the approach rate,
+    // w+ = -e w- exactly (stopping short of touch by less than dt w-); with e = 0 the gap
+    // closes instead, touching exactly, and the approach stops in this step or the next.
+    const double restitution = law.restitution();
+    bound_[i] = holding || restitution == 0.0
+                    ? (holding ? std::min(0.0, now) : 0.0)
+                    : std::min(0.0, now) - restitution * std::max(0.0, next - now);
+    candidate_[static_cast<std::size_t>(i)] = holding || next > 0.0;
+    active_[static_cast<std::size_t>(i)] =
+        candidate_[static_cast<std::size_t>(i)] && next > bound_[i];
+  }
+  Vector force = Vector::Zero(size);
+  for (int iteration = 0; iteration < 4 * static_cast<int>(size) + 8; ++iteration) {
+    // Forces of the active rows: dt^2 G_AA F_A = delta~_A - bound_A.
+    std::vector<Index> active;
+    for (Index i = 0; i < size; ++i)
+      if (active_[static_cast<std::size_t>(i)]) active.push_back(i);
+    const auto count = static_cast<Index>(active.size());
+    force.setZero();
+    if (count > 0) {
+      active_matrix_.resize(count, count);
+      active_force_.resize(count);
+      for (Index a = 0; a < count; ++a) {
+        const Index i = active[static_cast<std::size_t>(a)];
+        active_force_[a] = free_next_[i] - bound_[i];
+        for (Index b = 0; b < count; ++b)
+          active_matrix_(a, b) =
+              scale *
+              coupling_(rows[static_cast<std::size_t>(i)],
+                        rows[static_cast<std::size_t>(active[static_cast<std::size_t>(b)])]);
+      }
+      active_force_ = active_matrix_.llt().solve(active_force_);
+      for (Index a = 0; a < count; ++a)
+        force[active[static_cast<std::size_t>(a)]] = active_force_[a];
+    }
+    // The most tensile active row leaves; else the row most past its bound joins.
+    Index worst = -1;
+    double worst_value = 0.0;
+    for (const Index i : active)
+      if (force[i] < worst_value) {
+        worst = i;
+        worst_value = force[i];
+      }
+    if (worst >= 0) {
+      active_[static_cast<std::size_t>(worst)] = 0;
+      continue;
+    }
+    double worst_excess = 0.0;
+    for (Index i = 0; i < size; ++i) {
+      if (active_[static_cast<std::size_t>(i)]) continue;
+      double next = free_next_[i];
+      for (const Index j : active)
+        next -= scale *
+                coupling_(rows[static_cast<std::size_t>(i)], rows[static_cast<std::size_t>(j)]) *
+                force[j];
+      // A row that was no candidate is bound only by not penetrating.
+      const double bound = candidate_[static_cast<std::size_t>(i)] ? bound_[i] : 0.0;
+      const double excess = next - bound;
+      if (excess > worst_excess + 1e-12 * (std::abs(next) + std::abs(bound))) {
+        worst = i;
+        worst_excess = excess;
+      }
+    }
+    if (worst < 0) {
+      for (Index i = 0; i < size; ++i) {
+        const Index r = rows[static_cast<std::size_t>(i)];
+        forces[r] = force[i];
+        hard_laws_[static_cast<std::size_t>(r)]->impose(force[i]);
+      }
+      return true;
+    }
+    if (!candidate_[static_cast<std::size_t>(worst)]) {
+      candidate_[static_cast<std::size_t>(worst)] = 1;
+      bound_[worst] = 0.0;
+    }
+    active_[static_cast<std::size_t>(worst)] = 1;
+  }
+  return false;
 }
 
 void CentralDifference::link_kinematics(SecondOrderSystem& system, const State& from,

@@ -11,6 +11,18 @@
 // laws without a mass term take one evaluation. A step is refused when the state is not finite.
 // Stable only below 2 / omega_max, which depends on the links in contact (alpha0 raises it, alpha2
 // lowers it): see stable_time_step.
+//
+// Hard contacts (links/hard_contact.hpp) are constraints on the next positions, after Carpenter,
+// Taylor & Katona (1991): F_{n+1} changes u_{n+2} = u_{n+1} + dt (v_{n+1/2} + dt a_{n+1}) by
+// -dt^2 M^-1 B^T F, so the contacts' forces solve, group by group, the small complementarity
+// problem  F >= 0,  delta_{n+2} = delta~_{n+2} - dt^2 G F <= bound,  F (bound - delta_{n+2}) = 0
+// (an active set: G is positive definite). The bound makes the impact law exact at velocity
+// level (Moreau-Jean): a contact that closes in this step (open, delta~_{n+2} > 0) has
+// bound = min(0, delta_{n+1}) - e dt w-, w- = (delta~_{n+2} - delta_{n+1}) / dt, so its
+// half-step approach rate w- becomes -e w- (it rebounds short of touch, by less than dt w-);
+// with e = 0 bound = 0, Carpenter's: the gap closes exactly and the approach stops. A contact
+// already carrying a force has bound = min(0, delta_{n+1}): it approaches no further, and lets
+// go when held only by tension. No contact ever penetrates.
 #include <Eigen/LU>
 #include <vector>
 
@@ -24,7 +36,7 @@ class CentralDifference final : public Integrator {
   std::string name() const override { return "central_difference"; }
   // Its catalog entry (integrators/integrator_catalog.hpp).
   static const IntegratorEntry& entry();
-  void initialize(SecondOrderSystem& system, State& state) override;
+  void initialize(SecondOrderSystem& system, State& state, double first_step) override;
   StepResult advance(SecondOrderSystem& system, const State& from, double dt, State& to) override;
 
  private:
@@ -39,6 +51,17 @@ class CentralDifference final : public Integrator {
   bool solve_link_forces(LinkSet& links, State& to, StepResult& result);
   // correction_ from residual_ and tangent_, group by group.
   void solve_newton_correction();
+  // The hard contacts' forces, after the force laws': none penetrates at t_{n+2}; false, with
+  // result.failure, when their complementarity problem does not settle.
+  bool solve_hard_contacts(State& to, double dt, StepResult& result);
+  // One group's forces, delta~_{n+2} = delta + dt rate + scale acceleration and the forces'
+  // effect -scale G F; into `force` (and imposed on the laws).
+  bool solve_hard_group(const std::vector<Index>& rows, double dt, double scale,
+                        const Vector& penetration, const Vector& rate, const Vector& acceleration,
+                        Vector& force);
+  // Contacts already closing at t_0 get their force into F_0 and a_0, so that u_1 does not
+  // penetrate (u_1 = u_0 + dt v_0 + dt^2/2 a_0).
+  void initial_hard_contacts(SecondOrderSystem& system, State& state, double dt);
   // The link forces' share of a_{n+1} and v_{n+1}; returns whether those v_{n+1} are finite.
   bool apply_link_forces(const State& from, double half_dt, State& to) const;
 
@@ -58,6 +81,14 @@ class CentralDifference final : public Integrator {
   Vector group_residual_;
   Eigen::SparseMatrix<double> link_columns_;  // B by columns, for B^T F at the DOFs it touches
   std::vector<Index> link_dofs_;              // the columns of B that have entries
+  // Hard contacts: their laws by row, and the rows of each link group that are hard.
+  std::vector<links::HardContact*> hard_laws_;  // by row; nullptr for a force law's row
+  std::vector<std::vector<Index>> hard_groups_;
+  // Per hard row of a group: delta_{n+2} without its force, its bound, whether it is in the
+  // active set; the active set's matrix and solution.
+  Vector free_next_, bound_, active_force_;
+  std::vector<char> candidate_, active_;
+  Matrix active_matrix_;
 };
 
 // The largest stable step of central difference, 2/omega_max (reduced for damping at omega_max),

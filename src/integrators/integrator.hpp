@@ -40,8 +40,9 @@ class Integrator {
  public:
   virtual ~Integrator() = default;
   virtual std::string name() const = 0;
-  // Completes `state` (acceleration, link state) at its time from u and v.
-  virtual void initialize(SecondOrderSystem& system, State& state) = 0;
+  // Completes `state` (acceleration, link state) at its time from u and v; `first_step` is the
+  // size of the step to come (central difference enforces hard contacts over it).
+  virtual void initialize(SecondOrderSystem& system, State& state, double first_step) = 0;
   // Tries one step of size dt from `from` into `to`; links are left at the trial state.
   virtual StepResult advance(SecondOrderSystem& system, const State& from, double dt,
                              State& to) = 0;

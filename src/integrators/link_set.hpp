@@ -70,6 +70,11 @@ class LinkSet {
 
   // The normal law of a link (for a link with friction, the one inside it).
   const links::LinkLaw& law(Index link) const;
+  // The hard contact of a link without friction; none for a force law.
+  links::HardContact* hard_contact(Index link) {
+    const Link& entry = links_[static_cast<std::size_t>(link)];
+    return entry.friction ? nullptr : entry.law->hard_contact();
+  }
   const links::CoulombFriction* friction(Index link) const {
     return links_[static_cast<std::size_t>(link)].friction.get();
   }

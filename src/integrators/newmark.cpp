@@ -125,7 +125,7 @@ std::string Newmark::name() const {
   return fmt::format("newmark(beta={:g}, gamma={:g})", beta_, gamma_);
 }
 
-void Newmark::initialize(SecondOrderSystem& system, State& state) {
+void Newmark::initialize(SecondOrderSystem& system, State& state, double /*first_step*/) {
   factorizations_.by_step.clear();
   factorizations_.uses.clear();
   const Index n = system.size();

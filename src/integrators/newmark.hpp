@@ -47,7 +47,7 @@ class Newmark final : public Integrator {
   static const IntegratorEntry& generalized_alpha_entry();
 
   std::string name() const override;
-  void initialize(SecondOrderSystem& system, State& state) override;
+  void initialize(SecondOrderSystem& system, State& state, double first_step) override;
   StepResult advance(SecondOrderSystem& system, const State& from, double dt, State& to) override;
 
   // The general path of the Newton correction: I + T G over every link row, factored at every

@@ -55,7 +55,7 @@ TransientAnalysis::TransientAnalysis(SecondOrderSystem& system, Integrator& inte
 TransientStatistics TransientAnalysis::run(State& state, const StepObserver& observer) {
   statistics_ = {};
   started_ = std::chrono::steady_clock::now();
-  integrator_.initialize(system_, state);
+  integrator_.initialize(system_, state, settings_.time_step);
   if (observer) {
     StepResult initial;
     initial.converged = true;

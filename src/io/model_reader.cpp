@@ -66,7 +66,7 @@ LawSpec read_law(JsonObject& object, LawPlace place) {
       value->fail(fmt::format("must be <= 1 (a coefficient of restitution), got {}", number));
     if (parameter.range == Range::fraction && number >= 1.0)
       value->fail(fmt::format("must be < 1, got {}", number));
-    if (parameter.range == Range::unit && number > 1.0)
+    if ((parameter.range == Range::unit || parameter.range == Range::closed_unit) && number > 1.0)
       value->fail(fmt::format("must be <= 1, got {}", number));
     if (parameter.generator_only && place != LawPlace::rod_pair)
       value->fail("only allowed inside a rod_pair generator");

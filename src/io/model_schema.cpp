@@ -52,9 +52,17 @@ constexpr int kMostBlockElementsPerSide = 10000;
 struct Law {
   using value_type = builder::LawSpec;
   LawPlace place = LawPlace::link;
+  // What the law stands for where a force law is needed (a bearing, a restrainer): a constraint
+  // such as hard_contact is refused there. Empty where any contact law goes.
+  std::string member;
 
   void read(const JsonValue& value, builder::LawSpec& target, Context&) const {
     target = read_law_in(value, place);
+    const links::LawEntry* entry = links::find_law(target.type);
+    if (!member.empty() && entry && entry->traits.constraint)
+      JsonObject(value).at("type").fail(fmt::format(
+          "{} is a contact constraint with no force law of its own; {} needs a force law",
+          target.type, member));
   }
   OrderedJson write(const builder::LawSpec& law, const Context&) const { return law_json(law); }
   std::string type() const { return "object"; }
@@ -427,7 +435,7 @@ const Fields<StoreySpec>& storey_fields() {
       required("mass", &StoreySpec::mass, Number<>{positive}, "floor mass [M]"),
       required("stiffness", &StoreySpec::stiffness, Number<>{positive},
                "lateral storey stiffness k [F/L]"),
-      optional("law", &StoreySpec::law, Law{LawPlace::storey},
+      optional("law", &StoreySpec::law, Law{LawPlace::storey, "a storey"},
                "a yielding storey: its shear–drift law, a spring law without `stiffness` (the "
                "storey's)"),
   };
@@ -530,7 +538,7 @@ const Fields<JointSpec>& joint_fields() {
   static const Fields<JointSpec> fields = {
       required("gap", &JointSpec::gap, Number<>{non_negative}, "clear distance [L]"),
       required("law", &JointSpec::law, Law{}, "pounding law"),
-      optional("restrainer", &JointSpec::restrainer, Law{},
+      optional("restrainer", &JointSpec::restrainer, Law{LawPlace::link, "a restrainer"},
                "a tension law (restrainer, hook) across the joint"),
       optional("seat_width", &JointSpec::seat_width, Number<>{non_negative},
                "[L]; 0: unseating not checked")
@@ -594,7 +602,7 @@ const Fields<builder::PierHingeSpec>& pier_hinge_fields() {
       optional("stiffness_factor", &PierHingeSpec::stiffness_factor, Number<>{positive},
                "n: hinge stiffness (n + 1)·3 E I / h, pier E I raised to (n + 1)/n E I")
           .always_written(),
-      required("law", &PierHingeSpec::law, Law{LawPlace::pier_hinge},
+      required("law", &PierHingeSpec::law, Law{LawPlace::pier_hinge, "a pier hinge"},
                "moment–rotation law of the hinges, without `stiffness` and `yield_force` (the "
                "generator sets them)"),
       optional("damping", &PierHingeSpec::damping, damping_stiffness_choice(),
@@ -650,7 +658,7 @@ const Fields<GirderBridgeSpec>& girder_bridge_fields() {
                                                  : object.at("pier_yield_drift"))
               .fail("not with 'pier_hinge': the hinges' yield moment gives the yield drift");
       }),
-      optional("bearing", &GirderBridgeSpec::bearing, Law{},
+      optional("bearing", &GirderBridgeSpec::bearing, Law{LawPlace::link, "a bearing"},
                "horizontal law of every bearing; required without bearing_friction, in "
                "parallel with it otherwise"),
       required("bearing_vertical_stiffness", &GirderBridgeSpec::bearing_vertical_stiffness,
@@ -672,7 +680,7 @@ const Fields<GirderBridgeSpec>& girder_bridge_fields() {
       required("abutment", &GirderBridgeSpec::abutment,
                Object<JointSpec>{joint_fields(), Docs::own_table},
                "girder end against the backwall"),
-      optional("backfill", &GirderBridgeSpec::backfill, Law{},
+      optional("backfill", &GirderBridgeSpec::backfill, Law{LawPlace::link, "the backfill"},
                "a compression-only law behind each backwall; without it the backwall is fixed"),
       required("backwall_mass", &GirderBridgeSpec::backwall_mass, Number<>{positive},
                "mass of each backwall [M]")

@@ -29,7 +29,9 @@ std::string role_text(const links::LawEntry& law) {
       text = "spring";
       break;
   }
-  if (law.traits.role == links::LinkRole::contact && !law.traits.stiff_at_first_touch)
+  if (law.traits.constraint)
+    text += "; a constraint, no stiffness";
+  else if (law.traits.role == links::LinkRole::contact && !law.traits.stiff_at_first_touch)
     text += "; no stiffness at first touch";
   if (law.traits.uses_approach_velocity) text += "; uses v0";
   if (law.calibratable()) text += "; from e";
@@ -49,6 +51,8 @@ std::string range_text(links::LawParameter::Range range) {
       return "in [0, 1)";
     case Range::unit:
       return "in (0, 1]";
+    case Range::closed_unit:
+      return "in [0, 1]";
   }
   return "";
 }

@@ -15,6 +15,7 @@
 #include "links/elastic_spring.hpp"
 #include "links/extended_penalty.hpp"
 #include "links/gap_spring.hpp"
+#include "links/hard_contact.hpp"
 #include "links/hertz.hpp"
 #include "links/hertz_damp.hpp"
 #include "links/jankowski.hpp"
@@ -90,6 +91,7 @@ const std::vector<const LawEntry*>& law_registry() {
       &Jankowski::entry(),
       &BilinearImpact::entry(),
       &ExtendedPenalty::entry(),
+      &HardContact::entry(),
       &Restrainer::restrainer_entry(),
       &Restrainer::hook_entry(),
       &ElasticSpring::entry(),

@@ -58,11 +58,13 @@ struct LawTraits {
   bool penalty = true;
   // The force depends on the approach velocity v0 at first contact (links/impact_onset.hpp).
   bool uses_approach_velocity = false;
+  // Not a force law but a constraint the integrator enforces (links/hard_contact.hpp).
+  bool constraint = false;
 };
 
 struct LawParameter {
-  // > 0, >= 0, (0, 1] for a coefficient of restitution, [0, 1), (0, 1]
-  enum class Range { positive, non_negative, restitution, fraction, unit };
+  // > 0, >= 0, (0, 1] for a coefficient of restitution, [0, 1), (0, 1], [0, 1]
+  enum class Range { positive, non_negative, restitution, fraction, unit, closed_unit };
   std::string name;
   Range range;
   std::string units;            // "F/L", "-": in the model's units
@@ -109,7 +111,8 @@ struct LawEntry {
   // Whether `parameter` may be added to `law` (the law has it, and nothing given excludes it).
   bool accepts(const std::string& parameter, const LawSpec& law) const;
   // Reaches a target coefficient of restitution of a two-mass impact when given one.
-  bool calibratable() const { return parameter("restitution") != nullptr; }
+  // (A constraint takes e as its impact law instead.)
+  bool calibratable() const { return parameter("restitution") != nullptr && !traits.constraint; }
 };
 
 // What several laws share: a target restitution, how it becomes damping, and the effective mass

@@ -13,7 +13,8 @@
 
 namespace pound::links {
 
-struct LawEntry;  // links/law_registry.hpp: what each law is, for readers, writers and docs
+struct LawEntry;    // links/law_registry.hpp: what each law is, for readers, writers and docs
+class HardContact;  // links/hard_contact.hpp
 
 // Penetration and its rates at the trial state.
 struct LinkKinematics {
@@ -57,6 +58,8 @@ class LinkLaw {
   virtual std::optional<double> yield_deformation() const { return std::nullopt; }
   // Zero for every law but one with added stiffness-proportional damping.
   virtual ViscousPart viscous_part() const { return {}; }
+  // A hard contact is a constraint whose force the integrator finds; none for a force law.
+  virtual HardContact* hard_contact() { return nullptr; }
 };
 
 }  // namespace pound::links

@@ -34,7 +34,7 @@ struct ErrorStudyOptions {
   std::vector<std::string> benchmarks{"kawashima", "area-ratio-3"};
   // Every method of the catalog with its study parameters.
   std::vector<integrators::IntegratorChoice> methods = integrators::IntegratorChoice::studied();
-  std::vector<std::string> laws{"gap_spring", "extended_penalty"};
+  std::vector<std::string> laws{"gap_spring", "extended_penalty", "hard_contact"};
   std::vector<int> elements{50, 200, 1000};
   std::vector<double> courants{1.0, 0.5, 0.25};
   int repeats = 3;

@@ -73,7 +73,7 @@ LinkCheck check_contact(const model::Link& link, const links::LinkLaw& law,
                         const assembly::StructuralSystem& system, double approach_velocity) {
   const links::LawTraits traits = link.law ? link.law->traits : links::LawTraits{};
   const links::LinkContext context = system.link_context(link);
-  LinkCheck c{link.id, law.name(), traits.stiff_at_first_touch};
+  LinkCheck c{link.id, law.name(), traits.stiff_at_first_touch, traits.constraint};
   const links::LawResponse touch = law.clone()->set_trial({1e-9, 1e-9, 0.0});
   // Hertz-type laws stiffen with penetration: no stiffness or duration before the impact.
   if (c.stiff_at_first_touch) c.stiffness = touch.stiffness;

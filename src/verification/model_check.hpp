@@ -20,6 +20,7 @@ namespace pound::verification {
 struct LinkCheck {
   std::string id, law;
   bool stiff_at_first_touch = true;  // else its stiffness grows from 0 (Hertz-type)
+  bool constraint = false;           // a hard contact: no stiffness at all
   double stiffness = 0.0;            // at first touch
   double adjacent = 0.0;             // of the softer element next to it; 0: bare masses
   double contact_duration = 0.0;     // when the link governs it; 0: not claimed

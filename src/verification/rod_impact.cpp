@@ -90,11 +90,19 @@ RodImpactMetrics compare_with_exact(const ExactRodImpact& exact, double first_co
     m.max_penetration = std::max(m.max_penetration, penetration[k]);
     m.min_force = std::min(m.min_force, force[k]);
     const bool contact = force[k] > 0.0;
+    // A penalty contact begins and ends where the penetration crosses zero. A hard contact has
+    // none: its force at a sample acts from half a step before to half a step after it
+    // (central difference's velocities at the half steps), the first from t_0.
     if (contact && !in_contact) {
       ++m.contact_episodes;
-      if (start < 0.0) start = k == 0 ? time[0] : crossing(time, penetration, k - 1);
+      if (start < 0.0)
+        start = k == 0                 ? time[0]
+                : penetration[k] > 0.0 ? crossing(time, penetration, k - 1)
+                                       : 0.5 * (time[k - 1] + time[k]);
     }
-    if (!contact && in_contact) end = crossing(time, penetration, k - 1);
+    if (!contact && in_contact)
+      end = penetration[k - 1] > 0.0 ? crossing(time, penetration, k - 1)
+                                     : 0.5 * (time[k - 1] + time[k]);
     in_contact = contact;
   }
   if (in_contact) end = std::min(window_end, time.back());

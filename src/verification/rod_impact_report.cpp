@@ -11,13 +11,18 @@ std::vector<std::string> rod_impact_case_names() {
   return {"kawashima", "fixed-end", "area-ratio-3"};
 }
 
-std::vector<std::string> rod_impact_law_names() { return {"gap_spring", "extended_penalty"}; }
+std::vector<std::string> rod_impact_law_names() {
+  return {"gap_spring", "extended_penalty", "hard_contact"};
+}
 
 builder::RodPairSpec rod_impact_case(const std::string& name, int elements, double stiffness_ratio,
                                      const std::string& law, double eta) {
   builder::RodPairSpec pair = kawashima_rod_pair(elements, stiffness_ratio);
   if (law == "extended_penalty") {
     pair.law = {.type = "extended_penalty", .parameters = {{"eta", eta}}};
+  } else if (law == "hard_contact") {
+    // Between meshes: the rods' elasticity makes the bounce.
+    pair.law = {.type = "hard_contact", .parameters = {{"restitution", 0.0}}};
   } else if (law != "gap_spring") {
     throw std::invalid_argument(
         fmt::format("unknown law '{}' for the rod pair (expected one of: {})", law,

@@ -1,5 +1,6 @@
-// Explicit central difference: its stable step against closed forms, its order of accuracy, and
-// the contact-active limit of Suzuki & Toi's two-element model (eq. 4).
+// Explicit central difference: its stable step against closed forms, its order of accuracy, the
+// contact-active limit of Suzuki & Toi's two-element model (eq. 4), and hard contacts against
+// the rigid-body impulse solution.
 #include "integrators/central_difference.hpp"
 
 #include <gtest/gtest.h>
@@ -10,6 +11,7 @@
 
 #include "integrators/transient_analysis.hpp"
 #include "links/extended_penalty.hpp"
+#include "links/hard_contact.hpp"
 #include "links/viscous_damper.hpp"
 #include "support/oscillator.hpp"
 
@@ -78,6 +80,115 @@ TEST(CentralDifference, ForcedDampedOscillatorConvergesAtSecondOrder) {
 // oscillator's (2 / w)(sqrt(1 + z^2) - z) as the spring vanishes (the link rate is taken at the
 // half step, so the half-step velocity changes by the factor 1 - c h / m a step). Checked by
 // running just below and just above it.
+// Two free masses (no springs) joined by one link row u_0 - u_1 - gap.
+class FreeMassPair final : public integrators::SecondOrderSystem {
+ public:
+  FreeMassPair(double mass_0, double mass_1, integrators::LinkSet links)
+      : mass_(Vector{{mass_0, mass_1}}), links_(std::move(links)) {}
+  Index size() const override { return 2; }
+  void multiply_mass(const Vector& x, Vector& y) const override { y = mass_.cwiseProduct(x); }
+  const Vector* lumped_mass() const override { return &mass_; }
+  bool has_damping() const override { return false; }
+  void multiply_damping(const Vector& x, Vector& y) const override { y.setZero(x.size()); }
+  void multiply_stiffness(const Vector& x, Vector& y) const override { y.setZero(x.size()); }
+  bool has_external_force() const override { return false; }
+  void external_force(double, Vector& force) const override { force.setZero(2); }
+  std::unique_ptr<integrators::LinearSolver> factor(double, double, double) const override {
+    return nullptr;  // an explicit method needs none
+  }
+  integrators::LinkSet& links() override { return links_; }
+
+ private:
+  Vector mass_;
+  integrators::LinkSet links_;
+};
+
+integrators::LinkSet hard_contact_row(std::vector<integrators::LinkSet::Term> row, double gap,
+                                      double restitution) {
+  std::vector<std::unique_ptr<links::LinkLaw>> laws;
+  laws.push_back(std::make_unique<links::HardContact>(restitution));
+  return integrators::LinkSet(static_cast<Index>(row.size()), {row}, {gap}, std::move(laws));
+}
+
+// Masses 1 and 3 closing at 3 through a hard contact, first touch at several phases of a step:
+// afterwards their velocities are the rigid-body impulse solution with Newton's e, the pair has
+// lost exactly (1 - e^2) of 1/2 m_eff w^2, and the contact never penetrated.
+TEST(CentralDifference, HardContactGivesTheRigidImpulseSolution) {
+  const double m0 = 1.0, m1 = 3.0, v0 = 2.0, v1 = -1.0, dt = 1e-3;
+  const double closing = v0 - v1, effective = m0 * m1 / (m0 + m1);
+  double worst_velocity = 0.0, worst_energy = 0.0, deepest = 0.0;
+  for (const double e : {0.0, 0.3, 0.7, 1.0})
+    for (const double phase : {0.0, 0.25, 0.5, 0.9}) {
+      const double gap = closing * dt * (3.0 + phase);
+      FreeMassPair system(m0, m1, hard_contact_row({{0, 1.0}, {1, -1.0}}, gap, e));
+      integrators::CentralDifference integrator;
+      integrators::TransientAnalysis analysis(system, integrator,
+                                              {.time_step = dt, .end_time = 20.0 * dt});
+      integrators::State state;
+      state.displacement = Vector::Zero(2);
+      state.velocity = Vector{{v0, v1}};
+      analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
+        deepest = std::max(deepest, s.link_penetration[0]);
+      });
+      const double exact_0 = (m0 * v0 + m1 * v1 - m1 * e * closing) / (m0 + m1);
+      const double exact_1 = (m0 * v0 + m1 * v1 + m0 * e * closing) / (m0 + m1);
+      worst_velocity = std::max({worst_velocity, std::abs(state.velocity[0] - exact_0),
+                                 std::abs(state.velocity[1] - exact_1)});
+      const double lost =
+          0.5 * (m0 * v0 * v0 + m1 * v1 * v1) - 0.5 * (m0 * state.velocity[0] * state.velocity[0] +
+                                                       m1 * state.velocity[1] * state.velocity[1]);
+      const double expected = (1.0 - e * e) * 0.5 * effective * closing * closing;
+      worst_energy = std::max(worst_energy, std::abs(lost - expected) / (0.5 * effective * 9.0));
+    }
+  std::cout << "hard contact, rigid pair: largest velocity error " << worst_velocity
+            << ", energy loss error " << worst_energy << " of the approach energy, deepest "
+            << "penetration " << deepest << "\n";
+  EXPECT_LT(worst_velocity, 1e-12);
+  EXPECT_LT(worst_energy, 1e-12);
+  EXPECT_LE(deepest, 0.0);
+}
+
+// A mass against a rigid wall (the link's other end fixed): it comes back at -e v; with e = 0 it
+// stays at the wall, pressed by a constant force with no bounce and no penetration, and the
+// wall carries exactly that force.
+TEST(CentralDifference, HardContactAgainstAWallBouncesOrHolds) {
+  const double mass = 2.0, velocity = 0.5, dt = 1e-3, gap = velocity * dt * 2.6;
+  for (const double e : {0.0, 0.5, 1.0}) {
+    Oscillator system(mass, 0.0, 0.0, hard_contact_row({{0, 1.0}}, gap, e),
+                      [](double) { return 3.0; });  // pushing towards the wall
+    integrators::CentralDifference integrator;
+    integrators::TransientAnalysis analysis(system, integrator,
+                                            {.time_step = dt, .end_time = 8.0 * dt});
+    integrators::State state;
+    state.displacement = Vector::Zero(1);
+    state.velocity = Vector::Constant(1, velocity);
+    double deepest = -1.0;
+    analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
+      deepest = std::max(deepest, s.link_penetration[0]);
+    });
+    std::cout << "wall, e = " << e << ": velocity " << state.velocity[0] << ", force "
+              << state.link_force[0] << ", deepest " << deepest << "\n";
+    EXPECT_LE(deepest, 0.0);
+    if (e == 0.0) {  // touching exactly, at rest
+      EXPECT_NEAR(deepest, 0.0, 1e-15);
+      EXPECT_NEAR(state.velocity[0], 0.0, 1e-15);
+      EXPECT_NEAR(state.link_force[0], 3.0, 1e-12);
+    }
+  }
+  // Without the push, a bounce is -e v exactly.
+  for (const double e : {0.5, 1.0}) {
+    Oscillator system(mass, 0.0, 0.0, hard_contact_row({{0, 1.0}}, gap, e));
+    integrators::CentralDifference integrator;
+    integrators::TransientAnalysis analysis(system, integrator,
+                                            {.time_step = dt, .end_time = 10.0 * dt});
+    integrators::State state;
+    state.displacement = Vector::Zero(1);
+    state.velocity = Vector::Constant(1, velocity);
+    analysis.run(state);
+    EXPECT_NEAR(state.velocity[0], -e * velocity, 1e-15);
+  }
+}
+
 TEST(CentralDifference, ViscousDamperLinkBoundsTheStep) {
   const double mass = 2.0, stiffness = 8.0, coefficient = 400.0;  // z = 50
   auto damped_mass = [&] {

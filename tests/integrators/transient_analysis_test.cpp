@@ -193,8 +193,9 @@ TEST(TransientAnalysis, EndTimeIsReachedExactlyWithoutDrift) {
 class StepSizeSpy final : public integrators::Integrator {
  public:
   std::string name() const override { return newmark.name(); }
-  void initialize(integrators::SecondOrderSystem& system, integrators::State& state) override {
-    newmark.initialize(system, state);
+  void initialize(integrators::SecondOrderSystem& system, integrators::State& state,
+                  double first_step) override {
+    newmark.initialize(system, state, first_step);
   }
   integrators::StepResult advance(integrators::SecondOrderSystem& system,
                                   const integrators::State& from, double dt,

@@ -8,6 +8,8 @@
 #include <iostream>
 #include <set>
 
+#include "links/hard_contact.hpp"
+
 namespace pound::links {
 namespace {
 
@@ -68,6 +70,24 @@ TEST(LawRegistry, TheRoleIsWhatTheLawDoes) {
   for (const LawEntry* entry : law_registry()) {
     SCOPED_TRACE(entry->name);
     const auto law = make_sample(*entry);
+    if (entry->traits.constraint) {
+      // No force of its own: what the integrator imposes, kept by commit, undone by revert.
+      HardContact* hard = law->hard_contact();
+      ASSERT_NE(hard, nullptr);
+      EXPECT_EQ(hard->set_trial({0.1, 0.1, 0.0}).force, 0.0);
+      hard->impose(3.0);
+      EXPECT_EQ(hard->set_trial({0.1, 0.1, 0.0}).force, 3.0);
+      EXPECT_FALSE(hard->in_contact());
+      hard->commit();
+      EXPECT_TRUE(hard->in_contact());
+      EXPECT_EQ(hard->clone()->set_trial({0.0, 0.0, 0.0}).force, 3.0);
+      hard->impose(0.0);
+      hard->revert();
+      EXPECT_EQ(hard->set_trial({0.0, 0.0, 0.0}).force, 3.0);
+      EXPECT_EQ(entry->traits.role, LinkRole::contact);
+      continue;
+    }
+    EXPECT_EQ(law->hard_contact(), nullptr);
     // Closing while pushed in, opening while pulled apart past any slack (a damper acts on the
     // rate).
     const double pushed = law->clone()->set_trial({0.1, 0.1, 0.0}).force;

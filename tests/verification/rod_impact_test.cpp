@@ -166,6 +166,43 @@ TEST(RodImpact, CentralDifferenceWithTheExtendedPenalty) {
   EXPECT_THROW(run_rod_impact(options), InputError);
 }
 
+// The hard contact (a constraint, no stiffness to choose) with central difference at Courant 1,
+// 1000 elements per rod: lumped-mass central difference at Courant 1 carries a free rod's wave
+// exactly, and the constraint adds no error of its own: the force is exact at every sample
+// (force_l2_error at round-off) but for the contact's start, whose first half step is all a
+// step from rest can give (duration and separation velocity -1/(4n) and -1/(2n) of theirs).
+// The bounds: 0.01, 0.001, 0.001 for Kawashima's rods, x 1.5 for the other cases; a
+// pair of different materials, areas and lengths keeps Courant 1 in both rods.
+TEST(RodImpact, HardContactAtCourantOneMeetsTheBounds) {
+  builder::RodPairSpec mixed = rod_impact_case("kawashima", 1000, 1.0, "hard_contact");
+  mixed.right.youngs_modulus = 400.0;  // twice the wave speed, so twice as long an element
+  mixed.right.length = 20.0;
+  mixed.right.area = 2.0;
+  mixed.right.initial_velocity = -0.05;
+  const std::vector<std::pair<std::string, builder::RodPairSpec>> cases{
+      {"kawashima", rod_impact_case("kawashima", 1000, 1.0, "hard_contact")},
+      {"fixed-end", rod_impact_case("fixed-end", 1000, 1.0, "hard_contact")},
+      {"area-ratio-3", rod_impact_case("area-ratio-3", 1000, 1.0, "hard_contact")},
+      {"mixed", mixed}};
+  for (const auto& [name, pair] : cases) {
+    RodImpactOptions options;
+    options.pair = pair;
+    options.integrator = integrators::IntegratorChoice::preset("central_difference");
+    options.courant = 1.0;
+    const RodImpactMetrics m = run_rod_impact(options).metrics;
+    print("hard contact, central difference, Courant 1, " + name, m);
+    std::cout << "  force_l2_error " << m.force_l2_error << ", duration_error " << m.duration_error
+              << ", separation_velocity_error " << m.separation_velocity_error << "\n";
+    const double factor = name == "kawashima" ? 1.0 : 1.5;
+    EXPECT_LE(m.force_l2_error, 0.01 * factor) << name;
+    EXPECT_LE(std::abs(m.duration_error), 0.001 * factor) << name;
+    EXPECT_LE(std::abs(m.separation_velocity_error), 0.001 * factor) << name;
+    EXPECT_GE(m.min_force, 0.0) << name;
+    EXPECT_LE(m.max_penetration, 1e-15) << name;
+    EXPECT_EQ(m.contact_episodes, m.exact_contact_episodes) << name;
+  }
+}
+
 // Suzuki & Toi Figs. 7-8: a stiff alpha0 alone chatters; eta = 1 beats eta = 0 and eta = 10.
 TEST(RodImpact, PenaltyStudyReproducesSuzukiToi) {
   const std::vector<Study> studies = penalty_study();
