@@ -103,6 +103,17 @@ bool accelerate(Index first, Index last, double half_dt, const double* __restric
   return all_finite(flags);
 }
 
+// sum_j |B_rj u_j| of each row: the size of delta's terms, and so of its round-off.
+void row_magnitudes(const LinkSet::SparseRowMatrix& b, const Vector& u, Vector& magnitudes) {
+  magnitudes.resize(b.rows());
+  for (Index r = 0; r < b.rows(); ++r) {
+    double sum = 0.0;
+    for (LinkSet::SparseRowMatrix::InnerIterator it(b, r); it; ++it)
+      sum += std::abs(it.value() * u[it.col()]);
+    magnitudes[r] = sum;
+  }
+}
+
 // Union-find over the link rows.
 class RowUnion {
  public:
@@ -353,6 +364,7 @@ void CentralDifference::prepare_links(const LinkSet& links) {
   const LinkSet::SparseRowMatrix& b = links.connectivity();
   coupling_ = Matrix(b * inverse_mass_.asDiagonal() * b.transpose());
   link_columns_ = b;
+  link_rows_ = b;
   link_dofs_.clear();
   for (Index j = 0; j < link_columns_.outerSize(); ++j)
     if (Eigen::SparseMatrix<double>::InnerIterator(link_columns_, j)) link_dofs_.push_back(j);
@@ -377,6 +389,7 @@ bool CentralDifference::solve_hard_contacts(State& to, double dt, StepResult& re
   // the force laws' forces already.
   link_acceleration_ = free_acceleration_;
   link_acceleration_.noalias() -= coupling_ * to.link_force;
+  row_magnitudes(link_rows_, to.displacement, magnitudes_);
   for (const std::vector<Index>& rows : hard_groups_)
     if (!solve_hard_group(rows, dt, dt * dt, to.link_penetration, rate_, link_acceleration_,
                           to.link_force)) {
@@ -400,6 +413,7 @@ void CentralDifference::initial_hard_contacts(SecondOrderSystem& system, State& 
     rate_ += offset_rate_;
     acceleration += offset_acceleration_;
   }
+  row_magnitudes(link_rows_, state.displacement, magnitudes_);
   for (const std::vector<Index>& rows : hard_groups_)
     if (!solve_hard_group(rows, dt, 0.5 * dt * dt, state.link_penetration, rate_, acceleration,
                           force))
@@ -437,9 +451,13 @@ bool CentralDifference::solve_hard_group(const std::vector<Index>& rows, double 
     bound_[i] = holding || restitution == 0.0
                     ? (holding ? std::min(0.0, now) : 0.0)
                     : std::min(0.0, now) - restitution * std::max(0.0, next - now);
-    candidate_[static_cast<std::size_t>(i)] = holding || next > 0.0;
+    // Past the bound by more than round-off (1e-10 of the displacements that make delta, above
+    // what their sums accumulate over a run): a contact at rest against another (grazing, as
+    // after two rods part) stays without force rather than chatter at round-off.
+    const double tolerance = 1e-10 * magnitudes_[r];
+    candidate_[static_cast<std::size_t>(i)] = holding || next > tolerance;
     active_[static_cast<std::size_t>(i)] =
-        candidate_[static_cast<std::size_t>(i)] && next > bound_[i];
+        candidate_[static_cast<std::size_t>(i)] && next > bound_[i] + tolerance;
   }
   Vector force = Vector::Zero(size);
   for (int iteration = 0; iteration < 4 * static_cast<int>(size) + 8; ++iteration) {
@@ -487,8 +505,8 @@ bool CentralDifference::solve_hard_group(const std::vector<Index>& rows, double 
                 force[j];
       // A row that was no candidate is bound only by not penetrating.
       const double bound = candidate_[static_cast<std::size_t>(i)] ? bound_[i] : 0.0;
-      const double excess = next - bound;
-      if (excess > worst_excess + 1e-12 * (std::abs(next) + std::abs(bound))) {
+      const double excess = next - bound - 1e-10 * magnitudes_[rows[static_cast<std::size_t>(i)]];
+      if (excess > worst_excess) {
         worst = i;
         worst_excess = excess;
       }

@@ -86,7 +86,8 @@ class CentralDifference final : public Integrator {
   std::vector<std::vector<Index>> hard_groups_;
   // Per hard row of a group: delta_{n+2} without its force, its bound, whether it is in the
   // active set; the active set's matrix and solution.
-  Vector free_next_, bound_, active_force_;
+  Vector free_next_, bound_, active_force_, magnitudes_;
+  LinkSet::SparseRowMatrix link_rows_;  // B by rows
   std::vector<char> candidate_, active_;
   Matrix active_matrix_;
 };

@@ -26,8 +26,7 @@ void add_pounding(const results::LinkSummary& s, Document& doc) {
       .set("peak_penetration", s.peak_penetration)
       .set("peak_opening", s.peak_opening)
       .set("impulse", s.impulse)
-      .set("work", s.work)
-      .set("created_energy", s.created_energy());
+      .set("work", s.work);
   if (s.first_contact >= 0.0)
     doc.set("first_contact", s.first_contact).set("last_contact", s.last_contact);
 }
@@ -50,6 +49,7 @@ Document link_document(const results::LinkResult& link) {
     add_spring(link, doc);
   else
     add_pounding(s, doc);
+  if (link.passive_engagements) doc.set("created_energy", s.created_energy());
   if (link.yield_deformation) {  // a yielding law: its demand and what it dissipated
     doc.set("yield_deformation", *link.yield_deformation)
         .set("peak_deformation", link.peak_deformation())

@@ -49,6 +49,7 @@ const LawEntry& ExtendedPenalty::entry() {
                       "e*, the tolerated penetration over the adjacent elements' strain (default "
                       "1e-3)"},
                      {"eta", Range::non_negative, "-", "damping factor of alpha1 (default 1)"}},
+      .traits = {.inertia = true},
       .example = {{"alpha0", 1e9}, {"alpha2", 1e4}},
       .make = [](const LawSpec& law, const LawSource& where) -> LawFactory {
         const double tolerance = law.number("tolerance").value_or(1e-3);

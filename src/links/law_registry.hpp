@@ -60,6 +60,9 @@ struct LawTraits {
   bool uses_approach_velocity = false;
   // Not a force law but a constraint the integrator enforces (links/hard_contact.hpp).
   bool constraint = false;
+  // An inertia term (dF/d(delta_ddot), the extended penalty's alpha2): its kinetic energy
+  // 1/2 alpha2 delta_dot^2 is set at touch, so an engagement's work has no sign to judge by.
+  bool inertia = false;
 };
 
 struct LawParameter {

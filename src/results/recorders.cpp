@@ -186,11 +186,13 @@ void LinkSummaries::record(const integrators::State& state) {
       s.engagement_work += work;
       if (contact && previous_force == 0.0) ++s.impacts;
       if (!contact && previous_force != 0.0) {  // an engagement ended this step
-        s.finished_created_energy += std::max(0.0, -s.engagement_work);
+        if (!s.engaged_at_start) s.finished_created_energy += std::max(0.0, -s.engagement_work);
         s.engagement_work = 0.0;
+        s.engaged_at_start = false;
       }
     } else if (contact) {
       ++s.impacts;
+      s.engaged_at_start = true;
     }
     if (contact) {
       if (s.first_contact < 0.0) s.first_contact = state.time;

@@ -172,10 +172,12 @@ struct LinkSummary {
   // a passive contact or restrainer stores nothing once open, so an engagement that ends with
   // negative work has created that much (a penalty contact starting or ending inside a step).
   // Before its end an engagement counts when its work is negative, since what a law holds is
-  // never negative [F L].
+  // never negative. An engagement under way at the start (a preloaded contact under a static
+  // initial state) held energy this run did not give it, so it does not count [F L].
   double finished_created_energy = 0.0;
+  bool engaged_at_start = false;  // the current engagement began before the run
   double created_energy() const {
-    return finished_created_energy + std::max(0.0, -engagement_work);
+    return finished_created_energy + (engaged_at_start ? 0.0 : std::max(0.0, -engagement_work));
   }
 };
 

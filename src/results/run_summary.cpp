@@ -169,7 +169,7 @@ std::vector<std::string> result_warnings(const RunSummary& run) {
   if (const double created = run.contact_created_fraction(); created > kContactCreatedWarning) {
     const LinkResult* most = nullptr;
     for (const LinkResult& link : run.links)
-      if (link.role != links::LinkRole::spring &&
+      if (link.passive_engagements &&
           (!most || link.summary.created_energy() > most->summary.created_energy()))
         most = &link;
     warnings.push_back(fmt::format(
@@ -319,7 +319,7 @@ std::optional<double> RunSummary::hysteretic_energy() const {
 double RunSummary::contact_created_energy() const {
   double created = 0.0;
   for (const LinkResult& link : links)
-    if (link.role != links::LinkRole::spring) created += link.summary.created_energy();
+    if (link.passive_engagements) created += link.summary.created_energy();
   return created;
 }
 
@@ -355,6 +355,8 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
     LinkResult result{link.id, law.name(), link.role(), observers.links().summaries()[k],
                       link.rotational};
     result.viscous = law.viscous_part();
+    result.passive_engagements =
+        link.role() != links::LinkRole::spring && !(link.law && link.law->traits.inertia);
     if ((result.yield_deformation = law.yield_deformation()))
       result.initial_stiffness =  // of a fresh law: this one has yielded
           link.make_law(system.link_context(link))->set_trial({0.0, 0.0, 0.0}).stiffness;

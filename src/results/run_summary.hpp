@@ -83,6 +83,9 @@ struct LinkResult {
   links::LinkRole role = links::LinkRole::contact;
   LinkSummary summary;
   bool rotational = false;  // a hinge: deformations are rotations
+  // A contact or restrainer whose engagements' negative work is energy created (not a spring,
+  // not a law with an inertia term).
+  bool passive_engagements = false;
   // A yielding law's delta_y and its stiffness at rest (LinkLaw::yield_deformation).
   std::optional<double> yield_deformation, initial_stiffness;
   double peak_deformation() const {

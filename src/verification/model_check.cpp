@@ -109,6 +109,7 @@ void warn_created_energy(const model::Link& link, const links::LinkLaw& law,
                          const assembly::StructuralSystem& system,
                          const builder::AnalysisSpec& analysis, double approach_velocity,
                          std::vector<std::string>& warnings) {
+  if (link.law && link.law->traits.inertia) return;  // its engagements' work has no sign
   const std::optional<ContactEnergyProbe> probe =
       probe_contact_energy(law, system.link_context(link), analysis, approach_velocity);
   if (!probe || !(probe->created_fraction > results::kContactCreatedWarning)) return;

@@ -8,7 +8,7 @@
 namespace pound::verification {
 
 std::vector<std::string> rod_impact_case_names() {
-  return {"kawashima", "fixed-end", "area-ratio-3"};
+  return {"kawashima", "fixed-end", "area-ratio-3", "unequal-lengths"};
 }
 
 std::vector<std::string> rod_impact_law_names() {
@@ -30,6 +30,14 @@ builder::RodPairSpec rod_impact_case(const std::string& name, int elements, doub
   }
   if (name == "kawashima") return pair;
   pair.right.initial_velocity = 0.0;
+  if (name == "unequal-lengths") {
+    // One material, the struck rod at rest and twice as long (same element size): the contact
+    // lasts 2 L_short / c, after which the short rod is at rest and the long one moves at
+    // V0 L_short / L_long on average (apparent restitution L_short / L_long).
+    pair.right.length = 2.0 * pair.left.length;
+    pair.right.elements = 2 * pair.left.elements;
+    return pair;
+  }
   pair.right.far_end_fixed = true;
   if (name == "fixed-end") return pair;
   if (name == "area-ratio-3") {

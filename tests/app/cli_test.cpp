@@ -281,8 +281,15 @@ TEST_F(Cli, EveryBundledModelRuns) {
     EXPECT_EQ(outcome.exit_code, 0) << entry.path() << "\n" << outcome.err;
     const json summary = json::parse(read_text(out / "summary.json"));
     EXPECT_EQ(summary["status"], "completed") << entry.path();
-    // Every example keeps its energy balance within 1 % of the largest term, all the way.
+    // Every example keeps its energy balance within 1 % of the largest term, all the way, and
+    // its contacts create less than 1 % of what was put in (a hard contact none).
     EXPECT_LT(summary["energy"]["worst_balance_error"].get<double>(), 0.01) << entry.path();
+    EXPECT_LT(summary["energy"]["contact_created_fraction"].get<double>(), 0.01) << entry.path();
+    if (entry.path().stem() == "two_girders_hard_contact") {
+      EXPECT_EQ(summary["energy"]["contact_created"].get<double>(), 0.0);
+      EXPECT_EQ(summary["links"][0]["peak_penetration"].get<double>(), 0.0);
+      EXPECT_GT(summary["links"][0]["impacts"].get<int>(), 0);
+    }
   }
   EXPECT_GE(models, 4);
 }

@@ -210,6 +210,22 @@ TEST(LinkSummaries, CreatedEnergyIsTheNegativeWorkOfEachEngagement) {
   EXPECT_NEAR(s.work, -0.119, 1e-15);
 }
 
+// A contact engaged at the start (preloaded) held energy the run did not give it: giving it back
+// creates nothing; the engagements after it count again.
+TEST(LinkSummaries, AnEngagementUnderWayAtTheStartIsNotCounted) {
+  LinkSummaries summaries({0});
+  const double forces[] = {4.0, 2.0, 0.0, 0.0, 2.0, 0.0};
+  const double penetrations[] = {0.02, 0.01, -0.01, -0.02, 0.01, -0.03};
+  for (int k = 0; k < 6; ++k)
+    summaries.record(link_state(0.1 * k, entries({forces[k]}), entries({penetrations[k]})));
+  const LinkSummary& s = summaries.summaries().at(0);
+  // Preloaded: (6 (-0.01) + 2 (-0.02)) / 2 = -0.05, not counted; then (2 0.03 + 2 (-0.04)) / 2
+  // = -0.01, counted.
+  EXPECT_NEAR(s.work, -0.06, 1e-15);
+  EXPECT_NEAR(s.created_energy(), 0.01, 1e-15);
+  EXPECT_EQ(s.impacts, 2);
+}
+
 // A positive engagement creates nothing (the first test's history: +0.01, then +0.0075).
 TEST(LinkSummaries, AnEngagementThatTookEnergyCreatedNone) {
   LinkSummaries summaries({0});
