@@ -303,8 +303,9 @@ StepResult CentralDifference::advance(SecondOrderSystem& system, const State& fr
   if (m > 0) {
     if (coupling_.rows() != m) prepare_links(links);
     link_kinematics(system, from, half_dt, to);
-    for (links::HardContact* hard : hard_laws_)
-      if (hard) hard->impose(0.0);  // the force laws' solve sees no constraint force
+    if (!hard_groups_.empty())
+      for (links::HardContact* hard : hard_laws_)
+        if (hard) hard->impose(0.0);  // the force laws' solve sees no constraint force
     if (!solve_link_forces(links, to, result)) return result;
     if (!hard_groups_.empty() && !solve_hard_contacts(to, dt, result)) return result;
     finite_state &= apply_link_forces(from, half_dt, to);
@@ -360,7 +361,7 @@ bool CentralDifference::advance_without_links(SecondOrderSystem& system, const S
   return finite_state;
 }
 
-void CentralDifference::prepare_links(const LinkSet& links) {
+void CentralDifference::prepare_links(LinkSet& links) {
   const LinkSet::SparseRowMatrix& b = links.connectivity();
   coupling_ = Matrix(b * inverse_mass_.asDiagonal() * b.transpose());
   link_columns_ = b;
@@ -373,8 +374,7 @@ void CentralDifference::prepare_links(const LinkSet& links) {
   group_lus_.resize(link_groups_.size());
   hard_laws_.assign(static_cast<std::size_t>(links.size()), nullptr);
   for (Index k = 0; k < links.count(); ++k)
-    hard_laws_[static_cast<std::size_t>(links.row(k))] =
-        const_cast<LinkSet&>(links).hard_contact(k);
+    hard_laws_[static_cast<std::size_t>(links.row(k))] = links.hard_contact(k);
   hard_groups_.clear();
   for (const std::vector<Index>& group : link_groups_) {
     std::vector<Index> hard;

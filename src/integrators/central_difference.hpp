@@ -44,7 +44,7 @@ class CentralDifference final : public Integrator {
   // u_{n+1}, and a_{n+1}, v_{n+1} without the link forces; returns whether they are finite.
   bool advance_without_links(SecondOrderSystem& system, const State& from, double dt, State& to);
   // G, B by columns and the link groups, for the links of the system.
-  void prepare_links(const LinkSet& links);
+  void prepare_links(LinkSet& links);
   // delta_{n+1}, the link rates at the half step and the link accelerations without link forces.
   void link_kinematics(SecondOrderSystem& system, const State& from, double half_dt, State& to);
   // F_{n+1}; false, with result.failure, when it is not finite or does not settle.
