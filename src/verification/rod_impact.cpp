@@ -77,6 +77,12 @@ RodImpactMetrics compare_with_exact(const ExactRodImpact& exact, double first_co
   double error_squares = 0.0, exact_squares = 0.0;
   double start = -1.0, end = -1.0;
   bool in_contact = false;
+  // Penetration that is more than round-off: a hard contact's is +-1e-20 about zero, whose sign
+  // says nothing (a crossing of such values extrapolates anywhere).
+  double largest_penetration = 0.0;
+  for (const double p : penetration)
+    largest_penetration = std::max(largest_penetration, std::abs(p));
+  const double penetration_floor = 1e-9 * largest_penetration;
   m.min_force = force.empty() ? 0.0 : force.front();
   if (exact_force) exact_force->clear();
   for (std::size_t k = 0; k < time.size(); ++k) {
@@ -96,13 +102,13 @@ RodImpactMetrics compare_with_exact(const ExactRodImpact& exact, double first_co
     if (contact && !in_contact) {
       ++m.contact_episodes;
       if (start < 0.0)
-        start = k == 0                 ? time[0]
-                : penetration[k] > 0.0 ? crossing(time, penetration, k - 1)
-                                       : 0.5 * (time[k - 1] + time[k]);
+        start = k == 0                               ? time[0]
+                : penetration[k] > penetration_floor ? crossing(time, penetration, k - 1)
+                                                     : 0.5 * (time[k - 1] + time[k]);
     }
     if (!contact && in_contact)
-      end = penetration[k - 1] > 0.0 ? crossing(time, penetration, k - 1)
-                                     : 0.5 * (time[k - 1] + time[k]);
+      end = penetration[k - 1] > penetration_floor ? crossing(time, penetration, k - 1)
+                                                   : 0.5 * (time[k - 1] + time[k]);
     in_contact = contact;
   }
   if (in_contact) end = std::min(window_end, time.back());
