@@ -103,6 +103,11 @@ bool accelerate(Index first, Index last, double half_dt, const double* __restric
   return all_finite(flags);
 }
 
+// How far past its bound a hard contact's delta may be, over the size of its terms
+// (row_magnitudes): above what their sums accumulate in round-off over a run, so that a contact at
+// rest against another (grazing, as after two rods part) stays without force rather than chatter.
+constexpr double kHardContactRoundOff = 1e-10;
+
 // sum_j |B_rj u_j| of each row: the size of delta's terms, and so of its round-off.
 void row_magnitudes(const LinkSet::SparseRowMatrix& b, const Vector& u, Vector& magnitudes) {
   magnitudes.resize(b.rows());
@@ -307,7 +312,7 @@ StepResult CentralDifference::advance(SecondOrderSystem& system, const State& fr
       for (links::HardContact* hard : hard_laws_)
         if (hard) hard->impose(0.0);  // the force laws' solve sees no constraint force
     if (!solve_link_forces(links, to, result)) return result;
-    if (!hard_groups_.empty() && !solve_hard_contacts(to, dt, result)) return result;
+    if (!hard_groups_.empty() && !solve_hard_contacts(links, to, dt, result)) return result;
     finite_state &= apply_link_forces(from, half_dt, to);
   } else {
     to.link_penetration.resize(0);
@@ -365,7 +370,6 @@ void CentralDifference::prepare_links(LinkSet& links) {
   const LinkSet::SparseRowMatrix& b = links.connectivity();
   coupling_ = Matrix(b * inverse_mass_.asDiagonal() * b.transpose());
   link_columns_ = b;
-  link_rows_ = b;
   link_dofs_.clear();
   for (Index j = 0; j < link_columns_.outerSize(); ++j)
     if (Eigen::SparseMatrix<double>::InnerIterator(link_columns_, j)) link_dofs_.push_back(j);
@@ -384,12 +388,13 @@ void CentralDifference::prepare_links(LinkSet& links) {
   }
 }
 
-bool CentralDifference::solve_hard_contacts(State& to, double dt, StepResult& result) {
+bool CentralDifference::solve_hard_contacts(const LinkSet& links, State& to, double dt,
+                                            StepResult& result) {
   // delta~_{n+2} of every row: delta_{n+1} + dt (w_{n+1/2} + dt B a_{n+1}), with a_{n+1} carrying
   // the force laws' forces already.
   link_acceleration_ = free_acceleration_;
   link_acceleration_.noalias() -= coupling_ * to.link_force;
-  row_magnitudes(link_rows_, to.displacement, magnitudes_);
+  row_magnitudes(links.connectivity(), to.displacement, magnitudes_);
   for (const std::vector<Index>& rows : hard_groups_)
     if (!solve_hard_group(rows, dt, dt * dt, to.link_penetration, rate_, link_acceleration_,
                           to.link_force)) {
@@ -413,7 +418,7 @@ void CentralDifference::initial_hard_contacts(SecondOrderSystem& system, State& 
     rate_ += offset_rate_;
     acceleration += offset_acceleration_;
   }
-  row_magnitudes(link_rows_, state.displacement, magnitudes_);
+  row_magnitudes(links.connectivity(), state.displacement, magnitudes_);
   for (const std::vector<Index>& rows : hard_groups_)
     if (!solve_hard_group(rows, dt, 0.5 * dt * dt, state.link_penetration, rate_, acceleration,
                           force))
@@ -421,12 +426,8 @@ void CentralDifference::initial_hard_contacts(SecondOrderSystem& system, State& 
   links.commit();
   for (const std::vector<Index>& rows : hard_groups_)
     for (const Index r : rows) state.link_force[r] = force[r];
-  for (const Index j : link_dofs_) {
-    double sum = 0.0;
-    for (Eigen::SparseMatrix<double>::InnerIterator it(link_columns_, j); it; ++it)
-      sum += it.value() * force[it.row()];
-    state.acceleration[j] -= inverse_mass_[j] * sum;
-  }
+  for (const Index j : link_dofs_)
+    state.acceleration[j] -= inverse_mass_[j] * nodal_link_force(j, force);
 }
 
 bool CentralDifference::solve_hard_group(const std::vector<Index>& rows, double dt, double scale,
@@ -447,14 +448,13 @@ bool CentralDifference::solve_hard_group(const std::vector<Index>& rows, double 
     // Holding: no further approach. Closing in this step: the impact law on the approach rate,
     // w+ = -e w- exactly (stopping short of touch by less than dt w-); with e = 0 the gap
     // closes instead, touching exactly, and the approach stops in this step or the next.
-    const double restitution = law.restitution();
-    bound_[i] = holding || restitution == 0.0
-                    ? (holding ? std::min(0.0, now) : 0.0)
-                    : std::min(0.0, now) - restitution * std::max(0.0, next - now);
-    // Past the bound by more than round-off (1e-10 of the displacements that make delta, above
-    // what their sums accumulate over a run): a contact at rest against another (grazing, as
-    // after two rods part) stays without force rather than chatter at round-off.
-    const double tolerance = 1e-10 * magnitudes_[r];
+    if (holding)
+      bound_[i] = std::min(0.0, now);
+    else if (law.restitution() == 0.0)
+      bound_[i] = 0.0;
+    else
+      bound_[i] = std::min(0.0, now) - law.restitution() * std::max(0.0, next - now);
+    const double tolerance = kHardContactRoundOff * magnitudes_[r];
     candidate_[static_cast<std::size_t>(i)] = holding || next > tolerance;
     active_[static_cast<std::size_t>(i)] =
         candidate_[static_cast<std::size_t>(i)] && next > bound_[i] + tolerance;
@@ -462,7 +462,8 @@ bool CentralDifference::solve_hard_group(const std::vector<Index>& rows, double 
   Vector force = Vector::Zero(size);
   for (int iteration = 0; iteration < 4 * static_cast<int>(size) + 8; ++iteration) {
     // Forces of the active rows: dt^2 G_AA F_A = delta~_A - bound_A.
-    std::vector<Index> active;
+    std::vector<Index>& active = active_rows_;
+    active.clear();
     for (Index i = 0; i < size; ++i)
       if (active_[static_cast<std::size_t>(i)]) active.push_back(i);
     const auto count = static_cast<Index>(active.size());
@@ -505,7 +506,8 @@ bool CentralDifference::solve_hard_group(const std::vector<Index>& rows, double 
                 force[j];
       // A row that was no candidate is bound only by not penetrating.
       const double bound = candidate_[static_cast<std::size_t>(i)] ? bound_[i] : 0.0;
-      const double excess = next - bound - 1e-10 * magnitudes_[rows[static_cast<std::size_t>(i)]];
+      const double excess =
+          next - bound - kHardContactRoundOff * magnitudes_[rows[static_cast<std::size_t>(i)]];
       if (excess > worst_excess) {
         worst = i;
         worst_excess = excess;
@@ -610,14 +612,18 @@ void CentralDifference::solve_newton_correction() {
   }
 }
 
+double CentralDifference::nodal_link_force(Index dof, const Vector& link_force) const {
+  double force = 0.0;
+  for (Eigen::SparseMatrix<double>::InnerIterator it(link_columns_, dof); it; ++it)
+    force += it.value() * link_force[it.row()];
+  return force;
+}
+
 bool CentralDifference::apply_link_forces(const State& from, double half_dt, State& to) const {
   // a -= M^-1 B^T F and v_{n+1} again, at the DOFs the links touch.
   std::uint64_t flags = 0;
   for (const Index j : link_dofs_) {
-    double force = 0.0;
-    for (Eigen::SparseMatrix<double>::InnerIterator it(link_columns_, j); it; ++it)
-      force += it.value() * to.link_force[it.row()];
-    to.acceleration[j] -= inverse_mass_[j] * force;
+    to.acceleration[j] -= inverse_mass_[j] * nodal_link_force(j, to.link_force);
     to.velocity[j] = from.velocity[j] + half_dt * (from.acceleration[j] + to.acceleration[j]);
     flags |= not_finite(to.velocity[j]);
   }

@@ -53,7 +53,7 @@ class CentralDifference final : public Integrator {
   void solve_newton_correction();
   // The hard contacts' forces, after the force laws': none penetrates at t_{n+2}; false, with
   // result.failure, when their complementarity problem does not settle.
-  bool solve_hard_contacts(State& to, double dt, StepResult& result);
+  bool solve_hard_contacts(const LinkSet& links, State& to, double dt, StepResult& result);
   // One group's forces, delta~_{n+2} = delta + dt rate + scale acceleration and the forces'
   // effect -scale G F; into `force` (and imposed on the laws).
   bool solve_hard_group(const std::vector<Index>& rows, double dt, double scale,
@@ -62,6 +62,8 @@ class CentralDifference final : public Integrator {
   // Contacts already closing at t_0 get their force into F_0 and a_0, so that u_1 does not
   // penetrate (u_1 = u_0 + dt v_0 + dt^2/2 a_0).
   void initial_hard_contacts(SecondOrderSystem& system, State& state, double dt);
+  // (B^T F) at one DOF the links touch.
+  double nodal_link_force(Index dof, const Vector& link_force) const;
   // The link forces' share of a_{n+1} and v_{n+1}; returns whether those v_{n+1} are finite.
   bool apply_link_forces(const State& from, double half_dt, State& to) const;
 
@@ -87,8 +89,8 @@ class CentralDifference final : public Integrator {
   // Per hard row of a group: delta_{n+2} without its force, its bound, whether it is in the
   // active set; the active set's matrix and solution.
   Vector free_next_, bound_, active_force_, magnitudes_;
-  LinkSet::SparseRowMatrix link_rows_;  // B by rows
   std::vector<char> candidate_, active_;
+  std::vector<Index> active_rows_;  // the indices of active_ that are set
   Matrix active_matrix_;
 };
 
