@@ -84,7 +84,8 @@ void add_verify_options(po::options_description& description, VerifyOptions& opt
       "benchmark case: kawashima (free rods, +-V0), fixed-end (rod into a rod at rest with a fixed "
       "far end), area-ratio-3 (fixed-end with the striking rod's area 3x), unequal-lengths "
       "(free rods of one material, the struck one at rest and twice as long: apparent "
-      "restitution 1/2, the striking rod at rest after)")(
+      "restitution 1/2, the striking rod at rest after), rigid-wall (the striking rod into a fixed "
+      "rigid wall across a gap of L/200: contact at gap/V0 for 2L/C0 at the force rho C0 V0 A)")(
       "n", po::value(&options.elements)->default_value(options.elements), "elements per rod")(
       "k-ratio", po::value(&options.stiffness_ratio)->default_value(options.stiffness_ratio),
       "link stiffness / axial stiffness E A / h of the softer adjacent element")(

@@ -36,7 +36,8 @@ void add_rod(const RodPairSpec& pair, int side, ModelSpec& out) {
 // The contact link between the facing ends of the rods.
 LinkSpec rod_contact_link(const RodPairSpec& pair) {
   LinkSpec link = make_link(rod_link_id(pair), rod_node_id(pair, 0, pair.left.elements),
-                            rod_node_id(pair, 1, 0), {1.0}, pair.gap, pair.law);
+                            pair.right_wall ? rod_wall_id(pair) : rod_node_id(pair, 1, 0), {1.0},
+                            pair.gap, pair.law);
   if (const auto ratio = pair.law.number("stiffness_ratio")) {
     link.law.parameters["stiffness"] = *ratio * rod_pair_adjacent_stiffness(pair);
     link.law.parameters.erase("stiffness_ratio");
@@ -107,7 +108,10 @@ std::string rod_node_id(const RodPairSpec& pair, int rod, int index) {
 
 std::string rod_link_id(const RodPairSpec& pair) { return pair.id + ".contact"; }
 
+std::string rod_wall_id(const RodPairSpec& pair) { return pair.id + ".wall"; }
+
 double rod_pair_adjacent_stiffness(const RodPairSpec& pair) {
+  if (pair.right_wall) return element_stiffness(pair.left);
   return std::min(element_stiffness(pair.left), element_stiffness(pair.right));
 }
 
@@ -116,7 +120,12 @@ ModelSpec expand(const ModelSpec& spec) {
   for (std::size_t g = 0; g < spec.rod_pairs.size(); ++g) {
     const RodPairSpec& pair = spec.rod_pairs[g];
     add_rod(pair, 0, out);
-    add_rod(pair, 1, out);
+    if (pair.right_wall) {
+      out.nodes.push_back({rod_wall_id(pair), 0.0, 0.0});
+      out.supports.push_back({rod_wall_id(pair), true, false});
+    } else {
+      add_rod(pair, 1, out);
+    }
     out.links.push_back(rod_contact_link(pair));
     const int generator = spec.rod_pair_generator_index.empty() ? static_cast<int>(g)
                                                                 : spec.rod_pair_generator_index[g];

@@ -33,5 +33,6 @@ ElementSpec make_beam(const std::string& id, const std::string& node_i, const st
 // Generated ids, shared with whoever looks the generated parts up again.
 std::string rod_node_id(const RodPairSpec& pair, int rod, int index);  // rod 0 left, 1 right
 std::string rod_link_id(const RodPairSpec& pair);
+std::string rod_wall_id(const RodPairSpec& pair);  // the fixed node of a right_wall
 
 }  // namespace pound::builder

@@ -218,11 +218,13 @@ struct RodSpec {
 
 // Two collinear rods joined by a contact link: the left rod on [-L1, 0], the right rod's nodes
 // on [0, L2] (both facing nodes at x = 0; the clear distance is the link's gap). The exact
-// solution places the right rod at [gap, gap + L2], which is the same physics.
+// solution places the right rod at [gap, gap + L2], which is the same physics. With right_wall
+// the left rod strikes a fixed rigid wall (node "<id>.wall" at x = 0) across the gap instead.
 struct RodPairSpec {
   std::string id;  // prefix of generated ids: "<id>.left.0" ... , link "<id>.contact"
   RodSpec left;
-  RodSpec right;
+  RodSpec right;  // unused with right_wall
+  bool right_wall = false;
   double gap = 0.0;
   LawSpec law;
 };

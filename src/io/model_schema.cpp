@@ -420,7 +420,16 @@ const Fields<RodPairSpec>& rod_pair_fields() {
       tag<RodPairSpec>("type", "rod_pair", "the generator"),
       unique_id(&RodPairSpec::id, "generators", "prefix of the generated ids"),
       required("left", &RodPairSpec::left, rod, "the rod on [−L1, 0]"),
-      required("right", &RodPairSpec::right, rod, "the rod from x = 0"),
+      optional("right_wall", &RodPairSpec::right_wall, Flag{},
+               "a fixed rigid wall at x = 0 (node `<id>.wall`) struck by the left rod across the "
+               "gap, in place of a right rod"),
+      rule<RodPairSpec>([](JsonObject& object, RodPairSpec& pair, Context&) {
+        if (pair.right_wall && object.find("right"))
+          object.at("right").fail(
+              "a rod pair with \"right_wall\": true has no right rod; give one or the other");
+      }),
+      required("right", &RodPairSpec::right, rod, "the rod from x = 0")
+          .when([](const RodPairSpec& pair) { return !pair.right_wall; }, "unless right_wall"),
       optional("gap", &RodPairSpec::gap, Number<>{non_negative}, "clear distance [L]")
           .always_written(),
       required("law", &RodPairSpec::law, Law{LawPlace::rod_pair},
@@ -1066,6 +1075,8 @@ Field<AnalysisSpec> time_step_field() {
         analysis.time_step_auto = true;
       },
       [](const AnalysisSpec& analysis, const Context&) -> std::optional<OrderedJson> {
+        // Left out as it was, so that the written model says the same of its step.
+        if (analysis.time_step_defaulted) return std::nullopt;
         if (analysis.time_step_auto) return "auto";
         return analysis.time_step;
       });

@@ -1,6 +1,7 @@
 #pragma once
 // Error against run time on the rod benchmark (docs/design.md §3.1): a grid of integrator x
-// contact law x mesh x time step on Kawashima's case and the fixed-end A2 = 3 A1 case, every
+// contact law x mesh x time step on Kawashima's case, the fixed-end A2 = 3 A1 case, two rods of
+// unequal lengths and a bar against a rigid wall across a gap (rod_impact_case_names()), every
 // metric plus the run time of the solve alone (median of repeats), and the Pareto front per case:
 // the runs no other run beats on both force error and run time.
 #include <string>
@@ -14,7 +15,7 @@
 namespace pound::verification {
 
 struct StudyCase {
-  std::string benchmark;   // "kawashima" | "area-ratio-3"
+  std::string benchmark;   // a rod_impact_case_names() entry
   std::string integrator;  // "newmark_average_acceleration", "hht", "generalized_alpha",
                            // "central_difference"
   std::string law;         // "gap_spring" | "extended_penalty"
@@ -31,7 +32,7 @@ struct StudyResult {
 };
 
 struct ErrorStudyOptions {
-  std::vector<std::string> benchmarks{"kawashima", "area-ratio-3"};
+  std::vector<std::string> benchmarks{"kawashima", "area-ratio-3", "unequal-lengths", "rigid-wall"};
   // Every method of the catalog with its study parameters.
   std::vector<integrators::IntegratorChoice> methods = integrators::IntegratorChoice::studied();
   std::vector<std::string> laws{"gap_spring", "extended_penalty", "hard_contact"};

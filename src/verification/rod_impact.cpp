@@ -31,13 +31,34 @@ double crossing(const std::vector<double>& time, const std::vector<double>& valu
   return time[k] + (time[k + 1] - time[k]) * value[k] / span;
 }
 
+// The pair the exact solution solves: a rigid wall is a mirror plane, so a rod striking it across
+// a gap g moves exactly as against its mirror image (velocity reversed) across 2g, with the same
+// contact force.
+builder::RodPairSpec exact_pair(const builder::RodPairSpec& pair) {
+  if (!pair.right_wall) return pair;
+  builder::RodPairSpec mirrored = pair;
+  mirrored.right = pair.left;
+  mirrored.right.initial_velocity = -pair.left.initial_velocity;
+  mirrored.right_wall = false;
+  mirrored.gap = 2.0 * pair.gap;
+  return mirrored;
+}
+
 }  // namespace
 
 ExactRodImpact exact_solution(const builder::RodPairSpec& pair, double t_end) {
-  return ExactRodImpact(exact_rod(pair.left), exact_rod(pair.right), pair.gap, t_end);
+  const builder::RodPairSpec exact = exact_pair(pair);
+  return ExactRodImpact(exact_rod(exact.left), exact_rod(exact.right), exact.gap, t_end);
 }
 
-std::pair<double, double> exact_contact_window(const builder::RodPairSpec& pair) {
+double exact_separation_velocity(const builder::RodPairSpec& pair, const ExactRodImpact& exact,
+                                 double time) {
+  const double left = exact.centre_of_mass_velocity(0, time);
+  return pair.right_wall ? -left : exact.centre_of_mass_velocity(1, time) - left;
+}
+
+std::pair<double, double> exact_contact_window(const builder::RodPairSpec& given) {
+  const builder::RodPairSpec pair = exact_pair(given);
   // Long enough for the approach across the gap and many wave transits.
   const double closing = pair.left.initial_velocity - pair.right.initial_velocity;
   const double approach = closing > 0.0 ? pair.gap / closing : 0.0;
@@ -70,7 +91,8 @@ RodImpactMetrics compare_with_exact(const ExactRodImpact& exact, double first_co
                                     double exact_duration, const std::vector<double>& time,
                                     const std::vector<double>& force,
                                     const std::vector<double>& penetration,
-                                    double separation_velocity, std::vector<double>* exact_force) {
+                                    double separation_velocity, double exact_separation_velocity,
+                                    std::vector<double>* exact_force) {
   RodImpactMetrics m;
   m.exact_duration = exact_duration;
   const double window_end = first_contact + 1.5 * exact_duration;
@@ -118,10 +140,8 @@ RodImpactMetrics compare_with_exact(const ExactRodImpact& exact, double first_co
   m.duration_error = exact_duration > 0.0 ? (m.duration - exact_duration) / exact_duration : 0.0;
   for (const ContactInterval& interval : exact.contacts())
     if (interval.start <= window_end) ++m.exact_contact_episodes;
-  const double t_final = time.empty() ? 0.0 : time.back();
   m.separation_velocity = separation_velocity;
-  m.exact_separation_velocity =
-      exact.centre_of_mass_velocity(1, t_final) - exact.centre_of_mass_velocity(0, t_final);
+  m.exact_separation_velocity = exact_separation_velocity;
   const double scale = std::abs(m.exact_separation_velocity);
   m.separation_velocity_error =
       (separation_velocity - m.exact_separation_velocity) / (scale > 0.0 ? scale : 1.0);
@@ -129,8 +149,9 @@ RodImpactMetrics compare_with_exact(const ExactRodImpact& exact, double first_co
 }
 
 RodPairNodes::RodPairNodes(const builder::RodPairSpec& pair, const builder::BuiltModel& built,
-                           const model::DofMap& dofs) {
-  for (int r = 0; r < 2; ++r) {
+                           const model::DofMap& dofs)
+    : rigid_wall_(pair.right_wall) {
+  for (int r = 0; r < rods(); ++r) {
     const builder::RodSpec& rod = r == 0 ? pair.left : pair.right;
     Rod& out = rods_[r];
     out.element_length = rod.length / rod.elements;
@@ -157,7 +178,8 @@ double RodPairNodes::centre_velocity(const integrators::State& state, int rod) c
 }
 
 double RodPairNodes::separation_velocity(const integrators::State& state) const {
-  return centre_velocity(state, 1) - centre_velocity(state, 0);
+  const double left = centre_velocity(state, 0);
+  return rigid_wall_ ? -left : centre_velocity(state, 1) - left;
 }
 
 RodImpactMetrics rod_pair_metrics(const builder::RodPairSpec& pair, const RodPairNodes& nodes,
@@ -168,7 +190,8 @@ RodImpactMetrics rod_pair_metrics(const builder::RodPairSpec& pair, const RodPai
   const auto [first_contact, exact_duration] = exact_contact_window(pair);
   const ExactRodImpact exact = exact_solution(pair, final_state.time * (1.0 + 1e-9));
   return compare_with_exact(exact, first_contact, exact_duration, time, force, penetration,
-                            nodes.separation_velocity(final_state), exact_force);
+                            nodes.separation_velocity(final_state),
+                            exact_separation_velocity(pair, exact, final_state.time), exact_force);
 }
 
 struct RodPairSimulation::Impl {
@@ -229,7 +252,7 @@ struct RodPairSimulation::Impl {
   RodProfile profile(const ExactRodImpact& exact, const integrators::State& s, double label) const {
     RodProfile profile{s.time, label, {}};
     auto value_at = [](const Vector& v, Index eq) { return eq < 0 ? 0.0 : v[eq]; };
-    for (int r = 0; r < 2; ++r) {
+    for (int r = 0; r < nodes->rods(); ++r) {
       const builder::RodSpec& rod = r == 0 ? options.pair.left : options.pair.right;
       const std::vector<Index>& equation = nodes->equations(r);
       const double h = nodes->element_length(r);

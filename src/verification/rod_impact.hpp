@@ -70,8 +70,12 @@ struct RodImpactResult {
   std::vector<RodProfile> profiles;
 };
 
-// The exact solution of a rod pair spec over [0, t_end].
+// The exact solution of a rod pair spec over [0, t_end]; against a rigid wall, that of the rod
+// and its mirror image across twice the gap (the same contact force and left rod).
 ExactRodImpact exact_solution(const builder::RodPairSpec& pair, double t_end);
+// v_cm(right) - v_cm(left) at `time` (the wall's velocity is 0).
+double exact_separation_velocity(const builder::RodPairSpec& pair, const ExactRodImpact& exact,
+                                 double time);
 // Exact first-contact-to-last-separation duration and first contact time, over a horizon long
 // enough for the whole collision.
 std::pair<double, double> exact_contact_window(const builder::RodPairSpec& pair);
@@ -98,21 +102,24 @@ class RodPairSimulation {
 };
 
 // Metrics of a force / penetration history against the exact solution; the velocities are the
-// FE relative centre-of-mass velocity at the last time.
+// relative centre-of-mass velocities at the last time, FE and exact.
 RodImpactMetrics compare_with_exact(const ExactRodImpact& exact, double first_contact,
                                     double exact_duration, const std::vector<double>& time,
                                     const std::vector<double>& force,
                                     const std::vector<double>& penetration,
-                                    double separation_velocity, std::vector<double>* exact_force);
+                                    double separation_velocity, double exact_separation_velocity,
+                                    std::vector<double>* exact_force);
 
 // Where the nodes of a generated rod pair sit in a system's equations, in the exact solution's
-// x order, and the rods' centre-of-mass velocities (lumped masses, fixed nodes at rest).
+// x order, and the rods' centre-of-mass velocities (lumped masses, fixed nodes at rest). A rigid
+// wall is no rod: rods() is 1.
 class RodPairNodes {
  public:
   RodPairNodes(const builder::RodPairSpec& pair, const builder::BuiltModel& built,
                const model::DofMap& dofs);
   double centre_velocity(const integrators::State& state, int rod) const;
   double separation_velocity(const integrators::State& state) const;  // right minus left
+  int rods() const { return rigid_wall_ ? 1 : 2; }
   const std::vector<Index>& equations(int rod) const { return rods_[rod].equation; }
   const std::vector<double>& positions(int rod) const { return rods_[rod].x; }
   double element_length(int rod) const { return rods_[rod].element_length; }
@@ -125,6 +132,7 @@ class RodPairNodes {
     double node_mass = 0.0;  // interior node; the ends carry half
     double mass = 0.0;
   } rods_[2];
+  bool rigid_wall_ = false;
 };
 
 // Metrics of a finished rod-pair run (histories of its contact link, state at the end) against

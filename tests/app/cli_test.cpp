@@ -117,6 +117,32 @@ TEST_F(Cli, VerifyHelpShowsItsOptions) {
     EXPECT_TRUE(contains(outcome.out, option)) << option << " missing from\n" << outcome.out;
 }
 
+// The study picks its rod cases by name; a name it does not know is a usage error listing them.
+TEST_F(Cli, StudyTakesItsCasesByName) {
+  const Outcome wrong = pound({"study", "rod-impact", "--cases", "kawashima,wall"});
+  EXPECT_EQ(wrong.exit_code, 1);
+  EXPECT_TRUE(contains(wrong.err, "--cases: 'wall' is not a rod-impact case")) << wrong.err;
+  EXPECT_TRUE(contains(wrong.err, "rigid-wall")) << wrong.err;
+  const Outcome help = pound({"study", "--help"});
+  EXPECT_TRUE(contains(help.out, "--cases")) << help.out;
+}
+
+// The bar against a rigid wall, run as a model: the run compares it with the exact solution.
+TEST_F(Cli, BarAgainstARigidWallRunsAgainstItsExactSolution) {
+  const fs::path out = path("out");
+  const Outcome outcome =
+      pound({"run", POUND_SOURCE_DIR "/models/bar_rigid_wall.json", "--out", out.string()});
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  std::cout << outcome.out;
+  EXPECT_TRUE(contains(outcome.out, "against the exact solution: force_l2_error")) << outcome.out;
+  const json summary = json::parse(read_text(out / "summary.json"));
+  std::cout << summary["verification"].dump() << "\n";
+  ASSERT_TRUE(summary.contains("verification")) << summary.dump(2).substr(0, 2000);
+  EXPECT_LT(summary["verification"]["force_l2_error"].get<double>(), 0.04);
+  EXPECT_LT(std::abs(summary["verification"]["duration_error"].get<double>()), 0.005);
+  EXPECT_LT(std::abs(summary["verification"]["separation_velocity_error"].get<double>()), 0.005);
+}
+
 TEST_F(Cli, VerifyJsonPrintsOneObjectWithTheMetrics) {
   const Outcome outcome = pound({"verify", "rod-impact", "--json"});
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;

@@ -18,6 +18,7 @@ TEST(ErrorStudy, FrontIsTheNonDominatedRunsAndExplicitStepsAboveTheLimitAreRefus
   options.elements = {50};
   options.courants = {1.0, 0.5};
   options.repeats = 1;
+  options.benchmarks = {"kawashima", "area-ratio-3"};
   options.methods = testing::studied_methods();
   const std::vector<StudyResult> results = error_study(options);
   std::cout << format_error_study(results);
