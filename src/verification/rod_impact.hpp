@@ -119,6 +119,10 @@ class RodPairNodes {
                const model::DofMap& dofs);
   double centre_velocity(const integrators::State& state, int rod) const;
   double separation_velocity(const integrators::State& state) const;  // right minus left
+  // Kinetic + strain energy of the rods (lumped masses, linear elements): at the start, 1/2 m V0^2
+  // of each.
+  double energy(const integrators::State& state) const;
+  double initial_energy() const;
   int rods() const { return rigid_wall_ ? 1 : 2; }
   const std::vector<Index>& equations(int rod) const { return rods_[rod].equation; }
   const std::vector<double>& positions(int rod) const { return rods_[rod].x; }
@@ -131,6 +135,8 @@ class RodPairNodes {
     double element_length = 0.0;
     double node_mass = 0.0;  // interior node; the ends carry half
     double mass = 0.0;
+    double element_stiffness = 0.0;  // E A / h
+    double initial_velocity = 0.0;
   } rods_[2];
   bool rigid_wall_ = false;
 };

@@ -141,6 +141,9 @@ TEST_F(Cli, BarAgainstARigidWallRunsAgainstItsExactSolution) {
   EXPECT_LT(summary["verification"]["force_l2_error"].get<double>(), 0.04);
   EXPECT_LT(std::abs(summary["verification"]["duration_error"].get<double>()), 0.005);
   EXPECT_LT(std::abs(summary["verification"]["separation_velocity_error"].get<double>()), 0.005);
+  // The bar's own kinetic and strain energy at the end, of its initial 1/2 m V0^2.
+  EXPECT_GT(summary["verification"]["energy_ratio"].get<double>(), 0.99);
+  EXPECT_LE(summary["verification"]["energy_ratio"].get<double>(), 1.001);
 }
 
 TEST_F(Cli, VerifyJsonPrintsOneObjectWithTheMetrics) {
