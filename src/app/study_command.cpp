@@ -29,7 +29,7 @@ link stiffness ratio 1e-2 .. 1e8 and dt / T 1e-3 .. 0.5, each cell accurate, ina
 rod-impact:
 Error against run time on the rod benchmark: integrators (Newmark average acceleration, HHT
 alpha = -0.1, generalised-alpha rho_inf = 0.5, explicit central difference) x contact laws (gap
-spring at k-ratio 1, extended penalty on automatic numbers, hard contact: explicit only) x
+spring at k-ratio 1, extended penalty on automatic numbers, hard contact) x
 elements per rod (50, 200, 1000) x
 Courant numbers dt C0 / h (1, 0.5, 0.25), on Kawashima's case, the fixed-end A2 = 3 A1 case, two
 rods of unequal lengths and a bar striking a rigid wall across a gap (--cases picks some).

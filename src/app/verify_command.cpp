@@ -97,7 +97,7 @@ void add_verify_options(po::options_description& description, VerifyOptions& opt
       "run length after first contact / exact contact duration")(
       "law", po::value(&options.law)->default_value(options.law),
       "contact law: gap_spring (stiffness from --k-ratio), extended_penalty (Suzuki & Toi's "
-      "automatic numbers) or hard_contact (a constraint, e = 0; central_difference)")(
+      "automatic numbers) or hard_contact (a constraint, e = 0; any integrator)")(
       "eta", po::value(&options.eta)->default_value(options.eta),
       "extended_penalty: damping factor of alpha1")(
       "integrator", po::value(&options.integrator)->default_value("newmark_average_acceleration"),

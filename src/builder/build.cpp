@@ -56,9 +56,44 @@ double shortest_record_step(const model::Model& model) {
 
 }  // namespace
 
+// An implicit step makes a hard contact's force an impulse between masses (Newmark): a row that
+// moves a massless DOF has none to give it to.
+void check_implicit_hard_contacts(const model::Model& model, assembly::StructuralSystem& system,
+                                  const std::string& source) {
+  const integrators::LinkSet& links = system.links();
+  const Vector* lumped = system.lumped_mass();
+  if (!lumped) return;
+  const std::vector<char> impulsive = links.impulsive_hard_contact_rows(lumped);
+  for (Index k = 0; k < links.count(); ++k) {
+    const auto row = static_cast<std::size_t>(links.row(k));
+    if (links.has_friction(k) || !links.law(k).is_hard_contact() || impulsive[row]) continue;
+    const model::DofMap& dofs = system.dofs();
+    for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
+      for (int d = 0; d < dofs.dofs_per_node(); ++d) {
+        const Index equation = dofs.equation(node, d);
+        if (equation < 0 || (*lumped)[equation] > 0.0 ||
+            links.connectivity().coeff(links.row(k), equation) == 0.0)
+          continue;
+        throw InputError(
+            source, "/analysis/integrator",
+            fmt::format("the hard contact '{}' pushes node '{}', which has no mass in direction "
+                        "{}: an implicit step gives a hard contact's force as an impulse between "
+                        "masses; add a mass there, or use a penalty law (extended_penalty) for "
+                        "this contact",
+                        k < static_cast<Index>(model.links.size())
+                            ? model.links[static_cast<std::size_t>(k)].id
+                            : fmt::format("#{}", k),
+                        model.nodes[static_cast<std::size_t>(node)].id, model::direction_name(d)));
+      }
+  }
+}
+
 void settle_time_step(AnalysisSpec& analysis, const model::Model& model,
                       assembly::StructuralSystem& system, const std::string& source) {
-  if (!analysis.integrator.is_explicit()) return;
+  if (!analysis.integrator.is_explicit()) {
+    check_implicit_hard_contacts(model, system, source);
+    return;
+  }
   // Implicit methods carry massless DOFs (contact points, rotations) as static equations; the
   // explicit update divides by each DOF's own mass.
   const Vector* lumped = system.lumped_mass();

@@ -85,12 +85,6 @@ void resolve_law(const LinkPlace& place, model::Link& link) {
     place.fail("/gap", fmt::format("a {} has 'slack' in its law, not a gap: the link's gap must "
                                    "be 0, got {}",
                                    type, place.spec.gap));
-  if (link.law->traits.constraint && !place.resolver.spec().analysis.integrator.is_explicit())
-    place.fail("/law", fmt::format("a {} is enforced by the explicit integrator only in this "
-                                   "version: set /analysis/integrator to \"central_difference\" "
-                                   "(with no time_step it takes its stable step), or use a "
-                                   "penalty law such as extended_penalty",
-                                   type));
   link.make_law =
       links::make_law(place.spec.law, {place.resolver.spec().source, place.path + "/law"});
 }

@@ -126,6 +126,20 @@ void LinkSet::revert() {
   }
 }
 
+std::vector<char> LinkSet::impulsive_hard_contact_rows(const Vector* lumped_mass) const {
+  std::vector<char> rows(static_cast<std::size_t>(size()), 0);
+  for (std::size_t k = 0; k < links_.size(); ++k) {
+    if (links_[k].friction || !links_[k].law->is_hard_contact()) continue;
+    const Index row = first_row_[k];
+    bool massive = true;
+    if (lumped_mass)
+      for (SparseRowMatrix::InnerIterator term(connectivity_, row); term; ++term)
+        massive = massive && (*lumped_mass)[term.col()] > 0.0;
+    rows[static_cast<std::size_t>(row)] = massive;
+  }
+  return rows;
+}
+
 const links::LinkLaw& LinkSet::law(Index link) const {
   const Link& entry = links_[static_cast<std::size_t>(link)];
   return entry.friction ? entry.friction->normal_law() : *entry.law;

@@ -75,6 +75,11 @@ class LinkSet {
     const Link& entry = links_[static_cast<std::size_t>(link)];
     return entry.friction ? nullptr : entry.law->hard_contact();
   }
+  // 1 on the rows of hard contacts between masses, by row: every DOF of the row carries mass
+  // (`lumped_mass`; none: a consistent mass, which every DOF carries). Such a contact's force is
+  // an impulse in an implicit step; against a massless point (a column between floors) it is the
+  // point's static reaction.
+  std::vector<char> impulsive_hard_contact_rows(const Vector* lumped_mass) const;
   const links::CoulombFriction* friction(Index link) const {
     return links_[static_cast<std::size_t>(link)].friction.get();
   }

@@ -6,6 +6,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/errors.hpp"
+#include "links/hard_contact.hpp"
+
 namespace pound::integrators {
 namespace {
 
@@ -127,6 +130,7 @@ std::string Newmark::name() const {
 
 void Newmark::initialize(SecondOrderSystem& system, State& state, double /*first_step*/) {
   factorizations_.by_step.clear();
+  mass_solver_.solver.reset();
   factorizations_.uses.clear();
   const Index n = system.size();
   LinkSet& links = system.links();
@@ -141,6 +145,23 @@ void Newmark::initialize(SecondOrderSystem& system, State& state, double /*first
     system.link_motion(state.time, offset, offset_rate, offset_acceleration);
     state.link_penetration += offset;
     rate += offset_rate;
+  }
+  hard_laws_.assign(static_cast<std::size_t>(links.size()), nullptr);
+  has_hard_contacts_ = false;
+  for (Index k = 0; k < links.count(); ++k)
+    if (links::HardContact* hard = links.hard_contact(k)) {
+      hard_laws_[static_cast<std::size_t>(links.row(k))] = hard;
+      hard->impose(0.0);
+      has_hard_contacts_ = true;
+    }
+  hard_pressing_.assign(static_cast<std::size_t>(links.size()), 0);
+  if (has_hard_contacts_) {
+    const std::vector<char> impulsive = links.impulsive_hard_contact_rows(system.lumped_mass());
+    for (std::size_t r = 0; r < hard_laws_.size(); ++r)
+      if (hard_laws_[r] && !impulsive[r])
+        throw SolveError(state.time,
+                         "a hard contact pushes a massless DOF, to which an implicit step cannot "
+                         "give its impulse");
   }
   links.set_trial(state.link_penetration, rate, zero, 0.0, 0.0, state.link_force, tangent);
   links.commit();
@@ -212,6 +233,7 @@ StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double
   StepResult result;
   if (system.links().size() > 0) {
     predict_links(system, to);
+    if (has_hard_contacts_) bound_hard_contacts(system, from, c_c);
     if (!solve_link_forces(system, f, c_m, c_c, external_norm, result)) return result;
     apply_link_forces(f, to);
   } else {
@@ -224,6 +246,7 @@ StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double
   to.velocity.resize(n);
   correct(n, c_m, gamma_ * dt, to.displacement.data(), predicted_displacement_.data(),
           predicted_velocity_.data(), to.acceleration.data(), to.velocity.data());
+  if (has_hard_contacts_) release_constraint_acceleration(system, to);
   // A NaN or Inf anywhere makes the sum non-finite; Eigen's packet sum is not one serial chain.
   if (!std::isfinite(to.velocity.sum())) {
     result.failure = "the state is not finite";
@@ -268,8 +291,14 @@ void Newmark::add_alpha_history(SecondOrderSystem& system, const State& from) {
     system.multiply_damping(from.velocity, work_);
     history_ -= alpha_f_ * work_;
   }
-  if (from.link_force.size() > 0)
-    history_.noalias() -= alpha_f_ * (system.links().connectivity().transpose() * from.link_force);
+  if (from.link_force.size() > 0) {
+    // A hard contact's force acted in its own step (release_constraint_acceleration).
+    link_history_ = from.link_force;
+    if (has_hard_contacts_)
+      for (std::size_t r = 0; r < hard_laws_.size(); ++r)
+        if (hard_laws_[r]) link_history_[static_cast<Index>(r)] = 0.0;
+    history_.noalias() -= alpha_f_ * (system.links().connectivity().transpose() * link_history_);
+  }
   system.multiply_mass(from.acceleration, work_);
   history_ -= alpha_m_ * work_;
   rhs_ += history_ / (1.0 - alpha_f_);
@@ -319,8 +348,11 @@ bool Newmark::solve_link_forces(SecondOrderSystem& system, const Factorization& 
     }
     result.unbalanced_force = links.nodal_norm(residual_);
     const double reference = std::max(external_norm, links.nodal_norm(law_force_));
-    if (result.unbalanced_force <= test_.relative_tolerance * reference + test_.absolute_tolerance)
+    if (result.unbalanced_force <=
+        test_.relative_tolerance * reference + test_.absolute_tolerance) {
+      impose_hard_contacts();
       return true;
+    }
     if (iteration == test_.max_iterations) {
       result.failure = fmt::format(
           "Newton did not converge in {} iterations (unbalanced force {:.3e}, reference {:.3e})",
@@ -334,6 +366,7 @@ bool Newmark::solve_link_forces(SecondOrderSystem& system, const Factorization& 
     // its round-off (stiffness x eps x displacement) while the correction already has.
     if (iteration > 0 && correction_.norm() <= 1e-14 * std::max(assumed_force_.norm(), 1e-300)) {
       deform_links(f);
+      impose_hard_contacts();
       return true;
     }
   }
@@ -347,7 +380,8 @@ void Newmark::solve_correction(const Factorization& f) {
   const Index m = residual_.size();
   if (general_correction_) {
     jacobian_.noalias() = tangent_ * f.coupling;
-    jacobian_.diagonal().array() += 1.0;
+    for (Index r = 0; r < m; ++r)
+      if (!hard_pressing_[static_cast<std::size_t>(r)]) jacobian_(r, r) += 1.0;
     jacobian_lu_.compute(jacobian_);
     correction_ = jacobian_lu_.solve(residual_);
     factored_id_ = 0;
@@ -391,7 +425,8 @@ void Newmark::solve_correction(const Factorization& f) {
       const Index r = active_rows_[static_cast<std::size_t>(i)];
       for (Index j = 0; j < size; ++j)
         jacobian_(i, j) = jacobian_entry(r, active_rows_[static_cast<std::size_t>(j)]);
-      jacobian_(i, i) += 1.0;
+      // A pressing hard contact's row is s G(r, :) alone: its F_law moves with F.
+      if (!hard_pressing_[static_cast<std::size_t>(r)]) jacobian_(i, i) += 1.0;
     }
     jacobian_lu_.compute(jacobian_);
     factored_id_ = f.id;
@@ -423,7 +458,89 @@ void Newmark::evaluate_links(LinkSet& links, const Factorization& f, double c_m,
   acceleration_ = c_m * (delta_ - delta_predicted_);
   if (links_move_) acceleration_ += link_offset_acceleration_;
   links.set_trial(delta_, rate_, acceleration_, c_c, c_m, law_force_, tangent_);
+  if (has_hard_contacts_) evaluate_hard_contacts(f);
   residual_ = assumed_force_ - law_force_;
+}
+
+void Newmark::bound_hard_contacts(SecondOrderSystem& system, const State& from, double c_c) {
+  const LinkSet& links = system.links();
+  links.project(from.velocity, hard_rate_);
+  if (links_move_) {
+    Vector offset, offset_rate, offset_acceleration;
+    system.link_motion(from.time, offset, offset_rate, offset_acceleration);
+    hard_rate_ += offset_rate;
+  }
+  hard_bound_.resize(links.size());
+  hard_candidate_.assign(hard_laws_.size(), 0);
+  for (std::size_t r = 0; r < hard_laws_.size(); ++r) {
+    const links::HardContact* law = hard_laws_[r];
+    if (!law) continue;
+    const auto row = static_cast<Index>(r);
+    const bool holding = law->in_contact();
+    hard_candidate_[r] = holding;
+    if (holding) {
+      // No further approach. (A zero rate at t_{n+1} instead lets delta creep by
+      // dt^2 (1/2 - beta - beta (1 - gamma) / gamma) B a_n a step when gamma != 1/2, opening a
+      // pressed contact, whose force then does negative work.)
+      hard_bound_[row] = from.link_penetration[row];
+      continue;
+    }
+    // The impact law: w_{n+1} = -e w-, by Newmark's w_{n+1} = w~ + (gamma / (beta dt))
+    // (delta_{n+1} - delta~).
+    const double after = -law->restitution() * std::max(0.0, hard_rate_[row]);
+    hard_bound_[row] = delta_predicted_[row] + (after - rate_predicted_[row]) / c_c;
+  }
+}
+
+void Newmark::evaluate_hard_contacts(const Factorization& f) {
+  for (std::size_t r = 0; r < hard_laws_.size(); ++r) {
+    if (!hard_laws_[r]) continue;
+    const auto row = static_cast<Index>(r);
+    // Constrained from the iterate on which it first penetrates, for the rest of the step.
+    if (!hard_candidate_[r] && delta_[row] > 0.0) hard_candidate_[r] = 1;
+    // s = 1 / G(r, r) makes s delta a force, the one that would close delta alone.
+    const double scale = 1.0 / f.coupling(row, row);
+    const double pressing = assumed_force_[row] + scale * (delta_[row] - hard_bound_[row]);
+    hard_pressing_[r] = hard_candidate_[r] && pressing > 0.0;
+    law_force_[row] = hard_pressing_[r] ? pressing : 0.0;
+    tangent_(row, row) = hard_pressing_[r] ? scale : 0.0;
+  }
+}
+
+// The hard contacts' forces act as this step's impulses: the acceleration kept for the next
+// step is the one without them (w M^-1 B^T F_hard added back, w = (1 - a_f) / (1 - a_m) the
+// weight F has in a_{n+1}), so the next step's predictor does not apply half of an impact's
+// impulse again, and a held contact's force does not alternate from step to step under the
+// trapezoidal rule; each step finds the force that holds anew. The state's force of such a row
+// is its step's average, the impulse gamma w F dt over dt (what the energy balance and the link
+// summaries take as the step's force: LinkSummaries::set_step_forces).
+void Newmark::release_constraint_acceleration(SecondOrderSystem& system, State& to) {
+  const double weight = (1.0 - alpha_f_) / (1.0 - alpha_m_);
+  hard_force_.setZero(system.links().size());
+  bool any = false;
+  for (std::size_t r = 0; r < hard_laws_.size(); ++r) {
+    if (!hard_laws_[r]) continue;
+    const auto row = static_cast<Index>(r);
+    hard_force_[row] = weight * assumed_force_[row];
+    to.link_force[row] = gamma_ * hard_force_[row];
+    hard_laws_[r]->impose(to.link_force[row]);
+    any = any || hard_force_[row] != 0.0;
+  }
+  if (!any) return;
+  work_.noalias() = system.links().connectivity().transpose() * hard_force_;
+  if (const Vector* mass = system.lumped_mass()) {
+    for (Index i = 0; i < work_.size(); ++i)
+      if ((*mass)[i] > 0.0) to.acceleration[i] += work_[i] / (*mass)[i];
+    return;
+  }
+  if (!mass_solver_.solver) mass_solver_.solver = system.factor(1.0, 0.0, 0.0);
+  mass_solver_.solver->solve(work_, hard_acceleration_);
+  to.acceleration += hard_acceleration_;
+}
+
+void Newmark::impose_hard_contacts() {
+  for (std::size_t r = 0; r < hard_laws_.size(); ++r)
+    if (hard_laws_[r]) hard_laws_[r]->impose(assumed_force_[static_cast<Index>(r)]);
 }
 
 void Newmark::apply_link_forces(const Factorization& f, State& to) const {

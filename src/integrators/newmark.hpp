@@ -10,6 +10,23 @@
 // m scalar ones, F - F_law(delta_lin - G F) = 0 with G = B Z, solved by Newton with the laws'
 // consistent tangents. This is the full Newton method on the whole system, only cheaper: the
 // unbalanced force of the whole system is exactly B^T (F - F_law).
+//
+// A hard contact (links/hard_contact.hpp) has no F_law. Its row is a constraint with the impact
+// law at velocity level, as in Moreau-Jean time stepping (Jean 1999, "The non-smooth contact
+// dynamics method", CMAME 177 235-257): a contact that would penetrate by t_{n+1} may leave the
+// step at a normal rate no more than w+ = -e w- (w- its approach rate at t_n), which Newmark's
+// update makes a bound on delta_{n+1}, delta~ + (beta dt / gamma) (w+ - w~); a held contact may
+// not close further, delta_{n+1} <= delta_n. F >= 0 with complementarity, solved in the same
+// Newton iteration as a semismooth (primal-dual active-set) step on min(F, s (bound - delta)) = 0
+// with s = 1 / G(r, r) (Hintermueller, Ito & Kunisch 2002, SIAM J. Optim. 13(3) 865-888): a
+// pressing row (F + s (delta - bound) > 0) gets delta = bound, its Jacobian row s G(r, :) with no
+// identity; the others F = 0. The force is an impulse of its own step: the acceleration carried
+// to the next step leaves it out (release_constraint_acceleration), so an impact's impulse is not
+// applied again by the next step's predictor, nor does a held contact's force alternate from step
+// to step as under the trapezoidal rule with a bound on the position alone. A rigid pair then
+// parts at exactly -e times its approach rate, losing (1 - e^2) of its approach energy; the price
+// is an overlap or gap of at most w- dt / 2 left at each impact. The impulse needs mass to act on:
+// every DOF of a hard contact's row must carry one (the builder refuses the others).
 #include <Eigen/LU>
 #include <map>
 #include <vector>
@@ -91,6 +108,15 @@ class Newmark final : public Integrator {
   void evaluate_links(LinkSet& links, const Factorization& f, double c_m, double c_c);
   // u_{n+1} = u_lin - Z F and the link state of `to`.
   void apply_link_forces(const Factorization& f, State& to) const;
+  // The hard contacts' rows of the iteration: law force F + s (delta - bound) and tangent s
+  // (pressing), or 0.
+  void evaluate_hard_contacts(const Factorization& f);
+  // Each hard contact's bound for this step, from its state at t_n.
+  void bound_hard_contacts(SecondOrderSystem& system, const State& from, double c_c);
+  // The converged forces into the hard contacts' laws (what they commit).
+  void impose_hard_contacts();
+  // a_{n+1} without the hard contacts' forces, their state force the step's impulse / dt.
+  void release_constraint_acceleration(SecondOrderSystem& system, State& to);
 
   double beta_;
   double gamma_;
@@ -129,6 +155,23 @@ class Newmark final : public Integrator {
   Vector reduced_residual_, reduced_correction_;
   Vector link_offset_, link_offset_rate_, link_offset_acceleration_;
   bool links_move_ = false;  // this step's links see the supports' motion (predict_links)
+  // Hard contacts: their laws by row (nullptr for a force law's row), found at initialize(), and
+  // which of them press (delta = 0 enforced) at the current iterate.
+  std::vector<links::HardContact*> hard_laws_;
+  std::vector<char> hard_pressing_;
+  std::vector<char> hard_candidate_;  // constrained in this step (held, or penetrated)
+  Vector hard_bound_, hard_rate_, hard_force_, hard_acceleration_, link_history_;
+  // M factored, for a consistent mass; tied to the system like the factors above.
+  struct MassSolver {
+    MassSolver() = default;
+    MassSolver(const MassSolver&) {}
+    MassSolver& operator=(const MassSolver&) {
+      solver.reset();
+      return *this;
+    }
+    std::unique_ptr<LinearSolver> solver;
+  } mass_solver_;
+  bool has_hard_contacts_ = false;
 };
 
 }  // namespace pound::integrators

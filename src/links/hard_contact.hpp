@@ -11,10 +11,11 @@
 // 1/2 m_eff delta_dot-^2 (e = 1 conserves it). The law has no force of its own: the integrator
 // finds F from the constraint over all the hard contacts of a step together and imposes it
 // (integrators/central_difference.hpp: Carpenter, Taylor & Katona's forward-increment Lagrange
-// multipliers, with the impact law at velocity level as in Moreau-Jean time stepping). F is
-// released as soon as it would turn tensile. e = 0 suits contact between finite element meshes
-// (their own elasticity makes the bounce, as in the rod benchmark); e > 0 lumped masses that
-// stand for whole bodies. Units: e [-]; F [F].
+// multipliers, with the impact law at velocity level as in Moreau-Jean time stepping;
+// integrators/newmark.hpp: the same impact law as a bound in the condensed Newton, the force an
+// impulse of its step, between masses only). F is released as soon as it would turn tensile. e = 0
+// suits contact between finite element meshes (their own elasticity makes the bounce, as in the rod
+// benchmark); e > 0 lumped masses that stand for whole bodies. Units: e [-]; F [F].
 #include "links/link_law.hpp"
 
 namespace pound::links {

@@ -33,6 +33,16 @@ double EnergyBalance::mass_norm(const Vector& acceleration) {
   return acceleration.dot(work_);
 }
 
+void EnergyBalance::set_step_forces(const std::vector<char>& by_row) {
+  step_force_weight_ = Vector::Zero(static_cast<Index>(by_row.size()));
+  bool any = false;
+  for (std::size_t r = 0; r < by_row.size(); ++r) {
+    step_force_weight_[static_cast<Index>(r)] = by_row[r] ? 1.0 : 0.0;
+    any = any || by_row[r];
+  }
+  if (!any) step_force_weight_.resize(0);
+}
+
 void EnergyBalance::record(const integrators::State& state) {
   const Index n = system_.size();
   external_ = Vector::Zero(n);
@@ -71,7 +81,11 @@ void EnergyBalance::record(const integrators::State& state) {
       // Work of the link forces on the structure (B du): with moving supports the links also
       // deform by the supports' motion, whose work is not the structure's.
       system_.links().project(step, work_);
-      terms_.links += 0.5 * (state.link_force + previous_.link_force).dot(work_);
+      average_force_ = 0.5 * (state.link_force + previous_.link_force);
+      if (step_force_weight_.size() > 0)
+        average_force_ +=
+            0.5 * step_force_weight_.cwiseProduct(state.link_force - previous_.link_force);
+      terms_.links += average_force_.dot(work_);
     }
   }
   worst_ = std::max(worst_, terms_.balance_error());

@@ -59,6 +59,9 @@ class EnergyBalance : public Observer {
                          double acceleration_energy = 0.0)
       : system_(system), acceleration_energy_(acceleration_energy) {}
   void record(const integrators::State& state) override;
+  // Rows whose force is its step's average (LinkSummaries::set_step_forces): their work is
+  // F_{n+1} B du.
+  void set_step_forces(const std::vector<char>& by_row);
   const EnergyTerms& terms() const { return terms_; }
   // The largest balance error seen over the run (not only at the end).
   double worst_balance_error() const { return worst_; }
@@ -74,6 +77,8 @@ class EnergyBalance : public Observer {
   bool started_ = false;
   integrators::State previous_;
   Vector previous_external_, external_, work_, average_, step_;
+  Vector step_force_weight_;  // by row: 1 for a step-average force, else 0 (empty: none)
+  Vector average_force_;
   // K u at this step and the previous one: with Rayleigh damping the damping work follows from
   // them (du^T K v_avg = v_avg^T (K u_{n+1} - K u_n)), one band product less per step.
   Vector stiffness_force_, previous_stiffness_force_;

@@ -169,6 +169,11 @@ Table EnvelopeRecorder::table() const {
   return table;
 }
 
+void LinkSummaries::set_step_forces(const std::vector<char>& by_row) {
+  for (std::size_t k = 0; k < rows_.size(); ++k)
+    step_forces_[k] = by_row[static_cast<std::size_t>(rows_[k])];
+}
+
 void LinkSummaries::record(const integrators::State& state) {
   for (std::size_t k = 0; k < summaries_.size(); ++k) {
     LinkSummary& s = summaries_[k];
@@ -179,9 +184,9 @@ void LinkSummaries::record(const integrators::State& state) {
     if (started_) {
       const double previous_force = previous_.link_force[link];
       const double dt = state.time - previous_.time;
-      s.impulse += 0.5 * (force + previous_force) * dt;
-      const double work =
-          0.5 * (force + previous_force) * (penetration - previous_.link_penetration[link]);
+      const double average = step_forces_[k] ? force : 0.5 * (force + previous_force);
+      s.impulse += average * dt;
+      const double work = average * (penetration - previous_.link_penetration[link]);
       s.work += work;
       s.engagement_work += work;
       if (contact && previous_force == 0.0) ++s.impacts;

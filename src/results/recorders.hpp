@@ -184,13 +184,18 @@ struct LinkSummary {
 class LinkSummaries : public Observer {
  public:
   explicit LinkSummaries(std::vector<Index> normal_rows)
-      : rows_(std::move(normal_rows)), summaries_(rows_.size()) {}
+      : rows_(std::move(normal_rows)), summaries_(rows_.size()), step_forces_(rows_.size(), 0) {}
+  // By row of B: 1 where the state's force is its step's average (an implicit integrator's hard
+  // contact: its impulse acts in the step that found it), so impulse and work take the rectangle
+  // rule there, F_{n+1} dt and F_{n+1} d(delta), instead of the trapezoidal one.
+  void set_step_forces(const std::vector<char>& by_row);
   void record(const integrators::State& state) override;
   const std::vector<LinkSummary>& summaries() const { return summaries_; }
 
  private:
   std::vector<Index> rows_;
   std::vector<LinkSummary> summaries_;
+  std::vector<char> step_forces_;  // by summary
   integrators::State previous_;
   bool started_ = false;
 };

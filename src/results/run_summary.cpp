@@ -201,6 +201,12 @@ RunObservers::RunObservers(const builder::BuiltModel& built,
       passive_links_(!system.has_link_motion()),
       drifts_(drift_places(built, system.dofs()), ground_),
       joints_(joint_places(built, system), ground_) {
+  if (!built.analysis.integrator.is_explicit()) {
+    const std::vector<char> step_forces =
+        system.links().impulsive_hard_contact_rows(system.lumped_mass());
+    links_.set_step_forces(step_forces);
+    energy_.set_step_forces(step_forces);
+  }
   std::vector<Index> elements;
   std::size_t first = 0;
   for (const builder::DriftMonitor& m : built.drift_monitors) {

@@ -90,6 +90,8 @@ double created_at_phase(const links::LinkLaw& law, const links::LinkContext& con
   settings.time_limit = 0.0;
   settings.max_steps = 0;
   results::LinkSummaries summaries({0});
+  if (!analysis.integrator.is_explicit())
+    summaries.set_step_forces(system.links().impulsive_hard_contact_rows(system.lumped_mass()));
   integrators::TransientAnalysis run(system, *integrator, settings);
   run.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
     summaries.record(s);

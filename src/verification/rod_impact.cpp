@@ -119,18 +119,22 @@ RodImpactMetrics compare_with_exact(const ExactRodImpact& exact, double first_co
     m.min_force = std::min(m.min_force, force[k]);
     const bool contact = force[k] > 0.0;
     // A penalty contact begins and ends where the penetration crosses zero. A hard contact has
-    // none: its force at a sample acts from half a step before to half a step after it
-    // (central difference's velocities at the half steps), the first from t_0.
+    // no such crossing (round-off about zero explicitly, an overlap held until it parts
+    // implicitly): its force at a sample acts from half a step before to half a step after it
+    // (the velocities at the half steps of central difference, the step's impulse of an
+    // implicit step), the first from t_0.
     if (contact && !in_contact) {
       ++m.contact_episodes;
       if (start < 0.0)
-        start = k == 0                               ? time[0]
-                : penetration[k] > penetration_floor ? crossing(time, penetration, k - 1)
-                                                     : 0.5 * (time[k - 1] + time[k]);
+        start = k == 0 ? time[0]
+                : penetration[k] > penetration_floor && penetration[k - 1] <= 0.0
+                    ? crossing(time, penetration, k - 1)
+                    : 0.5 * (time[k - 1] + time[k]);
     }
     if (!contact && in_contact)
-      end = penetration[k - 1] > penetration_floor ? crossing(time, penetration, k - 1)
-                                                   : 0.5 * (time[k - 1] + time[k]);
+      end = penetration[k - 1] > penetration_floor && penetration[k] <= 0.0
+                ? crossing(time, penetration, k - 1)
+                : 0.5 * (time[k - 1] + time[k]);
     in_contact = contact;
   }
   if (in_contact) end = std::min(window_end, time.back());

@@ -117,6 +117,41 @@ TEST_F(Cli, VerifyHelpShowsItsOptions) {
     EXPECT_TRUE(contains(outcome.out, option)) << option << " missing from\n" << outcome.out;
 }
 
+// Hard contacts under Newmark in a generated bridge and between two SDOF girders: the energy
+// balance closes to round-off (the contact's force is its step's impulse, and the balance takes
+// it so), no contact creates energy, and the girders pound as often as under central difference.
+TEST_F(Cli, HardContactUnderNewmarkBalancesEnergy) {
+  json girders = json::parse(
+      read_text(fs::path(POUND_SOURCE_DIR) / "models" / "two_girders_hard_contact.json"));
+  girders["analysis"]["integrator"] = "newmark_average_acceleration";
+  girders["analysis"]["time_step"] = 0.005;
+  for (json& excitation : girders["excitations"])  // relative to models/, the file moves
+    excitation["record"] =
+        (fs::path(POUND_SOURCE_DIR) / "models" / excitation["record"].get<std::string>())
+            .lexically_normal()
+            .string();
+  const fs::path girders_file = path("girders.json");
+  std::ofstream(girders_file) << girders.dump(2);
+  for (const fs::path& model :
+       {fs::path(POUND_SOURCE_DIR) / "models" / "three_span_bridge_hard_contact.json",
+        girders_file}) {
+    const fs::path out = path(model.stem().string() + ".out");
+    const Outcome outcome = pound({"run", model.string(), "--out", out.string()});
+    ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+    const json summary = json::parse(read_text(out / "summary.json"));
+    const json& energy = summary["energy"];
+    std::cout << model.filename() << ": balance error " << energy["balance_error"]
+              << ", created by contacts " << energy["contact_created"] << " of input "
+              << energy["input"] << "\n";
+    EXPECT_LT(energy["worst_balance_error"].get<double>(), 1e-9);
+    EXPECT_LT(energy["contact_created_fraction"].get<double>(), 1e-4);
+    int impacts = 0;
+    for (const json& link : summary["links"])
+      if (link["role"] == "contact") impacts += link["impacts"].get<int>();
+    EXPECT_GT(impacts, 10);
+  }
+}
+
 // The study picks its rod cases by name; a name it does not know is a usage error listing them.
 TEST_F(Cli, StudyTakesItsCasesByName) {
   const Outcome wrong = pound({"study", "rod-impact", "--cases", "kawashima,wall"});
