@@ -291,12 +291,13 @@ void Newmark::add_alpha_history(SecondOrderSystem& system, const State& from) {
     system.multiply_damping(from.velocity, work_);
     history_ -= alpha_f_ * work_;
   }
-  if (from.link_force.size() > 0) {
+  if (from.link_force.size() > 0 && !has_hard_contacts_) {
+    history_.noalias() -= alpha_f_ * (system.links().connectivity().transpose() * from.link_force);
+  } else if (from.link_force.size() > 0) {
     // A hard contact's force acted in its own step (release_constraint_acceleration).
     link_history_ = from.link_force;
-    if (has_hard_contacts_)
-      for (std::size_t r = 0; r < hard_laws_.size(); ++r)
-        if (hard_laws_[r]) link_history_[static_cast<Index>(r)] = 0.0;
+    for (std::size_t r = 0; r < hard_laws_.size(); ++r)
+      if (hard_laws_[r]) link_history_[static_cast<Index>(r)] = 0.0;
     history_.noalias() -= alpha_f_ * (system.links().connectivity().transpose() * link_history_);
   }
   system.multiply_mass(from.acceleration, work_);
