@@ -54,8 +54,6 @@ double shortest_record_step(const model::Model& model) {
   return shortest;
 }
 
-}  // namespace
-
 // An implicit step makes a hard contact's force an impulse between masses (Newmark): a row that
 // moves a massless DOF has none to give it to.
 void check_implicit_hard_contacts(const model::Model& model, assembly::StructuralSystem& system,
@@ -87,6 +85,8 @@ void check_implicit_hard_contacts(const model::Model& model, assembly::Structura
       }
   }
 }
+
+}  // namespace
 
 void settle_time_step(AnalysisSpec& analysis, const model::Model& model,
                       assembly::StructuralSystem& system, const std::string& source) {

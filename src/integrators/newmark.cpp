@@ -291,14 +291,16 @@ void Newmark::add_alpha_history(SecondOrderSystem& system, const State& from) {
     system.multiply_damping(from.velocity, work_);
     history_ -= alpha_f_ * work_;
   }
-  if (from.link_force.size() > 0 && !has_hard_contacts_) {
-    history_.noalias() -= alpha_f_ * (system.links().connectivity().transpose() * from.link_force);
-  } else if (from.link_force.size() > 0) {
-    // A hard contact's force acted in its own step (release_constraint_acceleration).
-    link_history_ = from.link_force;
-    for (std::size_t r = 0; r < hard_laws_.size(); ++r)
-      if (hard_laws_[r]) link_history_[static_cast<Index>(r)] = 0.0;
-    history_.noalias() -= alpha_f_ * (system.links().connectivity().transpose() * link_history_);
+  if (from.link_force.size() > 0) {
+    const Vector* link_force = &from.link_force;
+    if (has_hard_contacts_) {
+      // A hard contact's force acted in its own step (release_constraint_acceleration).
+      link_history_ = from.link_force;
+      for (std::size_t r = 0; r < hard_laws_.size(); ++r)
+        if (hard_laws_[r]) link_history_[static_cast<Index>(r)] = 0.0;
+      link_force = &link_history_;
+    }
+    history_.noalias() -= alpha_f_ * (system.links().connectivity().transpose() * *link_force);
   }
   system.multiply_mass(from.acceleration, work_);
   history_ -= alpha_m_ * work_;
@@ -349,11 +351,8 @@ bool Newmark::solve_link_forces(SecondOrderSystem& system, const Factorization& 
     }
     result.unbalanced_force = links.nodal_norm(residual_);
     const double reference = std::max(external_norm, links.nodal_norm(law_force_));
-    if (result.unbalanced_force <=
-        test_.relative_tolerance * reference + test_.absolute_tolerance) {
-      impose_hard_contacts();
+    if (result.unbalanced_force <= test_.relative_tolerance * reference + test_.absolute_tolerance)
       return true;
-    }
     if (iteration == test_.max_iterations) {
       result.failure = fmt::format(
           "Newton did not converge in {} iterations (unbalanced force {:.3e}, reference {:.3e})",
@@ -367,7 +366,6 @@ bool Newmark::solve_link_forces(SecondOrderSystem& system, const Factorization& 
     // its round-off (stiffness x eps x displacement) while the correction already has.
     if (iteration > 0 && correction_.norm() <= 1e-14 * std::max(assumed_force_.norm(), 1e-300)) {
       deform_links(f);
-      impose_hard_contacts();
       return true;
     }
   }
@@ -467,9 +465,8 @@ void Newmark::bound_hard_contacts(SecondOrderSystem& system, const State& from, 
   const LinkSet& links = system.links();
   links.project(from.velocity, hard_rate_);
   if (links_move_) {
-    Vector offset, offset_rate, offset_acceleration;
-    system.link_motion(from.time, offset, offset_rate, offset_acceleration);
-    hard_rate_ += offset_rate;
+    system.link_motion(from.time, hard_offset_, hard_offset_rate_, hard_offset_acceleration_);
+    hard_rate_ += hard_offset_rate_;
   }
   hard_bound_.resize(links.size());
   hard_candidate_.assign(hard_laws_.size(), 0);
@@ -537,11 +534,6 @@ void Newmark::release_constraint_acceleration(SecondOrderSystem& system, State& 
   if (!mass_solver_.solver) mass_solver_.solver = system.factor(1.0, 0.0, 0.0);
   mass_solver_.solver->solve(work_, hard_acceleration_);
   to.acceleration += hard_acceleration_;
-}
-
-void Newmark::impose_hard_contacts() {
-  for (std::size_t r = 0; r < hard_laws_.size(); ++r)
-    if (hard_laws_[r]) hard_laws_[r]->impose(assumed_force_[static_cast<Index>(r)]);
 }
 
 void Newmark::apply_link_forces(const Factorization& f, State& to) const {

@@ -113,8 +113,6 @@ class Newmark final : public Integrator {
   void evaluate_hard_contacts(const Factorization& f);
   // Each hard contact's bound for this step, from its state at t_n.
   void bound_hard_contacts(SecondOrderSystem& system, const State& from, double c_c);
-  // The converged forces into the hard contacts' laws (what they commit).
-  void impose_hard_contacts();
   // a_{n+1} without the hard contacts' forces, their state force the step's impulse / dt.
   void release_constraint_acceleration(SecondOrderSystem& system, State& to);
 
@@ -161,6 +159,7 @@ class Newmark final : public Integrator {
   std::vector<char> hard_pressing_;
   std::vector<char> hard_candidate_;  // constrained in this step (held, or penetrated)
   Vector hard_bound_, hard_rate_, hard_force_, hard_acceleration_, link_history_;
+  Vector hard_offset_, hard_offset_rate_, hard_offset_acceleration_;  // the supports' at t_n
   // M factored, for a consistent mass; tied to the system like the factors above.
   struct MassSolver {
     MassSolver() = default;

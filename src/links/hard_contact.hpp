@@ -34,6 +34,7 @@ class HardContact final : public LinkLaw {
   void revert() override { trial_force_ = committed_force_; }
   bool in_contact() const override { return committed_force_ > 0.0; }
   HardContact* hard_contact() override { return this; }
+  bool is_hard_contact() const override { return true; }
 
   double restitution() const { return restitution_; }
   // The constraint force the integrator found for the trial state (>= 0).

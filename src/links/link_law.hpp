@@ -60,7 +60,7 @@ class LinkLaw {
   virtual ViscousPart viscous_part() const { return {}; }
   // A hard contact is a constraint whose force the integrator finds; none for a force law.
   virtual HardContact* hard_contact() { return nullptr; }
-  bool is_hard_contact() const { return const_cast<LinkLaw*>(this)->hard_contact() != nullptr; }
+  virtual bool is_hard_contact() const { return false; }
 };
 
 }  // namespace pound::links

@@ -13,6 +13,7 @@
 #include "links/extended_penalty.hpp"
 #include "links/hard_contact.hpp"
 #include "links/viscous_damper.hpp"
+#include "support/free_masses.hpp"
 #include "support/oscillator.hpp"
 
 namespace pound {
@@ -76,39 +77,8 @@ TEST(CentralDifference, ForcedDampedOscillatorConvergesAtSecondOrder) {
   EXPECT_NEAR(std::log2(coarse / finer), 2.0, 0.15);
 }
 
-// A viscous damper link (no stiffness) on a mass bounds the step at 2 m / c: the damped
-// oscillator's (2 / w)(sqrt(1 + z^2) - z) as the spring vanishes (the link rate is taken at the
-// half step, so the half-step velocity changes by the factor 1 - c h / m a step). Checked by
-// running just below and just above it.
-// Two free masses (no springs) joined by one link row u_0 - u_1 - gap.
-class FreeMassPair final : public integrators::SecondOrderSystem {
- public:
-  FreeMassPair(double mass_0, double mass_1, integrators::LinkSet links)
-      : mass_(Vector{{mass_0, mass_1}}), links_(std::move(links)) {}
-  Index size() const override { return 2; }
-  void multiply_mass(const Vector& x, Vector& y) const override { y = mass_.cwiseProduct(x); }
-  const Vector* lumped_mass() const override { return &mass_; }
-  bool has_damping() const override { return false; }
-  void multiply_damping(const Vector& x, Vector& y) const override { y.setZero(x.size()); }
-  void multiply_stiffness(const Vector& x, Vector& y) const override { y.setZero(x.size()); }
-  bool has_external_force() const override { return false; }
-  void external_force(double, Vector& force) const override { force.setZero(2); }
-  std::unique_ptr<integrators::LinearSolver> factor(double, double, double) const override {
-    return nullptr;  // an explicit method needs none
-  }
-  integrators::LinkSet& links() override { return links_; }
-
- private:
-  Vector mass_;
-  integrators::LinkSet links_;
-};
-
-integrators::LinkSet hard_contact_row(std::vector<integrators::LinkSet::Term> row, double gap,
-                                      double restitution) {
-  std::vector<std::unique_ptr<links::LinkLaw>> laws;
-  laws.push_back(std::make_unique<links::HardContact>(restitution));
-  return integrators::LinkSet(static_cast<Index>(row.size()), {row}, {gap}, std::move(laws));
-}
+using testing::FreeMassPair;
+using testing::hard_contact_row;
 
 // Masses 1 and 3 closing at 3 through a hard contact, first touch at several phases of a step:
 // afterwards their velocities are the rigid-body impulse solution with Newton's e, the pair has
@@ -189,6 +159,10 @@ TEST(CentralDifference, HardContactAgainstAWallBouncesOrHolds) {
   }
 }
 
+// A viscous damper link (no stiffness) on a mass bounds the step at 2 m / c: the damped
+// oscillator's (2 / w)(sqrt(1 + z^2) - z) as the spring vanishes (the link rate is taken at the
+// half step, so the half-step velocity changes by the factor 1 - c h / m a step). Checked by
+// running just below and just above it.
 TEST(CentralDifference, ViscousDamperLinkBoundsTheStep) {
   const double mass = 2.0, stiffness = 8.0, coefficient = 400.0;  // z = 50
   auto damped_mass = [&] {

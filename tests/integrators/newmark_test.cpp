@@ -9,6 +9,7 @@
 #include "integrators/transient_analysis.hpp"
 #include "links/gap_spring.hpp"
 #include "links/hard_contact.hpp"
+#include "support/free_masses.hpp"
 #include "support/oscillator.hpp"
 
 namespace pound {
@@ -147,42 +148,8 @@ TEST(Newmark, GapSpringAgainstRigidWallGivesHalfCycleContact) {
 namespace pound {
 namespace {
 
-// Two free masses, no stiffness, for impacts between bodies.
-class FreeMassPair final : public integrators::SecondOrderSystem {
- public:
-  FreeMassPair(double mass_0, double mass_1, integrators::LinkSet links)
-      : mass_(Vector{{mass_0, mass_1}}), links_(std::move(links)) {}
-  Index size() const override { return 2; }
-  void multiply_mass(const Vector& x, Vector& y) const override { y = mass_.cwiseProduct(x); }
-  const Vector* lumped_mass() const override { return &mass_; }
-  bool has_damping() const override { return false; }
-  void multiply_damping(const Vector& x, Vector& y) const override { y.setZero(x.size()); }
-  void multiply_stiffness(const Vector& x, Vector& y) const override { y.setZero(x.size()); }
-  bool has_external_force() const override { return false; }
-  void external_force(double, Vector& force) const override { force.setZero(2); }
-  std::unique_ptr<integrators::LinearSolver> factor(double c_m, double, double) const override {
-    return std::make_unique<Diagonal>(c_m * mass_);
-  }
-  integrators::LinkSet& links() override { return links_; }
-
- private:
-  struct Diagonal final : integrators::LinearSolver {
-    explicit Diagonal(Vector d) : diagonal(std::move(d)) {}
-    void solve(const Vector& rhs, Vector& solution) const override {
-      solution = rhs.cwiseQuotient(diagonal);
-    }
-    Vector diagonal;
-  };
-  Vector mass_;
-  integrators::LinkSet links_;
-};
-
-integrators::LinkSet hard_contact_row(std::vector<integrators::LinkSet::Term> row, double gap,
-                                      double restitution) {
-  std::vector<std::unique_ptr<links::LinkLaw>> laws;
-  laws.push_back(std::make_unique<links::HardContact>(restitution));
-  return integrators::LinkSet(static_cast<Index>(row.size()), {row}, {gap}, std::move(laws));
-}
+using testing::FreeMassPair;
+using testing::hard_contact_row;
 
 std::vector<integrators::Newmark> implicit_methods() {
   return {integrators::Newmark::average_acceleration(), integrators::Newmark::hht(-0.1),
