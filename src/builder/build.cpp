@@ -126,6 +126,11 @@ void settle_time_step(AnalysisSpec& analysis, const model::Model& model,
       analysis.time_step = record_step;
       analysis.time_step_is_record_step = true;
     }
+    if (!std::isfinite(analysis.time_step))
+      throw InputError(source, "/analysis/time_step",
+                       "\"auto\" finds no stable step to take: nothing in the model vibrates at a "
+                       "frequency above round-off (stiffnesses zero or vanishing against the "
+                       "masses) and no record sets one; give the step as a number");
     check_step_count(analysis, source);
   } else if (analysis.time_step > limit) {
     throw InputError(source, "/analysis/time_step",
