@@ -66,10 +66,17 @@ StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
     residual = applied - stiffness_force - link_force;
     return std::max(applied.norm(), link_force.norm());
   };
-  auto mechanism = [time]() {
-    return SolveError(time,
-                      "static equilibrium: the structure is not held under the initial "
-                      "loads (a mechanism: add supports, or links in contact)");
+  bool hard_contacts = false;
+  for (Index k = 0; k < links.count(); ++k) hard_contacts = hard_contacts || links.hard_contact(k);
+  auto mechanism = [time, hard_contacts]() {
+    return SolveError(
+        time, fmt::format("static equilibrium: the structure is not held under the initial "
+                          "loads (a mechanism: add supports, or links in contact){}",
+                          hard_contacts ? "; a hard_contact carries nothing in the static solve "
+                                          "(it has no stiffness): start from rest without "
+                                          "\"initial_state\": \"static\", or give the contacts "
+                                          "that hold the structure a penalty law"
+                                        : ""));
   };
 
   // The loads in increments, each committed: friction links follow the loading path, as in a

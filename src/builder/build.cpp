@@ -64,14 +64,18 @@ void check_implicit_hard_contacts(const model::Model& model, assembly::Structura
   const std::vector<char> impulsive = links.impulsive_hard_contact_rows(lumped);
   for (Index k = 0; k < links.count(); ++k) {
     const auto row = static_cast<std::size_t>(links.row(k));
-    if (links.has_friction(k) || !links.law(k).is_hard_contact() || impulsive[row]) continue;
+    if (!links.law(k).is_hard_contact() || impulsive[row]) continue;
     const model::DofMap& dofs = system.dofs();
+    const Index rows = links.has_friction(k) ? 2 : 1;
+    const auto moves = [&](Index equation) {
+      for (Index r = 0; r < rows; ++r)
+        if (links.connectivity().coeff(links.row(k) + r, equation) != 0.0) return true;
+      return false;
+    };
     for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
       for (int d = 0; d < dofs.dofs_per_node(); ++d) {
         const Index equation = dofs.equation(node, d);
-        if (equation < 0 || (*lumped)[equation] > 0.0 ||
-            links.connectivity().coeff(links.row(k), equation) == 0.0)
-          continue;
+        if (equation < 0 || (*lumped)[equation] > 0.0 || !moves(equation)) continue;
         throw InputError(
             source, "/analysis/integrator",
             fmt::format("the hard contact '{}' pushes node '{}', which has no mass in direction "
@@ -117,7 +121,8 @@ void settle_time_step(AnalysisSpec& analysis, const model::Model& model,
   } catch (const std::domain_error& error) {
     throw InputError(source, "/analysis/integrator", error.what());
   }
-  analysis.stable_time_step = limit;
+  // Nothing that vibrates (masses held only by hard contacts): no limit to report.
+  if (std::isfinite(limit)) analysis.stable_time_step = limit;
   if (analysis.time_step_auto) {
     analysis.time_step = analysis.safety_factor * limit;
     // A step longer than a record's samples would step over its peaks.

@@ -89,6 +89,24 @@ void resolve_law(const LinkPlace& place, model::Link& link) {
       links::make_law(place.spec.law, {place.resolver.spec().source, place.path + "/law"});
 }
 
+// A constraint (hard_contact) sticks exactly: no stick penalty to give, and no pendulum (its
+// restoring force needs the slide a penalty law leaves).
+void refuse_stick_penalty(const LinkPlace& place, const FrictionSpec& friction,
+                          const std::string& type) {
+  const auto refuse = [&](const std::optional<double>& value, const std::string& name) {
+    if (value)
+      place.fail(
+          "/friction/" + name,
+          fmt::format("a {} sticks exactly, with no stick penalty: leave out '{}'", type, name));
+  };
+  refuse(friction.stick_stiffness, "stick_stiffness");
+  refuse(friction.stick_damping, "stick_damping");
+  refuse(friction.stick_mass, "stick_mass");
+  if (friction.radius)
+    place.fail("/friction/radius",
+               fmt::format("a friction pendulum needs a penalty normal law, not a {}", type));
+}
+
 // Coulomb friction needs a tangent (2-D), a normal force to rub with, and a stick stiffness (the
 // normal law's at first touch unless given).
 void resolve_friction(const LinkPlace& place, model::Link& link) {
@@ -99,11 +117,9 @@ void resolve_friction(const LinkPlace& place, model::Link& link) {
                "friction needs a tangential direction: a 2-D scene (\"dimension\": 2)");
   if (link.role() == links::LinkRole::tension)
     place.fail("/friction", fmt::format("a {} carries no normal contact force to rub with", type));
-  if (link.law->traits.constraint)
-    place.fail("/friction", fmt::format("friction on a {} is not available yet: give the link a "
-                                        "penalty law (extended_penalty) to rub with",
-                                        type));
-  if (!link.law->traits.stiff_at_first_touch && !friction.stick_stiffness)
+  if (link.law->traits.constraint) refuse_stick_penalty(place, friction, type);
+  if (!link.law->traits.constraint && !link.law->traits.stiff_at_first_touch &&
+      !friction.stick_stiffness)
     place.fail("/friction",
                fmt::format("give 'stick_stiffness': a {} law has no stiffness at first touch to "
                            "stick with",

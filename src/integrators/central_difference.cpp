@@ -309,8 +309,7 @@ StepResult CentralDifference::advance(SecondOrderSystem& system, const State& fr
     if (coupling_.rows() != m) prepare_links(links);
     link_kinematics(system, from, half_dt, to);
     if (!hard_groups_.empty())
-      for (links::HardContact* hard : hard_laws_)
-        if (hard) hard->impose(0.0);  // the force laws' solve sees no constraint force
+      release_hard_forces();  // the force laws' solve sees no constraint force
     if (!solve_link_forces(links, to, result)) return result;
     if (!hard_groups_.empty() && !solve_hard_contacts(links, to, dt, result)) return result;
     finite_state &= apply_link_forces(from, half_dt, to);
@@ -377,15 +376,26 @@ void CentralDifference::prepare_links(LinkSet& links) {
   group_jacobians_.resize(link_groups_.size());
   group_lus_.resize(link_groups_.size());
   hard_laws_.assign(static_cast<std::size_t>(links.size()), nullptr);
-  for (Index k = 0; k < links.count(); ++k)
+  hard_frictions_.assign(static_cast<std::size_t>(links.size()), nullptr);
+  for (Index k = 0; k < links.count(); ++k) {
     hard_laws_[static_cast<std::size_t>(links.row(k))] = links.hard_contact(k);
+    hard_frictions_[static_cast<std::size_t>(links.row(k) + 1)] = links.hard_friction(k);
+  }
   hard_groups_.clear();
   for (const std::vector<Index>& group : link_groups_) {
     std::vector<Index> hard;
     for (const Index r : group)
-      if (hard_laws_[static_cast<std::size_t>(r)]) hard.push_back(r);
+      if (hard_laws_[static_cast<std::size_t>(r)] || hard_frictions_[static_cast<std::size_t>(r)])
+        hard.push_back(r);
     if (!hard.empty()) hard_groups_.push_back(std::move(hard));
   }
+}
+
+void CentralDifference::release_hard_forces() {
+  for (links::HardContact* hard : hard_laws_)
+    if (hard) hard->impose(0.0);
+  for (links::CoulombFriction* friction : hard_frictions_)
+    if (friction) friction->impose_tangential(0.0, false);
 }
 
 bool CentralDifference::solve_hard_contacts(const LinkSet& links, State& to, double dt,
@@ -433,101 +443,187 @@ void CentralDifference::initial_hard_contacts(SecondOrderSystem& system, State& 
 bool CentralDifference::solve_hard_group(const std::vector<Index>& rows, double dt, double scale,
                                          const Vector& penetration, const Vector& rate,
                                          const Vector& acceleration, Vector& forces) {
+  prepare_hard_group(rows, dt, scale, penetration, rate, acceleration);
+  const auto size = static_cast<int>(rows.size());
+  for (int iteration = 0; iteration < 8 * size + 8; ++iteration) {
+    solve_active_hard_rows(rows, scale);
+    if (update_hard_active_set(rows, scale)) continue;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const Index r = rows[i];
+      const double force = group_force_[static_cast<Index>(i)];
+      forces[r] = force;
+      if (links::HardContact* law = hard_laws_[static_cast<std::size_t>(r)])
+        law->impose(force);
+      else
+        hard_frictions_[static_cast<std::size_t>(r)]->impose_tangential(force, slip_[i] != 0);
+    }
+    return true;
+  }
+  return false;
+}
+
+void CentralDifference::prepare_hard_group(const std::vector<Index>& rows, double dt, double scale,
+                                           const Vector& penetration, const Vector& rate,
+                                           const Vector& acceleration) {
   const auto size = static_cast<Index>(rows.size());
   free_next_.resize(size);
   bound_.resize(size);
   candidate_.assign(rows.size(), 0);
   active_.assign(rows.size(), 0);
+  slip_.assign(rows.size(), 0);
   for (Index i = 0; i < size; ++i) {
     const Index r = rows[static_cast<std::size_t>(i)];
     const double now = penetration[r];
     const double next = now + dt * rate[r] + scale * acceleration[r];
     free_next_[i] = next;
-    const links::HardContact& law = *hard_laws_[static_cast<std::size_t>(r)];
-    const bool holding = law.in_contact();
+    const links::HardContact* law = hard_laws_[static_cast<std::size_t>(r)];
+    if (!law) {
+      bound_[i] = now;  // a friction row sticks where it is: no slide over the step
+      continue;
+    }
+    const bool holding = law->in_contact();
     // Holding: no further approach. Closing in this step: the impact law on the approach rate,
     // w+ = -e w- exactly (stopping short of touch by less than dt w-); with e = 0 the gap
     // closes instead, touching exactly, and the approach stops in this step or the next.
     if (holding)
       bound_[i] = std::min(0.0, now);
-    else if (law.restitution() == 0.0)
+    else if (law->restitution() == 0.0)
       bound_[i] = 0.0;
     else
-      bound_[i] = std::min(0.0, now) - law.restitution() * std::max(0.0, next - now);
+      bound_[i] = std::min(0.0, now) - law->restitution() * std::max(0.0, next - now);
     const double tolerance = kHardContactRoundOff * magnitudes_[r];
     candidate_[static_cast<std::size_t>(i)] = holding || next > tolerance;
     active_[static_cast<std::size_t>(i)] =
         candidate_[static_cast<std::size_t>(i)] && next > bound_[i] + tolerance;
   }
-  Vector force = Vector::Zero(size);
-  for (int iteration = 0; iteration < 4 * static_cast<int>(size) + 8; ++iteration) {
-    // Forces of the active rows: dt^2 G_AA F_A = delta~_A - bound_A.
-    std::vector<Index>& active = active_rows_;
-    active.clear();
-    for (Index i = 0; i < size; ++i)
-      if (active_[static_cast<std::size_t>(i)]) active.push_back(i);
-    const auto count = static_cast<Index>(active.size());
-    force.setZero();
-    if (count > 0) {
-      active_matrix_.resize(count, count);
-      active_force_.resize(count);
-      for (Index a = 0; a < count; ++a) {
-        const Index i = active[static_cast<std::size_t>(a)];
-        active_force_[a] = free_next_[i] - bound_[i];
-        for (Index b = 0; b < count; ++b)
-          active_matrix_(a, b) =
-              scale *
-              coupling_(rows[static_cast<std::size_t>(i)],
-                        rows[static_cast<std::size_t>(active[static_cast<std::size_t>(b)])]);
-      }
-      active_force_ = active_matrix_.llt().solve(active_force_);
-      for (Index a = 0; a < count; ++a)
-        force[active[static_cast<std::size_t>(a)]] = active_force_[a];
+}
+
+// A friction row (local index i) follows its normal row, the one before it.
+bool CentralDifference::hard_row_active(const std::vector<Index>& rows, std::size_t i) const {
+  return hard_laws_[static_cast<std::size_t>(rows[i])] ? active_[i] != 0 : active_[i - 1] != 0;
+}
+
+void CentralDifference::solve_active_hard_rows(const std::vector<Index>& rows, double scale) {
+  // Active normal and sticking rows: scale G F = delta~ - bound (their next value on the bound);
+  // slipping rows: F_t = sign mu F_n.
+  std::vector<Index>& unknowns = active_rows_;
+  unknowns.clear();
+  bool friction = false;
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    if (hard_row_active(rows, i)) {
+      unknowns.push_back(static_cast<Index>(i));
+      friction = friction || !hard_laws_[static_cast<std::size_t>(rows[i])];
     }
-    // The most tensile active row leaves; else the row most past its bound joins.
-    Index worst = -1;
-    double worst_value = 0.0;
-    for (const Index i : active)
-      if (force[i] < worst_value) {
-        worst = i;
-        worst_value = force[i];
-      }
-    if (worst >= 0) {
-      active_[static_cast<std::size_t>(worst)] = 0;
+  const auto count = static_cast<Index>(unknowns.size());
+  group_force_.setZero(static_cast<Index>(rows.size()));
+  if (count == 0) return;
+  active_matrix_.resize(count, count);
+  active_force_.resize(count);
+  for (Index a = 0; a < count; ++a) {
+    const auto i = static_cast<std::size_t>(unknowns[static_cast<std::size_t>(a)]);
+    if (slip_[i] != 0) {
+      active_matrix_.row(a).setZero();
+      active_matrix_(a, a) = 1.0;
+      active_matrix_(a, a - 1) =
+          -slip_[i] * hard_frictions_[static_cast<std::size_t>(rows[i])]->coefficient();
+      active_force_[a] = 0.0;
       continue;
     }
-    double worst_excess = 0.0;
-    for (Index i = 0; i < size; ++i) {
-      if (active_[static_cast<std::size_t>(i)]) continue;
-      double next = free_next_[i];
-      for (const Index j : active)
-        next -= scale *
-                coupling_(rows[static_cast<std::size_t>(i)], rows[static_cast<std::size_t>(j)]) *
-                force[j];
-      // A row that was no candidate is bound only by not penetrating.
-      const double bound = candidate_[static_cast<std::size_t>(i)] ? bound_[i] : 0.0;
-      const double excess =
-          next - bound - kHardContactRoundOff * magnitudes_[rows[static_cast<std::size_t>(i)]];
-      if (excess > worst_excess) {
-        worst = i;
-        worst_excess = excess;
-      }
-    }
-    if (worst < 0) {
-      for (Index i = 0; i < size; ++i) {
-        const Index r = rows[static_cast<std::size_t>(i)];
-        forces[r] = force[i];
-        hard_laws_[static_cast<std::size_t>(r)]->impose(force[i]);
-      }
-      return true;
-    }
-    if (!candidate_[static_cast<std::size_t>(worst)]) {
-      candidate_[static_cast<std::size_t>(worst)] = 1;
-      bound_[worst] = 0.0;
-    }
-    active_[static_cast<std::size_t>(worst)] = 1;
+    active_force_[a] = free_next_[static_cast<Index>(i)] - bound_[static_cast<Index>(i)];
+    for (Index b = 0; b < count; ++b)
+      active_matrix_(a, b) =
+          scale *
+          coupling_(rows[i], rows[static_cast<std::size_t>(unknowns[static_cast<std::size_t>(b)])]);
   }
-  return false;
+  // Without friction the matrix is G's, positive definite; a slipping row makes it unsymmetric.
+  if (friction)
+    active_force_ = active_matrix_.partialPivLu().solve(active_force_);
+  else
+    active_force_ = active_matrix_.llt().solve(active_force_);
+  for (Index a = 0; a < count; ++a)
+    group_force_[unknowns[static_cast<std::size_t>(a)]] = active_force_[a];
+}
+
+double CentralDifference::next_hard_value(const std::vector<Index>& rows, Index i,
+                                          double scale) const {
+  double next = free_next_[i];
+  for (const Index j : active_rows_)
+    next -= scale *
+            coupling_(rows[static_cast<std::size_t>(i)], rows[static_cast<std::size_t>(j)]) *
+            group_force_[j];
+  return next;
+}
+
+bool CentralDifference::update_hard_active_set(const std::vector<Index>& rows, double scale) {
+  // One change at a time, the worst first: the most tensile active row leaves; a sticking row
+  // past mu F_n slips; a slipping row whose slide turned back sticks; a row past its bound joins.
+  const auto size = static_cast<Index>(rows.size());
+  Index worst = -1;
+  double worst_value = 0.0;
+  for (const Index i : active_rows_)
+    if (hard_laws_[static_cast<std::size_t>(rows[static_cast<std::size_t>(i)])] &&
+        group_force_[i] < worst_value) {
+      worst = i;
+      worst_value = group_force_[i];
+    }
+  if (worst >= 0) {
+    active_[static_cast<std::size_t>(worst)] = 0;
+    if (worst + 1 < size) slip_[static_cast<std::size_t>(worst + 1)] = 0;
+    return true;
+  }
+  if (update_hard_friction(rows, scale)) return true;
+  double worst_excess = 0.0;
+  for (Index i = 0; i < size; ++i) {
+    const Index r = rows[static_cast<std::size_t>(i)];
+    if (active_[static_cast<std::size_t>(i)] || !hard_laws_[static_cast<std::size_t>(r)]) continue;
+    // A row that was no candidate is bound only by not penetrating.
+    const double bound = candidate_[static_cast<std::size_t>(i)] ? bound_[i] : 0.0;
+    const double excess =
+        next_hard_value(rows, i, scale) - bound - kHardContactRoundOff * magnitudes_[r];
+    if (excess > worst_excess) {
+      worst = i;
+      worst_excess = excess;
+    }
+  }
+  if (worst < 0) return false;
+  if (!candidate_[static_cast<std::size_t>(worst)]) {
+    candidate_[static_cast<std::size_t>(worst)] = 1;
+    bound_[worst] = 0.0;
+  }
+  active_[static_cast<std::size_t>(worst)] = 1;
+  return true;
+}
+
+bool CentralDifference::update_hard_friction(const std::vector<Index>& rows, double scale) {
+  Index worst = -1;
+  double worst_excess = 0.0;
+  int worst_slip = 0;
+  for (const Index i : active_rows_) {
+    const Index r = rows[static_cast<std::size_t>(i)];
+    const links::CoulombFriction* friction = hard_frictions_[static_cast<std::size_t>(r)];
+    if (!friction) continue;
+    const double force = group_force_[i], limit = friction->coefficient() * group_force_[i - 1];
+    double excess = 0.0;
+    int slip = 0;
+    if (slip_[static_cast<std::size_t>(i)] == 0) {
+      // Relative to R_n: a sticking row at mu = 0 with a round-off force stays sticking.
+      excess = (std::abs(force) - limit) / std::max(group_force_[i - 1], 1e-300) - 1e-12;
+      slip = force > 0.0 ? 1 : -1;
+    } else {
+      // Slipping at F_t = sign mu F_n resists a slide of that sign; one the other way sticks.
+      const double slide = next_hard_value(rows, i, scale) - bound_[i];
+      excess = -slip_[static_cast<std::size_t>(i)] * slide - kHardContactRoundOff * magnitudes_[r];
+      excess /= std::max(magnitudes_[r], 1e-300);
+    }
+    if (excess > worst_excess) {
+      worst = i;
+      worst_excess = excess;
+      worst_slip = slip;
+    }
+  }
+  if (worst < 0) return false;
+  slip_[static_cast<std::size_t>(worst)] = static_cast<signed char>(worst_slip);
+  return true;
 }
 
 void CentralDifference::link_kinematics(SecondOrderSystem& system, const State& from,

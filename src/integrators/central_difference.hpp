@@ -22,7 +22,10 @@
 // half-step approach rate w- becomes -e w- (it rebounds short of touch, by less than dt w-);
 // with e = 0 bound = 0, Carpenter's: the gap closes exactly and the approach stops. A contact
 // already carrying a force has bound = min(0, delta_{n+1}): it approaches no further, and lets
-// go when held only by tension. No contact ever penetrates.
+// go when held only by tension. No contact ever penetrates. With Coulomb friction its tangential
+// row joins the same problem: sticking, s_{n+2} = s_{n+1} (no slide over the step) while
+// |F_t| <= mu F_n; slipping, F_t = mu F_n against the slide; the active set changes one row's
+// state at a time, the worst first.
 #include <Eigen/LU>
 #include <vector>
 
@@ -59,6 +62,21 @@ class CentralDifference final : public Integrator {
   bool solve_hard_group(const std::vector<Index>& rows, double dt, double scale,
                         const Vector& penetration, const Vector& rate, const Vector& acceleration,
                         Vector& force);
+  // delta~_{n+2} and the bound of each of the group's rows, and the first active set.
+  void prepare_hard_group(const std::vector<Index>& rows, double dt, double scale,
+                          const Vector& penetration, const Vector& rate,
+                          const Vector& acceleration);
+  // Whether a group row (local index) is in the active set: a friction row with its normal row.
+  bool hard_row_active(const std::vector<Index>& rows, std::size_t i) const;
+  // The active rows' forces for the current active set, into group_force_.
+  void solve_active_hard_rows(const std::vector<Index>& rows, double scale);
+  // delta_{n+2} (or s_{n+2}) of group row i under the forces found.
+  double next_hard_value(const std::vector<Index>& rows, Index i, double scale) const;
+  // One change of the active set (or of a friction row's stick / slip); false when none is due.
+  bool update_hard_active_set(const std::vector<Index>& rows, double scale);
+  bool update_hard_friction(const std::vector<Index>& rows, double scale);
+  // Every hard row's force to zero (the force laws' solve comes first).
+  void release_hard_forces();
   // Contacts already closing at t_0 get their force into F_0 and a_0, so that u_1 does not
   // penetrate (u_1 = u_0 + dt v_0 + dt^2/2 a_0).
   void initial_hard_contacts(SecondOrderSystem& system, State& state, double dt);
@@ -85,12 +103,16 @@ class CentralDifference final : public Integrator {
   std::vector<Index> link_dofs_;              // the columns of B that have entries
   // Hard contacts: their laws by row, and the rows of each link group that are hard.
   std::vector<links::HardContact*> hard_laws_;  // by row; nullptr for a force law's row
+  // The friction of a hard contact, on its tangential row; nullptr on every other row.
+  std::vector<links::CoulombFriction*> hard_frictions_;
   std::vector<std::vector<Index>> hard_groups_;
-  // Per hard row of a group: delta_{n+2} without its force, its bound, whether it is in the
-  // active set; the active set's matrix and solution.
-  Vector free_next_, bound_, active_force_, magnitudes_;
+  // Per hard row of a group: delta_{n+2} (s_{n+2}) without its force, its bound, whether it is
+  // in the active set, a friction row's slip direction (0: sticking); the active set's matrix,
+  // its solution, and the group's forces.
+  Vector free_next_, bound_, active_force_, magnitudes_, group_force_;
   std::vector<char> candidate_, active_;
-  std::vector<Index> active_rows_;  // the indices of active_ that are set
+  std::vector<signed char> slip_;
+  std::vector<Index> active_rows_;  // the group rows with an unknown force, in order
   Matrix active_matrix_;
 };
 

@@ -129,13 +129,15 @@ void LinkSet::revert() {
 std::vector<char> LinkSet::impulsive_hard_contact_rows(const Vector* lumped_mass) const {
   std::vector<char> rows(static_cast<std::size_t>(size()), 0);
   for (std::size_t k = 0; k < links_.size(); ++k) {
-    if (links_[k].friction || !links_[k].law->is_hard_contact()) continue;
-    const Index row = first_row_[k];
+    const Link& link = links_[k];
+    if (!(link.friction ? link.friction->normal_law() : *link.law).is_hard_contact()) continue;
+    const Index first = first_row_[k], last = first + (link.friction ? 2 : 1);
     bool massive = true;
     if (lumped_mass)
-      for (SparseRowMatrix::InnerIterator term(connectivity_, row); term; ++term)
-        massive = massive && (*lumped_mass)[term.col()] > 0.0;
-    rows[static_cast<std::size_t>(row)] = massive;
+      for (Index row = first; row < last; ++row)
+        for (SparseRowMatrix::InnerIterator term(connectivity_, row); term; ++term)
+          massive = massive && (*lumped_mass)[term.col()] > 0.0;
+    for (Index row = first; row < last; ++row) rows[static_cast<std::size_t>(row)] = massive;
   }
   return rows;
 }

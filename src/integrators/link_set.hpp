@@ -70,12 +70,18 @@ class LinkSet {
 
   // The normal law of a link (for a link with friction, the one inside it).
   const links::LinkLaw& law(Index link) const;
-  // The hard contact of a link without friction; none for a force law.
+  // The hard contact of a link (with friction, its normal law); none for a force law.
   links::HardContact* hard_contact(Index link) {
     const Link& entry = links_[static_cast<std::size_t>(link)];
-    return entry.friction ? nullptr : entry.law->hard_contact();
+    return entry.friction ? entry.friction->hard_contact() : entry.law->hard_contact();
   }
-  // 1 on the rows of hard contacts between masses, by row: every DOF of the row carries mass
+  // The friction of a hard contact, whose tangential force is a constraint's too; none else.
+  links::CoulombFriction* hard_friction(Index link) {
+    const Link& entry = links_[static_cast<std::size_t>(link)];
+    return entry.friction && entry.friction->hard_contact() ? entry.friction.get() : nullptr;
+  }
+  // 1 on the rows of hard contacts between masses (with friction, both rows of the link), by
+  // row: every DOF of the link's rows carries mass
   // (`lumped_mass`; none: a consistent mass, which every DOF carries). Such a contact's force is
   // an impulse in an implicit step; against a massless point (a column between floors) it is the
   // point's static reaction.

@@ -147,14 +147,20 @@ void Newmark::initialize(SecondOrderSystem& system, State& state, double /*first
     rate += offset_rate;
   }
   hard_laws_.assign(static_cast<std::size_t>(links.size()), nullptr);
+  hard_frictions_.assign(static_cast<std::size_t>(links.size()), nullptr);
   has_hard_contacts_ = false;
   for (Index k = 0; k < links.count(); ++k)
     if (links::HardContact* hard = links.hard_contact(k)) {
       hard_laws_[static_cast<std::size_t>(links.row(k))] = hard;
       hard->impose(0.0);
       has_hard_contacts_ = true;
+      if (links::CoulombFriction* friction = links.hard_friction(k)) {
+        hard_frictions_[static_cast<std::size_t>(links.row(k) + 1)] = friction;
+        friction->impose_tangential(0.0, false);
+      }
     }
   hard_pressing_.assign(static_cast<std::size_t>(links.size()), 0);
+  hard_slip_.assign(static_cast<std::size_t>(links.size()), 0.0);
   if (has_hard_contacts_) {
     const std::vector<char> impulsive = links.impulsive_hard_contact_rows(system.lumped_mass());
     for (std::size_t r = 0; r < hard_laws_.size(); ++r)
@@ -297,7 +303,7 @@ void Newmark::add_alpha_history(SecondOrderSystem& system, const State& from) {
       // A hard contact's force acted in its own step (release_constraint_acceleration).
       link_history_ = from.link_force;
       for (std::size_t r = 0; r < hard_laws_.size(); ++r)
-        if (hard_laws_[r]) link_history_[static_cast<Index>(r)] = 0.0;
+        if (hard_laws_[r] || hard_frictions_[r]) link_history_[static_cast<Index>(r)] = 0.0;
       link_force = &link_history_;
     }
     history_.noalias() -= alpha_f_ * (system.links().connectivity().transpose() * *link_force);
@@ -379,8 +385,10 @@ void Newmark::solve_correction(const Factorization& f) {
   const Index m = residual_.size();
   if (general_correction_) {
     jacobian_.noalias() = tangent_ * f.coupling;
-    for (Index r = 0; r < m; ++r)
+    for (Index r = 0; r < m; ++r) {
       if (!hard_pressing_[static_cast<std::size_t>(r)]) jacobian_(r, r) += 1.0;
+      jacobian_(r, r - (r > 0)) += hard_slip_[static_cast<std::size_t>(r)];
+    }
     jacobian_lu_.compute(jacobian_);
     correction_ = jacobian_lu_.solve(residual_);
     factored_id_ = 0;
@@ -390,7 +398,8 @@ void Newmark::solve_correction(const Factorization& f) {
   active_rows_.clear();
   moved_rows_.clear();
   for (Index r = 0; r < m; ++r) {
-    if (tangent_(r, r) != 0.0 || (r > 0 && tangent_(r, r - 1) != 0.0))
+    if (tangent_(r, r) != 0.0 || (r > 0 && tangent_(r, r - 1) != 0.0) ||
+        hard_slip_[static_cast<std::size_t>(r)] != 0.0)
       active_rows_.push_back(r);
     else if (residual_[r] != 0.0)
       moved_rows_.push_back(r);
@@ -416,7 +425,8 @@ void Newmark::solve_correction(const Factorization& f) {
   active_tangents_.clear();
   for (const Index r : active_rows_)
     active_tangents_.insert(active_tangents_.end(),
-                            {tangent_(r, r), r > 0 ? tangent_(r, r - 1) : 0.0});
+                            {tangent_(r, r), r > 0 ? tangent_(r, r - 1) : 0.0,
+                             hard_slip_[static_cast<std::size_t>(r)]});
   if (f.id != factored_id_ || active_rows_ != factored_rows_ ||
       active_tangents_ != factored_tangents_) {
     jacobian_.resize(size, size);
@@ -424,8 +434,11 @@ void Newmark::solve_correction(const Factorization& f) {
       const Index r = active_rows_[static_cast<std::size_t>(i)];
       for (Index j = 0; j < size; ++j)
         jacobian_(i, j) = jacobian_entry(r, active_rows_[static_cast<std::size_t>(j)]);
-      // A pressing hard contact's row is s G(r, :) alone: its F_law moves with F.
+      // A pressing hard contact's row is s G(r, :) alone: its F_law moves with F. A slipping
+      // friction row's is that of F_t - sign mu F_n (its normal row comes just before it).
       if (!hard_pressing_[static_cast<std::size_t>(r)]) jacobian_(i, i) += 1.0;
+      if (hard_slip_[static_cast<std::size_t>(r)] != 0.0)
+        jacobian_(i, i - 1) += hard_slip_[static_cast<std::size_t>(r)];
     }
     jacobian_lu_.compute(jacobian_);
     factored_id_ = f.id;
@@ -471,9 +484,18 @@ void Newmark::bound_hard_contacts(SecondOrderSystem& system, const State& from, 
   hard_bound_.resize(links.size());
   hard_candidate_.assign(hard_laws_.size(), 0);
   for (std::size_t r = 0; r < hard_laws_.size(); ++r) {
+    const auto row = static_cast<Index>(r);
+    if (const links::CoulombFriction* friction = hard_frictions_[r]) {
+      // A contact that stuck over the last step slides no further; any other sticks with a zero
+      // slide rate at t_{n+1} (a bound on s alone would reverse the slide rate, as the
+      // trapezoidal rule reverses a rate held at zero displacement).
+      const bool sticking = hard_laws_[r - 1]->in_contact() && !friction->slipping();
+      hard_bound_[row] = sticking ? from.link_penetration[row]
+                                  : delta_predicted_[row] - rate_predicted_[row] / c_c;
+      continue;
+    }
     const links::HardContact* law = hard_laws_[r];
     if (!law) continue;
-    const auto row = static_cast<Index>(r);
     const bool holding = law->in_contact();
     hard_candidate_[r] = holding;
     if (holding) {
@@ -503,6 +525,36 @@ void Newmark::evaluate_hard_contacts(const Factorization& f) {
     law_force_[row] = hard_pressing_[r] ? pressing : 0.0;
     tangent_(row, row) = hard_pressing_[r] ? scale : 0.0;
   }
+  for (std::size_t r = 0; r < hard_frictions_.size(); ++r)
+    if (hard_frictions_[r]) evaluate_hard_friction(f, static_cast<Index>(r));
+}
+
+// Alart & Curnier's (1991) semismooth form of Coulomb's law on a pressing contact's tangential
+// row t: with the trial force F_t + s (s_t - bound), s = 1 / G(t, t), the row sticks
+// (s_t = bound, a Jacobian row s G(t, :)) while the trial stays within mu F_n, else slips at
+// F_t = sign(trial) mu F_n (a Jacobian row e_t - sign mu e_n).
+void Newmark::evaluate_hard_friction(const Factorization& f, Index t) {
+  const auto r = static_cast<std::size_t>(t);
+  hard_slip_[r] = 0.0;
+  tangent_(t, t) = 0.0;
+  hard_pressing_[r] = 0;
+  if (!hard_pressing_[r - 1]) {
+    law_force_[t] = 0.0;
+    return;
+  }
+  const double normal = std::max(0.0, assumed_force_[t - 1]);
+  const double coefficient = hard_frictions_[r]->coefficient();
+  const double scale = 1.0 / f.coupling(t, t);
+  const double trial = assumed_force_[t] + scale * (delta_[t] - hard_bound_[t]);
+  if (std::abs(trial) <= coefficient * normal) {
+    law_force_[t] = trial;
+    tangent_(t, t) = scale;
+    hard_pressing_[r] = 1;
+    return;
+  }
+  const double direction = trial > 0.0 ? 1.0 : -1.0;
+  law_force_[t] = direction * coefficient * assumed_force_[t - 1];
+  hard_slip_[r] = -direction * coefficient;
 }
 
 // The hard contacts' forces act as this step's impulses: the acceleration kept for the next
@@ -517,11 +569,14 @@ void Newmark::release_constraint_acceleration(SecondOrderSystem& system, State& 
   hard_force_.setZero(system.links().size());
   bool any = false;
   for (std::size_t r = 0; r < hard_laws_.size(); ++r) {
-    if (!hard_laws_[r]) continue;
+    if (!hard_laws_[r] && !hard_frictions_[r]) continue;
     const auto row = static_cast<Index>(r);
     hard_force_[row] = weight * assumed_force_[row];
     to.link_force[row] = gamma_ * hard_force_[row];
-    hard_laws_[r]->impose(to.link_force[row]);
+    if (hard_laws_[r])
+      hard_laws_[r]->impose(to.link_force[row]);
+    else
+      hard_frictions_[r]->impose_tangential(to.link_force[row], hard_slip_[r] != 0.0);
     any = any || hard_force_[row] != 0.0;
   }
   if (!any) return;

@@ -26,7 +26,11 @@
 // to step as under the trapezoidal rule with a bound on the position alone. A rigid pair then
 // parts at exactly -e times its approach rate, losing (1 - e^2) of its approach energy; the price
 // is an overlap or gap of at most w- dt / 2 left at each impact. The impulse needs mass to act on:
-// every DOF of a hard contact's row must carry one (the builder refuses the others).
+// every DOF of a hard contact's row must carry one (the builder refuses the others). Coulomb
+// friction on a hard contact is a constraint on its tangential row in the same iteration
+// (Alart & Curnier's semismooth form, evaluate_hard_friction): sticking, no slide over the step
+// (a zero slide rate at t_{n+1} when the contact slipped or was open before); slipping,
+// F_t = mu F_n against the slide; its force is an impulse of its step like the normal one.
 #include <Eigen/LU>
 #include <map>
 #include <vector>
@@ -111,6 +115,8 @@ class Newmark final : public Integrator {
   // The hard contacts' rows of the iteration: law force F + s (delta - bound) and tangent s
   // (pressing), or 0.
   void evaluate_hard_contacts(const Factorization& f);
+  // A hard contact's friction row t (its normal row t - 1): stick or slip, law force, tangent.
+  void evaluate_hard_friction(const Factorization& f, Index t);
   // Each hard contact's bound for this step, from its state at t_n.
   void bound_hard_contacts(SecondOrderSystem& system, const State& from, double c_c);
   // a_{n+1} without the hard contacts' forces, their state force the step's impulse / dt.
@@ -156,7 +162,10 @@ class Newmark final : public Integrator {
   // Hard contacts: their laws by row (nullptr for a force law's row), found at initialize(), and
   // which of them press (delta = 0 enforced) at the current iterate.
   std::vector<links::HardContact*> hard_laws_;
-  std::vector<char> hard_pressing_;
+  std::vector<links::CoulombFriction*> hard_frictions_;  // on a hard contact's friction row
+  std::vector<char> hard_pressing_;                      // (a friction row: sticking)
+  // A slipping friction row's Jacobian entry on its normal row, -sign mu; 0 on every other row.
+  std::vector<double> hard_slip_;
   std::vector<char> hard_candidate_;  // constrained in this step (held, or penetrated)
   Vector hard_bound_, hard_rate_, hard_force_, hard_acceleration_, link_history_;
   Vector hard_offset_, hard_offset_rate_, hard_offset_acceleration_;  // the supports' at t_n

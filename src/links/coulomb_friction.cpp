@@ -6,13 +6,20 @@ namespace pound::links {
 
 CoulombFriction::CoulombFriction(std::unique_ptr<LinkLaw> normal, double coefficient,
                                  StickPenalty stick, std::optional<double> radius)
-    : normal_(std::move(normal)), coefficient_(coefficient), stick_(stick), radius_(radius) {}
+    : normal_(std::move(normal)),
+      coefficient_(coefficient),
+      stick_(stick),
+      radius_(radius),
+      hard_(normal_->hard_contact()) {}
 
 CoulombFriction::CoulombFriction(const CoulombFriction& other)
     : normal_(other.normal_->clone()),
       coefficient_(other.coefficient_),
       stick_(other.stick_),
       radius_(other.radius_),
+      hard_(normal_->hard_contact()),
+      committed_tangential_force_(other.committed_tangential_force_),
+      trial_tangential_force_(other.committed_tangential_force_),
       committed_anchor_(other.committed_anchor_),
       trial_anchor_(other.committed_anchor_),
       committed_slip_(other.committed_slip_),
@@ -24,10 +31,22 @@ CoulombFriction::CoulombFriction(const CoulombFriction& other)
 
 FrictionResponse CoulombFriction::set_trial(const LinkKinematics& normal,
                                             const LinkKinematics& tangential) {
+  if (hard_) return imposed(normal, tangential);
   FrictionResponse out = coulomb(normal, tangential);
   trial_normal_force_ = out.normal.force;
   // A flat slider's arithmetic stays exactly the Coulomb law's (no "+ 0" anywhere).
   if (radius_ && out.normal.force > 0.0) add_restoring(tangential, out);
+  return out;
+}
+
+FrictionResponse CoulombFriction::imposed(const LinkKinematics& normal,
+                                          const LinkKinematics& tangential) {
+  FrictionResponse out;
+  out.normal = normal_->set_trial(normal);
+  out.tangential_force = trial_tangential_force_;
+  out.slipping = trial_slip_;
+  trial_slide_ = tangential.penetration;
+  trial_normal_force_ = out.normal.force;
   return out;
 }
 
@@ -90,6 +109,7 @@ void CoulombFriction::commit() {
   committed_slip_ = trial_slip_;
   committed_slide_ = trial_slide_;
   committed_normal_force_ = trial_normal_force_;
+  committed_tangential_force_ = trial_tangential_force_;
 }
 
 void CoulombFriction::anchor_at_rest(double tangential_force) {
@@ -107,6 +127,7 @@ void CoulombFriction::revert() {
   trial_slip_ = committed_slip_;
   trial_slide_ = committed_slide_;
   trial_normal_force_ = committed_normal_force_;
+  trial_tangential_force_ = committed_tangential_force_;
 }
 
 }  // namespace pound::links

@@ -24,6 +24,11 @@
 // be large against the displacement (R >> s, as in every real bearing). The radius is a member
 // of this class, not a law of its own, because the restoring part needs R_n and s exactly where
 // the Coulomb part has them, and a flat slider is the same law with R -> infinity.
+//
+// On a hard contact (links/hard_contact.hpp) the friction is a constraint as well, with no stick
+// penalty: the integrator finds R_t with R_n, sticking (no slide over the step) while
+// |R_t| <= mu R_n and slipping at R_t = mu R_n against the slide otherwise, and imposes both
+// (impose_tangential); set_trial then returns the imposed forces with no tangents.
 #include <memory>
 #include <optional>
 
@@ -62,12 +67,21 @@ class CoulombFriction {
   void anchor_at_rest(double tangential_force);
 
   const LinkLaw& normal_law() const { return *normal_; }
+  // The normal law's hard contact, when it is one: then R_t is imposed, not computed.
+  HardContact* hard_contact() { return hard_; }
+  // The tangential force the integrator found for the trial state, and whether it slips.
+  void impose_tangential(double force, bool slipping) {
+    trial_tangential_force_ = force;
+    trial_slip_ = slipping;
+  }
   double coefficient() const { return coefficient_; }
   bool slipping() const { return committed_slip_; }
 
  private:
   // F_c and its tangents (the flat slider).
   FrictionResponse coulomb(const LinkKinematics& normal, const LinkKinematics& tangential);
+  // R_n and R_t as imposed, for the hard contact.
+  FrictionResponse imposed(const LinkKinematics& normal, const LinkKinematics& tangential);
   // The pendulum's R_n s / R, added to a response in contact.
   void add_restoring(const LinkKinematics& tangential, FrictionResponse& response) const;
 
@@ -75,6 +89,8 @@ class CoulombFriction {
   double coefficient_;
   StickPenalty stick_;
   std::optional<double> radius_;
+  HardContact* hard_;                                                       // normal_'s, or none
+  double committed_tangential_force_ = 0.0, trial_tangential_force_ = 0.0;  // imposed (hard_)
   double committed_anchor_ = 0.0, trial_anchor_ = 0.0;
   bool committed_slip_ = false, trial_slip_ = false;
   double committed_slide_ = 0.0;  // s at the last commit, the anchor when contact begins

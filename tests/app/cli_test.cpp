@@ -152,6 +152,36 @@ TEST_F(Cli, HardContactUnderNewmarkBalancesEnergy) {
   }
 }
 
+// The bundled block on a rough floor with a hard contact in place of its penalty: under the
+// explicit and an implicit integrator it stops at v^2 / (2 mu g) and its contact's work is the
+// kinetic energy it had (central difference's balance measures the start's friction force over
+// half a step too few: F v dt / 2 of the 20 J, 2.5e-4).
+TEST_F(Cli, HardContactWithFrictionStopsABlockWhereMuGSays) {
+  json block =
+      json::parse(read_text(fs::path(POUND_SOURCE_DIR) / "models" / "block_on_floor.json"));
+  block["links"][0]["law"] = {{"type", "hard_contact"}, {"restitution", 0.0}};
+  const double stop = 2.0 * 2.0 / (2.0 * 0.5 * 9.81);
+  for (const std::string integrator : {"central_difference", "newmark_average_acceleration"}) {
+    block["analysis"]["integrator"] = integrator;
+    const fs::path model = path(integrator + ".json"), out = path(integrator + ".out");
+    std::ofstream(model) << block.dump(2);
+    const Outcome outcome = pound({"run", model.string(), "--out", out.string()});
+    ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+    const json summary = json::parse(read_text(out / "summary.json"));
+    const json& energy = summary["energy"];
+    const std::string history = read_text(out / "block.csv");
+    const std::string last = history.substr(history.rfind('\n', history.size() - 2) + 1);
+    const double position = std::stod(last.substr(last.find(',') + 1));
+    std::cout << integrator << ": stopped at " << position << " (exact " << stop
+              << "), contact work " << energy["links"] << " of 20, balance error "
+              << energy["balance_error"] << "\n";
+    EXPECT_NEAR(position, stop, 1e-7);
+    EXPECT_NEAR(energy["links"].get<double>(), 20.0, 0.01);
+    EXPECT_LT(energy["worst_balance_error"].get<double>(), 1e-3);
+    EXPECT_LT(energy["contact_created_fraction"].get<double>(), 1e-6);
+  }
+}
+
 // The study picks its rod cases by name; a name it does not know is a usage error listing them.
 TEST_F(Cli, StudyTakesItsCasesByName) {
   const Outcome wrong = pound({"study", "rod-impact", "--cases", "kawashima,wall"});

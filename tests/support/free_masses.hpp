@@ -1,11 +1,14 @@
 #pragma once
 // Two free masses (no springs) joined by link rows, for testing impacts between bodies with any
-// integrator without a model; and a single hard-contact row.
+// integrator without a model; a single hard-contact row; a point mass in a plane under a load
+// with a hard contact and Coulomb friction against the ground.
+#include <functional>
 #include <memory>
 #include <utility>
 #include <vector>
 
 #include "integrators/second_order_system.hpp"
+#include "links/coulomb_friction.hpp"
 #include "links/hard_contact.hpp"
 
 namespace pound::testing {
@@ -46,6 +49,45 @@ inline integrators::LinkSet hard_contact_row(std::vector<integrators::LinkSet::T
   std::vector<std::unique_ptr<links::LinkLaw>> laws;
   laws.push_back(std::make_unique<links::HardContact>(restitution));
   return integrators::LinkSet(static_cast<Index>(row.size()), {row}, {gap}, std::move(laws));
+}
+
+// A point mass m in the plane (DOFs x, y) under a load f(t) and its links.
+class PointMass final : public integrators::SecondOrderSystem {
+ public:
+  PointMass(
+      double mass, integrators::LinkSet links,
+      std::function<Vector(double)> load = [](double) { return Vector::Zero(2); })
+      : mass_(Vector::Constant(2, mass)), links_(std::move(links)), load_(std::move(load)) {}
+  Index size() const override { return 2; }
+  void multiply_mass(const Vector& x, Vector& y) const override { y = mass_.cwiseProduct(x); }
+  const Vector* lumped_mass() const override { return &mass_; }
+  bool has_damping() const override { return false; }
+  void multiply_damping(const Vector& x, Vector& y) const override { y.setZero(x.size()); }
+  void multiply_stiffness(const Vector& x, Vector& y) const override { y.setZero(x.size()); }
+  bool has_external_force() const override { return true; }
+  void external_force(double time, Vector& force) const override { force = load_(time); }
+  std::unique_ptr<integrators::LinearSolver> factor(double c_m, double, double) const override {
+    return FreeMassPair(mass_[0], mass_[1], integrators::LinkSet(2)).factor(c_m, 0.0, 0.0);
+  }
+  integrators::LinkSet& links() override { return links_; }
+
+ private:
+  Vector mass_;
+  integrators::LinkSet links_;
+  std::function<Vector(double)> load_;
+};
+
+// A hard contact of the point mass with the ground at y = -gap (penetration -y - gap), with
+// Coulomb friction mu along x (slide x).
+inline integrators::LinkSet hard_contact_on_the_ground(double gap, double restitution,
+                                                       double coefficient) {
+  std::vector<integrators::LinkSet::Link> links(1);
+  links[0].normal_row = {{1, -1.0}};
+  links[0].gap = gap;
+  links[0].tangential_row = {{0, 1.0}};
+  links[0].friction = std::make_unique<links::CoulombFriction>(
+      std::make_unique<links::HardContact>(restitution), coefficient, links::StickPenalty{});
+  return integrators::LinkSet(2, std::move(links));
 }
 
 }  // namespace pound::testing
