@@ -379,7 +379,8 @@ void CentralDifference::prepare_links(LinkSet& links) {
   hard_frictions_.assign(static_cast<std::size_t>(links.size()), nullptr);
   for (Index k = 0; k < links.count(); ++k) {
     hard_laws_[static_cast<std::size_t>(links.row(k))] = links.hard_contact(k);
-    hard_frictions_[static_cast<std::size_t>(links.row(k) + 1)] = links.hard_friction(k);
+    if (links::CoulombFriction* friction = links.hard_friction(k))
+      hard_frictions_[static_cast<std::size_t>(links.row(k) + 1)] = friction;
   }
   hard_groups_.clear();
   for (const std::vector<Index>& group : link_groups_) {
@@ -455,7 +456,8 @@ bool CentralDifference::solve_hard_group(const std::vector<Index>& rows, double 
       if (links::HardContact* law = hard_laws_[static_cast<std::size_t>(r)])
         law->impose(force);
       else
-        hard_frictions_[static_cast<std::size_t>(r)]->impose_tangential(force, slip_[i] != 0);
+        hard_frictions_[static_cast<std::size_t>(r)]->impose_tangential(
+            force, slip_[i] != 0 && hard_row_active(rows, i));
     }
     return true;
   }
