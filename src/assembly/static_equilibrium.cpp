@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "core/errors.hpp"
 
@@ -68,15 +69,17 @@ StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
   };
   bool hard_contacts = false;
   for (Index k = 0; k < links.count(); ++k) hard_contacts = hard_contacts || links.hard_contact(k);
-  auto mechanism = [time, hard_contacts]() {
-    return SolveError(
-        time, fmt::format("static equilibrium: the structure is not held under the initial "
-                          "loads (a mechanism: add supports, or links in contact){}",
-                          hard_contacts ? "; a hard_contact carries nothing in the static solve "
-                                          "(it has no stiffness): start from rest without "
-                                          "\"initial_state\": \"static\", or give the contacts "
-                                          "that hold the structure a penalty law"
-                                        : ""));
+  // A hard contact has no force law to rest on: the likely reason when the solve fails.
+  const std::string hard_contact_note =
+      hard_contacts ? "; a hard_contact carries nothing in the static solve (it has no "
+                      "stiffness): start from rest without \"initial_state\": \"static\", or "
+                      "give the contacts that hold the structure a penalty law"
+                    : "";
+  auto mechanism = [time, &hard_contact_note]() {
+    return SolveError(time, fmt::format("static equilibrium: the structure is not held under the "
+                                        "initial loads (a mechanism: add supports, or links in "
+                                        "contact){}",
+                                        hard_contact_note));
   };
 
   // The loads in increments, each committed: friction links follow the loading path, as in a
@@ -95,9 +98,9 @@ StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
       if (iteration == max_iterations)
         throw SolveError(time, fmt::format("static equilibrium under the initial loads did not "
                                            "converge in {} iterations at {} % of the loads "
-                                           "(unbalanced force {:.3g} of {:.3g})",
+                                           "(unbalanced force {:.3g} of {:.3g}){}",
                                            max_iterations, 100 * increment / increments,
-                                           result.unbalanced_force, scale));
+                                           result.unbalanced_force, scale, hard_contact_note));
       Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
       solver.compute(static_tangent(system, tangent));
       if (solver.info() != Eigen::Success) throw mechanism();
