@@ -117,9 +117,9 @@ void resolve_friction(const LinkPlace& place, model::Link& link) {
                "friction needs a tangential direction: a 2-D scene (\"dimension\": 2)");
   if (link.role() == links::LinkRole::tension)
     place.fail("/friction", fmt::format("a {} carries no normal contact force to rub with", type));
-  if (link.law->traits.constraint) refuse_stick_penalty(place, friction, type);
-  if (!link.law->traits.constraint && !link.law->traits.stiff_at_first_touch &&
-      !friction.stick_stiffness)
+  if (link.law->traits.constraint)
+    refuse_stick_penalty(place, friction, type);
+  else if (!link.law->traits.stiff_at_first_touch && !friction.stick_stiffness)
     place.fail("/friction",
                fmt::format("give 'stick_stiffness': a {} law has no stiffness at first touch to "
                            "stick with",

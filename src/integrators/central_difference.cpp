@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "core/errors.hpp"
@@ -375,13 +376,9 @@ void CentralDifference::prepare_links(LinkSet& links) {
   link_groups_ = coupled_row_groups(coupling_, links);
   group_jacobians_.resize(link_groups_.size());
   group_lus_.resize(link_groups_.size());
-  hard_laws_.assign(static_cast<std::size_t>(links.size()), nullptr);
-  hard_frictions_.assign(static_cast<std::size_t>(links.size()), nullptr);
-  for (Index k = 0; k < links.count(); ++k) {
-    hard_laws_[static_cast<std::size_t>(links.row(k))] = links.hard_contact(k);
-    if (links::CoulombFriction* friction = links.hard_friction(k))
-      hard_frictions_[static_cast<std::size_t>(links.row(k) + 1)] = friction;
-  }
+  LinkSet::HardRows hard_rows = links.hard_rows();
+  hard_laws_ = std::move(hard_rows.contacts);
+  hard_frictions_ = std::move(hard_rows.frictions);
   hard_groups_.clear();
   for (const std::vector<Index>& group : link_groups_) {
     std::vector<Index> hard;

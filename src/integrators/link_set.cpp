@@ -142,6 +142,19 @@ std::vector<char> LinkSet::impulsive_hard_contact_rows(const Vector* lumped_mass
   return rows;
 }
 
+LinkSet::HardRows LinkSet::hard_rows() {
+  HardRows hard{std::vector<links::HardContact*>(static_cast<std::size_t>(size()), nullptr),
+                std::vector<links::CoulombFriction*>(static_cast<std::size_t>(size()), nullptr)};
+  for (Index k = 0; k < count(); ++k) {
+    const auto row = static_cast<std::size_t>(first_row_[static_cast<std::size_t>(k)]);
+    hard.contacts[row] = hard_contact(k);
+    const Link& link = links_[static_cast<std::size_t>(k)];
+    if (link.friction && link.friction->hard_contact())
+      hard.frictions[row + 1] = link.friction.get();
+  }
+  return hard;
+}
+
 const links::LinkLaw& LinkSet::law(Index link) const {
   const Link& entry = links_[static_cast<std::size_t>(link)];
   return entry.friction ? entry.friction->normal_law() : *entry.law;

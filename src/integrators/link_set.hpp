@@ -75,11 +75,14 @@ class LinkSet {
     const Link& entry = links_[static_cast<std::size_t>(link)];
     return entry.friction ? entry.friction->hard_contact() : entry.law->hard_contact();
   }
-  // The friction of a hard contact, whose tangential force is a constraint's too; none else.
-  links::CoulombFriction* hard_friction(Index link) {
-    const Link& entry = links_[static_cast<std::size_t>(link)];
-    return entry.friction && entry.friction->hard_contact() ? entry.friction.get() : nullptr;
-  }
+  // The constraints by row, for the integrators that find their forces: a hard contact on its
+  // normal row, its friction (whose tangential force is a constraint's too) on its tangential
+  // row; nullptr on every other row.
+  struct HardRows {
+    std::vector<links::HardContact*> contacts;
+    std::vector<links::CoulombFriction*> frictions;
+  };
+  HardRows hard_rows();
   // 1 on the rows of hard contacts between masses (with friction, both rows of the link), by
   // row: every DOF of the link's rows carries mass
   // (`lumped_mass`; none: a consistent mass, which every DOF carries). Such a contact's force is

@@ -5,6 +5,7 @@
 #include <Eigen/LU>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "core/errors.hpp"
 #include "links/hard_contact.hpp"
@@ -146,19 +147,17 @@ void Newmark::initialize(SecondOrderSystem& system, State& state, double /*first
     state.link_penetration += offset;
     rate += offset_rate;
   }
-  hard_laws_.assign(static_cast<std::size_t>(links.size()), nullptr);
-  hard_frictions_.assign(static_cast<std::size_t>(links.size()), nullptr);
+  LinkSet::HardRows hard_rows = links.hard_rows();
+  hard_laws_ = std::move(hard_rows.contacts);
+  hard_frictions_ = std::move(hard_rows.frictions);
   has_hard_contacts_ = false;
-  for (Index k = 0; k < links.count(); ++k)
-    if (links::HardContact* hard = links.hard_contact(k)) {
-      hard_laws_[static_cast<std::size_t>(links.row(k))] = hard;
-      hard->impose(0.0);
+  for (std::size_t r = 0; r < hard_laws_.size(); ++r) {
+    if (hard_laws_[r]) {
+      hard_laws_[r]->impose(0.0);
       has_hard_contacts_ = true;
-      if (links::CoulombFriction* friction = links.hard_friction(k)) {
-        hard_frictions_[static_cast<std::size_t>(links.row(k) + 1)] = friction;
-        friction->impose_tangential(0.0, false);
-      }
     }
+    if (hard_frictions_[r]) hard_frictions_[r]->impose_tangential(0.0, false);
+  }
   hard_pressing_.assign(static_cast<std::size_t>(links.size()), 0);
   hard_slip_.assign(static_cast<std::size_t>(links.size()), 0.0);
   if (has_hard_contacts_) {

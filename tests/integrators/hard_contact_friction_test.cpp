@@ -19,8 +19,8 @@
 namespace pound {
 namespace {
 
+using testing::FreeMassPair;
 using testing::hard_contact_on_the_ground;
-using testing::PointMass;
 
 struct Method {
   std::string name;
@@ -60,7 +60,7 @@ TEST(HardContactFriction, BlockSlidesToRestWhereMuGSays) {
   const double mass = 10.0, speed = 2.0, mu = 0.5, dt = 1e-3;
   const double stop = speed * speed / (2.0 * mu * kGravity);
   for (const Method& method : methods()) {
-    PointMass system(mass, hard_contact_on_the_ground(0.0, 0.0, mu), [&](double) {
+    FreeMassPair system(mass, mass, hard_contact_on_the_ground(0.0, 0.0, mu), [&](double) {
       return Vector{{0.0, -mass * kGravity}};
     });
     std::unique_ptr<integrators::Integrator> integrator = method.make();
@@ -96,7 +96,7 @@ TEST(HardContactFriction, PushedBlockSticksThenSlips) {
   const double mass = 10.0, mu = 0.5, dt = 1e-3, rate = 98.1;  // t_s = 0.5
   const double start = mu * mass * kGravity / rate, end = 1.0;
   for (const Method& method : methods()) {
-    PointMass system(mass, hard_contact_on_the_ground(0.0, 0.0, mu), [&](double t) {
+    FreeMassPair system(mass, mass, hard_contact_on_the_ground(0.0, 0.0, mu), [&](double t) {
       return Vector{{rate * t, -mass * kGravity}};
     });
     std::unique_ptr<integrators::Integrator> integrator = method.make();
@@ -133,7 +133,8 @@ TEST(HardContactFriction, ObliqueImpactGivesRouthsSolution) {
     for (const double e : {0.0, 0.5})
       for (const double mu : {0.1, 0.6})
         for (const double phase : {0.0, 0.3, 0.7}) {
-          PointMass system(mass, hard_contact_on_the_ground(normal * dt * (2.0 + phase), e, mu));
+          FreeMassPair system(mass, mass,
+                              hard_contact_on_the_ground(normal * dt * (2.0 + phase), e, mu));
           std::unique_ptr<integrators::Integrator> integrator = method.make();
           integrators::TransientAnalysis analysis(system, *integrator,
                                                   {.time_step = dt, .end_time = 12.0 * dt});

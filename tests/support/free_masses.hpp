@@ -1,7 +1,7 @@
 #pragma once
 // Two free masses (no springs) joined by link rows, for testing impacts between bodies with any
-// integrator without a model; a single hard-contact row; a point mass in a plane under a load
-// with a hard contact and Coulomb friction against the ground.
+// integrator without a model (or one point mass's x and y, under a load); a single hard-contact
+// row; a hard contact with Coulomb friction between such a point mass and the ground.
 #include <functional>
 #include <memory>
 #include <utility>
@@ -15,16 +15,20 @@ namespace pound::testing {
 
 class FreeMassPair final : public integrators::SecondOrderSystem {
  public:
-  FreeMassPair(double mass_0, double mass_1, integrators::LinkSet links)
-      : mass_(Vector{{mass_0, mass_1}}), links_(std::move(links)) {}
+  // load(t): the two DOFs' external forces; none without it.
+  FreeMassPair(double mass_0, double mass_1, integrators::LinkSet links,
+               std::function<Vector(double)> load = {})
+      : mass_(Vector{{mass_0, mass_1}}), links_(std::move(links)), load_(std::move(load)) {}
   Index size() const override { return 2; }
   void multiply_mass(const Vector& x, Vector& y) const override { y = mass_.cwiseProduct(x); }
   const Vector* lumped_mass() const override { return &mass_; }
   bool has_damping() const override { return false; }
   void multiply_damping(const Vector& x, Vector& y) const override { y.setZero(x.size()); }
   void multiply_stiffness(const Vector& x, Vector& y) const override { y.setZero(x.size()); }
-  bool has_external_force() const override { return false; }
-  void external_force(double, Vector& force) const override { force.setZero(2); }
+  bool has_external_force() const override { return static_cast<bool>(load_); }
+  void external_force(double time, Vector& force) const override {
+    force = load_ ? load_(time) : Vector::Zero(2);
+  }
   // c_m M: no stiffness or damping to add.
   std::unique_ptr<integrators::LinearSolver> factor(double c_m, double, double) const override {
     return std::make_unique<Diagonal>(c_m * mass_);
@@ -41,6 +45,7 @@ class FreeMassPair final : public integrators::SecondOrderSystem {
   };
   Vector mass_;
   integrators::LinkSet links_;
+  std::function<Vector(double)> load_;
 };
 
 // One hard-contact link on the row `row` (B u - gap).
@@ -51,34 +56,8 @@ inline integrators::LinkSet hard_contact_row(std::vector<integrators::LinkSet::T
   return integrators::LinkSet(static_cast<Index>(row.size()), {row}, {gap}, std::move(laws));
 }
 
-// A point mass m in the plane (DOFs x, y) under a load f(t) and its links.
-class PointMass final : public integrators::SecondOrderSystem {
- public:
-  PointMass(
-      double mass, integrators::LinkSet links,
-      std::function<Vector(double)> load = [](double) { return Vector::Zero(2); })
-      : mass_(Vector::Constant(2, mass)), links_(std::move(links)), load_(std::move(load)) {}
-  Index size() const override { return 2; }
-  void multiply_mass(const Vector& x, Vector& y) const override { y = mass_.cwiseProduct(x); }
-  const Vector* lumped_mass() const override { return &mass_; }
-  bool has_damping() const override { return false; }
-  void multiply_damping(const Vector& x, Vector& y) const override { y.setZero(x.size()); }
-  void multiply_stiffness(const Vector& x, Vector& y) const override { y.setZero(x.size()); }
-  bool has_external_force() const override { return true; }
-  void external_force(double time, Vector& force) const override { force = load_(time); }
-  std::unique_ptr<integrators::LinearSolver> factor(double c_m, double, double) const override {
-    return FreeMassPair(mass_[0], mass_[1], integrators::LinkSet(2)).factor(c_m, 0.0, 0.0);
-  }
-  integrators::LinkSet& links() override { return links_; }
-
- private:
-  Vector mass_;
-  integrators::LinkSet links_;
-  std::function<Vector(double)> load_;
-};
-
-// A hard contact of the point mass with the ground at y = -gap (penetration -y - gap), with
-// Coulomb friction mu along x (slide x).
+// A hard contact of a point mass (DOFs x, y) with the ground at y = -gap (penetration -y - gap),
+// with Coulomb friction mu along x (slide x).
 inline integrators::LinkSet hard_contact_on_the_ground(double gap, double restitution,
                                                        double coefficient) {
   std::vector<integrators::LinkSet::Link> links(1);
