@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages pound builds with, skipping those already present.
 set -euo pipefail
+# libboost-program-options-dev brings Boost's headers too (Graph: reverse Cuthill-McKee ordering).
 packages=(g++ cmake ninja-build libeigen3-dev libboost-program-options-dev libfmt-dev
           nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev python3-matplotlib
           libboost-mpi-dev openmpi-bin libopenmpi-dev  # pound batch under mpirun

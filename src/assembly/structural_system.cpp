@@ -8,6 +8,7 @@
 #include <cmath>
 #include <map>
 
+#include "assembly/band_ordering.hpp"
 #include "assembly/banded_ldlt.hpp"
 #include "assembly/not_positive_definite.hpp"
 #include "assembly/twisted_tridiagonal.hpp"
@@ -15,6 +16,10 @@
 
 namespace pound::assembly {
 namespace {
+
+// Bands up to kUnrolledBand have their substitution unrolled (BandedLdlt::substitute); up to
+// kBandedLimit a band LDL^T beats the general sparse one.
+constexpr Index kUnrolledBand = 8, kBandedLimit = 32;
 
 template <typename Factor>
 class FactorSolver final : public integrators::LinearSolver {
@@ -24,6 +29,40 @@ class FactorSolver final : public integrators::LinearSolver {
 
  private:
   Factor factor_;
+};
+
+// A band made narrow by renumbering: LDL^T of P A P^T, the right-hand side and solution permuted
+// on the way in and out.
+class PermutedBandSolver final : public integrators::LinearSolver {
+ public:
+  PermutedBandSolver(const Eigen::SparseMatrix<double>& permuted_matrix, std::vector<Index> order)
+      : factor_(factor(permuted_matrix, order)),
+        order_(std::move(order)),
+        permuted_rhs_(permuted_matrix.rows()),
+        permuted_solution_(permuted_matrix.rows()) {}
+  void solve(const Vector& rhs, Vector& solution) const override {
+    const Index n = permuted_rhs_.size();
+    for (Index k = 0; k < n; ++k) permuted_rhs_[k] = rhs[order_[static_cast<std::size_t>(k)]];
+    factor_.solve(permuted_rhs_, permuted_solution_);
+    solution.resize(n);
+    for (Index k = 0; k < n; ++k)
+      solution[order_[static_cast<std::size_t>(k)]] = permuted_solution_[k];
+  }
+
+ private:
+  // A pivot that is not positive names the model's equation, not its place in the new order.
+  static BandedLdlt factor(const Eigen::SparseMatrix<double>& matrix,
+                           const std::vector<Index>& order) {
+    try {
+      return BandedLdlt(matrix);
+    } catch (const NotPositiveDefinite& failure) {
+      throw NotPositiveDefinite(order[static_cast<std::size_t>(failure.equation())],
+                                failure.pivot());
+    }
+  }
+  BandedLdlt factor_;
+  std::vector<Index> order_;
+  mutable Vector permuted_rhs_, permuted_solution_;
 };
 
 // Wide bands (unlucky numbering) go to a general sparse LDL^T with fill-reducing ordering.
@@ -680,25 +719,46 @@ void StructuralSystem::external_force(double time, Vector& force) const {
   }
 }
 
-std::unique_ptr<integrators::LinearSolver> StructuralSystem::factor(double c_m, double c_c,
-                                                                    double c_k) const {
-  Eigen::SparseMatrix<double> effective;
-  if (damping_matrix_.size() > 0) {
-    effective = c_k * stiffness_ + c_m * mass_matrix() + c_c * damping_matrix_;
-  } else {
-    // c_m M + c_c (a0 M + a1 K) + c_k K
-    const double mass_factor = c_m + c_c * damping_.mass_coefficient;
-    const double stiffness_factor = c_k + c_c * damping_.stiffness_coefficient;
-    effective = stiffness_factor * stiffness_ + mass_factor * mass_matrix();
-    if (elastic_stiffness_.size() > 0)  // a1 K of the damping is the first-order K
-      effective = c_k * stiffness_ + (c_c * damping_.stiffness_coefficient) * elastic_stiffness_ +
-                  mass_factor * mass_matrix();
-  }
+Eigen::SparseMatrix<double> StructuralSystem::effective_matrix(double c_m, double c_c,
+                                                               double c_k) const {
+  if (damping_matrix_.size() > 0)
+    return c_k * stiffness_ + c_m * mass_matrix() + c_c * damping_matrix_;
+  // c_m M + c_c (a0 M + a1 K) + c_k K
+  const double mass_factor = c_m + c_c * damping_.mass_coefficient;
+  const double stiffness_factor = c_k + c_c * damping_.stiffness_coefficient;
+  if (elastic_stiffness_.size() > 0)  // a1 K of the damping is the first-order K
+    return c_k * stiffness_ + (c_c * damping_.stiffness_coefficient) * elastic_stiffness_ +
+           mass_factor * mass_matrix();
+  return stiffness_factor * stiffness_ + mass_factor * mass_matrix();
+}
+
+std::unique_ptr<integrators::LinearSolver> StructuralSystem::factor_matrix(
+    Eigen::SparseMatrix<double> effective) {
   effective.prune(0.0);
   const Index bandwidth = BandedLdlt::bandwidth_of(effective);
   if (bandwidth <= 1) return std::make_unique<FactorSolver<TwistedTridiagonal>>(effective);
-  if (bandwidth <= 32) return std::make_unique<FactorSolver<BandedLdlt>>(effective);
+  if (bandwidth <= kUnrolledBand) return std::make_unique<FactorSolver<BandedLdlt>>(effective);
+  // Past the bands whose substitution is unrolled, a renumbering may narrow it.
+  std::vector<Index> order = reverse_cuthill_mckee(effective);
+  Eigen::SparseMatrix<double> renumbered = permuted(effective, order);
+  if (const Index narrowed = BandedLdlt::bandwidth_of(renumbered);
+      narrowed < bandwidth && narrowed <= kBandedLimit)
+    return std::make_unique<PermutedBandSolver>(renumbered, std::move(order));
+  if (bandwidth <= kBandedLimit) return std::make_unique<FactorSolver<BandedLdlt>>(effective);
   return std::make_unique<SparseSolver>(effective);
+}
+
+std::unique_ptr<integrators::LinearSolver> StructuralSystem::factor(double c_m, double c_c,
+                                                                    double c_k) const {
+  return factor_matrix(effective_matrix(c_m, c_c, c_k));
+}
+
+std::unique_ptr<integrators::LinearSolver> StructuralSystem::factor_with_links(
+    double c_m, double c_c, double c_k, const Vector& link_stiffness) const {
+  const auto& connectivity = links_.connectivity();
+  const Eigen::SparseMatrix<double> folded =
+      connectivity.transpose() * link_stiffness.asDiagonal() * connectivity;
+  return factor_matrix(effective_matrix(c_m, c_c, c_k) + folded);
 }
 
 Vector StructuralSystem::initial_velocity(const model::Model& model) const {

@@ -35,6 +35,8 @@ class StructuralSystem final : public integrators::SecondOrderSystem {
   void external_force(double time, Vector& force) const override;
   std::unique_ptr<integrators::LinearSolver> factor(double c_m, double c_c,
                                                     double c_k) const override;
+  std::unique_ptr<integrators::LinearSolver> factor_with_links(
+      double c_m, double c_c, double c_k, const Vector& link_stiffness) const override;
   integrators::LinkSet& links() override { return links_; }
   const integrators::LinkSet& links() const { return links_; }
 
@@ -102,6 +104,10 @@ class StructuralSystem final : public integrators::SecondOrderSystem {
   Eigen::SparseMatrix<double, Eigen::RowMajor> stiffness_rows_;
   // Keeps stiffness_ for K x: by diagonals or by rows, as above.
   void store_stiffness_for_products();
+  // c_m M + c_c C + c_k K, and its factors (banded, tridiagonal or sparse by its band).
+  Eigen::SparseMatrix<double> effective_matrix(double c_m, double c_c, double c_k) const;
+  static std::unique_ptr<integrators::LinearSolver> factor_matrix(
+      Eigen::SparseMatrix<double> effective);
   integrators::LinkSet links_;
 };
 

@@ -77,6 +77,26 @@ void LinkSet::set_trial_mass(const Vector& delta, const Vector& rate, const Vect
       mass_tangent);
 }
 
+LinkSet::RowDerivatives LinkSet::row_derivatives(const Vector& delta, const Vector& rate,
+                                                 const Vector& acceleration) {
+  RowDerivatives derivatives;
+  Vector force;
+  Matrix tangent;
+  evaluate(
+      delta, rate, acceleration, [](const links::LawResponse& r) { return r.stiffness; }, force,
+      tangent);
+  derivatives.stiffness = tangent.diagonal();
+  evaluate(
+      delta, rate, acceleration, [](const links::LawResponse& r) { return r.damping; }, force,
+      tangent);
+  derivatives.damping = tangent.diagonal();
+  evaluate(
+      delta, rate, acceleration, [](const links::LawResponse& r) { return r.mass; }, force,
+      tangent);
+  derivatives.mass = tangent.diagonal();
+  return derivatives;
+}
+
 template <typename Total>
 void LinkSet::evaluate(const Vector& delta, const Vector& rate, const Vector& acceleration,
                        Total total, Vector& force, Matrix& tangent) {

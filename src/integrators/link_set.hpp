@@ -63,6 +63,13 @@ class LinkSet {
   // its forces depend on the accelerations only through them.
   void set_trial_mass(const Vector& delta, const Vector& rate, const Vector& acceleration,
                       Vector& force, Matrix& mass_tangent);
+  // Each row's derivatives of its own force (the diagonal of set_trial's tangent, by kind) at a
+  // trial state, which it sets.
+  struct RowDerivatives {
+    Vector stiffness, damping, mass;
+  };
+  RowDerivatives row_derivatives(const Vector& delta, const Vector& rate,
+                                 const Vector& acceleration);
   void commit();
   void revert();
   // Friction links: CoulombFriction::anchor_at_rest with their committed tangential forces.

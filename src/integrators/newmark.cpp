@@ -131,6 +131,7 @@ std::string Newmark::name() const {
 
 void Newmark::initialize(SecondOrderSystem& system, State& state, double /*first_step*/) {
   factorizations_.by_step.clear();
+  linear_part_checked_ = false;
   mass_solver_.solver.reset();
   factorizations_.uses.clear();
   const Index n = system.size();
@@ -147,6 +148,7 @@ void Newmark::initialize(SecondOrderSystem& system, State& state, double /*first
     state.link_penetration += offset;
     rate += offset_rate;
   }
+  gaps_ = &links.gaps();
   LinkSet::HardRows hard_rows = links.hard_rows();
   hard_laws_ = std::move(hard_rows.contacts);
   hard_frictions_ = std::move(hard_rows.frictions);
@@ -168,6 +170,7 @@ void Newmark::initialize(SecondOrderSystem& system, State& state, double /*first
                          "a hard contact pushes a massless DOF, to which an implicit step cannot "
                          "give its impulse");
   }
+  set_folding_references(links, state.link_penetration, rate);
   links.set_trial(state.link_penetration, rate, zero, 0.0, 0.0, state.link_force, tangent);
   links.commit();
 
@@ -191,6 +194,38 @@ void Newmark::initialize(SecondOrderSystem& system, State& state, double /*first
   }
 }
 
+void Newmark::set_folding_references(LinkSet& links, const Vector& delta, const Vector& rate) {
+  LinkSet::RowDerivatives reference =
+      links.row_derivatives(delta, rate, Vector::Zero(links.size()));
+  for (Index k = 0; k < links.count(); ++k) {
+    const Index row = links.row(k);
+    // A contact's force is a constraint's, a friction link's tangent a 2 x 2 block.
+    if (hard_laws_[static_cast<std::size_t>(row)] || links.has_friction(k)) {
+      for (Index r = row; r < row + (links.has_friction(k) ? 2 : 1); ++r)
+        reference.stiffness[r] = reference.damping[r] = reference.mass[r] = 0.0;
+    }
+  }
+  reference_stiffness_ = std::move(reference.stiffness);
+  reference_damping_ = std::move(reference.damping);
+  reference_mass_ = std::move(reference.mass);
+}
+
+Vector Newmark::folded_stiffness(double dt) const {
+  // The factors evaluate_links gives the laws, so a linear row's tangent is K_r to the bit.
+  const double c_m = 1.0 / (beta_ * dt * dt), c_c = gamma_ / (beta_ * dt);
+  Vector stiffness = Vector::Zero(reference_stiffness_.size());
+  bool any = false;
+  for (Index r = 0; r < stiffness.size(); ++r) {
+    const double k =
+        reference_stiffness_[r] + reference_damping_[r] * c_c + reference_mass_[r] * c_m;
+    if (k > 0.0 && std::isfinite(k)) {
+      stiffness[r] = k;
+      any = true;
+    }
+  }
+  return any ? stiffness : Vector();
+}
+
 const Newmark::Factorization& Newmark::factorization(SecondOrderSystem& system, double dt) {
   ++factorizations_.uses[dt];
   auto found = factorizations_.by_step.find(dt);
@@ -209,7 +244,24 @@ const Newmark::Factorization& Newmark::factorization(SecondOrderSystem& system, 
   const double c_c = gamma_ / (beta_ * dt);
   Factorization f;
   f.id = ++factorization_count_;
-  f.solver = system.factor(c_m, system.has_damping() ? c_c : 0.0, 1.0);
+  const double damping_factor = system.has_damping() ? c_c : 0.0;
+  // Not with hard contacts: a contact is constrained for the step from the first iterate on which
+  // it penetrates, so its result would depend on where the iteration starts.
+  if (!general_correction_ && !has_hard_contacts_) f.folded_stiffness = folded_stiffness(dt);
+  if (f.folded_stiffness.size() > 0) {
+    // A DOF without mass that only links hold is refused as it is without folding (the builder
+    // names it: a mechanism without mass); whether it is does not depend on dt.
+    if (!linear_part_checked_) system.factor(c_m, damping_factor, 1.0);
+    linear_part_checked_ = true;
+    f.solver = system.factor_with_links(c_m, damping_factor, 1.0, f.folded_stiffness);
+  }
+  if (f.solver) {
+    for (Index r = 0; r < f.folded_stiffness.size(); ++r)
+      if (f.folded_stiffness[r] != 0.0) f.folded_rows.push_back(r);
+  } else {
+    f.folded_stiffness.resize(0);
+    f.solver = system.factor(c_m, damping_factor, 1.0);
+  }
   const LinkSet& links = system.links();
   const Index n = system.size(), m = links.size();
   f.influence.resize(n, m);
@@ -239,6 +291,7 @@ StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double
   if (system.links().size() > 0) {
     predict_links(system, to);
     if (has_hard_contacts_) bound_hard_contacts(system, from, c_c);
+    start_folded_rows(system, f, from);
     if (!solve_link_forces(system, f, c_m, c_c, external_norm, result)) return result;
     apply_link_forces(f, to);
   } else {
@@ -347,7 +400,6 @@ void Newmark::predict_links(SecondOrderSystem& system, const State& to) {
 bool Newmark::solve_link_forces(SecondOrderSystem& system, const Factorization& f, double c_m,
                                 double c_c, double external_norm, StepResult& result) {
   LinkSet& links = system.links();
-  assumed_force_ = Vector::Zero(links.size());
   for (int iteration = 0;; ++iteration) {
     evaluate_links(links, f, c_m, c_c);
     if (!residual_.allFinite() || !law_force_.allFinite()) {
@@ -355,7 +407,7 @@ bool Newmark::solve_link_forces(SecondOrderSystem& system, const Factorization& 
       return false;
     }
     result.unbalanced_force = links.nodal_norm(residual_);
-    const double reference = std::max(external_norm, links.nodal_norm(law_force_));
+    const double reference = std::max(external_norm, law_force_norm_);
     if (result.unbalanced_force <= test_.relative_tolerance * reference + test_.absolute_tolerance)
       return true;
     if (iteration == test_.max_iterations) {
@@ -470,7 +522,31 @@ void Newmark::evaluate_links(LinkSet& links, const Factorization& f, double c_m,
   if (links_move_) acceleration_ += link_offset_acceleration_;
   links.set_trial(delta_, rate_, acceleration_, c_c, c_m, law_force_, tangent_);
   if (has_hard_contacts_) evaluate_hard_contacts(f);
+  law_force_norm_ = links.nodal_norm(law_force_);
+  for (const Index r : f.folded_rows) {
+    law_force_[r] -= f.folded_stiffness[r] * folded_projection(r);
+    tangent_(r, r) -= f.folded_stiffness[r];
+  }
   residual_ = assumed_force_ - law_force_;
+}
+
+double Newmark::folded_projection(Index row) const {
+  // (B u)_r = delta_r + gap_r - s_r(t)
+  const double projection = delta_[row] + gaps_->coeff(row);
+  return links_move_ ? projection - link_offset_[row] : projection;
+}
+
+void Newmark::start_folded_rows(SecondOrderSystem& system, const Factorization& f,
+                                const State& from) {
+  assumed_force_.setZero(system.links().size());
+  if (f.folded_rows.empty()) return;
+  if (links_move_)
+    system.link_motion(from.time, start_offset_, start_offset_rate_, start_offset_acceleration_);
+  for (const Index r : f.folded_rows) {
+    double projection = from.link_penetration[r] + gaps_->coeff(r);
+    if (links_move_) projection -= start_offset_[r];
+    assumed_force_[r] = from.link_force[r] - f.folded_stiffness[r] * projection;
+  }
 }
 
 void Newmark::bound_hard_contacts(SecondOrderSystem& system, const State& from, double c_c) {
@@ -596,6 +672,8 @@ void Newmark::apply_link_forces(const Factorization& f, State& to) const {
     if (assumed_force_[k] != 0.0) to.displacement -= assumed_force_[k] * f.influence.col(k);
   to.link_penetration = delta_;
   to.link_force = assumed_force_;
+  for (const Index r : f.folded_rows)
+    to.link_force[r] += f.folded_stiffness[r] * folded_projection(r);
 }
 
 }  // namespace pound::integrators

@@ -31,6 +31,15 @@
 // (Alart & Curnier's semismooth form, evaluate_hard_friction): sticking, no slide over the step
 // (a zero slide rate at t_{n+1} when the contact slipped or was open before); slipping,
 // F_t = mu F_n against the slide; its force is an impulse of its step like the normal one.
+//
+// Link rows that carry a force from the start on a linear branch (bearings, springs, hinges:
+// stiffness K_r = dF/d(delta) + c_c dF/d(delta_dot) + c_m dF/d(delta_ddot) at the initial state)
+// are folded into the factored matrix, A + B^T K B, whose unknown on such a row is then
+// F - K_r (B u)_r: constant while the law stays on that branch, so the row has no tangent and a
+// step in which no link leaves its branch (and no contact is closed) converges with no Newton
+// iteration, from the last step's value. Newton's method is invariant under this affine change
+// of the unknowns: the iterates are those of the unfolded iteration but for the start. Not with
+// hard contacts (their active set depends on the iterates).
 #include <Eigen/LU>
 #include <map>
 #include <vector>
@@ -72,8 +81,9 @@ class Newmark final : public Integrator {
   StepResult advance(SecondOrderSystem& system, const State& from, double dt, State& to) override;
 
   // The general path of the Newton correction: I + T G over every link row, factored at every
-  // iteration. Off by default (the active rows only, factors kept while their tangents stay);
-  // on, to verify that the fast path gives the same results.
+  // iteration, no link row folded into the linear part. Off by default (linear rows folded, the
+  // active rows only, factors kept while their tangents stay); on, to verify that the fast path
+  // gives the same results.
   void set_general_correction(bool general) { general_correction_ = general; }
 
   double beta() const { return beta_; }
@@ -89,7 +99,12 @@ class Newmark final : public Integrator {
     Matrix influence;  // Z = A^{-1} B^T (n x m)
     Matrix coupling;   // G = B Z (m x m)
     long id = 0;       // serial number, for the link system factored with it
+    // K_r of the rows folded into the factored matrix (none: empty), and those rows.
+    Vector folded_stiffness;
+    std::vector<Index> folded_rows;
   };
+  // K_r of every row for this step (zero where the row is not folded), from the references.
+  Vector folded_stiffness(double dt) const;
   const Factorization& factorization(SecondOrderSystem& system, double dt);
 
   // The steps of advance(), c_m = 1 / (beta dt^2) and c_c = gamma / (beta dt).
@@ -112,11 +127,17 @@ class Newmark final : public Integrator {
   void evaluate_links(LinkSet& links, const Factorization& f, double c_m, double c_c);
   // u_{n+1} = u_lin - Z F and the link state of `to`.
   void apply_link_forces(const Factorization& f, State& to) const;
+  // (B u)_r of a folded row from its deformation at the current iterate.
+  double folded_projection(Index row) const;
+  // The folded rows' unknowns at t_n, F - K_r (B u)_r: the start of the iteration.
+  void start_folded_rows(SecondOrderSystem& system, const Factorization& f, const State& from);
   // The hard contacts' rows of the iteration: law force F + s (delta - bound) and tangent s
   // (pressing), or 0.
   void evaluate_hard_contacts(const Factorization& f);
   // A hard contact's friction row t (its normal row t - 1): stick or slip, law force, tangent.
   void evaluate_hard_friction(const Factorization& f, Index t);
+  // The rows' derivatives at the initial state, zero on the rows that are not folded.
+  void set_folding_references(LinkSet& links, const Vector& delta, const Vector& rate);
   // Each hard contact's bound for this step, from its state at t_n.
   void bound_hard_contacts(SecondOrderSystem& system, const State& from, double c_c);
   // a_{n+1} without the hard contacts' forces, their state force the step's impulse / dt.
@@ -146,6 +167,11 @@ class Newmark final : public Integrator {
   Vector history_;
   Vector delta_linear_, delta_predicted_, rate_predicted_;
   Vector delta_, rate_, acceleration_, assumed_force_, law_force_, residual_, correction_;
+  double law_force_norm_ = 0.0;  // ||B^T F_law|| of the whole law forces, folded rows' too
+  // dF/d(delta), dF/d(delta_dot), dF/d(delta_ddot) of each row at the initial state, on the rows
+  // that may be folded (a force law's, not a contact's nor a friction link's), zero elsewhere.
+  Vector reference_stiffness_, reference_damping_, reference_mass_;
+  bool linear_part_checked_ = false;  // c_m M + c_c C + K factored alone once, when folding
   Matrix tangent_, jacobian_;
   Eigen::PartialPivLU<Matrix> jacobian_lu_;
   bool general_correction_ = false;
@@ -159,6 +185,8 @@ class Newmark final : public Integrator {
   Vector reduced_residual_, reduced_correction_;
   Vector link_offset_, link_offset_rate_, link_offset_acceleration_;
   bool links_move_ = false;  // this step's links see the supports' motion (predict_links)
+  Vector start_offset_, start_offset_rate_, start_offset_acceleration_;  // the supports' at t_n
+  const Vector* gaps_ = nullptr;                                         // of the system's links
   // Hard contacts: their laws by row (nullptr for a force law's row), found at initialize(), and
   // which of them press (delta = 0 enforced) at the current iterate.
   std::vector<links::HardContact*> hard_laws_;

@@ -70,6 +70,15 @@ class SecondOrderSystem {
 
   // Factors c_m M + c_c C + c_k K (every coefficient >= 0, the result positive definite).
   virtual std::unique_ptr<LinearSolver> factor(double c_m, double c_c, double c_k) const = 0;
+  // Factors c_m M + c_c C + c_k K + B^T diag(link_stiffness) B with the links' B: stiffnesses
+  // of link rows that an implicit integrator folds into the linear part, so that a link that
+  // stays on a linear branch needs no Newton iteration. nullptr when the system cannot (the
+  // default; the integrator then iterates on every link row).
+  virtual std::unique_ptr<LinearSolver> factor_with_links(double /*c_m*/, double /*c_c*/,
+                                                          double /*c_k*/,
+                                                          const Vector& /*link_stiffness*/) const {
+    return nullptr;
+  }
 
   virtual LinkSet& links() = 0;
 

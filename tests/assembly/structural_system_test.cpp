@@ -10,6 +10,7 @@
 #include <random>
 #include <string>
 
+#include "assembly/band_ordering.hpp"
 #include "assembly/banded_ldlt.hpp"
 #include "assembly/beam.hpp"
 #include "assembly/truss.hpp"
@@ -208,7 +209,8 @@ TEST(StructuralSystem, LinkRowsCarryTheAxisWithOppositeSigns) {
 
 TEST(StructuralSystem, FactorSolvesTheEffectiveMatrix) {
   // A chain (tridiagonal), a plane truss (band 3) and a chain closed by an element from its first
-  // to its last node (band 38): each kind of factor StructuralSystem chooses.
+  // to its last node (band 38, renumbered to a band of 2): each kind of factor StructuralSystem
+  // chooses.
   model::Model ring;
   ring.dimension = 1;
   for (int i = 0; i < 40; ++i) ring.nodes.push_back({fmt::format("r{}", i), {1.0 * i, 0.0}});
@@ -224,7 +226,8 @@ TEST(StructuralSystem, FactorSolvesTheEffectiveMatrix) {
 
   const model::Model models[] = {chain(), plane, ring};
   const char* names[] = {"chain", "plane truss", "closed chain"};
-  const Index bands[] = {1, 3, 38};  // twisted tridiagonal, banded LDL^T, sparse LDL^T
+  // Twisted tridiagonal, banded LDL^T, banded LDL^T in reverse Cuthill-McKee order.
+  const Index bands[] = {1, 3, 38};
   for (int k = 0; k < 3; ++k) {
     const StructuralSystem system(models[k]);
     EXPECT_EQ(BandedLdlt::bandwidth_of(system.stiffness()), bands[k]) << names[k];
@@ -290,6 +293,39 @@ std::vector<Vector> rigid_motions(const model::Model& m, const model::DofMap& do
       }
   }
   return motions;
+}
+
+// Link rows folded into the factored matrix (integrators/newmark.hpp): factor_with_links solves
+// c_m M + c_k K + B^T D B, here with links between nodes of a chain apart, one joining its ends
+// (band 38), which the reverse Cuthill-McKee order brings back to a band of 2.
+TEST(StructuralSystem, FactorWithLinksSolvesTheMatrixWithTheLinksFolded) {
+  model::Model m;
+  m.dimension = 1;
+  for (int i = 0; i < 40; ++i) m.nodes.push_back({fmt::format("r{}", i), {1.0 * i, 0.0}});
+  for (Index i = 0; i + 1 < 40; ++i) m.elements.push_back(truss(m, i, i + 1, 100.0, 1.0, 0.1));
+  m.supports = {{.node = 20, .fixed = {true, false}}};
+  m.links = {link(0, 2, {1.0, 0.0}), link(5, 8, {1.0, 0.0}), link(0, 39, {1.0, 0.0}),
+             link(10, 11, {1.0, 0.0})};
+  const StructuralSystem system(m);
+  const Matrix connectivity(system.links().connectivity());
+  const Vector folded{{3.0e3, 0.0, 5.0e2, 7.0}};  // a row not folded: 0
+  const double c_m = 4.0e4, c_k = 1.0;
+  const Matrix effective = c_m * Matrix(system.lumped_mass()->asDiagonal()) +
+                           c_k * Matrix(system.stiffness()) +
+                           connectivity.transpose() * folded.asDiagonal() * connectivity;
+  const Eigen::SparseMatrix<double> sparse = effective.sparseView();
+  const std::vector<Index> order = reverse_cuthill_mckee(sparse);
+  const Index renumbered = BandedLdlt::bandwidth_of(permuted(sparse, order));
+  const Vector rhs = random_vector(system.size(), 7);
+  Vector x;
+  system.factor_with_links(c_m, 0.0, c_k, folded)->solve(rhs, x);
+  const Vector expected = effective.llt().solve(rhs);
+  const double error = (x - expected).norm() / expected.norm();
+  std::cout << "band " << BandedLdlt::bandwidth_of(sparse) << ", renumbered " << renumbered
+            << ": relative error " << error << "\n";
+  EXPECT_EQ(BandedLdlt::bandwidth_of(sparse), 38);
+  EXPECT_LE(renumbered, 3);
+  EXPECT_LE(error, 1e-12);
 }
 
 TEST(StructuralSystem, AssemblyLosesNothing) {

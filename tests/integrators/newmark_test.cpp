@@ -4,11 +4,18 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <iostream>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "integrators/transient_analysis.hpp"
+#include "links/bilinear_spring.hpp"
+#include "links/elastic_spring.hpp"
 #include "links/gap_spring.hpp"
 #include "links/hard_contact.hpp"
+#include "links/stiffness_damping.hpp"
 #include "support/free_masses.hpp"
 #include "support/oscillator.hpp"
 
@@ -240,6 +247,80 @@ TEST(Newmark, HardContactAgainstAWallHoldsOrBounces) {
         EXPECT_NEAR(state.velocity[0], -velocity, 1e-12) << method.name();
       }
     }
+}
+
+// A link row on a linear branch is folded into the factored matrix (integrators/newmark.hpp): a
+// linear spring then takes no Newton iteration and gives the oscillator with its stiffness added
+// to the bit's order; a spring with a dashpot, or one that yields, gives the response of the
+// unfolded iteration to within its tolerance, in fewer iterations.
+TEST(Newmark, FoldedLinkRowsGiveTheUnfoldedResponse) {
+  using LawMaker = std::function<std::unique_ptr<links::LinkLaw>()>;
+  const std::vector<std::pair<std::string, LawMaker>> laws = {
+      {"elastic spring", [] { return std::make_unique<links::ElasticSpring>(30.0); }},
+      {"spring with a dashpot",
+       [] {
+         return std::make_unique<links::StiffnessDamping>(
+             std::make_unique<links::ElasticSpring>(30.0), 0.01, links::DampingStiffness::initial);
+       }},
+      {"bilinear spring", [] { return std::make_unique<links::BilinearSpring>(30.0, 2.0, 0.1); }}};
+  const auto load = [](double t) { return 5.0 * std::sin(3.0 * t); };
+  struct Run {
+    std::vector<double> displacement, force;
+    long iterations = 0;
+  };
+  const auto run = [&](const LawMaker& law, bool fold) {
+    std::vector<std::unique_ptr<links::LinkLaw>> link_laws;
+    link_laws.push_back(law());
+    Oscillator system(1.0, 0.2, 10.0,
+                      integrators::LinkSet(1, {{{0, 1.0}}}, {0.0}, std::move(link_laws)), load);
+    system.set_folds_links(fold);
+    integrators::Newmark newmark = integrators::Newmark::average_acceleration();
+    integrators::TransientAnalysis analysis(system, newmark, {.time_step = 0.01, .end_time = 10.0});
+    integrators::State state;
+    Run result;
+    result.iterations = analysis
+                            .run(state,
+                                 [&](const integrators::State& s, const integrators::StepResult&) {
+                                   result.displacement.push_back(s.displacement[0]);
+                                   result.force.push_back(s.link_force[0]);
+                                 })
+                            .newton_iterations;
+    return result;
+  };
+  const auto largest_difference = [](const std::vector<double>& a, const std::vector<double>& b) {
+    double difference = 0.0, scale = 0.0;
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      difference = std::max(difference, std::abs(a[k] - b[k]));
+      scale = std::max(scale, std::abs(b[k]));
+    }
+    return difference / scale;
+  };
+  for (const auto& [name, law] : laws) {
+    const Run folded = run(law, true), unfolded = run(law, false);
+    ASSERT_EQ(folded.displacement.size(), unfolded.displacement.size());
+    const double displacement = largest_difference(folded.displacement, unfolded.displacement);
+    const double force = largest_difference(folded.force, unfolded.force);
+    std::cout << name << ": Newton iterations " << folded.iterations << " folded, "
+              << unfolded.iterations << " unfolded; relative differences u " << displacement
+              << ", F " << force << "\n";
+    EXPECT_LE(displacement, 1e-9) << name;
+    EXPECT_LE(force, 1e-9) << name;
+    EXPECT_LT(folded.iterations, unfolded.iterations) << name;
+  }
+  // The linear spring: no iteration, and the oscillator with k = 10 + 30 (no link).
+  const Run folded = run(laws[0].second, true);
+  EXPECT_EQ(folded.iterations, 0);
+  Oscillator plain(1.0, 0.2, 40.0, integrators::LinkSet(1), load);
+  integrators::Newmark newmark = integrators::Newmark::average_acceleration();
+  integrators::TransientAnalysis analysis(plain, newmark, {.time_step = 0.01, .end_time = 10.0});
+  integrators::State state;
+  std::vector<double> expected;
+  analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
+    expected.push_back(s.displacement[0]);
+  });
+  const double error = largest_difference(folded.displacement, expected);
+  std::cout << "linear spring folded against k = 40 without a link: " << error << "\n";
+  EXPECT_LE(error, 1e-13);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #pragma once
 // A one-DOF system m u'' + c u' + k u + F_links = f(t) for testing integrators without a model.
+#include <Eigen/Dense>
 #include <functional>
 #include <optional>
 
@@ -33,6 +34,16 @@ class Oscillator final : public integrators::SecondOrderSystem {
                                                     double c_k) const override {
     return std::make_unique<Scalar>(c_m * mass_ + c_c * damping_ + c_k * stiffness_);
   }
+  // With the links' row stiffnesses folded in: + sum_r b_r^2 k_r. Off: the integrator iterates on
+  // every link row.
+  std::unique_ptr<integrators::LinearSolver> factor_with_links(
+      double c_m, double c_c, double c_k, const Vector& link_stiffness) const override {
+    if (!folds_links_) return nullptr;
+    const Vector b = Matrix(links_.connectivity()).col(0);
+    return std::make_unique<Scalar>(c_m * mass_ + c_c * damping_ + c_k * stiffness_ +
+                                    b.cwiseProduct(b).dot(link_stiffness));
+  }
+  void set_folds_links(bool folds) { folds_links_ = folds; }
   integrators::LinkSet& links() override { return links_; }
   // Its damping as a0 m + a1 k, said so (as a Rayleigh-damped structure does).
   void set_rayleigh(double a0, double a1) {
@@ -52,6 +63,7 @@ class Oscillator final : public integrators::SecondOrderSystem {
   std::function<double(double)> force_;
   Vector lumped_;
   std::optional<Rayleigh> rayleigh_;
+  bool folds_links_ = true;
 };
 
 }  // namespace pound::testing
