@@ -97,4 +97,8 @@ double IntegratorChoice::acceleration_energy() const {
   return method_->acceleration_energy ? method_->acceleration_energy(values()) : 0.0;
 }
 
+bool IntegratorChoice::dissipates() const {
+  return method_->dissipates && method_->dissipates(values());
+}
+
 }  // namespace pound::integrators

@@ -52,6 +52,9 @@ struct IntegratorEntry {
   // Newmark with gamma = 1/2 has c = (beta - 1/4) / 2, central difference (beta = 0) -1/8.
   // None (0) for the methods that dissipate by design.
   std::function<double(const std::map<std::string, double>& parameters)> acceleration_energy;
+  // Whether the method damps the highest modes numerically with these parameters, so that its
+  // energy balance cannot close (none: it never does).
+  std::function<bool(const std::map<std::string, double>& parameters)> dissipates;
 
   const IntegratorParameter* parameter(std::string_view wanted) const;
 };
@@ -85,6 +88,7 @@ class IntegratorChoice {
   std::string label() const;
   std::unique_ptr<Integrator> make(const ConvergenceTest& test = {}) const;
   double acceleration_energy() const;  // IntegratorEntry::acceleration_energy, or 0
+  bool dissipates() const;             // IntegratorEntry::dissipates, or false
 
  private:
   const IntegratorEntry* method_;

@@ -88,7 +88,8 @@ const IntegratorEntry& Newmark::newmark_entry() {
       .acceleration_energy =
           [](const std::map<std::string, double>& p) {
             return p.at("gamma") == 0.5 ? 0.5 * (p.at("beta") - 0.25) : 0.0;
-          }};
+          },
+      .dissipates = [](const std::map<std::string, double>& p) { return p.at("gamma") > 0.5; }};
   return entry;
 }
 
@@ -101,7 +102,8 @@ const IntegratorEntry& Newmark::hht_entry() {
       .make = [](const std::map<std::string, double>& p,
                  const ConvergenceTest& test) -> std::unique_ptr<Integrator> {
         return std::make_unique<Newmark>(Newmark::hht(p.at("alpha"), test));
-      }};
+      },
+      .dissipates = [](const std::map<std::string, double>& p) { return p.at("alpha") < 0.0; }};
   return entry;
 }
 
@@ -118,7 +120,9 @@ const IntegratorEntry& Newmark::generalized_alpha_entry() {
       .make = [](const std::map<std::string, double>& p,
                  const ConvergenceTest& test) -> std::unique_ptr<Integrator> {
         return std::make_unique<Newmark>(Newmark::generalized_alpha(p.at("rho_infinity"), test));
-      }};
+      },
+      .dissipates =
+          [](const std::map<std::string, double>& p) { return p.at("rho_infinity") < 1.0; }};
   return entry;
 }
 

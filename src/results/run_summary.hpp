@@ -145,6 +145,7 @@ struct StepChoice {
 struct RunSummary {
   RunStatus status;
   std::string integrator;
+  bool integrator_dissipates = false;  // damps the high modes by design (IntegratorEntry)
   double time_step = 0.0, duration = 0.0, run_time_s = 0.0;
   StepChoice step_choice;
   Index dofs = 0;
