@@ -540,16 +540,43 @@ double Newmark::folded_projection(Index row) const {
   return links_move_ ? projection - link_offset_[row] : projection;
 }
 
+// On its branch a folded row's force is F_n + k (delta - delta_n) + c (rate - rate_n)
+// + m (accel - accel_n), with its reference derivatives k, c, m; its unknown F - K_r (B u)_r is the
+// same at any delta of the step, taken at the predictor (delta~, rate~, the supports'
+// acceleration), so a row that stays on its branch starts converged, dashpot and moving support
+// included. Without either, that is F_n - K_r (B u_n)_r.
 void Newmark::start_folded_rows(SecondOrderSystem& system, const Factorization& f,
                                 const State& from) {
   assumed_force_.setZero(system.links().size());
   if (f.folded_rows.empty()) return;
+  bool viscous = false;
+  for (const Index r : f.folded_rows)
+    viscous = viscous || reference_damping_[r] != 0.0 || reference_mass_[r] != 0.0;
   if (links_move_)
     system.link_motion(from.time, start_offset_, start_offset_rate_, start_offset_acceleration_);
+  if (viscous) {
+    system.links().project(from.velocity, start_rate_);
+    system.links().project(from.acceleration, start_acceleration_);
+    if (links_move_) {
+      start_rate_ += start_offset_rate_;
+      start_acceleration_ += start_offset_acceleration_;
+    }
+  }
   for (const Index r : f.folded_rows) {
-    double projection = from.link_penetration[r] + gaps_->coeff(r);
-    if (links_move_) projection -= start_offset_[r];
-    assumed_force_[r] = from.link_force[r] - f.folded_stiffness[r] * projection;
+    const double damping = reference_damping_[r], mass = reference_mass_[r];
+    if (!links_move_ && damping == 0.0 && mass == 0.0) {
+      assumed_force_[r] =
+          from.link_force[r] - f.folded_stiffness[r] * (from.link_penetration[r] + gaps_->coeff(r));
+      continue;
+    }
+    const double predicted = delta_predicted_[r];
+    double force =
+        from.link_force[r] + reference_stiffness_[r] * (predicted - from.link_penetration[r]);
+    if (damping != 0.0) force += damping * (rate_predicted_[r] - start_rate_[r]);
+    if (mass != 0.0)
+      force += mass * ((links_move_ ? link_offset_acceleration_[r] : 0.0) - start_acceleration_[r]);
+    const double projection = predicted + gaps_->coeff(r) - (links_move_ ? link_offset_[r] : 0.0);
+    assumed_force_[r] = force - f.folded_stiffness[r] * projection;
   }
 }
 

@@ -129,7 +129,8 @@ class Newmark final : public Integrator {
   void apply_link_forces(const Factorization& f, State& to) const;
   // (B u)_r of a folded row from its deformation at the current iterate.
   double folded_projection(Index row) const;
-  // The folded rows' unknowns at t_n, F - K_r (B u)_r: the start of the iteration.
+  // The folded rows' unknowns for t_{n+1}, predicted from t_n on their branch: the start of the
+  // iteration.
   void start_folded_rows(SecondOrderSystem& system, const Factorization& f, const State& from);
   // The hard contacts' rows of the iteration: law force F + s (delta - bound) and tangent s
   // (pressing), or 0.
@@ -186,7 +187,8 @@ class Newmark final : public Integrator {
   Vector link_offset_, link_offset_rate_, link_offset_acceleration_;
   bool links_move_ = false;  // this step's links see the supports' motion (predict_links)
   Vector start_offset_, start_offset_rate_, start_offset_acceleration_;  // the supports' at t_n
-  const Vector* gaps_ = nullptr;                                         // of the system's links
+  Vector start_rate_, start_acceleration_;  // of the link rows at t_n, for the folded dashpots
+  const Vector* gaps_ = nullptr;            // of the system's links
   // Hard contacts: their laws by row (nullptr for a force law's row), found at initialize(), and
   // which of them press (delta = 0 enforced) at the current iterate.
   std::vector<links::HardContact*> hard_laws_;
