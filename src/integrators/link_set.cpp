@@ -2,6 +2,7 @@
 
 #include <cassert>
 #include <cmath>
+#include <utility>
 
 namespace pound::integrators {
 namespace {
@@ -82,18 +83,16 @@ LinkSet::RowDerivatives LinkSet::row_derivatives(const Vector& delta, const Vect
   RowDerivatives derivatives;
   Vector force;
   Matrix tangent;
-  evaluate(
-      delta, rate, acceleration, [](const links::LawResponse& r) { return r.stiffness; }, force,
-      tangent);
-  derivatives.stiffness = tangent.diagonal();
-  evaluate(
-      delta, rate, acceleration, [](const links::LawResponse& r) { return r.damping; }, force,
-      tangent);
-  derivatives.damping = tangent.diagonal();
-  evaluate(
-      delta, rate, acceleration, [](const links::LawResponse& r) { return r.mass; }, force,
-      tangent);
-  derivatives.mass = tangent.diagonal();
+  using Kind = double links::LawResponse::*;
+  for (const auto& [kind, into] :
+       {std::pair<Kind, Vector*>{&links::LawResponse::stiffness, &derivatives.stiffness},
+        {&links::LawResponse::damping, &derivatives.damping},
+        {&links::LawResponse::mass, &derivatives.mass}}) {
+    evaluate(
+        delta, rate, acceleration, [kind](const links::LawResponse& r) { return r.*kind; }, force,
+        tangent);
+    *into = tangent.diagonal();
+  }
   return derivatives;
 }
 

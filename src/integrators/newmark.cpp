@@ -260,8 +260,11 @@ const Newmark::Factorization& Newmark::factorization(SecondOrderSystem& system, 
     f.solver = system.factor_with_links(c_m, damping_factor, 1.0, f.folded_stiffness);
   }
   if (f.solver) {
-    for (Index r = 0; r < f.folded_stiffness.size(); ++r)
-      if (f.folded_stiffness[r] != 0.0) f.folded_rows.push_back(r);
+    for (Index r = 0; r < f.folded_stiffness.size(); ++r) {
+      if (f.folded_stiffness[r] == 0.0) continue;
+      f.folded_rows.push_back(r);
+      f.folded_rates = f.folded_rates || reference_damping_[r] != 0.0 || reference_mass_[r] != 0.0;
+    }
   } else {
     f.folded_stiffness.resize(0);
     f.solver = system.factor(c_m, damping_factor, 1.0);
@@ -534,27 +537,27 @@ void Newmark::evaluate_links(LinkSet& links, const Factorization& f, double c_m,
   residual_ = assumed_force_ - law_force_;
 }
 
+double Newmark::folded_projection(Index row, double delta, double offset) const {
+  return delta + gaps_->coeff(row) - offset;  // (B u)_r = delta_r + gap_r - s_r(t)
+}
+
 double Newmark::folded_projection(Index row) const {
-  // (B u)_r = delta_r + gap_r - s_r(t)
-  const double projection = delta_[row] + gaps_->coeff(row);
-  return links_move_ ? projection - link_offset_[row] : projection;
+  return folded_projection(row, delta_[row], links_move_ ? link_offset_[row] : 0.0);
 }
 
 // On its branch a folded row's force is F_n + k (delta - delta_n) + c (rate - rate_n)
 // + m (accel - accel_n), with its reference derivatives k, c, m; its unknown F - K_r (B u)_r is the
-// same at any delta of the step, taken at the predictor (delta~, rate~, the supports'
-// acceleration), so a row that stays on its branch starts converged, dashpot and moving support
-// included. Without either, that is F_n - K_r (B u_n)_r.
+// same at any delta of the step. Taken at the predictor (delta~, rate~, the supports'
+// acceleration), that is F_n - K_r (B u_n)_r plus what the terms below add: a row that stays on
+// its branch starts converged, dashpot and moving support included. Each term is an exact zero
+// for a spring (k = K_r, no rate, no motion), whose unknown then stays exactly what it was.
 void Newmark::start_folded_rows(SecondOrderSystem& system, const Factorization& f,
                                 const State& from) {
   assumed_force_.setZero(system.links().size());
   if (f.folded_rows.empty()) return;
-  bool viscous = false;
-  for (const Index r : f.folded_rows)
-    viscous = viscous || reference_damping_[r] != 0.0 || reference_mass_[r] != 0.0;
   if (links_move_)
     system.link_motion(from.time, start_offset_, start_offset_rate_, start_offset_acceleration_);
-  if (viscous) {
+  if (f.folded_rates) {
     system.links().project(from.velocity, start_rate_);
     system.links().project(from.acceleration, start_acceleration_);
     if (links_move_) {
@@ -563,20 +566,19 @@ void Newmark::start_folded_rows(SecondOrderSystem& system, const Factorization& 
     }
   }
   for (const Index r : f.folded_rows) {
-    const double damping = reference_damping_[r], mass = reference_mass_[r];
-    if (!links_move_ && damping == 0.0 && mass == 0.0) {
-      assumed_force_[r] =
-          from.link_force[r] - f.folded_stiffness[r] * (from.link_penetration[r] + gaps_->coeff(r));
-      continue;
+    const double stiffness = f.folded_stiffness[r];
+    const double offset = links_move_ ? start_offset_[r] : 0.0;
+    double unknown =
+        from.link_force[r] - stiffness * folded_projection(r, from.link_penetration[r], offset);
+    unknown +=
+        (reference_stiffness_[r] - stiffness) * (delta_predicted_[r] - from.link_penetration[r]);
+    if (links_move_) unknown += stiffness * (link_offset_[r] - offset);
+    if (f.folded_rates) {
+      const double acceleration = links_move_ ? link_offset_acceleration_[r] : 0.0;
+      unknown += reference_damping_[r] * (rate_predicted_[r] - start_rate_[r]) +
+                 reference_mass_[r] * (acceleration - start_acceleration_[r]);
     }
-    const double predicted = delta_predicted_[r];
-    double force =
-        from.link_force[r] + reference_stiffness_[r] * (predicted - from.link_penetration[r]);
-    if (damping != 0.0) force += damping * (rate_predicted_[r] - start_rate_[r]);
-    if (mass != 0.0)
-      force += mass * ((links_move_ ? link_offset_acceleration_[r] : 0.0) - start_acceleration_[r]);
-    const double projection = predicted + gaps_->coeff(r) - (links_move_ ? link_offset_[r] : 0.0);
-    assumed_force_[r] = force - f.folded_stiffness[r] * projection;
+    assumed_force_[r] = unknown;
   }
 }
 

@@ -102,6 +102,7 @@ class Newmark final : public Integrator {
     // K_r of the rows folded into the factored matrix (none: empty), and those rows.
     Vector folded_stiffness;
     std::vector<Index> folded_rows;
+    bool folded_rates = false;  // some folded row has a dashpot or a mass term
   };
   // K_r of every row for this step (zero where the row is not folded), from the references.
   Vector folded_stiffness(double dt) const;
@@ -127,7 +128,9 @@ class Newmark final : public Integrator {
   void evaluate_links(LinkSet& links, const Factorization& f, double c_m, double c_c);
   // u_{n+1} = u_lin - Z F and the link state of `to`.
   void apply_link_forces(const Factorization& f, State& to) const;
-  // (B u)_r of a folded row from its deformation at the current iterate.
+  // (B u)_r of a folded row from its deformation and the supports' offset, or at the current
+  // iterate.
+  double folded_projection(Index row, double delta, double offset) const;
   double folded_projection(Index row) const;
   // The folded rows' unknowns for t_{n+1}, predicted from t_n on their branch: the start of the
   // iteration.
