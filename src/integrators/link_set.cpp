@@ -84,14 +84,16 @@ LinkSet::RowDerivatives LinkSet::row_derivatives(const Vector& delta, const Vect
   Vector force;
   Matrix tangent;
   using Kind = double links::LawResponse::*;
-  for (const auto& [kind, into] :
+  for (const auto& entry :
        {std::pair<Kind, Vector*>{&links::LawResponse::stiffness, &derivatives.stiffness},
         {&links::LawResponse::damping, &derivatives.damping},
         {&links::LawResponse::mass, &derivatives.mass}}) {
+    // A named member, not a structured binding: clang 14 cannot capture a binding.
+    const Kind kind = entry.first;
     evaluate(
         delta, rate, acceleration, [kind](const links::LawResponse& r) { return r.*kind; }, force,
         tangent);
-    *into = tangent.diagonal();
+    *entry.second = tangent.diagonal();
   }
   return derivatives;
 }
