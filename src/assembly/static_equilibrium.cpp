@@ -8,10 +8,10 @@
 #include <limits>
 #include <string>
 
+#include "assembly/static_hard_contacts.hpp"
 #include "core/errors.hpp"
 
 namespace pound::assembly {
-
 void hold_unheld_dofs(Eigen::SparseMatrix<double>& tangent) {
   if (tangent.size() == 0) return;
   const double largest = tangent.diagonal().cwiseAbs().maxCoeff();
@@ -51,35 +51,40 @@ StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
   Vector delta(m), force(m), stiffness_force(n);
   Matrix tangent;
   bool first = true;
-  // Unbalanced force at u under `applied`, leaving the links at that trial state.
+  StaticHardContacts hard(system, rate, offset - links.gaps());
+  // Unbalanced force at u under `applied` without the hard contacts' forces, leaving the links
+  // at that trial state.
   auto unbalanced = [&](const Vector& at, const Vector& applied, Vector& residual) {
     links.penetration(at, delta);
     delta += offset;
     // Links touching at the start (delta = 0: a block set on a floor) are taken as closed, so
-    // that the first tangent holds the structure; the force of that nudge is negligible.
+    // that the first tangent holds the structure; the force of that nudge is negligible. (A
+    // hard contact holds without one: StaticHardContacts::choose.)
     if (first)
       for (Index k = 0; k < links.count(); ++k)
-        if (delta[links.row(k)] == 0.0) delta[links.row(k)] = std::numeric_limits<double>::min();
+        if (delta[links.row(k)] == 0.0 && !hard.constrains(links.row(k)))
+          delta[links.row(k)] = std::numeric_limits<double>::min();
     first = false;
     links.set_trial(delta, rate, zero, 0.0, 0.0, force, tangent);
+    hard.leave_out(force);  // what the hard laws return is what was imposed on them last
     system.multiply_stiffness(at, stiffness_force);
     const Vector link_force = b.transpose() * force;
     residual = applied - stiffness_force - link_force;
     return std::max(applied.norm(), link_force.norm());
   };
-  bool hard_contacts = false;
-  for (Index k = 0; k < links.count(); ++k) hard_contacts = hard_contacts || links.hard_contact(k);
-  // A hard contact has no force law to rest on: the likely reason when the solve fails.
-  const std::string hard_contact_note =
-      hard_contacts ? "; a hard_contact carries nothing in the static solve (it has no "
-                      "stiffness): start from rest without \"initial_state\": \"static\", or "
-                      "give the contacts that hold the structure a penalty law"
-                    : "";
-  auto mechanism = [time, &hard_contact_note]() {
+  // With the hard contacts' forces: the structure's unbalanced force, and a step's merit.
+  auto with_hard = [&](const Vector& residual, const Vector& multipliers) {
+    return hard.any() ? Vector(residual - b.transpose() * multipliers) : residual;
+  };
+  bool friction = false;
+  for (Index k = 0; k < links.count(); ++k) friction = friction || links.has_friction(k);
+  auto mechanism = [time, friction]() {
     return SolveError(time, fmt::format("static equilibrium: the structure is not held under the "
                                         "initial loads (a mechanism: add supports, or links in "
-                                        "contact){}",
-                                        hard_contact_note));
+                                        "contact{})",
+                                        friction ? "; friction holds no more than mu R_n, and a "
+                                                   "load past it slides the structure away"
+                                                 : ""));
   };
 
   // The loads in increments, each committed: friction links follow the loading path, as in a
@@ -88,36 +93,57 @@ StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
   // wherever they touch: one increment, in which every such link slips.
   const bool sliding = rate.size() > 0 && rate.any();
   const int increments = sliding ? 1 : 10;
-  Vector residual(n), trial_residual(n), trial(n);
+  Vector residual(n), trial_residual(n), trial(n), correction(n), multipliers, trial_multipliers;
   for (int increment = 1; increment <= increments; ++increment) {
     const Vector applied = (static_cast<double>(increment) / increments) * load;
     double scale = std::max(load.norm(), unbalanced(u, applied, residual));
     for (int iteration = 0;; ++iteration) {
-      result.unbalanced_force = residual.norm();
-      if (result.unbalanced_force <= relative_tolerance * scale) break;
+      const bool settled = hard.choose(delta);
+      const Vector hard_force = with_hard(residual, hard.multipliers()) - residual;
+      scale = std::max(scale, hard_force.norm());
+      result.unbalanced_force = (residual + hard_force).norm();
+      const double violation = hard.violation(delta);
+      if (settled && result.unbalanced_force <= relative_tolerance * scale &&
+          violation <= relative_tolerance * scale)
+        break;
       if (iteration == max_iterations)
         throw SolveError(time, fmt::format("static equilibrium under the initial loads did not "
                                            "converge in {} iterations at {} % of the loads "
-                                           "(unbalanced force {:.3g} of {:.3g}){}",
+                                           "(unbalanced force {:.3g} of {:.3g})",
                                            max_iterations, 100 * increment / increments,
-                                           result.unbalanced_force, scale, hard_contact_note));
-      Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
-      solver.compute(static_tangent(system, tangent));
-      if (solver.info() != Eigen::Success) throw mechanism();
-      const Vector correction = solver.solve(residual);
-      if (!correction.allFinite()) throw mechanism();
+                                           std::max(result.unbalanced_force, violation), scale));
+      const Eigen::SparseMatrix<double> matrix = static_tangent(system, tangent);
+      if (hard.any()) {
+        if (!hard.solve(matrix, residual, delta, correction, multipliers)) throw mechanism();
+      } else {
+        Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
+        solver.compute(matrix);
+        if (solver.info() != Eigen::Success) throw mechanism();
+        correction = solver.solve(residual);
+        if (!correction.allFinite()) throw mechanism();
+      }
+      const Vector start_multipliers = hard.multipliers();
+      const double merit = result.unbalanced_force + violation;
       double step = 1.0;
       for (int halving = 0;; ++halving) {
         trial = u + step * correction;
         scale = std::max(load.norm(), unbalanced(trial, applied, trial_residual));
-        if (trial_residual.norm() < result.unbalanced_force || halving == 12) break;
+        if (hard.any()) {
+          trial_multipliers = start_multipliers + step * (multipliers - start_multipliers);
+          hard.set_multipliers(trial_multipliers);
+        }
+        const double trial_merit =
+            with_hard(trial_residual, hard.multipliers()).norm() + hard.violation(delta);
+        if (trial_merit < merit || halving == 12) break;
         step *= 0.5;
       }
       u = trial;
       residual = trial_residual;
       ++result.iterations;
     }
+    hard.impose();
     links.commit();
+    hard.commit(delta);
   }
   // The dynamics starts with the structure moving as the belts do: the friction forces found
   // here must hold at zero relative rate.

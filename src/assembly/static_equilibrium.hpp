@@ -4,8 +4,10 @@
 // solved by Newton on the assembled K + B^T (dF/d delta) B (sparse LU: a slipping friction link's
 // tangent is not symmetric). The links are at rest (zero rates), as in a structure loaded slowly
 // until t = 0 (OpenSees' gravity analysis before the dynamic one); their state at the solution
-// is committed, so a dynamic run started from u continues from that state. Throws SolveError
-// when Newton does not converge or the structure is a mechanism under the loads.
+// is committed, so a dynamic run started from u continues from that state. Hard contacts and their
+// friction are constraints with their forces as multipliers (a primal-dual active set inside the
+// same Newton iteration: static_equilibrium.cpp). Throws SolveError when Newton does not converge
+// or the structure is a mechanism under the loads.
 #include "assembly/structural_system.hpp"
 
 namespace pound::assembly {

@@ -6,7 +6,8 @@
 namespace pound::results {
 
 double EnergyTerms::largest_term() const {
-  return std::max({std::abs(input), kinetic, strain, std::abs(damping), std::abs(links), initial});
+  return std::max(
+      {std::abs(input), kinetic, strain, std::abs(damping), std::abs(links), initial, round_off});
 }
 
 double EnergyTerms::residual() const {
@@ -26,6 +27,15 @@ double EnergyTerms::link_created_fraction() const {
 double EnergyTerms::balance_error() const {
   const double largest = largest_term();
   return largest > 0.0 ? std::abs(residual() + algorithmic) / largest : 0.0;
+}
+
+double EnergyBalance::step_load_energy(double dt) const {
+  const Vector* mass = system_.lumped_mass();
+  if (!mass || external_.size() != mass->size()) return 0.0;
+  double sum = 0.0;
+  for (Index i = 0; i < mass->size(); ++i)
+    if ((*mass)[i] > 0.0) sum += external_[i] * external_[i] / (*mass)[i];
+  return 0.5 * dt * dt * sum;
 }
 
 double EnergyBalance::mass_norm(const Vector& acceleration) {
@@ -62,6 +72,8 @@ void EnergyBalance::record(const integrators::State& state) {
       terms_.algorithmic = acceleration_energy_ * dt * dt *
                            (mass_norm(state.acceleration) - initial_acceleration_norm_);
     }
+    terms_.round_off =
+        std::max(terms_.round_off, 1e-9 * step_load_energy(state.time - previous_.time));
     step_ = state.displacement - previous_.displacement;
     const Vector& step = step_;
     terms_.input += 0.5 * step.dot(external_ + previous_external_);

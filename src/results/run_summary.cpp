@@ -339,7 +339,8 @@ double RunSummary::contact_created_energy() const {
 }
 
 double RunSummary::contact_created_fraction() const {
-  const double put_in = std::max(std::abs(energy.input), energy.initial);
+  // Below the energies' round-off nothing was put in, and nothing created (a block at rest).
+  const double put_in = std::max({std::abs(energy.input), energy.initial, energy.round_off});
   const double created = contact_created_energy();
   return put_in > 0.0 ? created / put_in : (created > 0.0 ? 1.0 : 0.0);
 }

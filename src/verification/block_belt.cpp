@@ -133,7 +133,10 @@ BlockBeltPoint run_block_belt(const builder::ModelSpec& base, double dimensionle
   long step = 0;
   // A sweep point must not report numbers from a diverging run: the energy the integration
   // makes is watched as in `pound run`, and the point fails with the time and the reason.
-  results::EnergyBalance energy(system);
+  results::EnergyBalance energy(system, built.analysis.integrator.acceleration_energy());
+  // As in RunObservers: an implicit step's hard-contact force is its step's impulse / dt.
+  if (!built.analysis.integrator.is_explicit())
+    energy.set_step_forces(system.links().impulsive_hard_contact_rows(system.lumped_mass()));
   auto observe = [&](const integrators::State& s, const integrators::StepResult&) {
     energy.record(s);
     if (const double created = energy.terms().created_fraction();
@@ -160,7 +163,9 @@ BlockBeltPoint run_block_belt(const builder::ModelSpec& base, double dimensionle
       was_sticking[c] = sticks;
       point.peak_lift = std::max(point.peak_lift, -s.link_penetration[row]);
     }
-    if (closed == 0) point.tumbling = true;
+    // Not at t = 0, where the block rests on the belt by construction: an implicit integrator
+    // finds a hard contact's force from the first step on, so none is in contact there yet.
+    if (closed == 0 && step > 0) point.tumbling = true;
     // The block sticks when (nearly) all of it does: 90 % of its closed contacts, so that a
     // corner slipping alone does not hide a stick phase.
     const bool whole_stick = closed > 0 && sticking >= 0.9 * closed;

@@ -216,6 +216,37 @@ TEST_F(Cli, HardContactWithFrictionStopsABlockWhereMuGSays) {
   }
 }
 
+// The same block started at rest from the static state ("initial_state": "static", which a hard
+// contact used to refuse): the contact holds its weight from t = 0 and the block stays where it
+// is, with every energy term at round-off and no warning (their 1e-21 J is not "100 %" of
+// anything); pushed sideways below mu W it still stays.
+TEST_F(Cli, ABlockOnAHardContactStartsFromItsStaticStateAndStaysAtRest) {
+  json block =
+      json::parse(read_text(fs::path(POUND_SOURCE_DIR) / "models" / "block_on_floor.json"));
+  block["links"][0]["law"] = {{"type", "hard_contact"}, {"restitution", 0.0}};
+  block["analysis"]["initial_state"] = "static";
+  block["initial_velocities"] = json::array();
+  block["loads"][0]["x"] = 30.0;  // < mu W = 49.05
+  for (const std::string integrator : {"central_difference", "newmark_average_acceleration"}) {
+    block["analysis"]["integrator"] = integrator;
+    const fs::path model = path(integrator + ".json"), out = path(integrator + ".out");
+    std::ofstream(model) << block.dump(2);
+    const Outcome outcome = pound({"run", model.string(), "--out", out.string()});
+    ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+    EXPECT_FALSE(contains(outcome.err, "warning")) << outcome.err;
+    const json summary = json::parse(read_text(out / "summary.json"));
+    const std::string history = read_text(out / "block.csv");
+    const std::string last = history.substr(history.rfind('\n', history.size() - 2) + 1);
+    const double position = std::stod(last.substr(last.find(',') + 1));
+    const double peak = summary["links"][0]["peak_force"].get<double>();
+    std::cout << integrator << ": at rest, moved " << position << ", contact peak force " << peak
+              << " (weight 98.1), created fraction "
+              << summary["energy"]["contact_created_fraction"] << "\n";
+    EXPECT_LT(std::abs(position), 1e-12);
+    EXPECT_NEAR(peak, 98.1, 1e-9);
+  }
+}
+
 // The study picks its rod cases by name; a name it does not know is a usage error listing them.
 TEST_F(Cli, StudyTakesItsCasesByName) {
   const Outcome wrong = pound({"study", "rod-impact", "--cases", "kawashima,wall"});

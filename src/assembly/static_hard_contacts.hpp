@@ -1,0 +1,70 @@
+#pragma once
+// The hard contacts of a static solve, and their friction: constraints on their link rows with
+// their forces as multipliers, found by a primal-dual active set (Hintermüller, Ito & Kunisch
+// 2002, SIAM J. Optim. 13(3) 865–888; with friction, Hüeber, Stadler & Wohlmuth 2008, SIAM J. Sci.
+// Comput. 30(2) 572–596) inside static_equilibrium's Newton iteration.
+//   normal row r:  held (delta_r = 0) while lambda_r + c_r delta_r > 0, else free (lambda_r = 0);
+//                  a contact touching at the start (delta = 0) is held until its force pulls;
+//   friction row t of a held contact: sticks (no further slide, s_t = s_t at the last increment)
+//                  while |lambda_t + c_t (s_t - s_0)| <= mu (lambda_n + c_n delta_n), else slips at
+//                  lambda_t = sign mu lambda_n, sign that trial's; under a moving belt it slips in
+//                  the belt's direction, as penalty friction does in the static solve.
+// c_r = sum_j B_rj^2 |K_jj|, the stiffness the row sees (the structure's largest when its DOFs
+// have none), so that lambda and c delta are both forces. Forces have a law's sign: F > 0
+// presses, and -B^T F is their load on the structure. Units: lambda [F], delta [L], c [F/L].
+#include <vector>
+
+#include "assembly/structural_system.hpp"
+
+namespace pound::links {
+class HardContact;
+class CoulombFriction;
+}  // namespace pound::links
+
+namespace pound::assembly {
+
+class StaticHardContacts {
+ public:
+  // `belt_rate`: the rows' rates from moving surfaces (zero: none); `start_delta`: the rows'
+  // delta at u = 0, where sticking rows start.
+  StaticHardContacts(StructuralSystem& system, const Vector& belt_rate, const Vector& start_delta);
+
+  bool any() const { return any_; }
+  bool constrains(Index row) const;
+  const Vector& multipliers() const { return multiplier_; }
+  void set_multipliers(const Vector& multipliers) { multiplier_ = multipliers; }
+  // Zeroes the hard rows of a LinkSet::set_trial force: a hard law returns what was last imposed.
+  void leave_out(Vector& force) const;
+
+  // The rows' states at delta and the current multipliers; true when none changed.
+  bool choose(const Vector& delta);
+  // In force units: c delta of a held or penetrating contact, c times a sticking row's slide.
+  double violation(const Vector& delta) const;
+  // Newton's step du and the active rows' new multipliers, from
+  //   [K_t C; D 0] [du; lambda] = [residual; -g],
+  // D the held and sticking rows of B, C their columns (a held row whose friction slips carries
+  // it: B_n^T + sign mu B_t^T), g their violation; `residual` without the hard rows' forces.
+  // False: the matrix is singular (a mechanism).
+  bool solve(const Eigen::SparseMatrix<double>& tangent, const Vector& residual,
+             const Vector& delta, Vector& step, Vector& multipliers) const;
+  // A load increment done: a sticking row holds its slide from here on.
+  void commit(const Vector& delta);
+  // The hard laws take the forces found (to be committed with the links).
+  void impose() const;
+
+ private:
+  enum class Row { kFree, kHeld, kStick, kSlip };
+  Row friction_state(Index t, const Vector& delta);
+  double coefficient(Index t) const;
+  double target(Index r) const;  // held: delta = 0; sticking: s = s_0
+
+  const integrators::LinkSet::SparseRowMatrix& connectivity_;
+  std::vector<links::HardContact*> contacts_;
+  std::vector<links::CoulombFriction*> frictions_;
+  std::vector<Row> state_;
+  Vector multiplier_, scale_, direction_;
+  Vector belt_rate_, anchor_;
+  bool any_ = false, started_ = false;
+};
+
+}  // namespace pound::assembly
