@@ -4,6 +4,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
+#include <cmath>
 #include <numbers>
 #include <stdexcept>
 
@@ -13,15 +14,19 @@ namespace pound::assembly {
 
 namespace {
 
-// K with every link at its initial tangent (penetration -gap, at rest), on copies of their laws.
+// Each link's initial tangent (penetration -gap, at rest), on a copy of its law.
+double initial_tangent(const integrators::LinkSet& links, Index k) {
+  return links.law(k).clone()->set_trial({-links.gaps()[links.row(k)], 0.0, 0.0}).stiffness;
+}
+
+// K with every link at its initial tangent.
 Matrix stiffness_with_links(const StructuralSystem& system) {
   Matrix stiffness = Matrix(system.stiffness());
   const integrators::LinkSet& links = system.links();
   const Matrix connectivity = Matrix(links.connectivity());
   for (Index k = 0; k < links.count(); ++k) {
     const Index row = links.row(k);
-    auto law = links.law(k).clone();
-    const double tangent = law->set_trial({-links.gaps()[row], 0.0, 0.0}).stiffness;
+    const double tangent = initial_tangent(links, k);
     if (tangent != 0.0)
       stiffness += tangent * connectivity.row(row).transpose() * connectivity.row(row);
   }
@@ -69,6 +74,20 @@ Condensed condense(const Matrix& stiffness, const std::vector<Index>& with_mass,
 
 }  // namespace
 
+Vector stiffness_diagonal_with_links(const StructuralSystem& system) {
+  Vector diagonal = system.stiffness().diagonal();
+  const integrators::LinkSet& links = system.links();
+  for (Index k = 0; k < links.count(); ++k) {
+    const double tangent = initial_tangent(links, k);
+    if (tangent == 0.0) continue;
+    for (integrators::LinkSet::SparseRowMatrix::InnerIterator term(links.connectivity(),
+                                                                   links.row(k));
+         term; ++term)
+      diagonal[term.col()] += tangent * term.value() * term.value();
+  }
+  return diagonal;
+}
+
 Modes modal_analysis(const StructuralSystem& system, Index max_dofs) {
   const Index n = system.size();
   if (n > max_dofs)
@@ -85,6 +104,13 @@ Modes modal_analysis(const StructuralSystem& system, Index max_dofs) {
   for (Index i = 0; i < n; ++i)
     (mass.row(i).cwiseAbs().maxCoeff() > 0.0 ? with_mass : massless).push_back(i);
   if (with_mass.empty()) return Modes{Vector(0), Matrix::Zero(n, 0)};
+  // w^2 past 1e150 (w > 1e75 rad/s) is no structure's, and the solver's squares of it overflow:
+  // it would iterate for a minute before failing.
+  for (const Index i : with_mass)
+    if (!(std::abs(stiffness(i, i)) / mass(i, i) <= 1e150))
+      throw ModalAnalysisError(
+          "a stiffness-to-mass ratio overflows the number range (a stiffness or mass far beyond "
+          "physical ones)");
   const Condensed condensed = condense(stiffness, with_mass, massless);
   const Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> solver(
       condensed.reduced, submatrix(mass, with_mass, with_mass));

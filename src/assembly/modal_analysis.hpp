@@ -21,10 +21,13 @@ struct Modes {
   Matrix shapes;         // columns, mass-normalised (phi^T M phi = 1), all DOFs
 };
 
+// The diagonal of K with every link at its initial tangent, as the modes see it.
+Vector stiffness_diagonal_with_links(const StructuralSystem& system);
 // A model without a DOF that has mass has no modes (empty). Throws std::length_error above
 // `max_dofs` (dense solve), NotPositiveDefinite when the massless DOFs are not held by stiffness
 // alone (its equation names one of them), and ModalAnalysisError when the eigen-solver fails
-// (matrices not finite, or masses and stiffnesses too far apart in scale).
+// (matrices not finite, or masses and stiffnesses too far apart in scale) or would (a
+// stiffness-to-mass ratio past 1e150).
 Modes modal_analysis(const StructuralSystem& system, Index max_dofs = 4000);
 // The first `count` periods 2 pi / w of the vibration modes (rigid-body modes left out).
 std::vector<double> natural_periods(const StructuralSystem& system, int count);

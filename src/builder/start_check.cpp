@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "assembly/modal_analysis.hpp"
 #include "assembly/static_equilibrium.hpp"
 
 namespace pound::builder {
@@ -55,7 +56,8 @@ InputError not_held_error(const BuiltModel& built, const model::DofMap& dofs,
 
 InputError extreme_mode_error(const BuiltModel& built, const assembly::StructuralSystem& system,
                               const std::string& reason, const std::string& source) {
-  const Vector mass = system.mass_matrix().diagonal(), stiffness = system.stiffness().diagonal();
+  const Vector mass = system.mass_matrix().diagonal();
+  const Vector stiffness = assembly::stiffness_diagonal_with_links(system);
   Index worst = -1;
   double worst_ratio = 0.0;
   for (Index i = 0; i < mass.size(); ++i) {

@@ -92,5 +92,23 @@ TEST(ModalAnalysis, RefusesMoreDofsThanTheDenseSolveIsFor) {
   EXPECT_THROW(modal_analysis(system, 1), std::length_error);
 }
 
+// A spring of 1e300 on a unit mass: w^2 = 1e300 is no structure's, and the dense solver's
+// squares of it overflow (it iterated a minute before failing: a mutation test's "hang"). Refused
+// at once, with the spring counted in the diagonal that names the DOF.
+TEST(ModalAnalysis, AnOverflowingStiffnessToMassRatioIsRefusedAtOnce) {
+  const StructuralSystem system = system_of(chain(
+      R"({"id": "bearing", "nodes": ["m2", "wall"], "law": {"type": "elastic_spring", "stiffness": 1e300}})"));
+  try {
+    modal_analysis(system);
+    ADD_FAILURE() << "w^2 = 1e300 gave modes";
+  } catch (const ModalAnalysisError& error) {
+    EXPECT_NE(std::string(error.what()).find("overflows the number range"), std::string::npos)
+        << error.what();
+  }
+  const Vector diagonal = stiffness_diagonal_with_links(system);
+  EXPECT_EQ(diagonal[1], 100.0 + 1e300);
+  EXPECT_EQ(diagonal[0], 200.0);
+}
+
 }  // namespace
 }  // namespace pound::assembly
