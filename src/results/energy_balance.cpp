@@ -29,13 +29,12 @@ double EnergyTerms::balance_error() const {
   return largest > 0.0 ? std::abs(residual() + algorithmic) / largest : 0.0;
 }
 
-double EnergyBalance::step_load_energy(double dt) const {
+double EnergyBalance::step_load_energy(double dt) {
   const Vector* mass = system_.lumped_mass();
   if (!mass || external_.size() != mass->size()) return 0.0;
-  double sum = 0.0;
-  for (Index i = 0; i < mass->size(); ++i)
-    if ((*mass)[i] > 0.0) sum += external_[i] * external_[i] / (*mass)[i];
-  return 0.5 * dt * dt * sum;
+  if (inverse_mass_.size() != mass->size())  // once: no division per step
+    inverse_mass_ = mass->unaryExpr([](double m) { return m > 0.0 ? 1.0 / m : 0.0; });
+  return 0.5 * dt * dt * external_.cwiseAbs2().dot(inverse_mass_);
 }
 
 double EnergyBalance::mass_norm(const Vector& acceleration) {

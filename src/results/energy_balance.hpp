@@ -75,7 +75,7 @@ class EnergyBalance : public Observer {
  private:
   double mass_norm(const Vector& acceleration);  // a^T M a
   // 1/2 sum (f_i dt)^2 / m_i over the lumped masses (0 with consistent ones).
-  double step_load_energy(double dt) const;
+  double step_load_energy(double dt);
 
   const integrators::SecondOrderSystem& system_;
   double acceleration_energy_ = 0.0;
@@ -85,6 +85,7 @@ class EnergyBalance : public Observer {
   bool started_ = false;
   integrators::State previous_;
   Vector previous_external_, external_, work_, average_, step_;
+  Vector inverse_mass_;       // 1 / m_i of the lumped masses, 0 where none (step_load_energy)
   Vector step_force_weight_;  // by row: 1 for a step-average force, else 0 (empty: none)
   Vector average_force_;
   // K u at this step and the previous one: with Rayleigh damping the damping work follows from
