@@ -30,6 +30,33 @@ Eigen::SparseMatrix<double> static_tangent(const StructuralSystem& system,
   return tangent;
 }
 
+namespace {
+
+// Newton's correction du (with hard contacts, their new multipliers too); false: a mechanism.
+bool newton_correction(const StaticHardContacts& hard, const Eigen::SparseMatrix<double>& matrix,
+                       const Vector& residual, const Vector& delta, Vector& correction,
+                       Vector& multipliers) {
+  if (hard.any()) return hard.solve(matrix, residual, delta, correction, multipliers);
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
+  solver.compute(matrix);
+  if (solver.info() != Eigen::Success) return false;
+  correction = solver.solve(residual);
+  return correction.allFinite();
+}
+
+SolveError mechanism(double time, const integrators::LinkSet& links) {
+  bool friction = false;
+  for (Index k = 0; k < links.count(); ++k) friction = friction || links.has_friction(k);
+  return SolveError(time, fmt::format("static equilibrium: the structure is not held under the "
+                                      "initial loads (a mechanism: add supports, or links in "
+                                      "contact{})",
+                                      friction ? "; friction holds no more than mu R_n, and a "
+                                                 "load past it slides the structure away"
+                                               : ""));
+}
+
+}  // namespace
+
 StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
                                      double relative_tolerance, int max_iterations) {
   const Index n = system.size();
@@ -76,16 +103,6 @@ StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
   auto with_hard = [&](const Vector& residual, const Vector& multipliers) {
     return hard.any() ? Vector(residual - b.transpose() * multipliers) : residual;
   };
-  bool friction = false;
-  for (Index k = 0; k < links.count(); ++k) friction = friction || links.has_friction(k);
-  auto mechanism = [time, friction]() {
-    return SolveError(time, fmt::format("static equilibrium: the structure is not held under the "
-                                        "initial loads (a mechanism: add supports, or links in "
-                                        "contact{})",
-                                        friction ? "; friction holds no more than mu R_n, and a "
-                                                   "load past it slides the structure away"
-                                                 : ""));
-  };
 
   // The loads in increments, each committed: friction links follow the loading path, as in a
   // structure loaded slowly; a line search keeps Newton from cycling between contact states.
@@ -112,16 +129,9 @@ StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
                                            "(unbalanced force {:.3g} of {:.3g})",
                                            max_iterations, 100 * increment / increments,
                                            std::max(result.unbalanced_force, violation), scale));
-      const Eigen::SparseMatrix<double> matrix = static_tangent(system, tangent);
-      if (hard.any()) {
-        if (!hard.solve(matrix, residual, delta, correction, multipliers)) throw mechanism();
-      } else {
-        Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
-        solver.compute(matrix);
-        if (solver.info() != Eigen::Success) throw mechanism();
-        correction = solver.solve(residual);
-        if (!correction.allFinite()) throw mechanism();
-      }
+      if (!newton_correction(hard, static_tangent(system, tangent), residual, delta, correction,
+                             multipliers))
+        throw mechanism(time, links);
       const Vector start_multipliers = hard.multipliers();
       const double merit = result.unbalanced_force + violation;
       double step = 1.0;
