@@ -37,6 +37,8 @@ scaled so that the load factor is the base shear. Writes into DIR (default out/<
   pushover.json  initial stiffness, first yield, peak base shear, final slope
 (`python3 tools/plot_pushover.py DIR` draws the curve: pushover.png)
 A push that cannot reach D (a mechanism) writes the curve up to there and exits with code 3.
+A model with hard contacts is refused (they have no force law for the push; give them a penalty
+law such as gap_spring for it).
 
 options)";
 
@@ -247,6 +249,16 @@ int pushover_command(const Arguments& arguments) {
       throw error.file().empty() ? error.in_file(request.model_path) : error;
     }
   }();
+  // The push's Newton takes each link's force law; a hard contact has none, so it would let the
+  // structure pass through it (the hard-contact bridge pushed 0.3 m through its joints).
+  for (Index k = 0; k < system.links().count(); ++k)
+    if (system.links().law(k).is_hard_contact())
+      throw InputError(request.model_path,
+                       loaded.built.link_origins.at(static_cast<std::size_t>(k)),
+                       fmt::format("link '{}' is a hard_contact, which a pushover does not take "
+                                   "yet (it would push through it); give it a penalty law (e.g. "
+                                   "gap_spring) for the pushover",
+                                   loaded.built.model.links.at(static_cast<std::size_t>(k)).id));
   const int direction = request.direction == "x" ? 0 : 1;
   const Index control = system.dofs().equation(node->second, direction);
   if (control < 0)

@@ -1,5 +1,5 @@
 // `pound pushover`: the capacity curve of the bundled hinged bridge, written with its summary;
-// bad requests are refused before anything is written.
+// bad requests, and models with hard contacts, are refused before anything is written.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -45,6 +45,21 @@ TEST_F(PushoverCommand, BadRequestsAreRefusedAndNothingIsWritten) {
   EXPECT_EQ(outcome.exit_code, 1);
   outcome = run({"--node", "bridge.p1.top", "--to", "0.01", "--pattern", "wavy"});
   EXPECT_EQ(outcome.exit_code, 1);
+  EXPECT_FALSE(std::filesystem::exists(path("out")));
+}
+
+// A hard contact has no force law for the push's Newton: the bundled hard-contact bridge was
+// pushed 0.3 m through its joints (peak base shear 3.1 MN against 15.1 MN with its gap springs).
+// Refused with the file, the link's entry and a way out, and nothing written.
+TEST_F(PushoverCommand, AModelWithHardContactsIsRefusedNamingTheLink) {
+  const Outcome outcome = pound(
+      {"pushover", std::string(POUND_SOURCE_DIR) + "/models/three_span_bridge_hard_contact.json",
+       "--node", "bridge.g1.n2", "--to", "0.3", "--out", path("out").string()});
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_TRUE(contains(outcome.err,
+                       "three_span_bridge_hard_contact.json: /generators/0: link "
+                       "'bridge.joint1' is a hard_contact"))
+      << outcome.err;
   EXPECT_FALSE(std::filesystem::exists(path("out")));
 }
 
