@@ -71,8 +71,11 @@ void EnergyBalance::record(const integrators::State& state) {
       terms_.algorithmic = acceleration_energy_ * dt * dt *
                            (mass_norm(state.acceleration) - initial_acceleration_norm_);
     }
-    terms_.round_off =
-        std::max(terms_.round_off, 1e-9 * step_load_energy(state.time - previous_.time));
+    // Sampled: a floor needs no exact maximum, and on the smallest models (two DOFs) taking it
+    // every step cost 8 % of the solve.
+    if (recorded_steps_++ % kRoundOffStride == 0)
+      terms_.round_off =
+          std::max(terms_.round_off, 1e-9 * step_load_energy(state.time - previous_.time));
     step_ = state.displacement - previous_.displacement;
     const Vector& step = step_;
     terms_.input += 0.5 * step.dot(external_ + previous_external_);

@@ -29,7 +29,8 @@ struct EnergyTerms {
   double algorithmic = 0.0;  // c dt^2 a^T M a now less at the start (0: trapezoidal rule)
   double initial = 0.0;      // kinetic + strain at the start
   // Energies below this are round-off: 1e-9 of the kinetic energy the loads would give the
-  // lumped masses in one step, 1/2 sum (f_i dt)^2 / m_i, at its largest over the run. A block
+  // lumped masses in one step, 1/2 sum (f_i dt)^2 / m_i, at its largest over the run (sampled
+  // at the first step and every 64th). A block
   // held at rest by hard contacts has no energy at all, and its terms' round-off (1e-22 J) must
   // not read as 100 % of the largest.
   double round_off = 0.0;
@@ -85,7 +86,9 @@ class EnergyBalance : public Observer {
   bool started_ = false;
   integrators::State previous_;
   Vector previous_external_, external_, work_, average_, step_;
-  Vector inverse_mass_;       // 1 / m_i of the lumped masses, 0 where none (step_load_energy)
+  Vector inverse_mass_;  // 1 / m_i of the lumped masses, 0 where none (step_load_energy)
+  static constexpr long kRoundOffStride = 64;  // steps between samples of the round-off floor
+  long recorded_steps_ = 0;                    // since the start
   Vector step_force_weight_;  // by row: 1 for a step-average force, else 0 (empty: none)
   Vector average_force_;
   // K u at this step and the previous one: with Rayleigh damping the damping work follows from
