@@ -12,6 +12,7 @@
 #include "core/errors.hpp"
 
 namespace pound::assembly {
+
 void hold_unheld_dofs(Eigen::SparseMatrix<double>& tangent) {
   if (tangent.size() == 0) return;
   const double largest = tangent.diagonal().cwiseAbs().maxCoeff();
@@ -99,10 +100,8 @@ StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
     residual = applied - stiffness_force - link_force;
     return std::max(applied.norm(), link_force.norm());
   };
-  // With the hard contacts' forces: the structure's unbalanced force, and a step's merit.
-  auto with_hard = [&](const Vector& residual, const Vector& multipliers) {
-    return hard.any() ? Vector(residual - b.transpose() * multipliers) : residual;
-  };
+  // The hard contacts' load on the structure, B^T lambda (zero without them).
+  auto hard_load = [&]() { return Vector(b.transpose() * hard.multipliers()); };
 
   // The loads in increments, each committed: friction links follow the loading path, as in a
   // structure loaded slowly; a line search keeps Newton from cycling between contact states.
@@ -110,15 +109,15 @@ StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
   // wherever they touch: one increment, in which every such link slips.
   const bool sliding = rate.size() > 0 && rate.any();
   const int increments = sliding ? 1 : 10;
-  Vector residual(n), trial_residual(n), trial(n), correction(n), multipliers, trial_multipliers;
+  Vector residual(n), trial_residual(n), trial(n), correction(n), multipliers;
   for (int increment = 1; increment <= increments; ++increment) {
     const Vector applied = (static_cast<double>(increment) / increments) * load;
     double scale = std::max(load.norm(), unbalanced(u, applied, residual));
     for (int iteration = 0;; ++iteration) {
       const bool settled = hard.choose(delta);
-      const Vector hard_force = with_hard(residual, hard.multipliers()) - residual;
+      const Vector hard_force = hard_load();
       scale = std::max(scale, hard_force.norm());
-      result.unbalanced_force = (residual + hard_force).norm();
+      result.unbalanced_force = (residual - hard_force).norm();
       const double violation = hard.violation(delta);
       if (settled && result.unbalanced_force <= relative_tolerance * scale &&
           violation <= relative_tolerance * scale)
@@ -138,12 +137,9 @@ StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
       for (int halving = 0;; ++halving) {
         trial = u + step * correction;
         scale = std::max(load.norm(), unbalanced(trial, applied, trial_residual));
-        if (hard.any()) {
-          trial_multipliers = start_multipliers + step * (multipliers - start_multipliers);
-          hard.set_multipliers(trial_multipliers);
-        }
-        const double trial_merit =
-            with_hard(trial_residual, hard.multipliers()).norm() + hard.violation(delta);
+        if (hard.any())
+          hard.set_multipliers(start_multipliers + step * (multipliers - start_multipliers));
+        const double trial_merit = (trial_residual - hard_load()).norm() + hard.violation(delta);
         if (trial_merit < merit || halving == 12) break;
         step *= 0.5;
       }

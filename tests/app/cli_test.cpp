@@ -186,6 +186,13 @@ TEST_F(Cli, HardContactUnderNewmarkBalancesEnergy) {
   }
 }
 
+// The block's x displacement in the last row of its node history (time, x, ...).
+double last_block_position(const fs::path& history_file) {
+  const std::string history = read_text(history_file);
+  const std::string last = history.substr(history.rfind('\n', history.size() - 2) + 1);
+  return std::stod(last.substr(last.find(',') + 1));
+}
+
 // The bundled block on a rough floor with a hard contact in place of its penalty: under the
 // explicit and an implicit integrator it stops at v^2 / (2 mu g) and its contact's work is the
 // kinetic energy it had (central difference's balance measures the start's friction force over
@@ -203,9 +210,7 @@ TEST_F(Cli, HardContactWithFrictionStopsABlockWhereMuGSays) {
     ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
     const json summary = json::parse(read_text(out / "summary.json"));
     const json& energy = summary["energy"];
-    const std::string history = read_text(out / "block.csv");
-    const std::string last = history.substr(history.rfind('\n', history.size() - 2) + 1);
-    const double position = std::stod(last.substr(last.find(',') + 1));
+    const double position = last_block_position(out / "block.csv");
     std::cout << integrator << ": stopped at " << position << " (exact " << stop
               << "), contact work " << energy["links"] << " of 20, balance error "
               << energy["balance_error"] << "\n";
@@ -235,9 +240,7 @@ TEST_F(Cli, ABlockOnAHardContactStartsFromItsStaticStateAndStaysAtRest) {
     ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
     EXPECT_FALSE(contains(outcome.err, "warning")) << outcome.err;
     const json summary = json::parse(read_text(out / "summary.json"));
-    const std::string history = read_text(out / "block.csv");
-    const std::string last = history.substr(history.rfind('\n', history.size() - 2) + 1);
-    const double position = std::stod(last.substr(last.find(',') + 1));
+    const double position = last_block_position(out / "block.csv");
     const double peak = summary["links"][0]["peak_force"].get<double>();
     std::cout << integrator << ": at rest, moved " << position << ", contact peak force " << peak
               << " (weight 98.1), created fraction "

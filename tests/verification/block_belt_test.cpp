@@ -36,6 +36,17 @@ builder::ModelSpec hard_belt_model(const std::string& integrator, double time_st
   return io::parse_model(model.dump(), "hard_belt.json");
 }
 
+// The worst elongation error, over Pi, against the rigid block on its spring sliding at mu P:
+// 1 + Pi sin(omega t), time in spring periods.
+double rigid_block_error(const BlockBeltPoint& point, double speed) {
+  double worst = 0.0;
+  for (std::size_t k = 0; k < point.time.size(); ++k) {
+    const double exact = 1.0 + speed * std::sin(2 * std::numbers::pi * point.time[k]);
+    worst = std::max(worst, std::abs(point.elongation[k] - exact) / speed);
+  }
+  return worst;
+}
+
 TEST(BlockBelt, ReadsTheScenesNumbersOffTheModel) {
   const BlockBeltScene scene = block_belt_scene(belt_model());
   EXPECT_NEAR(scene.mass, 7.85e-9 * 40 * 20 * 10, 1e-18);
@@ -67,11 +78,7 @@ TEST(BlockBelt, TheBlockOscillatesOnItsSpringAsARigidBlockWouldAtHighSpeed) {
     const BlockBeltPoint point = run_block_belt(belt_model(), speed, options);
     ASSERT_GT(point.time.size(), 100u);
     EXPECT_NEAR(point.elongation.front(), 1.0, 1e-3);  // the static initial state
-    double worst = 0.0;
-    for (std::size_t k = 0; k < point.time.size(); ++k) {
-      const double exact = 1.0 + speed * std::sin(2 * std::numbers::pi * point.time[k]);
-      worst = std::max(worst, std::abs(point.elongation[k] - exact) / speed);
-    }
+    const double worst = rigid_block_error(point, speed);
     std::cout << fmt::format(
         "Pi = {:g}: elongation against 1 + Pi sin(omega t): worst error "
         "{:.2e} of Pi over one period ({} steps)\n",
@@ -93,11 +100,7 @@ TEST(BlockBelt, HardContactsUnderImplicitIntegratorsFollowTheRigidBlock) {
       const BlockBeltPoint point =
           run_block_belt(hard_belt_model(integrator, 1e-6), speed, options);
       ASSERT_GT(point.time.size(), 100u);
-      double worst = 0.0;
-      for (std::size_t k = 0; k < point.time.size(); ++k) {
-        const double exact = 1.0 + speed * std::sin(2 * std::numbers::pi * point.time[k]);
-        worst = std::max(worst, std::abs(point.elongation[k] - exact) / speed);
-      }
+      const double worst = rigid_block_error(point, speed);
       std::cout << fmt::format(
           "{}, hard contacts, Pi = {:g}: start {:.2e} off mu P; elongation against "
           "1 + Pi sin(omega t): worst error {:.2e} of Pi; mu_dyn/mu_st {:.5f}; peak lift {:.1e} "
