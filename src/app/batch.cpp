@@ -20,6 +20,7 @@
 #include "io/case_rows.hpp"
 #include "io/document.hpp"
 #include "io/folder_lock.hpp"
+#include "io/ground_motion_reader.hpp"
 #include "io/json_reader.hpp"
 #include "io/model_reader.hpp"
 #include "io/output.hpp"
@@ -39,14 +40,18 @@ std::string scale_text(const builder::ExcitationSpec& e) {
 }
 
 // Every file the results depend on (the set, its models, its records), with its content hash.
-std::vector<io::InputFile> input_files(const builder::SetSpec& set) {
+std::vector<io::InputFile> input_files(const builder::SetSpec& set,
+                                       const std::optional<std::string>& set_text) {
   std::vector<io::InputFile> inputs;
   auto add = [&](const std::string& path) {
     for (const io::InputFile& known : inputs)
       if (known.path == path) return;
     inputs.push_back({path, io::file_hash(path)});
   };
-  add(set.source);
+  if (set_text)
+    inputs.push_back({set.source, io::sha1_hex(*set_text)});
+  else
+    add(set.source);
   for (const builder::BatchModel& model : set.models) add(model.path);
   for (const builder::BatchRecord& record : set.records) add(record.excitation.record);
   return inputs;
@@ -233,7 +238,7 @@ io::FolderLock lock_out_folder(const BatchOptions& options, const builder::SetSp
   io::create_output_folder(out);
   io::FolderLock lock(out);
   // Checked again under the lock: another batch may have started in the folder meanwhile.
-  const std::vector<io::InputFile> inputs = input_files(set);
+  const std::vector<io::InputFile> inputs = input_files(set, options.set_text);
   const std::string plan = plan_text(set, cases, inputs);
   check_out_folder(options, plan, inputs);
   io::remove_folder((fs::path(out) / ".partial").string());  // cases a killed run left unfinished
@@ -415,7 +420,8 @@ void write_batch_results(const builder::SetSpec& set, const std::vector<builder:
 
 BatchReport run_batch(const BatchOptions& options, const Cluster& cluster) {
   // Everything wrong with the set or its models is found before anything is written.
-  const builder::SetSpec set = io::read_set_file(options.set_path);
+  const builder::SetSpec set = options.set_text ? io::parse_set(*options.set_text, options.set_path)
+                                                : io::read_set_file(options.set_path);
   for (const builder::BatchModel& model : set.models) (void)io::read_model_file(model.path);
   const std::vector<builder::BatchCase> cases = builder::plan_cases(set);
   const std::optional<io::FolderLock> lock = open_out_folder(options, set, cases, cluster);

@@ -11,6 +11,7 @@
 // of ranks; only run_time_s varies.
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "app/cluster.hpp"
@@ -27,6 +28,9 @@ struct BatchProgress {
 
 struct BatchOptions {
   std::string set_path;
+  // The set's JSON, when it is not read from set_path (which then names it in messages and is
+  // where its relative paths start): the Python module's sets from dicts.
+  std::optional<std::string> set_text;
   std::string out;
   int jobs = 0;         // worker threads per rank; 0: every core, or 1 per rank under MPI
   bool resume = false;  // keep the complete cases of an earlier run of the same set

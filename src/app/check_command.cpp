@@ -9,6 +9,7 @@
 #include "app/command_line.hpp"
 #include "app/commands.hpp"
 #include "app/model_loading.hpp"
+#include "app/model_queries.hpp"
 #include "builder/start_check.hpp"
 #include "core/errors.hpp"
 #include "io/document.hpp"
@@ -137,6 +138,27 @@ std::string model_path_of(const std::string& pointer, const verification::ModelC
 
 }  // namespace
 
+ModelFindings check_findings(const LoadedModel& loaded, const std::string& model_path) {
+  std::unique_ptr<assembly::StructuralSystem> system;
+  try {
+    system = std::make_unique<assembly::StructuralSystem>(loaded.built.model);
+  } catch (const InputError& error) {
+    throw error.file().empty() ? error.in_file(model_path) : error;
+  }
+  verification::ModelCheck check = verification::check_model(loaded.built, *system, true);
+  // After the diagnostics: the first step leaves the laws committed at the start, as a run does.
+  builder::AnalysisSpec analysis = loaded.built.analysis;
+  builder::settle_time_step(analysis, loaded.built.model, *system, model_path);
+  builder::check_first_step(loaded.built, analysis, *system, model_path);
+  io::Document document = check_document(model_path, check);
+  if (!document.non_finite().empty())
+    throw InputError(model_path, model_path_of(document.non_finite().front(), check, loaded.built),
+                     fmt::format("the model's numbers overflow: its check finds {} not finite (a "
+                                 "mass, stiffness or load far beyond physical ones?)",
+                                 document.non_finite().front()));
+  return {std::move(check), std::move(document)};
+}
+
 int check_command(const Arguments& arguments) {
   po::options_description options(kCheckUsage);
   std::string model_path;
@@ -149,26 +171,10 @@ int check_command(const Arguments& arguments) {
     std::cerr << "pound check: name a model file (see `pound check --help`)\n";
     return 1;
   }
-  LoadedModel loaded = load_model(model_path);
-  std::unique_ptr<assembly::StructuralSystem> system;
-  try {
-    system = std::make_unique<assembly::StructuralSystem>(loaded.built.model);
-  } catch (const InputError& error) {
-    throw error.file().empty() ? error.in_file(model_path) : error;
-  }
-  const verification::ModelCheck check = verification::check_model(loaded.built, *system, true);
-  // After the diagnostics: the first step leaves the laws committed at the start, as a run does.
-  builder::AnalysisSpec analysis = loaded.built.analysis;
-  builder::settle_time_step(analysis, loaded.built.model, *system, model_path);
-  builder::check_first_step(loaded.built, analysis, *system, model_path);
-  const io::Document document = check_document(model_path, check);
-  if (!document.non_finite().empty())
-    throw InputError(model_path, model_path_of(document.non_finite().front(), check, loaded.built),
-                     fmt::format("the model's numbers overflow: its check finds {} not finite (a "
-                                 "mass, stiffness or load far beyond physical ones?)",
-                                 document.non_finite().front()));
-  std::cout << (vm.count("json") ? document.dump() + "\n" : check_text(model_path, check));
-  return vm.count("strict") && !check.warnings.empty() ? 1 : 0;
+  const ModelFindings findings = check_findings(load_model(model_path), model_path);
+  std::cout << (vm.count("json") ? findings.document.dump() + "\n"
+                                 : check_text(model_path, findings.check));
+  return vm.count("strict") && !findings.check.warnings.empty() ? 1 : 0;
 }
 
 }  // namespace pound::app

@@ -37,9 +37,24 @@ void check_model_fits(const builder::ModelSpec& spec, const std::string& path) {
                                  size.dofs, size.nodes, size.largest_nodes, *shortfall));
 }
 
+// The SHA-1 of a record's values and sampling as bytes, so that a run from values can be traced to
+// them as a file's run is to its bytes.
+std::string sample_hash(const MotionOverride& samples) {
+  std::string bytes;
+  auto append = [&bytes](const std::vector<double>& values) {
+    bytes.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(double));
+  };
+  append(*samples.accelerations);
+  append(samples.times);
+  if (samples.time_step) append({*samples.time_step});
+  return io::sha1_hex(bytes);
+}
+
 // Reads the records of `loaded.spec` and builds it. `first_as_given`: the first record's path is
 // the caller's (relative to where pound runs), not relative to the model file.
-void read_records_and_build(const std::string& path, bool first_as_given, LoadedModel& loaded) {
+// `given_samples`: the first record is these values, not a file.
+void read_records_and_build(const std::string& path, bool first_as_given, LoadedModel& loaded,
+                            const MotionOverride* given_samples = nullptr) {
   const builder::ModelSpec& spec = loaded.spec;
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
   for (std::size_t k = 0; k < spec.excitations.size(); ++k) {
@@ -55,6 +70,13 @@ void read_records_and_build(const std::string& path, bool first_as_given, Loaded
     format.time_column = e.time_column;
     format.units = io::parse_acceleration_unit(e.units);
     loaded.record_paths.push_back(record);
+    if (k == 0 && given_samples) {
+      loaded.records.push_back(io::ground_motion_from_samples(
+          record, *given_samples->accelerations, given_samples->time_step, given_samples->times,
+          format.units, spec.units.gravity()));
+      loaded.record_sources.push_back({"samples", sample_hash(*given_samples)});
+      continue;
+    }
     try {
       loaded.records.push_back(io::read_ground_motion(record, format, spec.units.gravity(),
                                                       &loaded.record_sources.emplace_back()));
@@ -94,19 +116,31 @@ void override_motion(const MotionOverride& motion, builder::ModelSpec& spec) {
   }
 }
 
+LoadedModel load_model_spec(builder::ModelSpec spec, const std::string& path,
+                            const std::optional<MotionOverride>& motion_override) {
+  LoadedModel loaded;
+  loaded.spec = std::move(spec);
+  check_model_fits(loaded.spec, path);
+  const MotionOverride* samples = nullptr;
+  if (motion_override) {
+    override_motion(*motion_override, loaded.spec);
+    loaded.first_record_replaced_by = motion_override->replaced_by;
+    if (motion_override->accelerations) samples = &*motion_override;
+  }
+  read_records_and_build(path, motion_override.has_value(), loaded, samples);
+  return loaded;
+}
+
 }  // namespace
 
 LoadedModel load_model(const std::string& path,
                        const std::optional<MotionOverride>& motion_override) {
-  LoadedModel loaded;
-  loaded.spec = io::read_model_file(path);
-  check_model_fits(loaded.spec, path);
-  if (motion_override) {
-    override_motion(*motion_override, loaded.spec);
-    loaded.first_record_replaced_by = "--motion";
-  }
-  read_records_and_build(path, motion_override.has_value(), loaded);
-  return loaded;
+  return load_model_spec(io::read_model_file(path), path, motion_override);
+}
+
+LoadedModel load_model_text(const std::string& text, const std::string& path,
+                            const std::optional<MotionOverride>& motion_override) {
+  return load_model_spec(io::parse_model(text, path), path, motion_override);
 }
 
 LoadedModel load_model_with_record(const std::string& path, const builder::ExcitationSpec& record) {

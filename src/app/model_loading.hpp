@@ -31,6 +31,11 @@ struct MotionOverride {
   std::optional<double> time_step;
   bool time_column = false;
   std::optional<double> scale_factor, target_pga;  // target in g
+  // A record given as values (the Python module's arrays), still in `units` (default g), read
+  // instead of a file; `path` then names it in outputs.
+  std::optional<std::vector<double>> accelerations;
+  std::vector<double> times;             // of the samples, when `time_step` is not given
+  std::string replaced_by = "--motion";  // who replaced the record, for the run's report
 };
 
 // `motion_override`: a record path replacing the first excitation's record (or adding a uniform
@@ -41,6 +46,10 @@ std::optional<std::string> memory_shortfall(double dofs);
 
 LoadedModel load_model(const std::string& path,
                        const std::optional<MotionOverride>& motion_override = {});
+
+// Same from the model's JSON text, named `path` in messages; records relative to its folder.
+LoadedModel load_model_text(const std::string& text, const std::string& path,
+                            const std::optional<MotionOverride>& motion_override = {});
 
 // A batch case: `record` (its path as the program opens it, format, units, scale and IDA
 // factor) replaces the first excitation's; the model keeps its direction, supports and wave

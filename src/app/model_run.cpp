@@ -14,6 +14,7 @@
 #include "core/errors.hpp"
 #include "core/stopwatch.hpp"
 #include "io/output.hpp"
+#include "io/output_paths.hpp"
 #include "io/run_summary_document.hpp"
 #include "io/system_memory.hpp"
 #include "model/ground_motion.hpp"
@@ -63,7 +64,9 @@ PreparedRun prepare(const RunRequest& request) {
   const Stopwatch stopwatch;
   const std::string& model_path = request.model_path;
   PreparedRun run{request.record ? load_model_with_record(model_path, *request.record)
-                                 : load_model(model_path, request.motion)};
+                  : request.model_text
+                      ? load_model_text(*request.model_text, model_path, request.motion)
+                      : load_model(model_path, request.motion)};
   if (request.before_run) request.before_run(run.loaded);
   builder::BuiltModel& built = run.loaded.built;
   if (request.max_steps > 0) built.analysis.max_steps = request.max_steps;
@@ -297,8 +300,12 @@ RunOutcome summarise(const RunRequest& request, const PreparedRun& run, const So
   outcome.warnings = summary.warnings;
   outcome.failure = summary.status.failure;
   outcome.failure_time = summary.status.end_time;
-  for (const auto& recorder : run.observers->recorders())
+  for (std::size_t k = 0; k < run.observers->recorders().size(); ++k) {
+    const auto& recorder = run.observers->recorders()[k];
     outcome.histories.emplace_back(recorder->file(), recorder->table());
+    const builder::ResolvedRecorder& spec = built.recorders.at(k);
+    outcome.recorded.push_back({spec.kind, spec.envelope});
+  }
   outcome.setup_s = run.setup_s;
   summarise_record(run.loaded, request.intensity, outcome.case_summary);
   results::summarise_case(summary, outcome.case_summary);
@@ -311,6 +318,29 @@ RunOutcome run_model(const RunRequest& request) {
   PreparedRun run = prepare(request);
   const Solved solved = solve(run);
   return summarise(request, run, solved);
+}
+
+// summary.json, ensemble.json and the recorders' CSVs in `out`: none may be the model, a record or
+// another output (a record named like a recorder's file in the folder given as --out).
+void check_run_outputs(const std::string& out, const RunRequest& request, const LoadedModel& loaded,
+                       bool ensemble) {
+  namespace fs = std::filesystem;
+  std::vector<io::NamedPath> inputs{{request.model_path, "the model"}};
+  for (std::size_t k = 0; k < loaded.record_paths.size(); ++k)
+    inputs.push_back({loaded.record_paths[k],
+                      k == 0 && request.motion
+                          ? request.motion->replaced_by
+                          : fmt::format("{}: /excitations/{}/record", request.model_path, k)});
+  std::vector<io::NamedPath> outputs{{(fs::path(out) / "summary.json").string(), "--out"}};
+  if (ensemble) outputs.push_back({(fs::path(out) / "ensemble.json").string(), "--out"});
+  const auto& recorders = loaded.built.recorders;
+  const bool named_in_model =
+      loaded.spec.recorders_given && loaded.spec.recorders.size() == recorders.size();
+  for (std::size_t k = 0; k < recorders.size(); ++k)
+    outputs.push_back(
+        {(fs::path(out) / recorders[k].file).string(),
+         named_in_model ? fmt::format("{}: /recorders/{}/file", request.model_path, k) : "--out"});
+  io::check_outputs_apart(inputs, outputs);
 }
 
 void write_run_outputs(const std::string& folder, const RunOutcome& outcome,

@@ -18,6 +18,9 @@ namespace pound::app {
 
 struct RunRequest {
   std::string model_path;
+  // The model's JSON, when it is not read from model_path (which then only names it in messages
+  // and is where its records are found from): the Python module's models from dicts.
+  std::optional<std::string> model_text;
   std::optional<MotionOverride> motion;           // `pound run --motion` and its options
   std::optional<builder::ExcitationSpec> record;  // a batch case's record (replaces `motion`)
   long max_steps = 0;                             // 0: the model's
@@ -35,6 +38,12 @@ struct RunRequest {
 struct RunOutcome {
   io::Document summary;                                  // summary.json
   std::vector<std::pair<std::string, Table>> histories;  // file name, table
+  // What each of `histories` records: the recorder's kind and whether it keeps an envelope.
+  struct Recorded {
+    builder::RecorderKind kind = builder::RecorderKind::link;
+    bool envelope = false;
+  };
+  std::vector<Recorded> recorded;
   std::string headline;  // "pound run MODEL: DOFs, steps, Newton iterations, run time"
   std::string report;    // the lines `pound run` prints after the headline
   std::vector<std::string> warnings;
@@ -47,6 +56,11 @@ struct RunOutcome {
 // Reads, builds and runs. Input errors throw InputError before anything runs; a failed analysis
 // (SolveError) is an outcome with `failure` set and the histories up to then.
 RunOutcome run_model(const RunRequest& request);
+
+// Throws InputError when one of a run's outputs in `out` (summary.json, ensemble.json with
+// `ensemble`, the recorders' files) would overwrite the model, a record or another output.
+void check_run_outputs(const std::string& out, const RunRequest& request, const LoadedModel& loaded,
+                       bool ensemble);
 
 // summary.json and the history CSVs into `folder` (created if needed): written under temporary
 // names, then renamed into place together, summary.json last.

@@ -9,6 +9,7 @@
 #include "app/command_line.hpp"
 #include "app/commands.hpp"
 #include "app/model_loading.hpp"
+#include "app/model_queries.hpp"
 #include "assembly/modal_analysis.hpp"
 #include "builder/start_check.hpp"
 #include "core/errors.hpp"
@@ -151,6 +152,22 @@ io::Document modes_document(const std::string& model_path, Index dofs, const Lis
 
 }  // namespace
 
+ModalFindings modal_findings(const LoadedModel& loaded, const std::string& model_path, int count) {
+  const std::unique_ptr<assembly::StructuralSystem> system = assemble(loaded, model_path);
+  ListedModes modes;
+  try {
+    modes = list_modes(*system, loaded.built.model.nodes.size(), count);
+  } catch (const assembly::NotPositiveDefinite& failure) {
+    throw builder::not_held_error(loaded.built, system->dofs(), failure,
+                                  "the condensation of the massless DOFs", model_path);
+  } catch (const assembly::ModalAnalysisError& error) {
+    throw builder::extreme_mode_error(loaded.built, *system, error.what(), model_path);
+  }
+  return {modes_document(model_path, system->size(), modes),
+          shapes_table(loaded, *system, modes.modes),
+          modes_table(model_path, system->size(), modes)};
+}
+
 int modes_command(const Arguments& arguments) {
   po::options_description options(kModesUsage);
   std::string model_path;
@@ -178,26 +195,13 @@ int modes_command(const Arguments& arguments) {
     for (const std::string& record : loaded.record_paths) inputs.push_back({record, "a record"});
     io::check_outputs_apart(inputs, {{shapes, "--shapes"}});
   }
-  const std::unique_ptr<assembly::StructuralSystem> system = assemble(loaded, model_path);
-  ListedModes modes;
-  try {
-    modes = list_modes(*system, loaded.built.model.nodes.size(), count);
-  } catch (const assembly::NotPositiveDefinite& failure) {
-    throw builder::not_held_error(loaded.built, system->dofs(), failure,
-                                  "the condensation of the massless DOFs", model_path);
-  } catch (const assembly::ModalAnalysisError& error) {
-    throw builder::extreme_mode_error(loaded.built, *system, error.what(), model_path);
-  }
+  const ModalFindings findings = modal_findings(loaded, model_path, count);
   if (!shapes.empty()) {
     io::StagedFiles file;
-    file.write_table(shapes, shapes_table(loaded, *system, modes.modes));
+    file.write_table(shapes, findings.shapes);
     file.commit();
   }
-  if (vm.count("json")) {
-    std::cout << modes_document(model_path, system->size(), modes).dump() << "\n";
-  } else {
-    std::cout << modes_table(model_path, system->size(), modes);
-  }
+  std::cout << (vm.count("json") ? findings.document.dump() + "\n" : findings.text);
   return 0;
 }
 

@@ -80,29 +80,6 @@ std::string request_error(const RunRequest& request) {
   return {};
 }
 
-// summary.json, ensemble.json and the recorders' CSVs in `out`: none may be the model, a record or
-// another output (a record named like a recorder's file in the folder given as --out).
-void check_run_outputs(const std::string& out, const RunRequest& request, const LoadedModel& loaded,
-                       bool ensemble) {
-  namespace fs = std::filesystem;
-  std::vector<io::NamedPath> inputs{{request.model_path, "the model"}};
-  for (std::size_t k = 0; k < loaded.record_paths.size(); ++k)
-    inputs.push_back({loaded.record_paths[k],
-                      k == 0 && request.motion
-                          ? "--motion"
-                          : fmt::format("{}: /excitations/{}/record", request.model_path, k)});
-  std::vector<io::NamedPath> outputs{{(fs::path(out) / "summary.json").string(), "--out"}};
-  if (ensemble) outputs.push_back({(fs::path(out) / "ensemble.json").string(), "--out"});
-  const auto& recorders = loaded.built.recorders;
-  const bool named_in_model =
-      loaded.spec.recorders_given && loaded.spec.recorders.size() == recorders.size();
-  for (std::size_t k = 0; k < recorders.size(); ++k)
-    outputs.push_back(
-        {(fs::path(out) / recorders[k].file).string(),
-         named_in_model ? fmt::format("{}: /recorders/{}/file", request.model_path, k) : "--out"});
-  io::check_outputs_apart(inputs, outputs);
-}
-
 // Prints the run's report and warnings; the exit code: 3 when the analysis failed.
 int report_outcome(const RunOutcome& outcome, const std::string& model_path, const std::string& out,
                    bool quiet) {

@@ -9,6 +9,7 @@
 #include "app/command_line.hpp"
 #include "app/commands.hpp"
 #include "app/model_loading.hpp"
+#include "app/rod_impact_request.hpp"
 #include "builder/spec.hpp"
 #include "core/errors.hpp"
 #include "integrators/integrator_catalog.hpp"
@@ -227,20 +228,6 @@ int verify_block_belt(const VerifyOptions& options) {
   return 0;
 }
 
-// What is wrong with the numbers of a rod-impact run, if anything.
-std::optional<std::string> rod_impact_option_error(const VerifyOptions& options) {
-  if (options.elements < 1) return "--n must be >= 1";
-  if (const auto shortfall = memory_shortfall(2.0 * (options.elements + 1.0)))
-    return fmt::format("--n {}: the rods would {}", options.elements, *shortfall);
-  if (!(options.stiffness_ratio > 0.0)) return "--k-ratio must be > 0";
-  if (!(options.dt_ratio > 0.0)) return "--dt-ratio must be > 0";
-  if (options.courant_given && !(options.courant > 0.0)) return "--courant must be > 0";
-  if (!(options.duration_ratio >= 1.5)) return "--duration-ratio must be >= 1.5 (the error window)";
-  if (!(options.tolerance > 0.0)) return "--tolerance must be > 0";
-  if (!(options.eta >= 0.0)) return "--eta must be >= 0";
-  return std::nullopt;
-}
-
 int verify_rod_impact_study(const std::string& study, bool json) {
   if (study != "kawashima" && study != "penalty")
     return usage_error(fmt::format("unknown study '{}' (known: kawashima, penalty)", study));
@@ -254,49 +241,37 @@ int verify_rod_impact_study(const std::string& study, bool json) {
   return 0;
 }
 
-// The run the options describe into `run`, or what is wrong with them.
-std::optional<std::string> set_up_rod_impact(const VerifyOptions& options,
-                                             verification::RodImpactOptions& run) {
-  try {
-    run.pair = verification::rod_impact_case(options.case_name, options.elements,
-                                             options.stiffness_ratio, options.law, options.eta);
-  } catch (const std::invalid_argument& error) {
-    return error.what();
-  }
-  run.dt_ratio = options.dt_ratio;
-  if (options.courant_given) run.courant = options.courant;
-  run.duration_ratio = options.duration_ratio;
-  run.relative_tolerance = options.tolerance;
-  try {
-    run.integrator = integrators::IntegratorChoice::preset(options.integrator);
-  } catch (const std::invalid_argument& error) {
-    return error.what();
-  }
-  // The options that set a method's parameters, where the method has them.
-  for (const auto& [option, name, value] :
-       {std::tuple{"--alpha", "alpha", options.hht_alpha},
-        std::tuple{"--rho-inf", "rho_infinity", options.rho_infinity}})
-    if (const integrators::IntegratorParameter* parameter =
-            run.integrator.method().parameter(name)) {
-      if (!parameter->admits(value))
-        return fmt::format("{} must be in [{:g}, {:g}]", option, parameter->minimum,
-                           parameter->maximum.value_or(INFINITY));
-      run.integrator.set(name, value);
-    }
-  // An explicit method without a step takes its stable one, as "time_step": "auto" does.
-  if (run.integrator.is_explicit() && !options.courant_given && !options.dt_ratio_given)
-    run.stable_fraction = builder::AnalysisSpec{}.safety_factor;
-  if (!options.profiles_csv.empty()) run.profile_times = {0.0, 0.25, 0.5, 0.75};
-  return std::nullopt;
+// The rod-impact numbers among the options.
+RodImpactRequest rod_impact_request(const VerifyOptions& options) {
+  RodImpactRequest request;
+  request.case_name = options.case_name;
+  request.elements = options.elements;
+  request.stiffness_ratio = options.stiffness_ratio;
+  request.dt_ratio = options.dt_ratio;
+  request.dt_ratio_given = options.dt_ratio_given;
+  if (options.courant_given) request.courant = options.courant;
+  request.duration_ratio = options.duration_ratio;
+  request.law = options.law;
+  request.eta = options.eta;
+  request.integrator = options.integrator;
+  request.hht_alpha = options.hht_alpha;
+  request.rho_infinity = options.rho_infinity;
+  request.tolerance = options.tolerance;
+  request.profiles = !options.profiles_csv.empty();
+  return request;
 }
 
 int verify_rod_impact(const VerifyOptions& options) {
-  if (const std::optional<std::string> error = rod_impact_option_error(options))
+  const RodImpactRequest request = rod_impact_request(options);
+  if (const std::optional<std::string> error = rod_impact_request_error(request))
     return usage_error(*error);
   if (!options.study.empty()) return verify_rod_impact_study(options.study, options.json);
   verification::RodImpactOptions run;
-  if (const std::optional<std::string> error = set_up_rod_impact(options, run))
-    return usage_error(*error);
+  try {
+    run = rod_impact_options(request);
+  } catch (const std::invalid_argument& error) {
+    return usage_error(error.what());
+  }
   if (!options.csv.empty() && !options.profiles_csv.empty())
     io::check_outputs_apart({}, {{options.csv, "--csv"}, {options.profiles_csv, "--profiles-csv"}});
   const verification::RodImpactResult result = verification::run_rod_impact(run);

@@ -30,14 +30,25 @@ Interrupted::Interrupted(int signal)
                                                                               : "a signal")),
       signal_(signal) {}
 
-void install_interrupt_handlers() {
+void install_interrupt_handlers() { (void)replace_interrupt_handlers(); }
+
+PreviousHandlers replace_interrupt_handlers() {
   struct sigaction action {};
   action.sa_handler = on_signal;
   sigemptyset(&action.sa_mask);
   action.sa_flags = SA_RESTART;  // reads and writes in progress go on; the flag is polled
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
+  PreviousHandlers previous;
+  sigaction(SIGINT, &action, &previous.interrupt);
+  sigaction(SIGTERM, &action, &previous.terminate);
+  return previous;
 }
+
+void restore_interrupt_handlers(const PreviousHandlers& previous) {
+  sigaction(SIGINT, &previous.interrupt, nullptr);
+  sigaction(SIGTERM, &previous.terminate, nullptr);
+}
+
+void clear_interrupt() { g_signal = 0; }
 
 int interrupt_signal() { return g_signal; }
 

@@ -3,6 +3,8 @@
 // The time-step loop and the writers of results poll it and throw Interrupted, so the stack
 // unwinds, temporary files are removed and `main` exits with 128 + the signal's number. A second
 // signal while the first is being honoured ends the process at once, as the signal would have.
+#include <signal.h>
+
 #include <stdexcept>
 #include <string>
 
@@ -20,6 +22,18 @@ class Interrupted : public std::runtime_error {
 
 // Installs the handlers for SIGINT and SIGTERM (once, from main).
 void install_interrupt_handlers();
+
+// For a program that embeds pound (the Python module) and has handlers of its own: installs
+// pound's, returning the ones they replace, and puts those back.
+struct PreviousHandlers {
+  struct sigaction interrupt {};
+  struct sigaction terminate {};
+};
+PreviousHandlers replace_interrupt_handlers();
+void restore_interrupt_handlers(const PreviousHandlers& previous);
+
+// Forgets a signal received, once it has been honoured (the next run starts afresh).
+void clear_interrupt();
 
 // The signal received, or 0.
 int interrupt_signal();

@@ -401,6 +401,8 @@ const char* unit_name(AccelerationUnit unit) {
   return "?";
 }
 
+}  // namespace
+
 double to_model_units(AccelerationUnit unit, double g_in_model_units) {
   switch (unit) {
     case AccelerationUnit::g:
@@ -414,6 +416,8 @@ double to_model_units(AccelerationUnit unit, double g_in_model_units) {
   }
   return 1.0;
 }
+
+namespace {
 
 // Whether `text` (lower case) has `word` with no letter right before or after it.
 bool has_word(const std::string& text, std::string_view word) {
@@ -711,6 +715,74 @@ AccelerationUnit parse_acceleration_unit(const std::string& text) {
   if (name == "model") return AccelerationUnit::model;
   throw std::invalid_argument(
       fmt::format("unknown acceleration unit '{}' (known: g, m/s2, cm/s2, model)", text));
+}
+
+namespace {
+
+// dt of uniform sample times, each step against the median as a time column's.
+double uniform_time_step(const std::string& name, const std::vector<double>& times) {
+  std::vector<double> steps;
+  for (std::size_t k = 1; k < times.size(); ++k) {
+    if (!std::isfinite(times[k]) || !std::isfinite(times[k - 1]))
+      throw InputError(name, fmt::format("times[{}]", std::isfinite(times[k]) ? k - 1 : k),
+                       "a time that is not a finite number");
+    steps.push_back(times[k] - times[k - 1]);
+  }
+  std::vector<double> sorted = steps;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2),
+                   sorted.end());
+  const double typical = sorted[sorted.size() / 2];
+  if (!(typical > 0.0)) throw InputError(name, "times", "the times do not increase");
+  for (std::size_t k = 1; k < times.size(); ++k)
+    if (std::abs(steps[k - 1] - typical) > kTimeColumnJitter * typical)
+      throw InputError(name, fmt::format("times[{}]", k),
+                       fmt::format("the times are not uniform: t = {:g} after t = {:g}, a step of "
+                                   "{:g} where the other steps are {:g}",
+                                   times[k], times[k - 1], steps[k - 1], typical));
+  return (times.back() - times.front()) / static_cast<double>(times.size() - 1);
+}
+
+}  // namespace
+
+model::GroundMotion ground_motion_from_samples(const std::string& name,
+                                               const std::vector<double>& accelerations,
+                                               std::optional<double> time_step,
+                                               const std::vector<double>& times,
+                                               AccelerationUnit unit, double g_in_model_units) {
+  if (!(g_in_model_units > 0.0) || !std::isfinite(g_in_model_units))
+    throw std::invalid_argument("the acceleration of gravity in model units must be positive");
+  if (accelerations.size() < 2)
+    throw InputError(name, "accelerations",
+                     fmt::format("{} sample{}: a record needs at least 2", accelerations.size(),
+                                 accelerations.size() == 1 ? "" : "s"));
+  model::GroundMotion motion;
+  motion.name = name;
+  if (time_step) {
+    if (!(*time_step > 0.0) || !std::isfinite(*time_step))
+      throw InputError(name, "time_step",
+                       fmt::format("a time step must be a positive number, got {:g}", *time_step));
+    motion.time_step = *time_step;
+  } else {
+    if (times.size() != accelerations.size())
+      throw InputError(name, "times",
+                       fmt::format("{} times for {} accelerations: give one time per sample",
+                                   times.size(), accelerations.size()));
+    motion.time_step = uniform_time_step(name, times);
+  }
+  const double factor = to_model_units(unit, g_in_model_units);
+  motion.acceleration = accelerations;
+  for (std::size_t k = 0; k < accelerations.size(); ++k) {
+    if (!std::isfinite(accelerations[k]))
+      throw InputError(name, fmt::format("accelerations[{}]", k),
+                       fmt::format("{:g} is not a finite number", accelerations[k]));
+  }
+  model::scale(motion, factor);
+  for (std::size_t k = 0; k < motion.acceleration.size(); ++k)
+    if (!std::isfinite(motion.acceleration[k]))
+      throw InputError(name, fmt::format("accelerations[{}]", k),
+                       "overflows the number range in model units (a value far beyond any ground "
+                       "acceleration)");
+  return motion;
 }
 
 }  // namespace pound::io

@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "model/ground_motion.hpp"
 
@@ -54,5 +55,19 @@ model::GroundMotion parse_ground_motion(const std::string& text, const std::stri
 
 // "g", "m/s2", "cm/s2" or "model"; throws std::invalid_argument listing the valid names.
 AccelerationUnit parse_acceleration_unit(const std::string& text);
+
+// What one `unit` is in the model's units of acceleration (1 for "model").
+double to_model_units(AccelerationUnit unit, double g_in_model_units);
+
+// A record given as values rather than a file (the Python module's arrays): `accelerations` in
+// `unit`, sampled every `time_step`, or at `times` (uniform, as a time column must be; the
+// record's origin moves to the first), converted to model units as a file's values would be.
+// Fewer than 2 samples, a value that is not finite, a step that is not positive or times that
+// are not uniform throw InputError(`name`, "accelerations[k]" or "times[k]", what).
+model::GroundMotion ground_motion_from_samples(const std::string& name,
+                                               const std::vector<double>& accelerations,
+                                               std::optional<double> time_step,
+                                               const std::vector<double>& times,
+                                               AccelerationUnit unit, double g_in_model_units);
 
 }  // namespace pound::io

@@ -559,5 +559,47 @@ TEST_F(SpectrumCommand, BadOptionsAreUsageErrors) {
   }
 }
 
+// Samples given as values (the Python module's records) convert as a file of the same values.
+TEST(GroundMotionFromSamples, ConvertsAsAFileOfTheSameValues) {
+  const std::vector<double> values{0.0, 0.125, -0.3, 0.2, 0.05};
+  for (const char* unit : {"g", "m/s2", "cm/s2"}) {
+    RecordFormat format;
+    format.format = "columns";
+    format.time_step = 0.01;
+    format.units = parse_acceleration_unit(unit);
+    const model::GroundMotion from_file =
+        parse_ground_motion("0.0\n0.125\n-0.3\n0.2\n0.05\n", "given.txt", format, 9.80665);
+    const model::GroundMotion given =
+        ground_motion_from_samples("given", values, 0.01, {}, format.units, 9.80665);
+    EXPECT_EQ(given.acceleration, from_file.acceleration) << unit;
+    EXPECT_EQ(given.time_step, 0.01);
+  }
+  const model::GroundMotion timed = ground_motion_from_samples(
+      "timed", values, std::nullopt, {2.0, 2.02, 2.04, 2.06, 2.08}, AccelerationUnit::g, 1.0);
+  EXPECT_NEAR(timed.time_step, 0.02, 1e-15);
+}
+
+TEST(GroundMotionFromSamples, BadSamplesNameTheirIndex) {
+  auto where = [](const std::vector<double>& values, std::optional<double> dt,
+                  const std::vector<double>& times) {
+    try {
+      (void)ground_motion_from_samples("given", values, dt, times, AccelerationUnit::g, 9.8);
+    } catch (const InputError& error) {
+      EXPECT_EQ(error.file(), "given");
+      return error.where();
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(where({0.0, NAN, 0.1}, 0.01, {}), "accelerations[1]");
+  EXPECT_EQ(where({0.0, 1e308, 0.1}, 0.01, {}), "accelerations[1]");  // overflows in m/s2
+  EXPECT_EQ(where({0.0}, 0.01, {}), "accelerations");
+  EXPECT_EQ(where({0.0, 0.1}, 0.0, {}), "time_step");
+  EXPECT_EQ(where({0.0, 0.1}, INFINITY, {}), "time_step");
+  EXPECT_EQ(where({0.0, 0.1, 0.2}, std::nullopt, {0.0, 0.1}), "times");
+  EXPECT_EQ(where({0.0, 0.1, 0.2, 0.3}, std::nullopt, {0.0, 0.1, 0.2, 0.5}), "times[3]");
+  EXPECT_EQ(where({0.0, 0.1, 0.2}, std::nullopt, {0.0, NAN, 0.2}), "times[1]");
+  EXPECT_EQ(where({0.0, 0.1, 0.2}, std::nullopt, {0.2, 0.1, 0.0}), "times");
+}
+
 }  // namespace
 }  // namespace pound::io

@@ -1,0 +1,100 @@
+#include <fmt/format.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "bindings/bindings.hpp"
+#include "core/errors.hpp"
+#include "io/ground_motion_reader.hpp"
+#include "model/ground_motion.hpp"
+
+namespace py = pybind11;
+
+namespace pound::python {
+namespace {
+
+io::AccelerationUnit unit_named(const std::string& units) {
+  return io::parse_acceleration_unit(units);  // std::invalid_argument: ValueError
+}
+
+// g in units in which the values in `unit` stay as they are: the records are kept as given.
+double gravity_in(io::AccelerationUnit unit) { return 1.0 / io::to_model_units(unit, 1.0); }
+
+py::array_t<double> to_array(const std::vector<double>& values) {
+  return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
+}
+
+// A record file read as `pound run --motion` reads it: its name, dt, values in `units`, the
+// SHA-1 of the file and the format read ("at2" or "columns").
+std::tuple<std::string, double, py::array_t<double>, std::string, std::string> read_record(
+    const std::string& path, const std::string& format, const std::string& units, int column,
+    std::optional<double> time_step, bool time_column) {
+  io::RecordFormat record_format;
+  record_format.format = format;
+  record_format.column = column;
+  record_format.time_step = time_step;
+  record_format.time_column = time_column;
+  record_format.units = unit_named(units);
+  io::RecordSource source;
+  model::GroundMotion motion;
+  {
+    const py::gil_scoped_release unlocked;
+    motion = io::read_ground_motion(path, record_format, gravity_in(record_format.units), &source);
+  }
+  return {motion.name, motion.time_step, to_array(motion.acceleration), source.sha1, source.format};
+}
+
+// Checks samples given as arrays as a run would (io::ground_motion_from_samples); their dt.
+double check_samples(const std::string& name, const std::vector<double>& accelerations,
+                     std::optional<double> time_step, const std::vector<double>& times,
+                     const std::string& units) {
+  const io::AccelerationUnit unit = unit_named(units);
+  return io::ground_motion_from_samples(name, accelerations, time_step, times, unit,
+                                        gravity_in(unit))
+      .time_step;
+}
+
+// Pseudo-spectral accelerations S_a = w^2 max|u| at each period (model::spectral_acceleration),
+// in the record's units.
+py::array_t<double> spectrum(const std::string& name, double time_step,
+                             const std::vector<double>& accelerations,
+                             const std::vector<double>& periods, double damping_ratio) {
+  if (!(damping_ratio >= 0.0 && damping_ratio < 1.0))
+    throw InputError(name, "damping",
+                     fmt::format("a damping ratio in [0, 1), got {:g}", damping_ratio));
+  for (std::size_t k = 0; k < periods.size(); ++k)
+    if (!(periods[k] >= 0.0) || !std::isfinite(periods[k]))
+      throw InputError(name, fmt::format("periods[{}]", k),
+                       fmt::format("a period >= 0 [s], got {:g}", periods[k]));
+  const model::GroundMotion motion{name, time_step, accelerations};
+  std::vector<double> values(periods.size());
+  {
+    const py::gil_scoped_release unlocked;
+    for (std::size_t k = 0; k < periods.size(); ++k)
+      values[k] = model::spectral_acceleration(motion, periods[k], damping_ratio);
+  }
+  return to_array(values);
+}
+
+}  // namespace
+
+void bind_records(py::module_& module) {
+  module.def("read_record", &read_record, py::arg("path"), py::arg("format"), py::arg("units"),
+             py::arg("column"), py::arg("time_step"), py::arg("time_column"),
+             "Reads a record file: (name, dt, values in `units`, SHA-1, format read).");
+  module.def("check_samples", &check_samples, py::arg("name"), py::arg("accelerations"),
+             py::arg("time_step"), py::arg("times"), py::arg("units"),
+             "Checks a record given as samples; returns its time step.");
+  module.def("spectrum", &spectrum, py::arg("name"), py::arg("time_step"), py::arg("accelerations"),
+             py::arg("periods"), py::arg("damping"),
+             "Pseudo-spectral accelerations at the periods, in the record's units.");
+  module.def("default_spectrum_periods", &model::default_spectrum_periods,
+             "40 periods log-spaced from 0.02 s to 10 s.");
+}
+
+}  // namespace pound::python

@@ -1,0 +1,162 @@
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/batch.hpp"
+#include "app/cluster.hpp"
+#include "app/model_run.hpp"
+#include "bindings/bindings.hpp"
+#include "core/stopwatch.hpp"
+
+namespace py = pybind11;
+
+namespace pound::python {
+namespace {
+
+// The outcome of pound.run: its tables stay here, and the arrays NumPy sees are views of them.
+struct RunResult {
+  app::RunOutcome outcome;
+  double core_s = 0.0;  // in app::run_model and writing: what `pound run` spends too
+};
+
+const char* kind_name(builder::RecorderKind kind) {
+  switch (kind) {
+    case builder::RecorderKind::link:
+      return "link";
+    case builder::RecorderKind::node:
+      return "node";
+    case builder::RecorderKind::element:
+      return "element";
+    case builder::RecorderKind::spectrum:
+      return "spectrum";
+  }
+  return "?";
+}
+
+// Each recorder's table as a dict: file, kind, envelope, columns, units, text columns and a
+// read-only NumPy view of each numeric column, kept alive by the result `owner`.
+py::list tables(const py::object& owner) {
+  const RunResult& result = owner.cast<const RunResult&>();
+  py::list list;
+  for (std::size_t k = 0; k < result.outcome.histories.size(); ++k) {
+    const auto& [file, table] = result.outcome.histories[k];
+    py::list values;
+    for (const std::vector<double>& column : table.values) {
+      py::array_t<double> view(static_cast<py::ssize_t>(column.size()), column.data(), owner);
+      py::detail::array_proxy(view.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+      values.append(view);
+    }
+    py::dict text_columns;
+    for (const TextColumn& column : table.text_columns)
+      text_columns[py::str(column.name)] = column.values;
+    py::dict item;
+    item["file"] = file;
+    item["kind"] = kind_name(result.outcome.recorded.at(k).kind);
+    item["envelope"] = result.outcome.recorded.at(k).envelope;
+    item["columns"] = table.columns;
+    item["units"] = table.units;
+    item["text_columns"] = text_columns;
+    item["values"] = values;
+    list.append(item);
+  }
+  return list;
+}
+
+// pound.Record as `pound run --motion` takes it: a file with how to read it, or samples.
+app::MotionOverride motion_from(const py::dict& record) {
+  app::MotionOverride motion;
+  motion.path = record["name"].cast<std::string>();
+  motion.units = record["units"].cast<std::string>();
+  if (!record["scale"].is_none()) motion.scale_factor = record["scale"].cast<double>();
+  motion.replaced_by = "pound.run(record=...)";
+  if (!record["time_step"].is_none()) motion.time_step = record["time_step"].cast<double>();
+  if (record.contains("accelerations")) {
+    motion.accelerations = record["accelerations"].cast<std::vector<double>>();
+    motion.times = record["times"].cast<std::vector<double>>();
+    return motion;
+  }
+  motion.path = record["path"].cast<std::string>();
+  motion.column = record["column"].cast<int>();
+  motion.time_column = record["time_column"].cast<bool>();
+  return motion;
+}
+
+std::shared_ptr<RunResult> run(const std::optional<std::string>& text, const std::string& path,
+                               const std::optional<py::dict>& record,
+                               const std::optional<std::string>& out, long max_steps,
+                               double time_limit, bool histories) {
+  app::RunRequest request;
+  request.model_path = path;
+  request.model_text = text;
+  if (record) request.motion = motion_from(*record);
+  request.max_steps = max_steps;
+  request.time_limit = time_limit;
+  request.histories = histories;
+  if (out)
+    request.before_run = [&](const app::LoadedModel& loaded) {
+      app::check_run_outputs(*out, request, loaded, false);
+    };
+  auto result = std::make_shared<RunResult>();
+  const InterruptGuard guard;
+  const py::gil_scoped_release unlocked;
+  const Stopwatch stopwatch;
+  result->outcome = app::run_model(request);
+  if (out) app::write_run_outputs(*out, result->outcome);
+  result->core_s = stopwatch.seconds();
+  return result;
+}
+
+// The batch's report as a dict (its statistics are in <out>/batch_stats.json).
+py::dict batch(const std::optional<std::string>& text, const std::string& path,
+               const std::string& out, int jobs, bool resume) {
+  static const app::Cluster cluster;  // this process, or the ranks of mpirun
+  app::BatchOptions options;
+  options.set_path = path;
+  options.set_text = text;
+  options.out = out;
+  options.jobs = jobs;
+  options.resume = resume;
+  app::BatchReport report;
+  {
+    const InterruptGuard guard;
+    const py::gil_scoped_release unlocked;
+    report = app::run_batch(options, cluster);
+  }
+  py::dict result;
+  result["cases"] = report.cases;
+  result["resumed"] = report.resumed;
+  result["ran"] = report.ran;
+  result["completed"] = report.completed;
+  result["failed"] = report.failed;
+  result["ranks"] = report.ranks;
+  result["jobs"] = report.jobs;
+  result["wall_s"] = report.wall_s;
+  result["solve_s"] = report.solve_s;
+  return result;
+}
+
+}  // namespace
+
+void bind_runs(py::module_& module) {
+  py::class_<RunResult, std::shared_ptr<RunResult>>(module, "RunResult")
+      .def_property_readonly("summary_json",
+                             [](const RunResult& r) { return r.outcome.summary.dump(); })
+      .def_property_readonly("warnings", [](const RunResult& r) { return r.outcome.warnings; })
+      .def_property_readonly("failure", [](const RunResult& r) { return r.outcome.failure; })
+      .def_property_readonly("failure_time",
+                             [](const RunResult& r) { return r.outcome.failure_time; })
+      .def_property_readonly("headline", [](const RunResult& r) { return r.outcome.headline; })
+      .def_property_readonly("report", [](const RunResult& r) { return r.outcome.report; })
+      .def_property_readonly("core_s", [](const RunResult& r) { return r.core_s; })
+      .def("tables", &tables, "Every recorder's table, its columns as read-only NumPy views.");
+  module.def("run", &run, py::arg("text"), py::arg("path"), py::arg("record"), py::arg("out"),
+             py::arg("max_steps"), py::arg("time_limit"), py::arg("histories"),
+             "Runs a model as `pound run` does (the GIL released); writes to `out` when given.");
+  module.def("batch", &batch, py::arg("text"), py::arg("path"), py::arg("out"), py::arg("jobs"),
+             py::arg("resume"), "Runs a batch set as `pound batch` does; returns its report.");
+}
+
+}  // namespace pound::python

@@ -1,0 +1,39 @@
+"""Dicts to the JSON text the C++ readers take, with errors that name where a value is wrong."""
+
+import json
+import math
+import numbers
+
+from pound.errors import InputError
+
+
+def _plain(value, name, path):
+    """The value with NumPy scalars and arrays as Python numbers and lists, checked finite."""
+    if isinstance(value, dict):
+        plain = {}
+        for key, item in value.items():
+            if not isinstance(key, str):
+                raise InputError(name, path or "/", f"a key that is not a string: {key!r}")
+            plain[key] = _plain(item, name, f"{path}/{key}")
+        return plain
+    if hasattr(value, "tolist") and not isinstance(value, (str, bytes)):
+        value = value.tolist()  # NumPy arrays and scalars
+    if isinstance(value, (list, tuple)):
+        return [_plain(item, name, f"{path}/{k}") for k, item in enumerate(value)]
+    if isinstance(value, bool) or value is None or isinstance(value, str):
+        return value
+    if isinstance(value, numbers.Integral):
+        return int(value)
+    if isinstance(value, numbers.Real):
+        if not math.isfinite(value):
+            raise InputError(name, path, f"expected a finite number, got {value}")
+        return float(value)
+    raise InputError(name, path, f"expected a JSON value (number, string, bool, None, list or "
+                                 f"dict), got {type(value).__name__}")
+
+
+def to_json(document, name):
+    """JSON text of a dict for the readers of model and set files; `name` names it in errors."""
+    if not isinstance(document, dict):
+        raise InputError(name, "", f"expected a dict, got {type(document).__name__}")
+    return json.dumps(_plain(document, name, ""))

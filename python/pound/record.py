@@ -1,0 +1,118 @@
+"""pound.Record: a ground-acceleration record, from a file or from arrays."""
+
+import math
+import numbers
+import os
+
+import numpy as np
+
+from pound import _core
+from pound.errors import InputError
+
+
+def _samples(values, name, what):
+    """A 1-D float64 array of `values`, or InputError naming `what`."""
+    try:
+        array = np.asarray(values, dtype=np.float64)
+    except (TypeError, ValueError) as error:
+        raise InputError(name, what, f"expected numbers: {error}") from None
+    if array.ndim != 1:
+        raise InputError(name, what, f"expected a 1-D array, got shape {array.shape}")
+    return array
+
+
+def _scale(scale, name):
+    if scale is None:
+        return None
+    if not isinstance(scale, numbers.Real) or not math.isfinite(scale) or not scale > 0:
+        raise InputError(name, "scale", f"expected a positive number, got {scale!r}")
+    return float(scale)
+
+
+class Record:
+    """A ground-acceleration record, uniformly sampled.
+
+    ``Record(times_or_dt, accelerations, units="g")`` takes the time step (a number) or the
+    sample times (an array, uniform), and the accelerations in ``units``: "g", "m/s2", "cm/s2" or
+    "model" (the model's own units). ``Record.from_file`` reads the files ``pound run --motion``
+    reads. Given to :func:`pound.run`, it replaces the model's first excitation's record (its
+    direction and supports stay); with ``scale`` it is multiplied by that factor instead of the
+    model's scaling, without it the model's scaling (factor, target PGA or Sa) applies to it.
+    """
+
+    def __init__(self, times_or_dt, accelerations, units="g", *, name="<array>", scale=None):
+        self.name = name
+        self.units = units
+        self.scale = _scale(scale, name)
+        self.path = None
+        self._values = _samples(accelerations, name, "accelerations")
+        if isinstance(times_or_dt, numbers.Real):
+            self._given_step, self._times = float(times_or_dt), np.empty(0)
+        else:
+            self._given_step, self._times = None, _samples(times_or_dt, name, "times")
+        self.time_step = _core.check_samples(name, self._values, self._given_step, self._times,
+                                             units)
+        self._values.flags.writeable = False
+
+    @classmethod
+    def from_file(cls, path, units="g", column=None, scale=None, *, dt=None, time_column=False,
+                  format="auto"):
+        """Reads a PEER .AT2 file or a columns file, as ``pound run --motion`` does: ``column``
+        (from 1; default 1, or 2 with ``time_column``), ``dt`` for a columns file that does not
+        state it, ``format`` "auto", "at2" or "columns"."""
+        path = os.fspath(path)
+        column = column if column is not None else (2 if time_column else 1)
+        record = cls.__new__(cls)
+        name, step, values, sha1, read_as = _core.read_record(path, format, units, int(column), dt,
+                                                              bool(time_column))
+        record.name, record.units, record.path = name, units, path
+        record.scale = _scale(scale, path)
+        record.time_step, record.sha1, record.format = step, sha1, read_as
+        record._column, record._dt, record._time_column = column, dt, bool(time_column)
+        record._values = np.asarray(values)
+        record._values.flags.writeable = False
+        return record
+
+    @property
+    def accelerations(self):
+        """The samples in the record's units, times ``scale`` when given."""
+        return self._values if self.scale is None else self._values * self.scale
+
+    @property
+    def times(self):
+        """The time of each sample, from 0."""
+        return np.arange(len(self._values)) * self.time_step
+
+    @property
+    def duration(self):
+        return (len(self._values) - 1) * self.time_step
+
+    @property
+    def peak(self):
+        """The largest |acceleration|, in the record's units (``scale`` applied)."""
+        return float(np.max(np.abs(self.accelerations)))
+
+    def spectrum(self, periods=None, damping=0.05):
+        """Pseudo-spectral acceleration Sa = w^2 max|u| of a linear oscillator at each period
+        [s] (default: 40 log-spaced from 0.02 s to 10 s), exact for the linearly interpolated
+        record (Nigam & Jennings), in the record's units. Returns {"periods", "sa"} arrays."""
+        periods = (np.asarray(_core.default_spectrum_periods()) if periods is None
+                   else _samples(np.atleast_1d(periods), self.name, "periods"))
+        sa = _core.spectrum(self.name, self.time_step, self.accelerations, periods,
+                            float(damping))
+        return {"periods": periods, "sa": np.asarray(sa)}
+
+    def _motion(self):
+        """The record as _core.run takes it."""
+        motion = {"name": self.name, "units": self.units, "scale": self.scale}
+        if self.path is None:
+            motion.update(accelerations=self._values, times=self._times,
+                          time_step=self._given_step)
+        else:
+            motion.update(path=self.path, column=self._column, time_step=self._dt,
+                          time_column=self._time_column)
+        return motion
+
+    def __repr__(self):
+        return (f"pound.Record({self.name!r}, {len(self._values)} samples, dt = "
+                f"{self.time_step:g} s, units {self.units!r})")

@@ -1,0 +1,67 @@
+"""pound.run and pound.batch."""
+
+import os
+
+from pound import _core
+from pound._documents import to_json
+from pound.errors import AnalysisError, InputError
+from pound.model import Model
+from pound.record import Record
+from pound.result import Result
+
+
+def _model(model):
+    if isinstance(model, Model):
+        return model
+    if isinstance(model, dict):
+        return Model.from_dict(model)
+    if isinstance(model, (str, os.PathLike)):
+        return Model.from_file(model)
+    raise InputError("", "model", f"expected a pound.Model, a dict or a path, got "
+                                  f"{type(model).__name__}")
+
+
+def run(model, record=None, out=None, *, max_steps=0, time_limit=0.0, histories=True,
+        check=True):
+    """Runs the time-history analysis of ``model`` (a :class:`pound.Model`, a dict or a path),
+    as ``pound run`` does, and returns a :class:`pound.Result`.
+
+    ``record``: a :class:`pound.Record` replacing the model's first excitation's record.
+    ``out``: a folder to write the files ``pound run --out`` writes (summary.json, the recorders'
+    CSVs); none is written when None. ``max_steps``, ``time_limit`` [s of solving]: stop with
+    an AnalysisError past them (0: no limit). ``histories=False`` skips the recorders.
+
+    The GIL is released while it solves: runs on several threads go in parallel. Ctrl-C stops
+    the run (KeyboardInterrupt). A failed analysis raises :class:`pound.AnalysisError` with the
+    result up to the failure as ``error.result`` (and, with ``out``, its files written), unless
+    ``check=False``, which returns that result instead.
+    """
+    model = _model(model)
+    if record is not None and not isinstance(record, Record):
+        raise InputError("", "record", f"expected a pound.Record, got {type(record).__name__}")
+    text, path = model._arguments()
+    core = _core.run(text, path, None if record is None else record._motion(),
+                     None if out is None else os.fspath(out), int(max_steps), float(time_limit),
+                     bool(histories))
+    result = Result(core)
+    if check and not result.completed:
+        raise AnalysisError(result.failure_time, result.failure, result)
+    return result
+
+
+def batch(set, out, *, jobs=0, resume=False):
+    """Runs a batch set (docs/batch_format.md; a path or a dict, whose relative paths start from
+    the working directory) as ``pound batch`` does, writing every case's folder, batch_summary.csv
+    and batch_stats.json into ``out``. ``jobs``: worker threads (0: every core). ``resume``:
+    keep the complete cases of an earlier run of the same set in ``out``. Returns the report
+    (cases, resumed, ran, completed, failed, wall_s, ...) with "summary" and "statistics", the
+    paths of batch_summary.csv and batch_stats.json."""
+    out = os.fspath(out)
+    if isinstance(set, dict):
+        text, path = to_json(set, "<dict>"), "<dict>"
+    else:
+        text, path = None, os.fspath(set)
+    report = _core.batch(text, path, out, int(jobs), bool(resume))
+    report["summary"] = os.path.join(out, "batch_summary.csv")
+    report["statistics"] = os.path.join(out, "batch_stats.json")
+    return report

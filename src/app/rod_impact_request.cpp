@@ -1,0 +1,58 @@
+#include "app/rod_impact_request.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <tuple>
+
+#include "app/model_loading.hpp"
+#include "builder/spec.hpp"
+#include "integrators/integrator_catalog.hpp"
+
+namespace pound::app {
+
+std::optional<std::string> rod_impact_request_error(const RodImpactRequest& request) {
+  if (request.elements < 1) return "--n must be >= 1";
+  if (const auto shortfall = memory_shortfall(2.0 * (request.elements + 1.0)))
+    return fmt::format("--n {}: the rods would {}", request.elements, *shortfall);
+  if (!(request.stiffness_ratio > 0.0)) return "--k-ratio must be > 0";
+  if (!(request.dt_ratio > 0.0)) return "--dt-ratio must be > 0";
+  if (request.courant && !(*request.courant > 0.0)) return "--courant must be > 0";
+  if (!(request.duration_ratio >= 1.5)) return "--duration-ratio must be >= 1.5 (the error window)";
+  if (!(request.tolerance > 0.0)) return "--tolerance must be > 0";
+  if (!(request.eta >= 0.0)) return "--eta must be >= 0";
+  return std::nullopt;
+}
+
+verification::RodImpactOptions rod_impact_options(const RodImpactRequest& request) {
+  if (const std::optional<std::string> error = rod_impact_request_error(request))
+    throw std::invalid_argument(*error);
+  verification::RodImpactOptions run;
+  run.pair = verification::rod_impact_case(request.case_name, request.elements,
+                                           request.stiffness_ratio, request.law, request.eta);
+  run.dt_ratio = request.dt_ratio;
+  run.courant = request.courant;
+  run.duration_ratio = request.duration_ratio;
+  run.relative_tolerance = request.tolerance;
+  run.integrator = integrators::IntegratorChoice::preset(request.integrator);
+  // The options that set a method's parameters, where the method has them.
+  for (const auto& [option, name, value] :
+       {std::tuple{"--alpha", "alpha", request.hht_alpha},
+        std::tuple{"--rho-inf", "rho_infinity", request.rho_infinity}})
+    if (const integrators::IntegratorParameter* parameter =
+            run.integrator.method().parameter(name)) {
+      if (!parameter->admits(value))
+        throw std::invalid_argument(fmt::format("{} must be in [{:g}, {:g}]", option,
+                                                parameter->minimum,
+                                                parameter->maximum.value_or(INFINITY)));
+      run.integrator.set(name, value);
+    }
+  // An explicit method without a step takes its stable one, as "time_step": "auto" does.
+  if (run.integrator.is_explicit() && !request.courant && !request.dt_ratio_given)
+    run.stable_fraction = builder::AnalysisSpec{}.safety_factor;
+  if (request.profiles) run.profile_times = {0.0, 0.25, 0.5, 0.75};
+  return run;
+}
+
+}  // namespace pound::app

@@ -1,0 +1,108 @@
+"""pound.Record: files, arrays, spectra against closed forms, and bad samples."""
+
+import math
+
+import numpy as np
+import pytest
+
+import pound
+
+
+def test_an_at2_file_is_read_in_g_with_its_time_step(repository, pound_program):
+    import json
+    import subprocess
+    path = repository / "ground_motions" / "synthetic_firm_01.AT2"
+    record = pound.Record.from_file(path)
+    printed = json.loads(subprocess.run([pound_program, "spectrum", str(path), "--json"],
+                                        capture_output=True, text=True, check=True).stdout)
+    print(record, f"peak {record.peak:.6g} g")
+    assert record.format == "at2" and len(record.sha1) == 40
+    assert record.time_step == printed["dt"]
+    assert record.peak == pytest.approx(printed["pga_g"], rel=1e-12)
+    assert len(record.times) == len(record.accelerations) == printed["npts"]
+    assert not record.accelerations.flags.writeable
+
+
+def test_the_real_records_of_shared_are_read(shared_records):
+    records = sorted(shared_records.glob("*.AT2"))
+    assert records
+    for path in records:
+        record = pound.Record.from_file(path)
+        assert 0.0 < record.peak < 5.0 and record.time_step > 0.0, path
+
+
+def step_response(a0, period, damping, times):
+    """u(t) of a linear oscillator from rest under a constant ground acceleration a0."""
+    omega = 2 * math.pi / period
+    damped = omega * math.sqrt(1 - damping ** 2)
+    decay = np.exp(-damping * omega * times)
+    return -(a0 / omega ** 2) * (1 - decay * (np.cos(damped * times) + damping * omega / damped
+                                              * np.sin(damped * times)))
+
+
+@pytest.mark.parametrize("damping", [0.0, 0.05, 0.2])
+def test_a_step_of_ground_acceleration_has_the_closed_form_spectrum(damping):
+    # The recurrence is exact at the samples for a piecewise-linear record, and the spectrum takes
+    # the peak at the samples: Sa = w^2 max_k |u(t_k)| of the closed form.
+    a0, dt = 0.3, 0.01
+    record = pound.Record(dt, np.full(1001, a0))
+    periods = np.array([0.2, 0.37, 1.0, 2.0])
+    sa = record.spectrum(periods, damping)["sa"]
+    times = np.arange(1001) * dt
+    exact = np.array([(2 * math.pi / T) ** 2 * np.max(np.abs(step_response(a0, T, damping,
+                                                                           times)))
+                      for T in periods])
+    error = np.max(np.abs(sa - exact) / exact)
+    print(f"damping {damping}: Sa {sa}, largest relative error {error:.2e}")
+    assert error < 1e-9
+    # Between the samples the true peak a0 (1 + exp(-pi z / sqrt(1 - z^2))) is at most a
+    # sampling error above.
+    peak = a0 * (1 + math.exp(-math.pi * damping / math.sqrt(1 - damping ** 2)))
+    assert np.all(sa <= peak * (1 + 1e-12)) and np.all(sa > 0.99 * peak)
+
+
+def test_period_zero_gives_the_peak_and_scale_scales():
+    record = pound.Record(0.02, [0.0, 0.1, -0.25, 0.05], "m/s2", scale=2.0)
+    assert record.peak == pytest.approx(0.5)
+    assert record.spectrum([0.0])["sa"][0] == pytest.approx(0.5)
+    assert len(record.spectrum()["periods"]) == 40
+
+
+def test_times_give_the_step_and_must_be_uniform():
+    assert pound.Record(np.arange(5) * 0.005 + 3.0, np.zeros(5)).time_step == pytest.approx(0.005)
+    with pytest.raises(pound.InputError) as raised:
+        pound.Record([0.0, 0.01, 0.02, 0.05, 0.06], np.zeros(5), name="uneven")
+    print(raised.value)
+    assert raised.value.file == "uneven" and raised.value.path == "times[3]"
+
+
+@pytest.mark.parametrize("times_or_dt, accelerations, path", [
+    (0.01, [0.0, np.nan, 0.1], "accelerations[1]"),
+    (0.01, [0.0, 0.1, np.inf], "accelerations[2]"),
+    (0.01, [0.1], "accelerations"),
+    (0.0, [0.0, 0.1], "time_step"),
+    (-0.01, [0.0, 0.1], "time_step"),
+    ([0.0, 0.01], [0.0, 0.1, 0.2], "times"),
+    (0.01, [[0.0, 0.1], [0.2, 0.3]], "accelerations"),
+    (0.01, ["a", "b"], "accelerations"),
+])
+def test_bad_samples_raise_input_error_naming_them(times_or_dt, accelerations, path):
+    with pytest.raises(pound.InputError) as raised:
+        pound.Record(times_or_dt, accelerations)
+    print(raised.value)
+    assert raised.value.path == path
+
+
+def test_bad_units_scale_and_files_are_refused(tmp_path):
+    with pytest.raises(ValueError, match="unknown acceleration unit"):
+        pound.Record(0.01, [0.0, 0.1], "furlongs")
+    with pytest.raises(pound.InputError, match="scale"):
+        pound.Record(0.01, [0.0, 0.1], scale=-1.0)
+    with pytest.raises(pound.InputError) as raised:
+        pound.Record.from_file(tmp_path / "none.AT2")
+    assert "none.AT2" in raised.value.file
+    (tmp_path / "short.txt").write_text("0.1\n0.2\n")
+    with pytest.raises(pound.InputError) as raised:
+        pound.Record.from_file(tmp_path / "short.txt")
+    print(raised.value)
+    assert raised.value.file.endswith("short.txt")

@@ -1,0 +1,226 @@
+"""pound.run: the same results as `pound run`, records given from Python, failures, threads."""
+
+import json
+import pathlib
+import subprocess
+import sys
+import threading
+
+import numpy as np
+import pytest
+
+import pound
+
+MODELS = sorted((pathlib.Path(__file__).resolve().parents[2] / "models").glob("*.json"))
+
+
+def without_run_time(folder):
+    summary = json.loads((folder / "summary.json").read_text())
+    summary.pop("run_time_s")
+    summary.get("verification", {}).pop("run_time_s", None)
+    return summary
+
+
+def assert_same_outputs(cli, python):
+    """Every file of the two output folders byte for byte, summary.json but for its run time."""
+    files = sorted(p.name for p in cli.iterdir())
+    assert files == sorted(p.name for p in python.iterdir())
+    for name in files:
+        if name != "summary.json":
+            assert (cli / name).read_bytes() == (python / name).read_bytes(), name
+    assert without_run_time(cli) == without_run_time(python)
+
+
+@pytest.mark.parametrize("model", MODELS, ids=[m.stem for m in MODELS])
+def test_every_example_gives_the_results_of_pound_run_bit_for_bit(model, pound_program, tmp_path):
+    subprocess.run([pound_program, "run", str(model), "--out", str(tmp_path / "cli"), "-q"],
+                   check=True)
+    result = pound.run(pound.Model.from_file(model), out=tmp_path / "python")
+    assert_same_outputs(tmp_path / "cli", tmp_path / "python")
+    # The arrays are the values written: each CSV column read back equals its array.
+    for file, columns in result.tables.items():
+        if not file.endswith(".csv"):
+            continue
+        header = (tmp_path / "cli" / file).read_text().splitlines()[0].split(",")
+        data = np.atleast_2d(np.loadtxt(tmp_path / "cli" / file, delimiter=",", skiprows=1,
+                                        dtype=str))
+        for k, name in enumerate(header):
+            name = name.split(" [")[0]
+            if isinstance(columns.get(name), np.ndarray):
+                assert np.array_equal(columns[name], data[:, k].astype(float)), (file, name)
+
+
+def test_a_record_from_a_file_or_from_arrays_runs_as_pound_run_motion(models, repository,
+                                                                      pound_program, tmp_path):
+    record_path = repository / "ground_motions" / "synthetic_soft_01.AT2"
+    model = models / "two_sdof_girders.json"
+    subprocess.run([pound_program, "run", str(model), "--motion", str(record_path), "--out",
+                    str(tmp_path / "cli"), "-q"], check=True)
+    from_file = pound.Record.from_file(record_path)
+    pound.run(pound.Model.from_file(model), from_file, out=tmp_path / "file")
+    from_arrays = pound.Record(from_file.time_step, from_file.accelerations, "g")
+    arrays = pound.run(model, from_arrays, out=tmp_path / "arrays")
+    assert (tmp_path / "cli" / "joint.csv").read_bytes() == (tmp_path / "file" /
+                                                             "joint.csv").read_bytes()
+    assert (tmp_path / "cli" / "joint.csv").read_bytes() == (tmp_path / "arrays" /
+                                                             "joint.csv").read_bytes()
+    applied = arrays.summary["excitations"][0]
+    assert applied["replaced_by"] == "pound.run(record=...)"
+    assert applied["format"] == "samples"
+
+
+def test_a_record_in_m_s2_with_times_equals_the_same_in_g(models):
+    g = 9.80665
+    times = np.arange(2001) * 0.01
+    accelerations = 0.3 * np.sin(2 * np.pi * times) * np.exp(-0.2 * times)
+    in_g = pound.run(models / "two_sdof_girders.json", pound.Record(0.01, accelerations, "g"))
+    in_si = pound.run(models / "two_sdof_girders.json",
+                      pound.Record(times, accelerations * g, "m/s2"))
+    difference = np.max(np.abs(in_g.links["joint"]["force"] - in_si.links["joint"]["force"]))
+    peak = np.max(in_g.links["joint"]["force"])
+    print(f"peak force {peak:.6g}, largest difference {difference:.3g}")
+    assert difference <= 1e-9 * peak
+
+
+def test_a_scaled_record_scales_a_linear_response(models):
+    model = json.loads((models / "two_sdof_girders.json").read_text())
+    model.pop("links")
+    model.pop("monitors")
+    model["recorders"] = [{"type": "node", "nodes": ["girder_1"], "file": "girder.csv"}]
+    model = pound.Model.from_dict(model, folder=models)
+    times = np.arange(1001) * 0.01
+    shake = 0.2 * np.sin(3 * times)
+    once = pound.run(model, pound.Record(0.01, shake, scale=1.0)).nodes["girder_1"]["u_x"]
+    thrice = pound.run(model, pound.Record(0.01, shake, scale=3.0)).nodes["girder_1"]["u_x"]
+    error = np.max(np.abs(thrice - 3 * once)) / np.max(np.abs(3 * once))
+    print(f"linear scaling error {error:.2e}")
+    assert error < 1e-12
+
+
+def test_a_failed_run_raises_analysis_error_with_the_result_so_far(models):
+    with pytest.raises(pound.AnalysisError) as raised:
+        pound.run(models / "two_sdof_girders.json", max_steps=100)
+    error = raised.value
+    print(error)
+    assert "100 steps" in error.reason
+    assert error.result is not None and not error.result.completed
+    assert len(error.result.links["joint"]["force"]) == 101
+    assert error.time == pytest.approx(100 * 0.002)
+    result = pound.run(models / "two_sdof_girders.json", max_steps=100, check=False)
+    assert result.summary["status"] == "failed"
+
+
+def test_outputs_never_overwrite_an_input(tmp_path, models):
+    record = tmp_path / "motion.csv"
+    record.write_text("\n".join(f"{0.1 * np.sin(k / 10):.6f}" for k in range(500)) + "\n")
+    model = json.loads((models / "two_sdof_girders.json").read_text())
+    model["recorders"] = [{"type": "link", "file": "motion.csv"}]
+    model["excitations"] = [{"record": str(record), "time_step": 0.01}]
+    before = record.read_bytes()
+    with pytest.raises(pound.InputError) as raised:
+        pound.run(pound.Model.from_dict(model), out=tmp_path)
+    print(raised.value)
+    assert "motion.csv" in str(raised.value)
+    model["excitations"] = []
+    model["analysis"]["duration"] = 4.0
+    with pytest.raises(pound.InputError) as raised:
+        pound.run(pound.Model.from_dict(model), pound.Record.from_file(record, dt=0.01),
+                  out=tmp_path)
+    print(raised.value)
+    assert record.read_bytes() == before and not (tmp_path / "summary.json").exists()
+
+
+def test_wrong_arguments_are_input_errors_naming_them(models):
+    with pytest.raises(pound.InputError) as raised:
+        pound.run(42)
+    assert raised.value.path == "model"
+    with pytest.raises(pound.InputError) as raised:
+        pound.run(models / "two_sdof_girders.json", "synthetic_firm_01.AT2")
+    print(raised.value)
+    assert raised.value.path == "record" and "pound.Record" in raised.value.message
+
+
+def test_results_hold_tables_units_and_a_data_frame(models):
+    result = pound.run(models / "adjacent_buildings_outputs.json")
+    assert result.completed and result.warnings == result.summary.get("warnings", [])
+    assert set(result.tables) == {f for f in result.tables}
+    assert result.time[0] == 0.0 and np.all(np.diff(result.time) > 0)
+    for item in result.links.values():
+        assert len(item["force"]) == len(item["time"])
+    frame = result.to_pandas()
+    assert frame.index.name == "time" and len(frame) == len(result.time)
+    link = next(iter(result.links))
+    assert result.link_summaries[link]["peak_force"] == pytest.approx(
+        max(0.0, np.max(result.links[link]["force"])))
+    assert np.array_equal(frame[f"{link}.force"].to_numpy(), result.links[link]["force"])
+    arrays = result.links[link]["force"]
+    with pytest.raises(ValueError):
+        arrays[0] = 1.0  # views of the results: read-only
+
+
+def test_without_histories_only_the_summary_is_kept(models):
+    result = pound.run(models / "two_sdof_girders.json", histories=False)
+    assert result.tables == {} and result.links == {} and result.time is None
+    assert result.to_pandas().empty
+    assert result.link_summaries["joint"]["impacts"] > 0
+
+
+def test_threads_run_in_parallel_with_the_results_of_one_thread(models):
+    model = pound.Model.from_file(models / "three_span_bridge.json")
+    alone = pound.run(model).links
+    results = [None] * 4
+
+    def run(k):
+        results[k] = pound.run(model).links
+
+    threads = [threading.Thread(target=run, args=(k,)) for k in range(4)]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    for links in results:
+        for link, quantities in alone.items():
+            assert np.array_equal(links[link]["force"], quantities["force"]), link
+
+
+def test_the_gil_is_released_while_a_run_solves(models):
+    # A Python loop on this thread goes on while another thread's run solves; with the GIL held
+    # it would stand still for the whole solve.
+    runner = threading.Thread(target=pound.run,
+                              args=(models / "block_on_belt_hard_contact.json",),
+                              kwargs={"histories": False})
+    loops = 0
+    runner.start()
+    while runner.is_alive():
+        loops += 1
+    runner.join()
+    print(f"{loops} loops of this thread during the run")
+    assert loops > 100000
+
+
+INTERRUPTED = """
+import sys, time, threading, os, signal
+sys.path.insert(0, {path!r})
+import pound
+model = pound.Model.from_file({model!r})
+threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
+start = time.monotonic()
+try:
+    pound.run(model, max_steps=0)
+except KeyboardInterrupt:
+    print("interrupted after", round(time.monotonic() - start, 2))
+    pound.run({short!r})  # the next run starts afresh
+    print("next run completed")
+"""
+
+
+def test_ctrl_c_stops_a_run_with_keyboard_interrupt(models):
+    long_model = models / "block_on_belt.json"  # about 3 s
+    script = INTERRUPTED.format(path=str(pathlib.Path(pound.__file__).parents[1]),
+                                model=str(long_model), short=str(models / "rod_impact.json"))
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                          timeout=60)
+    print(done.stdout, done.stderr)
+    assert "interrupted after" in done.stdout
+    assert float(done.stdout.split("interrupted after")[1].split()[0]) < 2.0
+    assert "next run completed" in done.stdout
