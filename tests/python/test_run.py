@@ -158,6 +158,22 @@ def test_results_hold_tables_units_and_a_data_frame(models):
         arrays[0] = 1.0  # views of the results: read-only
 
 
+def test_element_histories_and_envelopes(models):
+    model = json.loads((models / "three_span_bridge.json").read_text())
+    envelope = next(r for r in model["recorders"] if r["type"] == "element")
+    model["recorders"].append(dict(envelope, envelope=False, file="pier_forces.csv"))
+    result = pound.run(pound.Model.from_dict(model, folder=models))
+    assert set(result.elements) == set(envelope["elements"])
+    forces = result.elements[envelope["elements"][0]]
+    assert len(forces) > 2 and all(len(v) == len(forces["time"]) for v in forces.values())
+    # The envelope table holds each quantity's peak of the same history.
+    table = result.tables[envelope["file"]]
+    print({k: v[:3] for k, v in table.items()})
+    quantity = next(q for q in forces if q != "time")
+    row = list(table["quantity"]).index(f"{envelope['elements'][0]}.{quantity}")
+    assert table["max"][row] == np.max(forces[quantity])
+
+
 def test_without_histories_only_the_summary_is_kept(models):
     result = pound.run(models / "two_sdof_girders.json", histories=False)
     assert result.tables == {} and result.links == {} and result.time is None
