@@ -1,9 +1,11 @@
 #pragma once
 // The parts of pound._core, one function per file that binds them.
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace pound::python {
 
@@ -15,6 +17,11 @@ void bind_records(pybind11::module_& module);
 void bind_runs(pybind11::module_& module);
 // The verification benchmarks (verification.cpp).
 void bind_verification(pybind11::module_& module);
+
+// A NumPy array holding a copy of `values`.
+inline pybind11::array_t<double> to_array(const std::vector<double>& values) {
+  return pybind11::array_t<double>(static_cast<pybind11::ssize_t>(values.size()), values.data());
+}
 
 // While alive: SIGINT and SIGTERM only set pound's flag, polled by the time-step loop, instead of
 // going to Python's handlers (which cannot run while a solve holds no GIL); the handlers before

@@ -25,10 +25,6 @@ io::AccelerationUnit unit_named(const std::string& units) {
 // g in units in which the values in `unit` stay as they are: the records are kept as given.
 double gravity_in(io::AccelerationUnit unit) { return 1.0 / io::to_model_units(unit, 1.0); }
 
-py::array_t<double> to_array(const std::vector<double>& values) {
-  return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
-}
-
 // A record file read as `pound run --motion` reads it: its name, dt, values in `units`, the
 // SHA-1 of the file and the format read ("at2" or "columns").
 std::tuple<std::string, double, py::array_t<double>, std::string, std::string> read_record(

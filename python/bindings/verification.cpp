@@ -52,10 +52,6 @@ app::RodImpactRequest rod_impact_request(const py::dict& options) {
   return request;
 }
 
-py::array_t<double> to_array(const std::vector<double>& values) {
-  return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
-}
-
 // The metrics (`pound verify rod-impact --json`) and the time step, time, force, exact force
 // and penetration histories.
 std::tuple<std::string, double, py::dict> rod_impact(const py::dict& options) {
