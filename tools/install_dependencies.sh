@@ -8,7 +8,8 @@ packages=(g++ cmake ninja-build libeigen3-dev libboost-program-options-dev libfm
           clang libclang-rt-dev  # clang and its libFuzzer runtime, for tools/fuzz.sh
           clang-format  # tools/check_format.sh, run by CI
           python3-pyflakes  # tools/check_python.sh, run by CI
-          pybind11-dev python3-dev python3-numpy python3-pytest python3-pandas)  # the Python module
+          pybind11-dev python3-dev python3-numpy python3-pytest python3-pandas  # the Python module
+          python3-venv python3-wheel)  # pip install . --no-build-isolation (docs/python.md)
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||
