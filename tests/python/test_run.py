@@ -240,3 +240,14 @@ def test_ctrl_c_stops_a_run_with_keyboard_interrupt(models):
     assert "interrupted after" in done.stdout
     assert float(done.stdout.split("interrupted after")[1].split()[0]) < 2.0
     assert "next run completed" in done.stdout
+
+
+def test_the_energy_terms_balance(models):
+    # The terms of the energy balance (docs/design.md 2.4): what went in is held, damped or
+    # taken by the links, to the balance error the run reports.
+    energy = pound.run(models / "two_sdof_girders.json", histories=False).energy
+    held = energy["kinetic"] + energy["strain"] + energy["damping"] + energy["links"]
+    error = abs(held - energy["input"] - energy["initial"]) / energy["input"]
+    print(f"balance error {error:.2e}, reported {energy['balance_error']:.2e}")
+    assert energy["input"] > 0.0 and energy["links"] > 0.0
+    assert error == pytest.approx(energy["balance_error"], abs=1e-12) and error < 1e-10
