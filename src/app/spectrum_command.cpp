@@ -16,6 +16,7 @@
 #include "io/output.hpp"
 #include "io/output_paths.hpp"
 #include "model/ground_motion.hpp"
+#include "model/record_pair.hpp"
 
 namespace pound::app {
 namespace po = boost::program_options;
@@ -30,6 +31,13 @@ pseudo-spectral acceleration Sa [g], pseudo-velocity Sv = Sa/w [m/s] and displac
 Sd = Sa/w^2 [m], computed with the exact piecewise-linear recurrence of Nigam & Jennings (1969).
 Default periods: 40 log-spaced from 0.02 s to 10 s. --scale or --pga scale the record first, as
 a model's excitation "scale" does.
+
+With the second horizontal component of the same station (--pair FILE, or --pair-column N of
+the same columns file) it prints the pair's intensity measures instead: each component's Sa, their
+geometric mean, and the orientation-independent RotD50 and RotD100 (Boore 2010: the median and the
+largest over the directions 0..179 degrees of the peak oscillator response to the rotated pair),
+with the direction of RotD100 from the first component towards the second. --rotation turns the
+pair's axes first (the components' Sa change, RotD50 and RotD100 do not).
 
 options)";
 
@@ -59,6 +67,77 @@ std::vector<double> parse_periods(const std::string& text) {
 struct Spectrum {
   std::vector<double> periods, sa_g, sv, sd;  // Sa in g, Sv in m/s, Sd in m
 };
+
+// A pair's spectra, in g; the direction of RotD100 in degrees.
+struct PairSpectrum {
+  std::vector<double> periods, first_g, second_g, geometric_mean_g, rot_d50_g, rot_d100_g,
+      rot_d100_angle;
+};
+
+PairSpectrum pair_spectrum(const model::GroundMotionPair& pair, const std::vector<double>& periods,
+                           double damping_ratio) {
+  PairSpectrum spectrum;
+  spectrum.periods = periods;
+  for (double period : periods) {
+    const model::PairSpectralAcceleration sa =
+        model::pair_spectral_acceleration(pair, period, damping_ratio);
+    spectrum.first_g.push_back(sa.first / kStandardGravity);
+    spectrum.second_g.push_back(sa.second / kStandardGravity);
+    spectrum.geometric_mean_g.push_back(sa.geometric_mean / kStandardGravity);
+    spectrum.rot_d50_g.push_back(sa.rot_d50 / kStandardGravity);
+    spectrum.rot_d100_g.push_back(sa.rot_d100 / kStandardGravity);
+    spectrum.rot_d100_angle.push_back(sa.rot_d100_angle);
+  }
+  return spectrum;
+}
+
+std::string format_pair_spectrum(const model::GroundMotionPair& pair, const PairSpectrum& spectrum,
+                                 double damping_ratio, double factor, double rotation) {
+  const model::GroundMotion& first = pair.first;
+  std::string text = fmt::format(
+      "record     {} and {}\npoints     {}\ndt         {:g} s\nduration   {:g} s\n"
+      "scaled by  {:.6g}\nrotated by {:g} degrees\n"
+      "PGA        {:.4f} g and {:.4f} g\ndamping    {:g} %\n\n"
+      "{:>10}  {:>10}  {:>10}  {:>10}  {:>10}  {:>10}  {:>9}\n",
+      first.name, pair.second.name, first.acceleration.size(), first.time_step, first.duration(),
+      factor, rotation, first.peak() / kStandardGravity, pair.second.peak() / kStandardGravity,
+      100.0 * damping_ratio, "period [s]", "Sa_1 [g]", "Sa_2 [g]", "GM [g]", "RotD50 [g]",
+      "RotD100 [g]", "at [deg]");
+  for (std::size_t k = 0; k < spectrum.periods.size(); ++k)
+    text +=
+        fmt::format("{:>10.4g}  {:>10.4f}  {:>10.4f}  {:>10.4f}  {:>10.4f}  {:>10.4f}  {:>9g}\n",
+                    spectrum.periods[k], spectrum.first_g[k], spectrum.second_g[k],
+                    spectrum.geometric_mean_g[k], spectrum.rot_d50_g[k], spectrum.rot_d100_g[k],
+                    spectrum.rot_d100_angle[k]);
+  return text;
+}
+
+io::Document pair_spectrum_document(const std::string& path, const std::string& pair_path,
+                                    const model::GroundMotionPair& pair,
+                                    const PairSpectrum& spectrum, double damping_ratio,
+                                    double factor, double rotation) {
+  io::Document document;
+  document.set("record", pair.first.name)
+      .set("path", path)
+      .set("pair_record", pair.second.name)
+      .set("pair_path", pair_path)
+      .set("scale_factor", factor)
+      .set("rotation_deg", rotation)
+      .set("npts", static_cast<long>(pair.first.acceleration.size()))
+      .set("dt", pair.first.time_step)
+      .set("duration", pair.first.duration())
+      .set("pga1_g", pair.first.peak() / kStandardGravity)
+      .set("pga2_g", pair.second.peak() / kStandardGravity)
+      .set("damping_ratio", damping_ratio)
+      .set("periods", spectrum.periods)
+      .set("sa1_g", spectrum.first_g)
+      .set("sa2_g", spectrum.second_g)
+      .set("geometric_mean_g", spectrum.geometric_mean_g)
+      .set("rotd50_g", spectrum.rot_d50_g)
+      .set("rotd100_g", spectrum.rot_d100_g)
+      .set("rotd100_angle_deg", spectrum.rot_d100_angle);
+  return document;
+}
 
 Spectrum response_spectrum(const model::GroundMotion& motion, const std::vector<double>& periods,
                            double damping_ratio) {
@@ -114,6 +193,10 @@ struct SpectrumRequest {
   int column = 1;
   double damping_ratio = 0.05;
   std::optional<double> scale, pga;  // factor; target peak [g]
+  std::string pair;                  // the second component's file
+  std::optional<int> pair_column;    // or its column in the record's file
+  std::optional<double> rotation;    // of the pair's axes [degrees]
+  bool is_pair() const { return !pair.empty() || pair_column.has_value(); }
 };
 
 po::options_description spectrum_options(SpectrumRequest& r) {
@@ -133,7 +216,15 @@ po::options_description spectrum_options(SpectrumRequest& r) {
       "damping ratio of the oscillators")(
       "periods", po::value(&r.periods_text),
       "comma-separated periods [s], e.g. 0.1,0.2,0.5,1 (0 gives the PGA)")(
-      "csv", po::value(&r.csv), "write period,sa_g,sv_m_per_s,sd_m to this CSV file")(
+      "pair", po::value(&r.pair),
+      "the second horizontal component, 90 degrees from the first (a file read as the first)")(
+      "pair-column", po::value<int>(),
+      "the second horizontal component is this column of the record's columns file")(
+      "rotation", po::value<double>(),
+      "with a pair: turn its axes by this angle [degrees] from the first towards the second")(
+      "csv", po::value(&r.csv),
+      "write period,sa_g,sv_m_per_s,sd_m (a pair: period,sa1_g,sa2_g,geometric_mean_g,rotd50_g,"
+      "rotd100_g,rotd100_angle_deg) to this CSV file")(
       "json", "print the record's data and the spectrum as one JSON object");
   return options;
 }
@@ -149,6 +240,14 @@ std::string request_error(const SpectrumRequest& r) {
     if (value && (!(*value > 0.0) || !std::isfinite(*value)))
       return fmt::format("{} must be a positive number", option);
   if (r.scale && r.pga) return "give --scale or --pga, not both";
+  if (!r.pair.empty() && r.pair_column) return "give --pair or --pair-column, not both";
+  if (r.pair_column && (*r.pair_column < 1 || *r.pair_column == r.column))
+    return "--pair-column must be 1 or more and not the record's --column";
+  if (r.rotation && !r.is_pair()) return "--rotation turns a pair: give --pair or --pair-column";
+  if (r.rotation && !std::isfinite(*r.rotation)) return "--rotation must be a finite angle";
+  if (r.pga && r.is_pair())
+    return "--pga scales one record; scale a pair by one factor with --scale, so that its "
+           "components keep their ratio";
   return {};
 }
 
@@ -176,6 +275,49 @@ io::RecordFormat record_format(const SpectrumRequest& r, const po::variables_map
   return format;
 }
 
+// The pair's spectra: both components read alike (the second from its own file or column),
+// checked to share one time grid, turned, scaled by one factor.
+int pair_spectrum_command(const SpectrumRequest& request, io::RecordFormat format,
+                          const std::vector<double>& periods, bool json) {
+  const std::string pair_path = request.pair.empty() ? request.record : request.pair;
+  if (!request.csv.empty())
+    io::check_outputs_apart({{request.record, "the record"}, {pair_path, "--pair"}},
+                            {{request.csv, "--csv"}});
+  model::GroundMotion first = io::read_ground_motion(request.record, format, kStandardGravity);
+  if (request.pair_column) format.column = *request.pair_column;
+  model::GroundMotion second = io::read_ground_motion(pair_path, format, kStandardGravity);
+  if (request.pair_column) {
+    first.name += fmt::format(" (column {})", request.column);
+    second.name += fmt::format(" (column {})", *request.pair_column);
+  }
+  model::GroundMotionPair pair;
+  try {
+    pair = model::make_component_pair(std::move(first), std::move(second));
+  } catch (const std::invalid_argument& error) {
+    throw InputError(pair_path, "", error.what());
+  }
+  const double rotation = request.rotation.value_or(0.0);
+  if (rotation != 0.0) pair = model::rotated(pair, rotation * std::numbers::pi / 180.0);
+  const double factor = request.scale.value_or(1.0);
+  model::scale(pair.first, factor);
+  model::scale(pair.second, factor);
+  const PairSpectrum spectrum = pair_spectrum(pair, periods, request.damping_ratio);
+  if (!request.csv.empty())
+    io::write_csv_atomic(request.csv, Table{{"period", "sa1_g", "sa2_g", "geometric_mean_g",
+                                             "rotd50_g", "rotd100_g", "rotd100_angle_deg"},
+                                            {spectrum.periods, spectrum.first_g, spectrum.second_g,
+                                             spectrum.geometric_mean_g, spectrum.rot_d50_g,
+                                             spectrum.rot_d100_g, spectrum.rot_d100_angle}});
+  if (json)
+    std::cout << pair_spectrum_document(request.record, pair_path, pair, spectrum,
+                                        request.damping_ratio, factor, rotation)
+                     .dump()
+              << "\n";
+  else
+    std::cout << format_pair_spectrum(pair, spectrum, request.damping_ratio, factor, rotation);
+  return 0;
+}
+
 }  // namespace
 
 int spectrum_command(const Arguments& arguments) {
@@ -190,6 +332,9 @@ int spectrum_command(const Arguments& arguments) {
   };
   if (vm.count("scale")) request.scale = vm["scale"].as<double>();
   if (vm.count("pga")) request.pga = vm["pga"].as<double>();
+  if (vm.count("pair-column")) request.pair_column = vm["pair-column"].as<int>();
+  if (vm.count("rotation")) request.rotation = vm["rotation"].as<double>();
+  if (vm.count("column") == 0 && vm.count("time-column")) request.column = 2;
   if (const std::string error = request_error(request); !error.empty()) return usage_error(error);
   io::RecordFormat format;
   std::vector<double> periods = model::default_spectrum_periods();
@@ -200,6 +345,7 @@ int spectrum_command(const Arguments& arguments) {
     return usage_error(error.what());
   }
 
+  if (request.is_pair()) return pair_spectrum_command(request, format, periods, vm.count("json"));
   if (!request.csv.empty())
     io::check_outputs_apart({{request.record, "the record"}}, {{request.csv, "--csv"}});
   // Read in m/s^2 (the spectrum's SI units); Sa is printed in g.

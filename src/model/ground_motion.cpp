@@ -112,11 +112,11 @@ void integrate_sdof(const GroundMotion& motion, double period, double damping_ra
   }
 }
 
+}  // namespace
+
 // A period this far below the step: the oscillator follows its base rigidly, Sa is the peak base
 // acceleration (to (T / dt)^2), and w^2 would overflow for periods near 1e-300.
-bool is_rigid(double period, double time_step) { return period < 1e-3 * time_step; }
-
-}  // namespace
+bool follows_base_rigidly(double period, double time_step) { return period < 1e-3 * time_step; }
 
 std::vector<double> default_spectrum_periods() {
   constexpr double first = 0.02, last = 10.0;
@@ -135,7 +135,7 @@ ResponseOscillator::ResponseOscillator(double period, double damping_ratio)
 
 void ResponseOscillator::advance(double base_start, double base_end, double dt) {
   peak_base_ = std::max({peak_base_, std::abs(base_start), std::abs(base_end)});
-  if (period_ == 0.0 || is_rigid(period_, dt)) return;
+  if (period_ == 0.0 || follows_base_rigidly(period_, dt)) return;
   // Steps that differ in their last bits (times k dt rounded) share a map: recomputing it would
   // cost more than the step and change Sa by parts in 1e9 at most.
   if (!(std::abs(dt - map_dt_) <= 1e-9 * dt)) {
@@ -230,8 +230,8 @@ SdofResponse sdof_response(const GroundMotion& motion, double period, double dam
 double spectral_acceleration(const GroundMotion& motion, double period, double damping_ratio) {
   // An oscillator a thousand times faster than the sampling follows the ground rigidly: its Sa is
   // the PGA (to (T / dt)^2), and integrating it would overflow w^2 for periods near 1e-300.
-  const bool rigid = period > 0.0 && is_rigid(period, motion.time_step) && damping_ratio >= 0.0 &&
-                     damping_ratio < 1.0;
+  const bool rigid = period > 0.0 && follows_base_rigidly(period, motion.time_step) &&
+                     damping_ratio >= 0.0 && damping_ratio < 1.0;
   if (period == 0.0 || rigid) {
     require_samples(motion);
     return motion.peak();

@@ -42,6 +42,10 @@ class GroundKinematics {
 // it is exact for the linearly interpolated record. Period 0 gives the peak acceleration.
 double spectral_acceleration(const GroundMotion& motion, double period, double damping_ratio);
 
+// Whether an oscillator of this period follows a base sampled at time_step rigidly (a period
+// a thousand times shorter): its Sa is then the peak base acceleration, to (T / dt)^2.
+bool follows_base_rigidly(double period, double time_step);
+
 // 40 periods log-spaced from 0.02 s to 10 s: the default of spectra [s].
 std::vector<double> default_spectrum_periods();
 

@@ -22,6 +22,7 @@
 #include "io/ground_motion_reader.hpp"
 #include "links/restitution.hpp"
 #include "support/process.hpp"
+#include "support/shared_records.hpp"
 
 namespace {
 
@@ -778,6 +779,89 @@ TEST_F(Cli, SpectrumScalesTheRecordAsAskedAndSaysBy) {
   const Outcome both = pound({"spectrum", record, "--pga", "0.25", "--scale", "2"});
   EXPECT_EQ(both.exit_code, 1);
   EXPECT_TRUE(contains(both.err, "give --scale or --pga, not both")) << both.err;
+}
+
+// ---- Issue 18 item 3: the intensity measures of a record's two horizontal components ----
+
+TEST_F(Cli, SpectrumOfAPairGivesRotD50AndRotD100AsAnIndependentSolutionDoes) {
+  POUND_SKIP_WITHOUT_SHARED_RECORDS();
+  // Kobe 1995, JMA: NS and EW in the two columns of one file, cm/s^2. The references are RotD50,
+  // RotD100 [m/s^2] and the direction of RotD100 from SciPy's lsim (first-order hold, the same
+  // piecewise-linear record) projected on the same 180 directions, computed once.
+  const std::string kobe = pound::testing::shared_record("Kobe1995_JMA_NS-EW_cms2_dt0.005.txt");
+  const Outcome outcome =
+      pound({"spectrum", kobe, "--units", "cm/s2", "--pair-column", "2", "--periods", "0.3,1,2",
+             "--json", "--csv", path("pair.csv").string()});
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const json pair = json::parse(outcome.out);
+  const double references[3][3] = {{17.55932495, 20.19825054, 156},
+                                   {13.56160027, 18.66582395, 142},
+                                   {3.053893402, 4.222294952, 152}};
+  for (int k = 0; k < 3; ++k) {
+    const double rot_d50 = pair["rotd50_g"][k].get<double>() * 9.80665;
+    const double rot_d100 = pair["rotd100_g"][k].get<double>() * 9.80665;
+    const double d50 = std::abs(rot_d50 / references[k][0] - 1.0);
+    const double d100 = std::abs(rot_d100 / references[k][1] - 1.0);
+    std::cout << "T = " << pair["periods"][k] << " s: RotD50 " << d50 << ", RotD100 " << d100
+              << " from SciPy's; GM / RotD50 "
+              << pair["geometric_mean_g"][k].get<double>() / pair["rotd50_g"][k].get<double>()
+              << "\n";
+    EXPECT_LT(d50, 1e-8);  // the references' 10 digits
+    EXPECT_LT(d100, 1e-8);
+    EXPECT_EQ(pair["rotd100_angle_deg"][k].get<double>(), references[k][2]);
+    EXPECT_GE(pair["rotd100_g"][k].get<double>(),
+              std::max(pair["sa1_g"][k].get<double>(), pair["sa2_g"][k].get<double>()));
+  }
+  const std::vector<std::string> csv = read_lines(path("pair.csv"));
+  ASSERT_EQ(csv.size(), 4u);
+  EXPECT_EQ(csv[0], "period,sa1_g,sa2_g,geometric_mean_g,rotd50_g,rotd100_g,rotd100_angle_deg");
+  // Turning the sensors changes the components' Sa, not RotD50.
+  const json turned = json::parse(pound({"spectrum", kobe, "--units", "cm/s2", "--pair-column", "2",
+                                         "--periods", "0.3,1,2", "--json", "--rotation", "40"})
+                                      .out);
+  EXPECT_NE(turned["sa1_g"][1], pair["sa1_g"][1]);
+  EXPECT_NEAR(turned["rotd50_g"][1].get<double>() / pair["rotd50_g"][1].get<double>(), 1.0, 1e-12);
+  EXPECT_EQ(turned["rotation_deg"], 40.0);
+}
+
+TEST_F(Cli, SpectrumRefusesPairsOnDifferentGridsAndOptionsThatDoNotFitAPair) {
+  const std::string firm = POUND_SOURCE_DIR "/ground_motions/synthetic_firm_01.AT2";
+  // Two records of different lengths or steps are no pair: exit 2, the second file named.
+  const std::string north = path("north.txt").string(), short_east = path("east.txt").string(),
+                    coarse_east = path("coarse.txt").string();
+  std::ofstream(north) << "0 0.1\n0.01 0.2\n0.02 -0.1\n0.03 0.05\n";
+  std::ofstream(short_east) << "0 0.1\n0.01 0.2\n0.02 -0.1\n";
+  std::ofstream(coarse_east) << "0 0.1\n0.02 0.2\n0.04 -0.1\n0.06 0.05\n";
+  for (const auto& [east, message] : {std::pair{short_east, "as many samples (4 and 3)"},
+                                      std::pair{coarse_east, "one time step (0.01 and 0.02)"}}) {
+    const Outcome mismatched = pound({"spectrum", north, "--time-column", "--pair", east});
+    std::cout << mismatched.err;
+    EXPECT_EQ(mismatched.exit_code, 2) << mismatched.err;
+    EXPECT_TRUE(contains(mismatched.err, east)) << mismatched.err;
+    EXPECT_TRUE(contains(mismatched.err, message)) << mismatched.err;
+  }
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--rotation", "30"}, "--rotation turns a pair"},
+      {{"--pair", firm, "--pga", "0.3"}, "scale a pair by one factor with --scale"},
+      {{"--pair", firm, "--pair-column", "2"}, "give --pair or --pair-column, not both"},
+      {{"--pair-column", "1"}, "--pair-column must be 1 or more and not the record's --column"},
+      {{"--pair", firm, "--rotation", "inf"}, "--rotation must be a finite number"},
+  };
+  for (const auto& [options, message] : cases) {
+    std::vector<std::string> arguments = {"spectrum", firm};
+    arguments.insert(arguments.end(), options.begin(), options.end());
+    const Outcome outcome = pound(arguments);
+    EXPECT_EQ(outcome.exit_code, 1) << outcome.err;
+    EXPECT_TRUE(contains(outcome.err, message)) << outcome.err;
+  }
+  // A record paired with itself: RotD50 is its Sa, RotD100 sqrt(2) times it, at 45 degrees.
+  const json self = json::parse(
+      pound({"spectrum", firm, "--pair", firm, "--scale", "2", "--periods", "0.5", "--json"}).out);
+  EXPECT_NEAR(self["rotd50_g"][0].get<double>() / self["sa1_g"][0].get<double>(), 1.0, 1e-14);
+  EXPECT_NEAR(self["rotd100_g"][0].get<double>() / self["sa1_g"][0].get<double>(), std::sqrt(2.0),
+              1e-14);
+  EXPECT_EQ(self["rotd100_angle_deg"][0], 45.0);
+  EXPECT_EQ(self["scale_factor"], 2.0);
 }
 
 // ---- Issue 16 item 8: `pound modes` shows the directions the scene has, and writes shapes ----

@@ -1,0 +1,92 @@
+#include "model/record_pair.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace pound::model {
+namespace {
+
+constexpr int kAngles = 180;  // 0, 1, ..., 179 degrees: the non-redundant directions
+
+// max_t |x_1(t) cos(theta) + x_2(t) sin(theta)| for each whole degree theta.
+std::array<double, kAngles> rotated_peaks(const std::vector<double>& first,
+                                          const std::vector<double>& second) {
+  std::array<double, kAngles> cosines{}, sines{}, peaks{};
+  for (int angle = 0; angle < kAngles; ++angle) {
+    const double radians = angle * std::numbers::pi / 180.0;
+    // Exact at the axes, so that theta = 0 and 90 give the components' own peaks.
+    cosines[angle] = angle == 90 ? 0.0 : std::cos(radians);
+    sines[angle] = angle == 0 ? 0.0 : std::sin(radians);
+  }
+  for (std::size_t k = 0; k < first.size(); ++k)
+    for (int angle = 0; angle < kAngles; ++angle)
+      peaks[angle] =
+          std::max(peaks[angle], std::abs(first[k] * cosines[angle] + second[k] * sines[angle]));
+  return peaks;
+}
+
+// Each component's response to project: the oscillator's displacement times w^2, or the ground
+// accelerations (period 0, or an oscillator that follows the ground rigidly).
+std::vector<double> pseudo_acceleration_history(const GroundMotion& motion, double period,
+                                                double damping_ratio) {
+  if (period == 0.0 || follows_base_rigidly(period, motion.time_step)) return motion.acceleration;
+  std::vector<double> history = sdof_response(motion, period, damping_ratio).displacement;
+  const double omega = 2.0 * std::numbers::pi / period;
+  for (double& u : history) u *= omega * omega;
+  return history;
+}
+
+}  // namespace
+
+GroundMotionPair make_component_pair(GroundMotion first, GroundMotion second) {
+  const std::string names = fmt::format("the components '{}' and '{}'", first.name, second.name);
+  if (first.acceleration.size() != second.acceleration.size())
+    throw std::invalid_argument(fmt::format("{} of a pair must have as many samples ({} and {})",
+                                            names, first.acceleration.size(),
+                                            second.acceleration.size()));
+  if (!(std::abs(first.time_step - second.time_step) <= 1e-9 * first.time_step))
+    throw std::invalid_argument(fmt::format("{} of a pair must have one time step ({:g} and {:g})",
+                                            names, first.time_step, second.time_step));
+  return {std::move(first), std::move(second)};
+}
+
+GroundMotionPair rotated(const GroundMotionPair& pair, double angle) {
+  GroundMotionPair turned = pair;
+  const double c = std::cos(angle), s = std::sin(angle);
+  for (std::size_t k = 0; k < pair.first.acceleration.size(); ++k) {
+    const double a1 = pair.first.acceleration[k], a2 = pair.second.acceleration[k];
+    turned.first.acceleration[k] = c * a1 + s * a2;
+    turned.second.acceleration[k] = c * a2 - s * a1;
+  }
+  return turned;
+}
+
+PairSpectralAcceleration pair_spectral_acceleration(const GroundMotionPair& pair, double period,
+                                                    double damping_ratio) {
+  // The components' own spectra first: they check the period, damping and samples.
+  PairSpectralAcceleration result;
+  result.first = spectral_acceleration(pair.first, period, damping_ratio);
+  result.second = spectral_acceleration(pair.second, period, damping_ratio);
+  result.geometric_mean = std::sqrt(result.first * result.second);
+  const std::array<double, kAngles> peaks =
+      rotated_peaks(pseudo_acceleration_history(pair.first, period, damping_ratio),
+                    pseudo_acceleration_history(pair.second, period, damping_ratio));
+  const auto largest = std::max_element(peaks.begin(), peaks.end());
+  result.rot_d100 = *largest;
+  result.rot_d100_angle = static_cast<double>(largest - peaks.begin());
+  std::array<double, kAngles> sorted = peaks;
+  std::nth_element(sorted.begin(), sorted.begin() + kAngles / 2, sorted.end());
+  const double upper = sorted[kAngles / 2];
+  const double lower = *std::max_element(sorted.begin(), sorted.begin() + kAngles / 2);
+  result.rot_d50 = 0.5 * (lower + upper);
+  return result;
+}
+
+}  // namespace pound::model
