@@ -12,6 +12,7 @@
 #include "core/errors.hpp"
 #include "io/ground_motion_reader.hpp"
 #include "model/ground_motion.hpp"
+#include "model/record_pair.hpp"
 
 namespace py = pybind11;
 
@@ -55,11 +56,8 @@ double check_samples(const std::string& name, const std::vector<double>& acceler
       .time_step;
 }
 
-// Pseudo-spectral accelerations S_a = w^2 max|u| at each period (model::spectral_acceleration),
-// in the record's units.
-py::array_t<double> spectrum(const std::string& name, double time_step,
-                             const std::vector<double>& accelerations,
-                             const std::vector<double>& periods, double damping_ratio) {
+void check_spectrum_request(const std::string& name, const std::vector<double>& periods,
+                            double damping_ratio) {
   if (!(damping_ratio >= 0.0 && damping_ratio < 1.0))
     throw InputError(name, "damping",
                      fmt::format("a damping ratio in [0, 1), got {:g}", damping_ratio));
@@ -67,6 +65,14 @@ py::array_t<double> spectrum(const std::string& name, double time_step,
     if (!(periods[k] >= 0.0) || !std::isfinite(periods[k]))
       throw InputError(name, fmt::format("periods[{}]", k),
                        fmt::format("a period >= 0 [s], got {:g}", periods[k]));
+}
+
+// Pseudo-spectral accelerations S_a = w^2 max|u| at each period (model::spectral_acceleration),
+// in the record's units.
+py::array_t<double> spectrum(const std::string& name, double time_step,
+                             const std::vector<double>& accelerations,
+                             const std::vector<double>& periods, double damping_ratio) {
+  check_spectrum_request(name, periods, damping_ratio);
   const model::GroundMotion motion{name, time_step, accelerations};
   std::vector<double> values(periods.size());
   {
@@ -75,6 +81,38 @@ py::array_t<double> spectrum(const std::string& name, double time_step,
       values[k] = model::spectral_acceleration(motion, periods[k], damping_ratio);
   }
   return to_array(values);
+}
+
+// A pair's measures at each period (model::pair_spectral_acceleration), its axes turned by
+// `rotation` [degrees] first: Sa of each component, geometric mean, RotD50, RotD100 (the
+// records' units) and RotD100's direction [degrees].
+py::dict pair_spectrum(const model::GroundMotion& first, const model::GroundMotion& second,
+                       const std::vector<double>& periods, double damping_ratio, double rotation) {
+  check_spectrum_request(first.name, periods, damping_ratio);
+  if (!std::isfinite(rotation))
+    throw InputError(second.name, "rotation", fmt::format("a finite angle, got {:g}", rotation));
+  model::GroundMotionPair pair;
+  try {
+    pair = model::make_component_pair(first, second);
+  } catch (const std::invalid_argument& error) {
+    throw InputError(second.name, "", error.what());
+  }
+  std::vector<std::vector<double>> columns(6, std::vector<double>(periods.size()));
+  {
+    const py::gil_scoped_release unlocked;
+    if (rotation != 0.0) pair = model::rotated(pair, rotation * std::acos(-1.0) / 180.0);
+    for (std::size_t k = 0; k < periods.size(); ++k) {
+      const model::PairSpectralAcceleration sa =
+          model::pair_spectral_acceleration(pair, periods[k], damping_ratio);
+      const double values[] = {sa.first,   sa.second,   sa.geometric_mean,
+                               sa.rot_d50, sa.rot_d100, sa.rot_d100_angle};
+      for (std::size_t c = 0; c < columns.size(); ++c) columns[c][k] = values[c];
+    }
+  }
+  py::dict result;
+  const char* names[] = {"sa1", "sa2", "geometric_mean", "rotd50", "rotd100", "rotd100_angle"};
+  for (std::size_t c = 0; c < columns.size(); ++c) result[names[c]] = to_array(columns[c]);
+  return result;
 }
 
 }  // namespace
@@ -89,6 +127,18 @@ void bind_records(py::module_& module) {
   module.def("spectrum", &spectrum, py::arg("name"), py::arg("time_step"), py::arg("accelerations"),
              py::arg("periods"), py::arg("damping"),
              "Pseudo-spectral accelerations at the periods, in the record's units.");
+  module.def(
+      "pair_spectrum",
+      [](const std::string& first_name, double first_step, const std::vector<double>& first,
+         const std::string& second_name, double second_step, const std::vector<double>& second,
+         const std::vector<double>& periods, double damping, double rotation) {
+        return pair_spectrum({first_name, first_step, first}, {second_name, second_step, second},
+                             periods, damping, rotation);
+      },
+      py::arg("first_name"), py::arg("first_step"), py::arg("first"), py::arg("second_name"),
+      py::arg("second_step"), py::arg("second"), py::arg("periods"), py::arg("damping"),
+      py::arg("rotation"),
+      "A pair's Sa of each component, geometric mean, RotD50, RotD100 and its direction.");
   module.def("default_spectrum_periods", &model::default_spectrum_periods,
              "40 periods log-spaced from 0.02 s to 10 s.");
 }

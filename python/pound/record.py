@@ -102,6 +102,30 @@ class Record:
                             float(damping))
         return {"periods": periods, "sa": np.asarray(sa)}
 
+    def pair_spectrum(self, second, periods=None, damping=0.05, rotation=0.0):
+        """The intensity measures of this record and ``second``, the same station's other
+        horizontal component (90 degrees from this one, on the same time grid and in the same
+        units): each component's Sa, their geometric mean, and the orientation-independent RotD50
+        and RotD100 (Boore 2010: the median and the largest over the directions 0..179 degrees of
+        the peak oscillator response to the pair), as ``pound spectrum --pair``. ``rotation``
+        [degrees] turns the pair's axes first (the components' Sa change, RotD50 does not).
+        Returns arrays {"periods", "sa1", "sa2", "geometric_mean", "rotd50", "rotd100"} in the
+        records' units and "rotd100_angle" in degrees from this component towards ``second``."""
+        if not isinstance(second, Record):
+            raise InputError(self.name, "second", f"expected a pound.Record, got {second!r}")
+        if second.units != self.units:
+            raise InputError(second.name, "units",
+                             f"the pair's components must be in one unit, got {self.units!r} "
+                             f"and {second.units!r}")
+        if not isinstance(rotation, numbers.Real):
+            raise InputError(second.name, "rotation", f"expected an angle, got {rotation!r}")
+        periods = (np.asarray(_core.default_spectrum_periods()) if periods is None
+                   else _samples(np.atleast_1d(periods), self.name, "periods"))
+        result = _core.pair_spectrum(self.name, self.time_step, self.accelerations, second.name,
+                                     second.time_step, second.accelerations, periods,
+                                     float(damping), float(rotation))
+        return {"periods": periods, **{key: np.asarray(value) for key, value in result.items()}}
+
     def _motion(self):
         """The record as _core.run takes it."""
         motion = {"name": self.name, "units": self.units, "scale": self.scale}

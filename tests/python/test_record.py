@@ -106,3 +106,41 @@ def test_bad_units_scale_and_files_are_refused(tmp_path):
         pound.Record.from_file(tmp_path / "short.txt")
     print(raised.value)
     assert raised.value.file.endswith("short.txt")
+
+
+def test_a_pair_gives_the_measures_of_pound_spectrum_pair(repository, pound_program):
+    import json
+    import subprocess
+    firm = repository / "ground_motions" / "synthetic_firm_01.AT2"
+    soft = repository / "ground_motions" / "synthetic_soft_01.AT2"
+    first, second = pound.Record.from_file(firm), pound.Record.from_file(soft)
+    periods = [0.0, 0.2, 1.0]
+    pair = first.pair_spectrum(second, periods, rotation=20.0)
+    printed = json.loads(subprocess.run(
+        [pound_program, "spectrum", str(firm), "--pair", str(soft), "--rotation", "20",
+         "--periods", "0,0.2,1", "--json"], capture_output=True, text=True, check=True).stdout)
+    print({key: value for key, value in pair.items()})
+    for key, printed_key in [("sa1", "sa1_g"), ("sa2", "sa2_g"), ("rotd50", "rotd50_g"),
+                             ("rotd100", "rotd100_g"), ("geometric_mean", "geometric_mean_g")]:
+        # The program reads in m/s^2 and prints g; the module keeps the records' g.
+        assert np.allclose(pair[key], printed[printed_key], rtol=1e-13, atol=0), key
+    assert list(pair["rotd100_angle"]) == printed["rotd100_angle_deg"]
+    # Turning the sensors moves the components' Sa, not RotD50.
+    plain = first.pair_spectrum(second, periods)
+    assert not np.allclose(plain["sa1"], pair["sa1"])
+    assert np.allclose(plain["rotd50"], pair["rotd50"], rtol=1e-12, atol=0)
+
+
+def test_a_pair_on_different_grids_or_units_is_refused():
+    first = pound.Record(0.01, np.sin(np.arange(100) * 0.1))
+    with pytest.raises(pound.InputError, match="as many samples") as error:
+        first.pair_spectrum(pound.Record(0.01, np.zeros(99), name="east"))
+    assert error.value.file == "east"
+    with pytest.raises(pound.InputError, match="one time step"):
+        first.pair_spectrum(pound.Record(0.02, np.zeros(100)))
+    with pytest.raises(pound.InputError, match="in one unit"):
+        first.pair_spectrum(pound.Record(0.01, np.zeros(100), "m/s2"))
+    with pytest.raises(pound.InputError, match="expected a pound.Record"):
+        first.pair_spectrum(np.zeros(100))
+    with pytest.raises(pound.InputError, match="finite angle"):
+        first.pair_spectrum(pound.Record(0.01, np.zeros(100)), rotation=float("nan"))
