@@ -1,41 +1,36 @@
 // Cost of yielding piers (issue 15): the bundled three-span bridge with elastic piers against the
 // same bridge with Takeda base hinges, gravity and chord P-Delta
 // (models/three_span_bridge_takeda.json), the same record and step. Counters: solve time per
-// step of each (the best of 5 runs, histories off) and their ratio; goal: ratio <= 1.5.
+// step of each (the best of 5 runs, histories off) and their ratio; goal: ratio <= 1.5. And per
+// link row (22 links against 20), the comparison of issue 20: within 1.5 x.
 #include <benchmark/benchmark.h>
 
-#include <algorithm>
 #include <cmath>
 #include <string>
 
-#include "app/model_run.hpp"
+#include "solve_rate.hpp"
 
 namespace {
 
-// Solve seconds per step of a bundled model, the best of `repeats` runs.
-double seconds_per_step(const std::string& model, int repeats) {
-  pound::app::RunRequest request;
-  request.model_path = std::string(POUND_SOURCE_DIR) + "/models/" + model;
-  request.histories = false;
-  double best = INFINITY;
-  for (int k = 0; k < repeats; ++k) {
-    const pound::app::RunOutcome outcome = pound::app::run_model(request);
-    if (!outcome.failure.empty()) return NAN;
-    best = std::min(best, *outcome.case_summary.run_time_s / *outcome.case_summary.steps);
-  }
-  return best;
+std::string bundled(const std::string& model) {
+  return std::string(POUND_SOURCE_DIR) + "/models/" + model;
 }
 
 void yielding_bridge(benchmark::State& state) {
-  double elastic = 0.0, hinged = 0.0;
+  pound::bench::SolveRate elastic, hinged;
   for (auto _ : state) {
-    elastic = seconds_per_step("three_span_bridge.json", 5);
-    hinged = seconds_per_step("three_span_bridge_takeda.json", 5);
+    elastic = pound::bench::solve_rate(bundled("three_span_bridge.json"), 5);
+    hinged = pound::bench::solve_rate(bundled("three_span_bridge_takeda.json"), 5);
   }
-  if (!std::isfinite(elastic) || !std::isfinite(hinged)) state.SkipWithError("a run failed");
-  state.counters["us_per_step_elastic"] = 1e6 * elastic;
-  state.counters["us_per_step_takeda"] = 1e6 * hinged;
-  state.counters["ratio"] = hinged / elastic;
+  if (!std::isfinite(elastic.seconds_per_step) || !std::isfinite(hinged.seconds_per_step))
+    state.SkipWithError("a run failed");
+  state.counters["us_per_step_elastic"] = 1e6 * elastic.seconds_per_step;
+  state.counters["us_per_step_takeda"] = 1e6 * hinged.seconds_per_step;
+  state.counters["ratio"] = hinged.seconds_per_step / elastic.seconds_per_step;
+  // Issue 20: within 1.5 x of the elastic bridge per link row.
+  state.counters["us_per_step_per_link_elastic"] = 1e6 * elastic.per_link();
+  state.counters["us_per_step_per_link_takeda"] = 1e6 * hinged.per_link();
+  state.counters["ratio_per_link"] = hinged.per_link() / elastic.per_link();
 }
 BENCHMARK(yielding_bridge)->Unit(benchmark::kSecond)->Iterations(1);
 

@@ -3,7 +3,8 @@
 // (their damping a1 k_0, or a1 times their committed tangent, inside the storey links), gravity
 // and chord P-Delta; the same record (the bundled synthetic soft-ground record at PGA 0.4 g) and
 // step. Counters: solve time per step of each (the best of 5 runs, histories off) and their
-// ratios to the elastic pair.
+// ratios to the elastic pair; and its cost per step and link row against the bundled elastic
+// bridge's (issue 20: within 1.5 x).
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 #include <unistd.h>
@@ -14,7 +15,7 @@
 #include <fstream>
 #include <string>
 
-#include "app/model_run.hpp"
+#include "solve_rate.hpp"
 
 namespace {
 
@@ -59,41 +60,38 @@ std::string pair_model(bool yielding, const std::string& storey_damping = "initi
                      yielding ? R"("gravity": {"p_delta": "chord"},)" : "", POUND_SOURCE_DIR);
 }
 
-// Solve seconds per step of a model, the best of `repeats` runs.
-double seconds_per_step(const std::string& text, int repeats) {
+// Solve time per step and links of a model given as text, the best of `repeats` runs.
+pound::bench::SolveRate text_rate(const std::string& text, int repeats) {
   const std::filesystem::path file =
       std::filesystem::temp_directory_path() / fmt::format("pound_bench_{}.json", ::getpid());
   std::ofstream(file) << text;
-  pound::app::RunRequest request;
-  request.model_path = file.string();
-  request.histories = false;
-  double best = INFINITY;
-  for (int k = 0; k < repeats; ++k) {
-    const pound::app::RunOutcome outcome = pound::app::run_model(request);
-    if (!outcome.failure.empty()) {
-      best = NAN;
-      break;
-    }
-    best = std::min(best, *outcome.case_summary.run_time_s / *outcome.case_summary.steps);
-  }
+  const pound::bench::SolveRate rate = pound::bench::solve_rate(file.string(), repeats);
   std::filesystem::remove(file);
-  return best;
+  return rate;
 }
 
 void yielding_buildings(benchmark::State& state) {
-  double elastic = 0.0, yielding = 0.0, committed = 0.0;
+  pound::bench::SolveRate bridge, elastic_rate, yielding_rate, committed_rate;
   for (auto _ : state) {
-    elastic = seconds_per_step(pair_model(false), 5);
-    yielding = seconds_per_step(pair_model(true), 5);
-    committed = seconds_per_step(pair_model(true, "committed"), 5);
+    bridge = pound::bench::solve_rate(POUND_SOURCE_DIR "/models/three_span_bridge.json", 5);
+    elastic_rate = text_rate(pair_model(false), 5);
+    yielding_rate = text_rate(pair_model(true), 5);
+    committed_rate = text_rate(pair_model(true, "committed"), 5);
   }
-  if (!std::isfinite(elastic) || !std::isfinite(yielding) || !std::isfinite(committed))
+  const double elastic = elastic_rate.seconds_per_step, yielding = yielding_rate.seconds_per_step,
+               committed = committed_rate.seconds_per_step;
+  if (!std::isfinite(elastic) || !std::isfinite(yielding) || !std::isfinite(committed) ||
+      !std::isfinite(bridge.seconds_per_step))
     state.SkipWithError("a run failed");
   state.counters["us_per_step_elastic"] = 1e6 * elastic;
   state.counters["us_per_step_takeda"] = 1e6 * yielding;
   state.counters["us_per_step_takeda_committed"] = 1e6 * committed;
   state.counters["ratio"] = yielding / elastic;
   state.counters["ratio_committed"] = committed / elastic;
+  // Issue 20: within 1.5 x of the elastic bridge per link row (50 links: 35 storeys, 15 contacts).
+  state.counters["us_per_step_per_link_takeda"] = 1e6 * yielding_rate.per_link();
+  state.counters["us_per_step_per_link_bridge"] = 1e6 * bridge.per_link();
+  state.counters["per_link_vs_bridge"] = yielding_rate.per_link() / bridge.per_link();
 }
 BENCHMARK(yielding_buildings)->Unit(benchmark::kSecond)->Iterations(1);
 
