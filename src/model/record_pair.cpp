@@ -45,7 +45,7 @@ std::vector<double> pseudo_acceleration_history(const GroundMotion& motion, doub
 
 }  // namespace
 
-GroundMotionPair make_component_pair(GroundMotion first, GroundMotion second) {
+void require_one_grid(const GroundMotion& first, const GroundMotion& second) {
   const std::string names = fmt::format("the components '{}' and '{}'", first.name, second.name);
   if (first.acceleration.size() != second.acceleration.size())
     throw std::invalid_argument(fmt::format("{} of a pair must have as many samples ({} and {})",
@@ -54,10 +54,15 @@ GroundMotionPair make_component_pair(GroundMotion first, GroundMotion second) {
   if (!(std::abs(first.time_step - second.time_step) <= 1e-9 * first.time_step))
     throw std::invalid_argument(fmt::format("{} of a pair must have one time step ({:g} and {:g})",
                                             names, first.time_step, second.time_step));
+}
+
+GroundMotionPair make_component_pair(GroundMotion first, GroundMotion second) {
+  require_one_grid(first, second);
   return {std::move(first), std::move(second)};
 }
 
 GroundMotionPair rotated(const GroundMotionPair& pair, double angle) {
+  require_one_grid(pair.first, pair.second);  // a pair put together by hand
   GroundMotionPair turned = pair;
   const double c = std::cos(angle), s = std::sin(angle);
   for (std::size_t k = 0; k < pair.first.acceleration.size(); ++k) {
@@ -71,6 +76,7 @@ GroundMotionPair rotated(const GroundMotionPair& pair, double angle) {
 PairSpectralAcceleration pair_spectral_acceleration(const GroundMotionPair& pair, double period,
                                                     double damping_ratio) {
   // The components' own spectra first: they check the period, damping and samples.
+  require_one_grid(pair.first, pair.second);
   PairSpectralAcceleration result;
   result.first = spectral_acceleration(pair.first, period, damping_ratio);
   result.second = spectral_acceleration(pair.second, period, damping_ratio);

@@ -22,8 +22,11 @@ struct GroundMotionPair {
   GroundMotion first, second;  // orthogonal horizontal components, `second` 90 degrees from `first`
 };
 
-// The pair, once checked to be on one time grid: the same time step (to 1e-9 of it) and the same
-// number of samples. Throws std::invalid_argument naming both otherwise.
+// Throws std::invalid_argument naming both components unless they are on one time grid: the
+// same time step (to 1e-9 of it) and the same number of samples.
+void require_one_grid(const GroundMotion& first, const GroundMotion& second);
+// The pair, once checked to be on one time grid (rotated and pair_spectral_acceleration check a
+// pair put together otherwise).
 GroundMotionPair make_component_pair(GroundMotion first, GroundMotion second);
 
 // The pair's axes turned by `angle` [rad], counter-clockwise from `first` towards `second`:

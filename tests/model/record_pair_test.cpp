@@ -130,6 +130,11 @@ TEST(RecordPair, ComponentsOnDifferentTimeGridsAreRefusedNamingBoth) {
           sampled("east.AT2", first_signal, 0.01, 2000), "as many samples (2001 and 2000)");
   refused(sampled("north.AT2", first_signal, 0.01, 2001),
           sampled("east.AT2", first_signal, 0.005, 2001), "one time step");
+  // A pair put together by hand is checked where it is used.
+  const GroundMotionPair uneven{sampled("north.AT2", first_signal, 0.01, 2001),
+                                sampled("east.AT2", first_signal, 0.01, 1000)};
+  EXPECT_THROW(pair_spectral_acceleration(uneven, 1.0, 0.05), std::invalid_argument);
+  EXPECT_THROW(rotated(uneven, 0.3), std::invalid_argument);
 }
 
 }  // namespace
