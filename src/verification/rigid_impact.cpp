@@ -204,13 +204,15 @@ PlanImpact simultaneous_impact(const RigidBodyInPlan& body, const PlanVelocity& 
   }
   if (found.empty())
     throw std::runtime_error("no combination of contact states satisfies the impact laws");
+  // The outcomes must move the body alike: velocities, and the spin times the farthest contact.
   const PlanVelocity& first = found.front().after;
-  const double speed = std::max({std::abs(before.x), std::abs(before.y), 1e-300});
+  double speed = std::max(std::abs(before.x), std::abs(before.y)), reach = 0.0;
+  for (const PlanContact& contact : contacts)
+    reach = std::max(reach, std::hypot(contact.point.x, contact.point.y));
+  speed = std::max(speed, std::abs(before.spin) * reach);
   for (const PlanImpact& other : found)
-    if (std::abs(other.after.x - first.x) > 1e-8 * speed ||
-        std::abs(other.after.y - first.y) > 1e-8 * speed ||
-        std::abs(other.after.spin - first.spin) * 1.0 >
-            1e-8 * std::max(std::abs(first.spin), speed))
+    if (std::max({std::abs(other.after.x - first.x), std::abs(other.after.y - first.y),
+                  std::abs(other.after.spin - first.spin) * reach}) > 1e-8 * speed)
       throw std::runtime_error(
           fmt::format("the impact laws allow {} outcomes with different velocities", found.size()));
   return found.front();
