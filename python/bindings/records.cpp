@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -100,7 +101,7 @@ py::dict pair_spectrum(const model::GroundMotion& first, const model::GroundMoti
   std::vector<std::vector<double>> columns(6, std::vector<double>(periods.size()));
   {
     const py::gil_scoped_release unlocked;
-    if (rotation != 0.0) pair = model::rotated(pair, rotation * std::acos(-1.0) / 180.0);
+    if (rotation != 0.0) pair = model::rotated(pair, rotation * std::numbers::pi / 180.0);
     for (std::size_t k = 0; k < periods.size(); ++k) {
       const model::PairSpectralAcceleration sa =
           model::pair_spectral_acceleration(pair, periods[k], damping_ratio);

@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <stdexcept>
-#include <tuple>
 
 namespace pound::assembly {
 namespace {
@@ -28,26 +27,25 @@ void add_pair(Matrix12& k, int d, double diagonal, double coupling) {
   k(d + 6, d) += coupling;
 }
 
-// Puts a 4 x 4 block on (deflection_i, rotation_i, deflection_j, rotation_j) of one bending
+using Block4 = double[4][4];
+
+// Adds factor x `block` on (deflection_i, rotation_i, deflection_j, rotation_j) of one bending
 // plane, its deflection-rotation terms times `sign` (-1 in the x'-z' plane, where
 // theta_y' = -dw'/dx').
-void add_bending(Matrix12& k, int deflection, int rotation, const double (&block)[4][4],
+void add_bending(Matrix12& k, int deflection, int rotation, const Block4& block, double factor,
                  double sign) {
   const int dofs[4] = {deflection, rotation, deflection + 6, rotation + 6};
   const bool is_rotation[4] = {false, true, false, true};
   for (int a = 0; a < 4; ++a)
     for (int b = 0; b < 4; ++b)
-      k(dofs[a], dofs[b]) += (is_rotation[a] != is_rotation[b] ? sign : 1.0) * block[a][b];
+      k(dofs[a], dofs[b]) +=
+          (is_rotation[a] != is_rotation[b] ? sign : 1.0) * (factor * block[a][b]);
 }
 
-// The cubic Hermitian bending block (Przemieniecki): stiffness EI/L^3 x this.
-void hermitian_stiffness(double l, double (&block)[4][4]) {
-  const double values[4][4] = {{12, 6 * l, -12, 6 * l},
-                               {6 * l, 4 * l * l, -6 * l, 2 * l * l},
-                               {-12, -6 * l, 12, -6 * l},
-                               {6 * l, 2 * l * l, -6 * l, 4 * l * l}};
-  for (int a = 0; a < 4; ++a)
-    for (int b = 0; b < 4; ++b) block[a][b] = values[a][b];
+// Adds factor x `block` in both bending planes.
+void add_both_bendings(Matrix12& k, const Block4& block, double factor_v, double factor_w) {
+  add_bending(k, kV, kTz, block, factor_v, 1.0);
+  add_bending(k, kW, kTy, block, factor_w, -1.0);
 }
 
 Eigen::Matrix3d skew(const Point3& o) {
@@ -91,17 +89,13 @@ Beam3d::Matrix12 Beam3d::make_local_stiffness() const {
   add_pair(k, kU, e * section_.area / l, -e * section_.area / l);
   add_pair(k, kTx, section_.shear_modulus * section_.torsion / l,
            -section_.shear_modulus * section_.torsion / l);
-  double block[4][4];
-  hermitian_stiffness(l, block);
+  // The cubic Hermitian bending stiffness (Przemieniecki), times EI/L^3.
+  const Block4 hermitian = {{12, 6 * l, -12, 6 * l},
+                            {6 * l, 4 * l * l, -6 * l, 2 * l * l},
+                            {-12, -6 * l, 12, -6 * l},
+                            {6 * l, 2 * l * l, -6 * l, 4 * l * l}};
   const double l3 = l * l * l;
-  double scaled[4][4];
-  for (const auto& [deflection, rotation, inertia, sign] :
-       {std::tuple{kV, kTz, section_.inertia_z, 1.0},
-        std::tuple{kW, kTy, section_.inertia_y, -1.0}}) {
-    for (int a = 0; a < 4; ++a)
-      for (int b = 0; b < 4; ++b) scaled[a][b] = e * inertia / l3 * block[a][b];
-    add_bending(k, deflection, rotation, scaled, sign);
-  }
+  add_both_bendings(k, hermitian, e * section_.inertia_z / l3, e * section_.inertia_y / l3);
   return k;
 }
 
@@ -111,13 +105,11 @@ Beam3d::Matrix12 Beam3d::local_consistent_mass() const {
   add_pair(mass, kU, m / 3.0, m / 6.0);
   const double polar = section_.density * (section_.inertia_y + section_.inertia_z) * l;
   add_pair(mass, kTx, polar / 3.0, polar / 6.0);
-  const double c = m / 420.0;
-  const double block[4][4] = {{156 * c, 22 * l * c, 54 * c, -13 * l * c},
-                              {22 * l * c, 4 * l * l * c, 13 * l * c, -3 * l * l * c},
-                              {54 * c, 13 * l * c, 156 * c, -22 * l * c},
-                              {-13 * l * c, -3 * l * l * c, -22 * l * c, 4 * l * l * c}};
-  add_bending(mass, kV, kTz, block, 1.0);
-  add_bending(mass, kW, kTy, block, -1.0);
+  const Block4 hermitian = {{156, 22 * l, 54, -13 * l},
+                            {22 * l, 4 * l * l, 13 * l, -3 * l * l},
+                            {54, 13 * l, 156, -22 * l},
+                            {-13 * l, -3 * l * l, -22 * l, 4 * l * l}};
+  add_both_bendings(mass, hermitian, m / 420.0, m / 420.0);
   return mass;
 }
 
@@ -162,13 +154,11 @@ Matrix Beam3d::geometric_stiffness(const Vector& u, model::GeometricStiffness ki
     add_pair(k, kV, axial / l, -axial / l);
     add_pair(k, kW, axial / l, -axial / l);
   } else {
-    const double c = axial / (30.0 * l);
-    const double block[4][4] = {{36 * c, 3 * l * c, -36 * c, 3 * l * c},
-                                {3 * l * c, 4 * l * l * c, -3 * l * c, -l * l * c},
-                                {-36 * c, -3 * l * c, 36 * c, -3 * l * c},
-                                {3 * l * c, -l * l * c, -3 * l * c, 4 * l * l * c}};
-    add_bending(k, kV, kTz, block, 1.0);
-    add_bending(k, kW, kTy, block, -1.0);
+    const Block4 hermitian = {{36, 3 * l, -36, 3 * l},
+                              {3 * l, 4 * l * l, -3 * l, -l * l},
+                              {-36, -3 * l, 36, -3 * l},
+                              {3 * l, -l * l, -3 * l, 4 * l * l}};
+    add_both_bendings(k, hermitian, axial / (30.0 * l), axial / (30.0 * l));
   }
   const Matrix12 global = transformation_.transpose() * k * transformation_;
   return global;

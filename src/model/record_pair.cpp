@@ -33,10 +33,18 @@ std::array<double, kAngles> rotated_peaks(const std::vector<double>& first,
 }
 
 // Each component's response to project: the oscillator's displacement times w^2, or the ground
-// accelerations (period 0, or an oscillator that follows the ground rigidly).
+// accelerations (period 0, or an oscillator that follows the ground rigidly), as
+// spectral_acceleration takes them, so that the projections at 0 and 90 degrees are the
+// components' Sa to the bit.
 std::vector<double> pseudo_acceleration_history(const GroundMotion& motion, double period,
                                                 double damping_ratio) {
-  if (period == 0.0 || follows_base_rigidly(period, motion.time_step)) return motion.acceleration;
+  const bool rigid = period > 0.0 && follows_base_rigidly(period, motion.time_step) &&
+                     damping_ratio >= 0.0 && damping_ratio < 1.0;
+  if (period == 0.0 || rigid) {
+    if (motion.acceleration.empty() || !(motion.time_step > 0.0))
+      throw std::invalid_argument("ground motion '" + motion.name + "' has no samples");
+    return motion.acceleration;
+  }
   std::vector<double> history = sdof_response(motion, period, damping_ratio).displacement;
   const double omega = 2.0 * std::numbers::pi / period;
   for (double& u : history) u *= omega * omega;
@@ -75,15 +83,16 @@ GroundMotionPair rotated(const GroundMotionPair& pair, double angle) {
 
 PairSpectralAcceleration pair_spectral_acceleration(const GroundMotionPair& pair, double period,
                                                     double damping_ratio) {
-  // The components' own spectra first: they check the period, damping and samples.
   require_one_grid(pair.first, pair.second);
-  PairSpectralAcceleration result;
-  result.first = spectral_acceleration(pair.first, period, damping_ratio);
-  result.second = spectral_acceleration(pair.second, period, damping_ratio);
-  result.geometric_mean = std::sqrt(result.first * result.second);
+  // One oscillator run per component (sdof_response checks the period and damping); the
+  // projections at 0 and 90 degrees are the components' own Sa.
   const std::array<double, kAngles> peaks =
       rotated_peaks(pseudo_acceleration_history(pair.first, period, damping_ratio),
                     pseudo_acceleration_history(pair.second, period, damping_ratio));
+  PairSpectralAcceleration result;
+  result.first = peaks[0];
+  result.second = peaks[90];
+  result.geometric_mean = std::sqrt(result.first * result.second);
   const auto largest = std::max_element(peaks.begin(), peaks.end());
   result.rot_d100 = *largest;
   result.rot_d100_angle = static_cast<double>(largest - peaks.begin());
@@ -92,6 +101,9 @@ PairSpectralAcceleration pair_spectral_acceleration(const GroundMotionPair& pair
   const double upper = sorted[kAngles / 2];
   const double lower = *std::max_element(sorted.begin(), sorted.begin() + kAngles / 2);
   result.rot_d50 = 0.5 * (lower + upper);
+  if (!std::isfinite(result.rot_d100))
+    throw std::invalid_argument("the spectral acceleration of the pair '" + pair.first.name +
+                                "' at that period overflows the number range");
   return result;
 }
 
