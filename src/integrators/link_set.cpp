@@ -103,7 +103,7 @@ void LinkSet::evaluate(const Vector& delta, const Vector& rate, const Vector& ac
                        Total total, Vector& force, Matrix& tangent) {
   const Index rows = size();
   force.resize(rows);
-  tangent.setZero(rows, rows);
+  if (tangent.rows() != rows || tangent.cols() != rows) tangent.setZero(rows, rows);
   for (std::size_t k = 0; k < links_.size(); ++k) {
     const Index n = first_row_[k];
     const links::LinkKinematics normal{delta[n], rate[n], acceleration[n]};

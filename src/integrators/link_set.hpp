@@ -56,7 +56,9 @@ class LinkSet {
 
   // Sets every law's trial state; returns the row forces and the total tangent
   // dF/d(delta) + dF/d(delta_dot) * rate_factor + dF/d(delta_ddot) * acceleration_factor,
-  // block diagonal (a 2 x 2 block, not symmetric, for a link with friction).
+  // block diagonal (a 2 x 2 block, not symmetric, for a link with friction). Only the blocks'
+  // entries are written: a tangent already of this size keeps its zeros outside them (callers
+  // may change entries inside the blocks only), as zeroing all m x m cost more than the laws.
   void set_trial(const Vector& delta, const Vector& rate, const Vector& acceleration,
                  double rate_factor, double acceleration_factor, Vector& force, Matrix& tangent);
   // The same with dF/d(delta_ddot) alone (the laws' mass terms, exactly), for an explicit step:

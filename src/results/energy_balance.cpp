@@ -94,12 +94,12 @@ void EnergyBalance::record(const integrators::State& state) {
     if (state.link_force.size() > 0) {
       // Work of the link forces on the structure (B du): with moving supports the links also
       // deform by the supports' motion, whose work is not the structure's.
-      system_.links().project(step, work_);
+      system_.links().project(step, link_step_);
       average_force_ = 0.5 * (state.link_force + previous_.link_force);
       if (step_force_weight_.size() > 0)
         average_force_ +=
             0.5 * step_force_weight_.cwiseProduct(state.link_force - previous_.link_force);
-      terms_.links += average_force_.dot(work_);
+      terms_.links += average_force_.dot(link_step_);
     }
   }
   worst_ = std::max(worst_, terms_.balance_error());

@@ -85,7 +85,9 @@ class EnergyBalance : public Observer {
   double worst_ = 0.0;
   bool started_ = false;
   integrators::State previous_;
-  Vector previous_external_, external_, work_, average_, step_;
+  // work_ has the DOFs' size, link_step_ the link rows': one buffer for both would be reallocated
+  // twice a step.
+  Vector previous_external_, external_, work_, link_step_, average_, step_;
   Vector inverse_mass_;  // 1 / m_i of the lumped masses, 0 where none (step_load_energy)
   static constexpr long kRoundOffStride = 64;  // steps between samples of the round-off floor
   long recorded_steps_ = 0;                    // since the start
