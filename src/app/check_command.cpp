@@ -14,6 +14,7 @@
 #include "core/errors.hpp"
 #include "io/document.hpp"
 #include "links/extended_penalty.hpp"
+#include "model/direction.hpp"
 #include "verification/model_check.hpp"
 
 namespace pound::app {
@@ -34,12 +35,11 @@ options)";
 
 // The findings as text: the model, its periods and stable steps, a line per contact link.
 std::string check_text(const std::string& model_path, const verification::ModelCheck& check) {
-  static const char* kDirection[] = {"x", "y", "rotation"};
   std::string directions;
-  for (std::size_t d = 0; d < 3; ++d)
-    if (check.dofs_by_direction[d] > 0)
-      directions += fmt::format("{}{} {}", directions.empty() ? "" : ", ",
-                                check.dofs_by_direction[d], kDirection[d]);
+  for (int d = 0; d < model::direction_count(check.dimension); ++d)
+    if (const Index count = check.dofs_by_direction[static_cast<std::size_t>(d)]; count > 0)
+      directions += fmt::format("{}{} {}", directions.empty() ? "" : ", ", count,
+                                model::direction(d, check.dimension).words);
   std::string text = fmt::format("{}: {} DOFs ({}), {} links\n", model_path, check.dofs,
                                  directions.empty() ? "none free" : directions, check.links);
   if (!check.periods.empty()) {

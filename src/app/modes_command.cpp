@@ -16,6 +16,7 @@
 #include "io/document.hpp"
 #include "io/output.hpp"
 #include "io/output_paths.hpp"
+#include "model/direction.hpp"
 
 namespace pound::app {
 namespace po = boost::program_options;
@@ -104,7 +105,6 @@ ListedModes list_modes(const assembly::StructuralSystem& system, std::size_t nod
 // The shapes as a table: a row per free DOF, a column per mode.
 Table shapes_table(const LoadedModel& loaded, const assembly::StructuralSystem& system,
                    const std::vector<ListedMode>& modes) {
-  static const char* kDirection[] = {"u_x", "u_y", "r_z"};
   std::vector<std::string> columns;
   for (const ListedMode& mode : modes) columns.push_back(fmt::format("mode_{}", mode.number));
   Table table = table_with_columns(columns);
@@ -114,8 +114,10 @@ Table shapes_table(const LoadedModel& loaded, const assembly::StructuralSystem& 
     for (int d = 0; d < dofs.dofs_per_node(); ++d) {
       const Index row = dofs.equation(node, d);
       if (row < 0) continue;
-      labels.push_back(loaded.built.model.nodes[static_cast<std::size_t>(node)].id + "." +
-                       kDirection[d]);
+      const model::Direction along = model::direction(d, dofs.dimension());
+      labels.push_back(fmt::format("{}.{}_{}",
+                                   loaded.built.model.nodes[static_cast<std::size_t>(node)].id,
+                                   along.rotation ? "r" : "u", "xyz"[along.axis]));
       for (std::size_t m = 0; m < modes.size(); ++m)
         table.values[m].push_back(modes[m].shape[row] + 0.0);  // no -0
     }

@@ -2,7 +2,7 @@
 // Two-node 3-D elastic beam-column (Euler-Bernoulli bending about both principal axes, axial,
 // Saint-Venant torsion; no shear deformation, no warping), for girders, piers and columns of a
 // 3-D scene (docs/design.md 4.5). DOFs per node (u_x, u_y, u_z, theta_x, theta_y, theta_z) in
-// global axes, rotations right-handed: a 3-D scene's directions 0 to 5.
+// global axes, rotations right-handed: a 3-D scene's directions 0 to 5 (model/direction.hpp).
 //
 // Ends: each node plus an optional rigid offset o (global, from the node to the end of the
 // flexible part, as OpenSees' jntOffset): the end moves as u_end = u_node + theta_node x o, so

@@ -197,14 +197,16 @@ void check_every_free_dof_is_held(const model::Model& model, const model::DofMap
   for (const auto& entry : elements.stiffness)
     if (entry.row() == entry.col()) diagonal_stiffness[entry.row()] += entry.value();
   for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
-    for (int d = 0; d < std::min(dofs.dofs_per_node(), 2); ++d)
+    for (int d = 0; d < dofs.dofs_per_node(); ++d)
       if (const Index row = dofs.equation(node, d);
-          row >= 0 && !(diagonal_mass[row] > 0.0) && !(diagonal_stiffness[row] > 0.0))
+          !model::direction(d, model.dimension).rotation && row >= 0 &&
+          !(diagonal_mass[row] > 0.0) && !(diagonal_stiffness[row] > 0.0))
         throw InputError(
             "", fmt::format("/nodes/{}", node),
             fmt::format("node '{}' has neither mass nor stiffness in direction {} (add "
                         "a mass, an element, or a support)",
-                        model.nodes[static_cast<std::size_t>(node)].id, model::direction_name(d)));
+                        model.nodes[static_cast<std::size_t>(node)].id,
+                        model::direction(d, model.dimension).words));
 }
 
 // The matrix of `entries` plus diag(diagonal) (whose nonzero entries are appended to `entries`).
@@ -697,8 +699,10 @@ void StructuralSystem::frame_acceleration(double time, Vector& acceleration) con
 }
 
 double StructuralSystem::support_acceleration(Index node, int direction, double time) const {
-  if (direction > 1) return 0.0;  // the ground does not turn
-  const auto component = static_cast<std::size_t>(direction);
+  const model::Direction along = model::direction(direction, dofs_.dimension());
+  // The ground does not turn, and moves only in the plane of its records' directions.
+  if (along.rotation || along.axis >= static_cast<int>(model::Coordinates().size())) return 0.0;
+  const auto component = static_cast<std::size_t>(along.axis);
   double acceleration = 0.0;
   for (const Excitation& excitation : excitations_)
     acceleration += excitation.motion.at(time) * excitation.direction[component];

@@ -85,7 +85,8 @@ void check_implicit_hard_contacts(const model::Model& model, assembly::Structura
                         k < static_cast<Index>(model.links.size())
                             ? model.links[static_cast<std::size_t>(k)].id
                             : fmt::format("#{}", k),
-                        model.nodes[static_cast<std::size_t>(node)].id, model::direction_name(d)));
+                        model.nodes[static_cast<std::size_t>(node)].id,
+                        model::direction(d, model.dimension).words));
       }
   }
 }
@@ -109,12 +110,12 @@ void settle_time_step(AnalysisSpec& analysis, const model::Model& model,
   for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
     for (int d = 0; d < system.dofs().dofs_per_node(); ++d)
       if (const Index row = system.dofs().equation(node, d); row >= 0 && !((*lumped)[row] > 0.0))
-        throw InputError(
-            source, "/analysis/integrator",
-            fmt::format("central difference needs a lumped mass on every free DOF, "
-                        "and node '{}' has none in direction {}: add a mass there, "
-                        "or use an implicit integrator",
-                        model.nodes[static_cast<std::size_t>(node)].id, model::direction_name(d)));
+        throw InputError(source, "/analysis/integrator",
+                         fmt::format("central difference needs a lumped mass on every free DOF, "
+                                     "and node '{}' has none in direction {}: add a mass there, "
+                                     "or use an implicit integrator",
+                                     model.nodes[static_cast<std::size_t>(node)].id,
+                                     model::direction(d, model.dimension).words));
   double limit = 0.0;
   try {
     limit = integrators::stable_time_step(system, true);

@@ -26,7 +26,7 @@ NodeDirection node_of(const model::Model& model, const model::DofMap& dofs, Inde
 std::string node_words(const BuiltModel& built, const NodeDirection& place) {
   return fmt::format("node '{}', direction {}",
                      built.model.nodes[static_cast<std::size_t>(place.node)].id,
-                     model::direction_name(place.direction));
+                     model::direction(place.direction, built.model.dimension).words);
 }
 std::string node_path(const BuiltModel& built, const NodeDirection& place) {
   const auto node = static_cast<std::size_t>(place.node);

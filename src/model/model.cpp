@@ -11,22 +11,25 @@ int Model::dofs_per_node() const {
   return count;
 }
 
-DofMap::DofMap(const Model& model) : dofs_per_node_(model.dofs_per_node()) {
+DofMap::DofMap(const Model& model)
+    : dofs_per_node_(model.dofs_per_node()), dimension_(model.dimension) {
   equations_.assign(model.nodes.size() * static_cast<std::size_t>(dofs_per_node_), 0);
-  // In a frame scene only nodes that an element or a rotational link turns have a rotation;
+  // In a frame scene only nodes that an element or a rotational link turns have rotations;
   // the others (truss joints, lumped masses, contact points) have none to solve for.
-  if (dofs_per_node_ == 3) {
-    std::vector<bool> turns(model.nodes.size(), false);
-    for (const auto& element : model.elements)
-      if (std::ranges::find(element->directions(), 2) != element->directions().end())
-        for (Index node : element->nodes()) turns[static_cast<std::size_t>(node)] = true;
-    for (const Link& link : model.links)
-      if (link.rotational)
-        turns[static_cast<std::size_t>(link.node_i)] =
-            turns[static_cast<std::size_t>(link.node_j)] = true;
-    for (std::size_t node = 0; node < turns.size(); ++node)
-      if (!turns[node]) equations_[node * 3 + 2] = -1;
-  }
+  std::vector<bool> turns(model.nodes.size(), false);
+  const auto is_rotation = [this](int d) { return direction(d, dimension_).rotation; };
+  for (const auto& element : model.elements)
+    if (std::ranges::any_of(element->directions(), is_rotation))
+      for (Index node : element->nodes()) turns[static_cast<std::size_t>(node)] = true;
+  for (const Link& link : model.links)
+    if (link.rotational)
+      turns[static_cast<std::size_t>(link.node_i)] = turns[static_cast<std::size_t>(link.node_j)] =
+          true;
+  const auto per_node = static_cast<std::size_t>(dofs_per_node_);
+  for (std::size_t node = 0; node < turns.size(); ++node)
+    for (int d = 0; d < dofs_per_node_; ++d)
+      if (!turns[node] && is_rotation(d))
+        equations_[node * per_node + static_cast<std::size_t>(d)] = -1;
   for (const Support& support : model.supports)
     for (int d = 0; d < dofs_per_node_; ++d)
       if (support.fixed[static_cast<std::size_t>(d)])

@@ -16,6 +16,7 @@
 #include "core/types.hpp"
 #include "links/law_registry.hpp"
 #include "links/link_context.hpp"
+#include "model/direction.hpp"
 #include "model/element.hpp"
 #include "model/ground_motion.hpp"
 
@@ -121,18 +122,13 @@ struct Model {
   int dofs_per_node() const;
 };
 
-// A DOF direction as messages name it: 0 x, 1 y, 2 rotation.
-inline const char* direction_name(int direction) {
-  constexpr const char* kNames[] = {"x", "y", "rotation"};
-  return kNames[direction];
-}
-
 // Equation numbers of the free DOFs, in node order (a chain of nodes gives a banded matrix).
 class DofMap {
  public:
   explicit DofMap(const Model& model);
   Index size() const { return size_; }
   int dofs_per_node() const { return dofs_per_node_; }
+  int dimension() const { return dimension_; }  // the scene's, for model::direction
   // Equation of (node, direction), or -1 where the DOF is fixed.
   Index equation(Index node, int direction) const {
     return equations_[static_cast<std::size_t>(node * dofs_per_node_ + direction)];
@@ -140,6 +136,7 @@ class DofMap {
 
  private:
   int dofs_per_node_;
+  int dimension_;
   Index size_ = 0;
   std::vector<Index> equations_;
 };

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "model/direction.hpp"
+
 namespace pound::results {
 
 std::vector<std::string> unit_names(const UnitNames& units,
@@ -35,8 +37,8 @@ void LinkQuantities::take(const integrators::State& state, double* values) const
 }
 
 NodeQuantities::NodeQuantities(std::vector<std::vector<Index>> equations,
-                               std::vector<std::vector<int>> directions, std::vector<Index> nodes,
-                               const std::vector<std::string>& ids,
+                               std::vector<std::vector<int>> directions, int dimension,
+                               std::vector<Index> nodes, const std::vector<std::string>& ids,
                                builder::AccelerationFrame accelerations, GroundAcceleration& ground)
     : equations_(std::move(equations)),
       nodes_(std::move(nodes)),
@@ -44,13 +46,12 @@ NodeQuantities::NodeQuantities(std::vector<std::vector<Index>> equations,
       absolute_(accelerations != builder::AccelerationFrame::relative),
       ground_(ground),
       directions_(std::move(directions)) {
-  static const char* kDirection[] = {"x", "y", "rz"};
   for (std::size_t k = 0; k < ids.size(); ++k)
     for (std::size_t i = 0; i < equations_[k].size(); ++i) {
       const std::string name = ids[k] + ".";
-      const int d = directions_[k].at(i);
-      const char* direction = kDirection[d];
-      const bool rotation = d == 2;
+      const model::Direction along = model::direction(directions_[k].at(i), dimension);
+      const std::string direction = along.symbol;
+      const bool rotation = along.rotation;
       add(name + "u_" + direction, rotation ? Dimension::angle : Dimension::length);
       add(name + "v_" + direction, rotation ? Dimension::angular_velocity : Dimension::velocity);
       const Dimension acceleration =

@@ -74,10 +74,10 @@ class LinkQuantities final : public Quantities {
 // ground's acceleration (a fixed DOF's is the ground's).
 class NodeQuantities final : public Quantities {
  public:
-  // equations[k][i]: equation of node k in direction directions[k][i] (0 x, 1 y, 2 rz), or -1
-  // where fixed; nodes[k] its index.
+  // equations[k][i]: equation of node k in direction directions[k][i] (model::direction of a
+  // scene of `dimension`), or -1 where fixed; nodes[k] its index.
   NodeQuantities(std::vector<std::vector<Index>> equations,
-                 std::vector<std::vector<int>> directions, std::vector<Index> nodes,
+                 std::vector<std::vector<int>> directions, int dimension, std::vector<Index> nodes,
                  const std::vector<std::string>& ids, builder::AccelerationFrame accelerations,
                  GroundAcceleration& ground);
   void take(const integrators::State& state, double* values) const override;

@@ -32,11 +32,14 @@ std::unique_ptr<Quantities> link_quantities(const builder::BuiltModel& built,
 }
 
 // The directions a node moves in: its free DOFs (a floor of a shear building has no y or
-// rotation); a node fixed in every direction moves with its support, whose x is recorded.
-std::vector<int> free_directions(const model::DofMap& dofs, Index node, int count) {
+// rotation), translations only if asked; a node fixed in every direction moves with its
+// support, whose x is recorded.
+std::vector<int> free_directions(const model::DofMap& dofs, Index node, bool translations_only) {
   std::vector<int> directions;
-  for (int d = 0; d < count; ++d)
-    if (dofs.equation(node, d) >= 0) directions.push_back(d);
+  for (int d = 0; d < dofs.dofs_per_node(); ++d)
+    if (dofs.equation(node, d) >= 0 &&
+        !(translations_only && model::direction(d, dofs.dimension()).rotation))
+      directions.push_back(d);
   if (directions.empty()) directions.push_back(0);
   return directions;
 }
@@ -50,12 +53,13 @@ std::unique_ptr<Quantities> node_quantities(const builder::BuiltModel& built,
   std::vector<std::vector<int>> directions;
   for (Index node : spec.items) {
     ids.push_back(built.model.nodes[static_cast<std::size_t>(node)].id);
-    directions.push_back(free_directions(dofs, node, dofs.dofs_per_node()));
+    directions.push_back(free_directions(dofs, node, false));
     std::vector<Index>& per_direction = equations.emplace_back();
     for (int d : directions.back()) per_direction.push_back(dofs.equation(node, d));
   }
-  return std::make_unique<NodeQuantities>(std::move(equations), std::move(directions), spec.items,
-                                          ids, spec.accelerations, ground);
+  return std::make_unique<NodeQuantities>(std::move(equations), std::move(directions),
+                                          dofs.dimension(), spec.items, ids, spec.accelerations,
+                                          ground);
 }
 
 // A node's free translational directions (x when it has none: its support's motion).
@@ -64,9 +68,10 @@ std::vector<SpectrumPlace> spectrum_places(const builder::BuiltModel& built,
                                            const std::vector<Index>& nodes) {
   std::vector<SpectrumPlace> places;
   for (Index node : nodes)
-    for (int d : free_directions(dofs, node, std::min(2, dofs.dofs_per_node())))
-      places.push_back(
-          {built.model.nodes[static_cast<std::size_t>(node)].id, dofs.equation(node, d), node, d});
+    for (int d : free_directions(dofs, node, true))
+      places.push_back({built.model.nodes[static_cast<std::size_t>(node)].id,
+                        dofs.equation(node, d), node, d,
+                        model::direction(d, dofs.dimension()).symbol});
   return places;
 }
 

@@ -36,7 +36,6 @@ void SpectrumRecorder::record(const integrators::State& state) {
 }
 
 Table SpectrumRecorder::table() const {
-  static const char* kDirection[] = {"x", "y"};
   Table table = table_with_columns({"period"});
   table.values[0] = periods_;
   table.units.push_back(units_.of(Dimension::time));
@@ -44,7 +43,7 @@ Table SpectrumRecorder::table() const {
   for (const SpectrumPlace& place : places_)
     for (double damping : damping_ratios_) {
       table.columns.push_back(
-          fmt::format("{}.sa_{}_{:g}%", place.id, kDirection[place.direction], 100.0 * damping));
+          fmt::format("{}.sa_{}_{:g}%", place.id, place.symbol, 100.0 * damping));
       table.units.push_back(units_.of(Dimension::acceleration));
       std::vector<double>& column = table.values.emplace_back();
       for (std::size_t p = 0; p < periods_.size(); ++p)

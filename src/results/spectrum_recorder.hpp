@@ -15,10 +15,11 @@ namespace pound::results {
 struct SpectrumPlace {
   std::string id;  // the node's
   Index equation = -1, node = 0;
-  int direction = 0;  // 0: x, 1: y
+  int direction = 0;         // a translation (model::direction)
+  std::string symbol = "x";  // its name in the columns
 };
 
-// Columns period and <id>.sa_<x|y>_<100 zeta>% per place and damping ratio, a row per period;
+// Columns period and <id>.sa_<x|y|z>_<100 zeta>% per place and damping ratio, a row per period;
 // Sa in the model's acceleration units. Exact for the acceleration linear between the steps
 // (model::ResponseOscillator), so it equals the spectrum of the recorded a_abs history.
 class SpectrumRecorder final : public Recorder {

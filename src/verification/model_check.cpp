@@ -189,6 +189,7 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
   const builder::AnalysisSpec& analysis = built.analysis;
   const integrators::LinkSet& links = system.links();
   ModelCheck check{system.size(), system.dofs().dofs_per_node(), links.count()};
+  check.dimension = built.model.dimension;
   for (Index node = 0; node < static_cast<Index>(built.model.nodes.size()); ++node)
     for (int d = 0; d < system.dofs().dofs_per_node(); ++d)
       if (system.dofs().equation(node, d) >= 0)

@@ -35,9 +35,10 @@ struct ModelCheck {
   Index dofs = 0;
   int dofs_per_node = 0;
   Index links = 0;
-  // The free DOFs along x, y and rotation: the directions the scene moves in (a shear building in
-  // a plane has x and, at its column cuts, rotation, but no y).
-  std::array<Index, 3> dofs_by_direction{0, 0, 0};
+  int dimension = 1;  // the scene's, which numbers the directions (model::direction)
+  // The free DOFs per direction: the directions the scene moves in (a shear building in a plane
+  // has x and, at its column cuts, rotation, but no y).
+  std::array<Index, 6> dofs_by_direction{};
   std::vector<double> periods;  // the first six; none above 4000 DOFs or when not asked
   // Central difference's stable step; none without a lumped mass on every DOF.
   std::optional<double> explicit_step_open, explicit_step_contact;

@@ -344,7 +344,7 @@ TEST(StructuralSystem, AssemblyLosesNothing) {
       2.5 * 0.2 * (3.0 + 4.0 + 3.0) + 1.5 * 4.0 + 7.8 * 0.01 * (5.0 + 2.0) + 5.0 + 2.0;
   for (int d = 0; d < 2; ++d) {
     const Vector& u = rigid[static_cast<std::size_t>(d)];
-    EXPECT_NEAR(u.dot(mass * u), total, 1e-14 * total) << model::direction_name(d);
+    EXPECT_NEAR(u.dot(mass * u), total, 1e-14 * total) << model::direction(d, m.dimension).words;
   }
 
   // The assembled energy is the elements' own, for any displacements.

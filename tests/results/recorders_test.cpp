@@ -57,7 +57,7 @@ TEST(NodeRecorder, WritesDisplacementVelocityAccelerationPerDirectionAndZeroWher
   GroundAcceleration ground = test_ground();
   HistoryRecorder recorder(
       "nodes.csv", std::make_unique<NodeQuantities>(std::vector<std::vector<Index>>{{1, -1}, {0}},
-                                                    std::vector<std::vector<int>>{{0, 1}, {0}},
+                                                    std::vector<std::vector<int>>{{0, 1}, {0}}, 2,
                                                     std::vector<Index>{7, 3},
                                                     std::vector<std::string>{"top", "tip"},
                                                     builder::AccelerationFrame::both, ground));
@@ -86,7 +86,7 @@ TEST(NodeRecorder, WritesOnlyTheAccelerationsAskedFor) {
     HistoryRecorder recorder(
         "nodes.csv", std::make_unique<NodeQuantities>(
                          std::vector<std::vector<Index>>{{0}}, std::vector<std::vector<int>>{{0}},
-                         std::vector<Index>{3}, std::vector<std::string>{"tip"}, frame, ground));
+                         2, std::vector<Index>{3}, std::vector<std::string>{"tip"}, frame, ground));
     const bool relative = frame == builder::AccelerationFrame::relative;
     EXPECT_EQ(recorder.table().columns,
               (std::vector<std::string>{"time", "tip.u_x", "tip.v_x",
