@@ -4,7 +4,8 @@
 
 namespace pound::model {
 namespace {
-constexpr Direction kPlane[] = {{"x", "x", false, 0}, {"y", "y", false, 1}, {"rz", "rotation", true, 2}};
+constexpr Direction kPlane[] = {
+    {"x", "x", false, 0}, {"y", "y", false, 1}, {"rz", "rotation", true, 2}};
 constexpr Direction kSpace[] = {{"x", "x", false, 0},
                                 {"y", "y", false, 1},
                                 {"z", "z", false, 2},

@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <vector>
 
 #include "links/coulomb_friction.hpp"
 #include "links/gap_spring.hpp"
@@ -120,6 +122,27 @@ TEST(LinkSet, StickingFrictionGivesTheStickPenaltyAndItsTotalTangent) {
                        entries({0.0, 0.0, 0.1}), force, mass);
   EXPECT_EQ(force, t.force);
   EXPECT_EQ(mass, (Matrix{{0, 0, 0}, {0, 0, 0}, {0, 0, 3}}));
+}
+
+// A tangent already of its size is written block by block, not cleared: one trial after another
+// into the same matrix (slip, then stick, then open) gives what a fresh matrix gets each time,
+// and a block's entries that a law leaves at zero (stick uncouples s from delta) are written.
+TEST(LinkSet, ATangentKeptAtItsSizeEqualsAFreshOne) {
+  LinkSet links = two_links();
+  const Vector rest = entries({0.0, 0.0, 0.0});
+  const std::vector<std::array<Vector, 3>> trials = {
+      {entries({0.05, 0.02, 0.17}), entries({0.4, 0.0, 0.02}), rest},  // slips
+      {entries({-0.01, 0.02, 0.01}), rest, entries({0.0, 0.0, 0.1})},  // sticks, link 0 open
+      {entries({-0.01, -0.02, 0.0}), rest, rest}};                     // both open
+  Vector force;
+  Matrix kept;
+  for (const auto& [delta, rate, acceleration] : trials) {
+    links.set_trial(delta, rate, acceleration, 10.0, 100.0, force, kept);
+    const Trial fresh = trial(links, delta, rate, acceleration);
+    EXPECT_EQ(kept, fresh.tangent);
+    EXPECT_EQ(force, fresh.force);
+  }
+  EXPECT_EQ(kept, Matrix::Zero(3, 3));
 }
 
 TEST(LinkSet, CommitKeepsTheSlipAnchorAndRevertForgetsATrial) {
