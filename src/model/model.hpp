@@ -41,7 +41,7 @@ struct NodalLoad {
 
 struct Support {
   Index node = 0;
-  std::array<bool, 3> fixed{};  // per direction (x, y, rotation)
+  std::array<bool, 6> fixed{};  // per direction of its scene (model/direction.hpp)
 };
 
 // Uniform support excitation: every support moves with the record along `direction`; the
