@@ -701,7 +701,8 @@ void StructuralSystem::frame_acceleration(double time, Vector& acceleration) con
 double StructuralSystem::support_acceleration(Index node, int direction, double time) const {
   const model::Direction along = model::direction(direction, dofs_.dimension());
   // The ground does not turn, and moves only in the plane of its records' directions.
-  if (along.rotation || along.axis >= static_cast<int>(model::Coordinates().size())) return 0.0;
+  if (along.rotation || along.axis >= static_cast<int>(std::tuple_size_v<model::Coordinates>))
+    return 0.0;
   const auto component = static_cast<std::size_t>(along.axis);
   double acceleration = 0.0;
   for (const Excitation& excitation : excitations_)

@@ -112,11 +112,19 @@ void integrate_sdof(const GroundMotion& motion, double period, double damping_ra
   }
 }
 
-}  // namespace
-
 // A period this far below the step: the oscillator follows its base rigidly, Sa is the peak base
 // acceleration (to (T / dt)^2), and w^2 would overflow for periods near 1e-300.
 bool follows_base_rigidly(double period, double time_step) { return period < 1e-3 * time_step; }
+
+}  // namespace
+
+bool moves_with_ground(const GroundMotion& motion, double period, double damping_ratio) {
+  const bool rigid = period > 0.0 && follows_base_rigidly(period, motion.time_step) &&
+                     damping_ratio >= 0.0 && damping_ratio < 1.0;
+  if (period != 0.0 && !rigid) return false;
+  require_samples(motion);
+  return true;
+}
 
 std::vector<double> default_spectrum_periods() {
   constexpr double first = 0.02, last = 10.0;
@@ -228,14 +236,7 @@ SdofResponse sdof_response(const GroundMotion& motion, double period, double dam
 }
 
 double spectral_acceleration(const GroundMotion& motion, double period, double damping_ratio) {
-  // An oscillator a thousand times faster than the sampling follows the ground rigidly: its Sa is
-  // the PGA (to (T / dt)^2), and integrating it would overflow w^2 for periods near 1e-300.
-  const bool rigid = period > 0.0 && follows_base_rigidly(period, motion.time_step) &&
-                     damping_ratio >= 0.0 && damping_ratio < 1.0;
-  if (period == 0.0 || rigid) {
-    require_samples(motion);
-    return motion.peak();
-  }
+  if (moves_with_ground(motion, period, damping_ratio)) return motion.peak();
   double largest = 0.0;
   integrate_sdof(motion, period, damping_ratio,
                  [&](std::size_t, double u, double) { largest = std::max(largest, std::abs(u)); });

@@ -42,9 +42,11 @@ class GroundKinematics {
 // it is exact for the linearly interpolated record. Period 0 gives the peak acceleration.
 double spectral_acceleration(const GroundMotion& motion, double period, double damping_ratio);
 
-// Whether an oscillator of this period follows a base sampled at time_step rigidly (a period
-// a thousand times shorter): its Sa is then the peak base acceleration, to (T / dt)^2.
-bool follows_base_rigidly(double period, double time_step);
+// Whether the oscillator's pseudo-acceleration is the ground acceleration itself: period 0, or a
+// valid damping ratio and a period a thousand times shorter than the time step, which follows
+// the base rigidly (Sa the peak to (T / dt)^2; integrating it would overflow w^2 for periods near
+// 1e-300). When it is, checks that the motion has samples.
+bool moves_with_ground(const GroundMotion& motion, double period, double damping_ratio);
 
 // 40 periods log-spaced from 0.02 s to 10 s: the default of spectra [s].
 std::vector<double> default_spectrum_periods();

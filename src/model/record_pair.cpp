@@ -38,13 +38,7 @@ std::array<double, kAngles> rotated_peaks(const std::vector<double>& first,
 // components' Sa to the bit.
 std::vector<double> pseudo_acceleration_history(const GroundMotion& motion, double period,
                                                 double damping_ratio) {
-  const bool rigid = period > 0.0 && follows_base_rigidly(period, motion.time_step) &&
-                     damping_ratio >= 0.0 && damping_ratio < 1.0;
-  if (period == 0.0 || rigid) {
-    if (motion.acceleration.empty() || !(motion.time_step > 0.0))
-      throw std::invalid_argument("ground motion '" + motion.name + "' has no samples");
-    return motion.acceleration;
-  }
+  if (moves_with_ground(motion, period, damping_ratio)) return motion.acceleration;
   std::vector<double> history = sdof_response(motion, period, damping_ratio).displacement;
   const double omega = 2.0 * std::numbers::pi / period;
   for (double& u : history) u *= omega * omega;
