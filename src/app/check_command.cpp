@@ -80,11 +80,15 @@ io::Document check_document(const std::string& model_path, const verification::M
   io::Document doc;
   doc.set("model", model_path)
       .set("dofs", static_cast<long>(check.dofs))
-      .set("dofs_per_node", check.dofs_per_node)
-      .set("dofs_x", static_cast<long>(check.dofs_by_direction[0]))
-      .set("dofs_y", static_cast<long>(check.dofs_by_direction[1]))
-      .set("dofs_rotation", static_cast<long>(check.dofs_by_direction[2]))
-      .set("periods", check.periods);
+      .set("dofs_per_node", check.dofs_per_node);
+  // Per direction: dofs_x, dofs_y, dofs_rotation in a plane; dofs_x ... dofs_rz in 3-D.
+  for (int d = 0; d < model::direction_count(check.dimension); ++d) {
+    const model::Direction along = model::direction(d, check.dimension);
+    doc.set(check.dimension != 3 && along.rotation ? std::string("dofs_rotation")
+                                                   : fmt::format("dofs_{}", along.symbol),
+            static_cast<long>(check.dofs_by_direction[static_cast<std::size_t>(d)]));
+  }
+  doc.set("periods", check.periods);
   // An unbounded stable step (nothing vibrates) is null: "no limit".
   auto set_step = [&doc](const char* key, double step) {
     if (std::isinf(step) && step > 0.0)

@@ -73,14 +73,16 @@ Vector load_pattern(const LoadedModel& loaded, const assembly::StructuralSystem&
     return p;
   }
   const model::Model& model = loaded.built.model;
+  // Heights along y in a plane, along z in space.
+  const std::size_t up = model.dimension == 3 ? 2 : 1;
   double lowest = std::numeric_limits<double>::infinity();
-  for (const model::Node& node : model.nodes) lowest = std::min(lowest, node.position[1]);
+  for (const model::Node& node : model.nodes) lowest = std::min(lowest, node.position[up]);
   Vector along = Vector::Zero(system.size());
   for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
     if (const Index row = system.dofs().equation(node, direction); row >= 0)
       along[row] = pattern == "mass"
                        ? 1.0
-                       : model.nodes[static_cast<std::size_t>(node)].position[1] - lowest;
+                       : model.nodes[static_cast<std::size_t>(node)].position[up] - lowest;
   system.multiply_mass(along, p);
   for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
     for (int d = 0; d < system.dofs().dofs_per_node(); ++d)

@@ -1,5 +1,6 @@
 #include "assembly/beam_3d.hpp"
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -27,7 +28,7 @@ void add_pair(Matrix12& k, int d, double diagonal, double coupling) {
   k(d + 6, d) += coupling;
 }
 
-using Block4 = double[4][4];
+using Block4 = std::array<std::array<double, 4>, 4>;
 
 // Adds factor x `block` on (deflection_i, rotation_i, deflection_j, rotation_j) of one bending
 // plane, its deflection-rotation terms times `sign` (-1 in the x'-z' plane, where
@@ -89,13 +90,21 @@ Beam3d::Matrix12 Beam3d::make_local_stiffness() const {
   add_pair(k, kU, e * section_.area / l, -e * section_.area / l);
   add_pair(k, kTx, section_.shear_modulus * section_.torsion / l,
            -section_.shear_modulus * section_.torsion / l);
-  // The cubic Hermitian bending stiffness (Przemieniecki), times EI/L^3.
-  const Block4 hermitian = {{12, 6 * l, -12, 6 * l},
-                            {6 * l, 4 * l * l, -6 * l, 2 * l * l},
-                            {-12, -6 * l, 12, -6 * l},
-                            {6 * l, 2 * l * l, -6 * l, 4 * l * l}};
-  const double l3 = l * l * l;
-  add_both_bendings(k, hermitian, e * section_.inertia_z / l3, e * section_.inertia_y / l3);
+  // The cubic Hermitian bending stiffness (Przemieniecki), each entry rounded as the plane beam
+  // rounds it (assembly/beam.cpp), so that a 3-D frame in a plane gives the 2-D numbers.
+  const double l2 = l * l, l3 = l2 * l;
+  const auto bending = [&](double inertia) {
+    const double ei = e * inertia;
+    const double shear = 12 * ei / l3, coupling = 6 * ei / l2;
+    const double near = 4 * ei / l, far = 2 * ei / l;
+    return Block4{{{shear, coupling, -shear, coupling},
+                   {coupling, near, -coupling, far},
+                   {-shear, -coupling, shear, -coupling},
+                   {coupling, far, -coupling, near}}};
+  };
+  const auto in_xy = bending(section_.inertia_z), in_xz = bending(section_.inertia_y);
+  add_bending(k, kV, kTz, in_xy, 1.0, 1.0);
+  add_bending(k, kW, kTy, in_xz, 1.0, -1.0);
   return k;
 }
 
@@ -105,10 +114,10 @@ Beam3d::Matrix12 Beam3d::local_consistent_mass() const {
   add_pair(mass, kU, m / 3.0, m / 6.0);
   const double polar = section_.density * (section_.inertia_y + section_.inertia_z) * l;
   add_pair(mass, kTx, polar / 3.0, polar / 6.0);
-  const Block4 hermitian = {{156, 22 * l, 54, -13 * l},
-                            {22 * l, 4 * l * l, 13 * l, -3 * l * l},
-                            {54, 13 * l, 156, -22 * l},
-                            {-13 * l, -3 * l * l, -22 * l, 4 * l * l}};
+  const Block4 hermitian = {{{156, 22 * l, 54, -13 * l},
+                             {22 * l, 4 * l * l, 13 * l, -3 * l * l},
+                             {54, 13 * l, 156, -22 * l},
+                             {-13 * l, -3 * l * l, -22 * l, 4 * l * l}}};
   add_both_bendings(mass, hermitian, m / 420.0, m / 420.0);
   return mass;
 }
@@ -154,10 +163,10 @@ Matrix Beam3d::geometric_stiffness(const Vector& u, model::GeometricStiffness ki
     add_pair(k, kV, axial / l, -axial / l);
     add_pair(k, kW, axial / l, -axial / l);
   } else {
-    const Block4 hermitian = {{36, 3 * l, -36, 3 * l},
-                              {3 * l, 4 * l * l, -3 * l, -l * l},
-                              {-36, -3 * l, 36, -3 * l},
-                              {3 * l, -l * l, -3 * l, 4 * l * l}};
+    const Block4 hermitian = {{{36, 3 * l, -36, 3 * l},
+                               {3 * l, 4 * l * l, -3 * l, -l * l},
+                               {-36, -3 * l, 36, -3 * l},
+                               {3 * l, -l * l, -3 * l, 4 * l * l}}};
     add_both_bendings(k, hermitian, axial / (30.0 * l), axial / (30.0 * l));
   }
   const Matrix12 global = transformation_.transpose() * k * transformation_;

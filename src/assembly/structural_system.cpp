@@ -144,9 +144,12 @@ void ElementAssembly::add(const model::Element& element) {
 
 void ElementAssembly::add(const model::NodalMass& mass) {
   const double a0 = coefficients(mass.damping).mass_coefficient;
-  const int dpn = dofs_.dofs_per_node();
-  for (int d = 0; d < std::min(dpn, 2); ++d) add_mass(dofs_.equation(mass.node, d), mass.mass, a0);
-  if (dpn == 3) add_mass(dofs_.equation(mass.node, 2), mass.rotary_inertia, a0);
+  for (int d = 0; d < dofs_.dofs_per_node(); ++d) {
+    const model::Direction along = model::direction(d, dofs_.dimension());
+    add_mass(dofs_.equation(mass.node, d),
+             along.rotation ? mass.rotary_inertia[static_cast<std::size_t>(along.axis)] : mass.mass,
+             a0);
+  }
 }
 
 model::RayleighDamping ElementAssembly::coefficients(
@@ -220,13 +223,28 @@ Eigen::SparseMatrix<double> with_diagonal(std::vector<Eigen::Triplet<double>>& e
   return matrix;
 }
 
+// A vector at a node (a force, a velocity, a ground motion's direction) over the node's
+// translations.
+using NodeVector = std::array<double, 6>;
+NodeVector translations(const model::Coordinates& vector, const model::DofMap& dofs) {
+  return model::over_directions(vector, false, dofs.dimension());
+}
+
+// Adds `vector` at `node` into `into` (or sets it there), over the node's free translations.
+void put_at_node(Vector& into, const model::DofMap& dofs, Index node, const NodeVector& vector,
+                 bool add) {
+  for (int d = 0; d < dofs.dofs_per_node(); ++d)
+    if (const Index row = dofs.equation(node, d); row >= 0) {
+      const double component = vector[static_cast<std::size_t>(d)];
+      into[row] = add ? into[row] + component : component;
+    }
+}
+
 // The constant nodal forces on the free DOFs.
 Vector nodal_loads(const model::Model& model, const model::DofMap& dofs) {
   Vector loads = Vector::Zero(dofs.size());
   for (const model::NodalLoad& load : model.loads)
-    for (int d = 0; d < std::min(dofs.dofs_per_node(), 2); ++d)
-      if (const Index row = dofs.equation(load.node, d); row >= 0)
-        loads[row] += load.force[static_cast<std::size_t>(d)];
+    put_at_node(loads, dofs, load.node, translations(load.force, dofs), true);
   return loads;
 }
 
@@ -234,27 +252,29 @@ Vector nodal_loads(const model::Model& model, const model::DofMap& dofs) {
 Vector uniform_influence(const model::Model& model, const model::DofMap& dofs,
                          const model::Coordinates& direction) {
   Vector influence = Vector::Zero(dofs.size());
+  const NodeVector along = translations(direction, dofs);
   for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
-    for (int d = 0; d < std::min(dofs.dofs_per_node(), 2); ++d)
-      if (const Index row = dofs.equation(node, d); row >= 0)
-        influence[row] = direction[static_cast<std::size_t>(d)];
+    put_at_node(influence, dofs, node, along, false);
   return influence;
 }
 
-// The directions of a link's rows over a node's DOFs (x, y, theta): the axis, or the rotation of
-// a rotational link; with friction, the tangent (the axis turned by +90 degrees).
-std::array<double, 3> normal_direction(const model::Link& link) {
-  return link.rotational ? std::array<double, 3>{0.0, 0.0, 1.0}
-                         : std::array<double, 3>{link.axis[0], link.axis[1], 0.0};
+// The directions of a link's rows over a node's DOFs: the axis, or the rotation of a rotational
+// link (about z in a plane, about its axis in 3-D); with friction, the tangent (the axis turned
+// by +90 degrees, plane scenes).
+NodeVector normal_direction(const model::Link& link, int dimension) {
+  if (link.rotational)
+    return model::over_directions(dimension == 3 ? link.axis : model::Coordinates{0.0, 0.0, 1.0},
+                                  true, dimension);
+  return model::over_directions(link.axis, false, dimension);
 }
-std::array<double, 3> tangential_direction(const model::Link& link) {
-  return {-link.axis[1], link.axis[0], 0.0};
+NodeVector tangential_direction(const model::Link& link, int dimension) {
+  return model::over_directions({-link.axis[1], link.axis[0], 0.0}, false, dimension);
 }
 
 // Row of a direction d: +d at node i, -d at node j (fixed DOFs dropped); for a point inside a
 // segment j-k, -(1 - w) d at node j and -w d at node k.
 std::vector<integrators::LinkSet::Term> link_row(const model::DofMap& dofs, const model::Link& link,
-                                                 const std::array<double, 3>& direction) {
+                                                 const NodeVector& direction) {
   std::vector<integrators::LinkSet::Term> row;
   for (int d = 0; d < dofs.dofs_per_node(); ++d) {
     const double component = direction[static_cast<std::size_t>(d)];
@@ -282,13 +302,13 @@ links::StickPenalty stick_penalty(const links::LinkLaw& law, const model::LinkFr
 integrators::LinkSet::Link link_entry(const model::DofMap& dofs, const model::Link& link,
                                       std::unique_ptr<links::LinkLaw> law) {
   integrators::LinkSet::Link entry;
-  entry.normal_row = link_row(dofs, link, normal_direction(link));
+  entry.normal_row = link_row(dofs, link, normal_direction(link, dofs.dimension()));
   entry.gap = link.gap;
   if (!link.friction) {
     entry.law = std::move(law);
     return entry;
   }
-  entry.tangential_row = link_row(dofs, link, tangential_direction(link));
+  entry.tangential_row = link_row(dofs, link, tangential_direction(link, dofs.dimension()));
   const links::StickPenalty stick = stick_penalty(*law, *link.friction);
   entry.friction = std::make_unique<links::CoulombFriction>(
       std::move(law), link.friction->coefficient, stick, link.friction->radius);
@@ -298,16 +318,24 @@ integrators::LinkSet::Link link_entry(const model::DofMap& dofs, const model::Li
 // For each link row: its link and direction, to see how belts and moving supports deform it.
 struct LinkRowGeometry {
   const model::Link* link;
-  std::array<double, 3> direction;
+  NodeVector direction;            // over a node's directions
+  model::Coordinates translation;  // (x, y, z); 0 for a rotational row
 };
 
 std::vector<LinkRowGeometry> link_row_geometry(const model::Model& model) {
   std::vector<LinkRowGeometry> rows;
   for (const model::Link& link : model.links) {
-    rows.push_back({&link, normal_direction(link)});
-    if (link.friction) rows.push_back({&link, tangential_direction(link)});
+    rows.push_back({&link, normal_direction(link, model.dimension),
+                    link.rotational ? model::Coordinates{} : link.axis});
+    if (link.friction)
+      rows.push_back(
+          {&link, tangential_direction(link, model.dimension), {-link.axis[1], link.axis[0], 0.0}});
   }
   return rows;
+}
+
+double dot(const model::Coordinates& a, const model::Coordinates& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
 // Rows whose j side moves on its own (a belt): delta gains -(velocity_j . direction) t.
@@ -315,8 +343,7 @@ Vector surface_rates(const std::vector<LinkRowGeometry>& rows) {
   Vector rates = Vector::Zero(static_cast<Index>(rows.size()));
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const model::Coordinates& velocity_j = rows[r].link->velocity_j;
-    rates[static_cast<Index>(r)] =
-        -(velocity_j[0] * rows[r].direction[0] + velocity_j[1] * rows[r].direction[1]);
+    rates[static_cast<Index>(r)] = -dot(velocity_j, rows[r].translation);
   }
   return rates;
 }
@@ -326,11 +353,12 @@ Vector support_coupling(const ElementAssembly::SupportCoupling& by_fixed_dof,
                         const model::DofMap& dofs, Index node,
                         const model::Coordinates& direction) {
   const int dpn = dofs.dofs_per_node();
+  const NodeVector along = translations(direction, dofs);
   Vector coupling = Vector::Zero(dofs.size());
-  for (int d = 0; d < std::min(dpn, 2); ++d)
+  for (int d = 0; d < dpn; ++d)
     if (auto found = by_fixed_dof.find(node * dpn + d); found != by_fixed_dof.end())
       for (const auto& [row, value] : found->second)
-        coupling[row] += direction[static_cast<std::size_t>(d)] * value;
+        coupling[row] += along[static_cast<std::size_t>(d)] * value;
   return coupling;
 }
 
@@ -339,7 +367,7 @@ Vector attached_link_coefficients(const std::vector<LinkRowGeometry>& rows, Inde
                                   const model::Coordinates& direction) {
   Vector direct = Vector::Zero(static_cast<Index>(rows.size()));
   for (std::size_t r = 0; r < rows.size(); ++r) {
-    const double along = rows[r].direction[0] * direction[0] + rows[r].direction[1] * direction[1];
+    const double along = dot(rows[r].translation, direction);
     if (rows[r].link->node_i == node) direct[static_cast<Index>(r)] += along;
     if (rows[r].link->node_j == node) direct[static_cast<Index>(r)] -= along;
   }
@@ -553,7 +581,7 @@ void StructuralSystem::link_motion(double time, Vector& offset, Vector& rate,
 
 links::LinkContext StructuralSystem::link_context(const model::Link& link) const {
   links::LinkContext context;
-  const std::array<double, 3> direction = normal_direction(link);
+  const NodeVector direction = normal_direction(link, dofs_.dimension());
   // Mass and diagonal stiffness of one end along the direction: n^T K_nn n over its free DOFs.
   auto end = [&](Index node, double& mass, double& stiffness, bool& fixed) {
     fixed = true;
@@ -770,10 +798,8 @@ Vector StructuralSystem::initial_velocity(const model::Model& model) const {
   Vector velocity = Vector::Zero(size());
   if (model.initial_velocity.empty()) return velocity;
   for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
-    for (int d = 0; d < std::min(dofs_.dofs_per_node(), 2); ++d)
-      if (const Index row = dofs_.equation(node, d); row >= 0)
-        velocity[row] =
-            model.initial_velocity[static_cast<std::size_t>(node)][static_cast<std::size_t>(d)];
+    put_at_node(velocity, dofs_, node,
+                translations(model.initial_velocity[static_cast<std::size_t>(node)], dofs_), false);
   return velocity;
 }
 

@@ -3,7 +3,7 @@
 namespace pound::assembly {
 namespace {
 
-constexpr int kDirections[] = {0, 1};
+constexpr int kDirections[] = {0, 1, 2};  // x, y, z in either numbering
 constexpr model::EndForce kEndForces[] = {{"N", Dimension::force}};
 
 }  // namespace
@@ -46,10 +46,19 @@ Vector Truss::end_forces(const Vector& u) const {
   return Vector::Constant(1, axial_stiffness_ * elongation);
 }
 
-// The string stiffness N / L across the bar (both kinds: a bar has no curvature), 2-D only.
+// The string stiffness N / L across the bar (both kinds: a bar has no curvature): N / L times
+// the projection across it, a a^T in a plane (a: the axis turned by 90 degrees), I - c c^T in
+// space.
 Matrix Truss::geometric_stiffness(const Vector& u, model::GeometricStiffness) const {
   if (dimension_ == 1) return {};
   const double string = section_.axial_force.value_or(end_forces(u)[0]) / axis_.length;
+  if (dimension_ == 3) {
+    const Eigen::Vector3d c(axis_.cosines[0], axis_.cosines[1], axis_.cosines[2]);
+    const Eigen::Matrix3d across = string * (Eigen::Matrix3d::Identity() - c * c.transpose());
+    Matrix k(6, 6);
+    k << across, -across, -across, across;
+    return k;
+  }
   const double across[2] = {-axis_.cosines[1], axis_.cosines[0]};
   Matrix k(4, 4);
   for (Index p = 0; p < 4; ++p)

@@ -1,6 +1,7 @@
 #pragma once
-// Two-node axial element (rod, truss bar), linear elastic, in a 1-D scene (DOF u_x at each node)
-// or a plane one (u_x, u_y at each node). DOFs (u_x,i [, u_y,i], u_x,j [, u_y,j]), global axes.
+// Two-node axial element (rod, truss bar), linear elastic, in a 1-D scene (DOF u_x at each node),
+// a plane one (u_x, u_y) or a 3-D one (u_x, u_y, u_z). DOFs (u_x,i [, u_y,i [, u_z,i]], u_x,j
+// ...), global axes.
 //
 //   K = (E A / L) [[c c^T, -c c^T], [-c c^T, c c^T]],  c = (x_j - x_i) / L  (1-D: c = +-1)
 //   M lumped: rho A L / 2 at each node in each direction
@@ -26,7 +27,8 @@ class Truss final : public model::Element {
     // leaning column whose ends the model holds vertically still carries the weight above it.
     std::optional<double> axial_force;
   };
-  // `dimension` 1 (y ignored) or 2; the ends are apart (the builder checks the length).
+  // `dimension` 1 (y, z ignored), 2 (z ignored) or 3; the ends are apart (the builder checks the
+  // length).
   Truss(std::string id, const std::array<model::ElementNode, 2>& ends, int dimension,
         const Section& section, std::optional<model::RayleighDamping> damping);
 

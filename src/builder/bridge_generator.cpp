@@ -109,11 +109,11 @@ std::string add_pier_base(const Bridge& bridge, int pier, const std::optional<Pi
   const GirderBridgeSpec& spec = bridge.spec;
   const std::string base = fmt::format("{}.p{}.base", spec.id, pier);
   out.nodes.push_back({base, bridge.x[pier], 0.0});
-  out.supports.push_back({base, true, true, true});
+  out.supports.push_back({base, {true, true, true}});
   if (!hinge) return base;
   const std::string node = hinge_id(spec, pier);
   out.nodes.push_back({node, bridge.x[pier], 0.0});
-  out.supports.push_back({node, true, true, false});
+  out.supports.push_back({node, {true, true}});
   LinkSpec link = make_link(node, node, base, {1.0, 0.0}, 0.0, hinge->law);
   link.rotational = true;
   link.axis.reset();             // a hinge acts on theta_i - theta_j
@@ -216,19 +216,19 @@ void add_abutment(const Bridge& bridge, int side, const std::string& girder, Mod
   const double at = side == 0 ? 0.0 : bridge.x.back(), outward = side == 0 ? -1.0 : 1.0;
   const std::string seat = name + ".seat", wall = name + ".wall";
   out.nodes.push_back({seat, at, bridge.deck});
-  out.supports.push_back({seat, true, true, false});
+  out.supports.push_back({seat, {true, true}});
   out.nodes.push_back({wall, at, bridge.deck});
   add_bearing(spec, girder, seat, out);
   if (spec.backfill) {
     const std::string ground = name + ".ground";
     out.nodes.push_back({ground, at, bridge.deck});
-    out.supports.push_back({ground, true, true, false});
-    out.supports.push_back({wall, false, true, false});
-    out.masses.push_back({wall, spec.backwall_mass, 0.0, std::nullopt});
+    out.supports.push_back({ground, {true, true}});
+    out.supports.push_back({wall, {false, true}});
+    out.masses.push_back({wall, spec.backwall_mass, {}, std::nullopt});
     out.links.push_back(
         make_link(name + ".backfill", wall, ground, {outward, 0.0}, 0.0, *spec.backfill));
   } else {
-    out.supports.push_back({wall, true, true, false});
+    out.supports.push_back({wall, {true, true}});
   }
   const std::string joint = name + ".joint";
   add_joint_links(joint, girder, wall, outward, spec.abutment, out);

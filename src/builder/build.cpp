@@ -222,17 +222,15 @@ void resolve_nodal_data(const Resolver& resolver, model::Model& model) {
   const Origin support = origin_of(user.supports.size(), "supports", spec.generated_from.supports);
   for (std::size_t k = 0; k < spec.supports.size(); ++k) {
     const SupportSpec& s = spec.supports[k];
-    model.supports.push_back(
-        {resolver.node(s.node, support(k) + "/node"), {s.fix_x, s.fix_y, s.fix_rotation}});
+    model.supports.push_back({resolver.node(s.node, support(k) + "/node"), s.fixed});
   }
   const Origin load = origin_of(user.loads.size(), "loads", spec.generated_from.loads);
   for (std::size_t k = 0; k < spec.loads.size(); ++k)
-    model.loads.push_back(
-        {resolver.node(spec.loads[k].node, load(k) + "/node"), {spec.loads[k].x, spec.loads[k].y}});
+    model.loads.push_back({resolver.node(spec.loads[k].node, load(k) + "/node"),
+                           {spec.loads[k].x, spec.loads[k].y, spec.loads[k].z}});
   const Origin velocity = origin_of(user.initial_velocities.size(), "initial_velocities",
                                     spec.generated_from.initial_velocities);
-  if (!spec.initial_velocities.empty())
-    model.initial_velocity.assign(model.nodes.size(), {0.0, 0.0});
+  if (!spec.initial_velocities.empty()) model.initial_velocity.assign(model.nodes.size(), {});
   std::map<Index, std::size_t> given;  // node -> the entry that gave its velocity
   for (std::size_t k = 0; k < spec.initial_velocities.size(); ++k) {
     const InitialVelocitySpec& v = spec.initial_velocities[k];
@@ -241,7 +239,7 @@ void resolve_nodal_data(const Resolver& resolver, model::Model& model) {
       resolver.fail(velocity(k) + "/node",
                     fmt::format("node '{}' already has an initial velocity (at {})", v.node,
                                 velocity(first->second)));
-    model.initial_velocity[static_cast<std::size_t>(node)] = {v.x, v.y};
+    model.initial_velocity[static_cast<std::size_t>(node)] = {v.x, v.y, v.z};
   }
 }
 
@@ -256,8 +254,10 @@ std::optional<RodPairSpec> sole_rod_pair(const ModelSpec& user) {
 }
 
 model::Gravity gravity(const GravitySpec& spec, const UnitsSpec& units) {
-  model::Gravity gravity{.direction = {spec.direction[0], spec.direction[1]},
+  model::Gravity gravity{.direction = {},
                          .acceleration = spec.acceleration.value_or(units.gravity())};
+  std::copy_n(spec.direction.begin(), std::min(spec.direction.size(), gravity.direction.size()),
+              gravity.direction.begin());
   if (spec.p_delta == PDeltaKind::chord) gravity.p_delta = model::GeometricStiffness::chord;
   if (spec.p_delta == PDeltaKind::consistent)
     gravity.p_delta = model::GeometricStiffness::consistent;
@@ -273,7 +273,8 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
   BuiltModel built;
   model::Model& model = built.model;
   model.dimension = spec.dimension;
-  for (const NodeSpec& node : spec.nodes) model.nodes.push_back({node.id, {node.x, node.y}});
+  for (const NodeSpec& node : spec.nodes)
+    model.nodes.push_back({node.id, {node.x, node.y, node.z}});
   const Origin node_origin = origin_of(user_spec.nodes.size(), "nodes", spec.generated_from.nodes);
   for (std::size_t k = 0; k < spec.nodes.size(); ++k) built.node_origins.push_back(node_origin(k));
   model.elements = resolve_elements(resolver, model);
@@ -336,7 +337,7 @@ ModelSize model_size(const ModelSpec& spec) {
         fmt::format("/generators/{}", block.generator_index));
   for (const SurfaceSpec& surface : spec.surfaces)
     add(1, fmt::format("/surfaces/{}", surface.index));
-  size.dofs = size.nodes * (spec.dimension == 1 ? 1 : 3);
+  size.dofs = size.nodes * (spec.dimension == 1 ? 1 : spec.dimension == 2 ? 3 : 6);
   return size;
 }
 

@@ -170,7 +170,7 @@ void add_storey(const Building& building, std::size_t s, const std::vector<doubl
   out.supports.push_back({floor, false, true, true});
   const std::optional<double> mass_damping =
       building.rayleigh ? std::optional<double>((*building.rayleigh)[0]) : std::nullopt;
-  out.masses.push_back({floor, storey.mass, 0.0, mass_damping});
+  out.masses.push_back({floor, storey.mass, {}, mass_damping});
   const std::vector<std::string> chain = add_column_cuts(building, s, contacts, out);
   std::optional<double> yield_drift;
   if (storey.law) {

@@ -190,7 +190,7 @@ void add_block(const BlockSpec& block, ModelSpec& out) {
     if (p != 0.0) add_edge_pressure(block, chain, p, at, out);
     if (std::find(block.fixed_edges.begin(), block.fixed_edges.end(), kEdges[e]) !=
         block.fixed_edges.end())
-      for (const std::string& id : chain) out.supports.push_back({id, true, true, false});
+      for (const std::string& id : chain) out.supports.push_back({id, {true, true}});
   }
 }
 

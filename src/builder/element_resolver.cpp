@@ -4,8 +4,10 @@
 
 #include <array>
 #include <cmath>
+#include <string_view>
 
 #include "assembly/beam.hpp"
+#include "assembly/beam_3d.hpp"
 #include "assembly/quad.hpp"
 #include "assembly/truss.hpp"
 #include "core/errors.hpp"
@@ -67,6 +69,45 @@ std::shared_ptr<const model::Element> make_quad(const Scene& scene, const Elemen
       element.consistent_mass, damping);
 }
 
+// A 3-D beam-column: G from the material (given, or from E and nu), local axes from its
+// orientation vector.
+std::shared_ptr<const model::Element> make_beam_3d(const Scene& scene, const ElementSpec& element,
+                                                   const std::string& path,
+                                                   const std::array<model::ElementNode, 2>& ends,
+                                                   const MaterialSpec& material,
+                                                   std::optional<model::RayleighDamping> damping) {
+  double shear_modulus = material.shear_modulus.value_or(0.0);
+  if (!material.shear_modulus && material.poisson_ratio)
+    shear_modulus = material.youngs_modulus / (2.0 * (1.0 + *material.poisson_ratio));
+  if (!(shear_modulus > 0.0))
+    scene.fail(path + "/material",
+               fmt::format("material '{}' needs a 'shear_modulus' (or a 'poisson_ratio') for the "
+                           "torsion of a 3-D beam",
+                           element.material));
+  const auto point = [](const auto& xyz) { return assembly::Point3(xyz[0], xyz[1], xyz[2]); };
+  const std::array<assembly::Beam3d::End, 2> beam_ends{
+      assembly::Beam3d::End{ends[0].index, point(ends[0].position), point(element.offsets[0])},
+      assembly::Beam3d::End{ends[1].index, point(ends[1].position), point(element.offsets[1])}};
+  try {
+    return std::make_shared<const assembly::Beam3d>(
+        element.id, beam_ends, point(element.orientation),
+        assembly::Beam3d::Section{.youngs_modulus = material.youngs_modulus,
+                                  .shear_modulus = shear_modulus,
+                                  .area = element.area,
+                                  .inertia_y = element.inertia_y,
+                                  .inertia_z = element.inertia_z,
+                                  .torsion = element.torsion,
+                                  .density = material.density,
+                                  .extra_mass = element.extra_mass},
+        element.consistent_mass, damping);
+  } catch (const std::invalid_argument& error) {
+    // Its flexible part has no length (offsets meeting), or the orientation is along it.
+    const bool ends_meet = std::string_view(error.what()).starts_with("the beam's ends");
+    scene.fail(path + (ends_meet ? "/rigid_offsets" : "/orientation"),
+               fmt::format("beam '{}': {}", element.id, error.what()));
+  }
+}
+
 // A truss or a beam.
 std::shared_ptr<const model::Element> make_two_node(const Scene& scene, const ElementSpec& element,
                                                     const std::string& path,
@@ -85,6 +126,8 @@ std::shared_ptr<const model::Element> make_two_node(const Scene& scene, const El
     scene.fail(path + "/nodes", fmt::format("element '{}' is infinitely long (nodes '{}' and '{}' "
                                             "are {:g} apart)",
                                             element.id, element.node_i, element.node_j, length));
+  if (element.type == ElementKind::beam && scene.model.dimension == 3)
+    return make_beam_3d(scene, element, path, ends, material, damping);
   if (element.type == ElementKind::beam)
     return std::make_shared<const assembly::Beam>(
         element.id, ends,

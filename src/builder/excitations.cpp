@@ -1,6 +1,8 @@
 #include "builder/excitations.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <ranges>
 
 namespace pound::builder {
 
@@ -32,8 +34,9 @@ std::vector<double> resolve_excitations(const Resolver& resolver,
       }
     model::scale(motion, factor * e.extra_factor);
     factors.push_back(factor * e.extra_factor);
-    const model::Coordinates direction{e.direction[0],
-                                       e.direction.size() > 1 ? e.direction[1] : 0.0};
+    model::Coordinates direction{};
+    std::copy_n(e.direction.begin(), std::min(e.direction.size(), direction.size()),
+                direction.begin());
     if (e.supports.empty()) {
       model.excitations.push_back({std::move(motion), direction});
       continue;
@@ -46,8 +49,11 @@ std::vector<double> resolve_excitations(const Resolver& resolver,
       bool held = false;
       for (const model::Support& support : model.supports)
         if (support.node == node)
-          held = (direction[0] == 0.0 || support.fixed[0]) &&
-                 (direction[1] == 0.0 || support.fixed[1]);
+          held = std::ranges::all_of(std::views::iota(std::size_t{0}, direction.size()),
+                                     [&](std::size_t axis) {
+                                       // A translation's direction index is its axis.
+                                       return direction[axis] == 0.0 || support.fixed[axis];
+                                     });
       if (!held)
         throw InputError(
             spec.source, where,

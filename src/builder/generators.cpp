@@ -30,7 +30,7 @@ void add_rod(const RodPairSpec& pair, int side, ModelSpec& out) {
                             ElementKind::truss, rod_node_id(pair, side, e),
                             rod_node_id(pair, side, e + 1), material, rod.area});
   if (rod.far_end_fixed)
-    out.supports.push_back({rod_node_id(pair, side, side == 0 ? 0 : rod.elements), true, false});
+    out.supports.push_back({rod_node_id(pair, side, side == 0 ? 0 : rod.elements), {true}});
 }
 
 // The contact link between the facing ends of the rods.
@@ -122,7 +122,7 @@ ModelSpec expand(const ModelSpec& spec) {
     add_rod(pair, 0, out);
     if (pair.right_wall) {
       out.nodes.push_back({rod_wall_id(pair), 0.0, 0.0});
-      out.supports.push_back({rod_wall_id(pair), true, false});
+      out.supports.push_back({rod_wall_id(pair), {true}});
     } else {
       add_rod(pair, 1, out);
     }

@@ -61,20 +61,23 @@ void resolve_segment(const LinkPlace& place, model::Link& link) {
 void resolve_axis(const LinkPlace& place, model::Link& link) {
   if (place.spec.axis) {
     const auto& axis = *place.spec.axis;
-    link.axis = {axis[0], axis.size() > 1 ? axis[1] : 0.0};
+    link.axis = {};
+    std::copy_n(axis.begin(), std::min(axis.size(), link.axis.size()), link.axis.begin());
     return;
   }
   if (place.spec.segment_end) return;
-  if (place.spec.rotational) return;  // a hinge acts on theta_i - theta_j: no axis (nodes may meet)
+  // A hinge acts on theta_i - theta_j, about z in a plane (no axis; its nodes may meet).
+  if (place.spec.rotational) return;
   const auto& a = place.position(link.node_i);
   const auto& b = place.position(link.node_j);
-  const double dx = b[0] - a[0], dy = place.model.dimension == 2 ? b[1] - a[1] : 0.0;
-  const double length = std::hypot(dx, dy);
+  const double length = model::distance(a, b, place.model.dimension);
   if (!(length > 0.0))
     place.fail("", fmt::format("nodes '{}' and '{}' are at the same place: give the link an "
                                "\"axis\"",
                                place.spec.node_i, place.spec.node_j));
-  link.axis = {dx / length, dy / length};
+  link.axis = {};
+  for (std::size_t k = 0; k < static_cast<std::size_t>(place.model.dimension); ++k)
+    link.axis[k] = (b[k] - a[k]) / length;
 }
 
 void resolve_law(const LinkPlace& place, model::Link& link) {
@@ -112,9 +115,13 @@ void refuse_stick_penalty(const LinkPlace& place, const FrictionSpec& friction,
 void resolve_friction(const LinkPlace& place, model::Link& link) {
   const FrictionSpec& friction = *place.spec.friction;
   const std::string& type = place.spec.law.type;
-  if (place.model.dimension != 2)
+  if (place.model.dimension == 1)
     place.fail("/friction",
                "friction needs a tangential direction: a 2-D scene (\"dimension\": 2)");
+  if (place.model.dimension == 3)
+    place.fail("/friction",
+               "friction on links of a 3-D scene (two tangential directions) is not built yet; "
+               "a 2-D scene takes it");
   if (link.role() == links::LinkRole::tension)
     place.fail("/friction", fmt::format("a {} carries no normal contact force to rub with", type));
   if (link.law->traits.constraint)

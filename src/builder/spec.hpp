@@ -27,6 +27,7 @@ struct NodeSpec {
   std::string id;
   double x = 0.0;
   double y = 0.0;
+  double z = 0.0;  // 3-D scenes
 };
 
 struct MaterialSpec {
@@ -34,9 +35,10 @@ struct MaterialSpec {
   double youngs_modulus = 0.0;          // E [F/L^2], > 0
   double density = 0.0;                 // rho [M/L^3], >= 0
   std::optional<double> poisson_ratio;  // nu in [0, 0.5), needed by plane continua (quads)
+  std::optional<double> shear_modulus;  // G [F/L^2] of 3-D beams' torsion; default E / (2 (1 + nu))
 };
 
-// "truss", "beam" (2-D elastic beam-column, frame scenes), "quad" (plane continuum).
+// "truss", "beam" (elastic beam-column of a plane or 3-D frame scene), "quad" (plane continuum).
 enum class ElementKind { truss, beam, quad };
 
 struct ElementSpec {
@@ -45,8 +47,14 @@ struct ElementSpec {
   std::string node_i;
   std::string node_j;
   std::string material;
-  double area = 0.0;             // [L^2], > 0
-  double inertia = 0.0;          // beam: second moment of area [L^4], > 0
+  double area = 0.0;     // [L^2], > 0
+  double inertia = 0.0;  // plane beam: second moment of area [L^4], > 0
+  // 3-D beam: I_y, I_z about its local y', z' axes and the torsion constant J [L^4], > 0; the
+  // orientation vector in its local x'-z' plane (OpenSees' vecxz); rigid end offsets [L] from
+  // nodes i and j to the ends of the flexible part, global axes.
+  double inertia_y = 0.0, inertia_z = 0.0, torsion = 0.0;
+  std::array<double, 3> orientation{0.0, 0.0, 0.0};
+  std::array<std::array<double, 3>, 2> offsets{};
   double extra_mass = 0.0;       // beam: added mass per length [M/L] (deck, barriers, floor)
   bool consistent_mass = false;  // beam, quad: "mass": "consistent" (default "lumped")
   // Its own Rayleigh coefficients {a0, a1} instead of the model's ("damping" object).
@@ -61,16 +69,15 @@ struct ElementSpec {
 
 struct MassSpec {
   std::string node;
-  double mass = 0.0;                   // [M], > 0
-  double rotary_inertia = 0.0;         // [M L^2], frame scenes
-  std::optional<double> mass_damping;  // its own a0 instead of the model's
+  double mass = 0.0;                       // [M], > 0
+  std::array<double, 3> rotary_inertia{};  // [M L^2] about x, y, z; plane frames: z only
+  std::optional<double> mass_damping;      // its own a0 instead of the model's
 };
 
 struct SupportSpec {
   std::string node;
-  bool fix_x = false;
-  bool fix_y = false;
-  bool fix_rotation = false;  // "rz", frame scenes
+  std::array<bool, 6> fixed{};  // per direction of its scene (model/direction.hpp): x, y, rz in a
+                                // plane; x, y, z, rx, ry, rz in 3-D
 };
 
 // A vector at a node, in global axes.
@@ -78,6 +85,7 @@ struct NodalVectorSpec {
   std::string node;
   double x = 0.0;
   double y = 0.0;
+  double z = 0.0;  // 3-D scenes
 };
 
 // An initial velocity [L/T].
@@ -414,7 +422,7 @@ struct GravitySpec {
 struct ModelSpec {
   std::string source;  // file name, for error messages
   std::string title;
-  int dimension = 1;  // 1 or 2
+  int dimension = 1;  // 1, 2 or 3
   std::vector<NodeSpec> nodes;
   std::vector<MaterialSpec> materials;
   std::vector<ElementSpec> elements;

@@ -7,6 +7,8 @@
 #include <string>
 #include <utility>
 
+#include "model/direction.hpp"
+
 namespace pound::io {
 namespace {
 
@@ -90,7 +92,8 @@ const Fields<NodeSpec>& node_fields() {
   static const Fields<NodeSpec> fields = {
       unique_id(&NodeSpec::id, "nodes", "the node's name"),
       required("x", &NodeSpec::x, Number<>{}, "coordinate [L]"),
-      optional("y", &NodeSpec::y, Number<>{}, "coordinate [L]").in_plane().always_written(),
+      optional("y", &NodeSpec::y, Number<>{}, "coordinate [L]").across().always_written(),
+      optional("z", &NodeSpec::z, Number<>{}, "coordinate [L]").in_space().always_written(),
   };
   return fields;
 }
@@ -105,6 +108,9 @@ const Fields<MaterialSpec>& material_fields() {
       optional("poisson_ratio", &MaterialSpec::poisson_ratio,
                Number<>{non_negative, below(0.5, "must be < 0.5 (incompressible), got {}")},
                "Poisson's ratio ν, needed by quads"),
+      optional("shear_modulus", &MaterialSpec::shear_modulus, Number<>{positive},
+               "G of 3-D beams' torsion [F/L²]")
+          .default_text("E / (2 (1 + ν))"),
   };
   return fields;
 }
@@ -132,6 +138,21 @@ Field<ElementSpec> element_nodes() {
       });
 }
 
+// A 3-D beam's rigid end offsets: [[x, y, z] at i, [x, y, z] at j].
+struct RigidOffsets {
+  using value_type = std::array<std::array<double, 3>, 2>;
+
+  void read(const JsonValue& value, value_type& target, Context& context) const {
+    const std::vector<JsonValue> ends = value.elements(2, 2);
+    for (std::size_t k = 0; k < 2; ++k) Triple{}.read(ends[k], target[k], context);
+  }
+  OrderedJson write(const value_type& value, const Context& context) const {
+    return OrderedJson::array(
+        {Triple{}.write(value[0], context), Triple{}.write(value[1], context)});
+  }
+  std::string type() const { return "[[x, y, z], [x, y, z]]"; }
+};
+
 using Coefficients = std::array<double, 2>;
 
 const Fields<Coefficients>& rayleigh_fields() {
@@ -158,12 +179,38 @@ const Fields<ElementSpec>& element_fields() {
       required("area", &ElementSpec::area, Number<>{positive}, "cross-section area A [L²]")
           .when(std::not_fn(is_quad), "truss and beam"),
       rule<ElementSpec>([](JsonObject& object, ElementSpec& element, Context& context) {
-        if (element.type != builder::ElementKind::truss && context.dimension != 2)
-          object.at("type").fail(fmt::format("a {} needs a 2-D scene (\"dimension\": 2)",
-                                             is_beam(element) ? "beam" : "quad"));
+        if (is_quad(element) && context.dimension != 2)
+          object.at("type").fail("a quad needs a 2-D scene (\"dimension\": 2)");
+        if (is_beam(element) && context.dimension == 1)
+          object.at("type").fail("a beam needs a 2-D or 3-D scene (\"dimension\": 2 or 3)");
       }),
       required("inertia", &ElementSpec::inertia, Number<>{positive}, "second moment of area I [L⁴]")
-          .when(is_beam, "beam only"),
+          .when(is_beam, "beam only")
+          .in_plane(),
+      required("inertia_y", &ElementSpec::inertia_y, Number<>{positive},
+               "second moment of area I_y about the local y' axis: bending in the x'-z' plane "
+               "[L⁴]")
+          .when(is_beam, "beam only")
+          .in_space(),
+      required("inertia_z", &ElementSpec::inertia_z, Number<>{positive},
+               "second moment of area I_z about the local z' axis: bending in the x'-y' plane "
+               "[L⁴]")
+          .when(is_beam, "beam only")
+          .in_space(),
+      required("torsion", &ElementSpec::torsion, Number<>{positive},
+               "Saint-Venant torsion constant J (G J / L per radian of twist) [L⁴]")
+          .when(is_beam, "beam only")
+          .in_space(),
+      required("orientation", &ElementSpec::orientation, Triple{.nonzero = true},
+               "a vector in the local x'-z' plane, not along the element (OpenSees' vecxz): "
+               "y' = v × x', z' = x' × y'")
+          .when(is_beam, "beam only")
+          .in_space(),
+      optional("rigid_offsets", &ElementSpec::offsets, RigidOffsets{},
+               "rigid end offsets from node i and node j to the ends of the flexible part, "
+               "global axes [L]")
+          .when(is_beam, "beam only")
+          .in_space(),
       optional("extra_mass", &ElementSpec::extra_mass, Number<>{non_negative},
                "added mass per length: deck, barriers, floors [M/L]")
           .when(is_beam, "beam only"),
@@ -188,41 +235,68 @@ const Fields<ElementSpec>& element_fields() {
 
 // ---- Masses, supports, loads, initial velocities ----
 
+// Rotary inertia: about z in a plane (a number); about x, y and z in 3-D ([I_x, I_y, I_z], or
+// one number for all three).
+Field<MassSpec> rotary_inertia() {
+  return custom<MassSpec>(
+      {"rotary_inertia", "number >= 0; in 3-D [number, number, number], each >= 0, or a number",
+       "`0`", "rotary inertia about z in 2-D, about x, y and z in 3-D; frame scenes [M·L²]"},
+      [](JsonObject& object, MassSpec& mass, Context& context) {
+        const std::optional<JsonValue> value = object.find("rotary_inertia");
+        if (!value) return;
+        if (context.dimension == 3 && value->json().is_array()) {
+          const std::vector<JsonValue> items = value->elements(3, 3);
+          for (std::size_t k = 0; k < 3; ++k)
+            mass.rotary_inertia[k] = items[k].as<double>(non_negative);
+        } else if (context.dimension == 3) {
+          mass.rotary_inertia.fill(value->as<double>(non_negative));
+        } else {
+          mass.rotary_inertia[2] = value->as<double>(non_negative);
+        }
+      },
+      [](const MassSpec& mass, const Context& context) -> std::optional<OrderedJson> {
+        if (mass.rotary_inertia == std::array<double, 3>{}) return std::nullopt;
+        if (context.dimension != 3) return mass.rotary_inertia[2];
+        return OrderedJson::array(
+            {mass.rotary_inertia[0], mass.rotary_inertia[1], mass.rotary_inertia[2]});
+      });
+}
+
 const Fields<MassSpec>& mass_fields() {
   static const Fields<MassSpec> fields = {
       required("node", &MassSpec::node, Text{true}, "id of the node"),
       required("mass", &MassSpec::mass, Number<>{positive},
                "mass in every translational direction [M]"),
-      optional("rotary_inertia", &MassSpec::rotary_inertia, Number<>{non_negative},
-               "rotary inertia, frame scenes [M·L²]"),
+      rotary_inertia(),
       optional("mass_damping", &MassSpec::mass_damping, Number<>{non_negative},
                "its own a0 instead of the model's [1/T]"),
   };
   return fields;
 }
 
-// "fix": ["x", "rz"], each direction once.
+// "fix": ["x", "rz"], each direction once, named as the scene names its directions
+// (model/direction.hpp).
 Field<SupportSpec> fixed_directions() {
   return custom<SupportSpec>(
-      {"fix", quoted_names({"x", "y", "rz"}) + ", each once", "required",
-       "the fixed directions (y and rz only in 2-D)"},
+      {"fix", quoted_names({"x", "y", "z", "rx", "ry", "rz"}) + ", each once", "required",
+       "the fixed directions: x in 1-D; x, y, rz in 2-D; x, y, z, rx, ry, rz in 3-D"},
       [](JsonObject& object, SupportSpec& support, Context& context) {
         UniqueNames directions("direction");
         for (const JsonValue& value : object.at("fix").elements(1)) {
-          const std::string direction = value.as_one_of({"x", "y", "rz"});
-          directions.add(direction, value);
-          if (direction != "x") require_plane(value, context);
-          (direction == "x"   ? support.fix_x
-           : direction == "y" ? support.fix_y
-                              : support.fix_rotation) = true;
+          const std::string name = value.as_one_of({"x", "y", "z", "rx", "ry", "rz"});
+          directions.add(name, value);
+          if (name == "y" || name == "rz") require_dimension(value, context, 2, 3);
+          if (name == "z" || name == "rx" || name == "ry") require_dimension(value, context, 3, 3);
+          for (int d = 0; d < model::direction_count(context.dimension); ++d)
+            if (model::direction(d, context.dimension).symbol == name)
+              support.fixed[static_cast<std::size_t>(d)] = true;
         }
       },
-      [](const SupportSpec& support, const Context&) -> std::optional<OrderedJson> {
-        const std::array<std::pair<const char*, bool>, 3> directions = {
-            {{"x", support.fix_x}, {"y", support.fix_y}, {"rz", support.fix_rotation}}};
+      [](const SupportSpec& support, const Context& context) -> std::optional<OrderedJson> {
         OrderedJson fixed = OrderedJson::array();
-        for (const auto& [name, fixes] : directions)
-          if (fixes) fixed.push_back(name);
+        for (int d = 0; d < model::direction_count(context.dimension); ++d)
+          if (support.fixed[static_cast<std::size_t>(d)])
+            fixed.push_back(model::direction(d, context.dimension).symbol);
         return fixed;
       });
 }
@@ -240,7 +314,8 @@ Fields<NodalVectorSpec> nodal_vector_fields(const std::string& quantity) {
   return {
       required("node", &NodalVectorSpec::node, Text{true}, "id of the node"),
       optional("x", &NodalVectorSpec::x, Number<>{}, quantity).always_written(),
-      optional("y", &NodalVectorSpec::y, Number<>{}, quantity).in_plane().always_written(),
+      optional("y", &NodalVectorSpec::y, Number<>{}, quantity).across().always_written(),
+      optional("z", &NodalVectorSpec::z, Number<>{}, quantity).in_space().always_written(),
   };
 }
 
@@ -379,12 +454,18 @@ const Fields<LinkSpec>& link_fields() {
           .in_plane(),
       optional("dof", &LinkSpec::rotational,
                Choice<bool>{{{"translation", false}, {"rotation", true}}},
-               "rotation: acts on θ_i − θ_j (frame scenes)"),
+               "rotation: acts on θ_i − θ_j (frame scenes): about z in 2-D, about its axis in 3-D"),
       required("law", &LinkSpec::law, Law{}, "the contact law: `{\"type\": ..., parameters}`"),
       rule<LinkSpec>([](JsonObject& object, LinkSpec& link, Context& context) {
-        if (link.rotational && context.dimension != 2)
-          object.at("dof").fail("a rotational link needs a 2-D scene");
-        if (link.rotational && link.axis) object.at("axis").fail("a rotational link has no axis");
+        if (link.rotational && context.dimension == 1)
+          object.at("dof").fail("a rotational link needs a 2-D or 3-D scene");
+        if (link.rotational && context.dimension == 2 && link.axis)
+          object.at("axis").fail(
+              "a rotational link of a plane scene turns about z: it has no axis");
+        if (link.rotational && context.dimension == 3 && !link.axis)
+          object.at("dof").fail(
+              "a rotational link of a 3-D scene needs the \"axis\" it turns about (a unit "
+              "vector)");
       }),
       optional("friction", &LinkSpec::friction, friction_object(), "Coulomb friction (2-D scenes)"),
       optional("rayleigh", &LinkSpec::rayleigh,
@@ -1124,15 +1205,17 @@ struct Adaptive {
 const Fields<builder::GravitySpec>& gravity_fields() {
   using builder::GravitySpec, builder::PDeltaKind;
   static const Fields<GravitySpec> fields = {
-      rule<GravitySpec>([](JsonObject& object, GravitySpec&, Context& context) {
-        if (context.dimension != 2)
+      rule<GravitySpec>([](JsonObject& object, GravitySpec& gravity, Context& context) {
+        if (context.dimension == 1)
           object.value().fail(
-              "gravity needs a 2-D scene (\"dimension\": 2): in a 1-D scene "
+              "gravity needs a 2-D or 3-D scene (\"dimension\": 2 or 3): in a 1-D scene "
               "the weight acts across every DOF");
+        if (context.dimension == 3) gravity.direction = {0.0, 0.0, -1.0};
       }),
       optional("direction", &GravitySpec::direction, UnitVector<std::vector<double>>{},
                "the direction the weight acts along")
-          .always_written(),
+          .always_written()
+          .default_text("[0, -1] in 2-D, [0, 0, -1] in 3-D"),
       optional("acceleration", &GravitySpec::acceleration, Number<>{positive}, "g [L/T²]")
           .default_text("9.80665 m/s² in the model's units"),
       optional("p_delta", &GravitySpec::p_delta,
@@ -1343,14 +1426,14 @@ Field<ModelSpec> recorders() {
 
 Field<ModelSpec> dimension() {
   return custom<ModelSpec>(
-      {"dimension", "1 or 2", "`1`",
+      {"dimension", "1, 2 or 3", "`1`",
        "1: axial scene, u_x at each node; 2: plane scene, u_x and u_y, and θ_z where a beam or a "
-       "rotational link is"},
+       "rotational link is; 3: space scene, u_x, u_y and u_z, and θ_x, θ_y, θ_z where a beam is"},
       [](JsonObject& top, ModelSpec& spec, Context& context) {
         if (const std::optional<JsonValue> value = top.find("dimension")) {
           spec.dimension = value->as<int>();
-          if (spec.dimension != 1 && spec.dimension != 2)
-            value->fail(fmt::format("must be 1 or 2, got {}", spec.dimension));
+          if (spec.dimension < 1 || spec.dimension > 3)
+            value->fail(fmt::format("must be 1, 2 or 3, got {}", spec.dimension));
         }
         context.dimension = spec.dimension;
       },

@@ -24,8 +24,15 @@ std::string shown(const OrderedJson& value) {
 
 }  // namespace
 
+void require_dimension(const JsonValue& value, const Context& context, int lowest, int highest) {
+  if (context.dimension >= lowest && context.dimension <= highest) return;
+  value.fail(lowest == highest
+                 ? fmt::format("only allowed when dimension is {}", lowest)
+                 : fmt::format("only allowed when dimension is {} or {}", lowest, highest));
+}
+
 void require_plane(const JsonValue& value, const Context& context) {
-  if (context.dimension != 2) value.fail("only allowed when dimension is 2");
+  require_dimension(value, context, 2, 2);
 }
 
 UniqueNames& Context::unique(const std::string& scope, const std::string& what) {

@@ -61,6 +61,8 @@ struct FieldDoc {
   std::string meaning;       // with units, and where the field exists ("beam only", "2-D only")
 };
 
+// Fails at `value` unless the scene's dimension is within lowest..highest.
+void require_dimension(const JsonValue& value, const Context& context, int lowest, int highest);
 // Fails at `value` unless the scene is 2-D.
 void require_plane(const JsonValue& value, const Context& context);
 
@@ -72,8 +74,8 @@ struct Field {
   std::function<std::optional<OrderedJson>(const Spec&, const Context&)> value;
   // The JSON of its default, a value equal to which is left out; none: written whenever set.
   std::function<OrderedJson(const Context&)> fallback;
-  std::function<bool(const Spec&)> applies;  // for fields of some variants only
-  bool plane_only = false;
+  std::function<bool(const Spec&)> applies;         // for fields of some variants only
+  int lowest_dimension = 1, highest_dimension = 3;  // the scenes it exists in
   std::vector<FieldDoc> docs;  // its row, then those of an inline nested object's fields
 
   // Read and written only for the variants `applies` accepts (e.g. a beam, from the "type" read
@@ -83,12 +85,18 @@ struct Field {
     docs.front().meaning += " (" + variants + ")";
     return std::move(*this);
   }
-  // Only in a 2-D scene; in 1-D the field is refused where it stands and not written.
-  Field in_plane() && {
-    plane_only = true;
-    docs.front().meaning += " (2-D only)";
+  // Only in scenes of dimension lowest..highest; in the others the field is refused where it
+  // stands and not written.
+  Field in_dimensions(int lowest, int highest) && {
+    lowest_dimension = lowest;
+    highest_dimension = highest;
+    docs.front().meaning += lowest == highest ? fmt::format(" ({}-D only)", lowest)
+                                              : fmt::format(" ({}-D and {}-D)", lowest, highest);
     return std::move(*this);
   }
+  Field in_plane() && { return std::move(*this).in_dimensions(2, 2); }
+  Field across() && { return std::move(*this).in_dimensions(2, 3); }  // y: plane and space
+  Field in_space() && { return std::move(*this).in_dimensions(3, 3); }
   // Written at its default value too (what a reader of the file looks for first).
   Field always_written() && {
     fallback = nullptr;
@@ -109,9 +117,12 @@ template <class Spec>
 void read_fields(JsonObject& object, const Fields<Spec>& fields, Spec& spec, Context& context) {
   for (const Field<Spec>& field : fields) {
     if (field.applies && !field.applies(spec)) continue;
-    if (field.plane_only)
+    if (context.dimension < field.lowest_dimension || context.dimension > field.highest_dimension) {
+      // Not in this scene: refused where it stands, never required.
       if (const std::optional<JsonValue> value = object.find(field.key))
-        require_plane(*value, context);
+        require_dimension(*value, context, field.lowest_dimension, field.highest_dimension);
+      continue;
+    }
     field.read(object, spec, context);
   }
 }
@@ -129,7 +140,8 @@ void write_fields(const Spec& spec, const Fields<Spec>& fields, OrderedJson& jso
                   const Context& context) {
   for (const Field<Spec>& field : fields) {
     if (!field.value || (field.applies && !field.applies(spec))) continue;
-    if (field.plane_only && context.dimension != 2) continue;
+    if (context.dimension < field.lowest_dimension || context.dimension > field.highest_dimension)
+      continue;
     std::optional<OrderedJson> value = field.value(spec, context);
     if (value && !(field.fallback && *value == field.fallback(context)))
       json[field.key] = std::move(*value);
@@ -342,6 +354,22 @@ struct Pair {
   }
 };
 
+// Three numbers [x, y, z] (a vector in space); `nonzero`: not all 0.
+struct Triple {
+  using value_type = std::array<double, 3>;
+  bool nonzero = false;
+
+  void read(const JsonValue& value, value_type& target, Context&) const {
+    const std::vector<JsonValue> items = value.elements(3, 3);
+    for (std::size_t k = 0; k < 3; ++k) target[k] = items[k].as<double>();
+    if (nonzero && target == value_type{}) value.fail("must not be the zero vector");
+  }
+  OrderedJson write(const value_type& value, const Context&) const {
+    return OrderedJson::array({value[0], value[1], value[2]});
+  }
+  std::string type() const { return nonzero ? "[x, y, z], not all 0" : "[x, y, z]"; }
+};
+
 // A unit vector with a component per dimension of the scene (a std::vector), or [nx, ny].
 void read_unit_vector(const JsonValue& value, double* components, std::size_t count);
 
@@ -358,8 +386,9 @@ struct UnitVector {
     return OrderedJson(std::vector<double>(value.begin(), value.end()));
   }
   std::string type() const {
-    return std::same_as<Container, std::vector<double>> ? "unit vector: [n] in 1-D, [nx, ny] in 2-D"
-                                                        : "unit vector [nx, ny]";
+    return std::same_as<Container, std::vector<double>>
+               ? "unit vector: [n] in 1-D, [nx, ny] in 2-D, [nx, ny, nz] in 3-D"
+               : "unit vector [nx, ny]";
   }
 };
 

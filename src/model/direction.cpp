@@ -22,4 +22,13 @@ Direction direction(int index, int dimension) {
   return dimension == 3 ? kSpace[index] : kPlane[index];
 }
 
+std::array<double, 6> over_directions(const std::array<double, 3>& vector, bool rotations,
+                                      int dimension) {
+  std::array<double, 6> components{};
+  for (int d = 0; d < direction_count(dimension); ++d)
+    if (const Direction along = direction(d, dimension); along.rotation == rotations)
+      components[static_cast<std::size_t>(d)] = vector[static_cast<std::size_t>(along.axis)];
+  return components;
+}
+
 }  // namespace pound::model

@@ -4,6 +4,8 @@
 // 5 (the order of the 12-DOF beam-column, assembly/beam_3d.hpp). What names, measures or excites
 // a direction asks here rather than testing an index, so that a plane model keeps its numbering,
 // its result columns and its messages whatever 3-D adds.
+#include <array>
+
 namespace pound::model {
 
 struct Direction {
@@ -17,5 +19,11 @@ struct Direction {
 int direction_count(int dimension);
 // Direction `index` (0 <= index < direction_count(dimension)) of a scene of `dimension`.
 Direction direction(int index, int dimension);
+
+// A vector (x, y, z) over a node's directions in a scene of `dimension`: its component along each
+// translation's axis (about each rotation's axis, for `rotations`), 0 on the others. A plane
+// scene's (nx, ny, 0) gives (nx, ny, 0); a rotation about z gives (0, 0, 1).
+std::array<double, 6> over_directions(const std::array<double, 3>& vector, bool rotations,
+                                      int dimension);
 
 }  // namespace pound::model

@@ -15,6 +15,7 @@ std::vector<ElementDof> Element::dofs() const {
 }
 
 double distance(const Coordinates& a, const Coordinates& b, int dimension) {
+  if (dimension == 3) return std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
   return std::hypot(b[0] - a[0], dimension == 2 ? b[1] - a[1] : 0.0);
 }
 
@@ -22,7 +23,9 @@ ElementAxis element_axis(const std::array<ElementNode, 2>& ends, int dimension) 
   const Coordinates& i = ends[0].position;
   const Coordinates& j = ends[1].position;
   const double length = distance(i, j, dimension);
-  return {length, {(j[0] - i[0]) / length, (j[1] - i[1]) / length}};
+  if (dimension == 3)
+    return {length, {(j[0] - i[0]) / length, (j[1] - i[1]) / length, (j[2] - i[2]) / length}};
+  return {length, {(j[0] - i[0]) / length, (j[1] - i[1]) / length, 0.0}};
 }
 
 }  // namespace pound::model

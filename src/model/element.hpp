@@ -4,10 +4,10 @@
 // builder makes them). An element keeps what its matrices need (node indices and coordinates,
 // section, material, mass option) from its construction, so none of them needs the Model.
 //
-// DOFs: an element names the directions it needs at each of its nodes (0 x, 1 y, 2 rotation
-// theta_z), the same at every node; its blocks are over its DOFs node by node, each node's
-// directions in that order, in global axes. A scene carries at each node as many DOFs as its
-// elements ask for (Model::dofs_per_node).
+// DOFs: an element names the directions it needs at each of its nodes (numbered by its scene,
+// model/direction.hpp: in a plane 0 x, 1 y, 2 rotation theta_z), the same at every node; its blocks
+// are over its DOFs node by node, each node's directions in that order, in global axes. A scene
+// carries at each node as many DOFs as its elements ask for (Model::dofs_per_node).
 #include <array>
 #include <optional>
 #include <span>
@@ -21,7 +21,8 @@
 
 namespace pound::model {
 
-using Coordinates = std::array<double, 2>;  // (x, y); y unused in 1-D scenes
+// (x, y, z): a scene uses its first `dimension` entries; the others stay 0.
+using Coordinates = std::array<double, 3>;
 
 // Rayleigh damping C = a0 M + a1 K of the linear elements (links are never part of it).
 struct RayleighDamping {
@@ -43,7 +44,7 @@ struct ElementNode {
   Coordinates position{};
 };
 
-// One DOF of an element: a node (index in Model::nodes) and a direction (0 x, 1 y, 2 rotation).
+// One DOF of an element: a node (index in Model::nodes) and a direction (model/direction.hpp).
 struct ElementDof {
   Index node = 0;
   int direction = 0;
@@ -72,7 +73,7 @@ class Element {
   // C = sum over elements of a0_e M_e + a1_e K_e.
   const std::optional<RayleighDamping>& damping() const { return damping_; }
 
-  // Directions it needs at each node (0 x, 1 y, 2 rotation), increasing.
+  // Directions it needs at each node (model/direction.hpp), increasing.
   virtual std::span<const int> directions() const = 0;
   // Its DOFs, the rows and columns of its blocks: each node's directions, node by node.
   std::vector<ElementDof> dofs() const;
@@ -100,11 +101,11 @@ class Element {
   std::optional<RayleighDamping> damping_;
 };
 
-// Distance between two points of a scene of `dimension` 1 (along x only) or 2.
+// Distance between two points of a scene of `dimension` 1 (along x only), 2 or 3.
 double distance(const Coordinates& a, const Coordinates& b, int dimension);
 
-// The axis of a two-node element from end i to end j in a scene of `dimension` 1 or 2: its
-// length L and direction cosines ((x_j - x_i) / L, (y_j - y_i) / L).
+// The axis of a two-node element from end i to end j in a scene of `dimension` 1, 2 or 3: its
+// length L and direction cosines ((x_j - x_i) / L, (y_j - y_i) / L, (z_j - z_i) / L).
 struct ElementAxis {
   double length = 0.0;
   Coordinates cosines{};

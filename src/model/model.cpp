@@ -8,6 +8,9 @@ int Model::dofs_per_node() const {
   int count = dimension;
   for (const auto& element : elements)
     for (int direction : element->directions()) count = std::max(count, direction + 1);
+  // A rotational link turns its nodes about an axis of the scene.
+  if (std::ranges::any_of(links, [](const Link& link) { return link.rotational; }))
+    count = direction_count(dimension);
   return count;
 }
 

@@ -4,8 +4,9 @@
 //
 // Degrees of freedom follow the scene: a 1-D (axial) scene carries 1 DOF per node (u_x); a
 // plane truss scene carries 2 (u_x, u_y); a plane frame scene (any beam-column) carries 3
-// (u_x, u_y, theta_z); a plane continuum scene (quads, no beams) carries 2. Nothing is padded
-// to 3 or 6: each element says which directions it needs (model/element.hpp).
+// (u_x, u_y, theta_z); a plane continuum scene (quads, no beams) carries 2; a 3-D truss scene 3
+// (u_x, u_y, u_z) and a 3-D frame scene 6 (and the three rotations). Nothing is padded: each
+// element says which directions it needs (model/element.hpp, numbered as model/direction.hpp).
 #include <array>
 #include <functional>
 #include <memory>
@@ -30,7 +31,7 @@ struct Node {
 struct NodalMass {
   Index node = 0;
   double mass = 0.0;                       // [M], in every translational direction
-  double rotary_inertia = 0.0;             // [M L^2], frame scenes only
+  Coordinates rotary_inertia{};            // [M L^2] about x, y, z (plane frames: z only)
   std::optional<RayleighDamping> damping;  // its own mass-proportional part, instead of the model's
 };
 
@@ -79,8 +80,10 @@ struct Link {
   Index node_i = 0;
   Index node_j = 0;
   Coordinates axis{1.0, 0.0};
-  bool rotational = false;  // acts on theta_i - theta_j (frame scenes), e.g. a plastic hinge
-  double gap = 0.0;         // initial clear distance [L], >= 0
+  // Acts on theta_i - theta_j (frame scenes), e.g. a plastic hinge: about z in a plane, about
+  // `axis` in 3-D.
+  bool rotational = false;
+  double gap = 0.0;                      // initial clear distance [L], >= 0
   const links::LawEntry* law = nullptr;  // its law's registry entry (role, traits); none in code
   links::LawFactory make_law;
   std::optional<LinkFriction> friction;
@@ -104,7 +107,7 @@ struct Gravity {
 };
 
 struct Model {
-  int dimension = 1;  // 1 or 2
+  int dimension = 1;  // 1, 2 or 3
   std::vector<Node> nodes;
   // Shared, so that a Model stays copyable: an element never changes once made.
   std::vector<std::shared_ptr<const Element>> elements;

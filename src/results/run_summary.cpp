@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string_view>
 
 #include "core/errors.hpp"
 #include "results/spectrum_recorder.hpp"
@@ -229,10 +230,16 @@ RunObservers::RunObservers(const builder::BuiltModel& built,
       continue;
     }
     elements.push_back(*m.base_element);
-    const std::size_t count =
-        built.model.elements[static_cast<std::size_t>(*m.base_element)]->end_force_names().size();
-    base_rows_.push_back(BaseRows{first, count});
-    first += count;
+    const auto names =
+        built.model.elements[static_cast<std::size_t>(*m.base_element)]->end_force_names();
+    BaseRows rows;
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      const std::string_view name = names[k].name;
+      if (name == "V_i" || name == "Vy_i" || name == "Vz_i") rows.shear.push_back(first + k);
+      if (name == "M_i" || name == "My_i" || name == "Mz_i") rows.moment.push_back(first + k);
+    }
+    base_rows_.push_back(rows);
+    first += names.size();
   }
   if (!elements.empty())
     base_forces_ =
@@ -244,7 +251,10 @@ void RunObservers::record(const integrators::State& state) {
   links_.record(state);
   energy_.record(state);
   drifts_.record(state);
-  if (base_forces_) base_forces_->record(state);
+  if (base_forces_) {
+    base_forces_->record(state);
+    record_base_forces();
+  }
   joints_.record(state);
   for (Observer* observer : extra_) observer->record(state);
   // Energy the integration made up: an unstable step or an unresolved stiff contact, which keeps
@@ -266,19 +276,35 @@ void RunObservers::record(const integrators::State& state) {
                      "meaninglessly large)");
 }
 
-std::optional<double> RunObservers::base_force(std::size_t monitor, std::size_t which) const {
-  const std::optional<BaseRows>& rows = base_rows_.at(monitor);
-  if (!rows || which >= rows->count) return std::nullopt;
-  return base_forces_->abs_max(rows->first + which);
+namespace {
+// The resultant of one or two components (one: its magnitude exactly).
+double resultant(const std::vector<double>& row, const std::vector<std::size_t>& components) {
+  if (components.size() == 1) return std::abs(row[components[0]]);
+  return std::hypot(row[components[0]], row[components[1]]);
+}
+}  // namespace
+
+void RunObservers::record_base_forces() {
+  const std::vector<double>& row = base_forces_->last_row();
+  for (std::optional<BaseRows>& rows : base_rows_) {
+    if (!rows) continue;
+    if (!rows->shear.empty())
+      rows->peak_shear = std::max(rows->peak_shear, resultant(row, rows->shear));
+    if (!rows->moment.empty())
+      rows->peak_moment = std::max(rows->peak_moment, resultant(row, rows->moment));
+  }
 }
 
-// A beam's end forces are N_i, V_i, M_i, ...; a truss has only N.
 std::optional<double> RunObservers::base_shear(std::size_t monitor) const {
-  return base_force(monitor, 1);
+  const std::optional<BaseRows>& rows = base_rows_.at(monitor);
+  if (!rows || rows->shear.empty()) return std::nullopt;
+  return rows->peak_shear;
 }
 
 std::optional<double> RunObservers::base_moment(std::size_t monitor) const {
-  return base_force(monitor, 2);
+  const std::optional<BaseRows>& rows = base_rows_.at(monitor);
+  if (!rows || rows->moment.empty()) return std::nullopt;
+  return rows->peak_moment;
 }
 
 void check_histories_fit(const std::vector<std::unique_ptr<Recorder>>& recorders,

@@ -53,13 +53,15 @@ class RunObservers {
   DriftMonitors drifts_;
   // The envelope of the drift monitors' base elements' end forces, and where monitor k's are in
   // it (none without a base element).
+  // Its base element's shear and moment at end i, each one component (V_i, M_i of a plane beam)
+  // or two (Vy_i, Vz_i and My_i, Mz_i of a 3-D one: their resultant); a truss has neither.
   struct BaseRows {
-    std::size_t first = 0, count = 0;  // its element's end forces: N_i, V_i, M_i, ... or N
+    std::vector<std::size_t> shear, moment;  // in the envelope's row
+    double peak_shear = 0.0, peak_moment = 0.0;
   };
   std::vector<std::optional<BaseRows>> base_rows_;
   std::unique_ptr<EnvelopeRecorder> base_forces_;
-  // Peak |end force `which`| of monitor k's base element; none past the element's forces.
-  std::optional<double> base_force(std::size_t monitor, std::size_t which) const;
+  void record_base_forces();
   JointMonitors joints_;
   std::vector<Observer*> extra_;
 };

@@ -274,7 +274,7 @@ model::Model free_portal() {
   };
   m.elements = {member(0, 1, 0.0, false), member(1, 2, 1.5, true), member(2, 3, 0.0, false),
                 bar(0, 2), bar(2, 4)};
-  m.masses = {{.node = 1, .mass = 5.0, .rotary_inertia = 1.0, .damping = damping},
+  m.masses = {{.node = 1, .mass = 5.0, .rotary_inertia = {0.0, 0.0, 1.0}, .damping = damping},
               {.node = 4, .mass = 2.0, .damping = damping}};
   return m;
 }

@@ -93,8 +93,8 @@ TEST(ModelReader, ReadsEveryField) {
 
   ASSERT_EQ(spec.supports.size(), 1u);
   EXPECT_EQ(spec.supports[0].node, "a0");
-  EXPECT_TRUE(spec.supports[0].fix_x);
-  EXPECT_FALSE(spec.supports[0].fix_y);
+  EXPECT_TRUE(spec.supports[0].fixed[0]);   // x
+  EXPECT_FALSE(spec.supports[0].fixed[1]);  // y
 
   ASSERT_EQ(spec.initial_velocities.size(), 1u);
   EXPECT_EQ(spec.initial_velocities[0].node, "b0");
@@ -169,10 +169,10 @@ TEST(ModelReader, ReadsPlaneFields) {
                                               "plane.json");
   EXPECT_EQ(spec.dimension, 2);
   EXPECT_EQ(spec.nodes[1].y, 2.3);
-  EXPECT_TRUE(spec.supports[0].fix_x);
-  EXPECT_TRUE(spec.supports[0].fix_y);
-  EXPECT_FALSE(spec.supports[1].fix_x);
-  EXPECT_TRUE(spec.supports[1].fix_y);
+  EXPECT_TRUE(spec.supports[0].fixed[0]);
+  EXPECT_TRUE(spec.supports[0].fixed[1]);
+  EXPECT_FALSE(spec.supports[1].fixed[0]);
+  EXPECT_TRUE(spec.supports[1].fixed[1]);
   EXPECT_EQ(spec.initial_velocities[0].x, 0.0);
   EXPECT_EQ(spec.initial_velocities[0].y, -0.5);
   EXPECT_EQ(spec.links[0].axis, (std::vector<double>{0.6, 0.8}));
@@ -593,17 +593,22 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"huge_max_steps", replaced("/analysis/max_steps", "1e19"), "/analysis/max_steps",
                 "expected an integer from -9223372036854775808 to 9223372036854775807"},
         // Enumerations and dimensions.
-        BadCase{"dimension_3", replaced("/dimension", "3"), "/dimension", "must be 1 or 2, got 3"},
+        BadCase{"dimension_4", replaced("/dimension", "4"), "/dimension",
+                "must be 1, 2 or 3, got 4"},
         BadCase{"fractional_dimension", replaced("/dimension", "1.5"), "/dimension",
                 "expected an integer, got 1.5"},
         BadCase{"node_y_in_1d", added("/nodes/0/y", "0"), "/nodes/0/y",
-                "only allowed when dimension is 2"},
+                "only allowed when dimension is 2 or 3"},
+        BadCase{"node_z_in_1d", added("/nodes/0/z", "0"), "/nodes/0/z",
+                "only allowed when dimension is 3"},
         BadCase{"fix_y_in_1d", replaced("/supports/0/fix", R"(["x", "y"])"), "/supports/0/fix/1",
-                "only allowed when dimension is 2"},
+                "only allowed when dimension is 2 or 3"},
         BadCase{"velocity_y_in_1d", added("/initial_velocities/0/y", "0.1"),
-                "/initial_velocities/0/y", "only allowed when dimension is 2"},
-        BadCase{"bad_fix_direction", replaced("/supports/0/fix", R"(["z"])"), "/supports/0/fix/0",
-                "expected one of 'x', 'y', 'rz', got 'z'"},
+                "/initial_velocities/0/y", "only allowed when dimension is 2 or 3"},
+        BadCase{"fix_z_in_1d", replaced("/supports/0/fix", R"(["z"])"), "/supports/0/fix/0",
+                "only allowed when dimension is 3"},
+        BadCase{"bad_fix_direction", replaced("/supports/0/fix", R"(["w"])"), "/supports/0/fix/0",
+                "expected one of 'x', 'y', 'z', 'rx', 'ry', 'rz', got 'w'"},
         BadCase{"upper_case_direction", replaced("/supports/0/fix", R"(["X"])"),
                 "/supports/0/fix/0", "got 'X' (did you mean 'x'?)"},
         BadCase{"empty_fix", replaced("/supports/0/fix", "[]"), "/supports/0/fix",
@@ -619,7 +624,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"axis_component_string", replaced("/links/0/axis", R"(["1"])"), "/links/0/axis/0",
                 "expected a number, got a string"},
         BadCase{"beam_in_1d_scene", replaced("/elements/0/type", R"("beam")"), "/elements/0/type",
-                "a beam needs a 2-D scene"},
+                "a beam needs a 2-D or 3-D scene"},
         BadCase{"unknown_element_type", replaced("/elements/0/type", R"("bar")"),
                 "/elements/0/type", "expected one of 'truss', 'beam', 'quad', got 'bar'"},
         BadCase{"bad_far_end", replaced("/generators/0/left/far_end", R"("hinged")"),
@@ -702,7 +707,7 @@ INSTANTIATE_TEST_SUITE_P(
                 added("/links/0/friction", R"({"coefficient": 0.2, "stik_stiffness": 1})"),
                 "/links/0/friction/stik_stiffness", "did you mean 'stick_stiffness'?"},
         BadCase{"load_y_in_1d", added("/loads", R"([{"node": "b0", "y": -9.81}])"), "/loads/0/y",
-                "only allowed when dimension is 2"},
+                "only allowed when dimension is 2 or 3"},
         BadCase{"load_is_string", added("/loads", R"([{"node": "b0", "x": "heavy"}])"),
                 "/loads/0/x", "expected a number"},
         BadCase{"unknown_law", replaced("/links/0/law/type", R"("gap_sprng")"), "/links/0/law/type",

@@ -162,6 +162,82 @@ void expect_written_as_given(const std::string& model) {
 
 TEST(ModelWriter, WritesBackEveryFieldOfARichModel) { expect_written_as_given(kRichModel); }
 
+// Every field of a 3-D scene, as the writer writes it: z components, the six fixed directions,
+// a 3-D beam's section, orientation and offsets, rotary inertia about three axes, a rotational
+// link's axis, gravity along -z.
+constexpr const char* kRichSpaceModel = R"({
+  "title": "every 3-D field",
+  "dimension": 3,
+  "nodes": [
+    {"id": "a", "x": 0.0, "y": 0.0, "z": 0.0},
+    {"id": "b", "x": 1.0, "y": 0.5, "z": 2.0},
+    {"id": "c", "x": 1.0, "y": 0.5, "z": 2.5}
+  ],
+  "materials": [
+    {
+      "id": "steel",
+      "youngs_modulus": 200000000000.0,
+      "density": 7850.0,
+      "shear_modulus": 80000000000.0
+    }
+  ],
+  "elements": [
+    {
+      "id": "col",
+      "type": "beam",
+      "nodes": ["a", "b"],
+      "material": "steel",
+      "area": 0.02,
+      "inertia_y": 0.0001,
+      "inertia_z": 0.0002,
+      "torsion": 5e-05,
+      "orientation": [1.0, 0.0, 0.0],
+      "rigid_offsets": [[0.0, 0.0, 0.25], [0.0, 0.0, -0.25]],
+      "mass": "consistent"
+    },
+    {"id": "bar", "type": "truss", "nodes": ["b", "c"], "material": "steel", "area": 0.001}
+  ],
+  "masses": [{"node": "b", "mass": 10.0, "rotary_inertia": [1.0, 2.0, 3.0]}],
+  "supports": [{"node": "a", "fix": ["x", "y", "z", "rx", "ry", "rz"]}],
+  "initial_velocities": [{"node": "c", "x": 0.1, "y": 0.0, "z": -0.2}],
+  "loads": [{"node": "b", "x": 1.0, "y": 2.0, "z": -3.0}],
+  "links": [
+    {
+      "id": "hinge",
+      "nodes": ["a", "b"],
+      "gap": 0.0,
+      "axis": [0.0, 1.0, 0.0],
+      "dof": "rotation",
+      "law": {"type": "elastic_spring", "stiffness": 1000000.0}
+    },
+    {
+      "id": "hit",
+      "nodes": ["b", "c"],
+      "gap": 0.01,
+      "axis": [0.0, 0.0, 1.0],
+      "law": {"type": "gap_spring", "stiffness": 1000000000.0}
+    }
+  ],
+  "gravity": {"direction": [0.0, 0.0, -1.0], "p_delta": "chord"},
+  "analysis": {
+    "integrator": {"type": "newmark", "beta": 0.25, "gamma": 0.5},
+    "time_step": 0.001,
+    "duration": 1.0,
+    "convergence": {"relative_tolerance": 1e-10, "absolute_tolerance": 0.0, "max_iterations": 25},
+    "max_step_cuts": 10
+  }
+})";
+
+TEST(ModelWriter, WritesBackEveryFieldOfASpaceModel) {
+  expect_written_as_given(kRichSpaceModel);
+  const builder::ModelSpec spec = round_trip(parse(kRichSpaceModel));
+  EXPECT_EQ(spec.nodes.at(1).z, 2.0);
+  EXPECT_EQ(spec.elements.at(0).offsets[1][2], -0.25);
+  EXPECT_EQ(spec.masses.at(0).rotary_inertia, (std::array<double, 3>{1.0, 2.0, 3.0}));
+  EXPECT_EQ(spec.supports.at(0).fixed, (std::array<bool, 6>{true, true, true, true, true, true}));
+  EXPECT_EQ(spec.gravity->direction, (std::vector<double>{0.0, 0.0, -1.0}));
+}
+
 TEST(ModelWriter, ReadsBackTheSameValues) {
   const builder::ModelSpec spec = round_trip(parse(kRichModel));
   EXPECT_EQ(spec.title, "every field");
@@ -172,10 +248,10 @@ TEST(ModelWriter, ReadsBackTheSameValues) {
   EXPECT_EQ(spec.elements.at(1).extra_mass, 1200.0);
   EXPECT_TRUE(spec.elements.at(1).consistent_mass);
   EXPECT_FALSE(spec.elements.at(2).consistent_mass);
-  EXPECT_EQ(spec.masses.at(0).rotary_inertia, 0.75);
-  EXPECT_TRUE(spec.supports.at(0).fix_x && spec.supports.at(0).fix_y &&
-              spec.supports.at(0).fix_rotation);
-  EXPECT_TRUE(!spec.supports.at(1).fix_x && spec.supports.at(1).fix_y);
+  EXPECT_EQ(spec.masses.at(0).rotary_inertia[2], 0.75);  // about z
+  EXPECT_TRUE(spec.supports.at(0).fixed[0] && spec.supports.at(0).fixed[1] &&
+              spec.supports.at(0).fixed[2]);
+  EXPECT_TRUE(!spec.supports.at(1).fixed[0] && spec.supports.at(1).fixed[1]);
   EXPECT_EQ(spec.loads.at(0).y, -98.1);
   EXPECT_EQ(spec.initial_velocities.at(0).y, -0.2);
 
