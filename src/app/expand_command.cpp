@@ -36,10 +36,13 @@ void rebase_records(builder::ModelSpec& spec, const fs::path& model_path,
                     const fs::path& out_path) {
   const fs::path model_folder = fs::absolute(model_path).parent_path();
   const fs::path out_folder = fs::absolute(out_path).parent_path();
+  const auto rebase = [&](std::string& file) {
+    if (!fs::path(file).is_absolute())
+      file = fs::proximate(model_folder / file, out_folder).generic_string();
+  };
   for (builder::ExcitationSpec& excitation : spec.excitations) {
-    const fs::path record(excitation.record);
-    if (!record.is_absolute())
-      excitation.record = fs::proximate(model_folder / record, out_folder).generic_string();
+    rebase(excitation.record);
+    if (excitation.pair && excitation.pair->record) rebase(*excitation.pair->record);
   }
 }
 
@@ -62,10 +65,14 @@ int expand_command(const Arguments& arguments) {
   }
   // The expanded model may not replace the model or one of its records.
   std::vector<io::NamedPath> inputs{{model_path, "the model"}};
-  for (std::size_t k = 0; k < expanded.excitations.size(); ++k)
-    inputs.push_back(
-        {(fs::path(model_path).parent_path() / expanded.excitations[k].record).string(),
-         fmt::format("{}: /excitations/{}/record", model_path, k)});
+  for (std::size_t k = 0; k < expanded.excitations.size(); ++k) {
+    const builder::ExcitationSpec& excitation = expanded.excitations[k];
+    inputs.push_back({(fs::path(model_path).parent_path() / excitation.record).string(),
+                      fmt::format("{}: /excitations/{}/record", model_path, k)});
+    if (excitation.pair && excitation.pair->record)
+      inputs.push_back({(fs::path(model_path).parent_path() / *excitation.pair->record).string(),
+                        fmt::format("{}: /excitations/{}/pair/record", model_path, k)});
+  }
   io::check_outputs_apart(inputs, {{out, "--out"}});
   rebase_records(expanded, model_path, out);
   io::write_text_atomic(out, io::model_to_json(expanded));

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "builder/excitations.hpp"
 #include "core/errors.hpp"
 #include "io/ground_motion_reader.hpp"
 #include "io/json_reader.hpp"
@@ -50,6 +51,30 @@ std::string sample_hash(const MotionOverride& samples) {
   return io::sha1_hex(bytes);
 }
 
+// A pair's second component: its own file (relative to the model) or another column of the
+// first's (`first_record`, as opened), read as the first.
+LoadedModel::SecondComponent read_second_component(const std::string& path, std::size_t k,
+                                                   const builder::ExcitationSpec& e,
+                                                   const std::string& first_record,
+                                                   io::RecordFormat format,
+                                                   const LoadedModel& loaded) {
+  const builder::PairSpec& pair = *e.pair;
+  LoadedModel::SecondComponent second;
+  second.path = !pair.record ? first_record
+                : std::filesystem::path(*pair.record).is_absolute()
+                    ? *pair.record
+                    : (std::filesystem::path(path).parent_path() / *pair.record).string();
+  format.column = pair.column.value_or(e.column);
+  try {
+    second.motion =
+        io::read_ground_motion(second.path, format, loaded.spec.units.gravity(), &second.source);
+  } catch (const io::FileAccessError& error) {
+    throw InputError(path, fmt::format("/excitations/{}/pair/record", k),
+                     fmt::format("{}: '{}'", error.reason(), error.file()));
+  }
+  return second;
+}
+
 // Reads the records of `loaded.spec` and builds it. `first_as_given`: the first record's path is
 // the caller's (relative to where pound runs), not relative to the model file.
 // `given_samples`: the first record is these values, not a file.
@@ -75,6 +100,7 @@ void read_records_and_build(const std::string& path, bool first_as_given, Loaded
           record, *given_samples->accelerations, given_samples->time_step, given_samples->times,
           format.units, spec.units.gravity()));
       loaded.record_sources.push_back({"samples", sample_hash(*given_samples)});
+      loaded.second_components.emplace_back();  // the samples replaced a pair too
       continue;
     }
     try {
@@ -86,9 +112,15 @@ void read_records_and_build(const std::string& path, bool first_as_given, Loaded
       throw InputError(path, fmt::format("/excitations/{}/record", k),
                        fmt::format("{}: '{}'", error.reason(), error.file()));
     }
+    loaded.second_components.push_back(
+        e.pair ? std::optional(read_second_component(path, k, e, record, format, loaded))
+               : std::nullopt);
   }
+  std::vector<std::optional<model::GroundMotion>> seconds;
+  for (const auto& second : loaded.second_components)
+    seconds.push_back(second ? std::optional(second->motion) : std::nullopt);
   try {
-    loaded.built = builder::build(spec, loaded.records);
+    loaded.built = builder::build(spec, loaded.records, seconds);
   } catch (const InputError& error) {
     throw error.file().empty() ? error.in_file(path) : error;
   }
@@ -105,6 +137,11 @@ void override_motion(const MotionOverride& motion, builder::ModelSpec& spec) {
   builder::ExcitationSpec& first = spec.excitations.front();
   first.record = motion.path;
   first.format = "auto";
+  if (first.pair) {  // one record replaces the pair, along its first component
+    const model::Coordinates along = builder::pair_direction(*first.pair, 0);
+    first.direction.assign(along.begin(), along.end());
+    first.pair.reset();
+  }
   if (motion.units) first.units = *motion.units;
   first.time_column = motion.time_column;
   first.column = motion.column.value_or(motion.time_column ? 2 : 1);
@@ -155,6 +192,10 @@ LoadedModel load_model_with_record(const std::string& path, const builder::Excit
   replaced.supports = first.supports;
   replaced.apparent_velocity = first.apparent_velocity;
   replaced.wave_origin = first.wave_origin;
+  if (first.pair) {  // one record replaces the pair, along its first component
+    const model::Coordinates along = builder::pair_direction(*first.pair, 0);
+    replaced.direction.assign(along.begin(), along.end());
+  }
   first = replaced;
   loaded.first_record_replaced_by = "the batch case";
   read_records_and_build(path, true, loaded);

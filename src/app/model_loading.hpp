@@ -18,6 +18,13 @@ struct LoadedModel {
   std::vector<model::GroundMotion> records;      // of spec.excitations, as read (before scaling)
   std::vector<std::string> record_paths;         // the files they were read from
   std::vector<io::RecordSource> record_sources;  // their format and content hash
+  // Per excitation, a pair's second component (none for a single record), read as its first.
+  struct SecondComponent {
+    model::GroundMotion motion;
+    std::string path;
+    io::RecordSource source;
+  };
+  std::vector<std::optional<SecondComponent>> second_components;
   // Who replaced the first excitation's record: "--motion", "the batch case", or empty.
   std::string first_record_replaced_by;
 };

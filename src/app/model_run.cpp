@@ -210,6 +210,17 @@ std::vector<io::Document> excitation_documents(const LoadedModel& loaded) {
         .set("pga", applied.pga)
         .set("pga_g", applied.pga_g);
     if (!applied.replaced_by.empty()) item.set("replaced_by", applied.replaced_by);
+    if (const auto& second = loaded.second_components.at(k)) {
+      // The pair's second component, scaled by the same factor; targets are the pair's RotD50.
+      const double pga = applied.factor * second->motion.peak();
+      item.set("pair", io::Document()
+                           .set("record", second->path)
+                           .set("sha1", second->source.sha1)
+                           .set("format", second->source.format)
+                           .set("angle_deg", loaded.spec.excitations[k].pair->angle)
+                           .set("pga", pga)
+                           .set("pga_g", pga / loaded.spec.units.gravity()));
+    }
     items.push_back(item);
   }
   return items;
@@ -232,6 +243,10 @@ std::string excitation_lines(const LoadedModel& loaded) {
         "  record {} (sha1 {}): scale factor {:.4g}, PGA {:.4g} g{}\n", loaded.record_paths[k],
         loaded.record_sources[k].sha1.substr(0, 12), applied.factor, applied.pga_g,
         applied.replaced_by.empty() ? "" : fmt::format(" (replaced by {})", applied.replaced_by));
+    if (const auto& second = loaded.second_components.at(k))
+      text += fmt::format("  paired with {} (sha1 {}) at {:g} deg, PGA {:.4g} g\n", second->path,
+                          second->source.sha1.substr(0, 12), loaded.spec.excitations[k].pair->angle,
+                          applied.factor * second->motion.peak() / loaded.spec.units.gravity());
   }
   return text;
 }
@@ -331,6 +346,10 @@ void check_run_outputs(const std::string& out, const RunRequest& request, const 
                       k == 0 && request.motion
                           ? request.motion->replaced_by
                           : fmt::format("{}: /excitations/{}/record", request.model_path, k)});
+  for (std::size_t k = 0; k < loaded.second_components.size(); ++k)
+    if (const auto& second = loaded.second_components[k])
+      inputs.push_back(
+          {second->path, fmt::format("{}: /excitations/{}/pair/record", request.model_path, k)});
   std::vector<io::NamedPath> outputs{{(fs::path(out) / "summary.json").string(), "--out"}};
   if (ensemble) outputs.push_back({(fs::path(out) / "ensemble.json").string(), "--out"});
   const auto& recorders = loaded.built.recorders;

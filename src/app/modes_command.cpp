@@ -195,6 +195,8 @@ int modes_command(const Arguments& arguments) {
   if (!shapes.empty()) {
     std::vector<io::NamedPath> inputs{{model_path, "the model"}};
     for (const std::string& record : loaded.record_paths) inputs.push_back({record, "a record"});
+    for (const auto& second : loaded.second_components)
+      if (second) inputs.push_back({second->path, "a record"});
     io::check_outputs_apart(inputs, {{shapes, "--shapes"}});
   }
   const ModalFindings findings = modal_findings(loaded, model_path, count);

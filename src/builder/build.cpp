@@ -266,7 +266,8 @@ model::Gravity gravity(const GravitySpec& spec, const UnitsSpec& units) {
 
 }  // namespace
 
-BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMotion>& motions) {
+BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMotion>& motions,
+                 const std::vector<std::optional<model::GroundMotion>>& second_motions) {
   check_generator_dimensions(user_spec);
   const ModelSpec spec = expand(user_spec);
   const Resolver resolver(user_spec, spec);
@@ -281,7 +282,7 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
   resolve_nodal_data(resolver, model);
   model.links = resolve_links(resolver, model);
   built.analysis = spec.analysis;
-  built.excitation_factors = resolve_excitations(resolver, motions, model);
+  built.excitation_factors = resolve_excitations(resolver, motions, second_motions, model);
   built.units = spec.units.names();
   fit_analysis_to_records(built.analysis, model);
   if (!built.analysis.time_step_auto) check_step_count(built.analysis, spec.source);

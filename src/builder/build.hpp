@@ -48,8 +48,10 @@ struct ModelSize {
 ModelSize model_size(const ModelSpec& spec);
 
 // `motions`: the records of spec.excitations, read and converted to model units (io/); the
-// builder scales them as the spec says.
-BuiltModel build(const ModelSpec& spec, const std::vector<model::GroundMotion>& motions = {});
+// builder scales them as the spec says. `second_motions`: per excitation, a pair's second
+// component (empty: none has one).
+BuiltModel build(const ModelSpec& spec, const std::vector<model::GroundMotion>& motions = {},
+                 const std::vector<std::optional<model::GroundMotion>>& second_motions = {});
 
 std::unique_ptr<integrators::Integrator> make_integrator(const AnalysisSpec& analysis);
 integrators::TransientSettings make_transient_settings(const AnalysisSpec& analysis);

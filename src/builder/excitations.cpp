@@ -3,13 +3,113 @@
 #include <algorithm>
 #include <cmath>
 #include <ranges>
+#include <string>
+
+#include "model/record_pair.hpp"
 
 namespace pound::builder {
 
+namespace {
+
+// What resolving excitation k needs besides its records.
+struct ExcitationPlace {
+  const Resolver& resolver;
+  const ExcitationSpec& spec;
+  std::size_t k;
+
+  [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+    throw InputError(resolver.spec().source, fmt::format("/excitations/{}{}", k, where), what);
+  }
+};
+
+// The factor of a single record: to its target PGA or Sa (in g), or as given.
+double record_factor(const ExcitationPlace& place, const model::GroundMotion& motion,
+                     double gravity) {
+  const ExcitationSpec& e = place.spec;
+  if (!(motion.peak() > 0.0) && (e.target_pga || e.target_sa))
+    place.fail("/scale", fmt::format("record '{}' is all zeros: it cannot be scaled to a target",
+                                     motion.name));
+  if (e.target_pga) return model::scale_to_peak(motion, *e.target_pga * gravity);
+  if (e.target_sa) try {
+      return model::scale_to_spectral_acceleration(motion, *e.target_sa * gravity, e.sa_period,
+                                                   e.sa_damping);
+    } catch (const std::invalid_argument& error) {
+      place.fail("/scale", error.what());
+    }
+  return e.scale_factor.value_or(1.0);
+}
+
+// The one factor of a pair: its RotD50 (of the accelerations for a PGA, of Sa(T) for an Sa) to
+// the target, as design codes scale a pair (Boore 2010), or as given.
+double pair_factor(const ExcitationPlace& place, const model::GroundMotionPair& pair,
+                   double gravity) {
+  const ExcitationSpec& e = place.spec;
+  if (!e.target_pga && !e.target_sa) return e.scale_factor.value_or(1.0);
+  const double target = (e.target_pga ? *e.target_pga : *e.target_sa) * gravity;
+  const double rot_d50 =
+      model::pair_spectral_acceleration(pair, e.target_pga ? 0.0 : e.sa_period, e.sa_damping)
+          .rot_d50;
+  if (!(rot_d50 > 0.0) || !std::isfinite(target / rot_d50))
+    place.fail("/scale", fmt::format("the pair '{}', '{}' has no motion at that period: it "
+                                     "cannot be scaled to a target",
+                                     pair.first.name, pair.second.name));
+  return target / rot_d50;
+}
+
+// Adds a record (already scaled) along `direction`: uniform, or moving the supports the
+// excitation names, each after its wave-passage delay.
+void add_component(const ExcitationPlace& place, model::GroundMotion motion,
+                   const model::Coordinates& direction, model::Model& model) {
+  const ExcitationSpec& e = place.spec;
+  if (e.supports.empty()) {
+    model.excitations.push_back({std::move(motion), direction});
+    return;
+  }
+  model::SupportExcitation moving{std::move(motion), direction, {}};
+  for (std::size_t s = 0; s < e.supports.size(); ++s) {
+    const std::string where = fmt::format("/supports/{}", s);
+    const Index node =
+        place.resolver.node(e.supports[s], fmt::format("/excitations/{}{}", place.k, where));
+    // Only a support can be moved: every direction the record acts in must be fixed there.
+    bool held = false;
+    for (const model::Support& support : model.supports)
+      if (support.node == node)
+        held = std::ranges::all_of(std::views::iota(std::size_t{0}, direction.size()),
+                                   [&](std::size_t axis) {
+                                     // A translation's direction index is its axis.
+                                     return direction[axis] == 0.0 || support.fixed[axis];
+                                   });
+    if (!held)
+      place.fail(where, fmt::format("node '{}' is not a support fixed along the excitation's "
+                                    "direction",
+                                    e.supports[s]));
+    const double x = model.nodes[static_cast<std::size_t>(node)].position[0];
+    const double delay =
+        e.apparent_velocity ? std::abs(x - e.wave_origin) / *e.apparent_velocity : 0.0;
+    moving.supports.emplace_back(node, delay);
+  }
+  model.support_excitations.push_back(std::move(moving));
+}
+
+model::Coordinates direction_of(const ExcitationSpec& e) {
+  model::Coordinates direction{};
+  std::copy_n(e.direction.begin(), std::min(e.direction.size(), direction.size()),
+              direction.begin());
+  return direction;
+}
+
+}  // namespace
+
+model::Coordinates pair_direction(const PairSpec& pair, int component) {
+  const double angle = pair.angle * M_PI / 180.0;
+  const double c = std::cos(angle), s = std::sin(angle);
+  return component == 0 ? model::Coordinates{c, s, 0.0} : model::Coordinates{-s, c, 0.0};
+}
+
 // The records, scaled as the spec says (targets in g), along their directions.
-std::vector<double> resolve_excitations(const Resolver& resolver,
-                                        const std::vector<model::GroundMotion>& motions,
-                                        model::Model& model) {
+std::vector<double> resolve_excitations(
+    const Resolver& resolver, const std::vector<model::GroundMotion>& motions,
+    const std::vector<std::optional<model::GroundMotion>>& second_motions, model::Model& model) {
   const ModelSpec& spec = resolver.spec();
   std::vector<double> factors;
   if (motions.size() != spec.excitations.size())
@@ -17,54 +117,29 @@ std::vector<double> resolve_excitations(const Resolver& resolver,
   const double gravity = spec.units.gravity();
   for (std::size_t k = 0; k < motions.size(); ++k) {
     const ExcitationSpec& e = spec.excitations[k];
-    model::GroundMotion motion = motions[k];
-    const std::string path = fmt::format("/excitations/{}/scale", k);
-    if (!(motion.peak() > 0.0) && (e.target_pga || e.target_sa))
-      throw InputError(spec.source, path,
-                       fmt::format("record '{}' is all zeros: it cannot be scaled "
-                                   "to a target",
-                                   motion.name));
-    double factor = e.scale_factor.value_or(1.0);
-    if (e.target_pga) factor = model::scale_to_peak(motion, *e.target_pga * gravity);
-    if (e.target_sa) try {
-        factor = model::scale_to_spectral_acceleration(motion, *e.target_sa * gravity, e.sa_period,
-                                                       e.sa_damping);
-      } catch (const std::invalid_argument& error) {
-        throw InputError(spec.source, path, error.what());
-      }
-    model::scale(motion, factor * e.extra_factor);
-    factors.push_back(factor * e.extra_factor);
-    model::Coordinates direction{};
-    std::copy_n(e.direction.begin(), std::min(e.direction.size(), direction.size()),
-                direction.begin());
-    if (e.supports.empty()) {
-      model.excitations.push_back({std::move(motion), direction});
+    const ExcitationPlace place{resolver, e, k};
+    const bool paired = e.pair && k < second_motions.size() && second_motions[k];
+    if (e.pair && !paired) throw std::invalid_argument("build: a pair needs its second record");
+    if (!paired) {
+      const double factor = record_factor(place, motions[k], gravity) * e.extra_factor;
+      model::GroundMotion motion = motions[k];
+      model::scale(motion, factor);
+      factors.push_back(factor);
+      add_component(place, std::move(motion), direction_of(e), model);
       continue;
     }
-    model::SupportExcitation moving{std::move(motion), direction, {}};
-    for (std::size_t s = 0; s < e.supports.size(); ++s) {
-      const std::string where = fmt::format("/excitations/{}/supports/{}", k, s);
-      const Index node = resolver.node(e.supports[s], where);
-      // Only a support can be moved: every direction the record acts in must be fixed there.
-      bool held = false;
-      for (const model::Support& support : model.supports)
-        if (support.node == node)
-          held = std::ranges::all_of(std::views::iota(std::size_t{0}, direction.size()),
-                                     [&](std::size_t axis) {
-                                       // A translation's direction index is its axis.
-                                       return direction[axis] == 0.0 || support.fixed[axis];
-                                     });
-      if (!held)
-        throw InputError(
-            spec.source, where,
-            fmt::format("node '{}' is not a support fixed along the excitation's direction",
-                        e.supports[s]));
-      const double x = model.nodes[static_cast<std::size_t>(node)].position[0];
-      const double delay =
-          e.apparent_velocity ? std::abs(x - e.wave_origin) / *e.apparent_velocity : 0.0;
-      moving.supports.emplace_back(node, delay);
+    model::GroundMotionPair pair;
+    try {
+      pair = model::make_component_pair(motions[k], *second_motions[k]);
+    } catch (const std::invalid_argument& error) {
+      place.fail("/pair", error.what());
     }
-    model.support_excitations.push_back(std::move(moving));
+    const double factor = pair_factor(place, pair, gravity) * e.extra_factor;
+    model::scale(pair.first, factor);
+    model::scale(pair.second, factor);
+    factors.push_back(factor);
+    add_component(place, std::move(pair.first), pair_direction(*e.pair, 0), model);
+    add_component(place, std::move(pair.second), pair_direction(*e.pair, 1), model);
   }
   return factors;
 }

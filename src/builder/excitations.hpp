@@ -3,6 +3,7 @@
 // units by io/): each scaled as its excitation says (a factor, a target PGA or Sa in g, times a
 // batch's IDA factor), uniform along its direction or moving the supports it names, each after
 // its wave-passage delay.
+#include <optional>
 #include <vector>
 
 #include "builder/resolver.hpp"
@@ -11,10 +12,15 @@
 namespace pound::builder {
 
 // Adds the excitations to `model` (its supports already there); returns the factor each record
-// was multiplied by. A support that does not hold the record's direction is an InputError.
-std::vector<double> resolve_excitations(const Resolver& resolver,
-                                        const std::vector<model::GroundMotion>& motions,
-                                        model::Model& model);
+// was multiplied by (a pair's two components by the same one). A support that does not hold the
+// record's direction is an InputError; so are a pair's components on different time grids.
+// `second_motions`: per excitation, a pair's second component (may be empty: none).
+std::vector<double> resolve_excitations(
+    const Resolver& resolver, const std::vector<model::GroundMotion>& motions,
+    const std::vector<std::optional<model::GroundMotion>>& second_motions, model::Model& model);
+
+// The direction of a pair's `component` (0: the first, 1: the second) in the x-y plane.
+model::Coordinates pair_direction(const PairSpec& pair, int component);
 
 // What the records decide of the analysis: its duration when the file gives none (the longest
 // record, delays included), and adaptive stepping's longest step (the records' sampling).

@@ -191,6 +191,15 @@ struct DampingSpec {
 };
 
 // Uniform support excitation by a record (read by io/, scaled by the builder).
+// The second horizontal component of a station's record (3-D scenes): another file, or another
+// column of the first's, read as the first is (format, units, time step). The first component acts
+// along (cos a, sin a, 0), the second along (-sin a, cos a, 0): the pair turned by `angle` a.
+struct PairSpec {
+  std::optional<std::string> record;  // default: the first component's file
+  std::optional<int> column;          // default: the first component's
+  double angle = 0.0;                 // [degrees], counter-clockwise about +z
+};
+
 struct ExcitationSpec {
   std::string record;           // path, relative to the model file
   std::string format = "auto";  // "at2", "columns", "auto"
@@ -206,6 +215,9 @@ struct ExcitationSpec {
   // Applied after the scale above: a batch's incremental-dynamic-analysis factor.
   double extra_factor = 1.0;
   std::vector<double> direction{1.0};  // unit vector (1-D: [1] or [-1])
+  // With a pair, the record is the first of two horizontal components (scaled together: a
+  // target is the pair's RotD50) and `direction` is not used.
+  std::optional<PairSpec> pair;
   // Multi-support excitation: the supports this record moves (empty: every support, uniform),
   // optionally reached by a wave at apparent_velocity from `wave_origin` (delay |x - x0| / c).
   std::vector<std::string> supports;

@@ -1067,6 +1067,20 @@ const Fields<ExcitationSpec>& record_format_fields() {
 
 bool by_sa(const ExcitationSpec& excitation) { return excitation.target_sa.has_value(); }
 
+const Fields<builder::PairSpec>& pair_fields() {
+  using builder::PairSpec;
+  static const Fields<PairSpec> fields = {
+      optional("record", &PairSpec::record, Text{true},
+               "the second component's file, relative to the model file"),
+      optional("column", &PairSpec::column, Number<int>{at_least(1)},
+               "columns: the second component's column"),
+      optional("angle", &PairSpec::angle, Number<>{Minimum{-360.0, true}, below(360.0)},
+               "the pair turned about +z: the first component along (cos a, sin a, 0), the "
+               "second along (−sin a, cos a, 0) [degrees]"),
+  };
+  return fields;
+}
+
 Field<ExcitationSpec> scale_field() {
   return nested<ExcitationSpec>(
       "scale",
@@ -1123,6 +1137,20 @@ const Fields<ExcitationSpec>& excitation_fields() {
                 },
                 "delays each support by |x − x0|/c"),
             scale_field(),
+            optional("pair", &ExcitationSpec::pair, Object<builder::PairSpec>{pair_fields()},
+                     "the station's second horizontal component, acting with this one; a "
+                     "target scales the pair to its RotD50")
+                .in_space(),
+            rule<ExcitationSpec>([](JsonObject& object, ExcitationSpec& excitation, Context&) {
+              if (!excitation.pair) return;
+              if (object.has("direction"))
+                object.at("direction")
+                    .fail("a pair acts in the horizontal x-y plane: turn it with 'pair.angle'");
+              if (!excitation.pair->record && !excitation.pair->column)
+                object.at("pair").fail(
+                    "give the second component's 'record' (another file) or 'column' (of this "
+                    "one)");
+            }),
         });
     return list;
   }();

@@ -44,7 +44,8 @@ json in_space(json model) {
   }
   if (model.contains("masses"))
     for (json& mass : model["masses"])
-      if (mass.contains("rotary_inertia")) mass["rotary_inertia"] = {0.0, 0.0, mass["rotary_inertia"]};
+      if (mass.contains("rotary_inertia"))
+        mass["rotary_inertia"] = {0.0, 0.0, mass["rotary_inertia"]};
   std::map<std::string, json*> supports;
   for (json& support : model["supports"]) supports[support["node"]] = &support;
   json added = json::array();
@@ -105,9 +106,9 @@ class PlaneSceneInSpace : public testing::PoundProcess {
 };
 
 TEST_F(PlaneSceneInSpace, BundledPlaneFramesGiveTheSameNumbersInSpace) {
-  for (const char* name : {"three_span_bridge", "three_span_bridge_takeda",
-                           "three_span_bridge_hard_contact", "adjacent_buildings",
-                           "adjacent_buildings_yielding"}) {
+  for (const char* name :
+       {"three_span_bridge", "three_span_bridge_takeda", "three_span_bridge_hard_contact",
+        "adjacent_buildings", "adjacent_buildings_yielding"}) {
     SCOPED_TRACE(name);
     const fs::path plane = path(std::string(name) + ".json");
     ASSERT_EQ(pound({"expand", POUND_SOURCE_DIR "/models/" + std::string(name) + ".json", "--out",
@@ -125,7 +126,8 @@ TEST_F(PlaneSceneInSpace, BundledPlaneFramesGiveTheSameNumbersInSpace) {
     // Every history with the same columns (an element's end forces have more in 3-D: Vy, Vz,
     // T, My, Mz) is the same file.
     int compared = 0;
-    for (const fs::directory_entry& csv : fs::directory_iterator(path(std::string(name) + ".plane"))) {
+    for (const fs::directory_entry& csv :
+         fs::directory_iterator(path(std::string(name) + ".plane"))) {
       if (csv.path().extension() != ".csv") continue;
       const std::string before = read_text(csv.path());
       const std::string after =
@@ -153,7 +155,10 @@ TEST_F(PlaneSceneInSpace, MassOnAnInclinedSpringOscillatesAlongIt) {
       {"masses", {{{"node", "mass"}, {"mass", mass}}}},
       {"supports", {{{"node", "anchor"}, {"fix", {"x", "y", "z"}}}}},
       {"initial_velocities",
-       {{{"node", "mass"}, {"x", speed * axis[0]}, {"y", speed * axis[1]}, {"z", speed * axis[2]}}}},
+       {{{"node", "mass"},
+         {"x", speed * axis[0]},
+         {"y", speed * axis[1]},
+         {"z", speed * axis[2]}}}},
       {"links",
        {{{"id", "spring"},
          {"nodes", {"anchor", "mass"}},
@@ -189,10 +194,10 @@ TEST_F(PlaneSceneInSpace, MassOnAnInclinedSpringOscillatesAlongIt) {
 // `pound check` counts the DOFs of each of the six directions of a 3-D scene.
 TEST_F(PlaneSceneInSpace, CheckCountsSixDirections) {
   const fs::path plane = path("bridge.json");
-  ASSERT_EQ(pound({"expand", POUND_SOURCE_DIR "/models/three_span_bridge.json", "--out",
-                   plane.string()})
-                .exit_code,
-            0);
+  ASSERT_EQ(
+      pound({"expand", POUND_SOURCE_DIR "/models/three_span_bridge.json", "--out", plane.string()})
+          .exit_code,
+      0);
   std::ofstream(path("bridge_3d.json")) << in_space(json::parse(read_text(plane))).dump(1);
   const testing::Outcome outcome = pound({"check", path("bridge_3d.json").string(), "--json"});
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;

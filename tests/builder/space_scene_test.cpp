@@ -27,18 +27,16 @@ constexpr double kArea = 0.01, kIy = 2.0e-5, kIz = 5.0e-5, kJ = 3.0e-5;
 // oriented by `orientation`, fixed at the origin, loaded at the tip.
 json cantilever(const Eigen::Vector3d& axis, double length, int elements,
                 const Eigen::Vector3d& orientation, const Eigen::Vector3d& force) {
-  json model = {{"dimension", 3},
-                {"materials",
-                 {{{"id", "steel"},
-                   {"youngs_modulus", kE},
-                   {"density", 7850.0},
-                   {"poisson_ratio", kNu}}}},
-                {"supports", {{{"node", "n0"}, {"fix", {"x", "y", "z", "rx", "ry", "rz"}}}}},
-                {"analysis", {{"time_step", 0.001}, {"duration", 0.01}}}};
+  json model = {
+      {"dimension", 3},
+      {"materials",
+       {{{"id", "steel"}, {"youngs_modulus", kE}, {"density", 7850.0}, {"poisson_ratio", kNu}}}},
+      {"supports", {{{"node", "n0"}, {"fix", {"x", "y", "z", "rx", "ry", "rz"}}}}},
+      {"analysis", {{"time_step", 0.001}, {"duration", 0.01}}}};
   for (int k = 0; k <= elements; ++k) {
     const Eigen::Vector3d at = axis * length * k / elements;
-    model["nodes"].push_back({{"id", fmt::format("n{}", k)}, {"x", at.x()}, {"y", at.y()},
-                              {"z", at.z()}});
+    model["nodes"].push_back(
+        {{"id", fmt::format("n{}", k)}, {"x", at.x()}, {"y", at.y()}, {"z", at.z()}});
   }
   for (int k = 0; k < elements; ++k)
     model["elements"].push_back(
@@ -121,12 +119,11 @@ TEST(SpaceScene, SkewCantileverDeflectsAndTwistsAsBeamTheorySays) {
     const Eigen::Vector3d u = at_node(solution, 4, 0), theta = at_node(solution, 4, 3);
     const double scale = std::max({std::abs(c.expected_along_y), std::abs(c.expected_along_z),
                                    std::abs(c.expected_axial), std::abs(c.expected_twist)});
-    const double error =
-        std::max({std::abs(u.dot(local.y) - c.expected_along_y),
-                  std::abs(u.dot(local.z) - c.expected_along_z),
-                  std::abs(u.dot(local.x) - c.expected_axial),
-                  std::abs(theta.dot(local.x) - c.expected_twist)}) /
-        scale;
+    const double error = std::max({std::abs(u.dot(local.y) - c.expected_along_y),
+                                   std::abs(u.dot(local.z) - c.expected_along_z),
+                                   std::abs(u.dot(local.x) - c.expected_axial),
+                                   std::abs(theta.dot(local.x) - c.expected_twist)}) /
+                         scale;
     std::printf("  %-16s tip error %.2e of %.4g\n", c.name, error, scale);
     EXPECT_LT(error, 1e-9) << c.name;
   }
@@ -167,8 +164,8 @@ TEST(SpaceScene, TripodSharesAVerticalLoadAsStaticsSays) {
   for (int k = 0; k < 3; ++k) {
     const double angle = 2.0 * M_PI * k / 3.0;
     const std::string id = fmt::format("foot{}", k);
-    feet.push_back({{"id", id}, {"x", radius * std::cos(angle)}, {"y", radius * std::sin(angle)},
-                    {"z", 0.0}});
+    feet.push_back(
+        {{"id", id}, {"x", radius * std::cos(angle)}, {"y", radius * std::sin(angle)}, {"z", 0.0}});
     model["elements"].push_back({{"id", fmt::format("bar{}", k)},
                                  {"type", "truss"},
                                  {"nodes", {id, "apex"}},
@@ -249,8 +246,8 @@ TEST(SpaceScene, MeaninglessSpaceInputIsRefusedWithItsPath) {
   json plane = good;
   plane["dimension"] = 2;
   for (json& node : plane["nodes"]) node.erase("z");
-  plane["elements"][0] = {{"id", "e0"},     {"type", "beam"}, {"nodes", {"n0", "n1"}},
-                          {"material", "steel"}, {"area", kArea}, {"inertia", kIz}};
+  plane["elements"][0] = {{"id", "e0"},          {"type", "beam"}, {"nodes", {"n0", "n1"}},
+                          {"material", "steel"}, {"area", kArea},  {"inertia", kIz}};
   plane["supports"][0]["fix"] = {"x", "y", "rz"};
   plane["loads"][0].erase("z");
   ASSERT_FALSE(error_of(plane));

@@ -219,6 +219,15 @@ constexpr const char* kRichSpaceModel = R"({
     }
   ],
   "gravity": {"direction": [0.0, 0.0, -1.0], "p_delta": "chord"},
+  "excitations": [
+    {
+      "record": "ns.txt",
+      "format": "columns",
+      "time_step": 0.01,
+      "units": "g",
+      "pair": {"record": "ew.txt", "column": 2, "angle": 15.0}
+    }
+  ],
   "analysis": {
     "integrator": {"type": "newmark", "beta": 0.25, "gamma": 0.5},
     "time_step": 0.001,
@@ -236,6 +245,8 @@ TEST(ModelWriter, WritesBackEveryFieldOfASpaceModel) {
   EXPECT_EQ(spec.masses.at(0).rotary_inertia, (std::array<double, 3>{1.0, 2.0, 3.0}));
   EXPECT_EQ(spec.supports.at(0).fixed, (std::array<bool, 6>{true, true, true, true, true, true}));
   EXPECT_EQ(spec.gravity->direction, (std::vector<double>{0.0, 0.0, -1.0}));
+  EXPECT_EQ(spec.excitations.at(0).pair->record, "ew.txt");
+  EXPECT_EQ(spec.excitations.at(0).pair->angle, 15.0);
 }
 
 TEST(ModelWriter, ReadsBackTheSameValues) {

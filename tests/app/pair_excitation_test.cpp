@@ -1,0 +1,196 @@
+// Issue 18 item 3: the two horizontal components of a station acting together on a 3-D scene
+// ("pair" of an excitation), turned by an angle and scaled as one to a RotD50 target. The records
+// are made here (two columns of decaying sines), so no shared files are needed.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/process.hpp"
+
+namespace pound {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using testing::read_text;
+
+// Two different components, 0.01 s apart, 8 s long, in g.
+void write_pair(const fs::path& file, std::size_t samples = 800) {
+  std::ofstream out(file);
+  for (std::size_t i = 0; i < samples; ++i) {
+    const double t = 0.01 * static_cast<double>(i), decay = std::exp(-0.4 * t);
+    out << fmt::format("{:.17g} {:.17g}\n", 0.3 * decay * std::sin(2 * M_PI * 1.3 * t),
+                       0.2 * decay * std::sin(2 * M_PI * 0.7 * t + 0.5));
+  }
+}
+
+// A column 5 m tall with a mass on top; `symmetric`: the same bending stiffness about both axes.
+json column(double angle, bool symmetric = true) {
+  return {{"dimension", 3},
+          {"nodes",
+           {{{"id", "base"}, {"x", 0.0}, {"y", 0.0}, {"z", 0.0}},
+            {{"id", "top"}, {"x", 0.0}, {"y", 0.0}, {"z", 5.0}}}},
+          {"materials",
+           {{{"id", "c"}, {"youngs_modulus", 3e10}, {"density", 0.0}, {"poisson_ratio", 0.2}}}},
+          {"elements",
+           {{{"id", "col"},
+             {"type", "beam"},
+             {"nodes", {"base", "top"}},
+             {"material", "c"},
+             {"area", 0.4},
+             {"inertia_y", 0.01},
+             {"inertia_z", symmetric ? 0.01 : 0.03},
+             {"torsion", 0.02},
+             {"orientation", {1.0, 0.0, 0.0}}}}},
+          {"masses", {{{"node", "top"}, {"mass", 1e5}, {"rotary_inertia", {1e4, 1e4, 2e4}}}}},
+          {"supports", {{{"node", "base"}, {"fix", {"x", "y", "z", "rx", "ry", "rz"}}}}},
+          {"damping", {{"modes", {1, 2}}, {"ratio", 0.05}}},
+          {"excitations",
+           {{{"record", "pair.txt"},
+             {"format", "columns"},
+             {"time_step", 0.01},
+             {"units", "g"},
+             {"pair", {{"column", 2}, {"angle", angle}}}}}},
+          {"analysis", {{"time_step", 0.01}}},
+          {"recorders", {{{"type", "node"}, {"nodes", {"top"}}, {"file", "top.csv"}}}}};
+}
+
+class PairExcitation : public testing::PoundProcess {
+ protected:
+  void SetUp() override {
+    PoundProcess::SetUp();
+    write_pair(path("pair.txt"));
+  }
+  testing::Outcome run(const json& model, const std::string& name) {
+    std::ofstream(path(name + ".json")) << model.dump(1);
+    return pound({"run", path(name + ".json").string(), "--quiet", "--out", path(name).string()});
+  }
+  // The top's (u_x, u_y) at every step.
+  std::vector<std::array<double, 2>> top_motion(const std::string& name) {
+    std::istringstream csv(read_text(path(name) / "top.csv"));
+    std::string line;
+    std::getline(csv, line);
+    std::vector<std::string> header;
+    for (std::istringstream cells(line); std::getline(cells, line, ',');) header.push_back(line);
+    const auto column = [&](const std::string& key) {
+      return std::find(header.begin(), header.end(), key) - header.begin();
+    };
+    const auto x = column("top.u_x [m]"), y = column("top.u_y [m]");
+    std::vector<std::array<double, 2>> motion;
+    while (std::getline(csv, line)) {
+      std::vector<double> row;
+      for (std::istringstream cells(line); std::getline(cells, line, ',');)
+        row.push_back(std::stod(line));
+      motion.push_back({row[static_cast<std::size_t>(x)], row[static_cast<std::size_t>(y)]});
+    }
+    return motion;
+  }
+};
+
+// A column that bends alike about both axes responds to the pair turned by a as it does to the
+// pair unturned, turned by a: u(a) = R(a) u(0) at every step.
+TEST_F(PairExcitation, TurningThePairTurnsTheResponseOfASymmetricColumn) {
+  ASSERT_EQ(run(column(0.0), "unturned").exit_code, 0);
+  const double angle = 37.0;
+  ASSERT_EQ(run(column(angle), "turned").exit_code, 0);
+  const auto unturned = top_motion("unturned"), turned = top_motion("turned");
+  ASSERT_EQ(turned.size(), unturned.size());
+  const double c = std::cos(angle * M_PI / 180.0), s = std::sin(angle * M_PI / 180.0);
+  double worst = 0.0, peak = 0.0;
+  for (std::size_t i = 0; i < turned.size(); ++i) {
+    const double x = c * unturned[i][0] - s * unturned[i][1];
+    const double y = s * unturned[i][0] + c * unturned[i][1];
+    worst = std::max({worst, std::abs(turned[i][0] - x), std::abs(turned[i][1] - y)});
+    peak = std::max({peak, std::abs(x), std::abs(y)});
+  }
+  std::printf("  turned by %.0f deg: largest difference %.2e of a peak %.4g m\n", angle, worst,
+              peak);
+  EXPECT_LT(worst, 1e-12 * peak);
+  EXPECT_GT(peak, 1e-3);
+}
+
+// A pair scaled to an Sa target has that RotD50 at the period (pound spectrum computes it apart),
+// and its components keep their ratio: one factor for both.
+TEST_F(PairExcitation, TargetScalesThePairToItsRotD50) {
+  json model = column(20.0, false);
+  model["excitations"][0]["scale"] = {{"sa", 0.4}, {"period", 0.6}};
+  ASSERT_EQ(run(model, "scaled").exit_code, 0);
+  const json excitation = json::parse(read_text(path("scaled") / "summary.json"))["excitations"][0];
+  const double factor = excitation["factor"].get<double>();
+  const testing::Outcome spectrum =
+      pound({"spectrum", path("pair.txt").string(), "--format", "columns", "--dt", "0.01",
+             "--pair-column", "2", "--periods", "0.6", "--scale", fmt::format("{:.17g}", factor),
+             "--json"});
+  ASSERT_EQ(spectrum.exit_code, 0) << spectrum.err;
+  const double rot_d50 = json::parse(spectrum.out)["rotd50_g"][0].get<double>();
+  std::printf("  RotD50 after scaling %.15g g (target 0.4), factor %.6g\n", rot_d50, factor);
+  EXPECT_NEAR(rot_d50, 0.4, 1e-12);
+  EXPECT_EQ(excitation["pair"]["angle_deg"], 20.0);
+  // One factor for both: each component's applied peak is the factor times its peak in the file.
+  std::istringstream file(read_text(path("pair.txt")));
+  double peak_first = 0.0, peak_second = 0.0;
+  for (double first, second; file >> first >> second;) {
+    peak_first = std::max(peak_first, std::abs(first));
+    peak_second = std::max(peak_second, std::abs(second));
+  }
+  EXPECT_NEAR(excitation["pga_g"].get<double>(), factor * peak_first, 1e-12 * peak_first);
+  EXPECT_NEAR(excitation["pair"]["pga_g"].get<double>(), factor * peak_second, 1e-12 * peak_second);
+}
+
+// Pairs that mean nothing are refused with their path, and nothing is written.
+TEST_F(PairExcitation, MeaninglessPairsAreRefused) {
+  struct Case {
+    const char* name;
+    std::function<void(json&)> change;
+    const char* where;
+    const char* phrase;
+  };
+  write_pair(path("short.txt"), 500);
+  const Case cases[] = {
+      {"direction", [](json& m) { m["excitations"][0]["direction"] = {1.0, 0.0, 0.0}; },
+       "/excitations/0/direction", "turn it with 'pair.angle'"},
+      {"nothing", [](json& m) { m["excitations"][0]["pair"] = json::object(); },
+       "/excitations/0/pair", "give the second component's 'record'"},
+      {"other_grid",
+       [](json& m) {
+         m["excitations"][0]["pair"] = {{"record", "short.txt"}, {"column", 2}};
+       },
+       "/excitations/0/pair", "must have as many samples"},
+      {"missing", [](json& m) { m["excitations"][0]["pair"]["record"] = "nowhere.txt"; },
+       "/excitations/0/pair/record", "nowhere.txt"},
+      {"angle", [](json& m) { m["excitations"][0]["pair"]["angle"] = 400; },
+       "/excitations/0/pair/angle", "must be < 360"},
+      {"plane",
+       [](json& m) {
+         m = {{"dimension", 2},
+              {"nodes", {{{"id", "a"}, {"x", 0.0}, {"y", 0.0}}}},
+              {"masses", {{{"node", "a"}, {"mass", 1.0}}}},
+              {"excitations", {{{"record", "pair.txt"}, {"pair", {{"column", 2}}}}}},
+              {"analysis", {{"time_step", 0.01}}}};
+       },
+       "/excitations/0/pair", "only allowed when dimension is 3"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    json model = column(0.0);
+    c.change(model);
+    const testing::Outcome outcome = run(model, c.name);
+    EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+    EXPECT_TRUE(testing::contains(outcome.err, std::string(c.where) + ":")) << outcome.err;
+    EXPECT_TRUE(testing::contains(outcome.err, c.phrase)) << outcome.err;
+    EXPECT_FALSE(fs::exists(path(c.name)));
+  }
+}
+
+}  // namespace
+}  // namespace pound
