@@ -53,7 +53,11 @@ std::vector<io::InputFile> input_files(const builder::SetSpec& set,
   else
     add(set.source);
   for (const builder::BatchModel& model : set.models) add(model.path);
-  for (const builder::BatchRecord& record : set.records) add(record.excitation.record);
+  for (const builder::BatchRecord& record : set.records) {
+    add(record.excitation.record);
+    if (record.excitation.pair && record.excitation.pair->record)
+      add(*record.excitation.pair->record);
+  }
   return inputs;
 }
 
@@ -64,20 +68,27 @@ std::string plan_text(const builder::SetSpec& set, const std::vector<builder::Ba
   std::vector<io::Document> items;
   for (const builder::BatchCase& c : cases) {
     const builder::ExcitationSpec& e = set.records[c.record].excitation;
-    items.push_back(io::Document()
-                        .set("case", c.name)
-                        .set("model", set.models[c.model].path)
-                        .set("record", e.record)
-                        .set("format", e.format)
-                        .set("column", e.column)
-                        .set("units", e.units)
-                        .set("record_scale", scale_text(e))
-                        .set("scale", c.scale));
+    io::Document item;
+    item.set("case", c.name)
+        .set("model", set.models[c.model].path)
+        .set("record", e.record)
+        .set("format", e.format)
+        .set("column", e.column)
+        .set("units", e.units)
+        .set("record_scale", scale_text(e))
+        .set("scale", c.scale);
+    if (e.pair)  // the pair's second component and angle decide the case too
+      item.set("pair", io::Document()
+                           .set("record", e.pair->record.value_or(e.record))
+                           .set("column", e.pair->column.value_or(e.column))
+                           .set("angle_deg", e.pair->angle));
+    items.push_back(item);
   }
   io::Document intensity;
   intensity.set("type", builder::intensity_name(set.intensity.type))
       .set("period", set.intensity.period)
-      .set("damping", set.intensity.damping);
+      .set("damping", set.intensity.damping)
+      .set("pair", builder::pair_measure_name(set.intensity.pair));
   return io::Document()
              .set("set", set.source)
              .set("intensity_measure", intensity)

@@ -18,6 +18,7 @@
 #include "io/run_summary_document.hpp"
 #include "io/system_memory.hpp"
 #include "model/ground_motion.hpp"
+#include "model/record_pair.hpp"
 #include "results/run_summary.hpp"
 #include "verification/model_check.hpp"
 #include "verification/rod_impact_observer.hpp"
@@ -143,6 +144,18 @@ void summarise_record(const LoadedModel& loaded, const builder::IntensityMeasure
   if (loaded.records.empty() || loaded.built.excitation_factors.empty()) return;
   const AppliedRecord applied = applied_record(loaded, 0);
   c.pga_g = applied.pga_g;
+  const double period = intensity.type == builder::IntensityKind::sa ? intensity.period : 0.0;
+  if (const auto& second = loaded.second_components.front()) {
+    // A pair: its RotD50 or the geometric mean of its components' measures (period 0: PGA).
+    const model::PairSpectralAcceleration measures = model::pair_spectral_acceleration(
+        model::make_component_pair(loaded.records.front(), second->motion), period,
+        intensity.damping);
+    c.intensity = applied.factor *
+                  (intensity.pair == builder::PairMeasure::rot_d50 ? measures.rot_d50
+                                                                   : measures.geometric_mean) /
+                  loaded.spec.units.gravity();
+    return;
+  }
   c.intensity = intensity.type == builder::IntensityKind::sa
                     ? applied.factor *
                           model::spectral_acceleration(loaded.records.front(), intensity.period,

@@ -6,6 +6,10 @@ namespace pound::builder {
 
 const char* intensity_name(IntensityKind kind) { return kind == IntensityKind::sa ? "sa" : "pga"; }
 
+const char* pair_measure_name(PairMeasure measure) {
+  return measure == PairMeasure::rot_d50 ? "rotd50" : "geometric_mean";
+}
+
 std::optional<EnsembleError> ensemble_error(int copies, double perturbation, double robust_spread) {
   constexpr int kMostCopies = 1000;  // each copy is a whole run
   if (copies < 1 || copies > kMostCopies)

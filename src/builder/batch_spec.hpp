@@ -16,9 +16,10 @@ struct BatchModel {
   std::string path;  // the model file, as the program can open it (relative paths resolved)
 };
 
-// One record (a component of a recording): what replaces the model's first excitation. The
-// model keeps its direction, supports and wave passage; the record brings its file, format,
-// units and scale (none given: the record as recorded).
+// One record (a component of a recording, or a pair of horizontal components for 3-D models):
+// what replaces the model's first excitation. The model keeps its direction (not a pair's),
+// supports and wave passage; the record brings its file, format, units and scale (none given:
+// the record as recorded).
 struct BatchRecord {
   std::string id;
   ExcitationSpec excitation;  // `record` is a path the program can open
@@ -28,10 +29,16 @@ struct BatchRecord {
 enum class IntensityKind { pga, sa };            // peak ground acceleration; S_a(period), both in g
 const char* intensity_name(IntensityKind kind);  // "pga", "sa"
 
+// Of a record pair (both horizontal components): the orientation-independent median RotD50, or
+// the geometric mean of the two components' measures (model/record_pair.hpp).
+enum class PairMeasure { rot_d50, geometric_mean };
+const char* pair_measure_name(PairMeasure measure);  // "rotd50", "geometric_mean"
+
 struct IntensityMeasure {
   IntensityKind type = IntensityKind::pga;
   double period = 0.0;
   double damping = 0.05;
+  PairMeasure pair = PairMeasure::rot_d50;  // for records that are pairs
 };
 
 // A response quantity of the summary rows, and the value above which it counts as exceeded.

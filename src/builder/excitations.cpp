@@ -120,6 +120,10 @@ std::vector<double> resolve_excitations(
     const ExcitationPlace place{resolver, e, k};
     const bool paired = e.pair && k < second_motions.size() && second_motions[k];
     if (e.pair && !paired) throw std::invalid_argument("build: a pair needs its second record");
+    if (paired && model.dimension != 3)
+      place.fail("/pair", fmt::format("a pair of horizontal components needs a 3-D scene "
+                                      "(\"dimension\": 3); this one is {}-D",
+                                      model.dimension));
     if (!paired) {
       const double factor = record_factor(place, motions[k], gravity) * e.extra_factor;
       model::GroundMotion motion = motions[k];

@@ -1067,6 +1067,14 @@ const Fields<ExcitationSpec>& record_format_fields() {
 
 bool by_sa(const ExcitationSpec& excitation) { return excitation.target_sa.has_value(); }
 
+Field<ExcitationSpec> pair_needs_a_component() {
+  return rule<ExcitationSpec>([](JsonObject& object, ExcitationSpec& excitation, Context&) {
+    if (excitation.pair && !excitation.pair->record && !excitation.pair->column)
+      object.at("pair").fail(
+          "give the second component's 'record' (another file) or 'column' (of this one)");
+  });
+}
+
 const Fields<builder::PairSpec>& pair_fields() {
   using builder::PairSpec;
   static const Fields<PairSpec> fields = {
@@ -1142,15 +1150,11 @@ const Fields<ExcitationSpec>& excitation_fields() {
                      "target scales the pair to its RotD50")
                 .in_space(),
             rule<ExcitationSpec>([](JsonObject& object, ExcitationSpec& excitation, Context&) {
-              if (!excitation.pair) return;
-              if (object.has("direction"))
+              if (excitation.pair && object.has("direction"))
                 object.at("direction")
                     .fail("a pair acts in the horizontal x-y plane: turn it with 'pair.angle'");
-              if (!excitation.pair->record && !excitation.pair->column)
-                object.at("pair").fail(
-                    "give the second component's 'record' (another file) or 'column' (of this "
-                    "one)");
             }),
+            pair_needs_a_component(),
         });
     return list;
   }();
@@ -1587,6 +1591,10 @@ const Fields<ExcitationSpec>& record_fields() {
   static const Fields<ExcitationSpec> fields = [] {
     Fields<ExcitationSpec> list = record_format_fields();
     list.push_back(scale_field());
+    // A batch record's pair: the models it meets say whether they are 3-D.
+    list.push_back(optional("pair", &ExcitationSpec::pair, Object<builder::PairSpec>{pair_fields()},
+                            "the second horizontal component"));
+    list.push_back(pair_needs_a_component());
     return list;
   }();
   return fields;

@@ -97,6 +97,13 @@ std::vector<builder::BatchRecord> read_record_entry(JsonObject& object, const fs
   const std::string suffix =
       excitation.column == 1 ? std::string() : fmt::format("_col{}", excitation.column);
   std::vector<builder::BatchRecord> records;
+  if (excitation.pair && excitation.pair->record) {
+    // Named from the set's folder; models open it from wherever they are.
+    const JsonValue second = JsonObject(object.at("pair")).at("record");
+    if (!file) second.fail("a pair's second file belongs to one record: give it with 'file'");
+    excitation.pair->record = fs::absolute(resolve(folder, *excitation.pair->record)).string();
+    require_file(second, *excitation.pair->record, "record", kMaxRecordBytes);
+  }
   if (file) {
     excitation.record = resolve(folder, file->as<std::string>(non_empty));
     require_file(*file, excitation.record, "record", kMaxRecordBytes);
@@ -135,6 +142,10 @@ builder::IntensityMeasure read_intensity(JsonObject& object) {
     measure.period = object.required<double>("period", positive);
     measure.damping = object.optional<double>("damping", 0.05, non_negative);
   }
+  if (object.has("pair"))
+    measure.pair = object.one_of("pair", {"rotd50", "geometric_mean"}) == "rotd50"
+                       ? builder::PairMeasure::rot_d50
+                       : builder::PairMeasure::geometric_mean;
   return measure;
 }
 

@@ -19,6 +19,7 @@ Document intensity_document(const builder::IntensityMeasure& measure) {
   intensity.set("type", builder::intensity_name(measure.type)).set("units", "g");
   if (measure.type == builder::IntensityKind::sa)
     intensity.set("period", measure.period).set("damping", measure.damping);
+  intensity.set("pair", builder::pair_measure_name(measure.pair));
   return intensity;
 }
 

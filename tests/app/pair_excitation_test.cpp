@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -157,7 +158,10 @@ TEST_F(PairExcitation, MeaninglessPairsAreRefused) {
   };
   write_pair(path("short.txt"), 500);
   const Case cases[] = {
-      {"direction", [](json& m) { m["excitations"][0]["direction"] = {1.0, 0.0, 0.0}; },
+      {"direction",
+       [](json& m) {
+         m["excitations"][0]["direction"] = {1.0, 0.0, 0.0};
+       },
        "/excitations/0/direction", "turn it with 'pair.angle'"},
       {"nothing", [](json& m) { m["excitations"][0]["pair"] = json::object(); },
        "/excitations/0/pair", "give the second component's 'record'"},
@@ -190,6 +194,58 @@ TEST_F(PairExcitation, MeaninglessPairsAreRefused) {
     EXPECT_TRUE(testing::contains(outcome.err, c.phrase)) << outcome.err;
     EXPECT_FALSE(fs::exists(path(c.name)));
   }
+}
+
+// A batch set takes pairs (3-D models only: a 1-D model's cases fail with the reason) and
+// reports the pair's intensity measure: here the geometric mean of the components' Sa, which
+// `pound spectrum` computes apart, of a pair scaled to RotD50 0.4 g, at each IDA scale.
+TEST_F(PairExcitation, BatchSetsRunPairsAndReportTheirIntensityMeasure) {
+  std::ofstream(path("column.json")) << column(0.0).dump(1);
+  const json set = {
+      {"models", {path("column.json").string(), POUND_SOURCE_DIR "/models/two_sdof_girders.json"}},
+      {"records",
+       {{{"file", "pair.txt"},
+         {"format", "columns"},
+         {"time_step", 0.01},
+         {"pair", {{"column", 2}, {"angle", 10.0}}},
+         {"scale", {{"sa", 0.4}, {"period", 0.6}}}}}},
+      {"scales", {1, 2}},
+      {"intensity_measure", {{"type", "sa"}, {"period", 0.6}, {"pair", "geometric_mean"}}}};
+  std::ofstream(path("set.json")) << set.dump(1);
+  const testing::Outcome batch =
+      pound({"batch", path("set.json").string(), "--out", path("batch").string()});
+  EXPECT_EQ(batch.exit_code, 3) << batch.err;  // the 1-D model's cases fail
+  std::istringstream rows(read_text(path("batch") / "batch_summary.csv"));
+  std::string line;
+  std::getline(rows, line);
+  std::vector<std::string> header;
+  for (std::istringstream cells(line); std::getline(cells, line, ',');) header.push_back(line);
+  const auto at = [&](const std::string& key) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), key) - header.begin());
+  };
+  std::map<std::string, std::vector<std::string>> cases;
+  while (std::getline(rows, line)) {
+    std::vector<std::string> cells;
+    for (std::istringstream in(line); std::getline(in, line, ',');) cells.push_back(line);
+    cases[cells[0]] = cells;
+  }
+  const testing::Outcome spectrum =
+      pound({"spectrum", path("pair.txt").string(), "--format", "columns", "--dt", "0.01",
+             "--pair-column", "2", "--periods", "0.6", "--json"});
+  const json measures = json::parse(spectrum.out);
+  const double geometric_mean =
+      measures["geometric_mean_g"][0].get<double>() * 0.4 / measures["rotd50_g"][0].get<double>();
+  for (const double scale : {1.0, 2.0}) {
+    const auto& row = cases.at(fmt::format("column/pair/x{:g}", scale));
+    EXPECT_EQ(row[at("status")], "completed");
+    const double intensity = std::stod(row[at("intensity")]);
+    std::printf("  x%g: geometric mean Sa %.15g g (pound spectrum %.15g g)\n", scale, intensity,
+                scale * geometric_mean);
+    EXPECT_NEAR(intensity, scale * geometric_mean, 1e-12 * geometric_mean);
+  }
+  EXPECT_EQ(cases.at("two_sdof_girders/pair/x1")[at("status")], "input_error");
+  EXPECT_TRUE(
+      testing::contains(read_text(path("batch") / "batch_summary.csv"), "needs a 3-D scene"));
 }
 
 }  // namespace

@@ -69,6 +69,7 @@ TEST(SetReader, ReadsModelsRecordsScalesAndLimits) {
   EXPECT_EQ(set.intensity.type, builder::IntensityKind::sa);
   EXPECT_EQ(set.intensity.period, 1.0);
   EXPECT_EQ(set.intensity.damping, 0.05);
+  EXPECT_EQ(set.intensity.pair, builder::PairMeasure::rot_d50);  // for pairs, by default
   ASSERT_EQ(set.limits.size(), 2u);
   EXPECT_FALSE(set.histories);
 
@@ -139,6 +140,18 @@ INSTANTIATE_TEST_SUITE_P(
                "/records/1/units"},
         BadSet{"TwoScales", R"([{"op": "add", "path": "/records/1/scale/pga", "value": 0.3}])",
                "give exactly one of 'factor', 'pga'"},
+        BadSet{"PairFileOfAFolder",
+               R"([{"op": "add", "path": "/records/0/pair",
+                    "value": {"record": "../ground_motions/synthetic_firm_01.AT2"}}])",
+               "/records/0/pair/record: a pair's second file belongs to one record"},
+        BadSet{"PairWithNothing", R"([{"op": "add", "path": "/records/1/pair", "value": {}}])",
+               "/records/1/pair: give the second component's 'record'"},
+        BadSet{"MissingPairFile",
+               R"([{"op": "add", "path": "/records/1/pair", "value": {"record": "nowhere.AT2"}}])",
+               "/records/1/pair/record: record"},
+        BadSet{"UnknownPairMeasure",
+               R"([{"op": "add", "path": "/intensity_measure/pair", "value": "mean"}])",
+               "/intensity_measure/pair: expected one of 'rotd50', 'geometric_mean'"},
         BadSet{"NegativeScale", R"([{"op": "replace", "path": "/scales/1", "value": -1}])",
                "/scales/1: must be > 0"},
         BadSet{"RepeatedScale", R"([{"op": "replace", "path": "/scales/1", "value": 0.5}])",
