@@ -38,6 +38,7 @@ struct DriftMonitor {
   std::optional<Curvature> curvature;
   // What carries the shear (DriftMonitorSpec): an element (end i at the bottom) or a link.
   std::optional<Index> base_element, shear_link;
+  int direction = 0;  // of the drift and the top's acceleration: a translation (model/direction)
 };
 
 struct JointMonitor {

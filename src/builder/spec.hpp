@@ -354,6 +354,7 @@ struct DriftMonitorSpec {
   // What carries its shear: the member's lowest element (its end i forces: base shear V_i and,
   // for a beam, base moment M_i), or a link whose force is the storey shear.
   std::optional<std::string> base_element, shear_link;
+  int direction = 0;  // the drift's: 0 x, 1 y (3-D scenes)
 };
 struct JointMonitorSpec {
   std::string id;

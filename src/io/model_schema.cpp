@@ -941,6 +941,9 @@ const Fields<DriftMonitorSpec>& drift_monitor_fields() {
       required("bottom", &DriftMonitorSpec::bottom, Text{true}, "id of the lower node"),
       required("top", &DriftMonitorSpec::top, Text{true}, "id of the upper node"),
       required("height", &DriftMonitorSpec::height, Number<>{positive}, "for the drift ratio [L]"),
+      optional("direction", &DriftMonitorSpec::direction, Choice<int>{{{"x", 0}, {"y", 1}}},
+               "of the drift and the top's absolute acceleration")
+          .in_space(),
       renamed_displacement<DriftMonitorSpec>("yield_displacement", "yield_drift",
                                              &DriftMonitorSpec::yield_drift,
                                              "the drift at yield, for the displacement ductility"),

@@ -46,8 +46,8 @@ struct CaseSummary {
   std::optional<double> max_ductility;
   std::optional<double> max_residual_drift_ratio;  // |residual drift| over height, at the end
   std::optional<double> energy_balance_error;      // worst over the run
-  // Absolute accelerations along x: the largest at a drift monitor's top (floors, pier tops) and
-  // at a joint monitor's girder end (the deck) [L/T^2].
+  // Absolute accelerations along x (a drift monitor's own direction): the largest at a drift
+  // monitor's top (floors, pier tops) and at a joint monitor's girder end (the deck) [L/T^2].
   std::optional<double> max_top_acceleration;
   std::optional<double> max_deck_acceleration;
   std::optional<double> run_time_s;  // of the solve; the one column that varies run to run

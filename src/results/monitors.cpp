@@ -13,13 +13,13 @@ void DriftMonitors::record(const integrators::State& state) {
     const Where& w = storeys_[k];
     DriftPeak& p = peaks_[k];
     const double signed_drift =
-        value_at(state.displacement, w.top_x) - value_at(state.displacement, w.bottom_x);
+        value_at(state.displacement, w.top) - value_at(state.displacement, w.bottom);
     p.residual_drift = signed_drift;
     if (std::abs(signed_drift) > p.peak_drift) {
       p.peak_drift = std::abs(signed_drift);
       p.time = state.time;
     }
-    const double acceleration = std::abs(ground_.absolute(state, w.top_x, w.top, 0));
+    const double acceleration = std::abs(ground_.absolute(state, w.top, w.top_node, w.direction));
     if (acceleration > p.peak_acceleration) {
       p.peak_acceleration = acceleration;
       p.acceleration_time = state.time;

@@ -13,10 +13,10 @@
 namespace pound::results {
 
 struct DriftPeak {
-  double peak_drift = 0.0;      // max |u_top - u_bottom| along x [L]
+  double peak_drift = 0.0;      // max |u_top - u_bottom| along its direction (x unless told) [L]
   double time = 0.0;            // when
   double residual_drift = 0.0;  // u_top - u_bottom at the end of the run [L]
-  // The top node's absolute acceleration along x (the floor's, the pier top's) [L/T^2]
+  // The top node's absolute acceleration along the drift (the floor's, the pier top's) [L/T^2]
   double peak_acceleration = 0.0;
   double acceleration_time = 0.0;
 };
@@ -24,8 +24,9 @@ struct DriftPeak {
 class DriftMonitors : public Observer {
  public:
   struct Where {
-    Index bottom_x, top_x;  // equations, -1 where fixed
-    Index top;              // node
+    Index bottom, top;  // equations along the drift's direction, -1 where fixed
+    Index top_node;
+    int direction = 0;  // of the drift (model/direction.hpp)
   };
   DriftMonitors(std::vector<Where> storeys, GroundAcceleration& ground)
       : storeys_(std::move(storeys)), ground_(ground), peaks_(storeys_.size()) {}

@@ -128,7 +128,8 @@ std::vector<DriftMonitors::Where> drift_places(const builder::BuiltModel& built,
                                                const model::DofMap& dofs) {
   std::vector<DriftMonitors::Where> places;
   for (const builder::DriftMonitor& m : built.drift_monitors)
-    places.push_back({dofs.equation(m.bottom, 0), dofs.equation(m.top, 0), m.top});
+    places.push_back({dofs.equation(m.bottom, m.direction), dofs.equation(m.top, m.direction),
+                      m.top, m.direction});
   return places;
 }
 

@@ -120,6 +120,31 @@ TEST_F(PairExcitation, TurningThePairTurnsTheResponseOfASymmetricColumn) {
   EXPECT_GT(peak, 1e-3);
 }
 
+// Drift monitors of a 3-D scene measure along x or y ("direction"): a column's drifts are its
+// top's peak displacements along each (its base is fixed).
+TEST_F(PairExcitation, DriftMonitorsMeasureAlongTheirDirection) {
+  json model = column(37.0, false);
+  model["monitors"]["drifts"] = {
+      {{"id", "along_x"}, {"bottom", "base"}, {"top", "top"}, {"height", 5.0}},
+      {{"id", "along_y"}, {"bottom", "base"}, {"top", "top"}, {"height", 5.0}, {"direction", "y"}}};
+  ASSERT_EQ(run(model, "drifts").exit_code, 0);
+  const json storeys = json::parse(read_text(path("drifts") / "summary.json"))["storeys"];
+  double peak_x = 0.0, peak_y = 0.0;
+  for (const auto& [x, y] : top_motion("drifts")) {
+    peak_x = std::max(peak_x, std::abs(x));
+    peak_y = std::max(peak_y, std::abs(y));
+  }
+  std::printf("  drifts %.6g (x) and %.6g (y) m\n", peak_x, peak_y);
+  EXPECT_EQ(storeys[0]["peak_drift"].get<double>(), peak_x);
+  EXPECT_EQ(storeys[1]["peak_drift"].get<double>(), peak_y);
+  EXPECT_GT(std::abs(peak_x - peak_y), 0.01 * peak_x);  // stiffer about one axis
+  model["dimension"] = 3;
+  model["monitors"]["drifts"][0]["direction"] = "z";
+  const testing::Outcome bad = run(model, "bad");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_TRUE(testing::contains(bad.err, "/monitors/drifts/0/direction")) << bad.err;
+}
+
 // A pair scaled to an Sa target has that RotD50 at the period (pound spectrum computes it apart),
 // and its components keep their ratio: one factor for both.
 TEST_F(PairExcitation, TargetScalesThePairToItsRotD50) {
