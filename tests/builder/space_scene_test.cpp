@@ -5,11 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
+#include "assembly/modal_analysis.hpp"
 #include "assembly/structural_system.hpp"
 #include "builder/build.hpp"
 #include "core/errors.hpp"
@@ -201,6 +204,67 @@ TEST(SpaceScene, NodalMassAndRotaryInertiaFillTheirDirections) {
   model["masses"][0]["rotary_inertia"] = 4.0;
   const BuiltModel same = build(io::parse_model(model.dump(), "mass.json"));
   EXPECT_EQ(same.model.masses[0].rotary_inertia, (model::Coordinates{4.0, 4.0, 4.0}));
+}
+
+// A one-storey building whose floor is rigid in its plane: one node at the centre of mass (mass
+// m, rotary inertia J about z) with z, rx and ry held, so it carries three DOFs, and four columns
+// reaching it through rigid offsets from the centre to their tops (a rigid diaphragm, as SAP2000
+// users model one with rigid links). The columns on the right are stiffer, so the stiffness
+// centre sits e_x from the centre of mass: x sways alone, y and the twist couple. The plan model's
+// closed form (Chopra, "Dynamics of Structures", 9.5): K_x = K_y = sum k, K_y0 = sum k x_i,
+// K_00 = sum k (x_i^2 + y_i^2) + sum G J / h, with k = 12 E I / h^3 of a column fixed at both
+// ends; w_x^2 = K_x / m and, for y and the twist,
+// w^2 = (K_y / m + K_00 / J) / 2 -/+ sqrt((K_y / m - K_00 / J)^2 / 4 + K_y0^2 / (m J)).
+TEST(SpaceScene, EccentricOneStoreyFloorHasThePlanModelsModes) {
+  const double height = 3.5, half_length = 6.0, half_width = 4.0;
+  const double mass = 4.0e5, inertia_left = 2.0e-3, inertia_right = 6.0e-3;
+  const double polar = mass * (4 * half_length * half_length + 4 * half_width * half_width) / 12.0;
+  json model = {
+      {"dimension", 3},
+      {"materials",
+       {{{"id", "c"}, {"youngs_modulus", kE}, {"density", 0.0}, {"poisson_ratio", kNu}}}},
+      {"nodes", {{{"id", "floor"}, {"x", 0.0}, {"y", 0.0}, {"z", height}}}},
+      {"masses", {{{"node", "floor"}, {"mass", mass}, {"rotary_inertia", {0.0, 0.0, polar}}}}},
+      {"supports", {{{"node", "floor"}, {"fix", {"z", "rx", "ry"}}}}},
+      {"analysis", {{"time_step", 0.01}, {"duration", 0.1}}}};
+  double k_sum = 0.0, k_x = 0.0, k_polar = 0.0;
+  for (int c = 0; c < 4; ++c) {
+    const double x = c < 2 ? -half_length : half_length, y = c % 2 == 0 ? -half_width : half_width;
+    const double inertia = c < 2 ? inertia_left : inertia_right, torsion = 2.0 * inertia;
+    const std::string base = fmt::format("base{}", c);
+    model["nodes"].push_back({{"id", base}, {"x", x}, {"y", y}, {"z", 0.0}});
+    model["supports"].push_back({{"node", base}, {"fix", {"x", "y", "z", "rx", "ry", "rz"}}});
+    model["elements"].push_back({{"id", fmt::format("column{}", c)},
+                                 {"type", "beam"},
+                                 {"nodes", {base, "floor"}},
+                                 {"material", "c"},
+                                 {"area", 0.16},
+                                 {"inertia_y", inertia},
+                                 {"inertia_z", inertia},
+                                 {"torsion", torsion},
+                                 {"orientation", {1.0, 0.0, 0.0}},
+                                 {"rigid_offsets", {{0.0, 0.0, 0.0}, {x, y, 0.0}}}});
+    const double k = 12.0 * kE * inertia / (height * height * height);
+    k_sum += k;
+    k_x += k * x;
+    k_polar += k * (x * x + y * y) + kG * torsion / height;
+  }
+  const BuiltModel built = build(io::parse_model(model.dump(), "storey.json"));
+  const assembly::StructuralSystem system(built.model);
+  EXPECT_EQ(system.size(), 3);  // x, y and the twist of the floor
+  const Vector omega_squared = assembly::modal_analysis(system).omega_squared;
+  const double mean = (k_sum / mass + k_polar / polar) / 2.0;
+  const double split =
+      std::sqrt(std::pow((k_sum / mass - k_polar / polar) / 2.0, 2) + k_x * k_x / (mass * polar));
+  std::array<double, 3> expected{k_sum / mass, mean - split, mean + split};
+  std::sort(expected.begin(), expected.end());
+  double worst = 0.0;
+  for (int k = 0; k < 3; ++k)
+    worst = std::max(worst, std::abs(omega_squared[k] / expected[static_cast<std::size_t>(k)] - 1));
+  std::printf("  periods %.5f %.5f %.5f s (eccentricity %.3f m): largest error %.2e\n",
+              2 * M_PI / std::sqrt(expected[2]), 2 * M_PI / std::sqrt(expected[1]),
+              2 * M_PI / std::sqrt(expected[0]), k_x / k_sum, worst);
+  EXPECT_LT(worst, 1e-10);
 }
 
 std::optional<InputError> error_of(const json& model) {
