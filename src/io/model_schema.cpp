@@ -92,7 +92,9 @@ const Fields<NodeSpec>& node_fields() {
   static const Fields<NodeSpec> fields = {
       unique_id(&NodeSpec::id, "nodes", "the node's name"),
       required("x", &NodeSpec::x, Number<>{}, "coordinate [L]"),
-      optional("y", &NodeSpec::y, Number<>{}, "coordinate [L]").across().always_written(),
+      optional("y", &NodeSpec::y, Number<>{}, "coordinate [L]")
+          .in_dimensions(2, 3)
+          .always_written(),
       optional("z", &NodeSpec::z, Number<>{}, "coordinate [L]").in_space().always_written(),
   };
   return fields;
@@ -314,7 +316,7 @@ Fields<NodalVectorSpec> nodal_vector_fields(const std::string& quantity) {
   return {
       required("node", &NodalVectorSpec::node, Text{true}, "id of the node"),
       optional("x", &NodalVectorSpec::x, Number<>{}, quantity).always_written(),
-      optional("y", &NodalVectorSpec::y, Number<>{}, quantity).across().always_written(),
+      optional("y", &NodalVectorSpec::y, Number<>{}, quantity).in_dimensions(2, 3).always_written(),
       optional("z", &NodalVectorSpec::z, Number<>{}, quantity).in_space().always_written(),
   };
 }

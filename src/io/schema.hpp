@@ -10,7 +10,7 @@
 //   Fields<NodeSpec> fields = {
 //       unique_id(&NodeSpec::id, "nodes", "the node's name"),
 //       required("x", &NodeSpec::x, Number<>{}, "coordinate [L]"),
-//       optional("y", &NodeSpec::y, Number<>{}, "coordinate [L]").in_plane().always_written(),
+//       optional("y", &NodeSpec::y, Number<>{}, "coordinate [L]").in_dimensions(2, 3),
 //   };
 //
 // A rule between fields (exactly one of, needs, excludes) is an entry of the list too: it runs
@@ -95,7 +95,6 @@ struct Field {
     return std::move(*this);
   }
   Field in_plane() && { return std::move(*this).in_dimensions(2, 2); }
-  Field across() && { return std::move(*this).in_dimensions(2, 3); }  // y: plane and space
   Field in_space() && { return std::move(*this).in_dimensions(3, 3); }
   // Written at its default value too (what a reader of the file looks for first).
   Field always_written() && {
