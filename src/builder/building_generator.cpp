@@ -107,7 +107,7 @@ std::vector<std::string> add_column_cuts(const Building& building, std::size_t s
     if (h > bottom * (1 + 1e-12) && h < upper * (1 - 1e-12)) {
       const std::string cut = cut_node_id(building, s, h);
       out.nodes.push_back({cut, building.x, h});
-      out.supports.push_back({cut, false, true, false});
+      out.supports.push_back({cut, {false, true}});
       chain.push_back(cut);
     }
   chain.push_back(floor_node_id(building, s + 1));
@@ -167,7 +167,7 @@ void add_storey(const Building& building, std::size_t s, const std::vector<doubl
   const std::string floor = floor_node_id(building, s + 1);
   out.nodes.push_back({floor, building.x, building.heights[s + 1]});
   // A rigid floor: it sways, it neither rises nor turns.
-  out.supports.push_back({floor, false, true, true});
+  out.supports.push_back({floor, {false, true, true}});
   const std::optional<double> mass_damping =
       building.rayleigh ? std::optional<double>((*building.rayleigh)[0]) : std::nullopt;
   out.masses.push_back({floor, storey.mass, {}, mass_damping});
@@ -200,7 +200,7 @@ void add_building(const Building& building, const std::vector<double>& contacts,
   out.materials.push_back({building.material, 1.0, 0.0});
   const std::string base = floor_node_id(building, 0);
   out.nodes.push_back({base, building.x, 0.0});
-  out.supports.push_back({base, true, true, true});
+  out.supports.push_back({base, {true, true, true}});
   for (std::size_t s = 0; s < building.spec.storeys.size(); ++s)
     add_storey(building, s, contacts, out);
 }

@@ -197,7 +197,7 @@ void add_block(const BlockSpec& block, ModelSpec& out) {
 void add_surface(const SurfaceSpec& surface, ModelSpec& out) {
   const std::string path = fmt::format("/surfaces/{}", surface.index);
   out.nodes.push_back({surface.id, surface.point[0], surface.point[1]});
-  out.supports.push_back({surface.id, true, true, false});
+  out.supports.push_back({surface.id, {true, true}});
   const std::map<std::string, std::size_t> at = node_positions(out);
   const std::vector<std::string> ids = resolve_nodes(out, at, surface.nodes, path + "/nodes");
   for (std::size_t k = 0; k < ids.size(); ++k) {

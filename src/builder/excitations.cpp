@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <ranges>
 #include <string>
 
 #include "model/record_pair.hpp"
@@ -73,12 +72,12 @@ void add_component(const ExcitationPlace& place, model::GroundMotion motion,
     // Only a support can be moved: every direction the record acts in must be fixed there.
     bool held = false;
     for (const model::Support& support : model.supports)
-      if (support.node == node)
-        held = std::ranges::all_of(std::views::iota(std::size_t{0}, direction.size()),
-                                   [&](std::size_t axis) {
-                                     // A translation's direction index is its axis.
-                                     return direction[axis] == 0.0 || support.fixed[axis];
-                                   });
+      if (support.node == node) {
+        held = true;
+        // A translation's direction index is its axis.
+        for (std::size_t axis = 0; axis < direction.size(); ++axis)
+          held = held && (direction[axis] == 0.0 || support.fixed[axis]);
+      }
     if (!held)
       place.fail(where, fmt::format("node '{}' is not a support fixed along the excitation's "
                                     "direction",
