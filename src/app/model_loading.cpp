@@ -130,6 +130,14 @@ void read_records_and_build(const std::string& path, bool first_as_given, Loaded
 
 namespace {
 
+// A record `into` taking the place of the excitation `was`: where that was a pair, a single
+// record acts along the pair's first component (a pair brought by `into` ignores the direction).
+void take_direction_of(const builder::ExcitationSpec& was, builder::ExcitationSpec& into) {
+  if (!was.pair) return;
+  const model::Coordinates along = builder::pair_direction(*was.pair, 0);
+  into.direction.assign(along.begin(), along.end());
+}
+
 // The first excitation reads `motion` instead; the model's direction, supports and (unless the
 // override scales) scaling stay.
 void override_motion(const MotionOverride& motion, builder::ModelSpec& spec) {
@@ -137,11 +145,8 @@ void override_motion(const MotionOverride& motion, builder::ModelSpec& spec) {
   builder::ExcitationSpec& first = spec.excitations.front();
   first.record = motion.path;
   first.format = "auto";
-  if (first.pair) {  // one record replaces the pair, along its first component
-    const model::Coordinates along = builder::pair_direction(*first.pair, 0);
-    first.direction.assign(along.begin(), along.end());
-    first.pair.reset();
-  }
+  take_direction_of(first, first);
+  first.pair.reset();  // one record replaces the pair
   if (motion.units) first.units = *motion.units;
   first.time_column = motion.time_column;
   first.column = motion.column.value_or(motion.time_column ? 2 : 1);
@@ -192,10 +197,7 @@ LoadedModel load_model_with_record(const std::string& path, const builder::Excit
   replaced.supports = first.supports;
   replaced.apparent_velocity = first.apparent_velocity;
   replaced.wave_origin = first.wave_origin;
-  if (first.pair) {  // one record replaces the pair, along its first component
-    const model::Coordinates along = builder::pair_direction(*first.pair, 0);
-    replaced.direction.assign(along.begin(), along.end());
-  }
+  take_direction_of(first, replaced);
   first = replaced;
   loaded.first_record_replaced_by = "the batch case";
   read_records_and_build(path, true, loaded);

@@ -129,13 +129,16 @@ Solved solve(PreparedRun& run) {
 struct AppliedRecord {
   double factor = 1.0, pga = 0.0, pga_g = 0.0;
   std::string replaced_by;
+  double pair_pga = 0.0;  // a pair's second component's, scaled by the same factor
 };
 
 AppliedRecord applied_record(const LoadedModel& loaded, std::size_t k) {
   const double factor = loaded.built.excitation_factors.at(k);
   const double pga = factor * loaded.records[k].peak();
+  const auto& second = loaded.second_components.at(k);
   return {factor, pga, pga / loaded.spec.units.gravity(),
-          k == 0 ? loaded.first_record_replaced_by : std::string()};
+          k == 0 ? loaded.first_record_replaced_by : std::string(),
+          second ? factor * second->motion.peak() : 0.0};
 }
 
 // The case's record as applied, in g: its peak and the set's intensity measure.
@@ -223,17 +226,15 @@ std::vector<io::Document> excitation_documents(const LoadedModel& loaded) {
         .set("pga", applied.pga)
         .set("pga_g", applied.pga_g);
     if (!applied.replaced_by.empty()) item.set("replaced_by", applied.replaced_by);
-    if (const auto& second = loaded.second_components.at(k)) {
+    if (const auto& second = loaded.second_components.at(k))
       // The pair's second component, scaled by the same factor; targets are the pair's RotD50.
-      const double pga = applied.factor * second->motion.peak();
       item.set("pair", io::Document()
                            .set("record", second->path)
                            .set("sha1", second->source.sha1)
                            .set("format", second->source.format)
                            .set("angle_deg", loaded.spec.excitations[k].pair->angle)
-                           .set("pga", pga)
-                           .set("pga_g", pga / loaded.spec.units.gravity()));
-    }
+                           .set("pga", applied.pair_pga)
+                           .set("pga_g", applied.pair_pga / loaded.spec.units.gravity()));
     items.push_back(item);
   }
   return items;
@@ -259,7 +260,7 @@ std::string excitation_lines(const LoadedModel& loaded) {
     if (const auto& second = loaded.second_components.at(k))
       text += fmt::format("  paired with {} (sha1 {}) at {:g} deg, PGA {:.4g} g\n", second->path,
                           second->source.sha1.substr(0, 12), loaded.spec.excitations[k].pair->angle,
-                          applied.factor * second->motion.peak() / loaded.spec.units.gravity());
+                          applied.pair_pga / loaded.spec.units.gravity());
   }
   return text;
 }

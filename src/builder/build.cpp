@@ -254,10 +254,8 @@ std::optional<RodPairSpec> sole_rod_pair(const ModelSpec& user) {
 }
 
 model::Gravity gravity(const GravitySpec& spec, const UnitsSpec& units) {
-  model::Gravity gravity{.direction = {},
+  model::Gravity gravity{.direction = model::to_coordinates(spec.direction),
                          .acceleration = spec.acceleration.value_or(units.gravity())};
-  std::copy_n(spec.direction.begin(), std::min(spec.direction.size(), gravity.direction.size()),
-              gravity.direction.begin());
   if (spec.p_delta == PDeltaKind::chord) gravity.p_delta = model::GeometricStiffness::chord;
   if (spec.p_delta == PDeltaKind::consistent)
     gravity.p_delta = model::GeometricStiffness::consistent;

@@ -16,8 +16,11 @@ struct ExcitationPlace {
   const ExcitationSpec& spec;
   std::size_t k;
 
+  std::string path(const std::string& where) const {
+    return fmt::format("/excitations/{}{}", k, where);
+  }
   [[noreturn]] void fail(const std::string& where, const std::string& what) const {
-    throw InputError(resolver.spec().source, fmt::format("/excitations/{}{}", k, where), what);
+    throw InputError(resolver.spec().source, path(where), what);
   }
 };
 
@@ -67,8 +70,7 @@ void add_component(const ExcitationPlace& place, model::GroundMotion motion,
   model::SupportExcitation moving{std::move(motion), direction, {}};
   for (std::size_t s = 0; s < e.supports.size(); ++s) {
     const std::string where = fmt::format("/supports/{}", s);
-    const Index node =
-        place.resolver.node(e.supports[s], fmt::format("/excitations/{}{}", place.k, where));
+    const Index node = place.resolver.node(e.supports[s], place.path(where));
     // Only a support can be moved: every direction the record acts in must be fixed there.
     bool held = false;
     for (const model::Support& support : model.supports)
@@ -88,13 +90,6 @@ void add_component(const ExcitationPlace& place, model::GroundMotion motion,
     moving.supports.emplace_back(node, delay);
   }
   model.support_excitations.push_back(std::move(moving));
-}
-
-model::Coordinates direction_of(const ExcitationSpec& e) {
-  model::Coordinates direction{};
-  std::copy_n(e.direction.begin(), std::min(e.direction.size(), direction.size()),
-              direction.begin());
-  return direction;
 }
 
 }  // namespace
@@ -128,7 +123,7 @@ std::vector<double> resolve_excitations(
       model::GroundMotion motion = motions[k];
       model::scale(motion, factor);
       factors.push_back(factor);
-      add_component(place, std::move(motion), direction_of(e), model);
+      add_component(place, std::move(motion), model::to_coordinates(e.direction), model);
       continue;
     }
     model::GroundMotionPair pair;

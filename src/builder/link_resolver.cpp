@@ -60,9 +60,7 @@ void resolve_segment(const LinkPlace& place, model::Link& link) {
 // The given axis, or the unit vector from node i to node j.
 void resolve_axis(const LinkPlace& place, model::Link& link) {
   if (place.spec.axis) {
-    const auto& axis = *place.spec.axis;
-    link.axis = {};
-    std::copy_n(axis.begin(), std::min(axis.size(), link.axis.size()), link.axis.begin());
+    link.axis = model::to_coordinates(*place.spec.axis);
     return;
   }
   if (place.spec.segment_end) return;

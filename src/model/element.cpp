@@ -1,5 +1,6 @@
 #include "model/element.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pound::model {
@@ -12,6 +13,13 @@ std::vector<ElementDof> Element::dofs() const {
   for (Index node : nodes_)
     for (int direction : directions()) dofs.push_back({node, direction});
   return dofs;
+}
+
+Coordinates to_coordinates(std::span<const double> components) {
+  Coordinates coordinates{};
+  std::copy_n(components.begin(), std::min(components.size(), coordinates.size()),
+              coordinates.begin());
+  return coordinates;
 }
 
 double distance(const Coordinates& a, const Coordinates& b, int dimension) {

@@ -23,6 +23,9 @@ namespace pound::model {
 
 // (x, y, z): a scene uses its first `dimension` entries; the others stay 0.
 using Coordinates = std::array<double, 3>;
+// A vector of a scene's dimension ([x], [x, y] or [x, y, z], as model files give them) as
+// Coordinates; the entries it lacks are 0.
+Coordinates to_coordinates(std::span<const double> components);
 
 // Rayleigh damping C = a0 M + a1 K of the linear elements (links are never part of it).
 struct RayleighDamping {
