@@ -454,7 +454,9 @@ std::optional<JsonValue> JsonObject::find(std::string_view key) {
 JsonValue JsonObject::at(std::string_view key) {
   if (std::optional<JsonValue> value = find(key)) return *value;
   for (const auto& field : value_.json().items()) {
-    if (!is_known(field.key()) && closest_name(field.key(), {std::string(key)}))
+    const bool schema_name =
+        std::find(expected_.begin(), expected_.end(), field.key()) != expected_.end();
+    if (!is_known(field.key()) && !schema_name && closest_name(field.key(), {std::string(key)}))
       throw InputError(value_.file(), child_path(path(), field.key()),
                        fmt::format("unknown field (did you mean '{}'?)", key));
   }

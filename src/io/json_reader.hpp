@@ -151,6 +151,10 @@ class JsonObject {
   [[noreturn]] void fail(const std::string& what) const { value_.fail(what); }
 
   bool has(std::string_view key);
+  // `key` is a field of this object's schema, read later or not at all (another variant's): a
+  // missing required field is not reported as a typo of it. finish() still rejects it unless
+  // asked for.
+  void expect(std::string_view key) { expected_.emplace_back(key); }
   std::optional<JsonValue> find(std::string_view key);
   // A required field. When it is missing but a field not asked for is a near miss of it, that
   // typo is reported instead ("/e/0/matrial: unknown field (did you mean 'material'?)").
@@ -190,6 +194,8 @@ class JsonObject {
 
   JsonValue value_;
   std::vector<std::string> known_;
+  // Names of this object's schema not asked for yet: never taken for a typo of another field.
+  std::vector<std::string> expected_;
 };
 
 // Names that must be unique within one list (ids, file names); a repeat fails naming both places.

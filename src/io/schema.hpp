@@ -114,6 +114,8 @@ using Fields = std::vector<Field<Spec>>;
 // Reads the fields of `fields` from `object` into `spec`, in order (no check for unknown ones).
 template <class Spec>
 void read_fields(JsonObject& object, const Fields<Spec>& fields, Spec& spec, Context& context) {
+  for (const Field<Spec>& field : fields)
+    if (!field.key.empty()) object.expect(field.key);
   for (const Field<Spec>& field : fields) {
     if (field.applies && !field.applies(spec)) continue;
     if (context.dimension < field.lowest_dimension || context.dimension > field.highest_dimension) {

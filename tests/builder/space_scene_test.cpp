@@ -297,6 +297,10 @@ TEST(SpaceScene, MeaninglessSpaceInputIsRefusedWithItsPath) {
   json no_orientation = good;
   no_orientation["elements"][0].erase("orientation");
   expect_refused(no_orientation, "/elements/0/orientation", "required");
+  // A missing section constant is missing, not a typo of its sibling (inertia_z is a field too).
+  json no_inertia_y = good;
+  no_inertia_y["elements"][0].erase("inertia_y");
+  expect_refused(no_inertia_y, "/elements/0/inertia_y", "required field is missing");
   json plane_inertia = good;
   plane_inertia["elements"][0]["inertia"] = 1e-5;
   expect_refused(plane_inertia, "/elements/0/inertia", "only allowed when dimension is 2");
