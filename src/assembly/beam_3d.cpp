@@ -64,17 +64,23 @@ Beam3d::Beam3d(std::string id, const std::array<End, 2>& ends, const Point3& ori
       section_(section),
       consistent_mass_(consistent_mass) {
   const Point3 axis = (ends[1].position + ends[1].offset) - (ends[0].position + ends[0].offset);
-  length_ = axis.norm();
-  if (!(length_ > 0.0) || !std::isfinite(length_))
+  length_ = std::hypot(axis.x(), axis.y(), axis.z());  // no overflow before the length does
+  if (!(length_ > 0.0))
     throw std::invalid_argument("the beam's ends (its nodes plus their offsets) coincide");
+  if (!std::isfinite(length_))
+    throw std::invalid_argument("the beam is longer than the number range holds");
   const Point3 x = axis / length_;
-  const Point3 y = orientation.cross(x);
-  // A vector nearly along the beam fixes no plane: its cross product is all round-off.
-  if (!(y.norm() > 1e-6 * orientation.norm()))
+  // Only its direction counts: scaled to a largest component of 1, no size overflows below.
+  const double largest = orientation.cwiseAbs().maxCoeff();
+  if (!(largest > 0.0))
     throw std::invalid_argument(
-        orientation.norm() > 0.0
-            ? "the orientation vector is parallel to the beam: it must fix the local x'-z' plane"
-            : "the orientation vector is zero: it must fix the local x'-z' plane");
+        "the orientation vector is zero: it must fix the local x'-z' plane");
+  const Point3 v = orientation / largest;
+  const Point3 y = v.cross(x);
+  // A vector nearly along the beam fixes no plane: its cross product is all round-off.
+  if (!(y.norm() > 1e-6 * v.norm()))
+    throw std::invalid_argument(
+        "the orientation vector is parallel to the beam: it must fix the local x'-z' plane");
   axes_.row(0) = x.transpose();
   axes_.row(1) = y.normalized().transpose();
   axes_.row(2) = x.cross(y.normalized()).transpose();

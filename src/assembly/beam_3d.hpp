@@ -58,8 +58,8 @@ class Beam3d final : public model::Element {
     Point3 position = Point3::Zero();  // of the node
     Point3 offset = Point3::Zero();    // rigid, from the node to the flexible part's end
   };
-  // Throws std::invalid_argument when the flexible part has no length, or when `orientation` is
-  // zero or parallel to it (it must fix the x'-z' plane).
+  // Throws std::invalid_argument when the flexible part has no length or an infinite one, or when
+  // `orientation` is zero or parallel to it (it must fix the x'-z' plane).
   Beam3d(std::string id, const std::array<End, 2>& ends, const Point3& orientation,
          const Section& section, bool consistent_mass,
          std::optional<model::RayleighDamping> damping);

@@ -102,8 +102,10 @@ std::shared_ptr<const model::Element> make_beam_3d(const Scene& scene, const Ele
         element.consistent_mass, damping);
   } catch (const std::invalid_argument& error) {
     // Its flexible part has no length (offsets meeting), or the orientation is along it.
-    const bool ends_meet = std::string_view(error.what()).starts_with("the beam's ends");
-    scene.fail(path + (ends_meet ? "/rigid_offsets" : "/orientation"),
+    const std::string_view what = error.what();
+    scene.fail(path + (what.starts_with("the beam's ends")      ? "/rigid_offsets"
+                       : what.starts_with("the beam is longer") ? "/nodes"
+                                                                : "/orientation"),
                fmt::format("beam '{}': {}", element.id, error.what()));
   }
 }

@@ -291,6 +291,9 @@ TEST(SpaceScene, MeaninglessSpaceInputIsRefusedWithItsPath) {
   json parallel = good;
   parallel["elements"][0]["orientation"] = {2.0, 0.0, 0.0};
   expect_refused(parallel, "/elements/0/orientation", "parallel to the beam");
+  json huge_orientation = good;  // only its direction counts: no overflow
+  huge_orientation["elements"][0]["orientation"] = {0.0, 1e308, 1e308};
+  EXPECT_FALSE(error_of(huge_orientation));
   json zero = good;
   zero["elements"][0]["orientation"] = {0.0, 0.0, 0.0};
   expect_refused(zero, "/elements/0/orientation", "must not be the zero vector");
