@@ -259,16 +259,17 @@ Vector uniform_influence(const model::Model& model, const model::DofMap& dofs,
 }
 
 // The directions of a link's rows over a node's DOFs: the axis, or the rotation of a rotational
-// link (about z in a plane, about its axis in 3-D); with friction, the tangent (the axis turned
-// by +90 degrees, plane scenes).
+// link (about z in a plane, about its axis in 3-D); with friction, the tangents of its contact
+// plane (model::contact_tangents).
 NodeVector normal_direction(const model::Link& link, int dimension) {
   if (link.rotational)
     return model::over_directions(dimension == 3 ? link.axis : model::Coordinates{0.0, 0.0, 1.0},
                                   true, dimension);
   return model::over_directions(link.axis, false, dimension);
 }
-NodeVector tangential_direction(const model::Link& link, int dimension) {
-  return model::over_directions({-link.axis[1], link.axis[0], 0.0}, false, dimension);
+std::vector<model::Coordinates> tangents(const model::Link& link, int dimension) {
+  return link.friction ? model::contact_tangents(link.axis, dimension)
+                       : std::vector<model::Coordinates>{};
 }
 
 // Row of a direction d: +d at node i, -d at node j (fixed DOFs dropped); for a point inside a
@@ -308,10 +309,14 @@ integrators::LinkSet::Link link_entry(const model::DofMap& dofs, const model::Li
     entry.law = std::move(law);
     return entry;
   }
-  entry.tangential_row = link_row(dofs, link, tangential_direction(link, dofs.dimension()));
+  const std::vector<model::Coordinates> along = tangents(link, dofs.dimension());
+  for (const model::Coordinates& tangent : along)
+    entry.tangential_rows.push_back(
+        link_row(dofs, link, model::over_directions(tangent, false, dofs.dimension())));
   const links::StickPenalty stick = stick_penalty(*law, *link.friction);
   entry.friction = std::make_unique<links::CoulombFriction>(
-      std::move(law), link.friction->coefficient, stick, link.friction->radius);
+      std::move(law), link.friction->coefficient, stick, link.friction->radius,
+      static_cast<int>(along.size()));
   return entry;
 }
 
@@ -327,9 +332,8 @@ std::vector<LinkRowGeometry> link_row_geometry(const model::Model& model) {
   for (const model::Link& link : model.links) {
     rows.push_back({&link, normal_direction(link, model.dimension),
                     link.rotational ? model::Coordinates{} : link.axis});
-    if (link.friction)
-      rows.push_back(
-          {&link, tangential_direction(link, model.dimension), {-link.axis[1], link.axis[0], 0.0}});
+    for (const model::Coordinates& tangent : tangents(link, model.dimension))
+      rows.push_back({&link, model::over_directions(tangent, false, model.dimension), tangent});
   }
   return rows;
 }

@@ -66,7 +66,7 @@ void check_implicit_hard_contacts(const model::Model& model, assembly::Structura
     const auto row = static_cast<std::size_t>(links.row(k));
     if (!links.law(k).is_hard_contact() || impulsive[row]) continue;
     const model::DofMap& dofs = system.dofs();
-    const Index rows = links.has_friction(k) ? 2 : 1;
+    const Index rows = links.rows(k);
     const auto moves = [&](Index equation) {
       for (Index r = 0; r < rows; ++r)
         if (links.connectivity().coeff(links.row(k) + r, equation) != 0.0) return true;

@@ -108,18 +108,22 @@ void refuse_stick_penalty(const LinkPlace& place, const FrictionSpec& friction,
                fmt::format("a friction pendulum needs a penalty normal law, not a {}", type));
 }
 
-// Coulomb friction needs a tangent (2-D), a normal force to rub with, and a stick stiffness (the
-// normal law's at first touch unless given).
+// Coulomb friction needs a tangent (2-D, or a contact plane in 3-D), a normal force to rub with,
+// and a stick stiffness (the normal law's at first touch unless given).
 void resolve_friction(const LinkPlace& place, model::Link& link) {
   const FrictionSpec& friction = *place.spec.friction;
   const std::string& type = place.spec.law.type;
   if (place.model.dimension == 1)
     place.fail("/friction",
                "friction needs a tangential direction: a 2-D scene (\"dimension\": 2)");
-  if (place.model.dimension == 3)
+  if (place.model.dimension == 3 && link.rotational)
+    place.fail("/friction", "a rotational link of a 3-D scene has no contact plane to slide in");
+  if (place.model.dimension == 3 && link.law->traits.constraint)
     place.fail("/friction",
-               "friction on links of a 3-D scene (two tangential directions) is not built yet; "
-               "a 2-D scene takes it");
+               fmt::format("friction on a {} of a 3-D scene (a stick-slip constraint in two "
+                           "tangential directions) is not built yet: give the link a penalty "
+                           "law (extended_penalty, kelvin_voigt, ...), or use a 2-D scene",
+                           type));
   if (link.role() == links::LinkRole::tension)
     place.fail("/friction", fmt::format("a {} carries no normal contact force to rub with", type));
   if (link.law->traits.constraint)

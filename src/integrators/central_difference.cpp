@@ -148,7 +148,8 @@ std::vector<std::vector<Index>> coupled_row_groups(const Matrix& coupling, const
     for (Index c = r + 1; c < m; ++c)
       if (coupling(r, c) != 0.0 || coupling(c, r) != 0.0) rows.join(r, c);
   for (Index k = 0; k < links.count(); ++k)
-    if (links.has_friction(k)) rows.join(links.row(k), links.row(k) + 1);
+    for (Index r = links.row(k) + 1; r < links.row(k) + links.rows(k); ++r)
+      rows.join(links.row(k), r);
   std::vector<Index> group_of(static_cast<std::size_t>(m), -1);
   std::vector<std::vector<Index>> groups;
   for (Index r = 0; r < m; ++r) {

@@ -1,7 +1,9 @@
 #include "integrators/link_set.hpp"
 
+#include <array>
 #include <cassert>
 #include <cmath>
+#include <span>
 #include <utility>
 
 namespace pound::integrators {
@@ -38,7 +40,9 @@ LinkSet::LinkSet(Index dofs, std::vector<Link> links) : links_(std::move(links))
   for (const Link& link : links_) {
     first_row_.push_back(rows);
     add_row(link.normal_row, link.gap);
-    if (link.friction) add_row(link.tangential_row, 0.0);
+    assert(!link.friction ||
+           static_cast<int>(link.tangential_rows.size()) == link.friction->tangents());
+    for (const std::vector<Term>& tangential : link.tangential_rows) add_row(tangential, 0.0);
   }
   connectivity_.resize(rows, dofs);
   connectivity_.setFromTriplets(triplets.begin(), triplets.end());
@@ -113,20 +117,31 @@ void LinkSet::evaluate(const Vector& delta, const Vector& rate, const Vector& ac
       tangent(n, n) = total(response);
       continue;
     }
-    const Index t = n + 1;
+    const auto tangents = links_[k].tangential_rows.size();
+    std::array<links::LinkKinematics, links::kMaxTangents> slide;
+    for (std::size_t a = 0; a < tangents; ++a) {
+      const Index t = n + 1 + static_cast<Index>(a);
+      slide[a] = {delta[t], rate[t], acceleration[t]};
+    }
     const links::FrictionResponse response =
-        links_[k].friction->set_trial(normal, {delta[t], rate[t], acceleration[t]});
+        links_[k].friction->set_trial(normal, std::span(slide.data(), tangents));
     force[n] = response.normal.force;
-    force[t] = response.tangential_force;
     tangent(n, n) = total(response.normal);
-    tangent(t, n) = total(response.tangential_on_normal);
-    tangent(t, t) = total(response.tangential_on_slip);
+    for (std::size_t a = 0; a < tangents; ++a) {
+      const Index t = n + 1 + static_cast<Index>(a);
+      force[t] = response.tangential_force[a];
+      tangent(t, n) = total(response.tangential_on_normal[a]);
+      for (std::size_t b = 0; b < tangents; ++b)
+        tangent(t, n + 1 + static_cast<Index>(b)) = total(response.tangential_on_slip[a][b]);
+    }
   }
 }
 
 void LinkSet::anchor_friction_at_rest(const Vector& force) {
   for (std::size_t k = 0; k < links_.size(); ++k)
-    if (links_[k].friction) links_[k].friction->anchor_at_rest(force[first_row_[k] + 1]);
+    if (links_[k].friction)
+      links_[k].friction->anchor_at_rest(
+          std::span(force.data() + first_row_[k] + 1, links_[k].tangential_rows.size()));
 }
 
 void LinkSet::commit() {
@@ -152,7 +167,7 @@ std::vector<char> LinkSet::impulsive_hard_contact_rows(const Vector* lumped_mass
   for (std::size_t k = 0; k < links_.size(); ++k) {
     const Link& link = links_[k];
     if (!(link.friction ? link.friction->normal_law() : *link.law).is_hard_contact()) continue;
-    const Index first = first_row_[k], last = first + (link.friction ? 2 : 1);
+    const Index first = first_row_[k], last = first + LinkSet::rows(static_cast<Index>(k));
     bool massive = true;
     if (lumped_mass)
       for (Index row = first; row < last; ++row)

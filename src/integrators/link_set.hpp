@@ -1,11 +1,11 @@
 #pragma once
 // The nonlinear part of a system: link elements whose deformations are linear in u,
 //   delta = b_n . u - gap     (penetration, docs/design.md §2)
-//   s     = b_t . u           (tangential slide, only for links with friction)
+//   s     = b_t . u           (tangential slides, only for links with friction)
 // and whose forces, F (normal) and R_t (tangential), enter the equations of motion as B^T F.
-// Each link has one row of B, or two with friction. B is constant (small displacements), so
-// the integrators condense the nonlinearity onto these rows while the linear part stays
-// factored once.
+// Each link has one row of B; with friction one more per tangent (one in a plane, two in 3-D). B is
+// constant (small displacements), so the integrators condense the nonlinearity onto these rows
+// while the linear part stays factored once.
 #include <Eigen/SparseCore>
 #include <memory>
 #include <vector>
@@ -27,8 +27,9 @@ class LinkSet {
     std::vector<Term> normal_row;
     double gap = 0.0;
     std::unique_ptr<links::LinkLaw> law;  // without friction
-    // With friction: the tangential row and the friction law, which owns the normal law.
-    std::vector<Term> tangential_row;
+    // With friction: the tangential rows (one per tangent of the friction law) and the friction
+    // law, which owns the normal law.
+    std::vector<std::vector<Term>> tangential_rows;
     std::unique_ptr<links::CoulombFriction> friction;
   };
 
@@ -44,6 +45,10 @@ class LinkSet {
   bool has_friction(Index link) const {
     return links_[static_cast<std::size_t>(link)].friction != nullptr;
   }
+  // A link's rows: its normal row, then its tangential ones.
+  Index rows(Index link) const {
+    return 1 + static_cast<Index>(links_[static_cast<std::size_t>(link)].tangential_rows.size());
+  }
   const SparseRowMatrix& connectivity() const { return connectivity_; }  // B (rows x n)
   const Vector& gaps() const { return gaps_; }
 
@@ -56,9 +61,10 @@ class LinkSet {
 
   // Sets every law's trial state; returns the row forces and the total tangent
   // dF/d(delta) + dF/d(delta_dot) * rate_factor + dF/d(delta_ddot) * acceleration_factor,
-  // block diagonal (a 2 x 2 block, not symmetric, for a link with friction). Only the blocks'
-  // entries are written: a tangent already of this size keeps its zeros outside them (callers
-  // may change entries inside the blocks only), as zeroing all m x m cost more than the laws.
+  // block diagonal (a 2 x 2 or 3 x 3 block, not symmetric, for a link with friction). Only the
+  // blocks' entries are written: a tangent already of this size keeps its zeros outside them
+  // (callers may change entries inside the blocks only), as zeroing all m x m cost more than the
+  // laws.
   void set_trial(const Vector& delta, const Vector& rate, const Vector& acceleration,
                  double rate_factor, double acceleration_factor, Vector& force, Matrix& tangent);
   // The same with dF/d(delta_ddot) alone (the laws' mass terms, exactly), for an explicit step:
@@ -86,13 +92,13 @@ class LinkSet {
   }
   // The constraints by row, for the integrators that find their forces: a hard contact on its
   // normal row, its friction (whose tangential force is a constraint's too) on its tangential
-  // row; nullptr on every other row.
+  // row (one tangent: the builder takes hard friction in plane scenes); nullptr elsewhere.
   struct HardRows {
     std::vector<links::HardContact*> contacts;
     std::vector<links::CoulombFriction*> frictions;
   };
   HardRows hard_rows();
-  // 1 on the rows of hard contacts between masses (with friction, both rows of the link), by
+  // 1 on the rows of hard contacts between masses (with friction, every row of the link), by
   // row: every DOF of the link's rows carries mass
   // (`lumped_mass`; none: a consistent mass, which every DOF carries). Such a contact's force is
   // an impulse in an implicit step; against a massless point (a column between floors) it is the

@@ -153,6 +153,10 @@ void Newmark::initialize(SecondOrderSystem& system, State& state, double /*first
     rate += offset_rate;
   }
   gaps_ = &links.gaps();
+  link_rows_.assign(static_cast<std::size_t>(links.size()), {});
+  for (Index k = 0; k < links.count(); ++k)
+    for (Index r = links.row(k); r < links.row(k) + links.rows(k); ++r)
+      link_rows_[static_cast<std::size_t>(r)] = {links.row(k), links.row(k) + links.rows(k)};
   LinkSet::HardRows hard_rows = links.hard_rows();
   hard_laws_ = std::move(hard_rows.contacts);
   hard_frictions_ = std::move(hard_rows.frictions);
@@ -203,9 +207,9 @@ void Newmark::set_folding_references(LinkSet& links, const Vector& delta, const 
       links.row_derivatives(delta, rate, Vector::Zero(links.size()));
   for (Index k = 0; k < links.count(); ++k) {
     const Index row = links.row(k);
-    // A contact's force is a constraint's, a friction link's tangent a 2 x 2 block.
+    // A contact's force is a constraint's, a friction link's tangent a 2 x 2 or 3 x 3 block.
     if (hard_laws_[static_cast<std::size_t>(row)] || links.has_friction(k)) {
-      for (Index r = row; r < row + (links.has_friction(k) ? 2 : 1); ++r)
+      for (Index r = row; r < row + links.rows(k); ++r)
         reference.stiffness[r] = reference.damping[r] = reference.mass[r] = 0.0;
     }
   }
@@ -455,19 +459,26 @@ void Newmark::solve_correction(const Factorization& f) {
   correction_ = residual_;
   active_rows_.clear();
   moved_rows_.clear();
+  // The other rows of r's link (a friction link's), whose tangents T(r, q) couple into row r.
+  const auto others = [&](Index r, auto&& visit) {
+    const LinkRows& rows = link_rows_[static_cast<std::size_t>(r)];
+    for (Index q = rows.first; q < rows.end; ++q)
+      if (q != r && tangent_(r, q) != 0.0) visit(q);
+  };
   for (Index r = 0; r < m; ++r) {
-    if (tangent_(r, r) != 0.0 || (r > 0 && tangent_(r, r - 1) != 0.0) ||
-        hard_slip_[static_cast<std::size_t>(r)] != 0.0)
+    bool coupled = false;
+    others(r, [&](Index) { coupled = true; });
+    if (tangent_(r, r) != 0.0 || coupled || hard_slip_[static_cast<std::size_t>(r)] != 0.0)
       active_rows_.push_back(r);
     else if (residual_[r] != 0.0)
       moved_rows_.push_back(r);
   }
   const Index size = static_cast<Index>(active_rows_.size());
   if (size == 0) return;
-  // Row r of T G: T(r, r) G(r, :) + T(r, r - 1) G(r - 1, :), the second only inside a link.
+  // Row r of T G: T(r, r) G(r, :) + the sum of T(r, q) G(q, :) over the other rows of its link.
   const auto jacobian_entry = [&](Index r, Index c) {
     double entry = tangent_(r, r) * f.coupling(r, c);
-    if (r > 0 && tangent_(r, r - 1) != 0.0) entry += tangent_(r, r - 1) * f.coupling(r - 1, c);
+    others(r, [&](Index q) { entry += tangent_(r, q) * f.coupling(q, c); });
     return entry;
   };
   reduced_residual_.resize(size);
@@ -481,10 +492,13 @@ void Newmark::solve_correction(const Factorization& f) {
   // The same rows with the same tangents (linear laws, or branches that did not change): the
   // same matrix, whose factors are kept.
   active_tangents_.clear();
-  for (const Index r : active_rows_)
+  for (const Index r : active_rows_) {
     active_tangents_.insert(active_tangents_.end(),
-                            {tangent_(r, r), r > 0 ? tangent_(r, r - 1) : 0.0,
-                             hard_slip_[static_cast<std::size_t>(r)]});
+                            {tangent_(r, r), hard_slip_[static_cast<std::size_t>(r)]});
+    const LinkRows& rows = link_rows_[static_cast<std::size_t>(r)];
+    for (Index q = rows.first; q < rows.end; ++q)
+      if (q != r) active_tangents_.push_back(tangent_(r, q));
+  }
   if (f.id != factored_id_ || active_rows_ != factored_rows_ ||
       active_tangents_ != factored_tangents_) {
     jacobian_.resize(size, size);

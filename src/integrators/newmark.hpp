@@ -179,9 +179,14 @@ class Newmark final : public Integrator {
   Matrix tangent_, jacobian_;
   Eigen::PartialPivLU<Matrix> jacobian_lu_;
   bool general_correction_ = false;
+  // The rows of each row's link, [first, end): a friction link's tangents couple them.
+  struct LinkRows {
+    Index first = 0, end = 0;
+  };
+  std::vector<LinkRows> link_rows_;
   std::vector<Index> active_rows_;       // link rows with a tangent, in order
   std::vector<Index> moved_rows_;        // the others with a residual
-  std::vector<double> active_tangents_;  // T(r, r), T(r, r - 1) of each active row
+  std::vector<double> active_tangents_;  // T(r, r), slip, T(r, q) of each active row
   // What jacobian_lu_ holds: the factorisation's id, the rows and their tangents.
   long factorization_count_ = 0, factored_id_ = 0;
   std::vector<Index> factored_rows_;

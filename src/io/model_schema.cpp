@@ -469,7 +469,8 @@ const Fields<LinkSpec>& link_fields() {
               "a rotational link of a 3-D scene needs the \"axis\" it turns about (a unit "
               "vector)");
       }),
-      optional("friction", &LinkSpec::friction, friction_object(), "Coulomb friction (2-D scenes)"),
+      optional("friction", &LinkSpec::friction, friction_object(),
+               "Coulomb friction: along the tangent in a plane, in the contact plane in 3-D"),
       optional("rayleigh", &LinkSpec::rayleigh,
                Object<builder::LinkRayleighSpec>{link_rayleigh_fields(), Docs::own_table},
                "stiffness-proportional damping a1·k·δ̇ of a spring or hinge (none without it)"),

@@ -5,11 +5,12 @@
 namespace pound::links {
 
 CoulombFriction::CoulombFriction(std::unique_ptr<LinkLaw> normal, double coefficient,
-                                 StickPenalty stick, std::optional<double> radius)
+                                 StickPenalty stick, std::optional<double> radius, int tangents)
     : normal_(std::move(normal)),
       coefficient_(coefficient),
       stick_(stick),
       radius_(radius),
+      tangents_(tangents),
       hard_(normal_->hard_contact()) {}
 
 CoulombFriction::CoulombFriction(const CoulombFriction& other)
@@ -17,6 +18,7 @@ CoulombFriction::CoulombFriction(const CoulombFriction& other)
       coefficient_(other.coefficient_),
       stick_(other.stick_),
       radius_(other.radius_),
+      tangents_(other.tangents_),
       hard_(normal_->hard_contact()),
       committed_tangential_force_(other.committed_tangential_force_),
       trial_tangential_force_(other.committed_tangential_force_),
@@ -30,9 +32,10 @@ CoulombFriction::CoulombFriction(const CoulombFriction& other)
       trial_normal_force_(other.committed_normal_force_) {}
 
 FrictionResponse CoulombFriction::set_trial(const LinkKinematics& normal,
-                                            const LinkKinematics& tangential) {
-  if (hard_) return imposed(normal, tangential);
-  FrictionResponse out = coulomb(normal, tangential);
+                                            std::span<const LinkKinematics> tangential) {
+  if (hard_) return imposed(normal, tangential[0]);
+  FrictionResponse out =
+      tangents_ == 1 ? coulomb(normal, tangential[0]) : coulomb_in_plane(normal, tangential);
   trial_normal_force_ = out.normal.force;
   // A flat slider's arithmetic stays exactly the Coulomb law's (no "+ 0" anywhere).
   if (radius_ && out.normal.force > 0.0) add_restoring(tangential, out);
@@ -45,43 +48,47 @@ FrictionResponse CoulombFriction::imposed(const LinkKinematics& normal,
   out.normal = normal_->set_trial(normal);
   out.tangential_force = trial_tangential_force_;
   out.slipping = trial_slip_;
-  trial_slide_ = tangential.penetration;
+  trial_slide_[0] = tangential.penetration;
   trial_normal_force_ = out.normal.force;
   return out;
 }
 
-// R_t += R_n s / R: its derivatives are R_n / R along s and (s / R) dR_n along the normal
-// quantities, the vertical load's share of the restoring force.
-void CoulombFriction::add_restoring(const LinkKinematics& tangential,
+// R_t += R_n s / R along each tangent: its derivatives are R_n / R along s and (s / R) dR_n
+// along the normal quantities, the vertical load's share of the restoring force.
+void CoulombFriction::add_restoring(std::span<const LinkKinematics> tangential,
                                     FrictionResponse& response) const {
-  const double lever = tangential.penetration / *radius_;
-  response.tangential_force += response.normal.force * lever;
-  response.tangential_on_slip.stiffness += response.normal.force / *radius_;
-  response.tangential_on_normal.stiffness += lever * response.normal.stiffness;
-  response.tangential_on_normal.damping += lever * response.normal.damping;
-  response.tangential_on_normal.mass += lever * response.normal.mass;
+  for (int a = 0; a < tangents_; ++a) {
+    const auto i = static_cast<std::size_t>(a);
+    const double lever = tangential[i].penetration / *radius_;
+    response.tangential_force[i] += response.normal.force * lever;
+    response.tangential_on_slip[i][i].stiffness += response.normal.force / *radius_;
+    LawResponse& on_normal = response.tangential_on_normal[i];
+    on_normal.stiffness += lever * response.normal.stiffness;
+    on_normal.damping += lever * response.normal.damping;
+    on_normal.mass += lever * response.normal.mass;
+  }
 }
 
 FrictionResponse CoulombFriction::coulomb(const LinkKinematics& normal,
                                           const LinkKinematics& tangential) {
   FrictionResponse out;
   out.normal = normal_->set_trial(normal);
-  trial_slide_ = tangential.penetration;
+  trial_slide_[0] = tangential.penetration;
   trial_slip_ = false;
   if (!(out.normal.force > 0.0)) {
-    trial_anchor_ = tangential.penetration;  // a new contact sticks where it lands
+    trial_anchor_[0] = tangential.penetration;  // a new contact sticks where it lands
     return out;
   }
   // A contact that begins in this step sticks from where the step began.
-  const double anchor = normal_->in_contact() ? committed_anchor_ : committed_slide_;
-  trial_anchor_ = anchor;
+  const double anchor = normal_->in_contact() ? committed_anchor_[0] : committed_slide_[0];
+  trial_anchor_[0] = anchor;
   const double stick_force = stick_.stiffness * (tangential.penetration - anchor) +
                              stick_.damping * tangential.penetration_rate +
                              stick_.mass * tangential.penetration_acceleration;
   const double limit = coefficient_ * out.normal.force;
   if (std::abs(stick_force) <= limit) {
-    out.tangential_force = stick_force;
-    out.tangential_on_slip = {0.0, stick_.stiffness, stick_.damping, stick_.mass};
+    out.tangential_force[0] = stick_force;
+    out.tangential_on_slip[0][0] = {0.0, stick_.stiffness, stick_.damping, stick_.mass};
     return out;
   }
   // Slip against the relative tangential velocity (at rest: against the stick force).
@@ -90,17 +97,80 @@ FrictionResponse CoulombFriction::coulomb(const LinkKinematics& normal,
                                : std::copysign(1.0, stick_force);
   trial_slip_ = true;
   out.slipping = true;
-  out.tangential_force = direction * limit;
+  out.tangential_force[0] = direction * limit;
   const double scale = direction * coefficient_;
-  out.tangential_on_normal = {0.0, scale * out.normal.stiffness, scale * out.normal.damping,
-                              scale * out.normal.mass};
+  out.tangential_on_normal[0] = {0.0, scale * out.normal.stiffness, scale * out.normal.damping,
+                                 scale * out.normal.mass};
   // Move the anchor so that the stick force would equal the slip force: no jump on sticking.
   if (stick_.stiffness > 0.0)
-    trial_anchor_ = tangential.penetration -
-                    (out.tangential_force - stick_.damping * tangential.penetration_rate -
-                     stick_.mass * tangential.penetration_acceleration) /
-                        stick_.stiffness;
+    trial_anchor_[0] = tangential.penetration -
+                       (out.tangential_force[0] - stick_.damping * tangential.penetration_rate -
+                        stick_.mass * tangential.penetration_acceleration) /
+                           stick_.stiffness;
   return out;
+}
+
+FrictionResponse CoulombFriction::coulomb_in_plane(const LinkKinematics& normal,
+                                                   std::span<const LinkKinematics> tangential) {
+  FrictionResponse out;
+  out.normal = normal_->set_trial(normal);
+  for (std::size_t a = 0; a < kMaxTangents; ++a) trial_slide_[a] = tangential[a].penetration;
+  trial_slip_ = false;
+  if (!(out.normal.force > 0.0)) {
+    trial_anchor_ = trial_slide_;  // a new contact sticks where it lands
+    return out;
+  }
+  // A contact that begins in this step sticks from where the step began.
+  trial_anchor_ = normal_->in_contact() ? committed_anchor_ : committed_slide_;
+  Tangential stick_force;
+  for (std::size_t a = 0; a < kMaxTangents; ++a)
+    stick_force[a] = stick_.stiffness * (tangential[a].penetration - trial_anchor_[a]) +
+                     stick_.damping * tangential[a].penetration_rate +
+                     stick_.mass * tangential[a].penetration_acceleration;
+  if (std::hypot(stick_force[0], stick_force[1]) <= coefficient_ * out.normal.force) {
+    out.tangential_force = stick_force;
+    for (std::size_t a = 0; a < kMaxTangents; ++a)
+      out.tangential_on_slip[a][a] = {0.0, stick_.stiffness, stick_.damping, stick_.mass};
+    return out;
+  }
+  slip_in_plane(tangential, stick_force, out);
+  return out;
+}
+
+// F_c = mu R_n e, e the unit slide velocity (at rest: the unit stick force). Its tangent: e mu
+// dR_n along the normal quantities, and mu R_n (I - e e^T) / |w| dw along the slide's, w being
+// the slide rate (dw = d s_dot) or the stick force (dw = k_t ds + c_t ds_dot + m_t ds_ddot).
+void CoulombFriction::slip_in_plane(std::span<const LinkKinematics> tangential,
+                                    const Tangential& stick_force, FrictionResponse& out) {
+  const Tangential rate{tangential[0].penetration_rate, tangential[1].penetration_rate};
+  const double speed = std::hypot(rate[0], rate[1]);
+  const bool moving = speed > 0.0;
+  const Tangential& along = moving ? rate : stick_force;
+  const double length = moving ? speed : std::hypot(stick_force[0], stick_force[1]);
+  const Tangential direction{along[0] / length, along[1] / length};
+  const double limit = coefficient_ * out.normal.force;
+  trial_slip_ = true;
+  out.slipping = true;
+  const LawResponse& n = out.normal;
+  for (std::size_t a = 0; a < kMaxTangents; ++a) {
+    out.tangential_force[a] = direction[a] * limit;
+    const double scale = direction[a] * coefficient_;
+    out.tangential_on_normal[a] = {0.0, scale * n.stiffness, scale * n.damping, scale * n.mass};
+    for (std::size_t b = 0; b < kMaxTangents; ++b) {
+      const double turn = limit * ((a == b ? 1.0 : 0.0) - direction[a] * direction[b]) / length;
+      out.tangential_on_slip[a][b] = moving
+                                         ? LawResponse{0.0, 0.0, turn, 0.0}
+                                         : LawResponse{0.0, turn * stick_.stiffness,
+                                                       turn * stick_.damping, turn * stick_.mass};
+    }
+    // Move the anchor so that the stick force would equal the slip force: no jump on sticking.
+    if (stick_.stiffness > 0.0)
+      trial_anchor_[a] =
+          tangential[a].penetration -
+          (out.tangential_force[a] - stick_.damping * tangential[a].penetration_rate -
+           stick_.mass * tangential[a].penetration_acceleration) /
+              stick_.stiffness;
+  }
 }
 
 void CoulombFriction::commit() {
@@ -112,12 +182,16 @@ void CoulombFriction::commit() {
   committed_tangential_force_ = trial_tangential_force_;
 }
 
-void CoulombFriction::anchor_at_rest(double tangential_force) {
-  // Only F_c sticks: the pendulum's R_n s / R is not part of the stick penalty.
-  if (radius_ && committed_normal_force_ > 0.0)
-    tangential_force -= committed_normal_force_ * committed_slide_ / *radius_;
-  if (stick_.stiffness > 0.0)
-    committed_anchor_ = committed_slide_ - tangential_force / stick_.stiffness;
+void CoulombFriction::anchor_at_rest(std::span<const double> tangential_force) {
+  for (int a = 0; a < tangents_; ++a) {
+    const auto i = static_cast<std::size_t>(a);
+    double force = tangential_force[i];
+    // Only F_c sticks: the pendulum's R_n s / R is not part of the stick penalty.
+    if (radius_ && committed_normal_force_ > 0.0)
+      force -= committed_normal_force_ * committed_slide_[i] / *radius_;
+    if (stick_.stiffness > 0.0)
+      committed_anchor_[i] = committed_slide_[i] - force / stick_.stiffness;
+  }
   trial_anchor_ = committed_anchor_;
 }
 

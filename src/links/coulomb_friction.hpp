@@ -1,16 +1,25 @@
 #pragma once
-// Coulomb friction on a link that has a tangential direction (2-D links), after Suzuki & Toi
-// (1987, eqs. 14-16): while sticking, the tangential force is a penalty of the same form as the
-// normal one; while slipping it is mu times the normal force, against the relative tangential
-// velocity. With a radius R the link is a friction pendulum bearing (Zayas, Low & Mahin 1990,
-// "A simple pendulum technique for achieving seismic isolation", Earthquake Spectra 6(2)
-// 317-333): the slider on a concave dish of radius R is pushed back towards the dish's centre by
-// the vertical load, a restoring force R_n s / R on top of the friction.
+// Coulomb friction on a link that has tangential directions (one in a 2-D scene, two in 3-D),
+// after Suzuki & Toi (1987, eqs. 14-16): while sticking, the tangential force is a penalty of the
+// same form as the normal one; while slipping it is mu times the normal force, against the
+// relative tangential velocity. With a radius R the link is a friction pendulum bearing (Zayas, Low
+// & Mahin 1990, "A simple pendulum technique for achieving seismic isolation", Earthquake Spectra
+// 6(2) 317-333): the slider on a concave dish of radius R is pushed back towards the dish's centre
+// by the vertical load, a restoring force R_n s / R on top of the friction.
 //
 //   tangential deformation  s = (u_i - u_j) . t,  t = n rotated by +90 degrees
 //   R_t = R_n s / R + F_c                        (R_n s / R only with a radius; flat: F_c alone)
 //   stick:  F_c = k_t (s - s_0) + c_t s_dot + m_t s_ddot     (s_0: where sticking began)
 //   slip:   F_c = mu R_n sign(s_dot)    when |F_c(stick)| > mu R_n
+//
+// With two tangents (t_1, t_2: links of 3-D scenes) s, F_c and s_0 are vectors of the contact
+// plane and the limit is a circle (isotropic friction):
+//   stick:  F_c = k_t (s - s_0) + c_t s_dot + m_t s_ddot
+//   slip:   F_c = mu R_n e,  e = s_dot / |s_dot|   when |F_c(stick)| > mu R_n
+// (at rest, e = F_c(stick) / |F_c(stick)|), so a block sliding obliquely is held back along its
+// own path, not along each tangent separately. The direction's derivative
+// de/dw = (I - e e^T) / |w| (w = s_dot, or the stick force at rest) enters the tangent; with
+// one tangent it vanishes and the law is the one above to the bit.
 //
 // R_n >= 0 comes from the normal law; without contact R_t = 0. Equal static and kinetic mu.
 // Signs as for the normal force: R_t > 0 pushes node i back along -t, so R_n s / R pulls node i
@@ -29,8 +38,10 @@
 // penalty: the integrator finds R_t with R_n, sticking (no slide over the step) while
 // |R_t| <= mu R_n and slipping at R_t = mu R_n against the slide otherwise, and imposes both
 // (impose_tangential); set_trial then returns the imposed forces with no tangents.
+#include <array>
 #include <memory>
 #include <optional>
+#include <span>
 
 #include "links/link_law.hpp"
 
@@ -42,59 +53,80 @@ struct StickPenalty {
   double mass = 0.0;       // m_t
 };
 
+// Tangential directions of a link: one in a plane, two in space.
+inline constexpr int kMaxTangents = 2;
+using Tangential = std::array<double, kMaxTangents>;
+
 struct FrictionResponse {
-  LawResponse normal;                // R_n and its tangents in the normal quantities
-  double tangential_force = 0.0;     // R_t
-  LawResponse tangential_on_normal;  // dR_t / d(delta, delta_dot, delta_ddot) (force unused)
-  LawResponse tangential_on_slip;    // dR_t / d(s, s_dot, s_ddot) (force unused)
+  LawResponse normal;             // R_n and its tangents in the normal quantities
+  Tangential tangential_force{};  // R_t along each tangent
+  // dR_t,a / d(delta, delta_dot, delta_ddot) (force unused)
+  std::array<LawResponse, kMaxTangents> tangential_on_normal{};
+  // [a][b]: dR_t,a / d(s_b, s_b_dot, s_b_ddot) (force unused)
+  std::array<std::array<LawResponse, kMaxTangents>, kMaxTangents> tangential_on_slip{};
   bool slipping = false;
 };
 
 class CoulombFriction {
  public:
   // radius: the friction pendulum's effective radius of curvature R > 0; none: a flat slider.
+  // tangents: 1 (a plane scene) or 2 (a 3-D scene's contact plane).
   CoulombFriction(std::unique_ptr<LinkLaw> normal, double coefficient, StickPenalty stick,
-                  std::optional<double> radius = std::nullopt);
+                  std::optional<double> radius = std::nullopt, int tangents = 1);
   CoulombFriction(const CoulombFriction& other);
   CoulombFriction& operator=(const CoulombFriction&) = delete;
 
-  FrictionResponse set_trial(const LinkKinematics& normal, const LinkKinematics& tangential);
+  // One kinematics per tangent (tangents() of them).
+  FrictionResponse set_trial(const LinkKinematics& normal,
+                             std::span<const LinkKinematics> tangential);
+  FrictionResponse set_trial(const LinkKinematics& normal, const LinkKinematics& tangential) {
+    return set_trial(normal, std::span<const LinkKinematics>(&tangential, 1));
+  }
   void commit();
   void revert();
   // After a static solve in which the surfaces slid (a belt moving under a held block), moves
   // the committed anchor so that at rest the stick force equals `tangential_force`: the
   // dynamics then starts from that friction force without the jump the stick dashpot would make.
-  void anchor_at_rest(double tangential_force);
+  void anchor_at_rest(std::span<const double> tangential_force);
+  int tangents() const { return tangents_; }
 
   const LinkLaw& normal_law() const { return *normal_; }
   // The normal law's hard contact, when it is one: then R_t is imposed, not computed.
   HardContact* hard_contact() { return hard_; }
-  // The tangential force the integrator found for the trial state, and whether it slips.
+  // The tangential force the integrator found for the trial state, and whether it slips (one
+  // tangent: hard contacts with friction are built in plane scenes).
   void impose_tangential(double force, bool slipping) {
-    trial_tangential_force_ = force;
+    trial_tangential_force_[0] = force;
     trial_slip_ = slipping;
   }
   double coefficient() const { return coefficient_; }
   bool slipping() const { return committed_slip_; }
 
  private:
-  // F_c and its tangents (the flat slider).
+  // F_c and its tangents (the flat slider), with one tangent.
   FrictionResponse coulomb(const LinkKinematics& normal, const LinkKinematics& tangential);
+  // The same in a contact plane (two tangents).
+  FrictionResponse coulomb_in_plane(const LinkKinematics& normal,
+                                    std::span<const LinkKinematics> tangential);
+  // The slip branch in a contact plane: F_c = mu R_n e.
+  void slip_in_plane(std::span<const LinkKinematics> tangential, const Tangential& stick_force,
+                     FrictionResponse& out);
   // R_n and R_t as imposed, for the hard contact.
   FrictionResponse imposed(const LinkKinematics& normal, const LinkKinematics& tangential);
   // The pendulum's R_n s / R, added to a response in contact.
-  void add_restoring(const LinkKinematics& tangential, FrictionResponse& response) const;
+  void add_restoring(std::span<const LinkKinematics> tangential, FrictionResponse& response) const;
 
   std::unique_ptr<LinkLaw> normal_;
   double coefficient_;
   StickPenalty stick_;
   std::optional<double> radius_;
-  HardContact* hard_;                                                       // normal_'s, or none
-  double committed_tangential_force_ = 0.0, trial_tangential_force_ = 0.0;  // imposed (hard_)
-  double committed_anchor_ = 0.0, trial_anchor_ = 0.0;
+  int tangents_;
+  HardContact* hard_;                                                   // normal_'s, or none
+  Tangential committed_tangential_force_{}, trial_tangential_force_{};  // imposed (hard_)
+  Tangential committed_anchor_{}, trial_anchor_{};
   bool committed_slip_ = false, trial_slip_ = false;
-  double committed_slide_ = 0.0;  // s at the last commit, the anchor when contact begins
-  double trial_slide_ = 0.0;
+  Tangential committed_slide_{};  // s at the last commit, the anchor when contact begins
+  Tangential trial_slide_{};
   // R_n at the last commit: anchor_at_rest takes the pendulum's part out of a static force.
   double committed_normal_force_ = 0.0, trial_normal_force_ = 0.0;
 };

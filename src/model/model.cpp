@@ -1,8 +1,40 @@
 #include "model/model.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace pound::model {
+
+std::vector<Coordinates> contact_tangents(const Coordinates& n, int dimension) {
+  // In the x-y plane, exactly the plane scene's tangent: a plane model written in 3-D slides
+  // along the same row to the bit.
+  if (dimension < 3 || n[2] == 0.0) {
+    const Coordinates first{-n[1], n[0], 0.0};
+    if (dimension < 3) return {first};
+    return {first,
+            {n[1] * first[2] - n[2] * first[1], n[2] * first[0] - n[0] * first[2],
+             n[0] * first[1] - n[1] * first[0]}};
+  }
+  const double length = std::hypot(n[0], n[1], n[2]);
+  const Coordinates unit{n[0] / length, n[1] / length, n[2] / length};
+  const double horizontal = std::hypot(unit[0], unit[1]);
+  Coordinates first;
+  if (horizontal > 1e-9) {
+    first = {-unit[1] / horizontal, unit[0] / horizontal, 0.0};
+  } else {  // vertical: x, less its (round-off) component along n
+    first = {1.0 - unit[0] * unit[0], -unit[0] * unit[1], -unit[0] * unit[2]};
+    const double size = std::hypot(first[0], first[1], first[2]);
+    for (double& component : first) component /= size;
+  }
+  Coordinates second{unit[1] * first[2] - unit[2] * first[1],
+                     unit[2] * first[0] - unit[0] * first[2],
+                     unit[0] * first[1] - unit[1] * first[0]};
+  // A vertical contact (a block on a floor, a bearing) slides along x and y, whichever way n
+  // points.
+  if (horizontal <= 1e-9 && second[1] < 0.0)
+    for (double& component : second) component = -component;
+  return {first, second};
+}
 
 int Model::dofs_per_node() const {
   int count = dimension;

@@ -63,7 +63,8 @@ struct SupportExcitation {
 
 // Contact link between node i and node j along the unit axis n (from i towards j):
 // penetration delta = (u_i - u_j) . n - gap.
-// Coulomb friction along the tangent t = n rotated by +90 degrees (2-D only).
+// Coulomb friction in the contact plane: along the tangent t = n rotated by +90 degrees in a
+// plane scene; along t_1 and t_2 (contact_tangents) in 3-D.
 // Node-to-segment: the j side is the point (1 - w) u_j + w u_k of the segment j-k, w fixed at
 // t = 0 (small sliding). A rigid moving surface (a belt) is a fixed node j whose side of the
 // link moves at a constant velocity: u_j + velocity_j t.
@@ -74,6 +75,11 @@ struct LinkFriction {
   std::optional<double> stick_stiffness, stick_damping, stick_mass;  // default: the normal law's
   std::optional<double> radius;                                      // [L] > 0; none: a flat slider
 };
+
+// The tangents of a contact plane with unit normal n: t = z x n in a plane scene (n turned by
+// +90 degrees); in 3-D t_1 = z x n / |z x n| (horizontal, the plane scene's t when n lies in
+// the x-y plane) and t_2 = n x t_1 (z for a horizontal n); for a vertical n, t_1 = x, t_2 = y.
+std::vector<Coordinates> contact_tangents(const Coordinates& normal, int dimension);
 
 struct Link {
   std::string id;

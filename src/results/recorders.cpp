@@ -1,5 +1,7 @@
 #include "results/recorders.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -19,17 +21,18 @@ LinkQuantities::LinkQuantities(std::vector<LinkRows> links, const std::vector<st
   for (std::size_t k = 0; k < ids.size(); ++k) {
     add(ids[k] + ".force", Dimension::force);
     add(ids[k] + ".penetration", Dimension::length);
-    if (links_[k].friction) {
-      add(ids[k] + ".tangential_force", Dimension::force);
-      add(ids[k] + ".slide", Dimension::length);
+    const Index tangents = links_[k].tangents;
+    for (Index t = 1; t <= tangents; ++t) {
+      const std::string along = tangents == 1 ? "" : fmt::format("_{}", t);
+      add(ids[k] + ".tangential_force" + along, Dimension::force);
+      add(ids[k] + ".slide" + along, Dimension::length);
     }
   }
 }
 
 void LinkQuantities::take(const integrators::State& state, double* values) const {
   for (const LinkRows& link : links_) {
-    const Index rows = link.friction ? 2 : 1;
-    for (Index r = link.row; r < link.row + rows; ++r) {
+    for (Index r = link.row; r <= link.row + link.tangents; ++r) {
       *values++ = state.link_force[r];
       *values++ = state.link_penetration[r];
     }

@@ -51,15 +51,16 @@ class Quantities {
 std::vector<std::string> unit_names(const UnitNames& units,
                                     const std::vector<Dimension>& dimensions);
 
-// Where a link's values sit in the state's link vectors: its normal row, and the tangential
-// row right after it when the link has friction.
+// Where a link's values sit in the state's link vectors: its normal row, and its tangential
+// rows right after it when the link has friction (one in a plane, two in 3-D).
 struct LinkRows {
   Index row = 0;
-  bool friction = false;
+  Index tangents = 0;
 };
 
 // <id>.force, <id>.penetration per link, and <id>.tangential_force, <id>.slide for a link with
-// friction.
+// friction in a plane (<id>.tangential_force_1, <id>.slide_1, <id>.tangential_force_2,
+// <id>.slide_2 along t_1 and t_2 in 3-D).
 class LinkQuantities final : public Quantities {
  public:
   LinkQuantities(std::vector<LinkRows> links, const std::vector<std::string>& ids);

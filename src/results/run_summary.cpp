@@ -27,7 +27,7 @@ std::unique_ptr<Quantities> link_quantities(const builder::BuiltModel& built,
   std::vector<LinkRows> rows;
   for (Index link : items) {
     ids.push_back(built.model.links[static_cast<std::size_t>(link)].id);
-    rows.push_back({links.row(link), links.has_friction(link)});
+    rows.push_back({links.row(link), links.rows(link) - 1});
   }
   return std::make_unique<LinkQuantities>(rows, ids);
 }

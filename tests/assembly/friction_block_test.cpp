@@ -1,8 +1,12 @@
 // A block sliding on a rough floor (2-D, a link with Coulomb friction, gravity as a nodal load)
 // against the closed form: it decelerates at mu g, stops after v0^2 / (2 mu g) and then sticks.
+// In 3-D (issue 18) the block slides obliquely on the contact plane of a vertical link: it stops
+// where and when mu g says, on the line it was launched along, and its friction limit is a
+// circle (a push past mu m g slides it even when each component is below the limit).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <iostream>
 
@@ -156,6 +160,128 @@ TEST(FrictionBlock, AnElasticBlockOfQuadsDeceleratesAtMuGToo) {
   EXPECT_LT(std::abs(deceleration_error), 0.005);
   EXPECT_LT(std::abs(distance_error), 0.02);
   EXPECT_LT(std::abs(velocity.back()), 0.05 * speed);
+}
+
+// The 3-D block: launched at `speed` along the plan angle `angle`, pushed by `push` (x, y),
+// on a vertical link (axis -z, tangents x and y) with Kelvin-Voigt contact and friction mu.
+std::string space_block(double speed, double angle, std::array<double, 2> push,
+                        const std::string& integrator) {
+  return fmt::format(R"({{
+    "dimension": 3,
+    "nodes": [{{"id": "block", "x": 0, "y": 0, "z": 0}}, {{"id": "floor", "x": 0, "y": 0, "z": 0}}],
+    "masses": [{{"node": "block", "mass": {mass}}}],
+    "supports": [{{"node": "floor", "fix": ["x", "y", "z"]}}],
+    "loads": [{{"node": "block", "x": {px}, "y": {py}, "z": {weight}}}],
+    "initial_velocities": [{{"node": "block", "x": {vx}, "y": {vy}}}],
+    "links": [{{"id": "contact", "nodes": ["block", "floor"], "axis": [0, 0, -1],
+                "law": {{"type": "kelvin_voigt", "stiffness": 1e7, "damping": 2e4}},
+                "friction": {{"coefficient": {mu}}}}}],
+    "analysis": {{"integrator": "{integrator}", "time_step": 1e-4, "duration": 0.6}}
+  }})",
+                     fmt::arg("mass", kMass), fmt::arg("px", push[0]), fmt::arg("py", push[1]),
+                     fmt::arg("weight", -kMass * kGravity), fmt::arg("vx", speed * std::cos(angle)),
+                     fmt::arg("vy", speed * std::sin(angle)), fmt::arg("mu", kMu),
+                     fmt::arg("integrator", integrator));
+}
+
+struct PlanSlide {
+  std::vector<double> time, x, y, vx, vy, force_1, force_2;
+};
+
+PlanSlide run_in_plan(const std::string& text) {
+  const builder::BuiltModel built = builder::build(io::parse_model(text, "block_3d.json"));
+  assembly::StructuralSystem system(built.model);
+  auto integrator = builder::make_integrator(built.analysis);
+  integrators::TransientAnalysis analysis(system, *integrator,
+                                          builder::make_transient_settings(built.analysis));
+  const Index block = built.node_index.at("block");
+  const Index x = system.dofs().equation(block, 0), y = system.dofs().equation(block, 1);
+  EXPECT_EQ(system.links().rows(0), 3);  // normal, t_1 = x, t_2 = y
+  PlanSlide slide;
+  integrators::State state;
+  state.velocity = system.initial_velocity(built.model);
+  analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
+    slide.time.push_back(s.time);
+    slide.x.push_back(s.displacement[x]);
+    slide.y.push_back(s.displacement[y]);
+    slide.vx.push_back(s.velocity[x]);
+    slide.vy.push_back(s.velocity[y]);
+    slide.force_1.push_back(s.link_force[1]);
+    slide.force_2.push_back(s.link_force[2]);
+  });
+  return slide;
+}
+
+TEST(FrictionBlock, SlidingObliquelyInSpaceStopsWhereAndWhenMuGSaysAlongItsPath) {
+  const double angle = 35.0 * std::acos(-1.0) / 180.0;
+  const double stop_time = kSpeed / (kMu * kGravity),
+               stop_distance = kSpeed * kSpeed / (2 * kMu * kGravity);
+  for (const char* integrator : {"newmark_average_acceleration", "central_difference"}) {
+    SCOPED_TRACE(integrator);
+    const PlanSlide slide = run_in_plan(space_block(kSpeed, angle, {0.0, 0.0}, integrator));
+    const auto at = [&](double t) { return static_cast<std::size_t>(std::lround(t / 1e-4)); };
+    const auto speed = [&](std::size_t k) { return std::hypot(slide.vx[k], slide.vy[k]); };
+    const double deceleration = (speed(at(0.05)) - speed(at(0.35))) / 0.30;
+    const double deceleration_error = deceleration / (kMu * kGravity) - 1.0;
+    const double distance = std::hypot(slide.x.back(), slide.y.back());
+    const double distance_error = distance / stop_distance - 1.0;
+    // The path's direction, and how far the block strayed off the launch line.
+    const double direction_error = std::atan2(slide.y.back(), slide.x.back()) - angle;
+    double off_line = 0.0;
+    for (std::size_t k = 0; k < slide.x.size(); ++k)
+      off_line = std::max(off_line,
+                          std::abs(-std::sin(angle) * slide.x[k] + std::cos(angle) * slide.y[k]));
+    // When it stopped: the first step at rest (|v| below 1 % of v0).
+    std::size_t stopped = 0;
+    while (stopped < slide.time.size() && speed(stopped) > 0.01 * kSpeed) ++stopped;
+    ASSERT_LT(stopped, slide.time.size());
+    const double stop_time_error = slide.time[stopped] / stop_time - 1.0;
+    std::cout << fmt::format(
+        "{}: deceleration error {:.2e}, stopping distance error {:.2e}, stop time error "
+        "{:.2e}, direction error {:.1e} rad, off the launch line {:.1e} m, final speed "
+        "{:.1e} m/s\n",
+        integrator, deceleration_error, distance_error, stop_time_error, direction_error, off_line,
+        speed(slide.time.size() - 1));
+    EXPECT_LT(std::abs(deceleration_error), 1e-3);
+    EXPECT_LT(std::abs(distance_error), 5e-3);
+    // |v| = 1 % of v0 is reached 1 % of the stopping time early.
+    EXPECT_LT(std::abs(stop_time_error + 0.01), 5e-3);
+    EXPECT_LT(std::abs(direction_error), 1e-9);
+    EXPECT_LT(off_line, 1e-9 * stop_distance);
+    EXPECT_LT(speed(slide.time.size() - 1), 1e-3);  // stuck, not creeping
+    EXPECT_LT(std::hypot(slide.force_1.back(), slide.force_2.back()),
+              1e-3 * kMu * kMass * kGravity);
+  }
+}
+
+// The friction limit is a circle of radius mu R_n: a push of 0.6 mu m g along x and y together
+// (0.85 mu m g in all) is held, one of 0.8 mu m g along each (1.13 mu m g) slides the block
+// along the push at (|P| - mu m g) / m, though each component alone is below the limit.
+TEST(FrictionBlock, TheFrictionLimitInSpaceIsACircleNotABox) {
+  const double limit = kMu * kMass * kGravity, diagonal = std::sqrt(0.5);
+  const PlanSlide held = run_in_plan(
+      space_block(0.0, 0.0, {0.6 * limit, 0.6 * limit}, "newmark_average_acceleration"));
+  const double held_force_error =
+      std::hypot(held.force_1.back() - 0.6 * limit, held.force_2.back() - 0.6 * limit) / limit;
+  EXPECT_NEAR(held.x.back(), 0.6 * limit / 1e7, 1e-9);  // the stick deflection P / k_t
+  EXPECT_NEAR(held.y.back(), 0.6 * limit / 1e7, 1e-9);
+  EXPECT_LT(held_force_error, 1e-6);
+  const double push = 0.8 * limit;
+  const PlanSlide pushed =
+      run_in_plan(space_block(0.0, 0.0, {push, push}, "newmark_average_acceleration"));
+  const double expected = (std::hypot(push, push) - limit) / kMass;  // along (1, 1) / sqrt 2
+  const auto at = [&](double t) { return static_cast<std::size_t>(std::lround(t / 1e-4)); };
+  const double along =
+      diagonal *
+      (pushed.vx[at(0.5)] - pushed.vx[at(0.1)] + pushed.vy[at(0.5)] - pushed.vy[at(0.1)]) / 0.4;
+  const double acceleration_error = along / expected - 1.0;
+  const double across = std::abs(pushed.vx.back() - pushed.vy.back());
+  std::cout << fmt::format(
+      "held at 0.85 mu m g: friction force error {:.1e} of mu m g; pushed at 1.13 mu m g: "
+      "acceleration error {:.2e}, velocity across the push {:.1e} m/s\n",
+      held_force_error, acceleration_error, across);
+  EXPECT_LT(std::abs(acceleration_error), 1e-3);
+  EXPECT_LT(across, 1e-12);
 }
 
 }  // namespace

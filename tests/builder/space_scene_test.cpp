@@ -343,7 +343,10 @@ TEST(SpaceScene, MeaninglessSpaceInputIsRefusedWithItsPath) {
   ASSERT_FALSE(error_of(link));
   json friction = link;
   friction["links"][0]["friction"] = {{"coefficient", 0.3}};
-  expect_refused(friction, "/links/0/friction", "not built yet");
+  ASSERT_FALSE(error_of(friction));  // a penalty law rubs in the contact plane
+  json hard_friction = friction;
+  hard_friction["links"][0]["law"] = {{"type", "hard_contact"}, {"restitution", 0.5}};
+  expect_refused(hard_friction, "/links/0/friction", "not built yet");
   json hinge = link;
   hinge["links"][0] = {{"id", "hinge"},
                        {"nodes", {"n0", "n1"}},
@@ -352,6 +355,10 @@ TEST(SpaceScene, MeaninglessSpaceInputIsRefusedWithItsPath) {
   expect_refused(hinge, "/links/0/dof", "needs the \"axis\" it turns about");
   hinge["links"][0]["axis"] = {0.0, 0.0, 1.0};
   EXPECT_FALSE(error_of(hinge));
+  json turning_friction = hinge;
+  turning_friction["links"][0]["law"] = {{"type", "gap_spring"}, {"stiffness", 1e6}};
+  turning_friction["links"][0]["friction"] = {{"coefficient", 0.3}};
+  expect_refused(turning_friction, "/links/0/friction", "no contact plane");
 }
 
 }  // namespace

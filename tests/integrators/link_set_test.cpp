@@ -26,7 +26,7 @@ LinkSet two_links() {
   links[0].gap = 0.1;
   links[0].law = std::make_unique<links::KelvinVoigt>(100.0, 5.0, true);
   links[1].normal_row = {{2, 1.0}};
-  links[1].tangential_row = {{1, 1.0}, {3, 2.0}};
+  links[1].tangential_rows = {{{1, 1.0}, {3, 2.0}}};
   links[1].friction = std::make_unique<links::CoulombFriction>(
       std::make_unique<links::GapSpring>(200.0), 0.5,
       links::StickPenalty{.stiffness = 50.0, .damping = 2.0, .mass = 3.0});

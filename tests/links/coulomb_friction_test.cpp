@@ -1,9 +1,12 @@
 // Coulomb friction: stick and slip forces, and the consistent (non-symmetric) tangent against
-// finite differences in both regimes.
+// finite differences in both regimes, with one tangent (plane scenes) and two (3-D: the limit is
+// a circle, slip is against the slide velocity, and its direction's turn enters the tangent).
 #include "links/coulomb_friction.hpp"
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <iostream>
 
 #include "links/gap_spring.hpp"
@@ -24,8 +27,8 @@ double tangent_error(const LinkKinematics& normal, const LinkKinematics& slide) 
   const FrictionResponse at = friction.set_trial(normal, slide);
   const double analytic[2][4] = {
       {at.normal.stiffness, at.normal.damping, 0.0, 0.0},
-      {at.tangential_on_normal.stiffness, at.tangential_on_normal.damping,
-       at.tangential_on_slip.stiffness, at.tangential_on_slip.damping}};
+      {at.tangential_on_normal[0].stiffness, at.tangential_on_normal[0].damping,
+       at.tangential_on_slip[0][0].stiffness, at.tangential_on_slip[0][0].damping}};
   double worst = 0.0;
   for (int variable = 0; variable < 4; ++variable) {
     LinkKinematics np = normal, nm = normal, sp = slide, sm = slide;
@@ -38,7 +41,7 @@ double tangent_error(const LinkKinematics& normal, const LinkKinematics& slide) 
     *minus[variable] -= step;
     const FrictionResponse up = friction.set_trial(np, sp), down = friction.set_trial(nm, sm);
     const double numeric[2] = {(up.normal.force - down.normal.force) / (2 * step),
-                               (up.tangential_force - down.tangential_force) / (2 * step)};
+                               (up.tangential_force[0] - down.tangential_force[0]) / (2 * step)};
     for (int row = 0; row < 2; ++row) {
       const double scale = std::abs(at.normal.force) / std::max(std::abs(*plus[variable]), 1e-4);
       worst = std::max(worst, std::abs(numeric[row] - analytic[row][variable]) / scale);
@@ -53,13 +56,13 @@ TEST(CoulombFriction, SticksBelowTheLimitAndSlipsAtMuTimesTheNormalForce) {
   friction.commit();
   const FrictionResponse stick = friction.set_trial({1e-4, 0.0, 0.0}, {1e-5, 0.0, 0.0});
   EXPECT_FALSE(stick.slipping);
-  EXPECT_NEAR(stick.tangential_force, 2e5 * 1e-5, 1e-9);
+  EXPECT_NEAR(stick.tangential_force[0], 2e5 * 1e-5, 1e-9);
   const FrictionResponse slip = friction.set_trial({1e-4, 0.0, 0.0}, {1e-2, -0.3, 0.0});
   EXPECT_TRUE(slip.slipping);
   // Against the velocity, not the displacement: the slide is positive but moving back.
-  EXPECT_NEAR(slip.tangential_force, -0.4 * 1e6 * 1e-4, 1e-9);
+  EXPECT_NEAR(slip.tangential_force[0], -0.4 * 1e6 * 1e-4, 1e-9);
   const FrictionResponse apart = friction.set_trial({-1e-4, 0.0, 0.0}, {1e-2, 0.3, 0.0});
-  EXPECT_EQ(apart.tangential_force, 0.0);
+  EXPECT_EQ(apart.tangential_force[0], 0.0);
 }
 
 TEST(CoulombFriction, TangentMatchesFiniteDifferencesInStickAndSlip) {
@@ -68,6 +71,94 @@ TEST(CoulombFriction, TangentMatchesFiniteDifferencesInStickAndSlip) {
   std::cout << "stick tangent error " << stick << ", slip tangent error " << slip << "\n";
   EXPECT_LT(stick, 1e-6);
   EXPECT_LT(slip, 1e-6);
+}
+
+// Two tangents. The 3 x 7 tangent [R_n, R_t1, R_t2] / d(delta, delta_dot, s1, s2, s1_dot,
+// s2_dot, s1_ddot) by central differences, each column relative to the largest force over the
+// variable's scale; `columns` leaves out the rate columns where slip at rest turns into slip
+// along the velocity (the direction's two branches meet there with different derivatives).
+using PlaneTrial = std::array<double, 7>;
+
+FrictionResponse in_plane(CoulombFriction& friction, const PlaneTrial& x) {
+  const std::array<LinkKinematics, 2> slide{LinkKinematics{x[2], x[4], x[6]},
+                                            LinkKinematics{x[3], x[5], 0.0}};
+  return friction.set_trial({x[0], x[1], 0.0}, slide);
+}
+
+CoulombFriction in_plane_law() {
+  return CoulombFriction(std::make_unique<KelvinVoigt>(1e6, 1e3, true), 0.4, {2e5, 500.0, 30.0},
+                         std::nullopt, 2);
+}
+
+double plane_tangent_error(const PlaneTrial& at, bool expect_slip, int columns) {
+  CoulombFriction friction = in_plane_law();
+  in_plane(friction, {-1e-4, 0.1, 0, 0, 0, 0, 0});
+  friction.commit();
+  const FrictionResponse r = in_plane(friction, at);
+  EXPECT_EQ(r.slipping, expect_slip);
+  const auto analytic = [&](int row, int v) {
+    const auto kind = [&](const LawResponse& l, int order) {
+      return order == 0 ? l.stiffness : order == 1 ? l.damping : l.mass;
+    };
+    const std::size_t a = static_cast<std::size_t>(row - 1);
+    if (v < 2) return kind(row == 0 ? r.normal : r.tangential_on_normal[a], v);
+    if (row == 0) return 0.0;
+    const int order = v < 4 ? 0 : v < 6 ? 1 : 2;
+    const std::size_t b = static_cast<std::size_t>(v < 6 ? (v - 2) % 2 : 0);
+    return kind(r.tangential_on_slip[a][b], order);
+  };
+  const auto forces = [](const FrictionResponse& f) {
+    return std::array<double, 3>{f.normal.force, f.tangential_force[0], f.tangential_force[1]};
+  };
+  double worst = 0.0;
+  for (int v = 0; v < columns; ++v) {
+    const double h = 1e-7 * std::max(std::abs(at[static_cast<std::size_t>(v)]), 1e-3);
+    PlaneTrial up = at, down = at;
+    up[static_cast<std::size_t>(v)] += h;
+    down[static_cast<std::size_t>(v)] -= h;
+    const auto p = forces(in_plane(friction, up)), m = forces(in_plane(friction, down));
+    const double scale =
+        std::abs(r.normal.force) / std::max(std::abs(at[static_cast<std::size_t>(v)]), 1e-3);
+    for (int row = 0; row < 3; ++row)
+      worst = std::max(
+          worst,
+          std::abs((p[static_cast<std::size_t>(row)] - m[static_cast<std::size_t>(row)]) / (2 * h) -
+                   analytic(row, v)) /
+              scale);
+  }
+  return worst;
+}
+
+TEST(CoulombFriction, InAContactPlaneTheLimitIsACircleAndSlipOpposesTheVelocity) {
+  CoulombFriction friction = in_plane_law();
+  in_plane(friction, {-1e-4, 0.1, 0, 0, 0, 0, 0});
+  friction.commit();
+  // R_n = 1e6 * 1e-4 = 100 N, limit 40 N. A stick force of (30, 30) N is 42 N: it slips,
+  // though each component is below the limit.
+  const FrictionResponse box = in_plane(friction, {1e-4, 0, 1.5e-4, 1.5e-4, 0, 0, 0});
+  EXPECT_TRUE(box.slipping);
+  EXPECT_NEAR(std::hypot(box.tangential_force[0], box.tangential_force[1]), 40.0, 1e-9);
+  EXPECT_NEAR(box.tangential_force[0], box.tangential_force[1], 1e-12);
+  const FrictionResponse held = in_plane(friction, {1e-4, 0, 1.0e-4, 1.0e-4, 0, 0, 0});
+  EXPECT_FALSE(held.slipping);
+  EXPECT_NEAR(held.tangential_force[0], 20.0, 1e-9);
+  // Sliding along (3, -4) / 5: the force is 40 N along the velocity, whatever the slide.
+  const FrictionResponse slide = in_plane(friction, {1e-4, 0, 1e-2, 0.0, 0.3, -0.4, 0});
+  EXPECT_TRUE(slide.slipping);
+  EXPECT_NEAR(slide.tangential_force[0], 0.4 * 100.0 * 0.6, 1e-9);
+  EXPECT_NEAR(slide.tangential_force[1], -0.4 * 100.0 * 0.8, 1e-9);
+}
+
+TEST(CoulombFriction, InAContactPlaneTheTangentMatchesFiniteDifferences) {
+  const double stick = plane_tangent_error({1e-4, 0.01, 1e-6, -2e-6, 1e-3, 2e-3, 0.5}, false, 7);
+  const double slip = plane_tangent_error({1e-4, 0.01, 1e-2, -3e-3, 0.3, -0.4, 2.0}, true, 7);
+  // At rest and slipping: the direction is the stick force's (rate columns left out).
+  const double rest = plane_tangent_error({1e-4, 0.0, 2e-4, -1.5e-4, 0.0, 0.0, 0.0}, true, 4);
+  std::cout << "in-plane tangent errors: stick " << stick << ", slip " << slip << ", slip at rest "
+            << rest << "\n";
+  EXPECT_LT(stick, 1e-6);
+  EXPECT_LT(slip, 1e-6);
+  EXPECT_LT(rest, 1e-6);
 }
 
 }  // namespace

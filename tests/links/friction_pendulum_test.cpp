@@ -34,8 +34,8 @@ double tangent_error(CoulombFriction& friction, const Trial& at, bool expect_sli
   EXPECT_EQ(r.slipping, expect_slip);
   EXPECT_GT(r.normal.force, 0.0);
   const LawResponse& n = r.normal;
-  const LawResponse& tn = r.tangential_on_normal;
-  const LawResponse& ts = r.tangential_on_slip;
+  const LawResponse& tn = r.tangential_on_normal[0];
+  const LawResponse& ts = r.tangential_on_slip[0][0];
   const double analytic[2][6] = {
       {n.stiffness, n.damping, n.mass, 0.0, 0.0, 0.0},
       {tn.stiffness, tn.damping, tn.mass, ts.stiffness, ts.damping, ts.mass}};
@@ -49,9 +49,9 @@ double tangent_error(CoulombFriction& friction, const Trial& at, bool expect_sli
     EXPECT_EQ(p.slipping, expect_slip);
     EXPECT_EQ(m.slipping, expect_slip);
     const double numeric[2] = {(p.normal.force - m.normal.force) / (2 * h),
-                               (p.tangential_force - m.tangential_force) / (2 * h)};
+                               (p.tangential_force[0] - m.tangential_force[0]) / (2 * h)};
     double scale = std::max(std::abs(analytic[0][v]), std::abs(analytic[1][v]));
-    if (scale == 0.0) scale = std::abs(r.tangential_force) / std::max(std::abs(at[v]), 1e-3);
+    if (scale == 0.0) scale = std::abs(r.tangential_force[0]) / std::max(std::abs(at[v]), 1e-3);
     for (int row = 0; row < 2; ++row)
       worst = std::max(worst, std::abs(numeric[row] - analytic[row][v]) / scale);
   }
@@ -123,14 +123,14 @@ TEST(FrictionPendulum, AddsTheRestoringForceOfTheVerticalLoadToTheFlatSlider) {
   const double normal = 1e8 * 1e-4;
   for (const Trial& at : {Trial{1e-4, 0, 0, 1e-7, 0, 0}, Trial{1e-4, 0, 0, 0.2, 0.4, 0}}) {
     const FrictionResponse f = evaluate(flat, at), p = evaluate(pendulum, at);
-    EXPECT_DOUBLE_EQ(p.tangential_force - f.tangential_force, normal * at[3] / kRadius);
-    EXPECT_DOUBLE_EQ(p.tangential_on_slip.stiffness - f.tangential_on_slip.stiffness,
+    EXPECT_DOUBLE_EQ(p.tangential_force[0] - f.tangential_force[0], normal * at[3] / kRadius);
+    EXPECT_DOUBLE_EQ(p.tangential_on_slip[0][0].stiffness - f.tangential_on_slip[0][0].stiffness,
                      normal / kRadius);
-    EXPECT_DOUBLE_EQ(p.tangential_on_normal.stiffness - f.tangential_on_normal.stiffness,
+    EXPECT_DOUBLE_EQ(p.tangential_on_normal[0].stiffness - f.tangential_on_normal[0].stiffness,
                      1e8 * at[3] / kRadius);
   }
   // Apart: no force at all, however far off the centre.
-  EXPECT_EQ(evaluate(pendulum, {-1e-4, 0, 0, 0.2, 0.4, 0}).tangential_force, 0.0);
+  EXPECT_EQ(evaluate(pendulum, {-1e-4, 0, 0, 0.2, 0.4, 0}).tangential_force[0], 0.0);
 }
 
 // One slow cycle of s = D sin(2 pi t / T) on a normal spring pressed by W: the loop's forces,
@@ -160,7 +160,7 @@ Loop sinusoidal_slide(double weight) {
     const double rate = kAmplitude * 2 * std::numbers::pi / period * std::cos(phase);
     const FrictionResponse r = friction.set_trial({delta, 0.0, 0.0}, {s, rate, 0.0});
     friction.commit();
-    const double force = r.tangential_force;
+    const double force = r.tangential_force[0];
     if (step > steps) loop.energy += 0.5 * (force + previous_force) * (s - previous_s);
     // One step before the turning points, where s_dot is clearly non-zero.
     if (step == steps + steps / 4 - 1) {

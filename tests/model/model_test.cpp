@@ -3,6 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
+#include <tuple>
+
 #include "assembly/beam.hpp"
 #include "assembly/quad.hpp"
 #include "assembly/truss.hpp"
@@ -67,6 +71,48 @@ TEST(Model, OnlyNodesOfRotatingElementsHaveARotation) {
   EXPECT_EQ(dofs.size(), 4 * 2 + 2);
   for (Index node : {0, 3}) EXPECT_EQ(dofs.equation(node, 2), -1) << node;
   for (Index node : {1, 2}) EXPECT_GE(dofs.equation(node, 2), 0) << node;
+}
+
+}  // namespace
+}  // namespace pound::model
+
+namespace pound::model {
+namespace {
+
+double dot3(const Coordinates& a, const Coordinates& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+// The contact plane of a link: t_1, t_2 and n orthonormal for any n, the plane scene's tangent
+// to the bit for an n in the x-y plane, x and y for a vertical n of either sign.
+TEST(ContactTangents, AreOrthonormalAndMatchThePlaneScenesTangent) {
+  EXPECT_EQ(contact_tangents({0.6, 0.8, 0.0}, 2), (std::vector<Coordinates>{{-0.8, 0.6, 0.0}}));
+  const std::vector<Coordinates> horizontal = contact_tangents({0.6, 0.8, 0.0}, 3);
+  EXPECT_EQ(horizontal[0], (Coordinates{-0.8, 0.6, 0.0}));
+  EXPECT_NEAR(horizontal[1][2], 1.0, 1e-15);
+  for (const Coordinates& down : {Coordinates{0, 0, -1}, Coordinates{0, 0, 1}}) {
+    const std::vector<Coordinates> vertical = contact_tangents(down, 3);
+    EXPECT_EQ(vertical[0], (Coordinates{1, 0, 0}));
+    EXPECT_EQ(vertical[1], (Coordinates{0, 1, 0}));
+  }
+  double worst = 0.0;
+  for (const Coordinates& raw :
+       {Coordinates{1, 2, 2}, Coordinates{-0.3, 0.1, 5}, Coordinates{1e-12, 0, 1},
+        Coordinates{0, -1, -1}, Coordinates{3, -4, 0.5}}) {
+    const double length = std::sqrt(dot3(raw, raw));
+    const Coordinates n{raw[0] / length, raw[1] / length, raw[2] / length};
+    const std::vector<Coordinates> t = contact_tangents(n, 3);
+    ASSERT_EQ(t.size(), 2u);
+    for (const auto& [a, b, expected] : {std::tuple{t[0], t[0], 1.0},
+                                         {t[1], t[1], 1.0},
+                                         {t[0], t[1], 0.0},
+                                         {t[0], n, 0.0},
+                                         {t[1], n, 0.0}})
+      worst = std::max(worst, std::abs(dot3(a, b) - expected));
+    EXPECT_LT(std::abs(t[0][2]), 1e-11);  // t_1 horizontal (but for n's own round-off)
+  }
+  std::printf("  contact planes: largest departure from orthonormal %.1e\n", worst);
+  EXPECT_LT(worst, 1e-15);
 }
 
 }  // namespace

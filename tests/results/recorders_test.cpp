@@ -22,7 +22,7 @@ integrators::State link_state(double time, const Vector& force, const Vector& pe
 
 TEST(LinkRecorder, WritesForceAndPenetrationAndForAFrictionLinkItsTangentialRow) {
   HistoryRecorder recorder(
-      "links.csv", std::make_unique<LinkQuantities>(std::vector<LinkRows>{{0, false}, {1, true}},
+      "links.csv", std::make_unique<LinkQuantities>(std::vector<LinkRows>{{0, 0}, {1, 1}},
                                                     std::vector<std::string>{"joint", "pad"}));
   EXPECT_EQ(recorder.file(), "links.csv");
   const std::vector<std::string> columns = {"time",      "joint.force",     "joint.penetration",
@@ -97,7 +97,7 @@ TEST(NodeRecorder, WritesOnlyTheAccelerationsAskedFor) {
 // One link "gap" whose force is 10 t: the rows kept say which steps a sampling took.
 std::vector<double> kept_times(builder::OutputSampling sampling, double dt, int steps) {
   HistoryRecorder recorder("gap.csv",
-                           std::make_unique<LinkQuantities>(std::vector<LinkRows>{{0, false}},
+                           std::make_unique<LinkQuantities>(std::vector<LinkRows>{{0, 0}},
                                                             std::vector<std::string>{"gap"}),
                            sampling);
   for (int k = 0; k <= steps; ++k) {
@@ -131,7 +131,7 @@ TEST(HistoryRecorder, KeepsTheFirstStepAtOrAfterEachMultipleOfTheInterval) {
 TEST(HistoryRecorder, HoldsWhatItsSamplingKeepsForTheMemoryCheck) {
   auto recorder = [](builder::OutputSampling sampling) {
     return HistoryRecorder("gap.csv",
-                           std::make_unique<LinkQuantities>(std::vector<LinkRows>{{0, false}},
+                           std::make_unique<LinkQuantities>(std::vector<LinkRows>{{0, 0}},
                                                             std::vector<std::string>{"gap"}),
                            sampling);
   };
@@ -142,7 +142,7 @@ TEST(HistoryRecorder, HoldsWhatItsSamplingKeepsForTheMemoryCheck) {
 
 TEST(EnvelopeRecorder, GivesMaxMinTheirFirstTimesAndTheLargestMagnitudePerQuantity) {
   EnvelopeRecorder recorder(
-      "envelope.csv", std::make_unique<LinkQuantities>(std::vector<LinkRows>{{0, false}, {1, true}},
+      "envelope.csv", std::make_unique<LinkQuantities>(std::vector<LinkRows>{{0, 0}, {1, 1}},
                                                        std::vector<std::string>{"joint", "pad"}));
   const double forces[][3] = {{0, 1, -1}, {5, 2, 3}, {5, -7, 0}, {-2, 2, 1}};
   for (int k = 0; k < 4; ++k)

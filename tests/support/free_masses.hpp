@@ -63,7 +63,7 @@ inline integrators::LinkSet hard_contact_on_the_ground(double gap, double restit
   std::vector<integrators::LinkSet::Link> links(1);
   links[0].normal_row = {{1, -1.0}};
   links[0].gap = gap;
-  links[0].tangential_row = {{0, 1.0}};
+  links[0].tangential_rows = {{{0, 1.0}}};
   links[0].friction = std::make_unique<links::CoulombFriction>(
       std::make_unique<links::HardContact>(restitution), coefficient, links::StickPenalty{});
   return integrators::LinkSet(2, std::move(links));
