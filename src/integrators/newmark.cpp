@@ -154,9 +154,12 @@ void Newmark::initialize(SecondOrderSystem& system, State& state, double /*first
   }
   gaps_ = &links.gaps();
   link_rows_.assign(static_cast<std::size_t>(links.size()), {});
-  for (Index k = 0; k < links.count(); ++k)
+  link_blocks_ = false;
+  for (Index k = 0; k < links.count(); ++k) {
+    link_blocks_ = link_blocks_ || links.rows(k) > 1;
     for (Index r = links.row(k); r < links.row(k) + links.rows(k); ++r)
       link_rows_[static_cast<std::size_t>(r)] = {links.row(k), links.row(k) + links.rows(k)};
+  }
   LinkSet::HardRows hard_rows = links.hard_rows();
   hard_laws_ = std::move(hard_rows.contacts);
   hard_frictions_ = std::move(hard_rows.frictions);
@@ -461,6 +464,7 @@ void Newmark::solve_correction(const Factorization& f) {
   moved_rows_.clear();
   // The other rows of r's link (a friction link's), whose tangents T(r, q) couple into row r.
   const auto others = [&](Index r, auto&& visit) {
+    if (!link_blocks_) return;
     const LinkRows& rows = link_rows_[static_cast<std::size_t>(r)];
     for (Index q = rows.first; q < rows.end; ++q)
       if (q != r && tangent_(r, q) != 0.0) visit(q);
@@ -495,6 +499,7 @@ void Newmark::solve_correction(const Factorization& f) {
   for (const Index r : active_rows_) {
     active_tangents_.insert(active_tangents_.end(),
                             {tangent_(r, r), hard_slip_[static_cast<std::size_t>(r)]});
+    if (!link_blocks_) continue;
     const LinkRows& rows = link_rows_[static_cast<std::size_t>(r)];
     for (Index q = rows.first; q < rows.end; ++q)
       if (q != r) active_tangents_.push_back(tangent_(r, q));
