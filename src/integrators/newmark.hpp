@@ -184,7 +184,7 @@ class Newmark final : public Integrator {
     Index first = 0, end = 0;
   };
   std::vector<LinkRows> link_rows_;
-  bool link_blocks_ = false;  // any link with more than one row
+  bool link_blocks_ = false;             // any link with more than one row
   std::vector<Index> active_rows_;       // link rows with a tangent, in order
   std::vector<Index> moved_rows_;        // the others with a residual
   std::vector<double> active_tangents_;  // T(r, r), slip, T(r, q) of each active row
