@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <span>
+#include <stdexcept>
 #include <utility>
 
 namespace pound::integrators {
@@ -40,8 +41,12 @@ LinkSet::LinkSet(Index dofs, std::vector<Link> links) : links_(std::move(links))
   for (const Link& link : links_) {
     first_row_.push_back(rows);
     add_row(link.normal_row, link.gap);
-    assert(!link.friction ||
-           static_cast<int>(link.tangential_rows.size()) == link.friction->tangents());
+    if (link.friction &&
+        (static_cast<int>(link.tangential_rows.size()) != link.friction->tangents() ||
+         (link.friction->hard_contact() && link.friction->tangents() != 1)))
+      throw std::invalid_argument(
+          "a friction link needs one tangential row per tangent of its law, and friction on a "
+          "hard contact one tangent (the integrators solve it in a plane)");
     for (const std::vector<Term>& tangential : link.tangential_rows) add_row(tangential, 0.0);
   }
   connectivity_.resize(rows, dofs);

@@ -8,10 +8,12 @@
 
 #include <array>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include "links/coulomb_friction.hpp"
 #include "links/gap_spring.hpp"
+#include "links/hard_contact.hpp"
 #include "links/kelvin_voigt.hpp"
 #include "support/vectors.hpp"
 
@@ -169,6 +171,34 @@ TEST(LinkSet, AnchoringFrictionAtRestSetsTheStickForce) {
   // The tangential force asked for is the one of the friction link's tangential row (row 2).
   links.anchor_friction_at_rest(entries({123.0, 456.0, 1.0}));
   EXPECT_NEAR(trial(links, entries({0.05, 0.02, 0.17}), none, none).force[2], 1.0, 1e-12);
+}
+
+// A link in a contact plane has three rows (normal, t1, t2) whose 3 x 3 tangent block is filled;
+// a friction law's tangents must match its rows, and hard friction stays in a plane.
+TEST(LinkSet, FrictionInAContactPlaneHasARowPerTangent) {
+  const auto plane_link = [](int tangents, std::unique_ptr<links::LinkLaw> normal) {
+    std::vector<LinkSet::Link> links(1);
+    links[0].normal_row = {{2, 1.0}};
+    links[0].tangential_rows = {{{0, 1.0}}, {{1, 1.0}}};
+    links[0].friction = std::make_unique<links::CoulombFriction>(
+        std::move(normal), 0.5, links::StickPenalty{.stiffness = 50.0}, std::nullopt, tangents);
+    return LinkSet(3, std::move(links));
+  };
+  LinkSet links = plane_link(2, std::make_unique<links::GapSpring>(200.0));
+  EXPECT_EQ(links.size(), 3);
+  EXPECT_EQ(links.rows(0), 3);
+  Vector force;
+  Matrix tangent;
+  // Pressed by 200 * 0.01 = 2 (limit 1), sliding along (3, 4) / 5: slips, the turn couples t1, t2.
+  links.set_trial(Vector{{0.01, -0.02, 0.01}}, Vector{{0.0, 0.3, 0.4}}, Vector::Zero(3), 1.0, 0.0,
+                  force, tangent);
+  EXPECT_NEAR(force[1], 0.6, 1e-15);
+  EXPECT_NEAR(force[2], 0.8, 1e-15);
+  EXPECT_NEAR(tangent(1, 2), -1.0 * 0.6 * 0.8 / 0.5, 1e-15);
+  EXPECT_NEAR(tangent(2, 1), tangent(1, 2), 1e-15);
+  EXPECT_NEAR(tangent(1, 0), 0.5 * 0.6 * 200.0, 1e-12);
+  EXPECT_THROW(plane_link(1, std::make_unique<links::GapSpring>(200.0)), std::invalid_argument);
+  EXPECT_THROW(plane_link(2, std::make_unique<links::HardContact>(0.0)), std::invalid_argument);
 }
 
 TEST(LinkSet, ScalarLinksHaveOneRowEach) {
