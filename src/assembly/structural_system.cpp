@@ -272,21 +272,49 @@ std::vector<model::Coordinates> tangents(const model::Link& link, int dimension)
                        : std::vector<model::Coordinates>{};
 }
 
+// A row's direction over the DOFs of node i and of node j (the same unless the ends are offset).
+struct EndDirections {
+  NodeVector i, j;
+};
+
+// Rotational rows act on the rotations alone. A translation row along d moves an end offset by r
+// as d . (u + theta x r) = d . u + theta . (r x d): r x d on the end's rotations.
+EndDirections row_directions(const model::Link& link, const model::Coordinates& along,
+                             int dimension) {
+  if (link.rotational) {
+    const NodeVector direction = normal_direction(link, dimension);
+    return {direction, direction};
+  }
+  const auto at = [&](const model::Coordinates& r) {
+    NodeVector direction = model::over_directions(along, false, dimension);
+    if (r == model::Coordinates{}) return direction;
+    const model::Coordinates moment{r[1] * along[2] - r[2] * along[1],
+                                    r[2] * along[0] - r[0] * along[2],
+                                    r[0] * along[1] - r[1] * along[0]};
+    const NodeVector turn = model::over_directions(moment, true, dimension);
+    for (std::size_t d = 0; d < direction.size(); ++d) direction[d] += turn[d];
+    return direction;
+  };
+  return {at(link.offsets[0]), at(link.offsets[1])};
+}
+
 // Row of a direction d: +d at node i, -d at node j (fixed DOFs dropped); for a point inside a
 // segment j-k, -(1 - w) d at node j and -w d at node k.
 std::vector<integrators::LinkSet::Term> link_row(const model::DofMap& dofs, const model::Link& link,
-                                                 const NodeVector& direction) {
+                                                 const EndDirections& direction) {
   std::vector<integrators::LinkSet::Term> row;
   for (int d = 0; d < dofs.dofs_per_node(); ++d) {
-    const double component = direction[static_cast<std::size_t>(d)];
-    if (component == 0.0) continue;
-    if (const Index eq = dofs.equation(link.node_i, d); eq >= 0) row.push_back({eq, component});
+    const double at_i = direction.i[static_cast<std::size_t>(d)];
+    const double at_j = direction.j[static_cast<std::size_t>(d)];
+    if (at_i != 0.0)
+      if (const Index eq = dofs.equation(link.node_i, d); eq >= 0) row.push_back({eq, at_i});
+    if (at_j == 0.0) continue;
     const double weight_j = link.segment_end ? 1.0 - link.segment_weight : 1.0;
     if (const Index eq = dofs.equation(link.node_j, d); eq >= 0 && weight_j != 0.0)
-      row.push_back({eq, -weight_j * component});
+      row.push_back({eq, -weight_j * at_j});
     if (link.segment_end && link.segment_weight != 0.0)
       if (const Index eq = dofs.equation(*link.segment_end, d); eq >= 0)
-        row.push_back({eq, -link.segment_weight * component});
+        row.push_back({eq, -link.segment_weight * at_j});
   }
   return row;
 }
@@ -303,7 +331,7 @@ links::StickPenalty stick_penalty(const links::LinkLaw& law, const model::LinkFr
 integrators::LinkSet::Link link_entry(const model::DofMap& dofs, const model::Link& link,
                                       std::unique_ptr<links::LinkLaw> law) {
   integrators::LinkSet::Link entry;
-  entry.normal_row = link_row(dofs, link, normal_direction(link, dofs.dimension()));
+  entry.normal_row = link_row(dofs, link, row_directions(link, link.axis, dofs.dimension()));
   entry.gap = link.gap;
   if (!link.friction) {
     entry.law = std::move(law);
@@ -312,7 +340,7 @@ integrators::LinkSet::Link link_entry(const model::DofMap& dofs, const model::Li
   const std::vector<model::Coordinates> along = tangents(link, dofs.dimension());
   for (const model::Coordinates& tangent : along)
     entry.tangential_rows.push_back(
-        link_row(dofs, link, model::over_directions(tangent, false, dofs.dimension())));
+        link_row(dofs, link, row_directions(link, tangent, dofs.dimension())));
   const links::StickPenalty stick = stick_penalty(*law, *link.friction);
   entry.friction = std::make_unique<links::CoulombFriction>(
       std::move(law), link.friction->coefficient, stick, link.friction->radius,

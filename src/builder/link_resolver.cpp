@@ -66,16 +66,37 @@ void resolve_axis(const LinkPlace& place, model::Link& link) {
   if (place.spec.segment_end) return;
   // A hinge acts on theta_i - theta_j, about z in a plane (no axis; its nodes may meet).
   if (place.spec.rotational) return;
-  const auto& a = place.position(link.node_i);
-  const auto& b = place.position(link.node_j);
+  // From the point that touches at i to the one at j (the nodes unless offset).
+  model::Coordinates a = place.position(link.node_i);
+  model::Coordinates b = place.position(link.node_j);
+  for (std::size_t k = 0; k < 3; ++k) {
+    a[k] += link.offsets[0][k];
+    b[k] += link.offsets[1][k];
+  }
   const double length = model::distance(a, b, place.model.dimension);
   if (!(length > 0.0))
-    place.fail("", fmt::format("nodes '{}' and '{}' are at the same place: give the link an "
-                               "\"axis\"",
-                               place.spec.node_i, place.spec.node_j));
+    place.fail(
+        "", fmt::format("{} are at the same place: give the link an \"axis\"",
+                        link.has_offsets() ? "the points the link's offsets reach"
+                                           : fmt::format("nodes '{}' and '{}'", place.spec.node_i,
+                                                         place.spec.node_j)));
   link.axis = {};
   for (std::size_t k = 0; k < static_cast<std::size_t>(place.model.dimension); ++k)
     link.axis[k] = (b[k] - a[k]) / length;
+}
+
+// Offsets turn the link's ends: a hinge or a point on a segment has no point of its own to offset.
+void resolve_offsets(const LinkPlace& place, model::Link& link) {
+  if (!place.spec.offsets) return;
+  if (place.spec.rotational)
+    place.fail("/rigid_offsets", "a rotational link acts on the nodes' rotations: no offsets");
+  if (place.spec.segment_end)
+    place.fail("/rigid_offsets", "a node-to-segment link takes no offsets");
+  link.offsets = *place.spec.offsets;
+  for (const auto& end : link.offsets)
+    for (const double component : end)
+      if (!std::isfinite(component) || std::abs(component) > 1e12)
+        place.fail("/rigid_offsets", "offsets must be finite, each component within 1e12");
 }
 
 void resolve_law(const LinkPlace& place, model::Link& link) {
@@ -154,6 +175,7 @@ model::Link resolve_link(const LinkPlace& place) {
   link.rotational = spec.rotational;
   link.velocity_j = {spec.velocity_j[0], spec.velocity_j[1]};
   if (spec.segment_end) resolve_segment(place, link);
+  resolve_offsets(place, link);
   resolve_axis(place, link);
   resolve_law(place, link);
   if (spec.friction) resolve_friction(place, link);

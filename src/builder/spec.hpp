@@ -115,7 +115,10 @@ struct LinkSpec {
   double gap = 0.0;                         // [L], >= 0; never negative, never flipped
   std::optional<std::vector<double>> axis;  // unit vector from i to j; default from coordinates
   LawSpec law;
-  std::optional<FrictionSpec> friction;  // 2-D only
+  std::optional<FrictionSpec> friction;
+  // Rigid offsets [L] from node i and node j to the points that touch (global axes; z = 0 in a
+  // plane): a deck corner or a floor corner rigidly tied to the node at its centre.
+  std::optional<std::array<std::array<double, 3>, 2>> offsets;
   bool rotational = false;  // "dof": "rotation": acts on theta_i - theta_j (hinge springs)
   // Node-to-segment: the j side is the point of segment node_j - segment_end nearest node i.
   std::optional<std::string> segment_end;

@@ -444,20 +444,61 @@ bool CentralDifference::solve_hard_group(const std::vector<Index>& rows, double 
                                          const Vector& acceleration, Vector& forces) {
   prepare_hard_group(rows, dt, scale, penetration, rate, acceleration);
   const auto size = static_cast<int>(rows.size());
-  for (int iteration = 0; iteration < 8 * size + 8; ++iteration) {
+  bool settled = false;
+  for (int iteration = 0; iteration < 8 * size + 8 && !settled; ++iteration) {
     solve_active_hard_rows(rows, scale);
-    if (update_hard_active_set(rows, scale)) continue;
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-      const Index r = rows[i];
-      const double force = group_force_[static_cast<Index>(i)];
-      forces[r] = force;
-      if (links::HardContact* law = hard_laws_[static_cast<std::size_t>(r)])
-        law->impose(force);
-      else
-        hard_frictions_[static_cast<std::size_t>(r)]->impose_tangential(
-            force, slip_[i] != 0 && hard_row_active(rows, i));
+    settled = !update_hard_active_set(rows, scale);
+  }
+  if (!settled && !enumerate_hard_states(rows, scale)) return false;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const Index r = rows[i];
+    const double force = group_force_[static_cast<Index>(i)];
+    forces[r] = force;
+    if (links::HardContact* law = hard_laws_[static_cast<std::size_t>(r)])
+      law->impose(force);
+    else
+      hard_frictions_[static_cast<std::size_t>(r)]->impose_tangential(
+          force, slip_[i] != 0 && hard_row_active(rows, i));
+  }
+  return true;
+}
+
+// One change at a time can cycle when several frictional contacts strike together (a skewed
+// deck's two corners, one about to stick as the other slips): a small group then tries every
+// combination of states, each contact lifted or pressing, and then sticking or slipping either
+// way, and keeps the first that asks for no change (the enumeration of Pfeiffer & Glocker,
+// "Multibody Dynamics with Unilateral Contacts", 1996, ch. 7, for small contact problems).
+bool CentralDifference::enumerate_hard_states(const std::vector<Index>& rows, double scale) {
+  std::vector<std::size_t> contacts;
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    if (hard_laws_[static_cast<std::size_t>(rows[i])]) contacts.push_back(i);
+  if (contacts.size() > 6) return false;
+  const auto rubs = [&](std::size_t i) {
+    return i + 1 < rows.size() && hard_frictions_[static_cast<std::size_t>(rows[i + 1])];
+  };
+  long combinations = 1;
+  for (const std::size_t i : contacts) combinations *= rubs(i) ? 4 : 2;
+  const std::vector<char> candidates = candidate_;
+  const Vector bounds = bound_;
+  for (long combination = 0; combination < combinations; ++combination) {
+    candidate_ = candidates;
+    bound_ = bounds;
+    active_.assign(rows.size(), 0);
+    slip_.assign(rows.size(), 0);
+    long code = combination;
+    for (const std::size_t i : contacts) {
+      const long states = rubs(i) ? 4 : 2, state = code % states;  // 0 lifted, 1 stick, 2-3 slip
+      code /= states;
+      if (state == 0) continue;
+      active_[i] = 1;
+      if (!candidate_[i]) {
+        candidate_[i] = 1;
+        bound_[static_cast<Index>(i)] = 0.0;
+      }
+      if (state > 1) slip_[i + 1] = state == 2 ? 1 : -1;
     }
-    return true;
+    solve_active_hard_rows(rows, scale);
+    if (group_force_.allFinite() && !update_hard_active_set(rows, scale)) return true;
   }
   return false;
 }

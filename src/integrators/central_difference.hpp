@@ -75,6 +75,9 @@ class CentralDifference final : public Integrator {
   // One change of the active set (or of a friction row's stick / slip); false when none is due.
   bool update_hard_active_set(const std::vector<Index>& rows, double scale);
   bool update_hard_friction(const std::vector<Index>& rows, double scale);
+  // Every combination of the group's contact states, when one change at a time cycles; false
+  // when none is consistent (or the group has more than 6 contacts).
+  bool enumerate_hard_states(const std::vector<Index>& rows, double scale);
   // Every hard row's force to zero (the force laws' solve comes first).
   void release_hard_forces();
   // Contacts already closing at t_0 get their force into F_0 and a_0, so that u_1 does not

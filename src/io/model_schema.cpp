@@ -155,6 +155,28 @@ struct RigidOffsets {
   std::string type() const { return "[[x, y, z], [x, y, z]]"; }
 };
 
+// A link's rigid offsets: [[x, y], [x, y]] in a plane, [[x, y, z], [x, y, z]] in space.
+struct LinkOffsets {
+  using value_type = std::array<std::array<double, 3>, 2>;
+
+  void read(const JsonValue& value, value_type& target, Context& context) const {
+    const std::vector<JsonValue> ends = value.elements(2, 2);
+    const auto count = static_cast<std::size_t>(context.dimension);
+    for (std::size_t k = 0; k < 2; ++k) {
+      const std::vector<JsonValue> components = ends[k].elements(count, count);
+      target[k] = {};
+      for (std::size_t d = 0; d < count; ++d) target[k][d] = components[d].as<double>();
+    }
+  }
+  OrderedJson write(const value_type& value, const Context& context) const {
+    OrderedJson ends = OrderedJson::array();
+    for (const auto& end : value)
+      ends.push_back(std::vector<double>(end.begin(), end.begin() + context.dimension));
+    return ends;
+  }
+  std::string type() const { return "[[x, y], [x, y]] in 2-D, [[x, y, z], [x, y, z]] in 3-D"; }
+};
+
 using Coefficients = std::array<double, 2>;
 
 const Fields<Coefficients>& rayleigh_fields() {
@@ -451,6 +473,10 @@ const Fields<LinkSpec>& link_fields() {
       optional("axis", &LinkSpec::axis, UnitVector<std::vector<double>>{},
                "from node i towards node j; needed when they are at the same place")
           .default_text("from the coordinates"),
+      optional("rigid_offsets", &LinkSpec::offsets, LinkOffsets{},
+               "from node i and node j to the points that touch, rigidly tied to the nodes, "
+               "which turn with them (a deck or floor corner) [L]")
+          .in_dimensions(2, 3),
       optional("surface_velocity", &LinkSpec::velocity_j, Pair<>{},
                "the j side's own constant velocity [L/T]")
           .in_plane(),

@@ -40,8 +40,9 @@ int Model::dofs_per_node() const {
   int count = dimension;
   for (const auto& element : elements)
     for (int direction : element->directions()) count = std::max(count, direction + 1);
-  // A rotational link turns its nodes about an axis of the scene.
-  if (std::ranges::any_of(links, [](const Link& link) { return link.rotational; }))
+  // A rotational link turns its nodes about an axis of the scene, a link with offsets its ends.
+  if (std::ranges::any_of(links,
+                          [](const Link& link) { return link.rotational || link.has_offsets(); }))
     count = direction_count(dimension);
   return count;
 }
@@ -56,10 +57,14 @@ DofMap::DofMap(const Model& model)
   for (const auto& element : model.elements)
     if (std::ranges::any_of(element->directions(), is_rotation))
       for (Index node : element->nodes()) turns[static_cast<std::size_t>(node)] = true;
-  for (const Link& link : model.links)
+  for (const Link& link : model.links) {
     if (link.rotational)
       turns[static_cast<std::size_t>(link.node_i)] = turns[static_cast<std::size_t>(link.node_j)] =
           true;
+    // An end whose point is offset turns with it.
+    if (link.offsets[0] != Coordinates{}) turns[static_cast<std::size_t>(link.node_i)] = true;
+    if (link.offsets[1] != Coordinates{}) turns[static_cast<std::size_t>(link.node_j)] = true;
+  }
   const auto per_node = static_cast<std::size_t>(dofs_per_node_);
   for (std::size_t node = 0; node < turns.size(); ++node)
     for (int d = 0; d < dofs_per_node_; ++d)

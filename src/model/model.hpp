@@ -65,6 +65,7 @@ struct SupportExcitation {
 // penetration delta = (u_i - u_j) . n - gap.
 // Coulomb friction in the contact plane: along the tangent t = n rotated by +90 degrees in a
 // plane scene; along t_1 and t_2 (contact_tangents) in 3-D.
+// With rigid offsets r_i, r_j the points that touch are node + r, moving as u + theta x r.
 // Node-to-segment: the j side is the point (1 - w) u_j + w u_k of the segment j-k, w fixed at
 // t = 0 (small sliding). A rigid moving surface (a belt) is a fixed node j whose side of the
 // link moves at a constant velocity: u_j + velocity_j t.
@@ -93,6 +94,10 @@ struct Link {
   const links::LawEntry* law = nullptr;  // its law's registry entry (role, traits); none in code
   links::LawFactory make_law;
   std::optional<LinkFriction> friction;
+  // Rigid offsets from node i and node j to the points that touch: the row follows
+  // u + theta x r at each end (small rotations), so the nodes turn with the link.
+  std::array<Coordinates, 2> offsets{};
+  bool has_offsets() const { return offsets != std::array<Coordinates, 2>{}; }
   std::optional<Index> segment_end;  // node k
   double segment_weight = 0.0;       // w in [0, 1]
   Coordinates velocity_j{0.0, 0.0};  // [L/T]

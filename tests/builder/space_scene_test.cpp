@@ -359,6 +359,14 @@ TEST(SpaceScene, MeaninglessSpaceInputIsRefusedWithItsPath) {
   turning_friction["links"][0]["law"] = {{"type", "gap_spring"}, {"stiffness", 1e6}};
   turning_friction["links"][0]["friction"] = {{"coefficient", 0.3}};
   expect_refused(turning_friction, "/links/0/friction", "no contact plane");
+  json offset = link;
+  offset["links"][0]["rigid_offsets"] = {{0.0, 0.5, 0.0}, {0.0, 0.5, 0.0}};
+  ASSERT_FALSE(error_of(offset));
+  offset["links"][0]["rigid_offsets"][1] = {0.0, 0.5};
+  expect_refused(offset, "/links/0/rigid_offsets/1", "expected exactly 3 elements");
+  json turning_offset = hinge;
+  turning_offset["links"][0]["rigid_offsets"] = {{0.0, 0.5, 0.0}, {0.0, 0.0, 0.0}};
+  expect_refused(turning_offset, "/links/0/rigid_offsets", "rotational link");
 }
 
 }  // namespace
