@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <Eigen/LU>
+#include <Eigen/QR>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -442,6 +443,15 @@ bool Newmark::solve_link_forces(SecondOrderSystem& system, const Factorization& 
   }
 }
 
+// More hard constraints than the DOFs they hold (a rigid deck's two corners sticking: four rows on
+// three DOFs) make the Jacobian singular; their forces are then not unique, but the motion is:
+// the least-norm correction (a complete orthogonal decomposition) finds one set of them.
+namespace {
+Vector least_norm_correction(const Matrix& jacobian, const Vector& residual) {
+  return jacobian.completeOrthogonalDecomposition().solve(residual);
+}
+}  // namespace
+
 // d(residual)/dF = I + T G, with T block diagonal (a link's row, or its normal and tangential
 // rows). A row whose tangent is zero (an open contact, a slack restrainer) is the identity row,
 // so its correction is its residual; only the rows with a tangent form the system that is
@@ -456,6 +466,7 @@ void Newmark::solve_correction(const Factorization& f) {
     }
     jacobian_lu_.compute(jacobian_);
     correction_ = jacobian_lu_.solve(residual_);
+    if (!correction_.allFinite()) correction_ = least_norm_correction(jacobian_, residual_);
     factored_id_ = 0;
     return;
   }
@@ -523,6 +534,8 @@ void Newmark::solve_correction(const Factorization& f) {
     factored_tangents_ = active_tangents_;
   }
   reduced_correction_.noalias() = jacobian_lu_.solve(reduced_residual_);
+  if (!reduced_correction_.allFinite())
+    reduced_correction_ = least_norm_correction(jacobian_, reduced_residual_);
   for (Index i = 0; i < size; ++i)
     correction_[active_rows_[static_cast<std::size_t>(i)]] = reduced_correction_[i];
 }
