@@ -288,10 +288,7 @@ EndDirections row_directions(const model::Link& link, const model::Coordinates& 
   const auto at = [&](const model::Coordinates& r) {
     NodeVector direction = model::over_directions(along, false, dimension);
     if (r == model::Coordinates{}) return direction;
-    const model::Coordinates moment{r[1] * along[2] - r[2] * along[1],
-                                    r[2] * along[0] - r[0] * along[2],
-                                    r[0] * along[1] - r[1] * along[0]};
-    const NodeVector turn = model::over_directions(moment, true, dimension);
+    const NodeVector turn = model::over_directions(model::cross(r, along), true, dimension);
     for (std::size_t d = 0; d < direction.size(); ++d) direction[d] += turn[d];
     return direction;
   };

@@ -3,6 +3,22 @@
 #include <cmath>
 
 namespace pound::links {
+namespace {
+
+// The stick penalty's force along one tangent: k_t (s - s_0) + c_t s_dot + m_t s_ddot.
+double stick_force(const StickPenalty& stick, const LinkKinematics& slide, double anchor) {
+  return stick.stiffness * (slide.penetration - anchor) + stick.damping * slide.penetration_rate +
+         stick.mass * slide.penetration_acceleration;
+}
+
+// The anchor at which the stick force equals a slip force: sticking resumes without a jump.
+double slip_anchor(const StickPenalty& stick, const LinkKinematics& slide, double force) {
+  return slide.penetration - (force - stick.damping * slide.penetration_rate -
+                              stick.mass * slide.penetration_acceleration) /
+                                 stick.stiffness;
+}
+
+}  // namespace
 
 CoulombFriction::CoulombFriction(std::unique_ptr<LinkLaw> normal, double coefficient,
                                  StickPenalty stick, std::optional<double> radius, int tangents)
@@ -82,19 +98,17 @@ FrictionResponse CoulombFriction::coulomb(const LinkKinematics& normal,
   // A contact that begins in this step sticks from where the step began.
   const double anchor = normal_->in_contact() ? committed_anchor_[0] : committed_slide_[0];
   trial_anchor_[0] = anchor;
-  const double stick_force = stick_.stiffness * (tangential.penetration - anchor) +
-                             stick_.damping * tangential.penetration_rate +
-                             stick_.mass * tangential.penetration_acceleration;
+  const double stick = stick_force(stick_, tangential, anchor);
   const double limit = coefficient_ * out.normal.force;
-  if (std::abs(stick_force) <= limit) {
-    out.tangential_force[0] = stick_force;
+  if (std::abs(stick) <= limit) {
+    out.tangential_force[0] = stick;
     out.tangential_on_slip[0][0] = {0.0, stick_.stiffness, stick_.damping, stick_.mass};
     return out;
   }
   // Slip against the relative tangential velocity (at rest: against the stick force).
   const double direction = tangential.penetration_rate != 0.0
                                ? std::copysign(1.0, tangential.penetration_rate)
-                               : std::copysign(1.0, stick_force);
+                               : std::copysign(1.0, stick);
   trial_slip_ = true;
   out.slipping = true;
   out.tangential_force[0] = direction * limit;
@@ -103,10 +117,7 @@ FrictionResponse CoulombFriction::coulomb(const LinkKinematics& normal,
                                  scale * out.normal.mass};
   // Move the anchor so that the stick force would equal the slip force: no jump on sticking.
   if (stick_.stiffness > 0.0)
-    trial_anchor_[0] = tangential.penetration -
-                       (out.tangential_force[0] - stick_.damping * tangential.penetration_rate -
-                        stick_.mass * tangential.penetration_acceleration) /
-                           stick_.stiffness;
+    trial_anchor_[0] = slip_anchor(stick_, tangential, out.tangential_force[0]);
   return out;
 }
 
@@ -122,18 +133,16 @@ FrictionResponse CoulombFriction::coulomb_in_plane(const LinkKinematics& normal,
   }
   // A contact that begins in this step sticks from where the step began.
   trial_anchor_ = normal_->in_contact() ? committed_anchor_ : committed_slide_;
-  Tangential stick_force;
+  Tangential stick;
   for (std::size_t a = 0; a < kMaxTangents; ++a)
-    stick_force[a] = stick_.stiffness * (tangential[a].penetration - trial_anchor_[a]) +
-                     stick_.damping * tangential[a].penetration_rate +
-                     stick_.mass * tangential[a].penetration_acceleration;
-  if (std::hypot(stick_force[0], stick_force[1]) <= coefficient_ * out.normal.force) {
-    out.tangential_force = stick_force;
+    stick[a] = stick_force(stick_, tangential[a], trial_anchor_[a]);
+  if (std::hypot(stick[0], stick[1]) <= coefficient_ * out.normal.force) {
+    out.tangential_force = stick;
     for (std::size_t a = 0; a < kMaxTangents; ++a)
       out.tangential_on_slip[a][a] = {0.0, stick_.stiffness, stick_.damping, stick_.mass};
     return out;
   }
-  slip_in_plane(tangential, stick_force, out);
+  slip_in_plane(tangential, stick, out);
   return out;
 }
 
@@ -165,11 +174,7 @@ void CoulombFriction::slip_in_plane(std::span<const LinkKinematics> tangential,
     }
     // Move the anchor so that the stick force would equal the slip force: no jump on sticking.
     if (stick_.stiffness > 0.0)
-      trial_anchor_[a] =
-          tangential[a].penetration -
-          (out.tangential_force[a] - stick_.damping * tangential[a].penetration_rate -
-           stick_.mass * tangential[a].penetration_acceleration) /
-              stick_.stiffness;
+      trial_anchor_[a] = slip_anchor(stick_, tangential[a], out.tangential_force[a]);
   }
 }
 

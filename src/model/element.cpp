@@ -27,6 +27,10 @@ double distance(const Coordinates& a, const Coordinates& b, int dimension) {
   return std::hypot(b[0] - a[0], dimension == 2 ? b[1] - a[1] : 0.0);
 }
 
+Coordinates cross(const Coordinates& a, const Coordinates& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
 ElementAxis element_axis(const std::array<ElementNode, 2>& ends, int dimension) {
   const Coordinates& i = ends[0].position;
   const Coordinates& j = ends[1].position;

@@ -106,6 +106,8 @@ class Element {
 
 // Distance between two points of a scene of `dimension` 1 (along x only), 2 or 3.
 double distance(const Coordinates& a, const Coordinates& b, int dimension);
+// The cross product a x b.
+Coordinates cross(const Coordinates& a, const Coordinates& b);
 
 // The axis of a two-node element from end i to end j in a scene of `dimension` 1, 2 or 3: its
 // length L and direction cosines ((x_j - x_i) / L, (y_j - y_i) / L, (z_j - z_i) / L).

@@ -11,9 +11,7 @@ std::vector<Coordinates> contact_tangents(const Coordinates& n, int dimension) {
   if (dimension < 3 || n[2] == 0.0) {
     const Coordinates first{-n[1], n[0], 0.0};
     if (dimension < 3) return {first};
-    return {first,
-            {n[1] * first[2] - n[2] * first[1], n[2] * first[0] - n[0] * first[2],
-             n[0] * first[1] - n[1] * first[0]}};
+    return {first, cross(n, first)};
   }
   const double length = std::hypot(n[0], n[1], n[2]);
   const Coordinates unit{n[0] / length, n[1] / length, n[2] / length};
@@ -26,9 +24,7 @@ std::vector<Coordinates> contact_tangents(const Coordinates& n, int dimension) {
     const double size = std::hypot(first[0], first[1], first[2]);
     for (double& component : first) component /= size;
   }
-  Coordinates second{unit[1] * first[2] - unit[2] * first[1],
-                     unit[2] * first[0] - unit[0] * first[2],
-                     unit[0] * first[1] - unit[1] * first[0]};
+  Coordinates second = cross(unit, first);
   // A vertical contact (a block on a floor, a bearing) slides along x and y, whichever way n
   // points.
   if (horizontal <= 1e-9 && second[1] < 0.0)
