@@ -137,10 +137,15 @@ StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
       for (int halving = 0;; ++halving) {
         trial = u + step * correction;
         scale = std::max(load.norm(), unbalanced(trial, applied, trial_residual));
-        if (hard.any())
+        if (hard.any()) {
           hard.set_multipliers(start_multipliers + step * (multipliers - start_multipliers));
+          hard.follow_slides(delta);
+        }
         const double trial_merit = (trial_residual - hard_load()).norm() + hard.violation(delta);
-        if (trial_merit < merit || halving == 12) break;
+        // A step that changes the contacts' states solves a new problem: taken whole, as a
+        // primal-dual active-set step is (the merit, which does not see a sticking force past
+        // mu R_n, may be zero before it). A slip's turn alone is searched on the true residual.
+        if ((!settled && !hard.only_turning()) || trial_merit < merit || halving == 12) break;
         step *= 0.5;
       }
       u = trial;

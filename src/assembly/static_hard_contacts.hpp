@@ -8,10 +8,14 @@
 //   friction row t of a held contact: sticks (no further slide, s_t = s_t at the last increment)
 //                  while |lambda_t + c_t (s_t - s_0)| <= mu (lambda_n + c_n delta_n), else slips at
 //                  lambda_t = sign mu lambda_n, sign that trial's; under a moving belt it slips in
-//                  the belt's direction, as penalty friction does in the static solve.
+//                  the belt's direction, as penalty friction does in the static solve; in a
+//                  contact plane (two tangents) the trial is a vector, the limit a circle, and a
+//                  slipping contact's lambda_t = mu lambda_n e along the trial (e fixed in each
+//                  Newton step, chosen again at the next: a fixed point on the direction).
 // c_r = sum_j B_rj^2 |K_jj|, the stiffness the row sees (the structure's largest when its DOFs
 // have none), so that lambda and c delta are both forces. Forces have a law's sign: F > 0
 // presses, and -B^T F is their load on the structure. Units: lambda [F], delta [L], c [F/L].
+#include <Eigen/SparseCore>
 #include <vector>
 
 #include "assembly/structural_system.hpp"
@@ -47,6 +51,11 @@ class StaticHardContacts {
   // False: the matrix is singular (a mechanism).
   bool solve(const Eigen::SparseMatrix<double>& tangent, const Vector& residual,
              const Vector& delta, Vector& step, Vector& multipliers) const;
+  // Whether the last choose() changed no state but a slip's direction.
+  bool only_turning() const { return turned_ && !changed_; }
+  // Each slipping contact plane's friction mu lambda_n along its slide at delta (a trial of the
+  // line search: its true force there, not the linearised one).
+  void follow_slides(const Vector& delta);
   // A load increment done: a sticking row holds its slide from here on.
   void commit(const Vector& delta);
   // The hard laws take the forces found (to be committed with the links).
@@ -55,16 +64,29 @@ class StaticHardContacts {
  private:
   enum class Row { kFree, kHeld, kStick, kSlip };
   Row friction_state(Index t, const Vector& delta);
+  Row friction_state_in_plane(Index t, const Vector& delta);
+  Index normal_of(Index t) const;  // a friction row's normal row
+  bool in_plane(Index t) const;    // a friction row of a contact plane (two tangents)
+  // A slipping contact plane's Newton terms for its slip direction's turn.
+  void add_turn_entries(std::vector<Eigen::Triplet<double>>& entries) const;
+  void add_turn_forces(const Vector& step, Vector& multipliers) const;
+  template <typename Visit>
+  void for_each_turning_pair(Visit visit) const;
   double coefficient(Index t) const;
   double target(Index r) const;  // held: delta = 0; sticking: s = s_0
 
   const integrators::LinkSet::SparseRowMatrix& connectivity_;
   std::vector<links::HardContact*> contacts_;
   std::vector<links::CoulombFriction*> frictions_;
+  std::vector<int> tangent_;
+  std::vector<char> pair_;
   std::vector<Row> state_;
   Vector multiplier_, scale_, direction_;
+  Vector turn_;  // a slipping contact plane's kappa = mu lambda_n / |s - s_0| (0: none)
   Vector belt_rate_, anchor_;
   bool any_ = false, started_ = false;
+  bool turned_ = false;   // a slipping contact plane's direction changed in choose()
+  bool changed_ = false;  // a row's state changed in choose()
 };
 
 }  // namespace pound::assembly

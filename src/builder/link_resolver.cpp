@@ -139,12 +139,6 @@ void resolve_friction(const LinkPlace& place, model::Link& link) {
                "friction needs a tangential direction: a 2-D scene (\"dimension\": 2)");
   if (place.model.dimension == 3 && link.rotational)
     place.fail("/friction", "a rotational link of a 3-D scene has no contact plane to slide in");
-  if (place.model.dimension == 3 && link.law->traits.constraint)
-    place.fail("/friction",
-               fmt::format("friction on a {} of a 3-D scene (a stick-slip constraint in two "
-                           "tangential directions) is not built yet: give the link a penalty "
-                           "law (extended_penalty, kelvin_voigt, ...), or use a 2-D scene",
-                           type));
   if (link.role() == links::LinkRole::tension)
     place.fail("/friction", fmt::format("a {} carries no normal contact force to rub with", type));
   if (link.law->traits.constraint)

@@ -4,6 +4,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
+#include <Eigen/QR>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -380,6 +381,8 @@ void CentralDifference::prepare_links(LinkSet& links) {
   LinkSet::HardRows hard_rows = links.hard_rows();
   hard_laws_ = std::move(hard_rows.contacts);
   hard_frictions_ = std::move(hard_rows.frictions);
+  hard_tangent_ = std::move(hard_rows.tangent);
+  hard_pair_ = std::move(hard_rows.pair);
   hard_groups_.clear();
   for (const std::vector<Index>& group : link_groups_) {
     std::vector<Index> hard;
@@ -393,8 +396,8 @@ void CentralDifference::prepare_links(LinkSet& links) {
 void CentralDifference::release_hard_forces() {
   for (links::HardContact* hard : hard_laws_)
     if (hard) hard->impose(0.0);
-  for (links::CoulombFriction* friction : hard_frictions_)
-    if (friction) friction->impose_tangential(0.0, false);
+  for (std::size_t r = 0; r < hard_frictions_.size(); ++r)
+    if (hard_frictions_[r]) hard_frictions_[r]->impose_tangential(hard_tangent_[r], 0.0, false);
 }
 
 bool CentralDifference::solve_hard_contacts(const LinkSet& links, State& to, double dt,
@@ -458,7 +461,8 @@ bool CentralDifference::solve_hard_group(const std::vector<Index>& rows, double 
       law->impose(force);
     else
       hard_frictions_[static_cast<std::size_t>(r)]->impose_tangential(
-          force, slip_[i] != 0 && hard_row_active(rows, i));
+          hard_tangent_[static_cast<std::size_t>(r)], force,
+          slip_[i] != 0 && hard_row_active(rows, i));
   }
   return true;
 }
@@ -473,6 +477,8 @@ bool CentralDifference::enumerate_hard_states(const std::vector<Index>& rows, do
   for (std::size_t i = 0; i < rows.size(); ++i)
     if (hard_laws_[static_cast<std::size_t>(rows[i])]) contacts.push_back(i);
   if (contacts.size() > 6) return false;
+  // Contact i with friction: lifted, sticking, or slipping either way (in a contact plane, its
+  // direction iterated by Newton from the free slide's or the opposite).
   const auto rubs = [&](std::size_t i) {
     return i + 1 < rows.size() && hard_frictions_[static_cast<std::size_t>(rows[i + 1])];
   };
@@ -495,9 +501,20 @@ bool CentralDifference::enumerate_hard_states(const std::vector<Index>& rows, do
         candidate_[i] = 1;
         bound_[static_cast<Index>(i)] = 0.0;
       }
-      if (state > 1) slip_[i + 1] = state == 2 ? 1 : -1;
+      if (state < 2) continue;
+      const double way = state == 2 ? 1.0 : -1.0;
+      if (!in_plane(rows, i + 1)) {
+        slip_[i + 1] = static_cast<signed char>(way);
+      } else {
+        const Eigen::Vector2d slide = free_next_.segment<2>(static_cast<Index>(i) + 1) -
+                                      bound_.segment<2>(static_cast<Index>(i) + 1);
+        start_slip_in_plane(i + 1, way * slide);
+      }
     }
     solve_active_hard_rows(rows, scale);
+    for (int turn = 0; turn < 50 && group_force_.allFinite() && turn_slip_directions(rows, scale);
+         ++turn)
+      solve_active_hard_rows(rows, scale);
     if (group_force_.allFinite() && !update_hard_active_set(rows, scale)) return true;
   }
   return false;
@@ -512,6 +529,8 @@ void CentralDifference::prepare_hard_group(const std::vector<Index>& rows, doubl
   candidate_.assign(rows.size(), 0);
   active_.assign(rows.size(), 0);
   slip_.assign(rows.size(), 0);
+  slip_direction_.setZero(size);
+  slip_turn_.setZero(size);
   for (Index i = 0; i < size; ++i) {
     const Index r = rows[static_cast<std::size_t>(i)];
     const double now = penetration[r];
@@ -539,9 +558,34 @@ void CentralDifference::prepare_hard_group(const std::vector<Index>& rows, doubl
   }
 }
 
-// A friction row (local index i) follows its normal row, the one before it.
+// A friction row (local index i) follows its normal row: just before it, or before its pair's
+// first row. (A tangent whose DOFs are all held is no hard row: the group leaves it out.)
+std::size_t CentralDifference::normal_of(const std::vector<Index>& rows, std::size_t i) const {
+  return i - 1 - (in_plane(rows, i) ? static_cast<std::size_t>(tangent_of(rows, i)) : 0);
+}
+
+int CentralDifference::tangent_of(const std::vector<Index>& rows, std::size_t i) const {
+  return hard_tangent_[static_cast<std::size_t>(rows[i])];
+}
+
 bool CentralDifference::hard_row_active(const std::vector<Index>& rows, std::size_t i) const {
-  return hard_laws_[static_cast<std::size_t>(rows[i])] ? active_[i] != 0 : active_[i - 1] != 0;
+  return hard_laws_[static_cast<std::size_t>(rows[i])] ? active_[i] != 0
+                                                       : active_[normal_of(rows, i)] != 0;
+}
+
+bool CentralDifference::in_plane(const std::vector<Index>& rows, std::size_t i) const {
+  return hard_pair_[static_cast<std::size_t>(rows[i])] != 0;
+}
+
+void CentralDifference::start_slip_in_plane(std::size_t first, const Eigen::Vector2d& along) {
+  const double length = along.norm();
+  const auto i = static_cast<Index>(first);
+  // No slide to follow: along the first tangent, the way `along` points if it has a sign.
+  slip_direction_.segment<2>(i) = length > 0.0
+                                      ? Eigen::Vector2d(along / length)
+                                      : Eigen::Vector2d(std::signbit(along[0]) ? -1.0 : 1.0, 0.0);
+  slip_turn_.segment<2>(i).setZero();
+  slip_[first] = slip_[first + 1] = 1;
 }
 
 void CentralDifference::solve_active_hard_rows(const std::vector<Index>& rows, double scale) {
@@ -562,6 +606,10 @@ void CentralDifference::solve_active_hard_rows(const std::vector<Index>& rows, d
   active_force_.resize(count);
   for (Index a = 0; a < count; ++a) {
     const auto i = static_cast<std::size_t>(unknowns[static_cast<std::size_t>(a)]);
+    if (slip_[i] != 0 && in_plane(rows, i)) {
+      slip_in_plane_row(rows, unknowns, a, scale);
+      continue;
+    }
     if (slip_[i] != 0) {
       active_matrix_.row(a).setZero();
       active_matrix_(a, a) = 1.0;
@@ -577,12 +625,49 @@ void CentralDifference::solve_active_hard_rows(const std::vector<Index>& rows, d
           coupling_(rows[i], rows[static_cast<std::size_t>(unknowns[static_cast<std::size_t>(b)])]);
   }
   // Without friction the matrix is G's, positive definite; a slipping row makes it unsymmetric.
+  const Vector right = active_force_;
   if (friction)
-    active_force_ = active_matrix_.partialPivLu().solve(active_force_);
+    active_force_ = active_matrix_.partialPivLu().solve(right);
   else
-    active_force_ = active_matrix_.llt().solve(active_force_);
+    active_force_ = active_matrix_.llt().solve(right);
+  // More constraints than the DOFs they hold (a block sticking on its floor and pressed against
+  // its wall): the forces are not unique, the motion is; the least-norm forces (a complete
+  // orthogonal decomposition), as Newmark takes.
+  if (!active_force_.allFinite())
+    active_force_ = active_matrix_.completeOrthogonalDecomposition().solve(right);
   for (Index a = 0; a < count; ++a)
     group_force_[unknowns[static_cast<std::size_t>(a)]] = active_force_[a];
+}
+
+// A slipping contact plane's row a (tangent k of its contact): F_t = mu F_n e + kappa P s(F),
+// P = I - e e^T, kappa = mu F_n / |s| at the last iterate, s(F) = s~ - bound - scale G_t F:
+// Newton's linearisation of F_t = mu F_n s / |s| about the last slide (kappa = 0 on the first
+// solve, with e from the stick force or the free slide). At its fixed point P s = 0: the force is
+// mu F_n along the slide.
+void CentralDifference::slip_in_plane_row(const std::vector<Index>& rows,
+                                          const std::vector<Index>& unknowns, Index a,
+                                          double scale) {
+  const auto i = static_cast<std::size_t>(unknowns[static_cast<std::size_t>(a)]);
+  const auto tangent = static_cast<Index>(tangent_of(rows, i));
+  const Index first = static_cast<Index>(i) - tangent;  // local index of tangent 0
+  const Eigen::Vector2d e = slip_direction_.segment<2>(first);
+  const double kappa = slip_turn_[first];
+  const double coefficient = hard_frictions_[static_cast<std::size_t>(rows[i])]->coefficient();
+  Eigen::Vector2d projection = -e[tangent] * e;
+  projection[tangent] += 1.0;  // row `tangent` of I - e e^T
+  active_force_[a] = 0.0;
+  for (Index b = 0; b < 2; ++b)
+    active_force_[a] += kappa * projection[b] * (free_next_[first + b] - bound_[first + b]);
+  const auto count = static_cast<Index>(unknowns.size());
+  for (Index c = 0; c < count; ++c) {
+    const Index column = rows[static_cast<std::size_t>(unknowns[static_cast<std::size_t>(c)])];
+    double entry = 0.0;
+    for (Index b = 0; b < 2; ++b)
+      entry += projection[b] * coupling_(rows[static_cast<std::size_t>(first + b)], column);
+    active_matrix_(a, c) = kappa * scale * entry;
+  }
+  active_matrix_(a, a) += 1.0;
+  active_matrix_(a, a - tangent - 1) -= coefficient * e[tangent];  // the normal row's unknown
 }
 
 double CentralDifference::next_hard_value(const std::vector<Index>& rows, Index i,
@@ -609,10 +694,14 @@ bool CentralDifference::update_hard_active_set(const std::vector<Index>& rows, d
     }
   if (worst >= 0) {
     active_[static_cast<std::size_t>(worst)] = 0;
-    if (worst + 1 < size) slip_[static_cast<std::size_t>(worst + 1)] = 0;
+    for (Index t = worst + 1;
+         t < size && hard_frictions_[static_cast<std::size_t>(rows[static_cast<std::size_t>(t)])];
+         ++t)
+      slip_[static_cast<std::size_t>(t)] = 0;
     return true;
   }
   if (update_hard_friction(rows, scale)) return true;
+  if (turn_slip_directions(rows, scale)) return true;
   double worst_excess = 0.0;
   for (Index i = 0; i < size; ++i) {
     const Index r = rows[static_cast<std::size_t>(i)];
@@ -643,10 +732,14 @@ bool CentralDifference::update_hard_friction(const std::vector<Index>& rows, dou
     const Index r = rows[static_cast<std::size_t>(i)];
     const links::CoulombFriction* friction = hard_frictions_[static_cast<std::size_t>(r)];
     if (!friction) continue;
-    const double force = group_force_[i], limit = friction->coefficient() * group_force_[i - 1];
     double excess = 0.0;
     int slip = 0;
-    if (slip_[static_cast<std::size_t>(i)] == 0) {
+    if (in_plane(rows, static_cast<std::size_t>(i))) {
+      if (tangent_of(rows, static_cast<std::size_t>(i)) != 0) continue;
+      excess = in_plane_friction_excess(rows, i, scale);
+      slip = 1;
+    } else if (slip_[static_cast<std::size_t>(i)] == 0) {
+      const double force = group_force_[i], limit = friction->coefficient() * group_force_[i - 1];
       // Relative to R_n: a sticking row at mu = 0 with a round-off force stays sticking.
       excess = (std::abs(force) - limit) / std::max(group_force_[i - 1], 1e-300) - 1e-12;
       slip = force > 0.0 ? 1 : -1;
@@ -663,8 +756,70 @@ bool CentralDifference::update_hard_friction(const std::vector<Index>& rows, dou
     }
   }
   if (worst < 0) return false;
-  slip_[static_cast<std::size_t>(worst)] = static_cast<signed char>(worst_slip);
+  const auto row = static_cast<std::size_t>(worst);
+  if (!in_plane(rows, row)) {
+    slip_[row] = static_cast<signed char>(worst_slip);
+  } else if (slip_[row] != 0) {
+    slip_[row] = slip_[row + 1] = 0;  // its slide turned back: it sticks
+  } else {
+    start_slip_in_plane(row, group_force_.segment<2>(worst));
+  }
   return true;
+}
+
+// A contact plane's friction (local rows i, i + 1) asking to change, relative: sticking, by how
+// much |F_t| passes mu F_n; slipping, by how much its slide runs against its force.
+double CentralDifference::in_plane_friction_excess(const std::vector<Index>& rows, Index i,
+                                                   double scale) const {
+  const auto row = static_cast<std::size_t>(i);
+  const double normal = group_force_[static_cast<Index>(normal_of(rows, row))];
+  const double coefficient = hard_frictions_[static_cast<std::size_t>(rows[row])]->coefficient();
+  if (slip_[row] == 0)
+    return (group_force_.segment<2>(i).norm() - coefficient * normal) / std::max(normal, 1e-300) -
+           1e-12;
+  const Eigen::Vector2d slide = slide_in_plane(rows, i, scale);
+  const double round_off = slide_round_off(rows, i, slide.norm());
+  return (-slide.dot(slip_direction_.segment<2>(i)) - round_off) / std::max(round_off, 1e-300);
+}
+
+// What round-off leaves in a contact plane's slide s = s~ - bound - scale G F: of the free
+// slide's size or the rows' own (the deck's displacement), whichever is larger.
+double CentralDifference::slide_round_off(const std::vector<Index>& rows, Index i,
+                                          double length) const {
+  const auto row = static_cast<std::size_t>(i);
+  const double magnitude = std::max(magnitudes_[rows[row]], magnitudes_[rows[row + 1]]);
+  const double free_slide = (free_next_.segment<2>(i) - bound_.segment<2>(i)).norm();
+  return 1e-12 * (free_slide + length) + kHardContactRoundOff * magnitude;
+}
+
+Eigen::Vector2d CentralDifference::slide_in_plane(const std::vector<Index>& rows, Index i,
+                                                  double scale) const {
+  return {next_hard_value(rows, i, scale) - bound_[i],
+          next_hard_value(rows, i + 1, scale) - bound_[i + 1]};
+}
+
+// Newton's step on the slip directions of the slipping contact planes: e = s / |s| at the slide
+// found, kappa = mu F_n / |s|; true when one turned by more than round-off.
+bool CentralDifference::turn_slip_directions(const std::vector<Index>& rows, double scale) {
+  bool turned = false;
+  for (const Index i : active_rows_) {
+    const auto row = static_cast<std::size_t>(i);
+    if (!in_plane(rows, row) || slip_[row] == 0 || tangent_of(rows, row) != 0) continue;
+    const Eigen::Vector2d slide = slide_in_plane(rows, i, scale);
+    const Eigen::Vector2d e = slip_direction_.segment<2>(i);
+    const double length = slide.norm();
+    const double round_off = slide_round_off(rows, i, length);
+    if (length <= round_off) continue;
+    const Eigen::Vector2d across = slide - slide.dot(e) * e;
+    if (across.norm() <= round_off && slip_turn_[i] > 0.0) continue;
+    const double normal = group_force_[static_cast<Index>(normal_of(rows, row))];
+    slip_direction_.segment<2>(i) = slide / length;
+    slip_turn_.segment<2>(i).setConstant(
+        hard_frictions_[static_cast<std::size_t>(rows[row])]->coefficient() *
+        std::max(0.0, normal) / length);
+    turned = true;
+  }
+  return turned;
 }
 
 void CentralDifference::link_kinematics(SecondOrderSystem& system, const State& from,

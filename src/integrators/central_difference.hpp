@@ -25,7 +25,9 @@
 // go when held only by tension. No contact ever penetrates. With Coulomb friction its tangential
 // row joins the same problem: sticking, s_{n+2} = s_{n+1} (no slide over the step) while
 // |F_t| <= mu F_n; slipping, F_t = mu F_n against the slide; the active set changes one row's
-// state at a time, the worst first.
+// state at a time, the worst first. In a contact plane (two tangents) the limit is a circle:
+// slipping, F_t = mu F_n e along the step's slide e = s / |s|, found by Newton's method on e within
+// the same active set (slip_in_plane_row).
 #include <Eigen/LU>
 #include <vector>
 
@@ -68,6 +70,21 @@ class CentralDifference final : public Integrator {
                           const Vector& acceleration);
   // Whether a group row (local index) is in the active set: a friction row with its normal row.
   bool hard_row_active(const std::vector<Index>& rows, std::size_t i) const;
+  // A friction row's normal row (local indices).
+  std::size_t normal_of(const std::vector<Index>& rows, std::size_t i) const;
+  // Whether a group row is a contact plane's friction row (two tangents).
+  bool in_plane(const std::vector<Index>& rows, std::size_t i) const;
+  int tangent_of(const std::vector<Index>& rows, std::size_t i) const;
+  // A contact plane's friction (local rows first, first + 1) starts slipping along `along`.
+  void start_slip_in_plane(std::size_t first, const Eigen::Vector2d& along);
+  // Row a of the active matrix for a slipping contact plane's friction row.
+  void slip_in_plane_row(const std::vector<Index>& rows, const std::vector<Index>& unknowns,
+                         Index a, double scale);
+  // s_{n+2} - bound of a contact plane's two rows (local i, i + 1) under the forces found.
+  Eigen::Vector2d slide_in_plane(const std::vector<Index>& rows, Index i, double scale) const;
+  double in_plane_friction_excess(const std::vector<Index>& rows, Index i, double scale) const;
+  double slide_round_off(const std::vector<Index>& rows, Index i, double length) const;
+  bool turn_slip_directions(const std::vector<Index>& rows, double scale);
   // The active rows' forces for the current active set, into group_force_.
   void solve_active_hard_rows(const std::vector<Index>& rows, double scale);
   // delta_{n+2} (or s_{n+2}) of group row i under the forces found.
@@ -108,6 +125,8 @@ class CentralDifference final : public Integrator {
   std::vector<links::HardContact*> hard_laws_;  // by row; nullptr for a force law's row
   // The friction of a hard contact, on its tangential row; nullptr on every other row.
   std::vector<links::CoulombFriction*> hard_frictions_;
+  std::vector<int> hard_tangent_;  // a friction row's tangent (0, or 1 in a contact plane)
+  std::vector<char> hard_pair_;    // a friction row of a contact plane whose two tangents move
   std::vector<std::vector<Index>> hard_groups_;
   // Per hard row of a group: delta_{n+2} (s_{n+2}) without its force, its bound, whether it is
   // in the active set, a friction row's slip direction (0: sticking); the active set's matrix,
@@ -115,6 +134,8 @@ class CentralDifference final : public Integrator {
   Vector free_next_, bound_, active_force_, magnitudes_, group_force_;
   std::vector<char> candidate_, active_;
   std::vector<signed char> slip_;
+  // A slipping contact plane's direction e and Newton's kappa = mu F_n / |s|, on both its rows.
+  Vector slip_direction_, slip_turn_;
   std::vector<Index> active_rows_;  // the group rows with an unknown force, in order
   Matrix active_matrix_;
 };

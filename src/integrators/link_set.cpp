@@ -41,12 +41,9 @@ LinkSet::LinkSet(Index dofs, std::vector<Link> links) : links_(std::move(links))
   for (const Link& link : links_) {
     first_row_.push_back(rows);
     add_row(link.normal_row, link.gap);
-    if (link.friction &&
-        (static_cast<int>(link.tangential_rows.size()) != link.friction->tangents() ||
-         (link.friction->hard_contact() && link.friction->tangents() != 1)))
+    if (link.friction && static_cast<int>(link.tangential_rows.size()) != link.friction->tangents())
       throw std::invalid_argument(
-          "a friction link needs one tangential row per tangent of its law, and friction on a "
-          "hard contact one tangent (the integrators solve it in a plane)");
+          "a friction link needs one tangential row per tangent of its law");
     for (const std::vector<Term>& tangential : link.tangential_rows) add_row(tangential, 0.0);
   }
   connectivity_.resize(rows, dofs);
@@ -184,14 +181,31 @@ std::vector<char> LinkSet::impulsive_hard_contact_rows(const Vector* lumped_mass
 }
 
 LinkSet::HardRows LinkSet::hard_rows() {
-  HardRows hard{std::vector<links::HardContact*>(static_cast<std::size_t>(size()), nullptr),
-                std::vector<links::CoulombFriction*>(static_cast<std::size_t>(size()), nullptr)};
+  const auto m = static_cast<std::size_t>(size());
+  HardRows hard{std::vector<links::HardContact*>(m, nullptr),
+                std::vector<links::CoulombFriction*>(m, nullptr), std::vector<int>(m, 0),
+                std::vector<char>(m, 0)};
+  const auto moves = [&](Index row) {
+    for (SparseRowMatrix::InnerIterator term(connectivity_, row); term; ++term)
+      if (term.value() != 0.0) return true;
+    return false;
+  };
   for (Index k = 0; k < count(); ++k) {
-    const auto row = static_cast<std::size_t>(first_row_[static_cast<std::size_t>(k)]);
-    hard.contacts[row] = hard_contact(k);
+    const Index first = first_row_[static_cast<std::size_t>(k)];
+    hard.contacts[static_cast<std::size_t>(first)] = hard_contact(k);
     const Link& link = links_[static_cast<std::size_t>(k)];
-    if (link.friction && link.friction->hard_contact())
-      hard.frictions[row + 1] = link.friction.get();
+    if (!link.friction || !link.friction->hard_contact()) continue;
+    int moving = 0;
+    for (int a = 0; a < link.friction->tangents(); ++a) {
+      const auto row = static_cast<std::size_t>(first + 1 + a);
+      if (!moves(static_cast<Index>(row))) continue;
+      hard.frictions[row] = link.friction.get();
+      hard.tangent[row] = a;
+      ++moving;
+    }
+    if (moving == 2)
+      hard.pair[static_cast<std::size_t>(first + 1)] =
+          hard.pair[static_cast<std::size_t>(first + 2)] = 1;
   }
   return hard;
 }

@@ -91,11 +91,16 @@ class LinkSet {
     return entry.friction ? entry.friction->hard_contact() : entry.law->hard_contact();
   }
   // The constraints by row, for the integrators that find their forces: a hard contact on its
-  // normal row, its friction (whose tangential force is a constraint's too) on its tangential
-  // row (one tangent: the builder takes hard friction in plane scenes); nullptr elsewhere.
+  // normal row, its friction (whose tangential force is a constraint's too) on each of its
+  // tangential rows that moves (a row whose DOFs are all held has no slide and no force to find);
+  // nullptr elsewhere. `tangent`: a friction row's tangent (0, or 1 for the second of a contact
+  // plane), so its normal row is row - 1 - tangent; `pair`: both tangents of a contact plane
+  // move (its friction limit is a circle; otherwise the one row's, a segment).
   struct HardRows {
     std::vector<links::HardContact*> contacts;
     std::vector<links::CoulombFriction*> frictions;
+    std::vector<int> tangent;
+    std::vector<char> pair;
   };
   HardRows hard_rows();
   // 1 on the rows of hard contacts between masses (with friction, every row of the link), by

@@ -164,16 +164,19 @@ void Newmark::initialize(SecondOrderSystem& system, State& state, double /*first
   LinkSet::HardRows hard_rows = links.hard_rows();
   hard_laws_ = std::move(hard_rows.contacts);
   hard_frictions_ = std::move(hard_rows.frictions);
+  hard_tangent_ = std::move(hard_rows.tangent);
+  hard_pair_ = std::move(hard_rows.pair);
   has_hard_contacts_ = false;
   for (std::size_t r = 0; r < hard_laws_.size(); ++r) {
     if (hard_laws_[r]) {
       hard_laws_[r]->impose(0.0);
       has_hard_contacts_ = true;
     }
-    if (hard_frictions_[r]) hard_frictions_[r]->impose_tangential(0.0, false);
+    if (hard_frictions_[r]) hard_frictions_[r]->impose_tangential(hard_tangent_[r], 0.0, false);
   }
   hard_pressing_.assign(static_cast<std::size_t>(links.size()), 0);
-  hard_slip_.assign(static_cast<std::size_t>(links.size()), 0.0);
+  hard_slipping_.assign(static_cast<std::size_t>(links.size()), 0);
+  hard_entries_.assign(static_cast<std::size_t>(links.size()), HardEntries{});
   if (has_hard_contacts_) {
     const std::vector<char> impulsive = links.impulsive_hard_contact_rows(system.lumped_mass());
     for (std::size_t r = 0; r < hard_laws_.size(); ++r)
@@ -462,7 +465,11 @@ void Newmark::solve_correction(const Factorization& f) {
     jacobian_.noalias() = tangent_ * f.coupling;
     for (Index r = 0; r < m; ++r) {
       if (!hard_pressing_[static_cast<std::size_t>(r)]) jacobian_(r, r) += 1.0;
-      jacobian_(r, r - (r > 0)) += hard_slip_[static_cast<std::size_t>(r)];
+      if (!hard_slipping_[static_cast<std::size_t>(r)]) continue;
+      const Index first = link_rows_[static_cast<std::size_t>(r)].first;
+      const HardEntries& entries = hard_entries_[static_cast<std::size_t>(r)];
+      for (Index c = 0; c < link_rows_[static_cast<std::size_t>(r)].end - first; ++c)
+        jacobian_(r, first + c) += entries[static_cast<std::size_t>(c)];
     }
     jacobian_lu_.compute(jacobian_);
     correction_ = jacobian_lu_.solve(residual_);
@@ -483,7 +490,7 @@ void Newmark::solve_correction(const Factorization& f) {
   for (Index r = 0; r < m; ++r) {
     bool coupled = false;
     others(r, [&](Index) { coupled = true; });
-    if (tangent_(r, r) != 0.0 || coupled || hard_slip_[static_cast<std::size_t>(r)] != 0.0)
+    if (tangent_(r, r) != 0.0 || coupled || hard_slipping_[static_cast<std::size_t>(r)])
       active_rows_.push_back(r);
     else if (residual_[r] != 0.0)
       moved_rows_.push_back(r);
@@ -508,8 +515,12 @@ void Newmark::solve_correction(const Factorization& f) {
   // same matrix, whose factors are kept.
   active_tangents_.clear();
   for (const Index r : active_rows_) {
-    active_tangents_.insert(active_tangents_.end(),
-                            {tangent_(r, r), hard_slip_[static_cast<std::size_t>(r)]});
+    active_tangents_.push_back(tangent_(r, r));
+    active_tangents_.push_back(hard_slipping_[static_cast<std::size_t>(r)]);
+    if (hard_slipping_[static_cast<std::size_t>(r)]) {
+      const HardEntries& entries = hard_entries_[static_cast<std::size_t>(r)];
+      active_tangents_.insert(active_tangents_.end(), entries.begin(), entries.end());
+    }
     if (!link_blocks_) continue;
     const LinkRows& rows = link_rows_[static_cast<std::size_t>(r)];
     for (Index q = rows.first; q < rows.end; ++q)
@@ -523,10 +534,20 @@ void Newmark::solve_correction(const Factorization& f) {
       for (Index j = 0; j < size; ++j)
         jacobian_(i, j) = jacobian_entry(r, active_rows_[static_cast<std::size_t>(j)]);
       // A pressing hard contact's row is s G(r, :) alone: its F_law moves with F. A slipping
-      // friction row's is that of F_t - sign mu F_n (its normal row comes just before it).
+      // friction row's adds its entries on its link's rows, which are active too and come in
+      // order just around it (the normal row, the tangents), at i - (r - row).
       if (!hard_pressing_[static_cast<std::size_t>(r)]) jacobian_(i, i) += 1.0;
-      if (hard_slip_[static_cast<std::size_t>(r)] != 0.0)
-        jacobian_(i, i - 1) += hard_slip_[static_cast<std::size_t>(r)];
+      if (!hard_slipping_[static_cast<std::size_t>(r)]) continue;
+      const LinkRows& rows = link_rows_[static_cast<std::size_t>(r)];
+      const HardEntries& entries = hard_entries_[static_cast<std::size_t>(r)];
+      for (Index row = rows.first; row < rows.end; ++row) {
+        const double entry = entries[static_cast<std::size_t>(row - rows.first)];
+        if (entry == 0.0) continue;
+        // Within two places of i: the link's rows that move are active and in order.
+        Index j = std::max<Index>(0, i - 2);
+        while (active_rows_[static_cast<std::size_t>(j)] != row) ++j;
+        jacobian_(i, j) += entry;
+      }
     }
     jacobian_lu_.compute(jacobian_);
     factored_id_ = f.id;
@@ -629,7 +650,8 @@ void Newmark::bound_hard_contacts(SecondOrderSystem& system, const State& from, 
       // A contact that stuck over the last step slides no further; any other sticks with a zero
       // slide rate at t_{n+1} (a bound on s alone would reverse the slide rate, as the
       // trapezoidal rule reverses a rate held at zero displacement).
-      const bool sticking = hard_laws_[r - 1]->in_contact() && !friction->slipping();
+      const std::size_t normal = r - 1 - static_cast<std::size_t>(hard_tangent_[r]);
+      const bool sticking = hard_laws_[normal]->in_contact() && !friction->slipping();
       hard_bound_[row] = sticking ? from.link_penetration[row]
                                   : delta_predicted_[row] - rate_predicted_[row] / c_c;
       continue;
@@ -665,8 +687,22 @@ void Newmark::evaluate_hard_contacts(const Factorization& f) {
     law_force_[row] = hard_pressing_[r] ? pressing : 0.0;
     tangent_(row, row) = hard_pressing_[r] ? scale : 0.0;
   }
-  for (std::size_t r = 0; r < hard_frictions_.size(); ++r)
-    if (hard_frictions_[r]) evaluate_hard_friction(f, static_cast<Index>(r));
+  for (std::size_t r = 0; r < hard_frictions_.size(); ++r) {
+    if (!hard_frictions_[r]) continue;
+    if (!hard_pair_[r])
+      evaluate_hard_friction(f, static_cast<Index>(r));
+    else if (hard_tangent_[r] == 0)
+      evaluate_hard_friction_in_plane(f, static_cast<Index>(r));
+  }
+}
+
+void Newmark::clear_hard_friction_row(Index r) {
+  const auto row = static_cast<std::size_t>(r);
+  hard_slipping_[row] = 0;
+  hard_entries_[row] = HardEntries{};
+  hard_pressing_[row] = 0;
+  const LinkRows& rows = link_rows_[row];
+  for (Index q = rows.first + 1; q < rows.end; ++q) tangent_(r, q) = 0.0;
 }
 
 // Alart & Curnier's (1991) semismooth form of Coulomb's law on a pressing contact's tangential
@@ -675,14 +711,13 @@ void Newmark::evaluate_hard_contacts(const Factorization& f) {
 // F_t = sign(trial) mu F_n (a Jacobian row e_t - sign mu e_n).
 void Newmark::evaluate_hard_friction(const Factorization& f, Index t) {
   const auto r = static_cast<std::size_t>(t);
-  hard_slip_[r] = 0.0;
-  tangent_(t, t) = 0.0;
-  hard_pressing_[r] = 0;
-  if (!hard_pressing_[r - 1]) {
+  const Index normal_row = t - 1 - hard_tangent_[r];
+  clear_hard_friction_row(t);
+  if (!hard_pressing_[static_cast<std::size_t>(normal_row)]) {
     law_force_[t] = 0.0;
     return;
   }
-  const double normal = std::max(0.0, assumed_force_[t - 1]);
+  const double normal = std::max(0.0, assumed_force_[normal_row]);
   const double coefficient = hard_frictions_[r]->coefficient();
   const double scale = 1.0 / f.coupling(t, t);
   const double trial = assumed_force_[t] + scale * (delta_[t] - hard_bound_[t]);
@@ -693,8 +728,47 @@ void Newmark::evaluate_hard_friction(const Factorization& f, Index t) {
     return;
   }
   const double direction = trial > 0.0 ? 1.0 : -1.0;
-  law_force_[t] = direction * coefficient * assumed_force_[t - 1];
-  hard_slip_[r] = -direction * coefficient;
+  law_force_[t] = direction * coefficient * assumed_force_[normal_row];
+  hard_slipping_[r] = 1;
+  hard_entries_[r][0] = -direction * coefficient;
+}
+
+// In a contact plane the trial tau = F_t + s (s_t - bound) is a vector, s = 2 / (G_11 + G_22)
+// one scale for both tangents. Sticking while |tau| <= mu F_n (each row as in a plane scene);
+// slipping, F_t = mu F_n e, e = tau / |tau|, whose derivative
+//   dF_t = mu e dF_n + Q (dF_t - s G_t dF),   Q = mu F_n (I - e e^T) / |tau|,
+// makes T(t, t) = s Q and the entries -mu e and -Q outside T G.
+void Newmark::evaluate_hard_friction_in_plane(const Factorization& f, Index t) {
+  const Index normal = t - 1;
+  for (Index a = 0; a < 2; ++a) clear_hard_friction_row(t + a);
+  if (!hard_pressing_[static_cast<std::size_t>(normal)]) {
+    law_force_.segment(t, 2).setZero();
+    return;
+  }
+  const double coefficient = hard_frictions_[static_cast<std::size_t>(t)]->coefficient();
+  const double limit = coefficient * std::max(0.0, assumed_force_[normal]);
+  const double scale = 2.0 / (f.coupling(t, t) + f.coupling(t + 1, t + 1));
+  const Eigen::Vector2d trial =
+      assumed_force_.segment<2>(t) + scale * (delta_.segment<2>(t) - hard_bound_.segment<2>(t));
+  const double length = trial.norm();
+  if (length <= limit) {
+    law_force_.segment<2>(t) = trial;
+    for (Index a = 0; a < 2; ++a) {
+      tangent_(t + a, t + a) = scale;
+      hard_pressing_[static_cast<std::size_t>(t + a)] = 1;
+    }
+    return;
+  }
+  const Eigen::Vector2d direction = trial / length;
+  law_force_.segment<2>(t) = coefficient * assumed_force_[normal] * direction;
+  const Eigen::Matrix2d turn = coefficient * assumed_force_[normal] / length *
+                               (Eigen::Matrix2d::Identity() - direction * direction.transpose());
+  for (Index a = 0; a < 2; ++a) {
+    const auto row = static_cast<std::size_t>(t + a);
+    hard_slipping_[row] = 1;
+    hard_entries_[row] = {-coefficient * direction[a], -turn(a, 0), -turn(a, 1)};
+    for (Index b = 0; b < 2; ++b) tangent_(t + a, t + b) = scale * turn(a, b);
+  }
 }
 
 // The hard contacts' forces act as this step's impulses: the acceleration kept for the next
@@ -716,7 +790,8 @@ void Newmark::release_constraint_acceleration(SecondOrderSystem& system, State& 
     if (hard_laws_[r])
       hard_laws_[r]->impose(to.link_force[row]);
     else
-      hard_frictions_[r]->impose_tangential(to.link_force[row], hard_slip_[r] != 0.0);
+      hard_frictions_[r]->impose_tangential(hard_tangent_[r], to.link_force[row],
+                                            hard_slipping_[r] != 0);
     any = any || hard_force_[row] != 0.0;
   }
   if (!any) return;

@@ -30,7 +30,11 @@
 // friction on a hard contact is a constraint on its tangential row in the same iteration
 // (Alart & Curnier's semismooth form, evaluate_hard_friction): sticking, no slide over the step
 // (a zero slide rate at t_{n+1} when the contact slipped or was open before); slipping,
-// F_t = mu F_n against the slide; its force is an impulse of its step like the normal one.
+// F_t = mu F_n against the slide; its force is an impulse of its step like the normal one. In a
+// contact plane (two tangents) the trial is a vector and the limit a circle: slipping,
+// F_t = mu F_n tau / |tau| (Alart & Curnier's projection on the disc, with one scale s for both
+// tangents so that the force at the fixed point is along the slide;
+// evaluate_hard_friction_in_plane).
 //
 // Link rows that carry a force from the start on a linear branch (bearings, springs, hinges:
 // stiffness K_r = dF/d(delta) + c_c dF/d(delta_dot) + c_m dF/d(delta_ddot) at the initial state)
@@ -41,6 +45,7 @@
 // of the unknowns: the iterates are those of the unfolded iteration but for the start. Not with
 // hard contacts (their active set depends on the iterates).
 #include <Eigen/LU>
+#include <array>
 #include <map>
 #include <vector>
 
@@ -140,6 +145,10 @@ class Newmark final : public Integrator {
   void evaluate_hard_contacts(const Factorization& f);
   // A hard contact's friction row t (its normal row t - 1): stick or slip, law force, tangent.
   void evaluate_hard_friction(const Factorization& f, Index t);
+  // The same for a contact plane's two tangential rows t, t + 1 (normal row t - 1).
+  void evaluate_hard_friction_in_plane(const Factorization& f, Index t);
+  // Zeroes row r's hard-friction Jacobian entries (before its state is chosen again).
+  void clear_hard_friction_row(Index r);
   // The rows' derivatives at the initial state, zero on the rows that are not folded.
   void set_folding_references(LinkSet& links, const Vector& delta, const Vector& rate);
   // Each hard contact's bound for this step, from its state at t_n.
@@ -201,10 +210,16 @@ class Newmark final : public Integrator {
   // Hard contacts: their laws by row (nullptr for a force law's row), found at initialize(), and
   // which of them press (delta = 0 enforced) at the current iterate.
   std::vector<links::HardContact*> hard_laws_;
-  std::vector<links::CoulombFriction*> hard_frictions_;  // on a hard contact's friction row
-  std::vector<char> hard_pressing_;                      // (a friction row: sticking)
-  // A slipping friction row's Jacobian entry on its normal row, -sign mu; 0 on every other row.
-  std::vector<double> hard_slip_;
+  std::vector<links::CoulombFriction*> hard_frictions_;  // on a hard contact's friction rows
+  std::vector<int> hard_tangent_;                        // a friction row's tangent, 0 or 1
+  std::vector<char> hard_pair_;      // a friction row of a contact plane whose two tangents move
+  std::vector<char> hard_pressing_;  // (a friction row: sticking)
+  std::vector<char> hard_slipping_;  // a friction row slipping
+  // A slipping friction row's Jacobian entries d(F - F_law)/dF outside T G on the rows of its link
+  // (normal, tangent 1, tangent 2): -sign mu on the normal one in a plane scene; in a contact
+  // plane -mu e_a on the normal and -Q(a, b) on the tangents. Zero on every other row.
+  using HardEntries = std::array<double, 3>;
+  std::vector<HardEntries> hard_entries_;
   std::vector<char> hard_candidate_;  // constrained in this step (held, or penetrated)
   Vector hard_bound_, hard_rate_, hard_force_, hard_acceleration_, link_history_;
   Vector hard_offset_, hard_offset_rate_, hard_offset_acceleration_;  // the supports' at t_n

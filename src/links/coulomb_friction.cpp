@@ -49,7 +49,7 @@ CoulombFriction::CoulombFriction(const CoulombFriction& other)
 
 FrictionResponse CoulombFriction::set_trial(const LinkKinematics& normal,
                                             std::span<const LinkKinematics> tangential) {
-  if (hard_) return imposed(normal, tangential[0]);
+  if (hard_) return imposed(normal, tangential);
   FrictionResponse out =
       tangents_ == 1 ? coulomb(normal, tangential[0]) : coulomb_in_plane(normal, tangential);
   trial_normal_force_ = out.normal.force;
@@ -59,12 +59,12 @@ FrictionResponse CoulombFriction::set_trial(const LinkKinematics& normal,
 }
 
 FrictionResponse CoulombFriction::imposed(const LinkKinematics& normal,
-                                          const LinkKinematics& tangential) {
+                                          std::span<const LinkKinematics> tangential) {
   FrictionResponse out;
   out.normal = normal_->set_trial(normal);
   out.tangential_force = trial_tangential_force_;
   out.slipping = trial_slip_;
-  trial_slide_[0] = tangential.penetration;
+  for (std::size_t a = 0; a < tangential.size(); ++a) trial_slide_[a] = tangential[a].penetration;
   trial_normal_force_ = out.normal.force;
   return out;
 }

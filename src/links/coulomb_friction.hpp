@@ -36,7 +36,8 @@
 //
 // On a hard contact (links/hard_contact.hpp) the friction is a constraint as well, with no stick
 // penalty: the integrator finds R_t with R_n, sticking (no slide over the step) while
-// |R_t| <= mu R_n and slipping at R_t = mu R_n against the slide otherwise, and imposes both
+// |R_t| <= mu R_n and slipping at R_t = mu R_n against the slide otherwise (in a contact plane,
+// R_t = mu R_n e along the step's slide e, the same circle), and imposes both
 // (impose_tangential); set_trial then returns the imposed forces with no tangents.
 #include <array>
 #include <memory>
@@ -93,10 +94,10 @@ class CoulombFriction {
   const LinkLaw& normal_law() const { return *normal_; }
   // The normal law's hard contact, when it is one: then R_t is imposed, not computed.
   HardContact* hard_contact() { return hard_; }
-  // The tangential force the integrator found for the trial state, and whether it slips (one
-  // tangent: hard contacts with friction are built in plane scenes).
-  void impose_tangential(double force, bool slipping) {
-    trial_tangential_force_[0] = force;
+  // The tangential force along tangent `tangent` (0 or 1) the integrator found for the trial
+  // state, and whether the contact slips (the same for both tangents of a contact plane).
+  void impose_tangential(int tangent, double force, bool slipping) {
+    trial_tangential_force_[static_cast<std::size_t>(tangent)] = force;
     trial_slip_ = slipping;
   }
   double coefficient() const { return coefficient_; }
@@ -112,7 +113,8 @@ class CoulombFriction {
   void slip_in_plane(std::span<const LinkKinematics> tangential, const Tangential& stick_force,
                      FrictionResponse& out);
   // R_n and R_t as imposed, for the hard contact.
-  FrictionResponse imposed(const LinkKinematics& normal, const LinkKinematics& tangential);
+  FrictionResponse imposed(const LinkKinematics& normal,
+                           std::span<const LinkKinematics> tangential);
   // The pendulum's R_n s / R, added to a response in contact.
   void add_restoring(std::span<const LinkKinematics> tangential, FrictionResponse& response) const;
 

@@ -138,6 +138,33 @@ class PlaneSceneInSpace : public testing::PoundProcess {
     EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
     return json::parse(read_text(path(out) / "summary.json"));
   }
+
+  // Runs the plane model at `plane` and its 3-D form: the same summary and histories.
+  void expect_the_same_in_space(const fs::path& plane, const std::string& name) {
+    const fs::path space = path(name + "_3d.json");
+    std::ofstream(space) << in_space(json::parse(read_text(plane))).dump(1);
+    json in_plane = run(plane, name + ".plane");
+    json in_3d = run(space, name + ".space");
+    EXPECT_EQ(in_3d["dofs"], in_plane["dofs"]);
+    for (json* summary : {&in_plane, &in_3d})
+      for (const char* key : {"model", "run_time_s"}) summary->erase(key);
+    EXPECT_EQ(in_3d, in_plane) << json::diff(in_plane, in_3d).dump(1).substr(0, 2000);
+    // Every history with the same columns (an element's end forces have more in 3-D: Vy, Vz,
+    // T, My, Mz) is the same file.
+    int compared = 0;
+    for (const fs::directory_entry& csv : fs::directory_iterator(path(name + ".plane"))) {
+      if (csv.path().extension() != ".csv") continue;
+      const std::string before = read_text(csv.path());
+      const std::string after = read_text(path(name + ".space") / csv.path().filename());
+      const std::string header = plane_link_columns(after);
+      if (before.substr(0, before.find('\n')) != header.substr(0, header.find('\n'))) continue;
+      EXPECT_EQ(plane_names(plane_link_columns(after)), before) << csv.path().filename();
+      ++compared;
+    }
+    std::printf("  %s: summary and %d histories identical in 3-D (%ld DOFs)\n", name.c_str(),
+                compared, in_plane["dofs"].get<long>());
+    EXPECT_GT(compared, 0);
+  }
 };
 
 TEST_F(PlaneSceneInSpace, BundledPlaneFramesGiveTheSameNumbersInSpace) {
@@ -151,31 +178,37 @@ TEST_F(PlaneSceneInSpace, BundledPlaneFramesGiveTheSameNumbersInSpace) {
                      plane.string()})
                   .exit_code,
               0);
-    const fs::path space = path(std::string(name) + "_3d.json");
-    std::ofstream(space) << in_space(json::parse(read_text(plane))).dump(1);
-    json in_plane = run(plane, std::string(name) + ".plane");
-    json in_3d = run(space, std::string(name) + ".space");
-    EXPECT_EQ(in_3d["dofs"], in_plane["dofs"]);
-    for (json* summary : {&in_plane, &in_3d})
-      for (const char* key : {"model", "run_time_s"}) summary->erase(key);
-    EXPECT_EQ(in_3d, in_plane) << json::diff(in_plane, in_3d).dump(1).substr(0, 2000);
-    // Every history with the same columns (an element's end forces have more in 3-D: Vy, Vz,
-    // T, My, Mz) is the same file.
-    int compared = 0;
-    for (const fs::directory_entry& csv :
-         fs::directory_iterator(path(std::string(name) + ".plane"))) {
-      if (csv.path().extension() != ".csv") continue;
-      const std::string before = read_text(csv.path());
-      const std::string after =
-          read_text(path(std::string(name) + ".space") / csv.path().filename());
-      const std::string header = plane_link_columns(after);
-      if (before.substr(0, before.find('\n')) != header.substr(0, header.find('\n'))) continue;
-      EXPECT_EQ(plane_names(plane_link_columns(after)), before) << csv.path().filename();
-      ++compared;
-    }
-    std::printf("  %s: summary and %d histories identical in 3-D (%ld DOFs)\n", name, compared,
-                in_plane["dofs"].get<long>());
-    EXPECT_GT(compared, 0);
+    expect_the_same_in_space(plane, name);
+  }
+}
+
+// Hard contacts with friction (issue 17): a block thrown along a hard floor into a hard wall
+// (e = 0.5), rubbing on both, under Newmark and central difference. In space each link's second
+// tangent is z, held: no constraint, and the first is the plane scene's tangent.
+TEST_F(PlaneSceneInSpace, HardContactsWithFrictionGiveTheSameNumbersInSpace) {
+  for (const char* integrator : {"newmark_average_acceleration", "central_difference"}) {
+    SCOPED_TRACE(integrator);
+    const json model = json::parse(R"({
+      "dimension": 2,
+      "nodes": [{"id": "block", "x": 0, "y": 0}, {"id": "floor", "x": 0, "y": 0},
+                {"id": "wall", "x": 0, "y": 0}],
+      "masses": [{"node": "block", "mass": 10}],
+      "supports": [{"node": "floor", "fix": ["x", "y"]}, {"node": "wall", "fix": ["x", "y"]}],
+      "loads": [{"node": "block", "x": 20, "y": -98.1}],
+      "initial_velocities": [{"node": "block", "x": 1.5, "y": 0.2}],
+      "links": [
+        {"id": "floor", "nodes": ["block", "floor"], "axis": [0, -1],
+         "law": {"type": "hard_contact", "restitution": 0}, "friction": {"coefficient": 0.4}},
+        {"id": "wall", "nodes": ["block", "wall"], "axis": [1, 0], "gap": 0.1,
+         "law": {"type": "hard_contact", "restitution": 0.5}, "friction": {"coefficient": 0.3}}],
+      "analysis": {"time_step": 1e-4, "duration": 0.5}
+    })");
+    json plane_model = model;
+    plane_model["analysis"]["integrator"] = integrator;
+    const std::string name = std::string("hard_block_") + integrator;
+    const fs::path plane = path(name + ".json");
+    std::ofstream(plane) << plane_model.dump(1);
+    expect_the_same_in_space(plane, name);
   }
 }
 

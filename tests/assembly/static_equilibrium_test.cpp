@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
+#include <cmath>
 #include <iostream>
 #include <string>
 
@@ -163,6 +165,102 @@ TEST(StaticEquilibrium, ABlockOnABeltSlipsAtMuWInTheBeltsDirection) {
         EXPECT_TRUE(system.links().friction(k)->slipping());
       }
   }
+}
+
+// In a 3-D scene the friction of a hard contact acts in the contact plane, its limit a circle:
+// a block (weight 98.1, mu = 0.5: mu W = 49.05) on a hard floor, held by springs k_x = 1000 and
+// k_y = 2500 and pushed by P in the plan. Below the circle (|P| = 42.4, each component 30) it
+// sticks where it stands, friction carrying P; past it (P = (60, 45), |P| = 75) it slips, the
+// friction mu W along each load increment's slide, the springs taking the rest.
+StructuralSystem block_on_floor_in_space(double push_x, double push_y) {
+  return StructuralSystem(builder::build(io::parse_model(fmt::format(R"({{
+    "dimension": 3,
+    "nodes": [{{"id": "block", "x": 0, "y": 0, "z": 0}}, {{"id": "ground", "x": 0, "y": 0, "z": 0}}],
+    "masses": [{{"node": "block", "mass": 10}}],
+    "supports": [{{"node": "ground", "fix": ["x", "y", "z"]}}],
+    "loads": [{{"node": "block", "x": {}, "y": {}, "z": -98.1}}],
+    "links": [{{"id": "floor", "nodes": ["block", "ground"], "axis": [0, 0, -1],
+               "law": {{"type": "hard_contact", "restitution": 0}},
+               "friction": {{"coefficient": 0.5}}}},
+              {{"id": "spring_x", "nodes": ["block", "ground"], "axis": [1, 0, 0],
+               "law": {{"type": "elastic_spring", "stiffness": 1000}}}},
+              {{"id": "spring_y", "nodes": ["block", "ground"], "axis": [0, 1, 0],
+               "law": {{"type": "elastic_spring", "stiffness": 2500}}}}],
+    "analysis": {{"time_step": 0.001, "duration": 1}}
+  }})",
+                                                                     push_x, push_y),
+                                                         "block_3d.json"))
+                              .model);
+}
+
+TEST(StaticEquilibrium, InSpaceAHardFloorsFrictionLimitIsACircle) {
+  const double limit = 49.05;
+  StructuralSystem held = block_on_floor_in_space(30.0, 30.0);
+  const StaticEquilibrium still = static_equilibrium(held, 0.0);
+  const Vector held_forces = imposed_forces(held);
+  const double held_error = std::hypot(held_forces[1] - 30.0, held_forces[2] - 30.0);
+  EXPECT_LT(still.displacement.cwiseAbs().maxCoeff(), 1e-15);
+  EXPECT_LT(held_error, 1e-12);
+  EXPECT_FALSE(held.links().friction(0)->slipping());
+
+  StructuralSystem pushed = block_on_floor_in_space(60.0, 45.0);
+  const StaticEquilibrium slid = static_equilibrium(pushed, 0.0);
+  // The static solve applies the loads (weight and push) in 10 equal increments, each slip
+  // measured from where the last one left the block; |P| / W = 0.76 > mu, so it slips in each:
+  // K u_k + mu W_k e = P_k with e = (u_k - u_{k-1}) / |u_k - u_{k-1}|, W_k = k W / 10. For a slip
+  // angle phi, u(phi) = K^-1 (P_k - mu W_k e(phi)); the reference finds the phi at which the slide
+  // u(phi) - u_{k-1} lies along e(phi) (a sign change of their cross product, by bisection).
+  const Eigen::Vector2d load(60.0, 45.0);
+  const Eigen::Matrix2d compliance = Eigen::Vector2d(1e-3, 4e-4).asDiagonal();
+  Eigen::Vector2d u = Eigen::Vector2d::Zero(), last_slide_start = u;
+  for (int k = 1; k <= 10; ++k) {
+    const Eigen::Vector2d applied = 0.1 * k * load, previous = u;
+    const double resisted = 0.1 * k * limit;
+    last_slide_start = previous;
+    const auto along = [&](double phi) { return Eigen::Vector2d(std::cos(phi), std::sin(phi)); };
+    const auto slide = [&](double phi) {
+      return Eigen::Vector2d(compliance * (applied - resisted * along(phi)) - previous);
+    };
+    const auto cross = [&](double phi) {
+      const Eigen::Vector2d s = slide(phi), e = along(phi);
+      return s.x() * e.y() - s.y() * e.x();
+    };
+    double low = 0.0, high = 0.0;
+    const int samples = 3600;
+    for (int j = 0; j < samples; ++j) {
+      const double a = 2.0 * std::acos(-1.0) * j / samples, b = a + 2.0 * std::acos(-1.0) / samples;
+      if (cross(a) * cross(b) <= 0.0 && slide(a).dot(along(a)) > 0.0) {
+        low = a;
+        high = b;
+        break;
+      }
+    }
+    ASSERT_LT(low, high);
+    for (int halving = 0; halving < 60; ++halving) {
+      const double middle = 0.5 * (low + high);
+      (cross(low) * cross(middle) <= 0.0 ? high : low) = middle;
+    }
+    u = previous + slide(0.5 * (low + high));
+  }
+  const Index x = pushed.dofs().equation(0, 0), y = pushed.dofs().equation(0, 1);
+  const Eigen::Vector2d found(slid.displacement[x], slid.displacement[y]);
+  const Vector forces = imposed_forces(pushed);
+  const Eigen::Vector2d friction(forces[1], forces[2]);
+  const double displacement_error = (found - u).norm() / u.norm();
+  // (The loads being proportional, every increment slides the same way: u_k = k u_1.)
+  const double limit_error = friction.norm() / limit - 1.0;
+  const double direction_error =
+      1.0 - friction.normalized().dot((u - last_slide_start).normalized());
+  std::cout << fmt::format(
+      "3-D block on a hard floor: held by |P| = 42.4 < mu W, moved {:.1e}, friction - P {:.1e}; "
+      "pushed by |P| = 75: u error {:.1e} of |u| = {:.4f}, |F_t| / (mu W) - 1 = {:.1e}, 1 - "
+      "cos(F_t, u) = {:.1e} ({} iterations)\n",
+      still.displacement.cwiseAbs().maxCoeff(), held_error, displacement_error, u.norm(),
+      limit_error, direction_error, slid.iterations);
+  EXPECT_LT(displacement_error, 1e-9);
+  EXPECT_LT(std::abs(limit_error), 1e-9);
+  EXPECT_LT(direction_error, 1e-9);
+  EXPECT_TRUE(pushed.links().friction(0)->slipping());
 }
 
 }  // namespace

@@ -346,7 +346,9 @@ TEST(SpaceScene, MeaninglessSpaceInputIsRefusedWithItsPath) {
   ASSERT_FALSE(error_of(friction));  // a penalty law rubs in the contact plane
   json hard_friction = friction;
   hard_friction["links"][0]["law"] = {{"type", "hard_contact"}, {"restitution", 0.5}};
-  expect_refused(hard_friction, "/links/0/friction", "not built yet");
+  ASSERT_FALSE(error_of(hard_friction));  // a constraint in the contact plane (issue 17)
+  hard_friction["links"][0]["friction"]["stick_stiffness"] = 1e6;
+  expect_refused(hard_friction, "/links/0/friction/stick_stiffness", "no stick penalty");
   json hinge = link;
   hinge["links"][0] = {{"id", "hinge"},
                        {"nodes", {"n0", "n1"}},

@@ -198,7 +198,29 @@ TEST(LinkSet, FrictionInAContactPlaneHasARowPerTangent) {
   EXPECT_NEAR(tangent(2, 1), tangent(1, 2), 1e-15);
   EXPECT_NEAR(tangent(1, 0), 0.5 * 0.6 * 200.0, 1e-12);
   EXPECT_THROW(plane_link(1, std::make_unique<links::GapSpring>(200.0)), std::invalid_argument);
-  EXPECT_THROW(plane_link(2, std::make_unique<links::HardContact>(0.0)), std::invalid_argument);
+  // On a hard contact both tangents are constraint rows of one contact plane.
+  LinkSet hard = plane_link(2, std::make_unique<links::HardContact>(0.0));
+  const LinkSet::HardRows rows = hard.hard_rows();
+  EXPECT_NE(rows.contacts[0], nullptr);
+  EXPECT_EQ(rows.frictions[1], rows.frictions[2]);
+  EXPECT_NE(rows.frictions[1], nullptr);
+  EXPECT_EQ(rows.tangent, (std::vector<int>{0, 0, 1}));
+  EXPECT_EQ(rows.pair, (std::vector<char>{0, 1, 1}));
+}
+
+// A contact plane's tangent whose DOFs are all held (z fixed under a plane scene written in 3-D)
+// has no slide to constrain: its row is no hard row, and the other is a plane scene's friction.
+TEST(LinkSet, AHardContactPlaneTangentThatCannotMoveIsNoConstraint) {
+  std::vector<LinkSet::Link> links(1);
+  links[0].normal_row = {{1, 1.0}};
+  links[0].tangential_rows = {{{0, 1.0}}, {}};
+  links[0].friction = std::make_unique<links::CoulombFriction>(
+      std::make_unique<links::HardContact>(0.0), 0.5, links::StickPenalty{}, std::nullopt, 2);
+  LinkSet set(2, std::move(links));
+  const LinkSet::HardRows rows = set.hard_rows();
+  EXPECT_NE(rows.frictions[1], nullptr);
+  EXPECT_EQ(rows.frictions[2], nullptr);
+  EXPECT_EQ(rows.pair, (std::vector<char>{0, 0, 0}));
 }
 
 TEST(LinkSet, ScalarLinksHaveOneRowEach) {
