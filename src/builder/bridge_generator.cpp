@@ -1,8 +1,12 @@
 // girder_bridge: a multi-span girder bridge with piers, bearings, expansion joints, abutments,
-// restrainers and backfill (builder/spec.hpp, GirderBridgeSpec).
+// restrainers and backfill (builder/spec.hpp, GirderBridgeSpec). In a plane scene x runs along
+// the bridge and y up; in a 3-D scene x along, y across and z up, the girders and piers 3-D
+// beams on one spine, the deck's ends skewed: its pounding points lie along each end line.
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 #include "builder/generators.hpp"
 
@@ -15,7 +19,33 @@ struct Bridge {
   std::vector<double> x;  // stations of the abutments and piers: 0, then the end of each span
   double deck;            // height of the girders, on top of the piers
   std::string girder_material, pier_material;
+  bool space = false;  // a 3-D scene
 };
+
+// A node at station x and height h: (x, h) in a plane, (x, 0, h) in space.
+NodeSpec node_at(const Bridge& bridge, std::string id, double x, double height) {
+  if (bridge.space) return {std::move(id), x, 0.0, height};
+  return {std::move(id), x, height};
+}
+
+// The unit vector along the bridge, with a sign.
+std::vector<double> along(const Bridge& bridge, double sign) {
+  return bridge.space ? std::vector<double>{sign, 0.0, 0.0} : std::vector<double>{sign, 0.0};
+}
+
+// Supports: every direction; the translations; every direction but the one along the bridge.
+SupportSpec fixed(const Bridge& bridge, const std::string& node) {
+  if (bridge.space) return {node, {true, true, true, true, true, true}};
+  return {node, {true, true, true}};
+}
+SupportSpec held(const Bridge& bridge, const std::string& node) {
+  if (bridge.space) return {node, {true, true, true}};
+  return {node, {true, true}};
+}
+SupportSpec sliding_along(const Bridge& bridge, const std::string& node) {
+  if (bridge.space) return {node, {false, true, true, true, true, true}};
+  return {node, {false, true}};
+}
 
 // The first and last node of a continuous stretch of girder.
 struct GirderSegment {
@@ -36,19 +66,54 @@ std::string pier_top(const GirderBridgeSpec& spec, int pier) {
   return fmt::format("{}.p{}.top", spec.id, pier);
 }
 
-void add_beam(const std::string& id, const std::string& node_i, const std::string& node_j,
-              const std::string& material, const SectionSpec& section, ModelSpec& out) {
+// In space `inertia` bends in the vertical plane along the bridge and `inertia_lateral` across
+// it: a girder (along x) oriented by +z has y' = y, z' = z, so I_y is its vertical bending; a pier
+// (along z) oriented by +x has y' = -y, z' = x, so I_y bends it along the bridge.
+void add_beam(const Bridge& bridge, const std::string& id, const std::string& node_i,
+              const std::string& node_j, const std::string& material, const SectionSpec& section,
+              bool pier, ModelSpec& out) {
   ElementSpec beam = make_beam(id, node_i, node_j, material, section.area, section.inertia);
   beam.extra_mass = section.extra_mass;
+  if (bridge.space) {
+    beam.inertia_y = section.inertia;
+    beam.inertia_z = section.inertia_lateral;
+    beam.torsion = section.torsion;
+    beam.orientation = pier ? std::array{1.0, 0.0, 0.0} : std::array{0.0, 0.0, 1.0};
+  }
   out.elements.push_back(beam);
+}
+
+// The pounding points of a deck end, from its centre (3-D): `contact_points` of them along the
+// end line d = (-sin skew, cos skew, 0), from the right corner (-y side) to the left one.
+std::vector<std::array<double, 3>> end_points(const GirderBridgeSpec& spec) {
+  const double skew = spec.skew * std::numbers::pi / 180.0;
+  const std::array<double, 3> line{-std::sin(skew), std::cos(skew), 0.0};
+  std::vector<std::array<double, 3>> points;
+  const int n = spec.contact_points;
+  for (int k = 0; k < n; ++k) {
+    const double s = n == 1 ? 0.0 : spec.deck_width * (static_cast<double>(k) / (n - 1) - 0.5);
+    points.push_back({s * line[0], s * line[1], 0.0});
+  }
+  return points;
+}
+
+// The deck end's normal in plan, along the bridge turned by the skew (3-D).
+std::vector<double> end_normal(const GirderBridgeSpec& spec, double sign) {
+  const double skew = spec.skew * std::numbers::pi / 180.0;
+  return {sign * std::cos(skew), sign * std::sin(skew), 0.0};
 }
 
 // A girder node sits on a seat: a horizontal bearing (the user's law) and a vertical one. A
 // sliding bearing's vertical link is a contact pointing down from the girder to the seat, so
 // that the girder's weight presses it (R_n > 0) and its tangent, n turned by +90 degrees, is +x:
 // the slide s is u_girder,x - u_seat,x, as for bearing_x.
-void add_bearing(const GirderBridgeSpec& spec, const std::string& girder, const std::string& seat,
+void add_bearing_in_space(const GirderBridgeSpec& spec, const std::string& girder,
+                          const std::string& seat, ModelSpec& out);
+
+void add_bearing(const Bridge& bridge, const std::string& girder, const std::string& seat,
                  ModelSpec& out) {
+  const GirderBridgeSpec& spec = bridge.spec;
+  if (bridge.space) return add_bearing_in_space(spec, girder, seat, out);
   if (spec.bearing)
     out.links.push_back(
         make_link(girder + ".bearing_x", girder, seat, {1.0, 0.0}, 0.0, *spec.bearing));
@@ -64,13 +129,57 @@ void add_bearing(const GirderBridgeSpec& spec, const std::string& girder, const 
   out.links.push_back(std::move(sliding));
 }
 
-// The pounding link of a joint along x (`direction` +1 or -1) and its restrainer, if it has one.
-void add_joint_links(const std::string& joint, const std::string& node_i, const std::string& node_j,
-                     double direction, const JointSpec& spec, ModelSpec& out) {
-  out.links.push_back(make_link(joint, node_i, node_j, {direction, 0.0}, spec.gap, spec.law));
-  if (spec.restrainer)
+// In space the bearing's law acts along x and y (`.bearing_x`, `.bearing_y`) and the vertical
+// link is `.bearing_z`; a sliding bearing's friction then acts in the horizontal plane (t1 = x,
+// t2 = y), with a radius a bidirectional friction pendulum.
+void add_bearing_in_space(const GirderBridgeSpec& spec, const std::string& girder,
+                          const std::string& seat, ModelSpec& out) {
+  // The seat's bearings across the deck hold its twist: two lines of k_v / 2 at +-s / 2.
+  const double spacing = spec.bearing_spacing.value_or(0.5 * spec.deck_width);
+  LinkSpec twist = make_link(girder + ".bearing_rx", girder, seat, {1.0, 0.0, 0.0}, 0.0,
+                             elastic(spec.bearing_vertical_stiffness * spacing * spacing / 4.0));
+  twist.rotational = true;
+  out.links.push_back(std::move(twist));
+  if (spec.bearing) {
     out.links.push_back(
-        make_link(joint + ".restrainer", node_i, node_j, {direction, 0.0}, 0.0, *spec.restrainer));
+        make_link(girder + ".bearing_x", girder, seat, {1.0, 0.0, 0.0}, 0.0, *spec.bearing));
+    out.links.push_back(
+        make_link(girder + ".bearing_y", girder, seat, {0.0, 1.0, 0.0}, 0.0, *spec.bearing));
+  }
+  if (!spec.bearing_friction) {
+    out.links.push_back(make_link(girder + ".bearing_z", girder, seat, {0.0, 0.0, 1.0}, 0.0,
+                                  elastic(spec.bearing_vertical_stiffness)));
+    return;
+  }
+  const LawSpec contact{.type = "gap_spring",
+                        .parameters = {{"stiffness", spec.bearing_vertical_stiffness}}};
+  LinkSpec sliding = make_link(girder + ".bearing_z", girder, seat, {0.0, 0.0, -1.0}, 0.0, contact);
+  sliding.friction = spec.bearing_friction;
+  out.links.push_back(std::move(sliding));
+}
+
+// The pounding link of a joint along x (`direction` +1 or -1) and its restrainer, if it has one.
+// In space one link per pounding point of the deck end, `<joint>.c<k>` (or `<joint>` alone at
+// its centre), along the end's normal, both ends offset to the point; the restrainer along the
+// bridge between the end nodes.
+void add_joint_links(const Bridge& bridge, const std::string& joint, const std::string& node_i,
+                     const std::string& node_j, double direction, const JointSpec& spec,
+                     ModelSpec& out) {
+  if (!bridge.space) {
+    out.links.push_back(make_link(joint, node_i, node_j, {direction, 0.0}, spec.gap, spec.law));
+  } else {
+    const std::vector<std::array<double, 3>> points = end_points(bridge.spec);
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const std::string id = points.size() == 1 ? joint : fmt::format("{}.c{}", joint, k);
+      LinkSpec link =
+          make_link(id, node_i, node_j, end_normal(bridge.spec, direction), spec.gap, spec.law);
+      if (points.size() > 1) link.offsets = std::array{points[k], points[k]};
+      out.links.push_back(std::move(link));
+    }
+  }
+  if (spec.restrainer)
+    out.links.push_back(make_link(joint + ".restrainer", node_i, node_j, along(bridge, direction),
+                                  0.0, *spec.restrainer));
 }
 
 // The pier's section: with hinges its E I is raised to (n + 1) / n E I (builder/spec.hpp).
@@ -108,8 +217,8 @@ std::string add_pier_base(const Bridge& bridge, int pier, const std::optional<Pi
                           ModelSpec& out) {
   const GirderBridgeSpec& spec = bridge.spec;
   const std::string base = fmt::format("{}.p{}.base", spec.id, pier);
-  out.nodes.push_back({base, bridge.x[pier], 0.0});
-  out.supports.push_back({base, {true, true, true}});
+  out.nodes.push_back(node_at(bridge, base, bridge.x[pier], 0.0));
+  out.supports.push_back(fixed(bridge, base));
   if (!hinge) return base;
   const std::string node = hinge_id(spec, pier);
   out.nodes.push_back({node, bridge.x[pier], 0.0});
@@ -134,9 +243,10 @@ void add_pier(const Bridge& bridge, int pier, ModelSpec& out) {
   for (int e = 1; e <= spec.pier.elements; ++e) {
     const std::string node =
         e == spec.pier.elements ? top : fmt::format("{}.p{}.n{}", spec.id, pier, e);
-    out.nodes.push_back({node, bridge.x[pier], bridge.deck * e / spec.pier.elements});
-    add_beam(fmt::format("{}.p{}.e{}", spec.id, pier, e), previous, node, bridge.pier_material,
-             section, out);
+    out.nodes.push_back(
+        node_at(bridge, node, bridge.x[pier], bridge.deck * e / spec.pier.elements));
+    add_beam(bridge, fmt::format("{}.p{}.e{}", spec.id, pier, e), previous, node,
+             bridge.pier_material, section, true, out);
     previous = node;
   }
   const std::optional<double> yield_drift =
@@ -156,6 +266,11 @@ void add_pier(const Bridge& bridge, int pier, ModelSpec& out) {
     monitor.plastic_hinge_length = spec.pier_hinge->plastic_hinge_length;
   }
   out.drift_monitors.push_back(monitor);
+  if (!bridge.space) return;
+  DriftMonitorSpec across = monitor;  // the pier's drift across the bridge
+  across.id += ".y";
+  across.direction = 1;
+  out.drift_monitors.push_back(across);
 }
 
 // Where the girder is cut, as span numbers: 0 and the last at the abutments, and the expansion
@@ -168,6 +283,26 @@ std::vector<int> girder_cuts(const GirderBridgeSpec& spec) {
   return cuts;
 }
 
+// In space the deck's width gives each girder node a rotary inertia about x (twist) and z (plan
+// turn), m W^2 / 12 of the mass m it lumps (half of each beam beside it), the deck's mass spread
+// evenly across its width.
+void add_deck_rotary_inertia(const Bridge& bridge, const std::vector<std::string>& nodes,
+                             const std::vector<double>& stations, ModelSpec& out) {
+  const GirderBridgeSpec& spec = bridge.spec;
+  const double per_length = spec.girder.density * spec.girder.area + spec.girder.extra_mass;
+  std::vector<double> lumped(nodes.size(), 0.0);
+  for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {
+    const double half = 0.5 * per_length * (stations[k + 1] - stations[k]);
+    lumped[k] += half;
+    lumped[k + 1] += half;
+  }
+  const double width_squared = spec.deck_width * spec.deck_width;
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    const double inertia = lumped[k] * width_squared / 12.0;
+    if (inertia > 0.0) out.masses.push_back({nodes[k], 0.0, {inertia, 0.0, inertia}, std::nullopt});
+  }
+}
+
 // Girder segment `g`, over spans [first_span, end_span) between two cuts.
 GirderSegment add_girder_segment(const Bridge& bridge, std::size_t g, int first_span, int end_span,
                                  ModelSpec& out) {
@@ -175,37 +310,69 @@ GirderSegment add_girder_segment(const Bridge& bridge, std::size_t g, int first_
   GirderSegment segment;
   std::string previous;
   int counter = 0;
+  std::vector<std::string> nodes;
+  std::vector<double> positions;
   for (int span = first_span; span < end_span; ++span)
     for (int e = 0; e <= spec.girder.elements; ++e) {
       if (e == 0 && span > first_span) continue;  // shared with the previous span
       const double at =
           bridge.x[span] + spec.spans[static_cast<std::size_t>(span)] * e / spec.girder.elements;
       const std::string node = fmt::format("{}.g{}.n{}", spec.id, g, counter++);
-      out.nodes.push_back({node, at, bridge.deck});
+      out.nodes.push_back(node_at(bridge, node, at, bridge.deck));
+      nodes.push_back(node);
+      positions.push_back(at);
       if (!previous.empty())
-        add_beam(fmt::format("{}.g{}.e{}", spec.id, g, counter - 1), previous, node,
-                 bridge.girder_material, spec.girder, out);
+        add_beam(bridge, fmt::format("{}.g{}.e{}", spec.id, g, counter - 1), previous, node,
+                 bridge.girder_material, spec.girder, false, out);
       else
         segment.first = node;
       previous = node;
       // A node over a pier that is not cut sits on it.
       if (e == spec.girder.elements && span + 1 < end_span)
-        add_bearing(spec, node, pier_top(spec, span + 1), out);
+        add_bearing(bridge, node, pier_top(spec, span + 1), out);
     }
   segment.last = previous;
+  if (bridge.space) add_deck_rotary_inertia(bridge, nodes, positions, out);
   return segment;
 }
 
+// A joint's monitors: its opening and closing, and the girder end's movement on its seat along the
+// bridge. In space with several pounding points one per point, `<id>.c<k>`, each opening at its
+// point (the movement on the seat is the deck centre's).
+void add_joint_monitors(const Bridge& bridge, const std::string& id, const std::string& joint,
+                        const std::string& girder, const std::string& seat, double seat_width,
+                        ModelSpec& out) {
+  const int points = bridge.space ? bridge.spec.contact_points : 1;
+  if (points == 1) {
+    out.joint_monitors.push_back({id, joint, girder, seat, seat_width});
+    return;
+  }
+  for (int k = 0; k < points; ++k)
+    out.joint_monitors.push_back(
+        {fmt::format("{}.c{}", id, k), fmt::format("{}.c{}", joint, k), girder, seat, seat_width});
+}
+
 // An expansion joint over a pier: both girder ends sit on the pier top and may pound.
-void add_expansion_joint(const GirderBridgeSpec& spec, int pier, const std::string& left,
+void add_expansion_joint(const Bridge& bridge, int pier, const std::string& left,
                          const std::string& right, ModelSpec& out) {
+  const GirderBridgeSpec& spec = bridge.spec;
   const std::string seat = pier_top(spec, pier);
-  add_bearing(spec, left, seat, out);
-  add_bearing(spec, right, seat, out);
+  add_bearing(bridge, left, seat, out);
+  add_bearing(bridge, right, seat, out);
   const std::string joint = fmt::format("{}.joint{}", spec.id, pier);
-  add_joint_links(joint, left, right, 1.0, spec.joint, out);
-  out.joint_monitors.push_back({joint + ".left_end", joint, left, seat, spec.joint.seat_width});
-  out.joint_monitors.push_back({joint + ".right_end", joint, right, seat, spec.joint.seat_width});
+  add_joint_links(bridge, joint, left, right, 1.0, spec.joint, out);
+  add_joint_monitors(bridge, joint + ".left_end", joint, left, seat, spec.joint.seat_width, out);
+  add_joint_monitors(bridge, joint + ".right_end", joint, right, seat, spec.joint.seat_width, out);
+}
+
+// Shear keys on an abutment seat (3-D): `<abutment>.shear_key.left` (+y) and `.right` (-y),
+// compression-only stops the deck end strikes after the keys' gap.
+void add_shear_keys(const Bridge& bridge, const std::string& abutment, const std::string& girder,
+                    const std::string& seat, ModelSpec& out) {
+  const ShearKeySpec& keys = *bridge.spec.shear_keys;
+  for (const auto& [side, sign] : {std::pair{"left", 1.0}, std::pair{"right", -1.0}})
+    out.links.push_back(make_link(fmt::format("{}.shear_key.{}", abutment, side), girder, seat,
+                                  {0.0, sign, 0.0}, keys.gap, keys.law));
 }
 
 // An abutment (side 0 at the start, 1 at the end): the girder end sits on the seat and may
@@ -215,35 +382,45 @@ void add_abutment(const Bridge& bridge, int side, const std::string& girder, Mod
   const std::string name = fmt::format("{}.a{}", spec.id, side);
   const double at = side == 0 ? 0.0 : bridge.x.back(), outward = side == 0 ? -1.0 : 1.0;
   const std::string seat = name + ".seat", wall = name + ".wall";
-  out.nodes.push_back({seat, at, bridge.deck});
-  out.supports.push_back({seat, {true, true}});
-  out.nodes.push_back({wall, at, bridge.deck});
-  add_bearing(spec, girder, seat, out);
+  out.nodes.push_back(node_at(bridge, seat, at, bridge.deck));
+  out.supports.push_back(bridge.space ? fixed(bridge, seat) : held(bridge, seat));
+  out.nodes.push_back(node_at(bridge, wall, at, bridge.deck));
+  add_bearing(bridge, girder, seat, out);
+  // In space the backwall moves along the bridge only (its backfill's direction), held across it
+  // and in its rotations by the abutment.
   if (spec.backfill) {
     const std::string ground = name + ".ground";
-    out.nodes.push_back({ground, at, bridge.deck});
-    out.supports.push_back({ground, {true, true}});
-    out.supports.push_back({wall, {false, true}});
+    out.nodes.push_back(node_at(bridge, ground, at, bridge.deck));
+    out.supports.push_back(held(bridge, ground));
+    out.supports.push_back(sliding_along(bridge, wall));
     out.masses.push_back({wall, spec.backwall_mass, {}, std::nullopt});
     out.links.push_back(
-        make_link(name + ".backfill", wall, ground, {outward, 0.0}, 0.0, *spec.backfill));
+        make_link(name + ".backfill", wall, ground, along(bridge, outward), 0.0, *spec.backfill));
   } else {
-    out.supports.push_back({wall, {true, true}});
+    out.supports.push_back(fixed(bridge, wall));
   }
+  if (bridge.space && spec.shear_keys) add_shear_keys(bridge, name, girder, seat, out);
   const std::string joint = name + ".joint";
-  add_joint_links(joint, girder, wall, outward, spec.abutment, out);
-  out.joint_monitors.push_back(
-      {joint + ".girder_end", joint, girder, seat, spec.abutment.seat_width});
+  add_joint_links(bridge, joint, girder, wall, outward, spec.abutment, out);
+  add_joint_monitors(bridge, joint + ".girder_end", joint, girder, seat, spec.abutment.seat_width,
+                     out);
 }
 
 }  // namespace
 
 void add_girder_bridge(const GirderBridgeSpec& spec, ModelSpec& out) {
-  const Bridge bridge{spec, stations(spec), spec.pier_height, spec.id + ".girder",
-                      spec.id + ".pier"};
-  out.materials.push_back(
-      {bridge.girder_material, spec.girder.youngs_modulus, spec.girder.density});
-  out.materials.push_back({bridge.pier_material, spec.pier.youngs_modulus, spec.pier.density});
+  const Bridge bridge{spec,
+                      stations(spec),
+                      spec.pier_height,
+                      spec.id + ".girder",
+                      spec.id + ".pier",
+                      out.dimension == 3};
+  for (const auto& [material, section] : {std::pair{bridge.girder_material, &spec.girder},
+                                          std::pair{bridge.pier_material, &spec.pier}}) {
+    MaterialSpec made{material, section->youngs_modulus, section->density};
+    if (bridge.space) made.poisson_ratio = section->poisson_ratio;
+    out.materials.push_back(made);
+  }
   const int spans = static_cast<int>(spec.spans.size());
   for (int pier = 1; pier < spans; ++pier) add_pier(bridge, pier, out);
   const std::vector<int> cuts = girder_cuts(spec);
@@ -251,7 +428,7 @@ void add_girder_bridge(const GirderBridgeSpec& spec, ModelSpec& out) {
   for (std::size_t g = 0; g + 1 < cuts.size(); ++g)
     segments.push_back(add_girder_segment(bridge, g, cuts[g], cuts[g + 1], out));
   for (std::size_t g = 1; g + 1 < cuts.size(); ++g)
-    add_expansion_joint(spec, cuts[g], segments[g - 1].last, segments[g].first, out);
+    add_expansion_joint(bridge, cuts[g], segments[g - 1].last, segments[g].first, out);
   add_abutment(bridge, 0, segments.front().first, out);
   add_abutment(bridge, 1, segments.back().last, out);
 }

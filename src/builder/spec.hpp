@@ -290,6 +290,16 @@ struct SectionSpec {
   double youngs_modulus = 0.0, area = 0.0, inertia = 0.0, density = 0.0;
   double extra_mass = 0.0;  // per length [M/L]
   int elements = 2;         // per span (girder) or per pier
+  // 3-D scenes: `inertia` bends in the vertical plane along the bridge; `inertia_lateral` across
+  // it (a girder's about the vertical, a pier's across the bridge), `torsion` J [L^4], and the
+  // material's Poisson ratio for G = E / (2 (1 + nu)).
+  double inertia_lateral = 0.0, torsion = 0.0, poisson_ratio = 0.2;
+};
+// Shear keys: transverse stops on each abutment seat, either side of the deck end, that a deck
+// sliding across the bridge strikes after `gap` (compression-only links).
+struct ShearKeySpec {
+  double gap = 0.0;
+  LawSpec law;
 };
 struct JointSpec {
   double gap = 0.0;
@@ -333,6 +343,14 @@ struct GirderBridgeSpec {
   // Sliding bearings: the vertical link is then compression-only and carries this friction
   // (a friction pendulum with a radius), in parallel with `bearing` if that is given too.
   std::optional<FrictionSpec> bearing_friction;
+  // 3-D scenes: the deck's width and skew (the angle of its ends and of the supports' lines from
+  // the transverse axis, positive counter-clockwise in plan) [deg]; pounding at `contact_points`
+  // points along each deck end (2: its corners; 1: its centre); shear keys at the abutments.
+  double deck_width = 0.0;
+  std::optional<double> bearing_spacing;  // [L] across the deck; default half the deck's width
+  double skew = 0.0;
+  int contact_points = 2;
+  std::optional<ShearKeySpec> shear_keys;
 };
 
 // What a run reports beyond links: drift of storeys and piers (peak of |u_top - u_bottom|

@@ -289,9 +289,15 @@ Field<MassSpec> rotary_inertia() {
 const Fields<MassSpec>& mass_fields() {
   static const Fields<MassSpec> fields = {
       required("node", &MassSpec::node, Text{true}, "id of the node"),
-      required("mass", &MassSpec::mass, Number<>{positive},
-               "mass in every translational direction [M]"),
+      required("mass", &MassSpec::mass, Number<>{},
+               "mass in every translational direction, > 0; or 0 with a rotary inertia (a "
+               "beam's node, whose translational mass the beam lumps) [M]"),
       rotary_inertia(),
+      rule<MassSpec>([](JsonObject& object, MassSpec& mass, Context&) {
+        if (mass.mass < 0.0) object.at("mass").fail(fmt::format("must be > 0, got {}", mass.mass));
+        if (mass.mass == 0.0 && mass.rotary_inertia == std::array<double, 3>{})
+          object.at("mass").fail("must be > 0, got 0 (0 only with a rotary_inertia)");
+      }),
       optional("mass_damping", &MassSpec::mass_damping, Number<>{non_negative},
                "its own a0 instead of the model's [1/T]"),
   };
@@ -649,6 +655,28 @@ const Fields<SectionSpec>& section_fields() {
                "per span (girder) or per pier")
           .always_written()
           .default_text("`4` (girder), `2` (pier)"),
+      required("inertia_lateral", &SectionSpec::inertia_lateral, Number<>{positive},
+               "I for bending across the bridge (a girder's about the vertical, a pier's in the "
+               "transverse plane) [L⁴]; `inertia` bends in the vertical plane along the bridge")
+          .in_space(),
+      required("torsion", &SectionSpec::torsion, Number<>{positive},
+               "Saint-Venant torsion constant J [L⁴]")
+          .in_space(),
+      optional("poisson_ratio", &SectionSpec::poisson_ratio,
+               Number<>{non_negative, below(0.5, "must be < 0.5, got {}")},
+               "ν for the shear modulus G = E / (2 (1 + ν)) of the torsion")
+          .in_space()
+          .default_text("`0.2` (concrete)"),
+  };
+  return fields;
+}
+
+const Fields<builder::ShearKeySpec>& shear_key_fields() {
+  using builder::ShearKeySpec;
+  static const Fields<ShearKeySpec> fields = {
+      required("gap", &ShearKeySpec::gap, Number<>{non_negative},
+               "clear distance between the deck end and each key [L]"),
+      required("law", &ShearKeySpec::law, Law{}, "the key's law in compression"),
   };
   return fields;
 }
@@ -805,6 +833,31 @@ const Fields<GirderBridgeSpec>& girder_bridge_fields() {
                "mass of each backwall [M]")
           .when([](const GirderBridgeSpec& bridge) { return bridge.backfill.has_value(); },
                 "with backfill"),
+      required("deck_width", &GirderBridgeSpec::deck_width, Number<>{positive},
+               "the deck's width, between the corners that pound [L]")
+          .in_space(),
+      optional("bearing_spacing", &GirderBridgeSpec::bearing_spacing, Number<>{positive},
+               "distance across the deck between its outer bearings, whose vertical stiffness "
+               "holds the deck's twist on a seat: k_v s² / 4 per seat [L]")
+          .in_space()
+          .default_text("half the deck_width"),
+      optional(
+          "skew", &GirderBridgeSpec::skew,
+          Number<>{Minimum{-80.0, true}, below(80.0, "must be within (-80, 80) degrees, got {}")},
+          "angle of the deck ends, joints and backwalls from the transverse axis y, "
+          "counter-clockwise in plan [deg]")
+          .in_space()
+          .default_text("`0`"),
+      optional("contact_points", &GirderBridgeSpec::contact_points,
+               Number<int>{at_least(1), at_most(20, "must be <= 20")},
+               "pounding points along each deck end: 2 its corners, more spread evenly between "
+               "them, 1 its centre; each takes the joint's law")
+          .in_space()
+          .default_text("`2`"),
+      optional("shear_keys", &GirderBridgeSpec::shear_keys,
+               Object<builder::ShearKeySpec>{shear_key_fields(), Docs::own_table},
+               "transverse stops on each abutment seat, either side of the deck end")
+          .in_space(),
   };
   return fields;
 }
