@@ -337,8 +337,9 @@ GirderSegment add_girder_segment(const Bridge& bridge, std::size_t g, int first_
 }
 
 // A joint's monitors: its opening and closing, and the girder end's movement on its seat along the
-// bridge. In space with several pounding points one per point, `<id>.c<k>`, each opening at its
-// point (the movement on the seat is the deck centre's).
+// bridge. In space with several pounding points one per point, `<id>.c<k>`: the opening at that
+// point and the point's movement on its seat across the skewed support line (the corner's
+// unseating margin; the acute corner's is the one to watch).
 void add_joint_monitors(const Bridge& bridge, const std::string& id, const std::string& joint,
                         const std::string& girder, const std::string& seat, double seat_width,
                         ModelSpec& out) {
@@ -347,9 +348,15 @@ void add_joint_monitors(const Bridge& bridge, const std::string& id, const std::
     out.joint_monitors.push_back({id, joint, girder, seat, seat_width});
     return;
   }
-  for (int k = 0; k < points; ++k)
-    out.joint_monitors.push_back(
-        {fmt::format("{}.c{}", id, k), fmt::format("{}.c{}", joint, k), girder, seat, seat_width});
+  const std::vector<std::array<double, 3>> at = end_points(bridge.spec);
+  const std::vector<double> normal = end_normal(bridge.spec, 1.0);
+  for (int k = 0; k < points; ++k) {
+    JointMonitorSpec monitor{fmt::format("{}.c{}", id, k), fmt::format("{}.c{}", joint, k), girder,
+                             seat, seat_width};
+    monitor.point = at[static_cast<std::size_t>(k)];
+    monitor.direction = std::array{normal[0], normal[1], normal[2]};
+    out.joint_monitors.push_back(monitor);
+  }
 }
 
 // An expansion joint over a pier: both girder ends sit on the pier top and may pound.

@@ -1,5 +1,7 @@
 #include "builder/outputs.hpp"
 
+#include <cmath>
+
 #include "model/ground_motion.hpp"
 
 namespace pound::builder {
@@ -116,8 +118,17 @@ std::vector<JointMonitor> resolve_joint_monitors(const Resolver& resolver) {
     const JointMonitorSpec& m = specs[k];
     const std::string path = monitor_path(k, resolver.user_spec().joint_monitors.size(), "joints");
     const Index link = resolver.link(m.link, path + "/link");
-    monitors.push_back({m.id, link, resolver.node(m.girder, path + "/girder"),
-                        resolver.node(m.seat, path + "/seat"), m.seat_width});
+    JointMonitor monitor{m.id, link, resolver.node(m.girder, path + "/girder"),
+                         resolver.node(m.seat, path + "/seat"), m.seat_width};
+    monitor.point = m.point;
+    if (m.direction) {
+      const std::array<double, 3>& d = *m.direction;
+      const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+      monitor.direction = std::array{d[0] / length, d[1] / length, d[2] / length};
+    } else if (m.point) {
+      monitor.direction = std::array{1.0, 0.0, 0.0};
+    }
+    monitors.push_back(monitor);
   }
   return monitors;
 }

@@ -46,6 +46,9 @@ struct JointMonitor {
   Index link = 0;              // the pounding link across the joint
   Index girder = 0, seat = 0;  // nodes
   double seat_width = 0.0;
+  // A point offset from both nodes and a unit direction (builder::JointMonitorSpec); none: the
+  // nodes' movement along x.
+  std::optional<std::array<double, 3>> point, direction;
 };
 
 // Without a "recorders" field every link is recorded into links.csv; a link recorder without ids

@@ -382,6 +382,10 @@ struct JointMonitorSpec {
   std::string link;          // the pounding link across the joint
   std::string girder, seat;  // nodes: the girder end and what it sits on
   double seat_width = 0.0;   // 0: unseating not checked
+  // 3-D: the point whose movement on the seat counts (from the girder node, rigidly tied to it
+  // and to the seat: a skewed deck's corner) and the direction the seat's width is measured in
+  // (across the support line); default the girder node and x.
+  std::optional<std::array<double, 3>> point, direction;
 };
 
 // The time integrator and its parameters (integrators/integrator_catalog.hpp lists them).

@@ -1070,6 +1070,15 @@ const Fields<JointMonitorSpec>& joint_monitor_fields() {
       optional("seat_width", &JointMonitorSpec::seat_width, Number<>{non_negative},
                "[L]; 0: unseating not checked")
           .always_written(),
+      optional("point", &JointMonitorSpec::point, Triple{},
+               "the point whose movement on the seat counts, from the girder node (a skewed "
+               "deck's corner, rigidly tied to the girder node and to the seat) [L]")
+          .in_space()
+          .default_text("the girder node"),
+      optional("direction", &JointMonitorSpec::direction, Triple{.nonzero = true},
+               "the direction the seat's width is measured in (across the support line)")
+          .in_space()
+          .default_text("`[1, 0, 0]`"),
   };
   return fields;
 }

@@ -35,9 +35,12 @@ void JointMonitors::record(const integrators::State& state) {
     p.peak_closing = std::max(p.peak_closing, closing);
     p.peak_opening = std::max(p.peak_opening, -closing);
     p.residual_opening = -closing;
-    p.peak_seat_movement =
-        std::max(p.peak_seat_movement, std::abs(value_at(state.displacement, w.girder_x) -
-                                                value_at(state.displacement, w.seat_x)));
+    double movement = 0.0;
+    if (w.movement.empty())
+      movement = value_at(state.displacement, w.girder_x) - value_at(state.displacement, w.seat_x);
+    for (const Where::Term& term : w.movement)
+      movement += term.coefficient * state.displacement[term.equation];
+    p.peak_seat_movement = std::max(p.peak_seat_movement, std::abs(movement));
     p.peak_girder_acceleration = std::max(
         p.peak_girder_acceleration, std::abs(ground_.absolute(state, w.girder_x, w.girder, 0)));
   }

@@ -54,6 +54,13 @@ class JointMonitors : public Observer {
     double gap;
     Index girder_x, seat_x;  // equations, -1 where fixed
     Index girder;            // node
+    // A point's movement on its seat across the support line (a skewed deck's corner): the sum
+    // of coefficient x displacement over these equations; empty: u(girder_x) - u(seat_x).
+    struct Term {
+      Index equation;
+      double coefficient;
+    };
+    std::vector<Term> movement = {};
   };
   JointMonitors(std::vector<Where> joints, GroundAcceleration& ground)
       : joints_(std::move(joints)), ground_(ground), peaks_(joints_.size()) {}

@@ -133,13 +133,37 @@ std::vector<DriftMonitors::Where> drift_places(const builder::BuiltModel& built,
   return places;
 }
 
+// A point r from the girder and the seat nodes moves across the support line (unit n) by
+// n . (u_g + theta_g x r) - n . (u_s + theta_s x r), and n . (theta x r) = theta . (r x n).
+std::vector<JointMonitors::Where::Term> point_movement(const builder::JointMonitor& m,
+                                                       const model::DofMap& dofs) {
+  const std::array<double, 3> n = *m.direction;
+  const std::array<double, 3> r = m.point.value_or(std::array<double, 3>{});
+  const std::array<double, 6> along{n[0],
+                                    n[1],
+                                    n[2],
+                                    r[1] * n[2] - r[2] * n[1],
+                                    r[2] * n[0] - r[0] * n[2],
+                                    r[0] * n[1] - r[1] * n[0]};
+  std::vector<JointMonitors::Where::Term> terms;
+  for (const auto& [node, sign] : {std::pair{m.girder, 1.0}, std::pair{m.seat, -1.0}})
+    for (int d = 0; d < 6; ++d) {
+      const Index equation = dofs.equation(node, d);
+      if (equation >= 0 && along[static_cast<std::size_t>(d)] != 0.0)
+        terms.push_back({equation, sign * along[static_cast<std::size_t>(d)]});
+    }
+  return terms;
+}
+
 std::vector<JointMonitors::Where> joint_places(const builder::BuiltModel& built,
                                                const assembly::StructuralSystem& system) {
   std::vector<JointMonitors::Where> places;
-  for (const builder::JointMonitor& m : built.joint_monitors)
+  for (const builder::JointMonitor& m : built.joint_monitors) {
     places.push_back(
         {system.links().row(m.link), built.model.links[static_cast<std::size_t>(m.link)].gap,
          system.dofs().equation(m.girder, 0), system.dofs().equation(m.seat, 0), m.girder});
+    if (m.direction) places.back().movement = point_movement(m, system.dofs());
+  }
   return places;
 }
 
