@@ -117,10 +117,10 @@ StaticHardContacts::Row StaticHardContacts::friction_state_in_plane(Index t, con
     if (along.norm() <= limit) return Row::kStick;
     const Eigen::Vector2d slide = delta.segment<2>(t) - anchor_.segment<2>(t);
     const double length = slide.norm();
-    turn_.segment<2>(t).setZero();
+    turn_[t] = 0.0;
     if (length > 1e-12 * std::max(delta.segment<2>(t).norm(), anchor_.segment<2>(t).norm())) {
       along = slide;
-      turn_.segment<2>(t).setConstant(coefficient(t) * std::max(0.0, multiplier_[normal]) / length);
+      turn_[t] = coefficient(t) * std::max(0.0, multiplier_[normal]) / length;
     }
   }
   const Eigen::Vector2d direction = along / along.norm();

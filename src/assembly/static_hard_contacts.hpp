@@ -10,8 +10,8 @@
 //                  lambda_t = sign mu lambda_n, sign that trial's; under a moving belt it slips in
 //                  the belt's direction, as penalty friction does in the static solve; in a
 //                  contact plane (two tangents) the trial is a vector, the limit a circle, and a
-//                  slipping contact's lambda_t = mu lambda_n e along the trial (e fixed in each
-//                  Newton step, chosen again at the next: a fixed point on the direction).
+//                  slipping contact's lambda_t = mu lambda_n e along its slide since the last
+//                  increment, the direction's turn linearised in each Newton step.
 // c_r = sum_j B_rj^2 |K_jj|, the stiffness the row sees (the structure's largest when its DOFs
 // have none), so that lambda and c delta are both forces. Forces have a law's sign: F > 0
 // presses, and -B^T F is their load on the structure. Units: lambda [F], delta [L], c [F/L].
@@ -82,7 +82,8 @@ class StaticHardContacts {
   std::vector<char> pair_;
   std::vector<Row> state_;
   Vector multiplier_, scale_, direction_;
-  Vector turn_;  // a slipping contact plane's kappa = mu lambda_n / |s - s_0| (0: none)
+  // A slipping contact plane's kappa = mu lambda_n / |s - s_0| on its first row (0: none).
+  Vector turn_;
   Vector belt_rate_, anchor_;
   bool any_ = false, started_ = false;
   bool turned_ = false;   // a slipping contact plane's direction changed in choose()

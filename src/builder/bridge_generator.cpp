@@ -28,9 +28,12 @@ NodeSpec node_at(const Bridge& bridge, std::string id, double x, double height) 
   return {std::move(id), x, height};
 }
 
-// The unit vector along the bridge, with a sign.
+// The unit vectors along the bridge and up, with a sign.
 std::vector<double> along(const Bridge& bridge, double sign) {
   return bridge.space ? std::vector<double>{sign, 0.0, 0.0} : std::vector<double>{sign, 0.0};
+}
+std::vector<double> upward(const Bridge& bridge, double sign) {
+  return bridge.space ? std::vector<double>{0.0, 0.0, sign} : std::vector<double>{0.0, sign};
 }
 
 // Supports: every direction; the translations; every direction but the one along the bridge.
@@ -106,54 +109,37 @@ std::vector<double> end_normal(const GirderBridgeSpec& spec, double sign) {
 // A girder node sits on a seat: a horizontal bearing (the user's law) and a vertical one. A
 // sliding bearing's vertical link is a contact pointing down from the girder to the seat, so
 // that the girder's weight presses it (R_n > 0) and its tangent, n turned by +90 degrees, is +x:
-// the slide s is u_girder,x - u_seat,x, as for bearing_x.
-void add_bearing_in_space(const GirderBridgeSpec& spec, const std::string& girder,
-                          const std::string& seat, ModelSpec& out);
-
+// the slide s is u_girder,x - u_seat,x, as for bearing_x. In space the bearing's law acts along
+// x and y (`.bearing_x`, `.bearing_y`), the vertical link is `.bearing_z` (a sliding bearing then
+// rubs in the horizontal plane, t1 = x, t2 = y: with a radius a bidirectional friction pendulum),
+// and the seat's bearings across the deck hold its twist (`.bearing_rx`: two lines of k_v / 2 at
+// +-s / 2, k_v s^2 / 4).
 void add_bearing(const Bridge& bridge, const std::string& girder, const std::string& seat,
                  ModelSpec& out) {
   const GirderBridgeSpec& spec = bridge.spec;
-  if (bridge.space) return add_bearing_in_space(spec, girder, seat, out);
-  if (spec.bearing)
-    out.links.push_back(
-        make_link(girder + ".bearing_x", girder, seat, {1.0, 0.0}, 0.0, *spec.bearing));
-  if (!spec.bearing_friction) {
-    out.links.push_back(make_link(girder + ".bearing_y", girder, seat, {0.0, 1.0}, 0.0,
-                                  elastic(spec.bearing_vertical_stiffness)));
-    return;
+  if (bridge.space) {
+    const double spacing = spec.bearing_spacing.value_or(0.5 * spec.deck_width);
+    LinkSpec twist = make_link(girder + ".bearing_rx", girder, seat, along(bridge, 1.0), 0.0,
+                               elastic(spec.bearing_vertical_stiffness * spacing * spacing / 4.0));
+    twist.rotational = true;
+    out.links.push_back(std::move(twist));
   }
-  const LawSpec contact{.type = "gap_spring",
-                        .parameters = {{"stiffness", spec.bearing_vertical_stiffness}}};
-  LinkSpec sliding = make_link(girder + ".bearing_y", girder, seat, {0.0, -1.0}, 0.0, contact);
-  sliding.friction = spec.bearing_friction;
-  out.links.push_back(std::move(sliding));
-}
-
-// In space the bearing's law acts along x and y (`.bearing_x`, `.bearing_y`) and the vertical
-// link is `.bearing_z`; a sliding bearing's friction then acts in the horizontal plane (t1 = x,
-// t2 = y), with a radius a bidirectional friction pendulum.
-void add_bearing_in_space(const GirderBridgeSpec& spec, const std::string& girder,
-                          const std::string& seat, ModelSpec& out) {
-  // The seat's bearings across the deck hold its twist: two lines of k_v / 2 at +-s / 2.
-  const double spacing = spec.bearing_spacing.value_or(0.5 * spec.deck_width);
-  LinkSpec twist = make_link(girder + ".bearing_rx", girder, seat, {1.0, 0.0, 0.0}, 0.0,
-                             elastic(spec.bearing_vertical_stiffness * spacing * spacing / 4.0));
-  twist.rotational = true;
-  out.links.push_back(std::move(twist));
   if (spec.bearing) {
     out.links.push_back(
-        make_link(girder + ".bearing_x", girder, seat, {1.0, 0.0, 0.0}, 0.0, *spec.bearing));
-    out.links.push_back(
-        make_link(girder + ".bearing_y", girder, seat, {0.0, 1.0, 0.0}, 0.0, *spec.bearing));
+        make_link(girder + ".bearing_x", girder, seat, along(bridge, 1.0), 0.0, *spec.bearing));
+    if (bridge.space)
+      out.links.push_back(
+          make_link(girder + ".bearing_y", girder, seat, {0.0, 1.0, 0.0}, 0.0, *spec.bearing));
   }
+  const std::string vertical = girder + (bridge.space ? ".bearing_z" : ".bearing_y");
   if (!spec.bearing_friction) {
-    out.links.push_back(make_link(girder + ".bearing_z", girder, seat, {0.0, 0.0, 1.0}, 0.0,
+    out.links.push_back(make_link(vertical, girder, seat, upward(bridge, 1.0), 0.0,
                                   elastic(spec.bearing_vertical_stiffness)));
     return;
   }
   const LawSpec contact{.type = "gap_spring",
                         .parameters = {{"stiffness", spec.bearing_vertical_stiffness}}};
-  LinkSpec sliding = make_link(girder + ".bearing_z", girder, seat, {0.0, 0.0, -1.0}, 0.0, contact);
+  LinkSpec sliding = make_link(vertical, girder, seat, upward(bridge, -1.0), 0.0, contact);
   sliding.friction = spec.bearing_friction;
   out.links.push_back(std::move(sliding));
 }

@@ -506,9 +506,7 @@ bool CentralDifference::enumerate_hard_states(const std::vector<Index>& rows, do
       if (!in_plane(rows, i + 1)) {
         slip_[i + 1] = static_cast<signed char>(way);
       } else {
-        const Eigen::Vector2d slide = free_next_.segment<2>(static_cast<Index>(i) + 1) -
-                                      bound_.segment<2>(static_cast<Index>(i) + 1);
-        start_slip_in_plane(i + 1, way * slide);
+        start_slip_in_plane(i + 1, way * free_slide(static_cast<Index>(i) + 1));
       }
     }
     solve_active_hard_rows(rows, scale);
@@ -584,7 +582,7 @@ void CentralDifference::start_slip_in_plane(std::size_t first, const Eigen::Vect
   slip_direction_.segment<2>(i) = length > 0.0
                                       ? Eigen::Vector2d(along / length)
                                       : Eigen::Vector2d(std::signbit(along[0]) ? -1.0 : 1.0, 0.0);
-  slip_turn_.segment<2>(i).setZero();
+  slip_turn_[i] = 0.0;
   slip_[first] = slip_[first + 1] = 1;
 }
 
@@ -625,16 +623,16 @@ void CentralDifference::solve_active_hard_rows(const std::vector<Index>& rows, d
           coupling_(rows[i], rows[static_cast<std::size_t>(unknowns[static_cast<std::size_t>(b)])]);
   }
   // Without friction the matrix is G's, positive definite; a slipping row makes it unsymmetric.
-  const Vector right = active_force_;
+  active_right_ = active_force_;
   if (friction)
-    active_force_ = active_matrix_.partialPivLu().solve(right);
+    active_force_ = active_matrix_.partialPivLu().solve(active_right_);
   else
-    active_force_ = active_matrix_.llt().solve(right);
+    active_force_ = active_matrix_.llt().solve(active_right_);
   // More constraints than the DOFs they hold (a block sticking on its floor and pressed against
   // its wall): the forces are not unique, the motion is; the least-norm forces (a complete
   // orthogonal decomposition), as Newmark takes.
   if (!active_force_.allFinite())
-    active_force_ = active_matrix_.completeOrthogonalDecomposition().solve(right);
+    active_force_ = active_matrix_.completeOrthogonalDecomposition().solve(active_right_);
   for (Index a = 0; a < count; ++a)
     group_force_[unknowns[static_cast<std::size_t>(a)]] = active_force_[a];
 }
@@ -788,8 +786,11 @@ double CentralDifference::slide_round_off(const std::vector<Index>& rows, Index 
                                           double length) const {
   const auto row = static_cast<std::size_t>(i);
   const double magnitude = std::max(magnitudes_[rows[row]], magnitudes_[rows[row + 1]]);
-  const double free_slide = (free_next_.segment<2>(i) - bound_.segment<2>(i)).norm();
-  return 1e-12 * (free_slide + length) + kHardContactRoundOff * magnitude;
+  return 1e-12 * (free_slide(i).norm() + length) + kHardContactRoundOff * magnitude;
+}
+
+Eigen::Vector2d CentralDifference::free_slide(Index i) const {
+  return free_next_.segment<2>(i) - bound_.segment<2>(i);
 }
 
 Eigen::Vector2d CentralDifference::slide_in_plane(const std::vector<Index>& rows, Index i,
@@ -814,9 +815,8 @@ bool CentralDifference::turn_slip_directions(const std::vector<Index>& rows, dou
     if (across.norm() <= round_off && slip_turn_[i] > 0.0) continue;
     const double normal = group_force_[static_cast<Index>(normal_of(rows, row))];
     slip_direction_.segment<2>(i) = slide / length;
-    slip_turn_.segment<2>(i).setConstant(
-        hard_frictions_[static_cast<std::size_t>(rows[row])]->coefficient() *
-        std::max(0.0, normal) / length);
+    slip_turn_[i] = hard_frictions_[static_cast<std::size_t>(rows[row])]->coefficient() *
+                    std::max(0.0, normal) / length;
     turned = true;
   }
   return turned;

@@ -82,6 +82,8 @@ class CentralDifference final : public Integrator {
                          Index a, double scale);
   // s_{n+2} - bound of a contact plane's two rows (local i, i + 1) under the forces found.
   Eigen::Vector2d slide_in_plane(const std::vector<Index>& rows, Index i, double scale) const;
+  // s~_{n+2} - bound of a contact plane's two rows (local i, i + 1): the slide without forces.
+  Eigen::Vector2d free_slide(Index i) const;
   double in_plane_friction_excess(const std::vector<Index>& rows, Index i, double scale) const;
   double slide_round_off(const std::vector<Index>& rows, Index i, double length) const;
   bool turn_slip_directions(const std::vector<Index>& rows, double scale);
@@ -131,10 +133,11 @@ class CentralDifference final : public Integrator {
   // Per hard row of a group: delta_{n+2} (s_{n+2}) without its force, its bound, whether it is
   // in the active set, a friction row's slip direction (0: sticking); the active set's matrix,
   // its solution, and the group's forces.
-  Vector free_next_, bound_, active_force_, magnitudes_, group_force_;
+  Vector free_next_, bound_, active_force_, active_right_, magnitudes_, group_force_;
   std::vector<char> candidate_, active_;
   std::vector<signed char> slip_;
-  // A slipping contact plane's direction e and Newton's kappa = mu F_n / |s|, on both its rows.
+  // A slipping contact plane's direction e (on both its rows) and Newton's kappa = mu F_n / |s|
+  // (on its first).
   Vector slip_direction_, slip_turn_;
   std::vector<Index> active_rows_;  // the group rows with an unknown force, in order
   Matrix active_matrix_;

@@ -455,6 +455,16 @@ Vector least_norm_correction(const Matrix& jacobian, const Vector& residual) {
 }
 }  // namespace
 
+template <typename Visit>
+void Newmark::for_each_hard_entry(Index r, Visit visit) const {
+  if (!hard_slipping_[static_cast<std::size_t>(r)]) return;
+  const LinkRows& rows = link_rows_[static_cast<std::size_t>(r)];
+  const HardEntries& entries = hard_entries_[static_cast<std::size_t>(r)];
+  for (Index row = rows.first; row < rows.end; ++row)
+    if (const double entry = entries[static_cast<std::size_t>(row - rows.first)]; entry != 0.0)
+      visit(row, entry);
+}
+
 // d(residual)/dF = I + T G, with T block diagonal (a link's row, or its normal and tangential
 // rows). A row whose tangent is zero (an open contact, a slack restrainer) is the identity row,
 // so its correction is its residual; only the rows with a tangent form the system that is
@@ -465,11 +475,7 @@ void Newmark::solve_correction(const Factorization& f) {
     jacobian_.noalias() = tangent_ * f.coupling;
     for (Index r = 0; r < m; ++r) {
       if (!hard_pressing_[static_cast<std::size_t>(r)]) jacobian_(r, r) += 1.0;
-      if (!hard_slipping_[static_cast<std::size_t>(r)]) continue;
-      const Index first = link_rows_[static_cast<std::size_t>(r)].first;
-      const HardEntries& entries = hard_entries_[static_cast<std::size_t>(r)];
-      for (Index c = 0; c < link_rows_[static_cast<std::size_t>(r)].end - first; ++c)
-        jacobian_(r, first + c) += entries[static_cast<std::size_t>(c)];
+      for_each_hard_entry(r, [&](Index row, double entry) { jacobian_(r, row) += entry; });
     }
     jacobian_lu_.compute(jacobian_);
     correction_ = jacobian_lu_.solve(residual_);
@@ -537,17 +543,12 @@ void Newmark::solve_correction(const Factorization& f) {
       // friction row's adds its entries on its link's rows, which are active too and come in
       // order just around it (the normal row, the tangents), at i - (r - row).
       if (!hard_pressing_[static_cast<std::size_t>(r)]) jacobian_(i, i) += 1.0;
-      if (!hard_slipping_[static_cast<std::size_t>(r)]) continue;
-      const LinkRows& rows = link_rows_[static_cast<std::size_t>(r)];
-      const HardEntries& entries = hard_entries_[static_cast<std::size_t>(r)];
-      for (Index row = rows.first; row < rows.end; ++row) {
-        const double entry = entries[static_cast<std::size_t>(row - rows.first)];
-        if (entry == 0.0) continue;
+      for_each_hard_entry(r, [&](Index row, double entry) {
         // Within two places of i: the link's rows that move are active and in order.
         Index j = std::max<Index>(0, i - 2);
         while (active_rows_[static_cast<std::size_t>(j)] != row) ++j;
         jacobian_(i, j) += entry;
-      }
+      });
     }
     jacobian_lu_.compute(jacobian_);
     factored_id_ = f.id;

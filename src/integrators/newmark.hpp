@@ -149,6 +149,9 @@ class Newmark final : public Integrator {
   void evaluate_hard_friction_in_plane(const Factorization& f, Index t);
   // Zeroes row r's hard-friction Jacobian entries (before its state is chosen again).
   void clear_hard_friction_row(Index r);
+  // visit(row, entry) for each nonzero entry of a slipping friction row r outside T G.
+  template <typename Visit>
+  void for_each_hard_entry(Index r, Visit visit) const;
   // The rows' derivatives at the initial state, zero on the rows that are not folded.
   void set_folding_references(LinkSet& links, const Vector& delta, const Vector& rate);
   // Each hard contact's bound for this step, from its state at t_n.

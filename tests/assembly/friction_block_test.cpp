@@ -222,6 +222,27 @@ PlanSlide run_in_plan(const std::string& text) {
   return slide;
 }
 
+// What an oblique slide launched at kSpeed along `angle` is judged by: its deceleration between
+// 0.05 and 0.35 s against mu g, its stopping distance against v0^2 / (2 mu g), its final direction
+// against the launch angle, and how far it strayed off the launch line.
+struct ObliqueErrors {
+  double deceleration, distance, direction, off_line;
+};
+
+ObliqueErrors oblique_errors(const PlanSlide& slide, double angle, double dt) {
+  const auto at = [&](double t) { return static_cast<std::size_t>(std::lround(t / dt)); };
+  const auto speed = [&](std::size_t k) { return std::hypot(slide.vx[k], slide.vy[k]); };
+  ObliqueErrors errors{};
+  errors.deceleration = (speed(at(0.05)) - speed(at(0.35))) / 0.30 / (kMu * kGravity) - 1.0;
+  errors.distance =
+      std::hypot(slide.x.back(), slide.y.back()) / (kSpeed * kSpeed / (2 * kMu * kGravity)) - 1.0;
+  errors.direction = std::atan2(slide.y.back(), slide.x.back()) - angle;
+  for (std::size_t k = 0; k < slide.x.size(); ++k)
+    errors.off_line = std::max(
+        errors.off_line, std::abs(-std::sin(angle) * slide.x[k] + std::cos(angle) * slide.y[k]));
+  return errors;
+}
+
 TEST(FrictionBlock, SlidingObliquelyInSpaceStopsWhereAndWhenMuGSaysAlongItsPath) {
   const double angle = 35.0 * std::acos(-1.0) / 180.0;
   const double stop_time = kSpeed / (kMu * kGravity),
@@ -229,18 +250,9 @@ TEST(FrictionBlock, SlidingObliquelyInSpaceStopsWhereAndWhenMuGSaysAlongItsPath)
   for (const char* integrator : {"newmark_average_acceleration", "central_difference"}) {
     SCOPED_TRACE(integrator);
     const PlanSlide slide = run_in_plan(space_block(kSpeed, angle, {0.0, 0.0}, integrator));
-    const auto at = [&](double t) { return static_cast<std::size_t>(std::lround(t / 1e-4)); };
     const auto speed = [&](std::size_t k) { return std::hypot(slide.vx[k], slide.vy[k]); };
-    const double deceleration = (speed(at(0.05)) - speed(at(0.35))) / 0.30;
-    const double deceleration_error = deceleration / (kMu * kGravity) - 1.0;
-    const double distance = std::hypot(slide.x.back(), slide.y.back());
-    const double distance_error = distance / stop_distance - 1.0;
-    // The path's direction, and how far the block strayed off the launch line.
-    const double direction_error = std::atan2(slide.y.back(), slide.x.back()) - angle;
-    double off_line = 0.0;
-    for (std::size_t k = 0; k < slide.x.size(); ++k)
-      off_line = std::max(off_line,
-                          std::abs(-std::sin(angle) * slide.x[k] + std::cos(angle) * slide.y[k]));
+    const auto [deceleration_error, distance_error, direction_error, off_line] =
+        oblique_errors(slide, angle, 1e-4);
     // When it stopped: the first step at rest (|v| below 1 % of v0).
     std::size_t stopped = 0;
     while (stopped < slide.time.size() && speed(stopped) > 0.01 * kSpeed) ++stopped;
@@ -305,17 +317,11 @@ TEST(FrictionBlock, OnAHardFloorSlidingObliquelyStopsWhereAndWhenMuGSays) {
     SCOPED_TRACE(integrator);
     const PlanSlide slide =
         run_in_plan(space_block(kSpeed, angle, {0.0, 0.0}, integrator, kHardFloor));
-    const auto at = [&](double t) { return static_cast<std::size_t>(std::lround(t / dt)); };
     const auto speed = [&](std::size_t k) { return std::hypot(slide.vx[k], slide.vy[k]); };
-    const double deceleration = (speed(at(0.05)) - speed(at(0.35))) / 0.30;
-    const double deceleration_error = deceleration / (kMu * kGravity) - 1.0;
-    const double distance = std::hypot(slide.x.back(), slide.y.back());
-    const double distance_error = distance / stop_distance - 1.0;
-    const double direction_error = std::atan2(slide.y.back(), slide.x.back()) - angle;
-    double off_line = 0.0, lift = 0.0, force_error = 0.0;
+    const auto [deceleration_error, distance_error, direction_error, off_line] =
+        oblique_errors(slide, angle, dt);
+    double lift = 0.0, force_error = 0.0;
     for (std::size_t k = 0; k < slide.x.size(); ++k) {
-      off_line = std::max(off_line,
-                          std::abs(-std::sin(angle) * slide.x[k] + std::cos(angle) * slide.y[k]));
       lift = std::max(lift, std::abs(slide.z[k]));
       if (slide.time[k] > 0.01 && slide.time[k] < stop_time - 0.01)  // slipping: mu R_n
         force_error =
