@@ -93,6 +93,14 @@ std::string monitor_lines(const results::RunSummary& run) {
                          : std::string(),
         drift.peak_base_moment ? fmt::format(", base moment {:.4g}", *drift.peak_base_moment)
                                : std::string());
+    if (const std::optional<double> corner_ratio = drift.corner_ratio())
+      text += fmt::format(
+          "    at its corners: peak drift {:.4g} ({:.3f} %, corner {}{}), twist {:.4g} rad\n",
+          drift.peak.peak_corner_drift, 100.0 * *corner_ratio, drift.peak.corner,
+          drift.corner_amplification()
+              ? fmt::format(", {:.2f} x the centre's", *drift.corner_amplification())
+              : std::string(),
+          drift.peak.peak_twist);
   }
   return text;
 }

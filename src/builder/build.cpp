@@ -198,9 +198,9 @@ void check_generator_dimensions(const ModelSpec& spec) {
     throw InputError(spec.source, fmt::format("/generators/{}", spec.rod_pair_generator_index[0]),
                      "rod_pair needs a 1-D scene (\"dimension\": 1)");
   for (const AdjacentBuildingsSpec& g : spec.building_pairs)
-    if (spec.dimension != 2)
+    if (spec.dimension == 1)
       throw InputError(spec.source, fmt::format("/generators/{}", g.generator_index),
-                       "adjacent_buildings needs a 2-D scene (\"dimension\": 2)");
+                       "adjacent_buildings needs a 2-D or 3-D scene (\"dimension\": 2 or 3)");
   for (const GirderBridgeSpec& g : spec.bridges) {
     if (spec.dimension == 1)
       throw InputError(spec.source, fmt::format("/generators/{}", g.generator_index),

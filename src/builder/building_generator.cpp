@@ -1,5 +1,8 @@
 // adjacent_buildings: two storey-stick buildings side by side with pounding links wherever a
-// floor of one meets the other (builder/spec.hpp, AdjacentBuildingsSpec).
+// floor of one meets the other (builder/spec.hpp, AdjacentBuildingsSpec). In a 3-D scene x runs
+// from the left building to the right one, y along the facades and z up: each floor is a rigid
+// plan (u_x, u_y, theta_z at its mass centre), each storey a column stick at its stiffness centre
+// reaching the floors through rigid offsets, and the floors pound at points along the facades.
 #include <fmt/format.h>
 
 #include <Eigen/Eigenvalues>
@@ -21,15 +24,52 @@ struct Building {
   std::string name;                               // "<pair>.<side>"
   std::string material;                           // of its columns
   std::vector<double> heights;                    // of its floors, from the ground (0) up
-  double x;                                       // where it stands
+  std::array<double, 2> centre;                   // of its plan (2-D: x, 0)
   std::optional<std::array<double, 2>> rayleigh;  // its own damping, if it has any
+  bool space = false;                             // a 3-D scene
+
+  // Plan positions of its floor nodes (the mass centre) and of its column (the stiffness
+  // centre, where the base and the cuts are); in a plane both are `centre`.
+  std::array<double, 2> floor_at() const { return from_centre(spec.mass_centre); }
+  std::array<double, 2> column_at() const { return from_centre(spec.stiffness_centre); }
+  std::array<double, 2> from_centre(const std::array<double, 2>& point) const {
+    if (!space) return centre;
+    return {centre[0] + point[0], centre[1] + point[1]};
+  }
 };
+
+// A node at plan position `at` and height h: (x, h) in a plane, (x, y, h) in space.
+NodeSpec node_at(const Building& building, std::string id, std::array<double, 2> at, double h) {
+  if (building.space) return {std::move(id), at[0], at[1], h};
+  return {std::move(id), at[0], h};
+}
+
+// The rigid offset from a node at `from` to the point `to` (3-D; plan positions).
+std::array<double, 3> offset(std::array<double, 2> from, std::array<double, 2> to) {
+  return {to[0] - from[0], to[1] - from[1], 0.0};
+}
 
 std::vector<double> floor_heights(const BuildingSpec& building) {
   std::vector<double> heights{0.0};
   for (const StoreySpec& storey : building.storeys)
     heights.push_back(heights.back() + storey.height);
   return heights;
+}
+
+// A storey's torsional stiffness about its stiffness centre (3-D): given, or its lateral
+// stiffness spread evenly over the plan a x b, sum k_i r_i^2 = (k_x b^2 + k_y a^2) / 12.
+double torsional_stiffness(const BuildingSpec& building, std::size_t s) {
+  const StoreySpec& storey = building.storeys[s];
+  if (storey.torsional_stiffness) return *storey.torsional_stiffness;
+  const double a = building.plan[0], b = building.plan[1];
+  return (storey.stiffness * b * b + storey.stiffness_y.value_or(storey.stiffness) * a * a) / 12.0;
+}
+
+// A floor's polar moment of inertia about its mass centre (3-D): given, or a uniform slab's.
+double floor_rotary_inertia(const BuildingSpec& building, std::size_t s) {
+  const StoreySpec& storey = building.storeys[s];
+  const double a = building.plan[0], b = building.plan[1];
+  return storey.rotary_inertia.value_or(storey.mass * (a * a + b * b) / 12.0);
 }
 
 // Rayleigh coefficients giving `ratio` at the building's own first two modes (shear building).
@@ -53,7 +93,15 @@ std::array<double, 2> building_rayleigh(const BuildingSpec& building) {
   return {2.0 * xi * w1 * w2 / (w1 + w2), 2.0 * xi / (w1 + w2)};
 }
 
-Building make_building(const AdjacentBuildingsSpec& pair, int side) {
+// In a plane the buildings stand at x = 0 and x = separation (their facing facades); in space
+// the left one's facade toward the right one is at x = 0, the right one's at x = separation.
+std::array<double, 2> plan_centre(const AdjacentBuildingsSpec& pair, int side, bool space) {
+  if (!space) return {side == 0 ? 0.0 : pair.separation, 0.0};
+  if (side == 0) return {-0.5 * pair.left.plan[0], 0.0};
+  return {pair.separation + 0.5 * pair.right.plan[0], pair.offset};
+}
+
+Building make_building(const AdjacentBuildingsSpec& pair, int side, bool space) {
   const BuildingSpec& spec = side == 0 ? pair.left : pair.right;
   const std::string name = fmt::format("{}.{}", pair.id, kPairSides[side]);
   Building building{.pair = pair,
@@ -62,7 +110,8 @@ Building make_building(const AdjacentBuildingsSpec& pair, int side) {
                     .name = name,
                     .material = name + ".storeys",
                     .heights = floor_heights(spec),
-                    .x = side == 0 ? 0.0 : pair.separation};
+                    .centre = plan_centre(pair, side, space),
+                    .space = space};
   if (spec.damping_ratio > 0.0) building.rayleigh = building_rayleigh(spec);
   return building;
 }
@@ -106,8 +155,12 @@ std::vector<std::string> add_column_cuts(const Building& building, std::size_t s
   for (double h : contacts)
     if (h > bottom * (1 + 1e-12) && h < upper * (1 - 1e-12)) {
       const std::string cut = cut_node_id(building, s, h);
-      out.nodes.push_back({cut, building.x, h});
-      out.supports.push_back({cut, {false, true}});
+      out.nodes.push_back(node_at(building, cut, building.column_at(), h));
+      // Held vertically, free to bend and twist (the column's shape through the cut is kept).
+      if (building.space)
+        out.supports.push_back({cut, {false, false, true, false, false, false}});
+      else
+        out.supports.push_back({cut, {false, true}});
       chain.push_back(cut);
     }
   chain.push_back(floor_node_id(building, s + 1));
@@ -118,21 +171,43 @@ std::vector<std::string> add_column_cuts(const Building& building, std::size_t s
 // stiffness, drift positive when the upper floor moves along +x, and in it the storey's share of
 // the building's stiffness-proportional damping: a1 k0, the dashpot its column would have given
 // ("initial"), or a1 times its tangent ("committed"; links/stiffness_damping.hpp). In the link,
-// not beside it, so that the damping adds no link row to iterate. Returns its yield drift.
+// not beside it, so that the damping adds no link row to iterate. In space the link acts at the
+// stiffness centre, with the same law along y (`<storey>.y`, the storey's stiffness_y) and an
+// elastic twist spring (`<storey>.rz`). Returns its yield drift.
 std::optional<double> add_storey_link(const Building& building, std::size_t s, ModelSpec& out) {
   const StoreySpec& storey = building.spec.storeys[s];
   const std::string id = storey_id(building, s);
   const std::string top = floor_node_id(building, s + 1), bottom = floor_node_id(building, s);
+  const auto storey_link = [&](const std::string& link_id, std::vector<double> axis,
+                               const LawSpec& law, bool rotational = false) {
+    LinkSpec link = make_link(link_id, top, bottom, std::move(axis), 0.0, law);
+    link.rotational = rotational;
+    if (building.rayleigh && building.spec.storey_damping != StoreyDamping::none)
+      link.rayleigh =
+          LinkRayleighSpec{.stiffness = building.spec.storey_damping == StoreyDamping::initial
+                                            ? links::DampingStiffness::initial
+                                            : links::DampingStiffness::committed,
+                           .stiffness_coefficient = (*building.rayleigh)[1]};
+    if (building.space && !rotational) {
+      const std::array<double, 3> arm = offset(building.floor_at(), building.column_at());
+      link.offsets = std::array{arm, s > 0 ? arm : std::array<double, 3>{}};  // the base: none
+    }
+    out.links.push_back(link);
+  };
   LawSpec law = *storey.law;
   law.parameters["stiffness"] = storey.stiffness;
-  LinkSpec link = make_link(id, top, bottom, {1.0, 0.0}, 0.0, law);
-  if (building.rayleigh && building.spec.storey_damping != StoreyDamping::none)
-    link.rayleigh =
-        LinkRayleighSpec{.stiffness = building.spec.storey_damping == StoreyDamping::initial
-                                          ? links::DampingStiffness::initial
-                                          : links::DampingStiffness::committed,
-                         .stiffness_coefficient = (*building.rayleigh)[1]};
-  out.links.push_back(link);
+  if (!building.space) {
+    storey_link(id, {1.0, 0.0}, law);
+  } else {
+    storey_link(id, {1.0, 0.0, 0.0}, law);
+    LawSpec across = law;
+    across.parameters["stiffness"] = storey.stiffness_y.value_or(storey.stiffness);
+    storey_link(id + ".y", {0.0, 1.0, 0.0}, across);
+    storey_link(id + ".rz", {0.0, 0.0, 1.0},
+                {.type = "elastic_spring",
+                 .parameters = {{"stiffness", torsional_stiffness(building.spec, s)}}},
+                true);
+  }
   const std::string path = fmt::format("/generators/{}/{}/storeys/{}/law",
                                        building.pair.generator_index, kPairSides[building.side], s);
   return links::make_law(law, {out.source, path})(links::LinkContext{})->yield_deformation();
@@ -143,8 +218,8 @@ std::optional<double> add_storey_link(const Building& building, std::size_t s, M
 // (the floors are held vertically, so the gravity analysis gives them no axial force).
 void add_leaning_column(const Building& building, std::size_t s, ModelSpec& out) {
   if (!out.gravity || out.gravity->p_delta == PDeltaKind::none) return;
-  const double downward =
-      -out.gravity->direction[1] * out.gravity->acceleration.value_or(out.units.gravity());
+  const double downward = -out.gravity->direction[building.space ? 2 : 1] *
+                          out.gravity->acceleration.value_or(out.units.gravity());
   double weight = 0.0;
   for (std::size_t above = s; above < building.spec.storeys.size(); ++above)
     weight += building.spec.storeys[above].mass * downward;
@@ -159,62 +234,117 @@ void add_leaning_column(const Building& building, std::size_t s, ModelSpec& out)
   out.elements.push_back(column);
 }
 
+// The storey's column between the nodes of `chain` (floor, cuts, floor): E I = k h^3 / 12 with
+// E = 1, so that between floors held against rotation its lateral stiffness is k; in space at
+// the stiffness centre (rigid offsets from the floor nodes), I_y from k_x, I_z from k_y and,
+// with G = 1, J = k_theta h.
+void add_column(const Building& building, std::size_t s, const std::vector<std::string>& chain,
+                ModelSpec& out) {
+  const StoreySpec& storey = building.spec.storeys[s];
+  const auto inertia = [&](double k) { return k * std::pow(storey.height, 3) / 12.0; };
+  for (std::size_t c = 0; c + 1 < chain.size(); ++c) {
+    ElementSpec column = make_beam(fmt::format("{}.c{}", storey_id(building, s), c), chain[c],
+                                   chain[c + 1], building.material, 1.0, inertia(storey.stiffness));
+    column.rayleigh = building.rayleigh;
+    if (building.space) {
+      column.inertia_y = inertia(storey.stiffness);
+      column.inertia_z = inertia(storey.stiffness_y.value_or(storey.stiffness));
+      column.torsion = torsional_stiffness(building.spec, s) * storey.height;
+      column.orientation = {1.0, 0.0, 0.0};  // y' = -y, z' = x: I_y bends it along x
+      // The floors' nodes are at the mass centre, the base and the cuts on the column.
+      const std::array<double, 3> arm = offset(building.floor_at(), building.column_at());
+      if (c == 0 && s > 0) column.offsets[0] = arm;
+      if (c + 2 == chain.size()) column.offsets[1] = arm;
+    }
+    out.elements.push_back(column);
+  }
+}
+
+// A storey's drift monitors: along x and, in space, along y, each also watching the floor's
+// plan corners (c0 at -x -y, then counter-clockwise) and the storey's twist.
+void add_drift_monitors(const Building& building, std::size_t s, const std::string& bottom,
+                        std::optional<double> yield_drift, ModelSpec& out) {
+  const StoreySpec& storey = building.spec.storeys[s];
+  const std::string floor = floor_node_id(building, s + 1);
+  for (int direction = 0; direction < (building.space ? 2 : 1); ++direction) {
+    const std::string suffix = direction == 0 ? "" : ".y";
+    DriftMonitorSpec monitor{storey_id(building, s) + suffix,
+                             DriftKind::storey,
+                             building.name,
+                             bottom,
+                             floor,
+                             storey.height,
+                             yield_drift};
+    if (storey.law)
+      monitor.shear_link = storey_id(building, s) + suffix;
+    else
+      monitor.base_element = fmt::format("{}.c0", storey_id(building, s));
+    monitor.direction = direction;
+    if (building.space) {
+      const double a = building.spec.plan[0], b = building.spec.plan[1];
+      for (const auto& [x, y] : {std::pair{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}})
+        monitor.corners.push_back(
+            offset(building.floor_at(), building.from_centre({x * a, y * b})));
+    }
+    out.drift_monitors.push_back(monitor);
+  }
+}
+
 // Storey s (from 0): its floor with the floor's mass, its column (or its shear link) and its
-// drift monitor.
+// drift monitors.
 void add_storey(const Building& building, std::size_t s, const std::vector<double>& contacts,
                 ModelSpec& out) {
   const StoreySpec& storey = building.spec.storeys[s];
   const std::string floor = floor_node_id(building, s + 1);
-  out.nodes.push_back({floor, building.x, building.heights[s + 1]});
-  // A rigid floor: it sways, it neither rises nor turns.
-  out.supports.push_back({floor, {false, true, true}});
+  out.nodes.push_back(node_at(building, floor, building.floor_at(), building.heights[s + 1]));
+  // A rigid floor: it sways, it neither rises nor tilts (in a plane nor turns).
+  if (building.space)
+    out.supports.push_back({floor, {false, false, true, true, true, false}});
+  else
+    out.supports.push_back({floor, {false, true, true}});
   const std::optional<double> mass_damping =
       building.rayleigh ? std::optional<double>((*building.rayleigh)[0]) : std::nullopt;
-  out.masses.push_back({floor, storey.mass, {}, mass_damping});
+  std::array<double, 3> rotary{};
+  if (building.space) rotary[2] = floor_rotary_inertia(building.spec, s);
+  out.masses.push_back({floor, storey.mass, rotary, mass_damping});
   const std::vector<std::string> chain = add_column_cuts(building, s, contacts, out);
   std::optional<double> yield_drift;
-  if (storey.law) {
-    yield_drift = add_storey_link(building, s, out);  // the reader left it no cuts
-  } else {
-    const double inertia = storey.stiffness * std::pow(storey.height, 3) / 12.0;  // E = 1
-    for (std::size_t c = 0; c + 1 < chain.size(); ++c) {
-      ElementSpec column = make_beam(fmt::format("{}.c{}", storey_id(building, s), c), chain[c],
-                                     chain[c + 1], building.material, 1.0, inertia);
-      column.rayleigh = building.rayleigh;
-      out.elements.push_back(column);
-    }
-  }
-  add_leaning_column(building, s, out);
-  DriftMonitorSpec monitor{
-      storey_id(building, s), DriftKind::storey, building.name, chain.front(), floor,
-      storey.height,          yield_drift};
   if (storey.law)
-    monitor.shear_link = storey_id(building, s);
+    yield_drift = add_storey_link(building, s, out);  // the reader left it no cuts
   else
-    monitor.base_element = fmt::format("{}.c0", storey_id(building, s));
-  out.drift_monitors.push_back(monitor);
+    add_column(building, s, chain, out);
+  add_leaning_column(building, s, out);
+  add_drift_monitors(building, s, chain.front(), yield_drift, out);
 }
 
 void add_building(const Building& building, const std::vector<double>& contacts, ModelSpec& out) {
   // Columns carry only the storey stiffness; floors and their masses are at the nodes.
-  out.materials.push_back({building.material, 1.0, 0.0});
+  out.materials.push_back({building.material, 1.0, 0.0, std::nullopt,
+                           building.space ? std::optional(1.0) : std::nullopt});
   const std::string base = floor_node_id(building, 0);
-  out.nodes.push_back({base, building.x, 0.0});
-  out.supports.push_back({base, {true, true, true}});
+  out.nodes.push_back(node_at(building, base, building.column_at(), 0.0));
+  if (building.space)
+    out.supports.push_back({base, {true, true, true, true, true, true}});
+  else
+    out.supports.push_back({base, {true, true, true}});
   for (std::size_t s = 0; s < building.spec.storeys.size(); ++s)
     add_storey(building, s, contacts, out);
 }
 
-// The node of a building at a contact height: its floor there, or the cut in its column.
-std::string contact_node(const Building& building, double h) {
-  std::string node;
+// The node of a building at a contact height, and where it stands in plan: its floor there, or
+// the cut in its column.
+struct ContactNode {
+  std::string id;
+  std::array<double, 2> at;
+};
+ContactNode contact_node(const Building& building, double h) {
   for (std::size_t f = 1; f < building.heights.size(); ++f)
-    if (std::abs(building.heights[f] - h) <= 1e-9 * h) node = floor_node_id(building, f);
-  if (node.empty())
-    for (std::size_t s = 0; s < building.spec.storeys.size(); ++s)
-      if (h > building.heights[s] && h < building.heights[s + 1])
-        node = cut_node_id(building, s, h);
-  return node;
+    if (std::abs(building.heights[f] - h) <= 1e-9 * h)
+      return {floor_node_id(building, f), building.floor_at()};
+  for (std::size_t s = 0; s < building.spec.storeys.size(); ++s)
+    if (h > building.heights[s] && h < building.heights[s + 1])
+      return {cut_node_id(building, s, h), building.column_at()};
+  return {};
 }
 
 // The mass of the building's floor at or just above a contact height.
@@ -224,21 +354,53 @@ double floor_mass_near(const Building& building, double h) {
   return building.spec.storeys.back().mass;
 }
 
+// Where the facades meet along y (3-D): `contact_points` positions spread over the stretch
+// where they face each other, its ends first and last (1: its middle).
+std::vector<double> contact_positions(const AdjacentBuildingsSpec& pair) {
+  const double low = std::max(-0.5 * pair.left.plan[1], pair.offset - 0.5 * pair.right.plan[1]);
+  const double high = std::min(0.5 * pair.left.plan[1], pair.offset + 0.5 * pair.right.plan[1]);
+  const int n = pair.contact_points;
+  std::vector<double> positions;
+  for (int k = 0; k < n; ++k)
+    positions.push_back(n == 1 ? 0.5 * (low + high)
+                               : low + (high - low) * static_cast<double>(k) / (n - 1));
+  return positions;
+}
+
+// The links at contact height h: one along x in a plane; in space one per contact position
+// (`.c<k>` from -y, none with a single point), from the left facade (x = 0) to the right one
+// (x = separation), through rigid offsets from the nodes.
+void add_links_at(const AdjacentBuildingsSpec& pair, const std::array<Building, 2>& buildings,
+                  double h, const LawSpec& law, ModelSpec& out) {
+  const ContactNode left = contact_node(buildings[0], h), right = contact_node(buildings[1], h);
+  const std::string id = fmt::format("{}.pounding.at{:g}", pair.id, h);
+  if (!buildings[0].space) {
+    out.links.push_back(make_link(id, left.id, right.id, {1.0, 0.0}, pair.separation, law));
+    return;
+  }
+  const std::vector<double> positions = contact_positions(pair);
+  for (std::size_t k = 0; k < positions.size(); ++k) {
+    LinkSpec link = make_link(positions.size() == 1 ? id : fmt::format("{}.c{}", id, k), left.id,
+                              right.id, {1.0, 0.0, 0.0}, pair.separation, law);
+    link.offsets = std::array{offset(left.at, {0.0, positions[k]}),
+                              offset(right.at, {pair.separation, positions[k]})};
+    out.links.push_back(link);
+  }
+}
+
 void add_pounding_links(const AdjacentBuildingsSpec& pair, const std::array<Building, 2>& buildings,
                         const std::vector<double>& contacts, ModelSpec& out) {
   // Laws that calibrate with the effective mass get that of the floors nearest each contact
   // (a contact point on a column carries no mass of its own).
-  const links::LawEntry* law = links::find_law(pair.law.type);
-  const bool uses_mass = law && law->accepts("mass", pair.law);
+  const links::LawEntry* entry = links::find_law(pair.law.type);
+  const bool uses_mass = entry && entry->accepts("mass", pair.law);
   for (double h : contacts) {
-    LinkSpec link =
-        make_link(fmt::format("{}.pounding.at{:g}", pair.id, h), contact_node(buildings[0], h),
-                  contact_node(buildings[1], h), {1.0, 0.0}, pair.separation, pair.law);
+    LawSpec law = pair.law;
     if (uses_mass && !pair.law.number("mass")) {
       const double m1 = floor_mass_near(buildings[0], h), m2 = floor_mass_near(buildings[1], h);
-      link.law.parameters["mass"] = m1 * m2 / (m1 + m2);
+      law.parameters["mass"] = m1 * m2 / (m1 + m2);
     }
-    out.links.push_back(link);
+    add_links_at(pair, buildings, h, law, out);
   }
 }
 
@@ -249,7 +411,9 @@ std::string building_node_id(const AdjacentBuildingsSpec& pair, int side, int fl
 }
 
 void add_adjacent_buildings(const AdjacentBuildingsSpec& pair, ModelSpec& out) {
-  const std::array<Building, 2> buildings{make_building(pair, 0), make_building(pair, 1)};
+  const bool space = out.dimension == 3;
+  const std::array<Building, 2> buildings{make_building(pair, 0, space),
+                                          make_building(pair, 1, space)};
   const std::vector<double> contacts = contact_heights(buildings);
   for (const Building& building : buildings) add_building(building, contacts, out);
   add_pounding_links(pair, buildings, contacts, out);

@@ -97,6 +97,7 @@ std::vector<DriftMonitor> resolve_drift_monitors(const Resolver& resolver) {
                          m.yield_drift,
                          m.yields};
     monitor.direction = m.direction;
+    monitor.corners = m.corners;
     if (m.hinge)
       monitor.curvature = DriftMonitor::Curvature{resolver.link(*m.hinge, path + "/hinge"),
                                                   *m.yield_curvature, *m.plastic_hinge_length};

@@ -1,6 +1,7 @@
 #pragma once
 // What a run records and watches, resolved against the model: recorders (the histories written
 // as CSV) and monitors (storey and pier drifts, joints), each naming nodes and links by index.
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,6 +40,9 @@ struct DriftMonitor {
   // What carries the shear (DriftMonitorSpec): an element (end i at the bottom) or a link.
   std::optional<Index> base_element, shear_link;
   int direction = 0;  // of the drift and the top's acceleration: a translation (model/direction)
+  // Points of the top floor from the top node (DriftMonitorSpec::corners): their drifts and the
+  // storey's twist are reported too.
+  std::vector<std::array<double, 3>> corners;
 };
 
 struct JointMonitor {

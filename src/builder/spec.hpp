@@ -252,18 +252,26 @@ struct RodPairSpec {
   LawSpec law;
 };
 
-// Adjacent buildings as storey-stick (shear building) models in a 2-D scene: rigid floors
+// Adjacent buildings as storey-stick (shear building) models (2-D scene): rigid floors
 // (floor nodes move in x only), storey stiffness k as a column with E I = k h^3 / 12 between
 // floors whose rotations are fixed. Pounding links join the buildings at every height where a
 // floor of either meets the other (floor to floor, or floor to column mid-height).
 // A yielding storey: `law` is its storey shear-drift law (a spring law whose `stiffness` the
 // storey's own sets), a shear link between its floors in place of its column. The floors of the
 // other building must meet it at its own floors (a link has no column to hit mid-height).
+// In a 3-D scene (x toward the other building, y along the facades, z up) each floor is a rigid
+// diaphragm with three DOFs (u_x, u_y, theta_z) at its mass centre, and each storey a column
+// stick at its stiffness centre reaching the floors through rigid offsets.
 struct StoreySpec {
   double height = 0.0;     // [L]
   double mass = 0.0;       // floor mass [M]
-  double stiffness = 0.0;  // lateral storey stiffness [F/L]
+  double stiffness = 0.0;  // lateral storey stiffness [F/L] (along x in 3-D)
   std::optional<LawSpec> law;
+  // 3-D: the stiffness along y (default `stiffness`), the torsional stiffness about the
+  // stiffness centre [F L / rad] (default: the lateral stiffness spread evenly over the plan
+  // a x b, (k_x b^2 + k_y a^2) / 12), and the floor's polar moment of inertia about its mass
+  // centre [M L^2] (default a uniform slab's, m (a^2 + b^2) / 12).
+  std::optional<double> stiffness_y, torsional_stiffness, rotary_inertia;
 };
 // What a yielding storey's link adds to the building's stiffness-proportional damping a1 K:
 // initial, a linear dashpot a1 k0 beside it (the elastic building's damping, whatever the
@@ -273,6 +281,10 @@ struct BuildingSpec {
   std::vector<StoreySpec> storeys;  // from the ground up
   double damping_ratio = 0.0;       // Rayleigh on the building's own modes 1 and 2 (0: none)
   StoreyDamping storey_damping = StoreyDamping::initial;
+  // 3-D: plan dimensions a along x (toward the other building) and b along y [L], and where the
+  // mass centre and the stiffness centre lie from the plan's centre (at every floor) [L].
+  std::array<double, 2> plan{0.0, 0.0};
+  std::array<double, 2> mass_centre{0.0, 0.0}, stiffness_centre{0.0, 0.0};
 };
 struct AdjacentBuildingsSpec {
   std::string id;
@@ -280,6 +292,11 @@ struct AdjacentBuildingsSpec {
   BuildingSpec left, right;
   double separation = 0.0;  // clear gap between the facades [L]
   LawSpec law;              // pounding law of every link
+  // 3-D: the right building's plan centre from the left's along y [L], and the pounding points
+  // at each contact height, spread along the stretch where the facades face each other (2: its
+  // ends, the corners that meet; 1: its middle), each with the whole law.
+  double offset = 0.0;
+  int contact_points = 2;
 };
 
 // A multi-span girder bridge in a 2-D scene (x along the bridge, y up): girders as beams on
@@ -376,6 +393,10 @@ struct DriftMonitorSpec {
   // for a beam, base moment M_i), or a link whose force is the storey shear.
   std::optional<std::string> base_element, shear_link;
   int direction = 0;  // the drift's: 0 x, 1 y (3-D scenes)
+  // 3-D: points of the top floor (from the top node, rigidly tied to it and to the bottom node:
+  // a floor's plan corners) whose drift along `direction` the summary reports too, with the
+  // storey's twist (theta_z of the top less the bottom's).
+  std::vector<std::array<double, 3>> corners;
 };
 struct JointMonitorSpec {
   std::string id;

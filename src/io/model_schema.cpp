@@ -562,7 +562,20 @@ const Fields<StoreySpec>& storey_fields() {
                "lateral storey stiffness k [F/L]"),
       optional("law", &StoreySpec::law, Law{LawPlace::storey, "a storey"},
                "a yielding storey: its shear–drift law, a spring law without `stiffness` (the "
-               "storey's)"),
+               "storey's); in 3-D along x and along y, each with its stiffness"),
+      optional("stiffness_y", &StoreySpec::stiffness_y, Number<>{positive},
+               "lateral storey stiffness along y [F/L]; `stiffness` acts along x")
+          .in_space()
+          .default_text("`stiffness`"),
+      optional("torsional_stiffness", &StoreySpec::torsional_stiffness, Number<>{positive},
+               "the storey's stiffness against twist about its stiffness centre [F·L/rad]")
+          .in_space()
+          .default_text(
+              "(k_x b² + k_y a²) / 12: the lateral stiffness spread evenly over the plan"),
+      optional("rotary_inertia", &StoreySpec::rotary_inertia, Number<>{positive},
+               "the floor's polar moment of inertia about its mass centre [M·L²]")
+          .in_space()
+          .default_text("m (a² + b²) / 12: a uniform slab"),
   };
   return fields;
 }
@@ -582,6 +595,29 @@ const Fields<BuildingSpec>& building_fields() {
                "the stiffness-proportional damping of its yielding storeys: a1 times their "
                "initial stiffness (the elastic column's), a1 times their tangent at the last "
                "converged step, or none (the link's `rayleigh`)"),
+      required("plan", &BuildingSpec::plan, Pair<>{positive},
+               "plan dimensions [a, b]: a along x (toward the other building), b along y [L]")
+          .in_space(),
+      optional("mass_centre", &BuildingSpec::mass_centre, Pair<>{},
+               "where the floors' mass centre lies from the plan's centre, [x, y] [L]")
+          .in_space()
+          .default_text("`[0, 0]`"),
+      optional("stiffness_centre", &BuildingSpec::stiffness_centre, Pair<>{},
+               "where the storeys' stiffness centre lies from the plan's centre, [x, y] [L]")
+          .in_space()
+          .default_text("`[0, 0]`"),
+      rule<BuildingSpec>([](JsonObject& object, BuildingSpec& building, Context& context) {
+        if (context.dimension != 3) return;
+        for (const char* name : {"mass_centre", "stiffness_centre"}) {
+          const std::array<double, 2>& centre =
+              name[0] == 'm' ? building.mass_centre : building.stiffness_centre;
+          for (std::size_t k = 0; k < 2; ++k)
+            if (std::abs(centre[k]) > 0.5 * building.plan[k])
+              object.at(name).fail(fmt::format(
+                  "must lie within the plan: |{}| <= {:g} (half the plan's {}), got {:g}",
+                  k == 0 ? "x" : "y", 0.5 * building.plan[k], k == 0 ? "a" : "b", centre[k]));
+        }
+      }),
   };
   return fields;
 }
@@ -636,6 +672,31 @@ const Fields<AdjacentBuildingsSpec>& adjacent_buildings_fields() {
         check_storey_laws(object, pair);
       }),
       required("law", &AdjacentBuildingsSpec::law, Law{}, "pounding law of every link"),
+      optional("offset", &AdjacentBuildingsSpec::offset, Number<>{},
+               "the right building's plan centre from the left's, along y [L]")
+          .in_space()
+          .default_text("`0`"),
+      optional("contact_points", &AdjacentBuildingsSpec::contact_points,
+               Number<int>{at_least(1), at_most(20, "must be <= 20")},
+               "pounding points at each contact height, spread along the stretch where the "
+               "facades face each other: 2 its ends (the corners that meet), 1 its middle; each "
+               "takes the law")
+          .in_space()
+          .default_text("`2`"),
+      rule<AdjacentBuildingsSpec>([](JsonObject& object, AdjacentBuildingsSpec& pair,
+                                     Context& context) {
+        if (context.dimension != 3) return;
+        const double overlap =
+            std::min(0.5 * pair.left.plan[1], pair.offset + 0.5 * pair.right.plan[1]) -
+            std::max(-0.5 * pair.left.plan[1], pair.offset - 0.5 * pair.right.plan[1]);
+        if (!(overlap > 0.0))
+          (object.has("offset") ? object.at("offset") : object.at("right"))
+              .fail(fmt::format(
+                  "the facades do not face each other: the right building spans y = {:g} … {:g}, "
+                  "the left one {:g} … {:g}, so they cannot pound",
+                  pair.offset - 0.5 * pair.right.plan[1], pair.offset + 0.5 * pair.right.plan[1],
+                  -0.5 * pair.left.plan[1], 0.5 * pair.left.plan[1]));
+      }),
   };
   return fields;
 }
@@ -1025,6 +1086,11 @@ const Fields<DriftMonitorSpec>& drift_monitor_fields() {
       required("height", &DriftMonitorSpec::height, Number<>{positive}, "for the drift ratio [L]"),
       optional("direction", &DriftMonitorSpec::direction, Choice<int>{{{"x", 0}, {"y", 1}}},
                "of the drift and the top's absolute acceleration")
+          .in_space(),
+      optional("corners", &DriftMonitorSpec::corners, Triples{},
+               "points of the top floor, from the top node (rigidly tied to it and to the bottom "
+               "node: the floor's plan corners), whose drift along `direction` the summary reports "
+               "too, with the storey's twist [L]")
           .in_space(),
       renamed_displacement<DriftMonitorSpec>("yield_displacement", "yield_drift",
                                              &DriftMonitorSpec::yield_drift,

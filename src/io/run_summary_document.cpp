@@ -83,6 +83,15 @@ Document drift_document(const results::DriftResult& drift) {
   if (drift.curvature_ductility) doc.set("curvature_ductility", *drift.curvature_ductility);
   if (drift.peak_shear) doc.set("peak_shear", *drift.peak_shear);
   if (drift.peak_base_moment) doc.set("peak_base_moment", *drift.peak_base_moment);
+  if (const std::optional<double> corner_ratio = drift.corner_ratio()) {
+    doc.set("peak_corner_drift", drift.peak.peak_corner_drift)
+        .set("corner", static_cast<int>(drift.peak.corner))
+        .set("corner_drift_ratio", *corner_ratio)
+        .set("corner_time", drift.peak.corner_time);
+    if (const std::optional<double> amplification = drift.corner_amplification())
+      doc.set("corner_amplification", *amplification);
+    doc.set("peak_twist", drift.peak.peak_twist).set("twist_time", drift.peak.twist_time);
+  }
   return doc;
 }
 

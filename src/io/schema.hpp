@@ -371,6 +371,24 @@ struct Triple {
   std::string type() const { return nonzero ? "[x, y, z], not all 0" : "[x, y, z]"; }
 };
 
+// Up to `max_count` points [x, y, z] (a floor's corners).
+struct Triples {
+  using value_type = std::vector<std::array<double, 3>>;
+  std::size_t max_count = 16;
+
+  void read(const JsonValue& value, value_type& target, Context& context) const {
+    target.clear();
+    for (const JsonValue& item : value.elements(1, max_count))
+      Triple{}.read(item, target.emplace_back(), context);
+  }
+  OrderedJson write(const value_type& value, const Context& context) const {
+    OrderedJson points = OrderedJson::array();
+    for (const auto& point : value) points.push_back(Triple{}.write(point, context));
+    return points;
+  }
+  std::string type() const { return fmt::format("array of 1 … {} [x, y, z]", max_count); }
+};
+
 // A unit vector with a component per dimension of the scene (a std::vector), or [nx, ny].
 void read_unit_vector(const JsonValue& value, double* components, std::size_t count);
 

@@ -6,6 +6,29 @@
 namespace pound::results {
 namespace {
 double value_at(const Vector& v, Index equation) { return equation < 0 ? 0.0 : v[equation]; }
+
+double sum_of(const std::vector<Term>& terms, const Vector& v) {
+  double sum = 0.0;
+  for (const Term& term : terms) sum += term.coefficient * v[term.equation];
+  return sum;
+}
+
+// The largest corner drift and the twist of a storey (3-D floors).
+void record_plan(const DriftMonitors::Where& w, const integrators::State& state, DriftPeak& p) {
+  for (std::size_t c = 0; c < w.corners.size(); ++c) {
+    const double drift = std::abs(sum_of(w.corners[c], state.displacement));
+    if (drift > p.peak_corner_drift) {
+      p.peak_corner_drift = drift;
+      p.corner = c;
+      p.corner_time = state.time;
+    }
+  }
+  const double twist = std::abs(sum_of(w.twist, state.displacement));
+  if (twist > p.peak_twist) {
+    p.peak_twist = twist;
+    p.twist_time = state.time;
+  }
+}
 }  // namespace
 
 void DriftMonitors::record(const integrators::State& state) {
@@ -24,6 +47,7 @@ void DriftMonitors::record(const integrators::State& state) {
       p.peak_acceleration = acceleration;
       p.acceleration_time = state.time;
     }
+    if (!w.corners.empty()) record_plan(w, state, p);
   }
 }
 
@@ -38,8 +62,7 @@ void JointMonitors::record(const integrators::State& state) {
     double movement = 0.0;
     if (w.movement.empty())
       movement = value_at(state.displacement, w.girder_x) - value_at(state.displacement, w.seat_x);
-    for (const Where::Term& term : w.movement)
-      movement += term.coefficient * state.displacement[term.equation];
+    movement += sum_of(w.movement, state.displacement);
     p.peak_seat_movement = std::max(p.peak_seat_movement, std::abs(movement));
     p.peak_girder_acceleration = std::max(
         p.peak_girder_acceleration, std::abs(ground_.absolute(state, w.girder_x, w.girder, 0)));

@@ -12,6 +12,12 @@
 
 namespace pound::results {
 
+// A displacement read as the sum of coefficient x displacement over some equations.
+struct Term {
+  Index equation;
+  double coefficient;
+};
+
 struct DriftPeak {
   double peak_drift = 0.0;      // max |u_top - u_bottom| along its direction (x unless told) [L]
   double time = 0.0;            // when
@@ -19,6 +25,13 @@ struct DriftPeak {
   // The top node's absolute acceleration along the drift (the floor's, the pier top's) [L/T^2]
   double peak_acceleration = 0.0;
   double acceleration_time = 0.0;
+  // With corners (3-D floors): the largest drift of a corner along the drift's direction, which
+  // corner and when; the storey's twist theta_z,top - theta_z,bottom [rad] at its peak.
+  double peak_corner_drift = 0.0;
+  std::size_t corner = 0;
+  double corner_time = 0.0;
+  double peak_twist = 0.0;
+  double twist_time = 0.0;
 };
 
 class DriftMonitors : public Observer {
@@ -27,6 +40,9 @@ class DriftMonitors : public Observer {
     Index bottom, top;  // equations along the drift's direction, -1 where fixed
     Index top_node;
     int direction = 0;  // of the drift (model/direction.hpp)
+    // Each corner's drift along the direction, and the twist, as sums of terms.
+    std::vector<std::vector<Term>> corners = {};
+    std::vector<Term> twist = {};
   };
   DriftMonitors(std::vector<Where> storeys, GroundAcceleration& ground)
       : storeys_(std::move(storeys)), ground_(ground), peaks_(storeys_.size()) {}
@@ -56,10 +72,7 @@ class JointMonitors : public Observer {
     Index girder;            // node
     // A point's movement on its seat across the support line (a skewed deck's corner): the sum
     // of coefficient x displacement over these equations; empty: u(girder_x) - u(seat_x).
-    struct Term {
-      Index equation;
-      double coefficient;
-    };
+    using Term = results::Term;
     std::vector<Term> movement = {};
   };
   JointMonitors(std::vector<Where> joints, GroundAcceleration& ground)

@@ -124,34 +124,61 @@ std::vector<Index> normal_rows(const integrators::LinkSet& links) {
   return rows;
 }
 
-std::vector<DriftMonitors::Where> drift_places(const builder::BuiltModel& built,
-                                               const model::DofMap& dofs) {
-  std::vector<DriftMonitors::Where> places;
-  for (const builder::DriftMonitor& m : built.drift_monitors)
-    places.push_back({dofs.equation(m.bottom, m.direction), dofs.equation(m.top, m.direction),
-                      m.top, m.direction});
-  return places;
-}
-
-// A point r from the girder and the seat nodes moves across the support line (unit n) by
-// n . (u_g + theta_g x r) - n . (u_s + theta_s x r), and n . (theta x r) = theta . (r x n).
-std::vector<JointMonitors::Where::Term> point_movement(const builder::JointMonitor& m,
-                                                       const model::DofMap& dofs) {
-  const std::array<double, 3> n = *m.direction;
-  const std::array<double, 3> r = m.point.value_or(std::array<double, 3>{});
+// Adds sign x n . (u + theta x r) of `node` (a point r from it, rigidly tied to it), with
+// n . (theta x r) = theta . (r x n).
+void add_point_terms(Index node, const std::array<double, 3>& r, const std::array<double, 3>& n,
+                     double sign, const model::DofMap& dofs, std::vector<Term>& terms) {
   const std::array<double, 6> along{n[0],
                                     n[1],
                                     n[2],
                                     r[1] * n[2] - r[2] * n[1],
                                     r[2] * n[0] - r[0] * n[2],
                                     r[0] * n[1] - r[1] * n[0]};
-  std::vector<JointMonitors::Where::Term> terms;
-  for (const auto& [node, sign] : {std::pair{m.girder, 1.0}, std::pair{m.seat, -1.0}})
-    for (int d = 0; d < 6; ++d) {
-      const Index equation = dofs.equation(node, d);
-      if (equation >= 0 && along[static_cast<std::size_t>(d)] != 0.0)
-        terms.push_back({equation, sign * along[static_cast<std::size_t>(d)]});
-    }
+  for (int d = 0; d < 6; ++d) {
+    const Index equation = dofs.equation(node, d);
+    if (equation >= 0 && along[static_cast<std::size_t>(d)] != 0.0)
+      terms.push_back({equation, sign * along[static_cast<std::size_t>(d)]});
+  }
+}
+
+// A storey's corner drifts along its direction (a corner c from the top node is c + X_top -
+// X_bottom from the bottom node) and its twist about z (3-D floors).
+void add_plan_terms(const builder::DriftMonitor& m, const model::Model& model,
+                    const model::DofMap& dofs, DriftMonitors::Where& where) {
+  std::array<double, 3> n{};
+  n[static_cast<std::size_t>(m.direction)] = 1.0;
+  const model::Coordinates& top = model.nodes[static_cast<std::size_t>(m.top)].position;
+  const model::Coordinates& bottom = model.nodes[static_cast<std::size_t>(m.bottom)].position;
+  for (const std::array<double, 3>& corner : m.corners) {
+    std::array<double, 3> from_bottom = corner;
+    for (std::size_t k = 0; k < 3; ++k) from_bottom[k] += top[k] - bottom[k];
+    std::vector<Term>& terms = where.corners.emplace_back();
+    add_point_terms(m.top, corner, n, 1.0, dofs, terms);
+    add_point_terms(m.bottom, from_bottom, n, -1.0, dofs, terms);
+  }
+  for (const auto& [node, sign] : {std::pair{m.top, 1.0}, std::pair{m.bottom, -1.0}})
+    if (const Index equation = dofs.equation(node, 5); equation >= 0)
+      where.twist.push_back({equation, sign});
+}
+
+std::vector<DriftMonitors::Where> drift_places(const builder::BuiltModel& built,
+                                               const model::DofMap& dofs) {
+  std::vector<DriftMonitors::Where> places;
+  for (const builder::DriftMonitor& m : built.drift_monitors) {
+    places.push_back({dofs.equation(m.bottom, m.direction), dofs.equation(m.top, m.direction),
+                      m.top, m.direction});
+    if (!m.corners.empty()) add_plan_terms(m, built.model, dofs, places.back());
+  }
+  return places;
+}
+
+// A point r from the girder and the seat nodes moves across the support line (unit n) by
+// n . (u_g + theta_g x r) - n . (u_s + theta_s x r).
+std::vector<Term> point_movement(const builder::JointMonitor& m, const model::DofMap& dofs) {
+  const std::array<double, 3> r = m.point.value_or(std::array<double, 3>{});
+  std::vector<Term> terms;
+  add_point_terms(m.girder, r, *m.direction, 1.0, dofs, terms);
+  add_point_terms(m.seat, r, *m.direction, -1.0, dofs, terms);
   return terms;
 }
 
@@ -185,12 +212,12 @@ std::vector<std::string> result_warnings(const RunSummary& run) {
   // Pounding drifts are a few percent; 10 % is far past what a model of small displacements (and
   // elastic storeys) describes, so such a number is not a result (a stiffness far too small?).
   for (const DriftResult& drift : run.drifts)
-    if (drift.ratio() > 0.10)
+    if (drift.largest_ratio() > 0.10)
       warnings.push_back(fmt::format(
           "{} {}: drift ratio {:.1f} %, far beyond what this small-displacement model describes: "
           "the result is meaningless there (a stiffness far too small?)",
           drift.monitor.kind == builder::DriftKind::pier ? "pier" : "storey", drift.monitor.id,
-          100.0 * drift.ratio()));
+          100.0 * drift.largest_ratio()));
   for (const DriftResult& drift : run.drifts)
     if (const std::optional<double> demand = drift.elastic_demand_ratio(); demand && *demand > 1.0)
       warnings.push_back(fmt::format(
@@ -353,6 +380,16 @@ void check_histories_fit(const std::vector<std::unique_ptr<Recorder>>& recorders
                     values, steps, needed / gib, static_cast<double>(*available) / gib));
 }
 
+std::optional<double> DriftResult::corner_ratio() const {
+  if (monitor.corners.empty()) return std::nullopt;
+  return peak.peak_corner_drift / monitor.height;
+}
+
+std::optional<double> DriftResult::corner_amplification() const {
+  if (monitor.corners.empty() || !(peak.peak_drift > 0.0)) return std::nullopt;
+  return peak.peak_corner_drift / peak.peak_drift;
+}
+
 std::optional<double> DriftResult::ductility() const {
   if (!monitor.yield_drift || !monitor.yields) return std::nullopt;
   return peak.peak_drift / *monitor.yield_drift;
@@ -499,7 +536,7 @@ void summarise_case(const RunSummary& run, CaseSummary& c) {
     }
   }
   for (const DriftResult& drift : run.drifts) {
-    c.max_drift_ratio = std::max(c.max_drift_ratio.value_or(0.0), drift.ratio());
+    c.max_drift_ratio = std::max(c.max_drift_ratio.value_or(0.0), drift.largest_ratio());
     c.max_top_acceleration =
         std::max(c.max_top_acceleration.value_or(0.0), drift.peak.peak_acceleration);
     c.max_residual_drift_ratio =

@@ -112,6 +112,12 @@ struct DriftResult {
   DriftPeak peak;
   double ratio() const { return peak.peak_drift / monitor.height; }
   double residual_ratio() const { return peak.residual_drift / monitor.height; }
+  // With corners: the largest corner drift over the height, and over the centre's peak drift
+  // (how much the twist adds at the floor's edge).
+  std::optional<double> corner_ratio() const;
+  std::optional<double> corner_amplification() const;
+  // The largest drift ratio anywhere on the floor: the corners' where there are any.
+  double largest_ratio() const { return std::max(ratio(), corner_ratio().value_or(0.0)); }
   // peak drift / yield drift where the model yields there (DriftMonitor::yields)
   std::optional<double> ductility() const;
   // the same ratio for an elastic member given a yield drift: a demand, not a ductility

@@ -24,6 +24,7 @@
 #include "builder/build.hpp"
 #include "core/errors.hpp"
 #include "io/model_reader.hpp"
+#include "support/node_motion.hpp"
 
 namespace pound::builder {
 namespace {
@@ -60,34 +61,11 @@ Json space_bridge(double duration, double skew, int contact_points) {
   return model;
 }
 
-struct Motion {
-  std::vector<double> time;
-  std::vector<std::vector<double>> values;  // per step, per (node, direction) asked
-};
-
 // Runs the model and keeps the displacements of `nodes` along `directions` at every step.
-Motion run(const Json& model, const std::vector<std::string>& nodes,
-           const std::vector<int>& directions) {
-  const BuiltModel built = app::load_model_text(model.dump(), kModels + "bridge.json").built;
-  assembly::StructuralSystem system(built.model);
-  auto integrator = make_integrator(built.analysis);
-  integrators::TransientAnalysis analysis(system, *integrator,
-                                          make_transient_settings(built.analysis));
-  std::vector<Index> equations;
-  for (const std::string& node : nodes)
-    for (const int direction : directions)
-      equations.push_back(system.dofs().equation(built.node_index.at(node), direction));
-  Motion motion;
-  integrators::State state;
-  state.displacement = Vector::Zero(system.size());
-  state.velocity = Vector::Zero(system.size());
-  analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
-    motion.time.push_back(s.time);
-    std::vector<double> row;
-    for (const Index e : equations) row.push_back(e >= 0 ? s.displacement[e] : 0.0);
-    motion.values.push_back(row);
-  });
-  return motion;
+testing::NodeMotion run(const Json& model, const std::vector<std::string>& nodes,
+                        const std::vector<int>& directions) {
+  return testing::run_node_motion(app::load_model_text(model.dump(), kModels + "bridge.json").built,
+                                  nodes, directions);
 }
 
 const std::vector<std::string> kNodes = {"bridge.g0.n0", "bridge.g0.n4",  "bridge.g1.n4",
@@ -96,8 +74,9 @@ const std::vector<std::string> kNodes = {"bridge.g0.n0", "bridge.g0.n4",  "bridg
 // Until the first impact (2.44 s) the two bridges agree to rounding; after it pounding
 // amplifies every rounding difference (issue 20), so the comparison stops at 2.3 s.
 TEST(BridgeInSpace, AtNoSkewItMovesAsThePlaneBridgeUntilItsFirstImpact) {
-  const Motion plane = run(plane_bridge(2.3), kNodes, {0, 1});                // x, and y up
-  const Motion space = run(space_bridge(2.3, 0.0, 1), kNodes, {0, 2, 1, 5});  // x, z; y, rz
+  const testing::NodeMotion plane = run(plane_bridge(2.3), kNodes, {0, 1});  // x, and y up
+  const testing::NodeMotion space =
+      run(space_bridge(2.3, 0.0, 1), kNodes, {0, 2, 1, 5});  // x, z; y, rz
   ASSERT_EQ(plane.time.size(), space.time.size());
   double largest = 0.0, difference = 0.0, across = 0.0;
   for (std::size_t k = 0; k < plane.time.size(); ++k)
@@ -123,7 +102,7 @@ TEST(BridgeInSpace, AtNoSkewItMovesAsThePlaneBridgeUntilItsFirstImpact) {
 // turn in plan; at -30 degrees the same motion mirrored (y and the turn change sign).
 TEST(BridgeInSpace, ASkewedDeckTurnsInPlanWhenItPounds) {
   const std::vector<std::string> ends = {"bridge.g0.n0", "bridge.g1.n0", "bridge.g2.n4"};
-  const auto peak_turn = [&](const Motion& motion, double until) {
+  const auto peak_turn = [&](const testing::NodeMotion& motion, double until) {
     double turn = 0.0, across = 0.0;
     for (std::size_t k = 0; k < motion.time.size() && motion.time[k] <= until; ++k)
       for (std::size_t n = 0; n < ends.size(); ++n) {
@@ -132,9 +111,9 @@ TEST(BridgeInSpace, ASkewedDeckTurnsInPlanWhenItPounds) {
       }
     return std::pair{across, turn};
   };
-  const Motion square = run(space_bridge(6.0, 0.0, 2), ends, {1, 5});
-  const Motion skewed = run(space_bridge(6.0, 30.0, 2), ends, {1, 5});
-  const Motion mirrored = run(space_bridge(6.0, -30.0, 2), ends, {1, 5});
+  const testing::NodeMotion square = run(space_bridge(6.0, 0.0, 2), ends, {1, 5});
+  const testing::NodeMotion skewed = run(space_bridge(6.0, 30.0, 2), ends, {1, 5});
+  const testing::NodeMotion mirrored = run(space_bridge(6.0, -30.0, 2), ends, {1, 5});
   const auto [square_across, square_turn] = peak_turn(square, 6.0);
   const auto [skewed_across, skewed_turn] = peak_turn(skewed, 6.0);
   // Mirror symmetry, until pounding has amplified rounding (the first 3 s).
@@ -173,7 +152,7 @@ TEST(BridgeInSpace, ACornersMovementOnItsSeatIsAcrossTheSkewedSupportLine) {
        {std::tuple{"bridge.a0.joint.girder_end.c1", "bridge.g0.n0", "bridge.a0.seat", 1.0},
         std::tuple{"bridge.joint1.right_end.c0", "bridge.g1.n0", "bridge.p1.top", -1.0}}) {
     const std::array<double, 3> r{-side * half * std::sin(skew), side * half * std::cos(skew), 0.0};
-    const Motion motion = run(model, {girder, seat}, {0, 1, 2, 3, 4, 5});
+    const testing::NodeMotion motion = run(model, {girder, seat}, {0, 1, 2, 3, 4, 5});
     double peak = 0.0;
     for (const std::vector<double>& u : motion.values) {
       double movement = 0.0;
