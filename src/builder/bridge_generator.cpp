@@ -168,53 +168,75 @@ void add_joint_links(const Bridge& bridge, const std::string& joint, const std::
                                   0.0, *spec.restrainer));
 }
 
-// The pier's section: with hinges its E I is raised to (n + 1) / n E I (builder/spec.hpp).
+// The pier's section: with hinges its E I is raised to (n + 1) / n E I (builder/spec.hpp), in
+// space about both axes.
 SectionSpec pier_section(const GirderBridgeSpec& spec) {
   SectionSpec section = spec.pier;
-  if (spec.pier_hinge)
-    section.inertia *=
+  if (spec.pier_hinge) {
+    const double raise =
         (spec.pier_hinge->stiffness_factor + 1.0) / spec.pier_hinge->stiffness_factor;
+    section.inertia *= raise;
+    section.inertia_lateral *= raise;
+  }
   return section;
 }
 
-// The base hinge's law: the user's, with k_h = (n + 1) 3 E I / h and M_y; and the pier's yield
-// displacement M_y h^2 / (3 E I).
+// A base hinge's law: the user's, with k_h = (n + 1) 3 E I / h and M_y; the pier's yield
+// displacement M_y h^2 / (3 E I); what its drift monitor needs for the curvature ductility. Along
+// the bridge with E I, across it (3-D) with E I_lateral and its own M_y or phi_y.
 struct PierHinge {
   LawSpec law;
   double yield_displacement;
+  std::string link;  // its id
+  std::optional<double> yield_curvature;
 };
-PierHinge pier_hinge(const GirderBridgeSpec& spec) {
+PierHinge pier_hinge(const GirderBridgeSpec& spec, int pier, bool across) {
   const PierHingeSpec& hinge = *spec.pier_hinge;
-  const double ei = spec.pier.youngs_modulus * spec.pier.inertia, h = spec.pier_height;
-  const double yield_moment = hinge.yield_moment.value_or(ei * hinge.yield_curvature.value_or(0.0));
-  PierHinge made{hinge.law, yield_moment * h * h / (3.0 * ei)};
+  const double ei =
+      spec.pier.youngs_modulus * (across ? spec.pier.inertia_lateral : spec.pier.inertia);
+  const double h = spec.pier_height;
+  const std::optional<double> curvature =
+      across && hinge.yield_curvature
+          ? hinge.yield_curvature_lateral.value_or(*hinge.yield_curvature)
+          : hinge.yield_curvature;
+  const std::optional<double> moment =
+      across && hinge.yield_moment ? hinge.yield_moment_lateral.value_or(*hinge.yield_moment)
+                                   : hinge.yield_moment;
+  const double yield_moment = moment.value_or(ei * curvature.value_or(0.0));
+  PierHinge made{hinge.law, yield_moment * h * h / (3.0 * ei),
+                 fmt::format("{}.p{}.hinge{}", spec.id, pier, across ? ".across" : ""), curvature};
   made.law.parameters["stiffness"] = (hinge.stiffness_factor + 1.0) * 3.0 * ei / h;
   made.law.parameters["yield_force"] = yield_moment;
   return made;
 }
 
-// A pier's base hinge: the hinge's free end node and the link, of one name.
-std::string hinge_id(const GirderBridgeSpec& spec, int pier) {
-  return fmt::format("{}.p{}.hinge", spec.id, pier);
-}
-
-// The pier's lowest node: the base support, or above it the hinge's free end.
-std::string add_pier_base(const Bridge& bridge, int pier, const std::optional<PierHinge>& hinge,
+// A pier's base hinges: the hinge's free end node (named as the hinge along the bridge) and the
+// links. In a plane the hinge turns about z; in space the one along the bridge about y, the one
+// across it about x, and the free end is held in torsion.
+std::string add_pier_base(const Bridge& bridge, int pier, const std::vector<PierHinge>& hinges,
                           ModelSpec& out) {
   const GirderBridgeSpec& spec = bridge.spec;
   const std::string base = fmt::format("{}.p{}.base", spec.id, pier);
   out.nodes.push_back(node_at(bridge, base, bridge.x[pier], 0.0));
   out.supports.push_back(fixed(bridge, base));
-  if (!hinge) return base;
-  const std::string node = hinge_id(spec, pier);
-  out.nodes.push_back({node, bridge.x[pier], 0.0});
-  out.supports.push_back({node, {true, true}});
-  LinkSpec link = make_link(node, node, base, {1.0, 0.0}, 0.0, hinge->law);
-  link.rotational = true;
-  link.axis.reset();             // a hinge acts on theta_i - theta_j
-  if (spec.pier_hinge->damping)  // with the model's a1, known to the builder
-    link.rayleigh = LinkRayleighSpec{.stiffness = *spec.pier_hinge->damping};
-  out.links.push_back(link);
+  if (hinges.empty()) return base;
+  const std::string node = hinges.front().link;
+  out.nodes.push_back(node_at(bridge, node, bridge.x[pier], 0.0));
+  if (bridge.space)
+    out.supports.push_back({node, {true, true, true, false, false, true}});
+  else
+    out.supports.push_back(held(bridge, node));
+  for (std::size_t k = 0; k < hinges.size(); ++k) {
+    LinkSpec link = make_link(hinges[k].link, node, base, {1.0, 0.0}, 0.0, hinges[k].law);
+    link.rotational = true;  // a hinge acts on theta_i - theta_j
+    if (bridge.space)
+      link.axis = k == 0 ? std::vector<double>{0.0, 1.0, 0.0} : std::vector<double>{1.0, 0.0, 0.0};
+    else
+      link.axis.reset();
+    if (spec.pier_hinge->damping)  // with the model's a1, known to the builder
+      link.rayleigh = LinkRayleighSpec{.stiffness = *spec.pier_hinge->damping};
+    out.links.push_back(link);
+  }
   return node;
 }
 
@@ -222,9 +244,12 @@ std::string add_pier_base(const Bridge& bridge, int pier, const std::optional<Pi
 void add_pier(const Bridge& bridge, int pier, ModelSpec& out) {
   const GirderBridgeSpec& spec = bridge.spec;
   const std::string base = fmt::format("{}.p{}.base", spec.id, pier), top = pier_top(spec, pier);
-  const std::optional<PierHinge> hinge =
-      spec.pier_hinge ? std::optional(pier_hinge(spec)) : std::nullopt;
-  std::string previous = add_pier_base(bridge, pier, hinge, out);
+  std::vector<PierHinge> hinges;
+  if (spec.pier_hinge) {
+    hinges.push_back(pier_hinge(spec, pier, false));
+    if (bridge.space) hinges.push_back(pier_hinge(spec, pier, true));
+  }
+  std::string previous = add_pier_base(bridge, pier, hinges, out);
   const SectionSpec section = pier_section(spec);
   for (int e = 1; e <= spec.pier.elements; ++e) {
     const std::string node =
@@ -235,28 +260,28 @@ void add_pier(const Bridge& bridge, int pier, ModelSpec& out) {
              bridge.pier_material, section, true, out);
     previous = node;
   }
-  const std::optional<double> yield_drift =
-      hinge ? std::optional(hinge->yield_displacement) : spec.pier_yield_drift;
-  DriftMonitorSpec monitor{fmt::format("{}.p{}", spec.id, pier),
-                           DriftKind::pier,
-                           spec.id,
-                           base,
-                           top,
-                           bridge.deck,
-                           yield_drift,
-                           hinge.has_value()};
-  monitor.base_element = fmt::format("{}.p{}.e1", spec.id, pier);
-  if (hinge && spec.pier_hinge->plastic_hinge_length) {
-    monitor.hinge = hinge_id(spec, pier);
-    monitor.yield_curvature = spec.pier_hinge->yield_curvature;
-    monitor.plastic_hinge_length = spec.pier_hinge->plastic_hinge_length;
+  // Its drift along the bridge and, in space, across it (`.y`), each with its hinge.
+  for (int direction = 0; direction < (bridge.space ? 2 : 1); ++direction) {
+    const PierHinge* hinge =
+        hinges.empty() ? nullptr : &hinges[static_cast<std::size_t>(direction)];
+    DriftMonitorSpec monitor{
+        fmt::format("{}.p{}{}", spec.id, pier, direction == 0 ? "" : ".y"),
+        DriftKind::pier,
+        spec.id,
+        base,
+        top,
+        bridge.deck,
+        hinge ? std::optional(hinge->yield_displacement) : spec.pier_yield_drift,
+        hinge != nullptr};
+    monitor.base_element = fmt::format("{}.p{}.e1", spec.id, pier);
+    monitor.direction = direction;
+    if (hinge && spec.pier_hinge->plastic_hinge_length) {
+      monitor.hinge = hinge->link;
+      monitor.yield_curvature = hinge->yield_curvature;
+      monitor.plastic_hinge_length = spec.pier_hinge->plastic_hinge_length;
+    }
+    out.drift_monitors.push_back(monitor);
   }
-  out.drift_monitors.push_back(monitor);
-  if (!bridge.space) return;
-  DriftMonitorSpec across = monitor;  // the pier's drift across the bridge
-  across.id += ".y";
-  across.direction = 1;
-  out.drift_monitors.push_back(across);
 }
 
 // Where the girder is cut, as span numbers: 0 and the last at the abutments, and the expansion

@@ -205,10 +205,6 @@ void check_generator_dimensions(const ModelSpec& spec) {
     if (spec.dimension == 1)
       throw InputError(spec.source, fmt::format("/generators/{}", g.generator_index),
                        "girder_bridge needs a 2-D or 3-D scene (\"dimension\": 2 or 3)");
-    if (spec.dimension == 3 && g.pier_hinge)
-      throw InputError(spec.source, fmt::format("/generators/{}/pier_hinge", g.generator_index),
-                       "pier hinges of a 3-D bridge (about both bending axes) are not built yet: "
-                       "leave them out (elastic piers), or use a 2-D scene");
   }
 }
 

@@ -332,10 +332,14 @@ struct JointSpec {
 // 2005, for a member in single curvature: the girders sit on bearings, so a pier is a
 // cantilever). The pier then yields at the top displacement Delta_y = M_y h^2 / (3 E I), its
 // drift monitor's yield drift; with a plastic-hinge length L_p the curvature ductility is
-// 1 + theta_p / (phi_y L_p) (Priestley, Seible & Calvi 1996).
+// 1 + theta_p / (phi_y L_p) (Priestley, Seible & Calvi 1996). In a 3-D bridge each pier base
+// has two such hinges, one per bending axis (each its own uniaxial law: no interaction), the
+// one across the bridge with E I_lateral and its own M_y or phi_y (default the same as along).
 struct PierHingeSpec {
   std::optional<double> yield_moment;              // [F L]
   std::optional<double> yield_curvature;           // [1/L]
+  std::optional<double> yield_moment_lateral;      // [F L], 3-D: across the bridge
+  std::optional<double> yield_curvature_lateral;   // [1/L], 3-D: across the bridge
   std::optional<double> plastic_hinge_length;      // [L]
   double stiffness_factor = 10.0;                  // n
   LawSpec law;                                     // stiffness and yield_force set by the generator

@@ -801,11 +801,26 @@ const Fields<builder::PierHingeSpec>& pier_hinge_fields() {
                "φ_y [1/L]: M_y = E I φ_y with the pier section's E I"),
       optional("plastic_hinge_length", &PierHingeSpec::plastic_hinge_length, Number<>{positive},
                "L_p [L], with yield_curvature: curvature ductility 1 + θ_p / (φ_y L_p)"),
+      optional("yield_moment_lateral", &PierHingeSpec::yield_moment_lateral, Number<>{positive},
+               "M_y across the bridge, with yield_moment [F L]")
+          .in_space()
+          .default_text("`yield_moment`"),
+      optional("yield_curvature_lateral", &PierHingeSpec::yield_curvature_lateral,
+               Number<>{positive},
+               "φ_y across the bridge, with yield_curvature: M_y = E I_lateral φ_y [1/L]")
+          .in_space()
+          .default_text("`yield_curvature`"),
       rule<PierHingeSpec>([](JsonObject& object, PierHingeSpec& hinge, Context&) {
         if (hinge.yield_moment.has_value() == hinge.yield_curvature.has_value())
           object.fail("give either 'yield_moment' or 'yield_curvature', not both");
         if (hinge.plastic_hinge_length && !hinge.yield_curvature)
           object.at("plastic_hinge_length").fail("needs 'yield_curvature'");
+        if (hinge.yield_moment_lateral && !hinge.yield_moment)
+          object.at("yield_moment_lateral")
+              .fail("goes with 'yield_moment' (not 'yield_curvature')");
+        if (hinge.yield_curvature_lateral && !hinge.yield_curvature)
+          object.at("yield_curvature_lateral")
+              .fail("goes with 'yield_curvature' (not 'yield_moment')");
       }),
       optional("stiffness_factor", &PierHingeSpec::stiffness_factor, Number<>{positive},
                "n: hinge stiffness (n + 1)·3 E I / h, pier E I raised to (n + 1)/n E I")

@@ -20,6 +20,7 @@
 
 #include "app/model_loading.hpp"
 #include "app/model_run.hpp"
+#include "assembly/pushover.hpp"
 #include "assembly/structural_system.hpp"
 #include "builder/build.hpp"
 #include "core/errors.hpp"
@@ -45,9 +46,8 @@ Json plane_bridge(double duration) {
   return model;
 }
 
-// The same bridge in space: x along, y across, z up; the record along x.
-Json space_bridge(double duration, double skew, int contact_points) {
-  Json model = plane_bridge(duration);
+// A plane bridge written in space: x along, y across, z up; the record along x.
+Json in_space(Json model, double skew, int contact_points) {
   model["dimension"] = 3;
   Json& bridge = model["generators"][0];
   bridge["girder"]["inertia_lateral"] = 40.0;
@@ -58,6 +58,23 @@ Json space_bridge(double duration, double skew, int contact_points) {
   bridge["skew"] = skew;
   bridge["contact_points"] = contact_points;
   model["excitations"][0]["direction"] = {1.0, 0.0, 0.0};
+  if (model.contains("gravity")) model["gravity"].erase("direction");
+  return model;
+}
+
+// The bundled bridge in space.
+Json space_bridge(double duration, double skew, int contact_points) {
+  return in_space(plane_bridge(duration), skew, contact_points);
+}
+
+// The bundled bridge with Takeda hinges at its pier bases, gravity and P-Delta, for `duration` s,
+// with explicit Rayleigh coefficients.
+Json takeda_bridge(double duration) {
+  std::ifstream file(kModels + "three_span_bridge_takeda.json");
+  Json model = Json::parse(file);
+  model["damping"] = {{"mass_coefficient", 0.5}, {"stiffness_coefficient", 0.002}};
+  model["analysis"]["duration"] = duration;
+  model.erase("recorders");
   return model;
 }
 
@@ -66,6 +83,20 @@ testing::NodeMotion run(const Json& model, const std::vector<std::string>& nodes
                         const std::vector<int>& directions) {
   return testing::run_node_motion(app::load_model_text(model.dump(), kModels + "bridge.json").built,
                                   nodes, directions);
+}
+
+// The bridge's stiffness at pier 1's top along `direction`, from one small elastic push.
+double top_stiffness(const BuiltModel& model, int direction) {
+  assembly::StructuralSystem system(model.model);
+  assembly::PushoverControl control{
+      .equation = system.dofs().equation(model.node_index.at("bridge.p1.top"), direction),
+      .target = 1e-5,
+      .increments = 1};
+  control.pattern = Vector::Zero(system.size());
+  control.pattern[control.equation] = 1.0;
+  const auto result = assembly::pushover(system, Vector::Zero(system.size()), control);
+  EXPECT_TRUE(result.stopped.empty()) << result.stopped;
+  return result.curve.back().load_factor / result.curve.back().displacement;
 }
 
 const std::vector<std::string> kNodes = {"bridge.g0.n0", "bridge.g0.n4",  "bridge.g1.n4",
@@ -95,6 +126,85 @@ TEST(BridgeInSpace, AtNoSkewItMovesAsThePlaneBridgeUntilItsFirstImpact) {
   EXPECT_GT(largest, 0.01);
   EXPECT_LT(difference / largest, 1e-9);
   EXPECT_EQ(across, 0.0);
+}
+
+// With a hinge about each bending axis at every pier base (Takeda, gravity with P-Delta), the
+// same: the hinge along the bridge is the plane hinge, the one across it never moves.
+TEST(BridgeInSpace, HingedPiersMoveAsThePlaneHingedBridgeUntilItsFirstImpact) {
+  const std::vector<std::string> nodes = {"bridge.g0.n0", "bridge.g1.n4", "bridge.p1.top",
+                                          "bridge.p2.top", "bridge.p1.hinge"};
+  const testing::NodeMotion plane = run(takeda_bridge(2.3), nodes, {0, 1, 2});  // x, y up, rz
+  const testing::NodeMotion space =
+      run(in_space(takeda_bridge(2.3), 0.0, 1), nodes, {0, 2, 4, 1, 3, 5});  // x, z, ry; y, rx, rz
+  ASSERT_EQ(plane.time.size(), space.time.size());
+  double largest = 0.0, difference = 0.0, across = 0.0;
+  for (std::size_t k = 0; k < plane.time.size(); ++k)
+    for (std::size_t n = 0; n < nodes.size(); ++n)
+      for (std::size_t d = 0; d < 3; ++d) {
+        // A pier leaning along +x turns by -theta_z in the plane (x right, y up), by +theta_y
+        // in space (z up).
+        const double in_plane = (d == 2 ? -1.0 : 1.0) * plane.values[k][3 * n + d];
+        if (d < 2) largest = std::max(largest, std::abs(in_plane));
+        difference = std::max(difference, std::abs(space.values[k][6 * n + d] - in_plane));
+        across = std::max({across, std::abs(space.values[k][6 * n + 3 + d])});
+      }
+  std::cout << fmt::format(
+      "3-D hinged bridge at no skew against the plane hinged bridge, 2.3 s: largest difference "
+      "{:.1e} of the largest displacement {:.3e} m; across the bridge and in plan {:.1e}\n",
+      difference / largest, largest, across);
+  EXPECT_GT(largest, 0.01);
+  EXPECT_LT(difference / largest, 1e-9);
+  EXPECT_EQ(across, 0.0);
+}
+
+// Each pier base has a hinge about y (along the bridge, E I) and one about x (across, E I_lateral,
+// its own M_y): the piers' drift monitors yield at M_y h^2 / (3 E I) in each direction, and the
+// hinges keep the elastic piers' stiffness at the pier top both ways where the pier is a
+// cantilever (the (n + 1) / n rule): along the bridge, and across it when the seat's twist
+// spring leaves the pier top free to turn (bearings 1 mm apart: its k_v s^2 / 4 ~ 0); with the
+// default spacing the deck's torsion holds the top, and the hinged pier is a little softer across
+// (printed).
+TEST(BridgeInSpace, EachPierBaseHasAHingeAboutEachBendingAxis) {
+  Json model = space_bridge(1.0, 0.0, 2);
+  model["generators"][0].erase("pier_yield_displacement");
+  model["generators"][0]["pier_hinge"] = {
+      {"yield_moment", 4.0e6},
+      {"yield_moment_lateral", 6.0e6},
+      {"law", {{"type", "bilinear_spring"}, {"hardening_ratio", 0.02}}}};
+  const BuiltModel hinged = app::load_model_text(model.dump(), kModels + "bridge.json").built;
+  const double e = 3.0e10, h = 8.0, along = 0.8, across = 1.2;
+  for (const DriftMonitor& monitor : hinged.drift_monitors) {
+    const bool lateral = monitor.direction == 1;
+    const double expected =
+        (lateral ? 6.0e6 : 4.0e6) * h * h / (3.0 * e * (lateral ? across : along));
+    EXPECT_TRUE(monitor.yields) << monitor.id;
+    EXPECT_NEAR(*monitor.yield_drift / expected, 1.0, 1e-15) << monitor.id;
+  }
+  for (const auto& [id, axis] : {std::pair{"bridge.p1.hinge", 1}, {"bridge.p1.hinge.across", 0}}) {
+    const model::Link& link = hinged.model.links[hinged.link_index.at(id)];
+    EXPECT_TRUE(link.rotational) << id;
+    EXPECT_EQ(link.axis[static_cast<std::size_t>(axis)], 1.0) << id;
+  }
+  // Pier-top stiffness along x and y: hinged against elastic piers, one small push each.
+  const auto ratio = [](Json with_hinges, int direction) {
+    Json elastic = with_hinges;
+    elastic["generators"][0].erase("pier_hinge");
+    return top_stiffness(app::load_model_text(with_hinges.dump(), kModels + "bridge.json").built,
+                         direction) /
+           top_stiffness(app::load_model_text(elastic.dump(), kModels + "bridge.json").built,
+                         direction);
+  };
+  Json free_top = model;
+  free_top["generators"][0]["bearing_spacing"] = 0.001;
+  const double along_x = ratio(model, 0), across_free = ratio(free_top, 1);
+  const double across_held = ratio(model, 1);
+  std::cout << fmt::format(
+      "pier-top stiffness, hinged / elastic - 1: along x {:.1e}; across, top free to turn "
+      "{:.1e}, held by the deck's torsion (default bearing spacing) {:.1e}\n",
+      along_x - 1.0, across_free - 1.0, across_held - 1.0);
+  EXPECT_LT(std::abs(along_x - 1.0), 1e-9);
+  EXPECT_LT(std::abs(across_free - 1.0), 1e-7);
+  EXPECT_LT(std::abs(across_held - 1.0), 0.05);
 }
 
 // Along the bridge alone, a square deck stays square: no transverse motion, no turn. Skewed by
@@ -204,8 +314,13 @@ TEST(BridgeInSpace, MeaninglessInputIsRefusedWithItsPath) {
   Json hinged = good;
   hinged["generators"][0].erase("pier_yield_displacement");
   hinged["generators"][0]["pier_hinge"] = {
-      {"yield_moment", 4.0e6}, {"law", {{"type", "bilinear_spring"}, {"hardening_ratio", 0.02}}}};
-  expect_refused(hinged, "/generators/0/pier_hinge", "not built yet");
+      {"yield_curvature", 2e-4},
+      {"yield_moment_lateral", 6e6},
+      {"law", {{"type", "bilinear_spring"}, {"hardening_ratio", 0.02}}}};
+  expect_refused(hinged, "/generators/0/pier_hinge/yield_moment_lateral", "with 'yield_moment'");
+  Json plane_hinged = takeda_bridge(1.0);
+  plane_hinged["generators"][0]["pier_hinge"]["yield_moment_lateral"] = 6e6;
+  expect_refused(plane_hinged, "/generators/0/pier_hinge/yield_moment_lateral", "dimension is 3");
   Json plane = plane_bridge(1.0);
   plane["generators"][0]["skew"] = 30.0;
   expect_refused(plane, "/generators/0/skew", "dimension is 3");
