@@ -63,12 +63,14 @@ std::string monitor_lines(const results::RunSummary& run) {
   for (const results::JointResult& joint : run.joints) {
     const std::optional<double> margin = joint.margin();
     text += fmt::format(
-        "  joint {}: opened {:.4g}, closed {:.4g}, moved {:.4g} on its seat{}, girder end "
+        "  joint {}: opened {:.4g}, closed {:.4g}, moved {:.4g} on its seat{}{}, girder end "
         "acceleration {:.4g} (absolute)\n",
         joint.monitor.id, joint.peak.peak_opening, joint.peak.peak_closing,
         joint.peak.peak_seat_movement,
         margin ? fmt::format(" (seat {:.4g}, margin {:.4g})", joint.monitor.seat_width, *margin)
                : std::string(),
+        joint.in_space ? fmt::format(", turned {:.4g} rad in plan", joint.peak.peak_plan_rotation)
+                       : std::string(),
         joint.peak.peak_girder_acceleration);
   }
   for (const results::DriftResult& drift : run.drifts) {

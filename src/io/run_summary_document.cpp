@@ -104,6 +104,7 @@ Document joint_document(const results::JointResult& joint) {
       .set("peak_seat_movement", joint.peak.peak_seat_movement)
       .set("residual_opening", joint.peak.residual_opening)
       .set("peak_girder_acceleration", joint.peak.peak_girder_acceleration);
+  if (joint.in_space) doc.set("peak_plan_rotation", joint.peak.peak_plan_rotation);
   if (const std::optional<double> margin = joint.margin())
     doc.set("seat_width", joint.monitor.seat_width)
         .set("unseating_margin", *margin)

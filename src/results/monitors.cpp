@@ -64,6 +64,8 @@ void JointMonitors::record(const integrators::State& state) {
       movement = value_at(state.displacement, w.girder_x) - value_at(state.displacement, w.seat_x);
     movement += sum_of(w.movement, state.displacement);
     p.peak_seat_movement = std::max(p.peak_seat_movement, std::abs(movement));
+    p.peak_plan_rotation =
+        std::max(p.peak_plan_rotation, std::abs(sum_of(w.plan_rotation, state.displacement)));
     p.peak_girder_acceleration = std::max(
         p.peak_girder_acceleration, std::abs(ground_.absolute(state, w.girder_x, w.girder, 0)));
   }

@@ -141,6 +141,15 @@ void add_point_terms(Index node, const std::array<double, 3>& r, const std::arra
   }
 }
 
+// theta_z of `node` less that of `reference` (3-D scenes; nothing where both are held).
+std::vector<Term> turn_in_plan(Index node, Index reference, const model::DofMap& dofs) {
+  std::vector<Term> terms;
+  for (const auto& [at, sign] : {std::pair{node, 1.0}, std::pair{reference, -1.0}})
+    if (const Index equation = dofs.equation(at, 5); equation >= 0)
+      terms.push_back({equation, sign});
+  return terms;
+}
+
 // A storey's corner drifts along its direction (a corner c from the top node is c + X_top -
 // X_bottom from the bottom node) and its twist about z (3-D floors).
 void add_plan_terms(const builder::DriftMonitor& m, const model::Model& model,
@@ -156,9 +165,7 @@ void add_plan_terms(const builder::DriftMonitor& m, const model::Model& model,
     add_point_terms(m.top, corner, n, 1.0, dofs, terms);
     add_point_terms(m.bottom, from_bottom, n, -1.0, dofs, terms);
   }
-  for (const auto& [node, sign] : {std::pair{m.top, 1.0}, std::pair{m.bottom, -1.0}})
-    if (const Index equation = dofs.equation(node, 5); equation >= 0)
-      where.twist.push_back({equation, sign});
+  where.twist = turn_in_plan(m.top, m.bottom, dofs);
 }
 
 std::vector<DriftMonitors::Where> drift_places(const builder::BuiltModel& built,
@@ -190,6 +197,8 @@ std::vector<JointMonitors::Where> joint_places(const builder::BuiltModel& built,
         {system.links().row(m.link), built.model.links[static_cast<std::size_t>(m.link)].gap,
          system.dofs().equation(m.girder, 0), system.dofs().equation(m.seat, 0), m.girder});
     if (m.direction) places.back().movement = point_movement(m, system.dofs());
+    if (built.model.dimension == 3)
+      places.back().plan_rotation = turn_in_plan(m.girder, m.seat, system.dofs());
   }
   return places;
 }
@@ -491,8 +500,8 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
   }
   for (std::size_t k = 0; k < built.joint_monitors.size(); ++k) {
     const builder::JointMonitor& m = built.joint_monitors[k];
-    run.joints.push_back(
-        {m, built.model.links[static_cast<std::size_t>(m.link)].id, observers.joints().peaks()[k]});
+    run.joints.push_back({m, built.model.links[static_cast<std::size_t>(m.link)].id,
+                          observers.joints().peaks()[k], built.model.dimension == 3});
   }
   run.energy = observers.energy().terms();
   run.worst_balance_error = observers.energy().worst_balance_error();

@@ -133,6 +133,7 @@ struct JointResult {
   builder::JointMonitor monitor;
   std::string link;  // id
   JointPeak peak;
+  bool in_space = false;                 // 3-D: the girder end's plan rotation is reported
   std::optional<double> margin() const;  // to unseating, with a seat width
   bool unseated() const {
     return monitor.seat_width > 0.0 && peak.peak_seat_movement >= monitor.seat_width;
