@@ -8,10 +8,13 @@ DIR, each when its data is there (one line printed per file):
   link_forces.png        force history of every link (compression +, tension -)
   force_penetration.png  force against penetration per link (impact, restrainer, spring loops)
   joint_openings.png     joint opening histories (joints.csv), seat width dashed
-  drift_envelopes.png    peak storey drift ratio against height, pier drift ratio and ductility
+  drift_envelopes.png    peak storey drift ratio against height (in 3-D a panel per direction, the
+                         largest plan corner dashed), pier drift ratio and ductility
   energy.png             energy components (energy.csv) and the balance error
   displacements.png      u_x histories of the recorded nodes
   accelerations.png      their absolute accelerations a_abs_x (node recorders write them)
+  plan_motion.png        3-D runs only: per recorded node with u_x, u_y and u_rz, its path in
+                         plan (u_y against u_x) and its rotation u_rz about z against time
   floor_spectra.png      floor response spectra Sa(T) of spectrum recorders, one panel per
                          damping ratio
   ensemble.png           with ensemble.json (`pound run --ensemble N`): the spread over the
@@ -19,7 +22,7 @@ DIR, each when its data is there (one line printed per file):
   report.html            one self-contained page for people: the run's facts, warnings, the
                          excitations the model names, the tables of summary.json, the
                          ensemble's spread and every figure above (inlined)
-Figures with more links or joints than fit on a page continue in link_forces_2.png, ...
+Figures with more links, joints or nodes than fit on a page continue in link_forces_2.png, ...
 CSV files are recognised by their columns, not their names. Axes name the units summary.json
 gives (its "units": the model's units block), "model units" where it names none.
 
@@ -31,6 +34,7 @@ Exit codes: 0 ok, 1 usage error or matplotlib missing, 2 bad input (no summary.j
 malformed summary or CSV; message names the file), 4 a figure could not be written.
 """
 
+import json
 import math
 import os
 import sys
@@ -45,7 +49,7 @@ from run_report_html import write_report  # noqa: E402
 PROG = "plot_run.py"
 REEXEC_MARK = "POUND_PLOT_RUN_REEXEC"
 
-PER_PAGE = 8          # subplots per page of the per-link and per-joint figures
+PER_PAGE = 8          # subplots (rows of plan_motion.png) per page of the per-item figures
 NODES_PER_AXES = 10   # node histories overlaid in one subplot of displacements.png
 MODEL_UNITS = "model units"
 
@@ -66,6 +70,8 @@ def units_of(summary):
     return units
 
 LINK_QUANTITIES = ("force", "penetration", "tangential_force", "slide")
+NODE_QUANTITIES = ("u_x", "a_abs_x", "u_y", "u_rz")   # the node columns a figure reads
+SPACE_ONLY_QUANTITIES = ("u_z", "u_rx", "u_ry")      # node directions only a 3-D scene has
 ENERGY_TERMS = ("kinetic", "strain", "damping", "links")
 ENSEMBLE_SHOWN = 24
 
@@ -178,7 +184,7 @@ class History:
             if owner is None:
                 if quantity in ENERGY_TERMS or quantity in ("input", "initial"):
                     names.append(name)
-            elif quantity in LINK_QUANTITIES or quantity in ("opening", "u_x", "a_abs_x"):
+            elif quantity in LINK_QUANTITIES or quantity in ("opening",) + NODE_QUANTITIES:
                 names.append(name)
         return names
 
@@ -314,6 +320,46 @@ def spectrum_column(name):
     return owner, parts[1], parts[2]
 
 
+def scene_in_space(summary, histories, folder):
+    """Whether the run's scene is 3-D (the model's "dimension": 3), where a node's u_x and u_y
+    are a path in plan and u_rz a rotation about the vertical z.
+
+    The node columns alone cannot tell: a node of a plane (2-D) frame records u_x, u_y (there
+    the vertical) and u_rz (its in-plane rotation), the very columns of a 3-D rigid floor
+    (u_x, u_y and u_rz at its mass centre), with the same units, and summary.json names no
+    dimension. Any one of these is a 3-D scene, each impossible in a plane one:
+      - a node column u_z, u_rx or u_ry in a history (directions a plane scene does not have);
+      - in summary.json, an excitation with a "pair" (two horizontal components: 3-D only),
+        a storey with "peak_twist" (a floor plan's corners) or a joint with
+        "peak_plan_rotation" (both written in 3-D scenes only);
+      - the model file summary.json names, where it can still be read (as given, or from
+        DIR, as report.html looks for it), says "dimension": 3.
+    None of them (a 3-D scene excited along one axis, without plan-corner storeys, joints or
+    out-of-plane columns, whose model file has moved): taken as plane, no plan figure."""
+    for history in histories:
+        for name in history.columns[1:]:
+            owner, quantity = split_column(name)
+            if owner is not None and quantity in SPACE_ONLY_QUANTITIES:
+                return True
+    marks = (("excitations", "pair"), ("storeys", "peak_twist"), ("joints", "peak_plan_rotation"))
+    for key, mark in marks:
+        items = summary.get(key)
+        if isinstance(items, list) and any(isinstance(i, dict) and mark in i for i in items):
+            return True
+    model = summary.get("model")
+    if not isinstance(model, str) or not model:
+        return False
+    for path in (model, os.path.join(folder, model)):
+        if os.path.isfile(path):
+            try:
+                with open(path, encoding="utf-8") as file:
+                    spec = json.load(file)
+            except (OSError, ValueError, RecursionError):
+                return False  # not ours to judge: pound read it when it ran
+            return isinstance(spec, dict) and spec.get("dimension") == 3
+    return False
+
+
 # ----------------------------------------------------------------------------------------------
 # Figures
 
@@ -348,7 +394,10 @@ class Plotter:
         return fig, axes[:count]
 
     def save(self, fig, name, title):
-        fig.suptitle(f"{title}: {self.model}")
+        # 0.1 inch below the top edge (matplotlib's y = 0.98 of a 5-inch figure): at a fraction
+        # of a tall page's height the title would sink onto the first row's titles, for
+        # tight_layout keeps the same room above them whatever the height
+        fig.suptitle(f"{title}: {self.model}", y=1.0 - 0.1 / fig.get_figheight())
         path = os.path.join(self.folder, name)
         save_png(fig, path, self.dpi)
         print(path)
@@ -505,14 +554,19 @@ class Plotter:
                  if number(p, "drift_ratio") is not None or number(p, "ductility") is not None]
         storeys = [s for s in storeys if number(s, "drift_ratio") is not None]
         has_ductility = any(number(p, "ductility") is not None for p in piers)
-        panels = (["storeys"] if storeys else []) + (["pier drift"] if piers else []) + \
-                 (["pier ductility"] if has_ductility else [])
+        # 3-D buildings: a panel per drift direction (the summary's "direction", x unless given).
+        directions = sorted({str(s.get("direction", "x")) for s in storeys})
+        panels = [("storeys", d) for d in directions] + \
+                 ([("pier drift", None)] if piers else []) + \
+                 ([("pier ductility", None)] if has_ductility else [])
         if not panels:
             return
         fig, axes = self.figure(len(panels), len(panels), 4.6, width=max(6.0, 4.8 * len(panels)))
-        for ax, panel in zip(axes, panels):
+        for ax, (panel, direction) in zip(axes, panels):
             if panel == "storeys":
-                self.storey_profile(ax, storeys)
+                self.storey_profile(
+                    ax, [s for s in storeys if str(s.get("direction", "x")) == direction],
+                    direction if len(directions) > 1 or direction != "x" else None)
             elif panel == "pier drift":
                 self.pier_bars(ax, piers, "drift_ratio", "peak drift ratio [-]", "Pier drift ratio")
             else:
@@ -521,7 +575,9 @@ class Plotter:
                 ax.legend(loc="best", fontsize="small")
         self.save(fig, "drift_envelopes.png", "Drift envelopes")
 
-    def storey_profile(self, ax, storeys):
+    def storey_profile(self, ax, storeys, direction=None):
+        """Each building's peak drift ratio over its height; in 3-D (storeys with a
+        corner_drift_ratio) its plan corners' largest too, dashed."""
         buildings = {}
         for storey in storeys:
             buildings.setdefault(str(storey.get("building", "")), []).append(storey)
@@ -529,21 +585,28 @@ class Plotter:
         for k, (building, items) in enumerate(buildings.items()):
             if all(number(s, "storey") is not None for s in items):
                 items = sorted(items, key=lambda s: number(s, "storey"))
-            xs, ys, level = [], [], 0.0
+            xs, corners, ys, level = [], [], [], 0.0
             for position, storey in enumerate(items):
                 ratio = number(storey, "drift_ratio")
+                corner = number(storey, "corner_drift_ratio")
                 step = number(storey, "height") if use_heights else 1.0
                 xs += [ratio, ratio]
+                corners += [math.nan if corner is None else corner] * 2
                 ys += [level, level + step]
                 level += step
-            ax.plot(xs, ys, lw=1.5, color=f"C{k % 10}", label=building or None)
+            ax.plot(xs, ys, lw=1.5, color=f"C{k % 10}",
+                    label=(building + (" (mass centre)" if direction else "")) or None)
             ax.plot(xs[::2], [(a + b) / 2 for a, b in zip(ys[::2], ys[1::2])], "o", ms=3,
                     color=f"C{k % 10}")
+            if any(not math.isnan(c) for c in corners):
+                ax.plot(corners, ys, lw=1.2, ls="--", color=f"C{k % 10}",
+                        label=f"{building} (largest corner)")
         ax.set_xlim(left=0.0)
         ax.set_ylim(bottom=0.0)
         ax.set_xlabel("peak storey drift ratio [-]")
         ax.set_ylabel(f"height [{self.units['length']}]" if use_heights else "storey")
-        ax.set_title("Storey drift ratio envelopes", fontsize="medium")
+        ax.set_title("Storey drift ratio envelopes" + (f" along {direction}" if direction else ""),
+                     fontsize="medium")
         if any(buildings):
             ax.legend(loc="best", fontsize="small")
         ax.grid(alpha=0.3)
@@ -661,6 +724,90 @@ class Plotter:
                                  "Absolute node accelerations (what floor contents feel)",
                                  self.units["acceleration"])
 
+    def plan_nodes(self, histories):
+        """[(node, history, {"u_x", "u_y", "u_rz": values})] of every node a history has all
+        three of, in file and column order; a node in two files is drawn from the first."""
+        nodes = {}
+        for history in histories:
+            columns = {}
+            for name in history.columns[1:]:
+                owner, quantity = split_column(name)
+                if owner is not None and quantity in ("u_x", "u_y", "u_rz"):
+                    columns.setdefault(owner, {})[quantity] = history.values[name]
+            for owner, values in columns.items():
+                if len(values) == 3 and owner not in nodes:
+                    nodes[owner] = (owner, history, values)
+        return list(nodes.values())
+
+    def plot_plan_motion(self, histories, in_space):
+        """3-D runs: per node a row, its path in plan and its rotation about z."""
+        if not in_space:
+            return
+        for page, items in enumerate(self.pages(self.plan_nodes(histories))):
+            fig = self.Figure(figsize=(11.0, 1.2 + 3.6 * len(items)))
+            axes = fig.subplots(len(items), 2, squeeze=False,
+                                gridspec_kw={"width_ratios": [1.0, 2.1]})
+            for (path_ax, turn_ax), (node, history, values) in zip(axes, items):
+                self.plan_path(path_ax, node, history.time(), values["u_x"], values["u_y"])
+                self.plan_rotation(turn_ax, node, history, values["u_rz"])
+            self.save(fig, self.page_name("plan_motion", page),
+                      "Plan motion of the recorded nodes (3-D): path in plan and rotation about z")
+
+    def plan_path(self, ax, node, t, ux, uy):
+        np = self.np
+        length, time = self.units["length"], self.units["time"]
+        ax.plot(ux, uy, lw=0.7, color="C0")
+        ax.axhline(0.0, color="0.6", lw=0.5)
+        ax.axvline(0.0, color="0.6", lw=0.5)
+        finite = np.flatnonzero(np.isfinite(ux) & np.isfinite(uy))
+        title = f"{node}: path in plan"
+        if len(finite):
+            first, last = finite[0], finite[-1]
+            # a ring round the start, a smaller square at the end: both seen where they meet
+            ax.plot(ux[first], uy[first], "o", color="C2", mfc="none", mew=1.8, ms=10, zorder=3,
+                    label=f"start (t = {fmt(t[first])} {time})")
+            ax.plot(ux[last], uy[last], "s", color="C3", ms=5, zorder=4,
+                    label=f"end (t = {fmt(t[last])} {time})")
+            peak = float(np.max(np.hypot(ux[finite], uy[finite])))
+            title += f"\npeak distance from the origin {fmt(peak)} {length}"
+            ax.legend(loc="best", fontsize="x-small", framealpha=0.8)
+        ax.set_aspect("equal", adjustable="datalim")
+        ax.xaxis.set_major_locator(self.MaxNLocator(4, steps=[1, 2, 5, 10]))
+        ax.yaxis.set_major_locator(self.MaxNLocator(5, steps=[1, 2, 5, 10]))
+        ax.set_title(title, fontsize="medium")
+        ax.set_xlabel(f"u_x [{length}]")
+        ax.set_ylabel(f"u_y [{length}]")
+        ax.grid(alpha=0.3)
+
+    def plan_rotation(self, ax, node, history, rz):
+        np = self.np
+        t = history.time()
+        ax.plot(t, rz, lw=0.8, color="C1")
+        ax.axhline(0.0, color="0.6", lw=0.5)
+        finite = np.flatnonzero(np.isfinite(rz))
+        if len(finite) and not np.any(rz[finite]):  # a node held in torsion, say
+            ax.text(0.5, 0.56, "u_rz = 0 throughout", transform=ax.transAxes, ha="center",
+                    va="bottom", fontsize="small", color="0.3")
+        elif len(finite):
+            at = finite[np.argmax(np.abs(rz[finite]))]
+            peak, when = float(rz[at]), float(t[at])
+            low, high = float(np.min(rz[finite])), float(np.max(rz[finite]))
+            span = max(high - low, abs(peak), 1e-300)
+            up = peak >= 0.0
+            # room for the label beyond the peak, where no other part of the curve is
+            ax.set_ylim(low - (0.08 if up else 0.5) * span, high + (0.5 if up else 0.08) * span)
+            ax.plot(when, peak, "o", color="C3", ms=5, zorder=3)
+            left = when <= 0.5 * (float(t[0]) + float(t[-1]))
+            ax.annotate(f"peak {fmt(peak)} rad at t = {fmt(when)} {self.units['time']}",
+                        (when, peak), xytext=(-6 if left else 6, 8 if up else -8),
+                        textcoords="offset points", ha="left" if left else "right",
+                        va="bottom" if up else "top", fontsize="small", color="C3")
+        ax.set_title(f"{node}: rotation about z ({os.path.basename(history.path)})",
+                     fontsize="medium")
+        ax.set_xlabel(self.time_label)
+        ax.set_ylabel("rotation u_rz [rad]")
+        ax.grid(alpha=0.3)
+
     def plot_floor_spectra(self, spectra):
         """One panel per damping ratio: Sa against period of every node and direction."""
         panels = {}
@@ -743,6 +890,7 @@ def main(argv):
         plotter.plot_energy(histories)
         plotter.plot_displacements(histories)
         plotter.plot_accelerations(histories)
+        plotter.plot_plan_motion(histories, scene_in_space(summary, histories, args.folder))
         plotter.plot_floor_spectra(spectra)
         if ensemble is not None:
             plotter.plot_ensemble(ensemble)

@@ -348,19 +348,26 @@ GirderSegment add_girder_segment(const Bridge& bridge, std::size_t g, int first_
 }
 
 // A joint's monitors: its opening and closing, and the girder end's movement on its seat along the
-// bridge. In space with several pounding points one per point, `<id>.c<k>`: the opening at that
-// point and the point's movement on its seat across the skewed support line (the corner's
-// unseating margin; the acute corner's is the one to watch).
+// bridge. In space across the skewed support line and, with several pounding points, one per
+// point, `<id>.c<k>`: the opening at that point and the point's movement on its seat (the
+// corner's unseating margin; the acute corner's is the one to watch).
 void add_joint_monitors(const Bridge& bridge, const std::string& id, const std::string& joint,
                         const std::string& girder, const std::string& seat, double seat_width,
                         ModelSpec& out) {
   const int points = bridge.space ? bridge.spec.contact_points : 1;
-  if (points == 1) {
+  if (!bridge.space) {
     out.joint_monitors.push_back({id, joint, girder, seat, seat_width});
     return;
   }
   const std::vector<std::array<double, 3>> at = end_points(bridge.spec);
   const std::vector<double> normal = end_normal(bridge.spec, 1.0);
+  if (points == 1) {  // the end's centre, across the (skewed) support line
+    JointMonitorSpec monitor{id, joint, girder, seat, seat_width};
+    monitor.point = at.front();
+    monitor.direction = std::array{normal[0], normal[1], normal[2]};
+    out.joint_monitors.push_back(monitor);
+    return;
+  }
   for (int k = 0; k < points; ++k) {
     JointMonitorSpec monitor{fmt::format("{}.c{}", id, k), fmt::format("{}.c{}", joint, k), girder,
                              seat, seat_width};

@@ -61,7 +61,8 @@ struct JointPeak {
   double peak_seat_movement = 0.0;  // max |u_girder - u_seat| along x [L]
   double residual_opening = 0.0;    // -(delta + gap) at the end of the run [L]
   double peak_girder_acceleration = 0.0;  // the girder end's absolute, along x [L/T^2]
-  // 3-D: the girder end's rotation in plan on its seat, theta_z,girder - theta_z,seat [rad]
+  // 3-D, with a direction: the girder end's turn in plan on its seat, theta_z,girder less the
+  // seat's [rad]
   double peak_plan_rotation = 0.0;
 };
 
@@ -76,7 +77,7 @@ class JointMonitors : public Observer {
     // of coefficient x displacement over these equations; empty: u(girder_x) - u(seat_x).
     using Term = results::Term;
     std::vector<Term> movement = {};
-    std::vector<Term> plan_rotation = {};  // 3-D: theta_z of the girder less the seat's
+    std::vector<Term> plan_rotation = {};  // theta_z of the girder less the seat's (3-D, z up)
   };
   JointMonitors(std::vector<Where> joints, GroundAcceleration& ground)
       : joints_(std::move(joints)), ground_(ground), peaks_(joints_.size()) {}

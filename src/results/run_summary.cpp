@@ -7,6 +7,7 @@
 #include <limits>
 #include <string_view>
 
+#include "assembly/beam_3d.hpp"
 #include "core/errors.hpp"
 #include "results/spectrum_recorder.hpp"
 
@@ -197,8 +198,7 @@ std::vector<JointMonitors::Where> joint_places(const builder::BuiltModel& built,
         {system.links().row(m.link), built.model.links[static_cast<std::size_t>(m.link)].gap,
          system.dofs().equation(m.girder, 0), system.dofs().equation(m.seat, 0), m.girder});
     if (m.direction) places.back().movement = point_movement(m, system.dofs());
-    if (built.model.dimension == 3)
-      places.back().plan_rotation = turn_in_plan(m.girder, m.seat, system.dofs());
+    if (m.direction) places.back().plan_rotation = turn_in_plan(m.girder, m.seat, system.dofs());
   }
   return places;
 }
@@ -264,6 +264,24 @@ std::vector<std::string> result_warnings(const RunSummary& run) {
   return warnings;
 }
 
+// A 3-D beam's base shear along the drift's direction e_d (V_y y' + V_z z' projected on it) and
+// its moment about a = x' x e_d, the axis that shear bends it about (y for a column along z
+// drifting along x), from its local axes; none for a member along the drift.
+struct DriftWeights {
+  std::vector<double> shear, moment;  // of (V_y, V_z) and (M_y, M_z); empty: the resultants
+};
+DriftWeights along_drift(const model::Element& element, int direction) {
+  const auto* beam = dynamic_cast<const assembly::Beam3d*>(&element);
+  if (!beam) return {};
+  const Eigen::Matrix3d& axes = beam->axes();  // rows x', y', z'
+  const Eigen::Vector3d drift = Eigen::Vector3d::Unit(direction);
+  const Eigen::Vector3d across = axes.row(0).transpose().cross(drift);
+  if (!(across.norm() > 1e-12)) return {};
+  const Eigen::Vector3d about = across.normalized();
+  return {{axes.row(1).dot(drift), axes.row(2).dot(drift)},
+          {axes.row(1).dot(about), axes.row(2).dot(about)}};
+}
+
 }  // namespace
 
 RunObservers::RunObservers(const builder::BuiltModel& built,
@@ -298,6 +316,12 @@ RunObservers::RunObservers(const builder::BuiltModel& built,
       const std::string_view name = names[k].name;
       if (name == "V_i" || name == "Vy_i" || name == "Vz_i") rows.shear.push_back(first + k);
       if (name == "M_i" || name == "My_i" || name == "Mz_i") rows.moment.push_back(first + k);
+    }
+    const DriftWeights weights =
+        along_drift(*built.model.elements[static_cast<std::size_t>(*m.base_element)], m.direction);
+    if (rows.shear.size() == 2 && rows.moment.size() == 2) {
+      rows.shear_weights = weights.shear;
+      rows.moment_weights = weights.moment;
     }
     base_rows_.push_back(rows);
     first += names.size();
@@ -338,8 +362,12 @@ void RunObservers::record(const integrators::State& state) {
 }
 
 namespace {
-// The resultant of one or two components (one: its magnitude exactly).
-double resultant(const std::vector<double>& row, const std::vector<std::size_t>& components) {
+// The resultant of one or two components (one: its magnitude exactly), or with weights their
+// projection on one direction.
+double resultant(const std::vector<double>& row, const std::vector<std::size_t>& components,
+                 const std::vector<double>& weights) {
+  if (!weights.empty())
+    return std::abs(weights[0] * row[components[0]] + weights[1] * row[components[1]]);
   if (components.size() == 1) return std::abs(row[components[0]]);
   return std::hypot(row[components[0]], row[components[1]]);
 }
@@ -350,9 +378,11 @@ void RunObservers::record_base_forces() {
   for (std::optional<BaseRows>& rows : base_rows_) {
     if (!rows) continue;
     if (!rows->shear.empty())
-      rows->peak_shear = std::max(rows->peak_shear, resultant(row, rows->shear));
+      rows->peak_shear =
+          std::max(rows->peak_shear, resultant(row, rows->shear, rows->shear_weights));
     if (!rows->moment.empty())
-      rows->peak_moment = std::max(rows->peak_moment, resultant(row, rows->moment));
+      rows->peak_moment =
+          std::max(rows->peak_moment, resultant(row, rows->moment, rows->moment_weights));
   }
 }
 
@@ -501,7 +531,7 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
   for (std::size_t k = 0; k < built.joint_monitors.size(); ++k) {
     const builder::JointMonitor& m = built.joint_monitors[k];
     run.joints.push_back({m, built.model.links[static_cast<std::size_t>(m.link)].id,
-                          observers.joints().peaks()[k], built.model.dimension == 3});
+                          observers.joints().peaks()[k], m.direction.has_value()});
   }
   run.energy = observers.energy().terms();
   run.worst_balance_error = observers.energy().worst_balance_error();

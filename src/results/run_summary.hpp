@@ -36,7 +36,8 @@ class RunObservers {
   const LinkSummaries& links() const { return links_; }
   const EnergyBalance& energy() const { return energy_; }
   const DriftMonitors& drifts() const { return drifts_; }
-  // The peak |V_i| and |M_i| (none for a truss) of drift monitor k's base element, if it has one.
+  // The peak |V_i| and |M_i| (none for a truss) of drift monitor k's base element, if it has one
+  // (a 3-D beam's: its shear along the drift, its moment about the horizontal axis across it).
   std::optional<double> base_shear(std::size_t monitor) const;
   std::optional<double> base_moment(std::size_t monitor) const;
   const JointMonitors& joints() const { return joints_; }
@@ -54,9 +55,13 @@ class RunObservers {
   // The envelope of the drift monitors' base elements' end forces, and where monitor k's are in
   // it (none without a base element).
   // Its base element's shear and moment at end i, each one component (V_i, M_i of a plane beam)
-  // or two (Vy_i, Vz_i and My_i, Mz_i of a 3-D one: their resultant); a truss has neither.
+  // or two (Vy_i, Vz_i and My_i, Mz_i of a 3-D one: along the drift's direction, and about the
+  // horizontal axis across it); a truss has neither.
   struct BaseRows {
     std::vector<std::size_t> shear, moment;  // in the envelope's row
+    // A 3-D beam's: each component's share of the shear along the drift and of the moment about
+    // the horizontal axis across it (its local axis' global component); empty: the resultant.
+    std::vector<double> shear_weights, moment_weights;
     double peak_shear = 0.0, peak_moment = 0.0;
   };
   std::vector<std::optional<BaseRows>> base_rows_;
@@ -133,7 +138,9 @@ struct JointResult {
   builder::JointMonitor monitor;
   std::string link;  // id
   JointPeak peak;
-  bool in_space = false;                 // 3-D: the girder end's plan rotation is reported
+  // A 3-D monitor with a direction (z up, as girder_bridge makes them): its girder end's turn in
+  // plan is reported.
+  bool in_space = false;
   std::optional<double> margin() const;  // to unseating, with a seat width
   bool unseated() const {
     return monitor.seat_width > 0.0 && peak.peak_seat_movement >= monitor.seat_width;

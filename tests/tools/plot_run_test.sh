@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# tools/plot_run.py on a real run: the figures exist and are PNGs; bad input exits 2 cleanly.
+# tools/plot_run.py on real runs: the figures exist and are PNGs (plan_motion.png for a 3-D
+# scene only); bad input exits 2 cleanly.
 # usage: plot_run_test.sh POUND_BINARY REPO_ROOT
 set -euo pipefail
 # shellcheck source-path=SCRIPTDIR source=plot_test_common.sh
@@ -97,4 +98,60 @@ sed -i "s|\.\./ground_motions/|$(cd "$root" && pwd)/ground_motions/|" "$tmp/outp
 is_png "$outputs/floor_spectra.png"
 [ ! -s "$tmp/stderr" ] || fail "plot_run.py noted: $(cat "$tmp/stderr")"
 
-echo "plot_run_test: ok (${expected[*]} ensemble.png report.html floor_spectra.png)"
+# A model's copy for sections 7 and 8: 3 s of its analysis, its node recorders only (the links'
+# many pages are sections 1-6's), its records' paths absolute (the copy lives in $tmp).
+node_model() {  # model, copy
+  "$python" - "$1" "$2" <<'PY' || fail "could not copy $1"
+import json, os, sys
+source, copy = sys.argv[1], sys.argv[2]
+with open(source, encoding="utf-8") as f:
+    model = json.load(f)
+model["analysis"]["duration"] = 3.0
+model["recorders"] = [r for r in model["recorders"] if r.get("type") == "node"]
+folder = os.path.dirname(os.path.abspath(source))
+for excitation in model.get("excitations", []):
+    for place in (excitation, excitation.get("pair") or {}):
+        if "record" in place:
+            place["record"] = os.path.normpath(os.path.join(folder, place["record"]))
+with open(copy, "w", encoding="utf-8") as f:
+    json.dump(model, f, indent=1)
+PY
+}
+
+# 7. A 3-D scene (models/eccentric_buildings_3d.json): plan_motion.png, the roofs' paths in plan
+# and rotations about z, printed and inlined in report.html like the other figures.
+space="$tmp/space"
+node_model "$root/models/eccentric_buildings_3d.json" "$tmp/space_model.json"
+"$pound" run "$tmp/space_model.json" --out "$space" --quiet || fail "pound run of the 3-D model failed"
+grep -q '\.u_rz' "$space/roofs.csv" || fail "the 3-D run recorded no u_rz"
+"$python" "$script" "$space" --dpi 60 >"$tmp/stdout" 2>"$tmp/stderr" ||
+  fail "plot_run.py failed on a 3-D run: $(cat "$tmp/stderr")"
+sed -i '$d' "$tmp/stdout"  # report.html
+check_folder "$space" plan_motion.png displacements.png
+grep -q 'alt="plan_motion.png"' "$space/report.html" || fail "report.html of the 3-D run lacks plan_motion.png"
+[ ! -s "$tmp/stderr" ] || fail "plot_run.py noted on the 3-D run: $(cat "$tmp/stderr")"
+
+# 8. A plane (2-D) scene whose node recorder has the same u_x, u_y, u_rz columns (the three-span
+# bridge's pier tops): no plan figure, u_y is the vertical there. The same summary with a u_z
+# column (a direction only 3-D scenes have) has one; a non-number in u_rz is bad input.
+plane="$tmp/plane"
+node_model "$root/models/three_span_bridge.json" "$tmp/plane_model.json"
+"$pound" run "$tmp/plane_model.json" --out "$plane" --quiet || fail "pound run of the 2-D model failed"
+grep -q '\.u_y.*\.u_rz' "$plane/pier_tops.csv" || fail "the 2-D run recorded no u_y and u_rz"
+"$python" "$script" "$plane" --dpi 60 >/dev/null 2>"$tmp/stderr" ||
+  fail "plot_run.py failed on a 2-D run: $(cat "$tmp/stderr")"
+is_png "$plane/displacements.png"
+[ -z "$(find "$plane" -maxdepth 1 -name 'plan_motion*')" ] || fail "plan_motion.png written for a 2-D run"
+mkdir "$tmp/columns_3d"
+cp "$plane/summary.json" "$tmp/columns_3d/"
+printf 'time,deck.u_x,deck.u_y,deck.u_z,deck.u_rz\n0,0,0,0,0\n0.1,0.01,0.02,0,0.001\n' \
+  >"$tmp/columns_3d/nodes.csv"
+"$python" "$script" "$tmp/columns_3d" --dpi 60 >/dev/null 2>"$tmp/stderr" ||
+  fail "plot_run.py failed on a u_z column: $(cat "$tmp/stderr")"
+is_png "$tmp/columns_3d/plan_motion.png"
+mkdir "$tmp/bad_rotation"
+cp "$space/summary.json" "$tmp/bad_rotation/"
+printf 'time,f.u_x,f.u_y,f.u_rz\n0,0,0,0\n0.1,0.01,0.02,abc\n' >"$tmp/bad_rotation/nodes.csv"
+expect_input_error "$tmp/bad_rotation" "$tmp/bad_rotation/nodes.csv"
+
+echo "plot_run_test: ok (${expected[*]} ensemble.png report.html floor_spectra.png plan_motion.png)"
