@@ -8,10 +8,10 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "assembly/pushover.hpp"
 #include "builder/build.hpp"
 #include "core/errors.hpp"
 #include "io/model_reader.hpp"
+#include "support/push_stiffness.hpp"
 
 namespace pound::builder {
 namespace {
@@ -38,16 +38,7 @@ BuiltModel built(const Json& model) { return build(io::parse_model(model.dump(),
 
 // The lateral stiffness at a pier top, from one small elastic push.
 double pier_top_stiffness(const BuiltModel& model) {
-  assembly::StructuralSystem system(model.model);
-  assembly::PushoverControl control{
-      .equation = system.dofs().equation(model.node_index.at("bridge.p1.top"), 0),
-      .target = 1e-5,
-      .increments = 1};
-  control.pattern = Vector::Zero(system.size());
-  control.pattern[control.equation] = 1.0;
-  const auto result = assembly::pushover(system, Vector::Zero(system.size()), control);
-  EXPECT_TRUE(result.stopped.empty()) << result.stopped;
-  return result.curve.back().load_factor / result.curve.back().displacement;
+  return testing::push_stiffness(model, "bridge.p1.top", 0);
 }
 
 TEST(PierHinge, KeepsTheElasticPiersLateralStiffness) {
