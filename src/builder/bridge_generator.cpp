@@ -22,15 +22,32 @@ struct Bridge {
   bool space = false;  // a 3-D scene
 };
 
-// A node at station x and height h: (x, h) in a plane, (x, 0, h) in space.
-NodeSpec node_at(const Bridge& bridge, std::string id, double x, double height) {
-  if (bridge.space) return {std::move(id), x, 0.0, height};
-  return {std::move(id), x, height};
+// The deck centreline's heading at station s from x [rad]: s / R on a curved bridge, else 0.
+double heading(const Bridge& bridge, double station) {
+  return bridge.spec.plan_radius ? station / *bridge.spec.plan_radius : 0.0;
 }
 
-// The unit vectors along the bridge and up, with a sign.
-std::vector<double> along(const Bridge& bridge, double sign) {
-  return bridge.space ? std::vector<double>{sign, 0.0, 0.0} : std::vector<double>{sign, 0.0};
+// A node at station s and height h: (s, h) in a plane; in space (s, 0, h) on a straight bridge,
+// (R sin(s / R), R (1 - cos(s / R)), h) on a curved one.
+NodeSpec node_at(const Bridge& bridge, std::string id, double station, double height) {
+  if (!bridge.space) return {std::move(id), station, height};
+  if (!bridge.spec.plan_radius) return {std::move(id), station, 0.0, height};
+  const double radius = *bridge.spec.plan_radius, angle = heading(bridge, station);
+  return {std::move(id), radius * std::sin(angle), radius * (1.0 - std::cos(angle)), height};
+}
+
+// The unit vectors along the bridge (its tangent at station s), across it (the tangent turned
+// +90 degrees in plan, 3-D) and up, with a sign.
+std::vector<double> along(const Bridge& bridge, double sign, double station = 0.0) {
+  if (!bridge.space) return {sign, 0.0};
+  const double angle = heading(bridge, station);
+  if (angle == 0.0) return {sign, 0.0, 0.0};  // no -0 in what `pound expand` writes
+  return {sign * std::cos(angle), sign * std::sin(angle), 0.0};
+}
+std::vector<double> across(const Bridge& bridge, double sign, double station) {
+  const double angle = heading(bridge, station);
+  if (angle == 0.0) return {0.0, sign, 0.0};
+  return {-sign * std::sin(angle), sign * std::cos(angle), 0.0};
 }
 std::vector<double> upward(const Bridge& bridge, double sign) {
   return bridge.space ? std::vector<double>{0.0, 0.0, sign} : std::vector<double>{0.0, sign};
@@ -71,25 +88,32 @@ std::string pier_top(const GirderBridgeSpec& spec, int pier) {
 
 // In space `inertia` bends in the vertical plane along the bridge and `inertia_lateral` across
 // it: a girder (along x) oriented by +z has y' = y, z' = z, so I_y is its vertical bending; a pier
-// (along z) oriented by +x has y' = -y, z' = x, so I_y bends it along the bridge.
+// (along z) oriented by the bridge's tangent t there has z' = t, so I_y bends it along the bridge
+// (for t = x: y' = -y, z' = x).
 void add_beam(const Bridge& bridge, const std::string& id, const std::string& node_i,
               const std::string& node_j, const std::string& material, const SectionSpec& section,
-              bool pier, ModelSpec& out) {
+              std::optional<double> pier_station, ModelSpec& out) {
   ElementSpec beam = make_beam(id, node_i, node_j, material, section.area, section.inertia);
   beam.extra_mass = section.extra_mass;
   if (bridge.space) {
     beam.inertia_y = section.inertia;
     beam.inertia_z = section.inertia_lateral;
     beam.torsion = section.torsion;
-    beam.orientation = pier ? std::array{1.0, 0.0, 0.0} : std::array{0.0, 0.0, 1.0};
+    beam.orientation = {0.0, 0.0, 1.0};
+    if (pier_station) {
+      const std::vector<double> tangent = along(bridge, 1.0, *pier_station);
+      beam.orientation = {tangent[0], tangent[1], tangent[2]};
+    }
   }
   out.elements.push_back(beam);
 }
 
-// The pounding points of a deck end, from its centre (3-D): `contact_points` of them along the
-// end line d = (-sin skew, cos skew, 0), from the right corner (-y side) to the left one.
-std::vector<std::array<double, 3>> end_points(const GirderBridgeSpec& spec) {
-  const double skew = spec.skew * std::numbers::pi / 180.0;
+// The pounding points of a deck end at station s, from its centre (3-D): `contact_points` of them
+// along the end line d = (-sin a, cos a, 0), a the skew plus the heading there, from the right
+// corner (-y side) to the left one.
+std::vector<std::array<double, 3>> end_points(const Bridge& bridge, double station) {
+  const GirderBridgeSpec& spec = bridge.spec;
+  const double skew = spec.skew * std::numbers::pi / 180.0 + heading(bridge, station);
   const std::array<double, 3> line{-std::sin(skew), std::cos(skew), 0.0};
   std::vector<std::array<double, 3>> points;
   const int n = spec.contact_points;
@@ -100,9 +124,9 @@ std::vector<std::array<double, 3>> end_points(const GirderBridgeSpec& spec) {
   return points;
 }
 
-// The deck end's normal in plan, along the bridge turned by the skew (3-D).
-std::vector<double> end_normal(const GirderBridgeSpec& spec, double sign) {
-  const double skew = spec.skew * std::numbers::pi / 180.0;
+// The deck end's normal in plan at station s, along the bridge turned by the skew (3-D).
+std::vector<double> end_normal(const Bridge& bridge, double sign, double station) {
+  const double skew = bridge.spec.skew * std::numbers::pi / 180.0 + heading(bridge, station);
   return {sign * std::cos(skew), sign * std::sin(skew), 0.0};
 }
 
@@ -115,21 +139,22 @@ std::vector<double> end_normal(const GirderBridgeSpec& spec, double sign) {
 // and the seat's bearings across the deck hold its twist (`.bearing_rx`: two lines of k_v / 2 at
 // +-s / 2, k_v s^2 / 4).
 void add_bearing(const Bridge& bridge, const std::string& girder, const std::string& seat,
-                 ModelSpec& out) {
+                 double station, ModelSpec& out) {
   const GirderBridgeSpec& spec = bridge.spec;
   if (bridge.space) {
     const double spacing = spec.bearing_spacing.value_or(0.5 * spec.deck_width);
-    LinkSpec twist = make_link(girder + ".bearing_rx", girder, seat, along(bridge, 1.0), 0.0,
-                               elastic(spec.bearing_vertical_stiffness * spacing * spacing / 4.0));
+    LinkSpec twist =
+        make_link(girder + ".bearing_rx", girder, seat, along(bridge, 1.0, station), 0.0,
+                  elastic(spec.bearing_vertical_stiffness * spacing * spacing / 4.0));
     twist.rotational = true;
     out.links.push_back(std::move(twist));
   }
   if (spec.bearing) {
-    out.links.push_back(
-        make_link(girder + ".bearing_x", girder, seat, along(bridge, 1.0), 0.0, *spec.bearing));
+    out.links.push_back(make_link(girder + ".bearing_x", girder, seat, along(bridge, 1.0, station),
+                                  0.0, *spec.bearing));
     if (bridge.space)
-      out.links.push_back(
-          make_link(girder + ".bearing_y", girder, seat, {0.0, 1.0, 0.0}, 0.0, *spec.bearing));
+      out.links.push_back(make_link(girder + ".bearing_y", girder, seat,
+                                    across(bridge, 1.0, station), 0.0, *spec.bearing));
   }
   const std::string vertical = girder + (bridge.space ? ".bearing_z" : ".bearing_y");
   if (!spec.bearing_friction) {
@@ -149,23 +174,23 @@ void add_bearing(const Bridge& bridge, const std::string& girder, const std::str
 // its centre), along the end's normal, both ends offset to the point; the restrainer along the
 // bridge between the end nodes.
 void add_joint_links(const Bridge& bridge, const std::string& joint, const std::string& node_i,
-                     const std::string& node_j, double direction, const JointSpec& spec,
-                     ModelSpec& out) {
+                     const std::string& node_j, double direction, double station,
+                     const JointSpec& spec, ModelSpec& out) {
   if (!bridge.space) {
     out.links.push_back(make_link(joint, node_i, node_j, {direction, 0.0}, spec.gap, spec.law));
   } else {
-    const std::vector<std::array<double, 3>> points = end_points(bridge.spec);
+    const std::vector<std::array<double, 3>> points = end_points(bridge, station);
     for (std::size_t k = 0; k < points.size(); ++k) {
       const std::string id = points.size() == 1 ? joint : fmt::format("{}.c{}", joint, k);
       LinkSpec link =
-          make_link(id, node_i, node_j, end_normal(bridge.spec, direction), spec.gap, spec.law);
+          make_link(id, node_i, node_j, end_normal(bridge, direction, station), spec.gap, spec.law);
       if (points.size() > 1) link.offsets = std::array{points[k], points[k]};
       out.links.push_back(std::move(link));
     }
   }
   if (spec.restrainer)
-    out.links.push_back(make_link(joint + ".restrainer", node_i, node_j, along(bridge, direction),
-                                  0.0, *spec.restrainer));
+    out.links.push_back(make_link(joint + ".restrainer", node_i, node_j,
+                                  along(bridge, direction, station), 0.0, *spec.restrainer));
 }
 
 // The pier's section: with hinges its E I is raised to (n + 1) / n E I (builder/spec.hpp), in
@@ -257,7 +282,7 @@ void add_pier(const Bridge& bridge, int pier, ModelSpec& out) {
     out.nodes.push_back(
         node_at(bridge, node, bridge.x[pier], bridge.deck * e / spec.pier.elements));
     add_beam(bridge, fmt::format("{}.p{}.e{}", spec.id, pier, e), previous, node,
-             bridge.pier_material, section, true, out);
+             bridge.pier_material, section, bridge.x[pier], out);
     previous = node;
   }
   // Its drift along the bridge and, in space, across it (`.y`), each with its hinge.
@@ -308,9 +333,13 @@ void add_deck_rotary_inertia(const Bridge& bridge, const std::vector<std::string
     lumped[k + 1] += half;
   }
   const double width_squared = spec.deck_width * spec.deck_width;
+  // A curved deck twists about its tangent, which turns along it; masses are diagonal in the
+  // global axes, so it takes the same inertia about both horizontal axes (exact for the twist).
+  const double across = spec.plan_radius ? 1.0 : 0.0;
   for (std::size_t k = 0; k < nodes.size(); ++k) {
     const double inertia = lumped[k] * width_squared / 12.0;
-    if (inertia > 0.0) out.masses.push_back({nodes[k], 0.0, {inertia, 0.0, inertia}, std::nullopt});
+    if (inertia > 0.0)
+      out.masses.push_back({nodes[k], 0.0, {inertia, across * inertia, inertia}, std::nullopt});
   }
 }
 
@@ -334,13 +363,13 @@ GirderSegment add_girder_segment(const Bridge& bridge, std::size_t g, int first_
       positions.push_back(at);
       if (!previous.empty())
         add_beam(bridge, fmt::format("{}.g{}.e{}", spec.id, g, counter - 1), previous, node,
-                 bridge.girder_material, spec.girder, false, out);
+                 bridge.girder_material, spec.girder, std::nullopt, out);
       else
         segment.first = node;
       previous = node;
       // A node over a pier that is not cut sits on it.
       if (e == spec.girder.elements && span + 1 < end_span)
-        add_bearing(bridge, node, pier_top(spec, span + 1), out);
+        add_bearing(bridge, node, pier_top(spec, span + 1), at, out);
     }
   segment.last = previous;
   if (bridge.space) add_deck_rotary_inertia(bridge, nodes, positions, out);
@@ -353,14 +382,14 @@ GirderSegment add_girder_segment(const Bridge& bridge, std::size_t g, int first_
 // corner's unseating margin; the acute corner's is the one to watch).
 void add_joint_monitors(const Bridge& bridge, const std::string& id, const std::string& joint,
                         const std::string& girder, const std::string& seat, double seat_width,
-                        ModelSpec& out) {
+                        double station, ModelSpec& out) {
   const int points = bridge.space ? bridge.spec.contact_points : 1;
   if (!bridge.space) {
     out.joint_monitors.push_back({id, joint, girder, seat, seat_width});
     return;
   }
-  const std::vector<std::array<double, 3>> at = end_points(bridge.spec);
-  const std::vector<double> normal = end_normal(bridge.spec, 1.0);
+  const std::vector<std::array<double, 3>> at = end_points(bridge, station);
+  const std::vector<double> normal = end_normal(bridge, 1.0, station);
   if (points == 1) {  // the end's centre, across the (skewed) support line
     JointMonitorSpec monitor{id, joint, girder, seat, seat_width};
     monitor.point = at.front();
@@ -382,22 +411,26 @@ void add_expansion_joint(const Bridge& bridge, int pier, const std::string& left
                          const std::string& right, ModelSpec& out) {
   const GirderBridgeSpec& spec = bridge.spec;
   const std::string seat = pier_top(spec, pier);
-  add_bearing(bridge, left, seat, out);
-  add_bearing(bridge, right, seat, out);
+  const double at = bridge.x[static_cast<std::size_t>(pier)];
+  add_bearing(bridge, left, seat, at, out);
+  add_bearing(bridge, right, seat, at, out);
   const std::string joint = fmt::format("{}.joint{}", spec.id, pier);
-  add_joint_links(bridge, joint, left, right, 1.0, spec.joint, out);
-  add_joint_monitors(bridge, joint + ".left_end", joint, left, seat, spec.joint.seat_width, out);
-  add_joint_monitors(bridge, joint + ".right_end", joint, right, seat, spec.joint.seat_width, out);
+  add_joint_links(bridge, joint, left, right, 1.0, at, spec.joint, out);
+  add_joint_monitors(bridge, joint + ".left_end", joint, left, seat, spec.joint.seat_width, at,
+                     out);
+  add_joint_monitors(bridge, joint + ".right_end", joint, right, seat, spec.joint.seat_width, at,
+                     out);
 }
 
-// Shear keys on an abutment seat (3-D): `<abutment>.shear_key.left` (+y) and `.right` (-y),
-// compression-only stops the deck end strikes after the keys' gap.
+// Shear keys on an abutment seat at station s (3-D): `<abutment>.shear_key.left` (across the
+// bridge, +y when straight) and `.right`, compression-only stops the deck end strikes after the
+// keys' gap.
 void add_shear_keys(const Bridge& bridge, const std::string& abutment, const std::string& girder,
-                    const std::string& seat, ModelSpec& out) {
+                    const std::string& seat, double station, ModelSpec& out) {
   const ShearKeySpec& keys = *bridge.spec.shear_keys;
   for (const auto& [side, sign] : {std::pair{"left", 1.0}, std::pair{"right", -1.0}})
     out.links.push_back(make_link(fmt::format("{}.shear_key.{}", abutment, side), girder, seat,
-                                  {0.0, sign, 0.0}, keys.gap, keys.law));
+                                  across(bridge, sign, station), keys.gap, keys.law));
 }
 
 // An abutment (side 0 at the start, 1 at the end): the girder end sits on the seat and may
@@ -410,25 +443,33 @@ void add_abutment(const Bridge& bridge, int side, const std::string& girder, Mod
   out.nodes.push_back(node_at(bridge, seat, at, bridge.deck));
   out.supports.push_back(bridge.space ? fixed(bridge, seat) : held(bridge, seat));
   out.nodes.push_back(node_at(bridge, wall, at, bridge.deck));
-  add_bearing(bridge, girder, seat, out);
+  add_bearing(bridge, girder, seat, at, out);
   // In space the backwall moves along the bridge only (its backfill's direction), held across it
-  // and in its rotations by the abutment.
+  // and in its rotations by the abutment. Where a curved bridge's tangent is not x, supports
+  // (along global axes) cannot hold it across: a guide spring as stiff as the bearings
+  // vertically does, `<abutment>.wall_guide`.
   if (spec.backfill) {
     const std::string ground = name + ".ground";
     out.nodes.push_back(node_at(bridge, ground, at, bridge.deck));
     out.supports.push_back(held(bridge, ground));
-    out.supports.push_back(sliding_along(bridge, wall));
+    if (bridge.space && heading(bridge, at) != 0.0) {
+      out.supports.push_back({wall, {false, false, true, true, true, true}});
+      out.links.push_back(make_link(name + ".wall_guide", wall, ground, across(bridge, 1.0, at),
+                                    0.0, elastic(spec.bearing_vertical_stiffness)));
+    } else {
+      out.supports.push_back(sliding_along(bridge, wall));
+    }
     out.masses.push_back({wall, spec.backwall_mass, {}, std::nullopt});
-    out.links.push_back(
-        make_link(name + ".backfill", wall, ground, along(bridge, outward), 0.0, *spec.backfill));
+    out.links.push_back(make_link(name + ".backfill", wall, ground, along(bridge, outward, at), 0.0,
+                                  *spec.backfill));
   } else {
     out.supports.push_back(fixed(bridge, wall));
   }
-  if (bridge.space && spec.shear_keys) add_shear_keys(bridge, name, girder, seat, out);
+  if (bridge.space && spec.shear_keys) add_shear_keys(bridge, name, girder, seat, at, out);
   const std::string joint = name + ".joint";
-  add_joint_links(bridge, joint, girder, wall, outward, spec.abutment, out);
+  add_joint_links(bridge, joint, girder, wall, outward, at, spec.abutment, out);
   add_joint_monitors(bridge, joint + ".girder_end", joint, girder, seat, spec.abutment.seat_width,
-                     out);
+                     at, out);
 }
 
 }  // namespace

@@ -372,6 +372,10 @@ struct GirderBridgeSpec {
   double skew = 0.0;
   int contact_points = 2;
   std::optional<ShearKeySpec> shear_keys;
+  // 3-D: the radius of the deck's centreline in plan [L], positive when it turns toward +y
+  // (counter-clockwise seen from above); none: straight along x. Station s lies at
+  // (R sin(s / R), R (1 - cos(s / R))), heading s / R from x.
+  std::optional<double> plan_radius;
 };
 
 // What a run reports beyond links: drift of storeys and piers (peak of |u_top - u_bottom|

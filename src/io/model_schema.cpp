@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <numbers>
 #include <string>
 #include <utility>
 
@@ -934,6 +936,22 @@ const Fields<GirderBridgeSpec>& girder_bridge_fields() {
                Object<builder::ShearKeySpec>{shear_key_fields(), Docs::own_table},
                "transverse stops on each abutment seat, either side of the deck end")
           .in_space(),
+      optional("plan_radius", &GirderBridgeSpec::plan_radius, Number<>{},
+               "radius of the deck's centreline in plan, positive turning toward +y "
+               "(counter-clockwise from above); the bridge may turn less than 90 degrees [L]")
+          .in_space()
+          .default_text("straight"),
+      rule<GirderBridgeSpec>([](JsonObject& object, GirderBridgeSpec& bridge, Context&) {
+        if (!bridge.plan_radius) return;
+        double length = 0.0;
+        for (double span : bridge.spans) length += span;
+        const double smallest = length / (0.5 * std::numbers::pi);
+        if (!(std::abs(*bridge.plan_radius) > smallest))
+          object.at("plan_radius")
+              .fail(fmt::format("|R| must be > {:g} (the {:g} long bridge would turn 90 degrees "
+                                "or more), got {:g}",
+                                smallest, length, *bridge.plan_radius));
+      }),
   };
   return fields;
 }
