@@ -300,6 +300,11 @@ void add_pier(const Bridge& bridge, int pier, ModelSpec& out) {
         hinge != nullptr};
     monitor.base_element = fmt::format("{}.p{}.e1", spec.id, pier);
     monitor.direction = direction;
+    if (bridge.space && heading(bridge, bridge.x[pier]) != 0.0) {  // along and across the curve
+      const std::vector<double> axis =
+          direction == 0 ? along(bridge, 1.0, bridge.x[pier]) : across(bridge, 1.0, bridge.x[pier]);
+      monitor.axis = std::array{axis[0], axis[1], axis[2]};
+    }
     if (hinge && spec.pier_hinge->plastic_hinge_length) {
       monitor.hinge = hinge->link;
       monitor.yield_curvature = hinge->yield_curvature;

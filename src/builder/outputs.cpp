@@ -98,6 +98,11 @@ std::vector<DriftMonitor> resolve_drift_monitors(const Resolver& resolver) {
                          m.yields};
     monitor.direction = m.direction;
     monitor.corners = m.corners;
+    if (m.axis) {
+      const std::array<double, 3>& a = *m.axis;
+      const double length = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+      monitor.axis = std::array{a[0] / length, a[1] / length, a[2] / length};
+    }
     if (m.hinge)
       monitor.curvature = DriftMonitor::Curvature{resolver.link(*m.hinge, path + "/hinge"),
                                                   *m.yield_curvature, *m.plastic_hinge_length};

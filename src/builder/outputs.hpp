@@ -40,6 +40,7 @@ struct DriftMonitor {
   // What carries the shear (DriftMonitorSpec): an element (end i at the bottom) or a link.
   std::optional<Index> base_element, shear_link;
   int direction = 0;  // of the drift and the top's acceleration: a translation (model/direction)
+  std::optional<std::array<double, 3>> axis;  // a unit vector instead of `direction`
   // Points of the top floor from the top node (DriftMonitorSpec::corners): their drifts and the
   // storey's twist are reported too.
   std::vector<std::array<double, 3>> corners;

@@ -401,6 +401,8 @@ struct DriftMonitorSpec {
   // for a beam, base moment M_i), or a link whose force is the storey shear.
   std::optional<std::string> base_element, shear_link;
   int direction = 0;  // the drift's: 0 x, 1 y (3-D scenes)
+  // 3-D: a unit vector the drift is measured along instead (a curved bridge's local tangent).
+  std::optional<std::array<double, 3>> axis;
   // 3-D: points of the top floor (from the top node, rigidly tied to it and to the bottom node:
   // a floor's plan corners) whose drift along `direction` the summary reports too, with the
   // storey's twist (theta_z of the top less the bottom's).

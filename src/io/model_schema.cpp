@@ -1120,6 +1120,10 @@ const Fields<DriftMonitorSpec>& drift_monitor_fields() {
       optional("direction", &DriftMonitorSpec::direction, Choice<int>{{{"x", 0}, {"y", 1}}},
                "of the drift and the top's absolute acceleration")
           .in_space(),
+      optional("axis", &DriftMonitorSpec::axis, Triple{.nonzero = true},
+               "a direction the drift is measured along instead of `direction` (a curved "
+               "bridge's local tangent), normalised")
+          .in_space(),
       optional("corners", &DriftMonitorSpec::corners, Triples{},
                "points of the top floor, from the top node (rigidly tied to it and to the bottom "
                "node: the floor's plan corners), whose drift along `direction` the summary reports "

@@ -71,7 +71,10 @@ Document drift_document(const results::DriftResult& drift) {
       .set(m.kind == builder::DriftKind::pier ? "bridge" : "building", m.group)
       .set("height", m.height);
   // 3-D monitors that say so: along y, or watching a floor's corners (z up).
-  if (m.direction != 0 || !m.corners.empty()) doc.set("direction", m.direction == 0 ? "x" : "y");
+  if (m.axis)
+    doc.set("axis", std::vector<double>(m.axis->begin(), m.axis->end()));
+  else if (m.direction != 0 || !m.corners.empty())
+    doc.set("direction", m.direction == 0 ? "x" : "y");
   doc.set("peak_drift", drift.peak.peak_drift)
       .set("drift_ratio", drift.ratio())
       .set("time", drift.peak.time);

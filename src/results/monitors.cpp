@@ -35,14 +35,23 @@ void DriftMonitors::record(const integrators::State& state) {
   for (std::size_t k = 0; k < storeys_.size(); ++k) {
     const Where& w = storeys_[k];
     DriftPeak& p = peaks_[k];
-    const double signed_drift =
-        value_at(state.displacement, w.top) - value_at(state.displacement, w.bottom);
+    const double signed_drift = w.drift.empty() ? value_at(state.displacement, w.top) -
+                                                      value_at(state.displacement, w.bottom)
+                                                : sum_of(w.drift, state.displacement);
     p.residual_drift = signed_drift;
     if (std::abs(signed_drift) > p.peak_drift) {
       p.peak_drift = std::abs(signed_drift);
       p.time = state.time;
     }
-    const double acceleration = std::abs(ground_.absolute(state, w.top, w.top_node, w.direction));
+    double acceleration = 0.0;
+    if (w.top_along.empty())
+      acceleration = std::abs(ground_.absolute(state, w.top, w.top_node, w.direction));
+    else
+      for (std::size_t d = 0; d < w.top_along.size(); ++d)
+        if (const auto [equation, weight] = w.top_along[d]; weight != 0.0)
+          acceleration +=
+              weight * ground_.absolute(state, equation, w.top_node, static_cast<int>(d));
+    acceleration = std::abs(acceleration);
     if (acceleration > p.peak_acceleration) {
       p.peak_acceleration = acceleration;
       p.acceleration_time = state.time;

@@ -40,6 +40,10 @@ class DriftMonitors : public Observer {
     Index bottom, top;  // equations along the drift's direction, -1 where fixed
     Index top_node;
     int direction = 0;  // of the drift (model/direction.hpp)
+    // Along an axis (DriftMonitor::axis): the drift as a sum of terms, and the top's equation
+    // and weight for each translation (x, y, z) for its acceleration; empty: along `direction`.
+    std::vector<Term> drift = {};
+    std::vector<std::pair<Index, double>> top_along = {};
     // Each corner's drift along the direction, and the twist, as sums of terms.
     std::vector<std::vector<Term>> corners = {};
     std::vector<Term> twist = {};

@@ -157,6 +157,7 @@ void add_plan_terms(const builder::DriftMonitor& m, const model::Model& model,
                     const model::DofMap& dofs, DriftMonitors::Where& where) {
   std::array<double, 3> n{};
   n[static_cast<std::size_t>(m.direction)] = 1.0;
+  if (m.axis) n = *m.axis;
   const model::Coordinates& top = model.nodes[static_cast<std::size_t>(m.top)].position;
   const model::Coordinates& bottom = model.nodes[static_cast<std::size_t>(m.bottom)].position;
   for (const std::array<double, 3>& corner : m.corners) {
@@ -169,12 +170,23 @@ void add_plan_terms(const builder::DriftMonitor& m, const model::Model& model,
   where.twist = turn_in_plan(m.top, m.bottom, dofs);
 }
 
+// A drift along an axis n: n . (u_top - u_bottom), and the top's translations for its
+// acceleration along n.
+void add_axis_terms(const builder::DriftMonitor& m, const model::DofMap& dofs,
+                    DriftMonitors::Where& where) {
+  add_point_terms(m.top, {}, *m.axis, 1.0, dofs, where.drift);
+  add_point_terms(m.bottom, {}, *m.axis, -1.0, dofs, where.drift);
+  for (int d = 0; d < 3; ++d)
+    where.top_along.emplace_back(dofs.equation(m.top, d), (*m.axis)[static_cast<std::size_t>(d)]);
+}
+
 std::vector<DriftMonitors::Where> drift_places(const builder::BuiltModel& built,
                                                const model::DofMap& dofs) {
   std::vector<DriftMonitors::Where> places;
   for (const builder::DriftMonitor& m : built.drift_monitors) {
     places.push_back({dofs.equation(m.bottom, m.direction), dofs.equation(m.top, m.direction),
                       m.top, m.direction});
+    if (m.axis) add_axis_terms(m, dofs, places.back());
     if (!m.corners.empty()) add_plan_terms(m, built.model, dofs, places.back());
   }
   return places;
@@ -270,11 +282,13 @@ std::vector<std::string> result_warnings(const RunSummary& run) {
 struct DriftWeights {
   std::vector<double> shear, moment;  // of (V_y, V_z) and (M_y, M_z); empty: the resultants
 };
-DriftWeights along_drift(const model::Element& element, int direction) {
+DriftWeights along_drift(const model::Element& element, const builder::DriftMonitor& monitor) {
   const auto* beam = dynamic_cast<const assembly::Beam3d*>(&element);
   if (!beam) return {};
   const Eigen::Matrix3d& axes = beam->axes();  // rows x', y', z'
-  const Eigen::Vector3d drift = Eigen::Vector3d::Unit(direction);
+  const Eigen::Vector3d drift =
+      monitor.axis ? Eigen::Vector3d((*monitor.axis)[0], (*monitor.axis)[1], (*monitor.axis)[2])
+                   : Eigen::Vector3d::Unit(monitor.direction);
   const Eigen::Vector3d across = axes.row(0).transpose().cross(drift);
   if (!(across.norm() > 1e-12)) return {};
   const Eigen::Vector3d about = across.normalized();
@@ -318,7 +332,7 @@ RunObservers::RunObservers(const builder::BuiltModel& built,
       if (name == "M_i" || name == "My_i" || name == "Mz_i") rows.moment.push_back(first + k);
     }
     const DriftWeights weights =
-        along_drift(*built.model.elements[static_cast<std::size_t>(*m.base_element)], m.direction);
+        along_drift(*built.model.elements[static_cast<std::size_t>(*m.base_element)], m);
     if (rows.shear.size() == 2 && rows.moment.size() == 2) {
       rows.shear_weights = weights.shear;
       rows.moment_weights = weights.moment;

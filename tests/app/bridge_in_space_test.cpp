@@ -408,6 +408,38 @@ TEST(BridgeInSpace, ACurvedBridgeMirrorsAndStraightensAsItShould) {
   EXPECT_LT(difference / straight_largest, 1e-3);
 }
 
+// A curved bridge's pier drift monitors measure along the tangent at the pier and across it:
+// the summary's peaks equal t . u and n . u of the pier top from its history (the base is fixed).
+TEST(BridgeInSpace, ACurvedBridgesPierDriftsAreAlongAndAcrossTheCurve) {
+  const double radius = 150.0, heading = 70.0 / radius;  // pier 2 stands at station 70
+  Json model = space_bridge(4.0, 0.0, 2);
+  model["generators"][0]["plan_radius"] = radius;
+  model["excitations"][0]["pair"] = {{"record", "../ground_motions/synthetic_soft_01.AT2"}};
+  model["excitations"][0].erase("direction");
+  app::RunRequest request;
+  request.model_path = kModels + "bridge.json";
+  request.model_text = model.dump();
+  request.histories = false;
+  const Json summary = Json::parse(app::run_model(request).summary.dump());
+  const testing::NodeMotion motion = run(model, {"bridge.p2.top"}, {0, 1});
+  double along = 0.0, across = 0.0;
+  for (const std::vector<double>& u : motion.values) {
+    along = std::max(along, std::abs(std::cos(heading) * u[0] + std::sin(heading) * u[1]));
+    across = std::max(across, std::abs(-std::sin(heading) * u[0] + std::cos(heading) * u[1]));
+  }
+  double worst = 0.0;
+  for (const Json& pier : summary["piers"]) {
+    if (pier["id"] != "bridge.p2" && pier["id"] != "bridge.p2.y") continue;
+    const double expected = pier["id"] == "bridge.p2" ? along : across;
+    const double reported = pier["peak_drift"].get<double>();
+    std::cout << fmt::format("{}: peak drift {:.6e} m, from the history {:.6e} m\n",
+                             pier["id"].get<std::string>(), reported, expected);
+    worst = std::max(worst, std::abs(reported - expected) / expected);
+  }
+  EXPECT_GT(along, 1e-3);
+  EXPECT_LT(worst, 1e-12);
+}
+
 void expect_refused(const Json& model, const std::string& where, const std::string& phrase) {
   try {
     (void)app::load_model_text(model.dump(), kModels + "bridge.json");
