@@ -38,7 +38,7 @@ NodeSpec node_at(const Bridge& bridge, std::string id, double station, double he
 
 // The unit vectors along the bridge (its tangent at station s), across it (the tangent turned
 // +90 degrees in plan, 3-D) and up, with a sign.
-std::vector<double> along(const Bridge& bridge, double sign, double station = 0.0) {
+std::vector<double> along(const Bridge& bridge, double sign, double station) {
   if (!bridge.space) return {sign, 0.0};
   const double angle = heading(bridge, station);
   if (angle == 0.0) return {sign, 0.0, 0.0};  // no -0 in what `pound expand` writes

@@ -36,6 +36,11 @@ struct Building {
     if (!space) return centre;
     return {centre[0] + point[0], centre[1] + point[1]};
   }
+  // The rigid offset from a floor node to the column (3-D).
+  std::array<double, 3> column_arm() const {
+    const std::array<double, 2> floor = floor_at(), column = column_at();
+    return {column[0] - floor[0], column[1] - floor[1], 0.0};
+  }
 };
 
 // A node at plan position `at` and height h: (x, h) in a plane, (x, y, h) in space.
@@ -188,10 +193,9 @@ std::optional<double> add_storey_link(const Building& building, std::size_t s, M
                                             ? links::DampingStiffness::initial
                                             : links::DampingStiffness::committed,
                            .stiffness_coefficient = (*building.rayleigh)[1]};
-    if (building.space && !rotational) {
-      const std::array<double, 3> arm = offset(building.floor_at(), building.column_at());
-      link.offsets = std::array{arm, s > 0 ? arm : std::array<double, 3>{}};  // the base: none
-    }
+    if (building.space && !rotational)  // the base stands on the column: no offset there
+      link.offsets = std::array{building.column_arm(),
+                                s > 0 ? building.column_arm() : std::array<double, 3>{}};
     out.links.push_back(link);
   };
   LawSpec law = *storey.law;
@@ -252,9 +256,8 @@ void add_column(const Building& building, std::size_t s, const std::vector<std::
       column.torsion = torsional_stiffness(building.spec, s) * storey.height;
       column.orientation = {1.0, 0.0, 0.0};  // y' = -y, z' = x: I_y bends it along x
       // The floors' nodes are at the mass centre, the base and the cuts on the column.
-      const std::array<double, 3> arm = offset(building.floor_at(), building.column_at());
-      if (c == 0 && s > 0) column.offsets[0] = arm;
-      if (c + 2 == chain.size()) column.offsets[1] = arm;
+      if (c == 0 && s > 0) column.offsets[0] = building.column_arm();
+      if (c + 2 == chain.size()) column.offsets[1] = building.column_arm();
     }
     out.elements.push_back(column);
   }
@@ -357,8 +360,7 @@ double floor_mass_near(const Building& building, double h) {
 // Where the facades meet along y (3-D): `contact_points` positions spread over the stretch
 // where they face each other, its ends first and last (1: its middle).
 std::vector<double> contact_positions(const AdjacentBuildingsSpec& pair) {
-  const double low = std::max(-0.5 * pair.left.plan[1], pair.offset - 0.5 * pair.right.plan[1]);
-  const double high = std::min(0.5 * pair.left.plan[1], pair.offset + 0.5 * pair.right.plan[1]);
+  const auto [low, high] = facing_stretch(pair);
   const int n = pair.contact_points;
   std::vector<double> positions;
   for (int k = 0; k < n; ++k)

@@ -41,6 +41,13 @@ struct DriftMonitor {
   std::optional<Index> base_element, shear_link;
   int direction = 0;  // of the drift and the top's acceleration: a translation (model/direction)
   std::optional<std::array<double, 3>> axis;  // a unit vector instead of `direction`
+  // The unit vector the drift is measured along: `axis`, or `direction`'s.
+  std::array<double, 3> along() const {
+    if (axis) return *axis;
+    std::array<double, 3> unit{};
+    unit[static_cast<std::size_t>(direction)] = 1.0;
+    return unit;
+  }
   // Points of the top floor from the top node (DriftMonitorSpec::corners): their drifts and the
   // storey's twist are reported too.
   std::vector<std::array<double, 3>> corners;

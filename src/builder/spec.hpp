@@ -5,6 +5,7 @@
 //
 // Every vector here mirrors an array of the file, so an index k of `links` is the JSON path
 // "/links/k"; the builder names errors that way.
+#include <algorithm>
 #include <array>
 #include <map>
 #include <optional>
@@ -298,6 +299,12 @@ struct AdjacentBuildingsSpec {
   double offset = 0.0;
   int contact_points = 2;
 };
+// The stretch of y where the two facades face each other, [low, high] (3-D; empty when
+// high <= low).
+inline std::array<double, 2> facing_stretch(const AdjacentBuildingsSpec& pair) {
+  return {std::max(-0.5 * pair.left.plan[1], pair.offset - 0.5 * pair.right.plan[1]),
+          std::min(0.5 * pair.left.plan[1], pair.offset + 0.5 * pair.right.plan[1])};
+}
 
 // A multi-span girder bridge in a 2-D scene (x along the bridge, y up): girders as beams on
 // bearings (a horizontal law and a stiff vertical spring) on piers (beams fixed at the base) and

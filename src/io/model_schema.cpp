@@ -688,10 +688,8 @@ const Fields<AdjacentBuildingsSpec>& adjacent_buildings_fields() {
       rule<AdjacentBuildingsSpec>([](JsonObject& object, AdjacentBuildingsSpec& pair,
                                      Context& context) {
         if (context.dimension != 3) return;
-        const double overlap =
-            std::min(0.5 * pair.left.plan[1], pair.offset + 0.5 * pair.right.plan[1]) -
-            std::max(-0.5 * pair.left.plan[1], pair.offset - 0.5 * pair.right.plan[1]);
-        if (!(overlap > 0.0))
+        const auto [low, high] = builder::facing_stretch(pair);
+        if (!(high > low))
           (object.has("offset") ? object.at("offset") : object.at("right"))
               .fail(fmt::format(
                   "the facades do not face each other: the right building spans y = {:g} … {:g}, "

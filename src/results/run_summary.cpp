@@ -155,9 +155,7 @@ std::vector<Term> turn_in_plan(Index node, Index reference, const model::DofMap&
 // X_bottom from the bottom node) and its twist about z (3-D floors).
 void add_plan_terms(const builder::DriftMonitor& m, const model::Model& model,
                     const model::DofMap& dofs, DriftMonitors::Where& where) {
-  std::array<double, 3> n{};
-  n[static_cast<std::size_t>(m.direction)] = 1.0;
-  if (m.axis) n = *m.axis;
+  const std::array<double, 3> n = m.along();
   const model::Coordinates& top = model.nodes[static_cast<std::size_t>(m.top)].position;
   const model::Coordinates& bottom = model.nodes[static_cast<std::size_t>(m.bottom)].position;
   for (const std::array<double, 3>& corner : m.corners) {
@@ -286,9 +284,8 @@ DriftWeights along_drift(const model::Element& element, const builder::DriftMoni
   const auto* beam = dynamic_cast<const assembly::Beam3d*>(&element);
   if (!beam) return {};
   const Eigen::Matrix3d& axes = beam->axes();  // rows x', y', z'
-  const Eigen::Vector3d drift =
-      monitor.axis ? Eigen::Vector3d((*monitor.axis)[0], (*monitor.axis)[1], (*monitor.axis)[2])
-                   : Eigen::Vector3d::Unit(monitor.direction);
+  const std::array<double, 3> along = monitor.along();
+  const Eigen::Vector3d drift(along[0], along[1], along[2]);
   const Eigen::Vector3d across = axes.row(0).transpose().cross(drift);
   if (!(across.norm() > 1e-12)) return {};
   const Eigen::Vector3d about = across.normalized();

@@ -25,6 +25,7 @@
 #include "builder/build.hpp"
 #include "core/errors.hpp"
 #include "io/model_reader.hpp"
+#include "support/model_summary.hpp"
 #include "support/node_motion.hpp"
 #include "support/push_stiffness.hpp"
 
@@ -45,6 +46,12 @@ Json plane_bridge(double duration) {
   model["analysis"]["duration"] = duration;
   model.erase("recorders");
   return model;
+}
+
+// The record along x paired with another along y (a station's two components).
+void with_a_pair(Json& model) {
+  model["excitations"][0]["pair"] = {{"record", "../ground_motions/synthetic_soft_01.AT2"}};
+  model["excitations"][0].erase("direction");
 }
 
 // A plane bridge written in space: x along, y across, z up; the record along x.
@@ -213,13 +220,8 @@ TEST(BridgeInSpace, APiersBaseMomentInEachDirectionIsItsHinges) {
   Json model = in_space(takeda_bridge(5.0), 30.0, 2);
   model["damping"] = {{"mass_coefficient", 0.5}};
   model["generators"][0]["pier_hinge"]["yield_moment_lateral"] = 5.0e6;
-  model["excitations"][0]["pair"] = {{"record", "../ground_motions/synthetic_soft_01.AT2"}};
-  model["excitations"][0].erase("direction");
-  app::RunRequest request;
-  request.model_path = kModels + "bridge.json";
-  request.model_text = model.dump();
-  request.histories = false;
-  const Json summary = Json::parse(app::run_model(request).summary.dump());
+  with_a_pair(model);
+  const Json summary = testing::model_summary(model.dump(), kModels + "bridge.json");
   const auto find = [&](const char* list, const std::string& id) {
     for (const Json& entry : summary[list])
       if (entry["id"] == id) return entry;
@@ -285,11 +287,7 @@ TEST(BridgeInSpace, ASkewedDeckTurnsInPlanWhenItPounds) {
 TEST(BridgeInSpace, ACornersMovementOnItsSeatIsAcrossTheSkewedSupportLine) {
   const double skew = 30.0 * std::numbers::pi / 180.0, half = 6.0;
   const Json model = space_bridge(4.0, 30.0, 2);
-  app::RunRequest request;
-  request.model_path = kModels + "bridge.json";
-  request.model_text = model.dump();
-  request.histories = false;
-  const Json summary = Json::parse(app::run_model(request).summary.dump());
+  const Json summary = testing::model_summary(model.dump(), kModels + "bridge.json");
   const std::array<double, 3> normal{std::cos(skew), std::sin(skew), 0.0};
   double worst = 0.0;
   for (const auto& [monitor, girder, seat, side] :
@@ -414,13 +412,8 @@ TEST(BridgeInSpace, ACurvedBridgesPierDriftsAreAlongAndAcrossTheCurve) {
   const double radius = 150.0, heading = 70.0 / radius;  // pier 2 stands at station 70
   Json model = space_bridge(4.0, 0.0, 2);
   model["generators"][0]["plan_radius"] = radius;
-  model["excitations"][0]["pair"] = {{"record", "../ground_motions/synthetic_soft_01.AT2"}};
-  model["excitations"][0].erase("direction");
-  app::RunRequest request;
-  request.model_path = kModels + "bridge.json";
-  request.model_text = model.dump();
-  request.histories = false;
-  const Json summary = Json::parse(app::run_model(request).summary.dump());
+  with_a_pair(model);
+  const Json summary = testing::model_summary(model.dump(), kModels + "bridge.json");
   const testing::NodeMotion motion = run(model, {"bridge.p2.top"}, {0, 1});
   double along = 0.0, across = 0.0;
   for (const std::vector<double>& u : motion.values) {

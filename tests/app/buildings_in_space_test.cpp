@@ -22,6 +22,7 @@
 #include "assembly/structural_system.hpp"
 #include "builder/build.hpp"
 #include "core/errors.hpp"
+#include "support/model_summary.hpp"
 #include "support/node_motion.hpp"
 
 namespace pound::builder {
@@ -189,11 +190,7 @@ TEST(BuildingsInSpace, MirroredEccentricitiesGiveTheMirroredMotion) {
 // below (one plan: the same mass centre y_m), along y u_y + theta_z (x_c - x_m).
 TEST(BuildingsInSpace, TheSummarysCornerDriftsAndTwistAreTheFloorsMotion) {
   const Json model = eccentric_bundled(1.0, 8.0);
-  app::RunRequest request;
-  request.model_path = kModels + "buildings.json";
-  request.model_text = model.dump();
-  request.histories = false;
-  const Json summary = Json::parse(app::run_model(request).summary.dump());
+  const Json summary = testing::model_summary(model.dump(), kModels + "buildings.json");
   // The right building: plan 15 x 10, mass centre (1, -1) from the plan's centre.
   const testing::NodeMotion motion =
       testing::run_node_motion(build(model), {"pair.right.f2", "pair.right.f3"}, {0, 1, 5});
