@@ -40,6 +40,8 @@ std::string check_text(const std::string& model_path, const verification::ModelC
     if (const Index count = check.dofs_by_direction[static_cast<std::size_t>(d)]; count > 0)
       directions += fmt::format("{}{} {}", directions.empty() ? "" : ", ", count,
                                 model::direction(d, check.dimension).words);
+  if (check.tied_dofs > 0)
+    directions += fmt::format("; {} more tied by constraints", check.tied_dofs);
   std::string text = fmt::format("{}: {} DOFs ({}), {} links\n", model_path, check.dofs,
                                  directions.empty() ? "none free" : directions, check.links);
   if (!check.periods.empty()) {
@@ -88,6 +90,7 @@ io::Document check_document(const std::string& model_path, const verification::M
                                                    : fmt::format("dofs_{}", along.symbol),
             static_cast<long>(check.dofs_by_direction[static_cast<std::size_t>(d)]));
   }
+  if (check.tied_dofs > 0) doc.set("tied_dofs", static_cast<long>(check.tied_dofs));
   doc.set("periods", check.periods);
   // An unbounded stable step (nothing vibrates) is null: "no limit".
   auto set_step = [&doc](const char* key, double step) {

@@ -65,7 +65,7 @@ std::array<Vector, 2> influence_vectors(const assembly::StructuralSystem& system
   std::array<Vector, 2> influence{Vector::Zero(system.size()), Vector::Zero(system.size())};
   for (Index node = 0; node < static_cast<Index>(node_count); ++node)
     for (int d = 0; d < std::min(dpn, 2); ++d)
-      if (const Index row = system.dofs().equation(node, d); row >= 0) influence[d][row] = 1.0;
+      if (const Index row = system.dofs().own_equation(node, d); row >= 0) influence[d][row] = 1.0;
   return influence;
 }
 
@@ -112,7 +112,7 @@ Table shapes_table(const LoadedModel& loaded, const assembly::StructuralSystem& 
   const model::DofMap& dofs = system.dofs();
   for (Index node = 0; node < static_cast<Index>(loaded.built.model.nodes.size()); ++node)
     for (int d = 0; d < dofs.dofs_per_node(); ++d) {
-      const Index row = dofs.equation(node, d);
+      const Index row = dofs.own_equation(node, d);
       if (row < 0) continue;
       const model::Direction along = model::direction(d, dofs.dimension());
       labels.push_back(fmt::format("{}.{}_{}",

@@ -79,14 +79,14 @@ Vector load_pattern(const LoadedModel& loaded, const assembly::StructuralSystem&
   for (const model::Node& node : model.nodes) lowest = std::min(lowest, node.position[up]);
   Vector along = Vector::Zero(system.size());
   for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
-    if (const Index row = system.dofs().equation(node, direction); row >= 0)
+    if (const Index row = system.dofs().own_equation(node, direction); row >= 0)
       along[row] = pattern == "mass"
                        ? 1.0
                        : model.nodes[static_cast<std::size_t>(node)].position[up] - lowest;
   system.multiply_mass(along, p);
   for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
     for (int d = 0; d < system.dofs().dofs_per_node(); ++d)
-      if (const Index row = system.dofs().equation(node, d); row >= 0 && d != direction)
+      if (const Index row = system.dofs().own_equation(node, d); row >= 0 && d != direction)
         p[row] = 0.0;  // the push only: a consistent mass gives rotations their share too
   const double total = p.sum();
   if (!(total > 0.0))
@@ -262,7 +262,12 @@ int pushover_command(const Arguments& arguments) {
                                    "gap_spring) for the pushover",
                                    loaded.built.model.links.at(static_cast<std::size_t>(k)).id));
   const int direction = request.direction == "x" ? 0 : 1;
-  const Index control = system.dofs().equation(node->second, direction);
+  const Index control = system.dofs().own_equation(node->second, direction);
+  if (system.dofs().tied(node->second, direction))
+    throw InputError(request.model_path, "--node",
+                     fmt::format("node '{}' is tied to its master along {} by a constraint: push "
+                                 "the master",
+                                 request.node, request.direction));
   if (control < 0)
     throw InputError(request.model_path, "--node",
                      fmt::format("node '{}' is fixed along {}: push a free node", request.node,

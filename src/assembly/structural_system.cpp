@@ -83,9 +83,14 @@ class SparseSolver final : public integrators::LinearSolver {
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor_;
 };
 
+// A DOF's terms (model::DofMap::terms): none where fixed, one of coefficient 1 where free.
+using DofTerms = std::span<const model::DofTerm>;
+
 // The elements' and nodal masses' share of the equations, gathered over the free DOFs (fixed
 // ones dropped) in the model's order: K, M (lumped and consistent parts) and the damping of
 // those that damp on their own, C = sum a0_e M_e + a1_e K_e (the model's a0, a1 for the others).
+// A DOF tied by a constraint scatters through its master's equations (T^T K_e T): a lumped mass
+// with a lever arm to its master couples them, and joins the consistent part.
 struct ElementAssembly {
   ElementAssembly(const model::DofMap& dofs, const model::Model& model);
   void add(const model::Element& element);
@@ -104,10 +109,10 @@ struct ElementAssembly {
  private:
   model::RayleighDamping coefficients(const std::optional<model::RayleighDamping>& own);
   void scatter(std::vector<Eigen::Triplet<double>>& into, const Matrix& block,
-               const std::vector<Index>& rows) const;
+               const std::vector<DofTerms>& rows) const;
   void couple(const Matrix& block, const std::vector<model::ElementDof>& dofs,
-              const std::vector<Index>& rows);
-  void add_mass(Index row, double value, double mass_coefficient);
+              const std::vector<DofTerms>& rows);
+  void add_mass(DofTerms row, double value, double mass_coefficient);
 
   const model::DofMap& dofs_;
   model::RayleighDamping model_damping_;
@@ -123,8 +128,8 @@ ElementAssembly::ElementAssembly(const model::DofMap& dofs, const model::Model& 
 
 void ElementAssembly::add(const model::Element& element) {
   const std::vector<model::ElementDof> dofs = element.dofs();
-  std::vector<Index> rows;  // equation of each element DOF, -1 where fixed
-  for (const model::ElementDof& dof : dofs) rows.push_back(dofs_.equation(dof.node, dof.direction));
+  std::vector<DofTerms> rows;  // terms of each element DOF
+  for (const model::ElementDof& dof : dofs) rows.push_back(dofs_.terms(dof.node, dof.direction));
   const Matrix element_stiffness = element.stiffness();
   scatter(stiffness, element_stiffness, rows);
   if (gather_coupling_) couple(element_stiffness, dofs, rows);
@@ -146,7 +151,7 @@ void ElementAssembly::add(const model::NodalMass& mass) {
   const double a0 = coefficients(mass.damping).mass_coefficient;
   for (int d = 0; d < dofs_.dofs_per_node(); ++d) {
     const model::Direction along = model::direction(d, dofs_.dimension());
-    add_mass(dofs_.equation(mass.node, d),
+    add_mass(dofs_.terms(mass.node, d),
              along.rotation ? mass.rotary_inertia[static_cast<std::size_t>(along.axis)] : mass.mass,
              a0);
   }
@@ -159,31 +164,46 @@ model::RayleighDamping ElementAssembly::coefficients(
 }
 
 void ElementAssembly::scatter(std::vector<Eigen::Triplet<double>>& into, const Matrix& block,
-                              const std::vector<Index>& rows) const {
-  for (std::size_t a = 0; a < rows.size(); ++a) {
-    if (rows[a] < 0) continue;
-    for (std::size_t b = 0; b < rows.size(); ++b) {
-      const double value = block(static_cast<Index>(a), static_cast<Index>(b));
-      if (rows[b] >= 0 && value != 0.0) into.emplace_back(rows[a], rows[b], value);
-    }
-  }
+                              const std::vector<DofTerms>& rows) const {
+  for (std::size_t a = 0; a < rows.size(); ++a)
+    for (const model::DofTerm& row : rows[a])
+      for (std::size_t b = 0; b < rows.size(); ++b) {
+        const double value = block(static_cast<Index>(a), static_cast<Index>(b));
+        if (value == 0.0) continue;
+        for (const model::DofTerm& col : rows[b])
+          into.emplace_back(row.equation, col.equation, row.coefficient * col.coefficient * value);
+      }
 }
 
+// The fixed DOFs are the supports' (a tied DOF is never fixed: the builder refuses supports on
+// slaves and on their masters' tied directions).
 void ElementAssembly::couple(const Matrix& block, const std::vector<model::ElementDof>& dofs,
-                             const std::vector<Index>& rows) {
-  for (std::size_t a = 0; a < rows.size(); ++a) {
-    if (rows[a] < 0) continue;
-    for (std::size_t b = 0; b < rows.size(); ++b)
-      if (rows[b] < 0)
-        support_coupling[dofs[b].node * dofs_.dofs_per_node() + dofs[b].direction].emplace_back(
-            rows[a], block(static_cast<Index>(a), static_cast<Index>(b)));
-  }
+                             const std::vector<DofTerms>& rows) {
+  for (std::size_t a = 0; a < rows.size(); ++a)
+    for (const model::DofTerm& row : rows[a])
+      for (std::size_t b = 0; b < rows.size(); ++b)
+        if (rows[b].empty())
+          support_coupling[dofs[b].node * dofs_.dofs_per_node() + dofs[b].direction].emplace_back(
+              row.equation, row.coefficient * block(static_cast<Index>(a), static_cast<Index>(b)));
 }
 
-void ElementAssembly::add_mass(Index row, double value, double mass_coefficient) {
-  if (row < 0) return;
-  lumped_mass[row] += value;
-  damping_diagonal[row] += mass_coefficient * value;
+void ElementAssembly::add_mass(DofTerms row, double value, double mass_coefficient) {
+  if (row.empty()) return;  // fixed: the support carries it
+  if (row.size() == 1) {    // a DOF of its own, or tied with no lever arm: M stays diagonal
+    const double weight = row[0].coefficient * row[0].coefficient;
+    lumped_mass[row[0].equation] += weight * value;
+    damping_diagonal[row[0].equation] += mass_coefficient * (weight * value);
+    return;
+  }
+  if (value == 0.0) return;
+  has_consistent_mass = true;
+  for (const model::DofTerm& a : row)
+    for (const model::DofTerm& b : row) {
+      const double share = a.coefficient * b.coefficient * value;
+      consistent_mass.emplace_back(a.equation, b.equation, share);
+      if (mass_coefficient != 0.0)
+        damping.emplace_back(a.equation, b.equation, mass_coefficient * share);
+    }
 }
 
 // A free DOF needs mass or element stiffness: massless DOFs with stiffness (rotations
@@ -201,7 +221,7 @@ void check_every_free_dof_is_held(const model::Model& model, const model::DofMap
     if (entry.row() == entry.col()) diagonal_stiffness[entry.row()] += entry.value();
   for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
     for (int d = 0; d < dofs.dofs_per_node(); ++d)
-      if (const Index row = dofs.equation(node, d);
+      if (const Index row = dofs.own_equation(node, d);
           !model::direction(d, model.dimension).rotation && row >= 0 &&
           !(diagonal_mass[row] > 0.0) && !(diagonal_stiffness[row] > 0.0))
         throw InputError(
@@ -230,14 +250,19 @@ NodeVector translations(const model::Coordinates& vector, const model::DofMap& d
   return model::over_directions(vector, false, dofs.dimension());
 }
 
-// Adds `vector` at `node` into `into` (or sets it there), over the node's free translations.
+// Adds `vector` at `node` into `into` (a force: through a tied DOF's terms onto its master), or
+// sets it there (a motion: on the node's own DOFs; a tied DOF follows its master's).
 void put_at_node(Vector& into, const model::DofMap& dofs, Index node, const NodeVector& vector,
                  bool add) {
-  for (int d = 0; d < dofs.dofs_per_node(); ++d)
-    if (const Index row = dofs.equation(node, d); row >= 0) {
-      const double component = vector[static_cast<std::size_t>(d)];
-      into[row] = add ? into[row] + component : component;
+  for (int d = 0; d < dofs.dofs_per_node(); ++d) {
+    const double component = vector[static_cast<std::size_t>(d)];
+    if (!add) {
+      if (const Index row = dofs.own_equation(node, d); row >= 0) into[row] = component;
+      continue;
     }
+    for (const model::DofTerm& term : dofs.terms(node, d))
+      into[term.equation] += term.coefficient * component;
+  }
 }
 
 // The constant nodal forces on the free DOFs.
@@ -295,6 +320,20 @@ EndDirections row_directions(const model::Link& link, const model::Coordinates& 
   return {at(link.offsets[0]), at(link.offsets[1])};
 }
 
+// Adds weight x the DOF's terms to a row; a tied DOF's equation may already be there (two
+// slaves of one master), and is summed into its first entry.
+void add_to_row(std::vector<integrators::LinkSet::Term>& row, DofTerms terms, double weight) {
+  for (const model::DofTerm& term : terms) {
+    const double value = term.coefficient * weight;
+    const auto same = std::ranges::find_if(
+        row, [&](const integrators::LinkSet::Term& t) { return t.dof == term.equation; });
+    if (same == row.end())
+      row.push_back({term.equation, value});
+    else
+      same->coefficient += value;
+  }
+}
+
 // Row of a direction d: +d at node i, -d at node j (fixed DOFs dropped); for a point inside a
 // segment j-k, -(1 - w) d at node j and -w d at node k.
 std::vector<integrators::LinkSet::Term> link_row(const model::DofMap& dofs, const model::Link& link,
@@ -303,16 +342,15 @@ std::vector<integrators::LinkSet::Term> link_row(const model::DofMap& dofs, cons
   for (int d = 0; d < dofs.dofs_per_node(); ++d) {
     const double at_i = direction.i[static_cast<std::size_t>(d)];
     const double at_j = direction.j[static_cast<std::size_t>(d)];
-    if (at_i != 0.0)
-      if (const Index eq = dofs.equation(link.node_i, d); eq >= 0) row.push_back({eq, at_i});
+    if (at_i != 0.0) add_to_row(row, dofs.terms(link.node_i, d), at_i);
     if (at_j == 0.0) continue;
     const double weight_j = link.segment_end ? 1.0 - link.segment_weight : 1.0;
-    if (const Index eq = dofs.equation(link.node_j, d); eq >= 0 && weight_j != 0.0)
-      row.push_back({eq, -weight_j * at_j});
+    if (weight_j != 0.0) add_to_row(row, dofs.terms(link.node_j, d), -weight_j * at_j);
     if (link.segment_end && link.segment_weight != 0.0)
-      if (const Index eq = dofs.equation(*link.segment_end, d); eq >= 0)
-        row.push_back({eq, -link.segment_weight * at_j});
+      add_to_row(row, dofs.terms(*link.segment_end, d), -link.segment_weight * at_j);
   }
+  // Ties can cancel a DOF out of a row (two points of one rigid floor along their line).
+  std::erase_if(row, [](const integrators::LinkSet::Term& t) { return t.coefficient == 0.0; });
   return row;
 }
 
@@ -557,17 +595,20 @@ void StructuralSystem::add_geometric_stiffness(const model::Model& model,
   const Vector u = gravity_state.solve(loads_);
   std::vector<Eigen::Triplet<double>> entries;
   for (const auto& element : model.elements) {
-    std::vector<Index> rows;
+    std::vector<DofTerms> rows;
     Vector element_u = Vector::Zero(static_cast<Index>(element->dofs().size()));
     for (const model::ElementDof& dof : element->dofs()) {
-      rows.push_back(dofs_.equation(dof.node, dof.direction));
-      if (rows.back() >= 0) element_u[static_cast<Index>(rows.size() - 1)] = u[rows.back()];
+      rows.push_back(dofs_.terms(dof.node, dof.direction));
+      element_u[static_cast<Index>(rows.size() - 1)] = model::value_of(rows.back(), u);
     }
     const Matrix k = element->geometric_stiffness(element_u, kind);
     for (std::size_t a = 0; a < rows.size() && k.size() > 0; ++a)
-      for (std::size_t b = 0; b < rows.size(); ++b)
-        if (rows[a] >= 0 && rows[b] >= 0)
-          entries.emplace_back(rows[a], rows[b], k(static_cast<Index>(a), static_cast<Index>(b)));
+      for (const model::DofTerm& row : rows[a])
+        for (std::size_t b = 0; b < rows.size(); ++b)
+          for (const model::DofTerm& col : rows[b])
+            entries.emplace_back(row.equation, col.equation,
+                                 row.coefficient * col.coefficient *
+                                     k(static_cast<Index>(a), static_cast<Index>(b)));
   }
   Eigen::SparseMatrix<double> geometric(size(), size());
   geometric.setFromTriplets(entries.begin(), entries.end());
@@ -612,17 +653,21 @@ links::LinkContext StructuralSystem::link_context(const model::Link& link) const
   links::LinkContext context;
   const NodeVector direction = normal_direction(link, dofs_.dimension());
   // Mass and diagonal stiffness of one end along the direction: n^T K_nn n over its free DOFs.
+  // A tied end counts its master's along the same directions (each DOF's first term): a point of
+  // a rigid floor is the floor's, as an offset end is its node's.
   auto end = [&](Index node, double& mass, double& stiffness, bool& fixed) {
     fixed = true;
     for (int d = 0; d < dofs_.dofs_per_node(); ++d) {
       const double n_d = direction[static_cast<std::size_t>(d)];
-      const Index row = dofs_.equation(node, d);
-      if (n_d == 0.0 || row < 0) continue;
+      const DofTerms rows = dofs_.terms(node, d);
+      if (n_d == 0.0 || rows.empty()) continue;
       fixed = false;
+      const Index row = rows[0].equation;
       mass = mass_matrix_.size() > 0 ? mass_matrix_.coeff(row, row) : mass_[row];
       for (int e = 0; e < dofs_.dofs_per_node(); ++e)
-        if (const Index col = dofs_.equation(node, e); col >= 0)
-          stiffness += n_d * direction[static_cast<std::size_t>(e)] * stiffness_.coeff(row, col);
+        if (const DofTerms cols = dofs_.terms(node, e); !cols.empty())
+          stiffness += n_d * direction[static_cast<std::size_t>(e)] *
+                       stiffness_.coeff(row, cols[0].equation);
     }
   };
   end(link.node_i, context.mass_i, context.stiffness_i, context.fixed_i);

@@ -7,7 +7,9 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <map>
 #include <numbers>
+#include <optional>
 
 #include "assembly/modal_analysis.hpp"
 #include "assembly/structural_system.hpp"
@@ -74,7 +76,7 @@ void check_implicit_hard_contacts(const model::Model& model, assembly::Structura
     };
     for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
       for (int d = 0; d < dofs.dofs_per_node(); ++d) {
-        const Index equation = dofs.equation(node, d);
+        const Index equation = dofs.own_equation(node, d);
         if (equation < 0 || (*lumped)[equation] > 0.0 || !moves(equation)) continue;
         throw InputError(
             source, "/analysis/integrator",
@@ -102,6 +104,12 @@ void settle_time_step(AnalysisSpec& analysis, const model::Model& model,
   // Implicit methods carry massless DOFs (contact points, rotations) as static equations; the
   // explicit update divides by each DOF's own mass.
   const Vector* lumped = system.lumped_mass();
+  if (!lumped && system.dofs().has_ties())
+    throw InputError(source, "/analysis/integrator",
+                     "central difference needs a diagonal mass, and this model's constraints "
+                     "couple it (a mass tied to its master through a lever arm: a rigid "
+                     "diaphragm's or rigid beam's slave away from its master); use an implicit "
+                     "integrator, or equal_dofs / rigid_bar ties, which keep the mass diagonal");
   if (!lumped)
     throw InputError(source, "/analysis/integrator",
                      "central difference needs lumped masses, and this model has consistent "
@@ -109,7 +117,8 @@ void settle_time_step(AnalysisSpec& analysis, const model::Model& model,
                      "integrator");
   for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
     for (int d = 0; d < system.dofs().dofs_per_node(); ++d)
-      if (const Index row = system.dofs().equation(node, d); row >= 0 && !((*lumped)[row] > 0.0))
+      if (const Index row = system.dofs().own_equation(node, d);
+          row >= 0 && !((*lumped)[row] > 0.0))
         throw InputError(source, "/analysis/integrator",
                          fmt::format("central difference needs a lumped mass on every free DOF, "
                                      "and node '{}' has none in direction {}: add a mass there, "
@@ -244,6 +253,122 @@ void resolve_nodal_data(const Resolver& resolver, model::Model& model) {
   }
 }
 
+model::ConstraintKind constraint_kind(ConstraintKind kind) {
+  switch (kind) {
+    case ConstraintKind::rigid_diaphragm:
+      return model::ConstraintKind::rigid_diaphragm;
+    case ConstraintKind::rigid_beam:
+      return model::ConstraintKind::rigid_beam;
+    case ConstraintKind::rigid_bar:
+      return model::ConstraintKind::rigid_bar;
+    case ConstraintKind::equal_dofs:
+      break;
+  }
+  return model::ConstraintKind::equal_dofs;
+}
+
+// The first tied direction of `constraint` that `flags` (a support's, a velocity's) holds.
+std::optional<int> first_shared(const model::Constraint& constraint,
+                                const std::array<bool, 6>& flags, int dimension) {
+  const std::array<bool, 6> tied = model::tied_directions(constraint, dimension);
+  for (int d = 0; d < model::direction_count(dimension); ++d)
+    if (tied[static_cast<std::size_t>(d)] && flags[static_cast<std::size_t>(d)]) return d;
+  return std::nullopt;
+}
+
+// Slaves tied once, to a master no constraint ties (no chains), in a diaphragm's plane.
+void check_constraint_nodes(const Resolver& resolver, const model::Model& model) {
+  std::map<Index, std::string> slave_at, master_at;  // node -> where it is tied / a master
+  for (std::size_t k = 0; k < model.constraints.size(); ++k)
+    master_at.emplace(model.constraints[k].master, fmt::format("/constraints/{}", k));
+  for (std::size_t k = 0; k < model.constraints.size(); ++k) {
+    const model::Constraint& c = model.constraints[k];
+    const model::Coordinates& master = model.nodes[static_cast<std::size_t>(c.master)].position;
+    for (std::size_t i = 0; i < c.slaves.size(); ++i) {
+      const std::string path = fmt::format("/constraints/{}/slaves/{}", k, i);
+      const std::string& id = model.nodes[static_cast<std::size_t>(c.slaves[i])].id;
+      if (c.slaves[i] == c.master) resolver.fail(path, fmt::format("'{}' is the master", id));
+      if (const auto [first, fresh] = slave_at.emplace(c.slaves[i], path); !fresh)
+        resolver.fail(path, fmt::format("node '{}' is already tied at {}; a node follows one "
+                                        "master",
+                                        id, first->second));
+      if (const auto master_of = master_at.find(c.slaves[i]); master_of != master_at.end())
+        resolver.fail(path, fmt::format("node '{}' is the master of {}: tie its slaves to '{}' "
+                                        "directly (a tie of a tie is not taken)",
+                                        id, master_of->second,
+                                        model.nodes[static_cast<std::size_t>(c.master)].id));
+      if (c.kind != model::ConstraintKind::rigid_diaphragm) continue;
+      const model::Coordinates& at = model.nodes[static_cast<std::size_t>(c.slaves[i])].position;
+      const auto n = static_cast<std::size_t>(c.normal);
+      const double out = at[n] - master[n];
+      const double size = std::hypot(at[0] - master[0], at[1] - master[1], at[2] - master[2]);
+      if (std::abs(out) > 1e-9 * (1.0 + size))
+        resolver.fail(
+            path, fmt::format("node '{}' is {:.6g} off the diaphragm's plane through "
+                              "its master '{}' (its {} is {:.6g}, the master's {:.6g}): "
+                              "a rigid diaphragm ties the nodes of one floor",
+                              id, std::abs(out), model.nodes[static_cast<std::size_t>(c.master)].id,
+                              "xyz"[n], at[n], master[n]));
+    }
+  }
+}
+
+// A tied DOF is not an unknown: neither a slave nor its master's tied DOFs take a support (the
+// slave would not follow the ground, nor the floor its master), nor a slave an initial velocity.
+void check_constraint_supports(const Resolver& resolver, const model::Model& model) {
+  const ModelSpec& spec = resolver.spec();
+  const Origin support =
+      origin_of(resolver.user_spec().supports.size(), "supports", spec.generated_from.supports);
+  for (std::size_t k = 0; k < model.constraints.size(); ++k) {
+    const model::Constraint& c = model.constraints[k];
+    for (std::size_t s = 0; s < model.supports.size(); ++s) {
+      const model::Support& held = model.supports[s];
+      const std::optional<int> d = first_shared(c, held.fixed, model.dimension);
+      const bool slave = std::ranges::find(c.slaves, held.node) != c.slaves.end();
+      if (!d || (!slave && held.node != c.master)) continue;
+      const std::string& id = model.nodes[static_cast<std::size_t>(held.node)].id;
+      const char* direction = model::direction(*d, model.dimension).words;
+      resolver.fail(support(s) + "/fix",
+                    slave ? fmt::format("node '{}' is tied to its master along {} by "
+                                        "/constraints/{}: it moves with its master; leave out "
+                                        "the support, or the node from the constraint",
+                                        id, direction, k)
+                          : fmt::format("node '{}' is the master of /constraints/{}, which ties "
+                                        "{}: its slaves move with it, and a held master holds "
+                                        "them; support the slaves (or their columns) themselves",
+                                        id, k, direction));
+    }
+    if (model.initial_velocity.empty()) continue;
+    for (Index slave : c.slaves) {
+      const model::Coordinates& v = model.initial_velocity[static_cast<std::size_t>(slave)];
+      const std::array<bool, 6> moving{v[0] != 0.0, v[1] != 0.0, v[2] != 0.0};
+      if (const std::optional<int> d = first_shared(c, moving, model.dimension))
+        resolver.fail(fmt::format("/constraints/{}", k),
+                      fmt::format("node '{}' has an initial velocity along {}, which its tie "
+                                  "gives from the master's: give the master's velocity",
+                                  model.nodes[static_cast<std::size_t>(slave)].id,
+                                  model::direction(*d, model.dimension).words));
+    }
+  }
+}
+
+std::vector<model::Constraint> resolve_constraints(const Resolver& resolver) {
+  const ModelSpec& spec = resolver.spec();
+  std::vector<model::Constraint> constraints;
+  for (std::size_t k = 0; k < spec.constraints.size(); ++k) {
+    const ConstraintSpec& c = spec.constraints[k];
+    model::Constraint& made = constraints.emplace_back();
+    made.kind = constraint_kind(c.type);
+    made.master = resolver.node(c.master, fmt::format("/constraints/{}/master", k));
+    for (std::size_t i = 0; i < c.slaves.size(); ++i)
+      made.slaves.push_back(
+          resolver.node(c.slaves[i], fmt::format("/constraints/{}/slaves/{}", k, i)));
+    made.tied = c.dofs;
+    made.normal = c.normal;
+  }
+  return constraints;
+}
+
 // A model that is one rod pair and nothing else: its exact solution applies.
 std::optional<RodPairSpec> sole_rod_pair(const ModelSpec& user) {
   const bool only_rod_pair =
@@ -279,6 +404,9 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
   for (std::size_t k = 0; k < spec.nodes.size(); ++k) built.node_origins.push_back(node_origin(k));
   model.elements = resolve_elements(resolver, model);
   resolve_nodal_data(resolver, model);
+  model.constraints = resolve_constraints(resolver);
+  check_constraint_nodes(resolver, model);
+  check_constraint_supports(resolver, model);
   model.links = resolve_links(resolver, model);
   built.analysis = spec.analysis;
   built.excitation_factors = resolve_excitations(resolver, motions, second_motions, model);

@@ -81,6 +81,17 @@ struct SupportSpec {
                                 // plane; x, y, z, rx, ry, rz in 3-D
 };
 
+// A master–slave constraint (model/model.hpp, Constraint): the slaves' tied DOFs follow the
+// master's and leave the equations.
+enum class ConstraintKind { rigid_diaphragm, rigid_beam, rigid_bar, equal_dofs };
+struct ConstraintSpec {
+  ConstraintKind type = ConstraintKind::rigid_diaphragm;
+  std::string master;
+  std::vector<std::string> slaves;
+  std::array<bool, 6> dofs{};  // equal_dofs: per direction of its scene (model/direction.hpp)
+  int normal = 2;              // rigid_diaphragm: the axis its plane is perpendicular to
+};
+
 // A vector at a node, in global axes.
 struct NodalVectorSpec {
   std::string node;
@@ -504,6 +515,7 @@ struct ModelSpec {
   std::vector<ElementSpec> elements;
   std::vector<MassSpec> masses;
   std::vector<SupportSpec> supports;
+  std::vector<ConstraintSpec> constraints;
   std::vector<InitialVelocitySpec> initial_velocities;
   std::vector<LoadSpec> loads;
   std::vector<LinkSpec> links;

@@ -18,7 +18,7 @@ struct NodeDirection {
 NodeDirection node_of(const model::Model& model, const model::DofMap& dofs, Index equation) {
   for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
     for (int d = 0; d < dofs.dofs_per_node(); ++d)
-      if (dofs.equation(node, d) == equation) return {node, d};
+      if (dofs.own_equation(node, d) == equation) return {node, d};
   return {};
 }
 

@@ -18,6 +18,7 @@ using builder::AdjacentBuildingsSpec;
 using builder::AnalysisSpec;
 using builder::BlockSpec;
 using builder::BuildingSpec;
+using builder::ConstraintSpec;
 using builder::ContactSpec;
 using builder::DampingSpec;
 using builder::DriftMonitorSpec;
@@ -306,28 +307,29 @@ const Fields<MassSpec>& mass_fields() {
   return fields;
 }
 
-// "fix": ["x", "rz"], each direction once, named as the scene names its directions
-// (model/direction.hpp).
-Field<SupportSpec> fixed_directions() {
-  return custom<SupportSpec>(
-      {"fix", quoted_names({"x", "y", "z", "rx", "ry", "rz"}) + ", each once", "required",
-       "the fixed directions: x in 1-D; x, y, rz in 2-D; x, y, z, rx, ry, rz in 3-D"},
-      [](JsonObject& object, SupportSpec& support, Context& context) {
+// A list of directions (`key`: ["x", "rz"]), each once, named as the scene names its directions
+// (model/direction.hpp), into a flag per direction.
+template <class Spec>
+Field<Spec> direction_list(const std::string& key, std::array<bool, 6> Spec::*flags,
+                           const std::string& meaning) {
+  return custom<Spec>(
+      {key, quoted_names({"x", "y", "z", "rx", "ry", "rz"}) + ", each once", "required", meaning},
+      [key, flags](JsonObject& object, Spec& spec, Context& context) {
         UniqueNames directions("direction");
-        for (const JsonValue& value : object.at("fix").elements(1)) {
+        for (const JsonValue& value : object.at(key).elements(1)) {
           const std::string name = value.as_one_of({"x", "y", "z", "rx", "ry", "rz"});
           directions.add(name, value);
           if (name == "y" || name == "rz") require_dimension(value, context, 2, 3);
           if (name == "z" || name == "rx" || name == "ry") require_dimension(value, context, 3, 3);
           for (int d = 0; d < model::direction_count(context.dimension); ++d)
             if (model::direction(d, context.dimension).symbol == name)
-              support.fixed[static_cast<std::size_t>(d)] = true;
+              (spec.*flags)[static_cast<std::size_t>(d)] = true;
         }
       },
-      [](const SupportSpec& support, const Context& context) -> std::optional<OrderedJson> {
+      [flags](const Spec& spec, const Context& context) -> std::optional<OrderedJson> {
         OrderedJson fixed = OrderedJson::array();
         for (int d = 0; d < model::direction_count(context.dimension); ++d)
-          if (support.fixed[static_cast<std::size_t>(d)])
+          if ((spec.*flags)[static_cast<std::size_t>(d)])
             fixed.push_back(model::direction(d, context.dimension).symbol);
         return fixed;
       });
@@ -336,7 +338,48 @@ Field<SupportSpec> fixed_directions() {
 const Fields<SupportSpec>& support_fields() {
   static const Fields<SupportSpec> fields = {
       required("node", &SupportSpec::node, Text{true}, "id of the node"),
-      fixed_directions(),
+      direction_list("fix", &SupportSpec::fixed,
+                     "the fixed directions: x in 1-D; x, y, rz in 2-D; x, y, z, rx, ry, rz in 3-D"),
+  };
+  return fields;
+}
+
+const Fields<ConstraintSpec>& constraint_fields() {
+  using builder::ConstraintKind;
+  static const auto is_equal_dofs = [](const ConstraintSpec& constraint) {
+    return constraint.type == ConstraintKind::equal_dofs;
+  };
+  static const auto is_diaphragm = [](const ConstraintSpec& constraint) {
+    return constraint.type == ConstraintKind::rigid_diaphragm;
+  };
+  static const Fields<ConstraintSpec> fields = {
+      required("type", &ConstraintSpec::type,
+               Choice<ConstraintKind>{{{"rigid_diaphragm", ConstraintKind::rigid_diaphragm},
+                                       {"rigid_beam", ConstraintKind::rigid_beam},
+                                       {"rigid_bar", ConstraintKind::rigid_bar},
+                                       {"equal_dofs", ConstraintKind::equal_dofs}}},
+               "rigid_diaphragm: a floor rigid in its plane (3-D; the slaves' translations in "
+               "the plane and rotation about its normal); rigid_beam: a rigid body (every DOF); "
+               "rigid_bar: the translations alone (pinned ends); equal_dofs: the directions in "
+               "`dofs`, equal to the master's"),
+      rule<ConstraintSpec>([](JsonObject& object, ConstraintSpec& constraint, Context& context) {
+        if (constraint.type == ConstraintKind::rigid_diaphragm && context.dimension != 3)
+          object.at("type").fail(
+              "a rigid_diaphragm needs a 3-D scene (\"dimension\": 3); in a plane, tie the "
+              "floor's nodes along x with equal_dofs");
+        if (constraint.type == ConstraintKind::rigid_beam && context.dimension == 1)
+          object.at("type").fail(
+              "a rigid_beam needs a 2-D or 3-D scene; in 1-D, use equal_dofs or rigid_bar");
+      }),
+      required("master", &ConstraintSpec::master, Text{true},
+               "id of the master node, whose DOFs the slaves follow"),
+      required("slaves", &ConstraintSpec::slaves, Names{}, "ids of the nodes tied to it"),
+      direction_list("dofs", &ConstraintSpec::dofs, "the directions tied")
+          .when(is_equal_dofs, "equal_dofs only"),
+      optional("normal", &ConstraintSpec::normal, Choice<int>{{{"x", 0}, {"y", 1}, {"z", 2}}},
+               "the axis the floor's plane is perpendicular to")
+          .when(is_diaphragm, "rigid_diaphragm only")
+          .in_space(),
   };
   return fields;
 }
@@ -1682,6 +1725,8 @@ const Fields<ModelSpec>& model_list() {
                "lumped nodal masses"),
       optional("supports", &ModelSpec::supports, Objects<SupportSpec>{support_fields()},
                "fixed directions"),
+      optional("constraints", &ModelSpec::constraints, Objects<ConstraintSpec>{constraint_fields()},
+               "rigid diaphragms, rigid links and equal DOFs: master–slave ties"),
       optional("initial_velocities", &ModelSpec::initial_velocities,
                Objects<InitialVelocitySpec>{initial_velocity_fields()},
                "nodal velocities at t = 0"),
@@ -1750,6 +1795,7 @@ const std::vector<NamedFields>& every_field_list() {
       named("elements", element_fields()),
       named("masses", mass_fields()),
       named("supports", support_fields()),
+      named("constraints", constraint_fields()),
       named("initial_velocities", initial_velocity_fields()),
       named("loads", load_fields()),
       named("links", link_fields()),

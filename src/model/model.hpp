@@ -11,6 +11,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "links/law_registry.hpp"
 #include "links/link_context.hpp"
 #include "model/direction.hpp"
+#include "model/dof_term.hpp"
 #include "model/element.hpp"
 #include "model/ground_motion.hpp"
 
@@ -117,6 +119,32 @@ struct Gravity {
   std::optional<GeometricStiffness> p_delta;
 };
 
+// Master–slave constraints (OpenSees' equalDOF, rigidDiaphragm, rigidLink): the tied DOFs of
+// each slave follow its master's and leave the equations (DofMap). With r = x_slave - x_master
+// and small rotations:
+// - rigid_beam: a rigid body, u_s = u_m + theta_m x r and theta_s = theta_m (plane scenes: about
+//   z only);
+// - rigid_diaphragm: a floor rigid in its plane (3-D), the plane perpendicular to axis `normal`:
+//   the translations in the plane as the rigid body's, with theta_m about the normal only, and
+//   the rotation about the normal; the other DOFs (vertical, rocking) stay the slave's own;
+// - rigid_bar: the translations alone, u_s = u_m (pinned ends);
+// - equal_dofs: each direction in `tied` equal to the master's, with no lever arm.
+enum class ConstraintKind { equal_dofs, rigid_diaphragm, rigid_beam, rigid_bar };
+struct Constraint {
+  ConstraintKind kind = ConstraintKind::equal_dofs;
+  Index master = 0;
+  std::vector<Index> slaves;
+  std::array<bool, 6> tied{};  // equal_dofs: the directions (model/direction.hpp)
+  int normal = 2;              // rigid_diaphragm: 0 x, 1 y, 2 z
+};
+
+// The directions a constraint ties in a scene of `dimension` (model/direction.hpp).
+std::array<bool, 6> tied_directions(const Constraint& constraint, int dimension);
+// A tied slave DOF as its master's: (master's direction, weight) pairs, nonzero weights only;
+// empty where the constraint leaves `direction` free. r = x_slave - x_master.
+std::vector<std::pair<int, double>> tie_terms(const Constraint& constraint, int direction,
+                                              const Coordinates& r, int dimension);
+
 struct Model {
   int dimension = 1;  // 1, 2 or 3
   std::vector<Node> nodes;
@@ -131,28 +159,47 @@ struct Model {
   std::vector<UniformExcitation> excitations;
   std::vector<SupportExcitation> support_excitations;
   std::optional<Gravity> gravity;
+  std::vector<Constraint> constraints;
 
   // The scene's translations, or more where an element needs more (a beam's rotation).
   int dofs_per_node() const;
 };
 
-// Equation numbers of the free DOFs, in node order (a chain of nodes gives a banded matrix).
+// Equation numbers of the free DOFs, in node order (a chain of nodes gives a banded matrix). A
+// DOF is free (its own equation), fixed (none) or tied by a constraint (a combination of its
+// master's equations, which it has no equation of its own beside).
 class DofMap {
  public:
   explicit DofMap(const Model& model);
   Index size() const { return size_; }
   int dofs_per_node() const { return dofs_per_node_; }
   int dimension() const { return dimension_; }  // the scene's, for model::direction
-  // Equation of (node, direction), or -1 where the DOF is fixed.
-  Index equation(Index node, int direction) const {
-    return equations_[static_cast<std::size_t>(node * dofs_per_node_ + direction)];
+  bool has_ties() const { return has_ties_; }
+  // The DOF's own equation: -1 where it is fixed or tied (its value is then not an unknown).
+  Index own_equation(Index node, int direction) const {
+    const Index equation = equations_[place(node, direction)];
+    return equation >= 0 ? equation : -1;
+  }
+  bool tied(Index node, int direction) const { return equations_[place(node, direction)] < -1; }
+  // The DOF as a combination of equations: one term of coefficient 1 where it is free, none
+  // where it is fixed, its master's where it is tied. Read and scatter every DOF through these.
+  std::span<const DofTerm> terms(Index node, int direction) const {
+    const std::size_t at = place(node, direction);
+    return {terms_.data() + first_term_[at], terms_.data() + first_term_[at + 1]};
   }
 
  private:
+  void build_terms(const Model& model);
+  std::size_t place(Index node, int direction) const {
+    return static_cast<std::size_t>(node * dofs_per_node_ + direction);
+  }
   int dofs_per_node_;
   int dimension_;
   Index size_ = 0;
-  std::vector<Index> equations_;
+  bool has_ties_ = false;
+  std::vector<Index> equations_;  // >= 0 free, -1 fixed, -2 tied
+  std::vector<std::size_t> first_term_;
+  std::vector<DofTerm> terms_;
 };
 
 }  // namespace pound::model

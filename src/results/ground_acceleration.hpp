@@ -7,8 +7,12 @@
 
 #include "core/types.hpp"
 #include "integrators/integrator.hpp"
+#include "model/dof_term.hpp"
 
 namespace pound::results {
+
+// How a recorded DOF is read from a state: its terms (model::DofMap::terms), none where fixed.
+using DofReading = std::vector<model::DofTerm>;
 
 class GroundAcceleration {
  public:
@@ -18,15 +22,21 @@ class GroundAcceleration {
   GroundAcceleration(Frame frame, Support support)
       : frame_(std::move(frame)), support_(std::move(support)) {}
 
-  // The absolute acceleration along `direction` of `node` in `state`, its equation there being
-  // `equation` (-1 where fixed: the ground's own).
-  double absolute(const integrators::State& state, Index equation, Index node, int direction) {
-    if (equation < 0) return support_(node, direction, state.time);
+  // The absolute acceleration along `direction` of `node` in `state`, read there through
+  // `reading` (none where fixed: the ground's own).
+  double absolute(const integrators::State& state, const DofReading& reading, Index node,
+                  int direction) {
+    if (reading.empty()) return support_(node, direction, state.time);
     if (!(state.time == frame_time_)) {
       frame_(state.time, frame_now_);
       frame_time_ = state.time;
     }
-    return state.acceleration[equation] + frame_now_[equation];
+    const auto at = [&](const model::DofTerm& term) {
+      return term.coefficient * (state.acceleration[term.equation] + frame_now_[term.equation]);
+    };
+    double acceleration = at(reading[0]);
+    for (std::size_t k = 1; k < reading.size(); ++k) acceleration += at(reading[k]);
+    return acceleration;
   }
 
  private:

@@ -5,7 +5,7 @@
 
 namespace pound::results {
 namespace {
-double value_at(const Vector& v, Index equation) { return equation < 0 ? 0.0 : v[equation]; }
+double value_at(const Vector& v, const DofReading& reading) { return model::value_of(reading, v); }
 
 double sum_of(const std::vector<Term>& terms, const Vector& v) {
   double sum = 0.0;
@@ -48,9 +48,9 @@ void DriftMonitors::record(const integrators::State& state) {
       acceleration = std::abs(ground_.absolute(state, w.top, w.top_node, w.direction));
     else
       for (std::size_t d = 0; d < w.top_along.size(); ++d)
-        if (const auto [equation, weight] = w.top_along[d]; weight != 0.0)
+        if (const auto& [reading, weight] = w.top_along[d]; weight != 0.0)
           acceleration +=
-              weight * ground_.absolute(state, equation, w.top_node, static_cast<int>(d));
+              weight * ground_.absolute(state, reading, w.top_node, static_cast<int>(d));
     acceleration = std::abs(acceleration);
     if (acceleration > p.peak_acceleration) {
       p.peak_acceleration = acceleration;

@@ -13,10 +13,7 @@
 namespace pound::results {
 
 // A displacement read as the sum of coefficient x displacement over some equations.
-struct Term {
-  Index equation;
-  double coefficient;
-};
+using Term = model::DofTerm;
 
 struct DriftPeak {
   double peak_drift = 0.0;      // max |u_top - u_bottom| along its direction (x unless told) [L]
@@ -37,13 +34,13 @@ struct DriftPeak {
 class DriftMonitors : public Observer {
  public:
   struct Where {
-    Index bottom, top;  // equations along the drift's direction, -1 where fixed
+    DofReading bottom, top;  // along the drift's direction, no terms where fixed
     Index top_node;
     int direction = 0;  // of the drift (model/direction.hpp)
     // Along an axis (DriftMonitor::axis): the drift as a sum of terms, and the top's equation
     // and weight for each translation (x, y, z) for its acceleration; empty: along `direction`.
     std::vector<Term> drift = {};
-    std::vector<std::pair<Index, double>> top_along = {};
+    std::vector<std::pair<DofReading, double>> top_along = {};
     // Each corner's drift along the direction, and the twist, as sums of terms.
     std::vector<std::vector<Term>> corners = {};
     std::vector<Term> twist = {};
@@ -75,8 +72,8 @@ class JointMonitors : public Observer {
   struct Where {
     Index link_row;  // the pounding link's normal row
     double gap;
-    Index girder_x, seat_x;  // equations, -1 where fixed
-    Index girder;            // node
+    DofReading girder_x, seat_x;  // no terms where fixed
+    Index girder;                 // node
     // A point's movement on its seat across the support line (a skewed deck's corner): the sum
     // of coefficient x displacement over these equations; empty: u(girder_x) - u(seat_x).
     using Term = results::Term;

@@ -39,18 +39,18 @@ void LinkQuantities::take(const integrators::State& state, double* values) const
   }
 }
 
-NodeQuantities::NodeQuantities(std::vector<std::vector<Index>> equations,
+NodeQuantities::NodeQuantities(std::vector<std::vector<DofReading>> readings,
                                std::vector<std::vector<int>> directions, int dimension,
                                std::vector<Index> nodes, const std::vector<std::string>& ids,
                                builder::AccelerationFrame accelerations, GroundAcceleration& ground)
-    : equations_(std::move(equations)),
+    : readings_(std::move(readings)),
       nodes_(std::move(nodes)),
       relative_(accelerations != builder::AccelerationFrame::absolute),
       absolute_(accelerations != builder::AccelerationFrame::relative),
       ground_(ground),
       directions_(std::move(directions)) {
   for (std::size_t k = 0; k < ids.size(); ++k)
-    for (std::size_t i = 0; i < equations_[k].size(); ++i) {
+    for (std::size_t i = 0; i < readings_[k].size(); ++i) {
       const std::string name = ids[k] + ".";
       const model::Direction along = model::direction(directions_[k].at(i), dimension);
       const std::string direction = along.symbol;
@@ -65,34 +65,32 @@ NodeQuantities::NodeQuantities(std::vector<std::vector<Index>> equations,
 }
 
 void NodeQuantities::take(const integrators::State& state, double* values) const {
-  for (std::size_t k = 0; k < equations_.size(); ++k)
-    for (std::size_t i = 0; i < equations_[k].size(); ++i) {
-      const Index equation = equations_[k][i];
-      const bool free = equation >= 0;
-      *values++ = free ? state.displacement[equation] : 0.0;
-      *values++ = free ? state.velocity[equation] : 0.0;
-      if (relative_) *values++ = free ? state.acceleration[equation] : 0.0;
-      if (absolute_) *values++ = ground_.absolute(state, equation, nodes_[k], directions_[k][i]);
+  for (std::size_t k = 0; k < readings_.size(); ++k)
+    for (std::size_t i = 0; i < readings_[k].size(); ++i) {
+      const DofReading& reading = readings_[k][i];
+      *values++ = model::value_of(reading, state.displacement);
+      *values++ = model::value_of(reading, state.velocity);
+      if (relative_) *values++ = model::value_of(reading, state.acceleration);
+      if (absolute_) *values++ = ground_.absolute(state, reading, nodes_[k], directions_[k][i]);
     }
 }
 
 ElementQuantities::ElementQuantities(std::vector<std::shared_ptr<const model::Element>> elements,
-                                     std::vector<std::vector<Index>> equations)
-    : elements_(std::move(elements)), equations_(std::move(equations)) {
+                                     std::vector<std::vector<DofReading>> readings)
+    : elements_(std::move(elements)), readings_(std::move(readings)) {
   for (std::size_t k = 0; k < elements_.size(); ++k) {
     for (const model::EndForce& force : elements_[k]->end_force_names())
       add(elements_[k]->id() + "." + std::string(force.name), force.dimension);
-    displacements_.emplace_back(static_cast<Index>(equations_[k].size()));
+    displacements_.emplace_back(static_cast<Index>(readings_[k].size()));
   }
 }
 
 void ElementQuantities::take(const integrators::State& state, double* values) const {
   for (std::size_t k = 0; k < elements_.size(); ++k) {
-    const std::vector<Index>& equations = equations_[k];
+    const std::vector<DofReading>& readings = readings_[k];
     Vector& displacement = displacements_[k];
-    for (std::size_t d = 0; d < equations.size(); ++d)
-      displacement[static_cast<Index>(d)] =
-          equations[d] >= 0 ? state.displacement[equations[d]] : 0.0;
+    for (std::size_t d = 0; d < readings.size(); ++d)
+      displacement[static_cast<Index>(d)] = model::value_of(readings[d], state.displacement);
     const Vector forces = elements_[k]->end_forces(displacement);
     for (Index f = 0; f < forces.size(); ++f) *values++ = forces[f];
   }

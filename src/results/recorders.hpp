@@ -75,16 +75,16 @@ class LinkQuantities final : public Quantities {
 // ground's acceleration (a fixed DOF's is the ground's).
 class NodeQuantities final : public Quantities {
  public:
-  // equations[k][i]: equation of node k in direction directions[k][i] (model::direction of a
-  // scene of `dimension`), or -1 where fixed; nodes[k] its index.
-  NodeQuantities(std::vector<std::vector<Index>> equations,
+  // readings[k][i]: node k in direction directions[k][i] (model::direction of a scene of
+  // `dimension`), no terms where fixed; nodes[k] its index.
+  NodeQuantities(std::vector<std::vector<DofReading>> readings,
                  std::vector<std::vector<int>> directions, int dimension, std::vector<Index> nodes,
                  const std::vector<std::string>& ids, builder::AccelerationFrame accelerations,
                  GroundAcceleration& ground);
   void take(const integrators::State& state, double* values) const override;
 
  private:
-  std::vector<std::vector<Index>> equations_;
+  std::vector<std::vector<DofReading>> readings_;
   std::vector<Index> nodes_;
   bool relative_, absolute_;
   GroundAcceleration& ground_;
@@ -96,14 +96,14 @@ class NodeQuantities final : public Quantities {
 // the element's axes, as the nodes act on it, without damping or second-order terms.
 class ElementQuantities final : public Quantities {
  public:
-  // equations[k]: the equation of each of elements[k]'s dofs(), -1 where fixed.
+  // readings[k]: each of elements[k]'s dofs(), no terms where fixed.
   ElementQuantities(std::vector<std::shared_ptr<const model::Element>> elements,
-                    std::vector<std::vector<Index>> equations);
+                    std::vector<std::vector<DofReading>> readings);
   void take(const integrators::State& state, double* values) const override;
 
  private:
   std::vector<std::shared_ptr<const model::Element>> elements_;
-  std::vector<std::vector<Index>> equations_;
+  std::vector<std::vector<DofReading>> readings_;
   mutable std::vector<Vector> displacements_;  // scratch: each element's u_e
 };
 

@@ -33,13 +33,19 @@ std::unique_ptr<Quantities> link_quantities(const builder::BuiltModel& built,
   return std::make_unique<LinkQuantities>(rows, ids);
 }
 
+// How (node, direction) is read: through its terms (none where fixed).
+DofReading reading(const model::DofMap& dofs, Index node, int direction) {
+  const std::span<const model::DofTerm> terms = dofs.terms(node, direction);
+  return {terms.begin(), terms.end()};
+}
+
 // The directions a node moves in: its free DOFs (a floor of a shear building has no y or
 // rotation), translations only if asked; a node fixed in every direction moves with its
 // support, whose x is recorded.
 std::vector<int> free_directions(const model::DofMap& dofs, Index node, bool translations_only) {
   std::vector<int> directions;
   for (int d = 0; d < dofs.dofs_per_node(); ++d)
-    if (dofs.equation(node, d) >= 0 &&
+    if (!dofs.terms(node, d).empty() &&
         !(translations_only && model::direction(d, dofs.dimension()).rotation))
       directions.push_back(d);
   if (directions.empty()) directions.push_back(0);
@@ -51,15 +57,15 @@ std::unique_ptr<Quantities> node_quantities(const builder::BuiltModel& built,
                                             const builder::ResolvedRecorder& spec,
                                             GroundAcceleration& ground) {
   std::vector<std::string> ids;
-  std::vector<std::vector<Index>> equations;
+  std::vector<std::vector<DofReading>> readings;
   std::vector<std::vector<int>> directions;
   for (Index node : spec.items) {
     ids.push_back(built.model.nodes[static_cast<std::size_t>(node)].id);
     directions.push_back(free_directions(dofs, node, false));
-    std::vector<Index>& per_direction = equations.emplace_back();
-    for (int d : directions.back()) per_direction.push_back(dofs.equation(node, d));
+    std::vector<DofReading>& per_direction = readings.emplace_back();
+    for (int d : directions.back()) per_direction.push_back(reading(dofs, node, d));
   }
-  return std::make_unique<NodeQuantities>(std::move(equations), std::move(directions),
+  return std::make_unique<NodeQuantities>(std::move(readings), std::move(directions),
                                           dofs.dimension(), spec.items, ids, spec.accelerations,
                                           ground);
 }
@@ -72,7 +78,7 @@ std::vector<SpectrumPlace> spectrum_places(const builder::BuiltModel& built,
   for (Index node : nodes)
     for (int d : free_directions(dofs, node, true))
       places.push_back({built.model.nodes[static_cast<std::size_t>(node)].id,
-                        dofs.equation(node, d), node, d,
+                        reading(dofs, node, d), node, d,
                         model::direction(d, dofs.dimension()).symbol});
   return places;
 }
@@ -81,14 +87,14 @@ std::unique_ptr<Quantities> element_quantities(const builder::BuiltModel& built,
                                                const model::DofMap& dofs,
                                                const std::vector<Index>& items) {
   std::vector<std::shared_ptr<const model::Element>> elements;
-  std::vector<std::vector<Index>> equations;
+  std::vector<std::vector<DofReading>> readings;
   for (Index item : items) {
     elements.push_back(built.model.elements[static_cast<std::size_t>(item)]);
-    std::vector<Index>& each = equations.emplace_back();
+    std::vector<DofReading>& each = readings.emplace_back();
     for (const model::ElementDof& dof : elements.back()->dofs())
-      each.push_back(dofs.equation(dof.node, dof.direction));
+      each.push_back(reading(dofs, dof.node, dof.direction));
   }
-  return std::make_unique<ElementQuantities>(std::move(elements), std::move(equations));
+  return std::make_unique<ElementQuantities>(std::move(elements), std::move(readings));
 }
 
 std::unique_ptr<Recorder> make_recorder(const builder::BuiltModel& built,
@@ -135,10 +141,11 @@ void add_point_terms(Index node, const std::array<double, 3>& r, const std::arra
                                     r[1] * n[2] - r[2] * n[1],
                                     r[2] * n[0] - r[0] * n[2],
                                     r[0] * n[1] - r[1] * n[0]};
-  for (int d = 0; d < 6; ++d) {
-    const Index equation = dofs.equation(node, d);
-    if (equation >= 0 && along[static_cast<std::size_t>(d)] != 0.0)
-      terms.push_back({equation, sign * along[static_cast<std::size_t>(d)]});
+  for (int d = 0; d < std::min(6, dofs.dofs_per_node()); ++d) {
+    const double weight = sign * along[static_cast<std::size_t>(d)];
+    if (along[static_cast<std::size_t>(d)] != 0.0)
+      for (const model::DofTerm& term : dofs.terms(node, d))
+        terms.push_back({term.equation, weight * term.coefficient});
   }
 }
 
@@ -146,8 +153,8 @@ void add_point_terms(Index node, const std::array<double, 3>& r, const std::arra
 std::vector<Term> turn_in_plan(Index node, Index reference, const model::DofMap& dofs) {
   std::vector<Term> terms;
   for (const auto& [at, sign] : {std::pair{node, 1.0}, std::pair{reference, -1.0}})
-    if (const Index equation = dofs.equation(at, 5); equation >= 0)
-      terms.push_back({equation, sign});
+    for (const model::DofTerm& term : dofs.terms(at, 5))
+      terms.push_back({term.equation, sign * term.coefficient});
   return terms;
 }
 
@@ -175,14 +182,14 @@ void add_axis_terms(const builder::DriftMonitor& m, const model::DofMap& dofs,
   add_point_terms(m.top, {}, *m.axis, 1.0, dofs, where.drift);
   add_point_terms(m.bottom, {}, *m.axis, -1.0, dofs, where.drift);
   for (int d = 0; d < 3; ++d)
-    where.top_along.emplace_back(dofs.equation(m.top, d), (*m.axis)[static_cast<std::size_t>(d)]);
+    where.top_along.emplace_back(reading(dofs, m.top, d), (*m.axis)[static_cast<std::size_t>(d)]);
 }
 
 std::vector<DriftMonitors::Where> drift_places(const builder::BuiltModel& built,
                                                const model::DofMap& dofs) {
   std::vector<DriftMonitors::Where> places;
   for (const builder::DriftMonitor& m : built.drift_monitors) {
-    places.push_back({dofs.equation(m.bottom, m.direction), dofs.equation(m.top, m.direction),
+    places.push_back({reading(dofs, m.bottom, m.direction), reading(dofs, m.top, m.direction),
                       m.top, m.direction});
     if (m.axis) add_axis_terms(m, dofs, places.back());
     if (!m.corners.empty()) add_plan_terms(m, built.model, dofs, places.back());
@@ -206,7 +213,7 @@ std::vector<JointMonitors::Where> joint_places(const builder::BuiltModel& built,
   for (const builder::JointMonitor& m : built.joint_monitors) {
     places.push_back(
         {system.links().row(m.link), built.model.links[static_cast<std::size_t>(m.link)].gap,
-         system.dofs().equation(m.girder, 0), system.dofs().equation(m.seat, 0), m.girder});
+         reading(system.dofs(), m.girder, 0), reading(system.dofs(), m.seat, 0), m.girder});
     if (m.direction) places.back().movement = point_movement(m, system.dofs());
     if (m.direction) places.back().plan_rotation = turn_in_plan(m.girder, m.seat, system.dofs());
   }

@@ -24,8 +24,7 @@ void SpectrumRecorder::record(const integrators::State& state) {
   const std::size_t per_place = periods_.size() * damping_ratios_.size();
   for (std::size_t p = 0; p < places_.size(); ++p) {
     const SpectrumPlace& place = places_[p];
-    const double acceleration =
-        ground_.absolute(state, place.equation, place.node, place.direction);
+    const double acceleration = ground_.absolute(state, place.reading, place.node, place.direction);
     if (started_ && dt > 0.0)
       for (std::size_t k = p * per_place; k < (p + 1) * per_place; ++k)
         oscillators_[k].advance(previous_[p], acceleration, dt);

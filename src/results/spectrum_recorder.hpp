@@ -11,10 +11,12 @@
 
 namespace pound::results {
 
-// One node direction a spectrum is taken of: its equation (-1 where fixed), node and direction.
+// One node direction a spectrum is taken of: how it is read (no terms where fixed), its node and
+// direction.
 struct SpectrumPlace {
   std::string id;  // the node's
-  Index equation = -1, node = 0;
+  DofReading reading;
+  Index node = 0;
   int direction = 0;         // a translation (model::direction)
   std::string symbol = "x";  // its name in the columns
 };

@@ -110,7 +110,7 @@ BlockBeltPoint run_block_belt(const builder::ModelSpec& base, double dimensionle
   for (int i = 0; i <= block.columns; ++i)
     for (int j = 0; j <= block.rows; ++j) {
       const Index node = built.node_index.at(builder::block_node_id(block, i, j));
-      const Index x = system.dofs().equation(node, 0), y = system.dofs().equation(node, 1);
+      const Index x = system.dofs().own_equation(node, 0), y = system.dofs().own_equation(node, 1);
       block_equations.emplace_back(x, y);
       if (x >= 0) block_mass += mass[x];
     }

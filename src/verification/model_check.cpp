@@ -136,7 +136,9 @@ void check_explicit_steps(const builder::AnalysisSpec& analysis, assembly::Struc
                           ModelCheck& check) {
   const bool lumped = system.lumped_mass() && (system.lumped_mass()->array() > 0.0).all();
   if (!lumped) {
-    check.explicit_unavailable = "a DOF has no lumped mass";
+    check.explicit_unavailable = !system.lumped_mass() && system.dofs().has_ties()
+                                     ? "the constraints couple the masses through lever arms"
+                                     : "a DOF has no lumped mass";
     return;
   }
   try {
@@ -192,8 +194,10 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
   check.dimension = built.model.dimension;
   for (Index node = 0; node < static_cast<Index>(built.model.nodes.size()); ++node)
     for (int d = 0; d < system.dofs().dofs_per_node(); ++d)
-      if (system.dofs().equation(node, d) >= 0)
+      if (system.dofs().own_equation(node, d) >= 0)
         ++check.dofs_by_direction[static_cast<std::size_t>(d)];
+      else if (system.dofs().tied(node, d))
+        ++check.tied_dofs;
   if (with_periods && system.size() <= 4000) {
     try {
       check.periods = assembly::natural_periods(system, 6);

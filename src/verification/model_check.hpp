@@ -39,6 +39,7 @@ struct ModelCheck {
   // The free DOFs per direction: the directions the scene moves in (a shear building in a plane
   // has x and, at its column cuts, rotation, but no y).
   std::array<Index, 6> dofs_by_direction{};
+  Index tied_dofs = 0;  // DOFs a constraint ties to their master (no equations of their own)
   std::vector<double> periods;  // the first six; none above 4000 DOFs or when not asked
   // Central difference's stable step; none without a lumped mass on every DOF.
   std::optional<double> explicit_step_open, explicit_step_contact;

@@ -165,7 +165,7 @@ RodPairNodes::RodPairNodes(const builder::RodPairSpec& pair, const builder::Buil
     out.initial_velocity = rod.initial_velocity;
     for (int i = 0; i <= rod.elements; ++i) {
       out.equation.push_back(
-          dofs.equation(built.node_index.at(builder::rod_node_id(pair, r, i)), 0));
+          dofs.own_equation(built.node_index.at(builder::rod_node_id(pair, r, i)), 0));
       out.x.push_back(r == 0 ? -rod.length + i * out.element_length
                              : pair.gap + i * out.element_length);
     }

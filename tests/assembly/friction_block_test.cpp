@@ -51,7 +51,7 @@ Slide run(const std::string& text) {
   auto integrator = builder::make_integrator(built.analysis);
   integrators::TransientAnalysis analysis(system, *integrator,
                                           builder::make_transient_settings(built.analysis));
-  const Index x = system.dofs().equation(built.node_index.at("block"), 0);
+  const Index x = system.dofs().own_equation(built.node_index.at("block"), 0);
   Slide slide;
   integrators::State state;
   state.velocity = system.initial_velocity(built.model);
@@ -132,7 +132,7 @@ TEST(FrictionBlock, AnElasticBlockOfQuadsDeceleratesAtMuGToo) {
   analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
     double momentum = 0.0, moment = 0.0, total = 0.0;
     for (Index node = 0; node < static_cast<Index>(built.model.nodes.size()); ++node)
-      if (const Index x = system.dofs().equation(node, 0); x >= 0) {
+      if (const Index x = system.dofs().own_equation(node, 0); x >= 0) {
         momentum += mass_vector[x] * s.velocity[x];
         moment += mass_vector[x] * s.displacement[x];
         total += mass_vector[x];
@@ -201,8 +201,8 @@ PlanSlide run_in_plan(const std::string& text) {
   integrators::TransientAnalysis analysis(system, *integrator,
                                           builder::make_transient_settings(built.analysis));
   const Index block = built.node_index.at("block");
-  const Index x = system.dofs().equation(block, 0), y = system.dofs().equation(block, 1),
-              z = system.dofs().equation(block, 2);
+  const Index x = system.dofs().own_equation(block, 0), y = system.dofs().own_equation(block, 1),
+              z = system.dofs().own_equation(block, 2);
   EXPECT_EQ(system.links().rows(0), 3);  // normal, t_1 = x, t_2 = y
   PlanSlide slide;
   integrators::State state;

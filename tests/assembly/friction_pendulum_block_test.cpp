@@ -52,7 +52,7 @@ Swing run(const std::string& text) {
   auto integrator = builder::make_integrator(built.analysis);
   integrators::TransientAnalysis analysis(system, *integrator,
                                           builder::make_transient_settings(built.analysis));
-  const Index x = system.dofs().equation(built.node_index.at("block"), 0);
+  const Index x = system.dofs().own_equation(built.node_index.at("block"), 0);
   Swing swing;
   integrators::State state;
   state.displacement = assembly::static_equilibrium(system, 0.0).displacement;
@@ -153,7 +153,7 @@ TEST(FrictionPendulumBlock, APushSlidesTheBlockToWhereTheDishAndFrictionHoldIt) 
         builder::build(io::parse_model(block_model(mu, weight, push, 0.0, 0.01), "pendulum.json"));
     assembly::StructuralSystem system(built.model);
     const Vector u = assembly::static_equilibrium(system, 0.0).displacement;
-    const double slide = u[system.dofs().equation(built.node_index.at("block"), 0)];
+    const double slide = u[system.dofs().own_equation(built.node_index.at("block"), 0)];
     const double expected = kRadius * (push / weight - mu);
     std::cout << fmt::format("static push under {} W: slide {:.9f} m, closed form {:.9f} m\n",
                              factor, slide, expected);

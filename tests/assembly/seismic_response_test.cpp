@@ -29,7 +29,7 @@ std::vector<double> response(const std::string& text, const model::GroundMotion&
   auto settings = builder::make_transient_settings(built.analysis);
   settings.time_step = dt;
   integrators::TransientAnalysis analysis(system, *integrator, settings);
-  const Index x = system.dofs().equation(built.node_index.at(node), 0);
+  const Index x = system.dofs().own_equation(built.node_index.at(node), 0);
   const long per_sample = std::lround(motion.time_step / dt);
   std::vector<double> history;
   long step = 0;
@@ -107,11 +107,11 @@ TEST(SeismicResponse, DampedFrameMatchesModalSuperposition) {
   const builder::BuiltModel built = builder::build(io::parse_model(text, "frame.json"), {motion});
   const assembly::StructuralSystem system(built.model);
   const assembly::Modes modes = assembly::modal_analysis(system);
-  const Index roof = system.dofs().equation(built.node_index.at("a3"), 0);
+  const Index roof = system.dofs().own_equation(built.node_index.at("a3"), 0);
   // iota: 1 on every x translation.
   Vector influence = Vector::Zero(system.size());
   for (const auto& [id, node] : built.node_index)
-    if (const Index row = system.dofs().equation(node, 0); row >= 0) influence[row] = 1.0;
+    if (const Index row = system.dofs().own_equation(node, 0); row >= 0) influence[row] = 1.0;
   const Vector participation = modes.shapes.transpose() * (system.mass_matrix() * influence);
   std::vector<double> superposed(motion.acceleration.size(), 0.0);
   for (Index k = 0; k < modes.omega_squared.size(); ++k) {

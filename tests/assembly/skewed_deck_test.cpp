@@ -87,8 +87,8 @@ DeckMotion run_deck(const std::string& text) {
   DeckMotion last;
   analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
     for (std::size_t d = 0; d < 3; ++d)
-      last.plan[d] = s.velocity[system.dofs().equation(deck, plan[d])];
-    if (space) last.vertical = s.velocity[system.dofs().equation(deck, 2)];
+      last.plan[d] = s.velocity[system.dofs().own_equation(deck, plan[d])];
+    if (space) last.vertical = s.velocity[system.dofs().own_equation(deck, 2)];
   });
   return last;
 }
@@ -163,9 +163,9 @@ TEST(SkewedDeck, AnOffsetLinkFollowsItsPointsRigidBodyMotion) {
   const Index deck_node = built.node_index.at("deck");
   Vector u = Vector::Zero(system.size());
   const double ux = 1e-3, uy = -2e-3, theta = 4e-4;
-  u[system.dofs().equation(deck_node, 0)] = ux;
-  u[system.dofs().equation(deck_node, 1)] = uy;
-  u[system.dofs().equation(deck_node, 2)] = theta;
+  u[system.dofs().own_equation(deck_node, 0)] = ux;
+  u[system.dofs().own_equation(deck_node, 1)] = uy;
+  u[system.dofs().own_equation(deck_node, 2)] = theta;
   Vector delta;
   system.links().penetration(u, delta);
   double worst = 0.0;

@@ -154,7 +154,7 @@ TEST(StaticEquilibrium, ABlockOnABeltSlipsAtMuWInTheBeltsDirection) {
     StructuralSystem system = block_on_floor(0.0, velocity);
     const StaticEquilibrium solution = static_equilibrium(system, 0.0);
     const double sign = velocity[0] == '-' ? -1.0 : 1.0;
-    const Index x = system.dofs().equation(0, 0), y = system.dofs().equation(0, 1);
+    const Index x = system.dofs().own_equation(0, 0), y = system.dofs().own_equation(0, 1);
     std::cout << fmt::format("block on a belt at {} m/s: u_x - mu W / k = {:.1e}, u_y = {:.1e}\n",
                              velocity, solution.displacement[x] - sign * 0.04905,
                              solution.displacement[y]);
@@ -242,7 +242,7 @@ TEST(StaticEquilibrium, InSpaceAHardFloorsFrictionLimitIsACircle) {
     }
     u = previous + slide(0.5 * (low + high));
   }
-  const Index x = pushed.dofs().equation(0, 0), y = pushed.dofs().equation(0, 1);
+  const Index x = pushed.dofs().own_equation(0, 0), y = pushed.dofs().own_equation(0, 1);
   const Eigen::Vector2d found(slid.displacement[x], slid.displacement[y]);
   const Vector forces = imposed_forces(pushed);
   const Eigen::Vector2d friction(forces[1], forces[2]);

@@ -137,10 +137,10 @@ TEST(StructuralSystem, SupportsRemoveEquations) {
   m.supports = {{.node = 0, .fixed = {true, true}}, {.node = 1, .fixed = {false, true}}};
   const StructuralSystem system(m);
   ASSERT_EQ(system.size(), 1);
-  EXPECT_EQ(system.dofs().equation(0, 0), -1);
-  EXPECT_EQ(system.dofs().equation(0, 1), -1);
-  EXPECT_EQ(system.dofs().equation(1, 0), 0);
-  EXPECT_EQ(system.dofs().equation(1, 1), -1);
+  EXPECT_EQ(system.dofs().own_equation(0, 0), -1);
+  EXPECT_EQ(system.dofs().own_equation(0, 1), -1);
+  EXPECT_EQ(system.dofs().own_equation(1, 0), 0);
+  EXPECT_EQ(system.dofs().own_equation(1, 1), -1);
   EXPECT_NEAR(Matrix(system.stiffness())(0, 0), kAxial * kCos * kCos, 1e-14 * kAxial);
   EXPECT_DOUBLE_EQ((*system.lumped_mass())[0], kHalfMass);
 }
@@ -287,7 +287,7 @@ std::vector<Vector> rigid_motions(const model::Model& m, const model::DofMap& do
     const model::Coordinates& p = m.nodes[static_cast<std::size_t>(node)].position;
     const double rotation[3] = {-p[1], p[0], 1.0};
     for (int d = 0; d < 3; ++d)
-      if (const Index row = dofs.equation(node, d); row >= 0) {
+      if (const Index row = dofs.own_equation(node, d); row >= 0) {
         if (d < 2) motions[static_cast<std::size_t>(d)][row] = 1.0;
         motions[2][row] = rotation[d];
       }

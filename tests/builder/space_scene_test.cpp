@@ -74,7 +74,7 @@ StaticSolution solve_static(const json& model, const Eigen::Vector3d& tip_moment
   const Index tip = static_cast<Index>(built.model.nodes.size()) - 1;
   if (system.dofs().dofs_per_node() == 6)
     for (int axis = 0; axis < 3; ++axis)
-      if (const Index row = system.dofs().equation(tip, 3 + axis); row >= 0)
+      if (const Index row = system.dofs().own_equation(tip, 3 + axis); row >= 0)
         force[row] += tip_moment[axis];
   const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(system.stiffness());
   return {system.dofs(), solver.solve(force)};
@@ -83,7 +83,7 @@ StaticSolution solve_static(const json& model, const Eigen::Vector3d& tip_moment
 Eigen::Vector3d at_node(const StaticSolution& solution, Index node, int first_direction) {
   Eigen::Vector3d value;
   for (int k = 0; k < 3; ++k)
-    value[k] = solution.displacement[solution.dofs.equation(node, first_direction + k)];
+    value[k] = solution.displacement[solution.dofs.own_equation(node, first_direction + k)];
   return value;
 }
 
@@ -199,7 +199,7 @@ TEST(SpaceScene, NodalMassAndRotaryInertiaFillTheirDirections) {
   const assembly::StructuralSystem system(built.model);
   const Vector& mass = *system.lumped_mass();
   const double expected[6] = {7.0, 7.0, 7.0, 1.0, 2.0, 3.0};
-  for (int d = 0; d < 6; ++d) EXPECT_EQ(mass[system.dofs().equation(1, d)], expected[d]) << d;
+  for (int d = 0; d < 6; ++d) EXPECT_EQ(mass[system.dofs().own_equation(1, d)], expected[d]) << d;
   // One number is the same about every axis.
   model["masses"][0]["rotary_inertia"] = 4.0;
   const BuiltModel same = build(io::parse_model(model.dump(), "mass.json"));

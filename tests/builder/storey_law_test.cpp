@@ -59,7 +59,7 @@ std::vector<double> floor_histories(const Json& model) {
   std::vector<Index> floors;
   for (const char* id :
        {"pair.left.f1", "pair.left.f2", "pair.left.f3", "pair.right.f1", "pair.right.f2"})
-    floors.push_back(system.dofs().equation(made.node_index.at(id), 0));
+    floors.push_back(system.dofs().own_equation(made.node_index.at(id), 0));
   std::vector<double> history;
   integrators::State state;
   analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
@@ -119,7 +119,9 @@ TEST(StoreyLaw, PushoverGivesTheStoreyLawLessTheWeightAboveOverTheHeight) {
   model["gravity"] = {{"p_delta", "chord"}};
   const BuiltModel made = built(model);
   assembly::StructuralSystem system(made.model);
-  const auto x = [&](const char* id) { return system.dofs().equation(made.node_index.at(id), 0); };
+  const auto x = [&](const char* id) {
+    return system.dofs().own_equation(made.node_index.at(id), 0);
+  };
   assembly::PushoverControl control{.equation = x("pair.left.f3"), .target = 0.1, .increments = 50};
   control.pattern = Vector::Zero(system.size());
   control.pattern[control.equation] = 1.0;

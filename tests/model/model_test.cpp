@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <cstdio>
 #include <tuple>
@@ -69,8 +70,8 @@ TEST(Model, OnlyNodesOfRotatingElementsHaveARotation) {
   frame.elements = {truss(frame, 0, 2), beam(frame, 1, 2)};
   const DofMap dofs(frame);
   EXPECT_EQ(dofs.size(), 4 * 2 + 2);
-  for (Index node : {0, 3}) EXPECT_EQ(dofs.equation(node, 2), -1) << node;
-  for (Index node : {1, 2}) EXPECT_GE(dofs.equation(node, 2), 0) << node;
+  for (Index node : {0, 3}) EXPECT_EQ(dofs.own_equation(node, 2), -1) << node;
+  for (Index node : {1, 2}) EXPECT_GE(dofs.own_equation(node, 2), 0) << node;
 }
 
 }  // namespace
@@ -113,6 +114,81 @@ TEST(ContactTangents, AreOrthonormalAndMatchThePlaneScenesTangent) {
   }
   std::printf("  contact planes: largest departure from orthonormal %.1e\n", worst);
   EXPECT_LT(worst, 1e-15);
+}
+
+// A rigid beam's tie is the linearised rigid motion: rotating the point r by a small angle t
+// about each axis moves it by (R(t) r - r) / t -> e x r, which is what tie_terms weights the
+// master's rotation by (checked by a central difference of the exact rotation, step 1e-6).
+TEST(Constraints, ARigidTieIsTheLinearisedRigidRotation) {
+  const Coordinates r{1.3, -0.7, 2.1};
+  const Constraint beam{.kind = ConstraintKind::rigid_beam};
+  double worst = 0.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    Eigen::Vector3d unit = Eigen::Vector3d::Zero();
+    unit[axis] = 1.0;
+    const Eigen::Vector3d point(r[0], r[1], r[2]);
+    const double step = 1e-6;
+    const Eigen::Vector3d rate = (Eigen::AngleAxisd(step, unit) * point -
+                                  Eigen::AngleAxisd(-step, unit) * point) /
+                                 (2.0 * step);
+    for (int d = 0; d < 3; ++d) {
+      double weight = 0.0;
+      for (const auto& [master, w] : tie_terms(beam, d, r, 3))
+        if (master == 3 + axis) weight = w;
+      worst = std::max(worst, std::abs(weight - rate[d]));
+    }
+  }
+  std::printf("  rigid-beam weights against the rotation's central difference: %.1e\n", worst);
+  EXPECT_LT(worst, 1e-9);
+  // The slave's own rotation is the master's; a diaphragm keeps the out-of-plane ones free.
+  EXPECT_EQ(tie_terms(beam, 4, r, 3), (std::vector<std::pair<int, double>>{{4, 1.0}}));
+  const Constraint floor{.kind = ConstraintKind::rigid_diaphragm};
+  EXPECT_EQ(tie_terms(floor, 0, r, 3),
+            (std::vector<std::pair<int, double>>{{0, 1.0}, {5, -r[1]}}));
+  EXPECT_EQ(tie_terms(floor, 1, r, 3), (std::vector<std::pair<int, double>>{{1, 1.0}, {5, r[0]}}));
+  for (int d : {2, 3, 4}) EXPECT_TRUE(tie_terms(floor, d, r, 3).empty()) << d;
+  // In a plane the rotation is about z: u_x gains -theta r_y, u_y +theta r_x.
+  EXPECT_EQ(tie_terms(beam, 0, r, 2), (std::vector<std::pair<int, double>>{{0, 1.0}, {2, -r[1]}}));
+  const Constraint bar{.kind = ConstraintKind::rigid_bar};
+  EXPECT_EQ(tie_terms(bar, 0, r, 3), (std::vector<std::pair<int, double>>{{0, 1.0}}));
+  EXPECT_TRUE(tie_terms(bar, 5, r, 3).empty());
+}
+
+// A tied DOF has no equation of its own and reads as its master's terms; free DOFs keep their
+// numbering in node order, fixed ones read as nothing.
+TEST(Constraints, ATiedDofIsItsMastersTerms) {
+  Model m;
+  m.dimension = 3;
+  m.nodes = {{"master", {0.0, 0.0, 3.0}}, {"corner", {2.0, 1.0, 3.0}}, {"other", {5.0, 0.0, 3.0}}};
+  m.supports = {{0, {false, false, true, true, true, false}}};
+  m.constraints = {{.kind = ConstraintKind::rigid_diaphragm, .master = 0, .slaves = {1}}};
+  const DofMap dofs(m);
+  EXPECT_EQ(dofs.dofs_per_node(), 6);
+  EXPECT_TRUE(dofs.has_ties());
+  // master: x, y, rz (it turns for its slaves); corner: z of its own; other: x, y, z.
+  EXPECT_EQ(dofs.size(), 7);
+  const Index x = dofs.own_equation(0, 0), turn = dofs.own_equation(0, 5);
+  EXPECT_EQ(dofs.own_equation(1, 0), -1);
+  EXPECT_TRUE(dofs.tied(1, 0));
+  EXPECT_FALSE(dofs.tied(1, 2));
+  const std::span<const DofTerm> corner_x = dofs.terms(1, 0);
+  ASSERT_EQ(corner_x.size(), 2u);
+  EXPECT_EQ(corner_x[0].equation, x);
+  EXPECT_EQ(corner_x[0].coefficient, 1.0);
+  EXPECT_EQ(corner_x[1].equation, turn);
+  EXPECT_EQ(corner_x[1].coefficient, -1.0);  // -theta r_y
+  EXPECT_TRUE(dofs.terms(0, 2).empty());     // the master's held z
+  EXPECT_EQ(dofs.terms(2, 1).size(), 1u);
+  // Rigid motion: the master moving by (0.1, 0.2) and turning by 0.01 carries the corner to
+  // (0.1 - 0.01 x 1, 0.2 + 0.01 x 2).
+  Vector u = Vector::Zero(dofs.size());
+  u[x] = 0.1;
+  u[dofs.own_equation(0, 1)] = 0.2;
+  u[turn] = 0.01;
+  EXPECT_DOUBLE_EQ(value_of(dofs.terms(1, 0), u), 0.09);
+  EXPECT_DOUBLE_EQ(value_of(dofs.terms(1, 1), u), 0.22);
+  // Nothing turns the corner itself (no element): it has no rotation to tie.
+  EXPECT_TRUE(dofs.terms(1, 5).empty());
 }
 
 }  // namespace

@@ -3,11 +3,13 @@
 
 #include <gtest/gtest.h>
 
+#include "support/dof_readings.hpp"
 #include "support/vectors.hpp"
 
 namespace pound::results {
 namespace {
 
+using testing::dof;
 using testing::entries;
 
 integrators::State state(double time, const Vector& displacement, const Vector& penetration = {}) {
@@ -28,7 +30,7 @@ GroundAcceleration ramp_ground() {
 TEST(DriftMonitors, KeepTheLargestDriftEitherWayAndItsTime) {
   // Storey 1 from a fixed base (-1) to equation 0; storey 2 from equation 0 to equation 1.
   GroundAcceleration ground = ramp_ground();
-  DriftMonitors drifts({{-1, 0, 10}, {0, 1, 11}}, ground);
+  DriftMonitors drifts({{dof(-1), dof(0), 10}, {dof(0), dof(1), 11}}, ground);
   drifts.record(state(0.0, entries({0.0, 0.0})));
   drifts.record(state(0.1, entries({0.25, 0.75})));     // drifts 0.25, 0.5
   drifts.record(state(0.2, entries({-0.5, -0.25})));    // 0.5, 0.25
@@ -43,7 +45,7 @@ TEST(DriftMonitors, KeepTheLargestDriftEitherWayAndItsTime) {
 // The top node's absolute acceleration: relative plus the ground's, largest either way.
 TEST(DriftMonitors, KeepTheTopsLargestAbsoluteAcceleration) {
   GroundAcceleration ground = ramp_ground();
-  DriftMonitors drifts({{-1, 0, 10}}, ground);
+  DriftMonitors drifts({{dof(-1), dof(0), 10}}, ground);
   integrators::State s = state(0.5, entries({0.0}));
   s.acceleration = entries({-4.0});  // absolute -4 + 1 = -3
   drifts.record(s);
@@ -58,9 +60,10 @@ TEST(JointMonitors, OpeningClosingAndSeatMovementFromTheLinkAndTheGirder) {
   // A joint whose link (row 1) has a 0.05 gap; the girder is equation 2, the seat fixed; a
   // second joint on row 0 with its seat on equation 0.
   GroundAcceleration ground = ramp_ground();
-  JointMonitors joints({{.link_row = 1, .gap = 0.05, .girder_x = 2, .seat_x = -1, .girder = 5},
-                        {.link_row = 0, .gap = 0.1, .girder_x = 1, .seat_x = 0, .girder = 4}},
-                       ground);
+  JointMonitors joints(
+      {{.link_row = 1, .gap = 0.05, .girder_x = dof(2), .seat_x = dof(-1), .girder = 5},
+       {.link_row = 0, .gap = 0.1, .girder_x = dof(1), .seat_x = dof(0), .girder = 4}},
+      ground);
   // delta = -(gap) is the joint as built: neither opened nor closed.
   joints.record(state(0.0, entries({0.0, 0.0, 0.0}), entries({-0.1, -0.05})));
   // Joint 1 closes by 0.03 (delta = -0.02), its girder 0.03 along -x; joint 2 opens by 0.01.

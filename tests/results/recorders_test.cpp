@@ -4,11 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include "support/dof_readings.hpp"
 #include "support/vectors.hpp"
 
 namespace pound::results {
 namespace {
 
+using testing::dof;
 using testing::entries;
 
 // Link rows: 0 a frictionless link "joint"; 1 and 2 the normal and tangential rows of "pad".
@@ -56,11 +58,11 @@ TEST(NodeRecorder, WritesDisplacementVelocityAccelerationPerDirectionAndZeroWher
   // Node "top" (7): x is equation 1, y fixed; node "tip" (3): x equation 0 only.
   GroundAcceleration ground = test_ground();
   HistoryRecorder recorder(
-      "nodes.csv", std::make_unique<NodeQuantities>(std::vector<std::vector<Index>>{{1, -1}, {0}},
-                                                    std::vector<std::vector<int>>{{0, 1}, {0}}, 2,
-                                                    std::vector<Index>{7, 3},
-                                                    std::vector<std::string>{"top", "tip"},
-                                                    builder::AccelerationFrame::both, ground));
+      "nodes.csv",
+      std::make_unique<NodeQuantities>(
+          std::vector<std::vector<DofReading>>{{dof(1), dof(-1)}, {dof(0)}},
+          std::vector<std::vector<int>>{{0, 1}, {0}}, 2, std::vector<Index>{7, 3},
+          std::vector<std::string>{"top", "tip"}, builder::AccelerationFrame::both, ground));
   const std::vector<std::string> columns = {"time",        "top.u_x", "top.v_x", "top.a_rel_x",
                                             "top.a_abs_x", "top.u_y", "top.v_y", "top.a_rel_y",
                                             "top.a_abs_y", "tip.u_x", "tip.v_x", "tip.a_rel_x",
@@ -84,9 +86,10 @@ TEST(NodeRecorder, WritesOnlyTheAccelerationsAskedFor) {
        {builder::AccelerationFrame::relative, builder::AccelerationFrame::absolute}) {
     GroundAcceleration ground = test_ground();
     HistoryRecorder recorder(
-        "nodes.csv", std::make_unique<NodeQuantities>(
-                         std::vector<std::vector<Index>>{{0}}, std::vector<std::vector<int>>{{0}},
-                         2, std::vector<Index>{3}, std::vector<std::string>{"tip"}, frame, ground));
+        "nodes.csv",
+        std::make_unique<NodeQuantities>(
+            std::vector<std::vector<DofReading>>{{dof(0)}}, std::vector<std::vector<int>>{{0}}, 2,
+            std::vector<Index>{3}, std::vector<std::string>{"tip"}, frame, ground));
     const bool relative = frame == builder::AccelerationFrame::relative;
     EXPECT_EQ(recorder.table().columns,
               (std::vector<std::string>{"time", "tip.u_x", "tip.v_x",

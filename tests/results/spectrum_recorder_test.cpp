@@ -7,11 +7,13 @@
 
 #include <cmath>
 
+#include "support/dof_readings.hpp"
 #include "support/vectors.hpp"
 
 namespace pound::results {
 namespace {
 
+using testing::dof;
 using testing::entries;
 
 // A ground at rest: the node's absolute acceleration is its relative one.
@@ -45,7 +47,7 @@ const std::vector<double> kDampings = {0.02, 0.05};
 
 TEST(SpectrumRecorder, EqualsTheSpectrumOfTheSameSignalAsARecord) {
   GroundAcceleration ground = still_ground();
-  SpectrumRecorder recorder("floor.csv", {{"roof", 0, 4, 0}}, kPeriods, kDampings, ground);
+  SpectrumRecorder recorder("floor.csv", {{"roof", dof(0), 4, 0}}, kPeriods, kDampings, ground);
   const model::GroundMotion signal = floor_signal();
   for (std::size_t k = 0; k < signal.acceleration.size(); ++k)
     recorder.record(node_state(0.01 * static_cast<double>(k), signal.acceleration[k]));
@@ -73,7 +75,7 @@ model::GroundMotion finer(const model::GroundMotion& signal, int parts) {
 // on a grid 12 times finer (which holds every sub-step time).
 TEST(SpectrumRecorder, StepsOfAnyLengthFollowTheLinearlyInterpolatedSignal) {
   GroundAcceleration ground = still_ground();
-  SpectrumRecorder recorder("floor.csv", {{"roof", 0, 4, 0}}, kPeriods, {0.05}, ground);
+  SpectrumRecorder recorder("floor.csv", {{"roof", dof(0), 4, 0}}, kPeriods, {0.05}, ground);
   const model::GroundMotion signal = floor_signal();
   for (std::size_t k = 0; k < signal.acceleration.size(); ++k) {
     const int parts = k == 0 ? 1 : static_cast<int>(1 + (k * 7) % 4);

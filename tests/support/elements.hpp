@@ -21,7 +21,8 @@ inline Vector element_displacements(const model::DofMap& dofs, const model::Elem
   const std::vector<model::ElementDof> element_dofs = element.dofs();
   Vector local = Vector::Zero(static_cast<Index>(element_dofs.size()));
   for (std::size_t k = 0; k < element_dofs.size(); ++k)
-    if (const Index row = dofs.equation(element_dofs[k].node, element_dofs[k].direction); row >= 0)
+    if (const Index row = dofs.own_equation(element_dofs[k].node, element_dofs[k].direction);
+        row >= 0)
       local[static_cast<Index>(k)] = u[row];
   return local;
 }

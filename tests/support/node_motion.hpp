@@ -23,10 +23,12 @@ inline NodeMotion run_node_motion(const builder::BuiltModel& built,
   auto integrator = builder::make_integrator(built.analysis);
   integrators::TransientAnalysis analysis(system, *integrator,
                                           builder::make_transient_settings(built.analysis));
-  std::vector<Index> equations;
+  std::vector<std::vector<model::DofTerm>> readings;  // a tied DOF through its master's
   for (const std::string& node : nodes)
-    for (const int direction : directions)
-      equations.push_back(system.dofs().equation(built.node_index.at(node), direction));
+    for (const int direction : directions) {
+      const auto terms = system.dofs().terms(built.node_index.at(node), direction);
+      readings.emplace_back(terms.begin(), terms.end());
+    }
   NodeMotion motion;
   integrators::State state;
   state.displacement = Vector::Zero(system.size());
@@ -34,7 +36,7 @@ inline NodeMotion run_node_motion(const builder::BuiltModel& built,
   analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
     motion.time.push_back(s.time);
     std::vector<double> row;
-    for (const Index e : equations) row.push_back(e >= 0 ? s.displacement[e] : 0.0);
+    for (const auto& reading : readings) row.push_back(model::value_of(reading, s.displacement));
     motion.values.push_back(row);
   });
   return motion;

@@ -15,7 +15,7 @@ inline double push_stiffness(const builder::BuiltModel& model, const std::string
                              int direction) {
   assembly::StructuralSystem system(model.model);
   assembly::PushoverControl control{
-      .equation = system.dofs().equation(model.node_index.at(node), direction),
+      .equation = system.dofs().own_equation(model.node_index.at(node), direction),
       .target = 1e-5,
       .increments = 1};
   control.pattern = Vector::Zero(system.size());
