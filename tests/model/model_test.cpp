@@ -128,9 +128,9 @@ TEST(Constraints, ARigidTieIsTheLinearisedRigidRotation) {
     unit[axis] = 1.0;
     const Eigen::Vector3d point(r[0], r[1], r[2]);
     const double step = 1e-6;
-    const Eigen::Vector3d rate = (Eigen::AngleAxisd(step, unit) * point -
-                                  Eigen::AngleAxisd(-step, unit) * point) /
-                                 (2.0 * step);
+    const Eigen::Vector3d rate =
+        (Eigen::AngleAxisd(step, unit) * point - Eigen::AngleAxisd(-step, unit) * point) /
+        (2.0 * step);
     for (int d = 0; d < 3; ++d) {
       double weight = 0.0;
       for (const auto& [master, w] : tie_terms(beam, d, r, 3))
@@ -143,8 +143,7 @@ TEST(Constraints, ARigidTieIsTheLinearisedRigidRotation) {
   // The slave's own rotation is the master's; a diaphragm keeps the out-of-plane ones free.
   EXPECT_EQ(tie_terms(beam, 4, r, 3), (std::vector<std::pair<int, double>>{{4, 1.0}}));
   const Constraint floor{.kind = ConstraintKind::rigid_diaphragm};
-  EXPECT_EQ(tie_terms(floor, 0, r, 3),
-            (std::vector<std::pair<int, double>>{{0, 1.0}, {5, -r[1]}}));
+  EXPECT_EQ(tie_terms(floor, 0, r, 3), (std::vector<std::pair<int, double>>{{0, 1.0}, {5, -r[1]}}));
   EXPECT_EQ(tie_terms(floor, 1, r, 3), (std::vector<std::pair<int, double>>{{1, 1.0}, {5, r[0]}}));
   for (int d : {2, 3, 4}) EXPECT_TRUE(tie_terms(floor, d, r, 3).empty()) << d;
   // In a plane the rotation is about z: u_x gains -theta r_y, u_y +theta r_x.
