@@ -297,11 +297,15 @@ void check_constraint_nodes(const Resolver& resolver, const model::Model& model)
                                         "directly (a tie of a tie is not taken)",
                                         id, master_of->second,
                                         model.nodes[static_cast<std::size_t>(c.master)].id));
-      if (c.kind != model::ConstraintKind::rigid_diaphragm) continue;
       const model::Coordinates& at = model.nodes[static_cast<std::size_t>(c.slaves[i])].position;
+      const double size = std::hypot(at[0] - master[0], at[1] - master[1], at[2] - master[2]);
+      if (!std::isfinite(size))
+        resolver.fail(path, fmt::format("node '{}' is farther from its master than numbers reach "
+                                        "(the lever arm overflows)",
+                                        id));
+      if (c.kind != model::ConstraintKind::rigid_diaphragm) continue;
       const auto n = static_cast<std::size_t>(c.normal);
       const double out = at[n] - master[n];
-      const double size = std::hypot(at[0] - master[0], at[1] - master[1], at[2] - master[2]);
       if (std::abs(out) > 1e-9 * (1.0 + size))
         resolver.fail(
             path, fmt::format("node '{}' is {:.6g} off the diaphragm's plane through "

@@ -291,6 +291,11 @@ TEST(Constraints, TiesThatMeanNothingAreRefusedWithTheirPaths) {
   json off_plane = good;
   off_plane["nodes"][2]["z"] = 3.6;  // top0
   expect_refused(off_plane, "/constraints/0/slaves/0", "off the diaphragm's plane");
+  json far = good;
+  far["nodes"][0]["x"] = -1e308;  // the floor node, and column0 (base0, top0) at the other end
+  far["nodes"][1]["x"] = 1e308;
+  far["nodes"][2]["x"] = 1e308;
+  expect_refused(far, "/constraints/0/slaves/0", "lever arm overflows");
   json moving = good;
   moving["initial_velocities"] = {{{"node", "top1"}, {"y", 0.1}}};
   expect_refused(moving, "/constraints/0", "give the master's velocity");
