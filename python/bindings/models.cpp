@@ -38,7 +38,8 @@ std::string check(const std::optional<std::string>& text, const std::string& pat
   return app::check_findings(load(text, path), path).document.dump();
 }
 
-// The modes' document, their shapes (a row per free DOF, a column per mode) and the DOFs' labels.
+// The modes' document, their shapes (a row per free or tied DOF, a column per mode) and the DOFs'
+// labels.
 std::tuple<std::string, py::array_t<double>, std::vector<std::string>> modes(
     const std::optional<std::string>& text, const std::string& path, int count) {
   if (count < 1) throw std::invalid_argument("count must be 1 or more");

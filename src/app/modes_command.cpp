@@ -30,7 +30,8 @@ stiffness, contact links open), with each mode's effective modal mass in x (and 
 that moves along y) as a fraction of the total: the periods Rayleigh damping is chosen from and
 the ones a time step must resolve. --shapes writes the mode shapes (.csv, or .npy): a row per
 free DOF (label column "dof": <node>.u_x, <node>.u_y, <node>.r_z) and a column per mode,
-mode_1, mode_2, ..., each scaled so that its largest component is +1.
+mode_1, mode_2, ..., each scaled so that its largest component is +1; a DOF a constraint ties
+has its row too, its master's motion there (a rigid floor's corner may pass 1).
 
 options)";
 
@@ -112,14 +113,14 @@ Table shapes_table(const LoadedModel& loaded, const assembly::StructuralSystem& 
   const model::DofMap& dofs = system.dofs();
   for (Index node = 0; node < static_cast<Index>(loaded.built.model.nodes.size()); ++node)
     for (int d = 0; d < dofs.dofs_per_node(); ++d) {
-      const Index row = dofs.own_equation(node, d);
-      if (row < 0) continue;
+      const std::span<const model::DofTerm> terms = dofs.terms(node, d);
+      if (terms.empty()) continue;
       const model::Direction along = model::direction(d, dofs.dimension());
       labels.push_back(fmt::format("{}.{}_{}",
                                    loaded.built.model.nodes[static_cast<std::size_t>(node)].id,
                                    along.rotation ? "r" : "u", "xyz"[along.axis]));
       for (std::size_t m = 0; m < modes.size(); ++m)
-        table.values[m].push_back(modes[m].shape[row] + 0.0);  // no -0
+        table.values[m].push_back(model::value_of(terms, modes[m].shape) + 0.0);  // no -0
     }
   return table;
 }

@@ -906,6 +906,35 @@ TEST_F(Cli, ModesListOnlyTheDirectionsTheSceneMovesInAndWriteTheShapes) {
   EXPECT_NE(over.exit_code, 0);
 }
 
+// A floor tied by a rigid diaphragm: its corners have shape rows too, the floor node's motion
+// there (top3 stands at (6, 4) from it: u_x - 4 theta, u_y + 6 theta); `check` counts them.
+TEST_F(Cli, ModesOfATiedFloorGiveItsCornersShapesAndCheckCountsTheTiedDofs) {
+  const std::string storey = POUND_SOURCE_DIR "/models/diaphragm_storey_3d.json";
+  const Outcome written = pound({"modes", storey, "--shapes", path("tied.csv").string()});
+  ASSERT_EQ(written.exit_code, 0) << written.err;
+  std::map<std::string, std::vector<double>> rows;
+  const std::vector<std::string> lines = read_lines(path("tied.csv"));
+  for (std::size_t r = 1; r < lines.size(); ++r) {
+    std::stringstream row(lines[r]);
+    std::string label, cell;
+    std::getline(row, label, ',');
+    while (std::getline(row, cell, ',')) rows[label].push_back(std::stod(cell));
+  }
+  EXPECT_EQ(rows.size(), 15u);  // the floor's 3, and x, y, rz of each of the four tops
+  double worst = 0.0;
+  for (std::size_t m = 0; m < 3; ++m) {
+    const double x = rows["floor.u_x"][m], y = rows["floor.u_y"][m], turn = rows["floor.r_z"][m];
+    worst = std::max({worst, std::abs(rows["top3.u_x"][m] - (x - 4.0 * turn)),
+                      std::abs(rows["top3.u_y"][m] - (y + 6.0 * turn)),
+                      std::abs(rows["top3.r_z"][m] - turn)});
+  }
+  std::printf("  tied corner's shape against the floor's rigid motion: %.1e\n", worst);
+  EXPECT_LT(worst, 1e-14);
+  const json check = json::parse(pound({"check", storey, "--json"}).out);
+  EXPECT_EQ(check["dofs"], 3);
+  EXPECT_EQ(check["tied_dofs"], 12);
+}
+
 // Issue 16 item 7: `pound check` counts the DOFs along the directions the scene moves in.
 TEST_F(Cli, CheckCountsTheDofsOfEachDirectionTheSceneHas) {
   const Outcome buildings = pound({"check", POUND_SOURCE_DIR "/models/adjacent_buildings.json"});
