@@ -86,6 +86,19 @@ class SparseSolver final : public integrators::LinearSolver {
 // A DOF's terms (model::DofMap::terms): none where fixed, one of coefficient 1 where free.
 using DofTerms = std::span<const model::DofTerm>;
 
+// An element's block over its DOFs' terms, T^T B T, into the equations' triplets (zeros left out).
+void scatter(std::vector<Eigen::Triplet<double>>& into, const Matrix& block,
+             const std::vector<DofTerms>& rows) {
+  for (std::size_t a = 0; a < rows.size(); ++a)
+    for (const model::DofTerm& row : rows[a])
+      for (std::size_t b = 0; b < rows.size(); ++b) {
+        const double value = block(static_cast<Index>(a), static_cast<Index>(b));
+        if (value == 0.0) continue;
+        for (const model::DofTerm& col : rows[b])
+          into.emplace_back(row.equation, col.equation, row.coefficient * col.coefficient * value);
+      }
+}
+
 // The elements' and nodal masses' share of the equations, gathered over the free DOFs (fixed
 // ones dropped) in the model's order: K, M (lumped and consistent parts) and the damping of
 // those that damp on their own, C = sum a0_e M_e + a1_e K_e (the model's a0, a1 for the others).
@@ -108,8 +121,6 @@ struct ElementAssembly {
 
  private:
   model::RayleighDamping coefficients(const std::optional<model::RayleighDamping>& own);
-  void scatter(std::vector<Eigen::Triplet<double>>& into, const Matrix& block,
-               const std::vector<DofTerms>& rows) const;
   void couple(const Matrix& block, const std::vector<model::ElementDof>& dofs,
               const std::vector<DofTerms>& rows);
   void add_mass(DofTerms row, double value, double mass_coefficient);
@@ -161,18 +172,6 @@ model::RayleighDamping ElementAssembly::coefficients(
     const std::optional<model::RayleighDamping>& own) {
   own_damping = own_damping || own.has_value();
   return own.value_or(model_damping_);
-}
-
-void ElementAssembly::scatter(std::vector<Eigen::Triplet<double>>& into, const Matrix& block,
-                              const std::vector<DofTerms>& rows) const {
-  for (std::size_t a = 0; a < rows.size(); ++a)
-    for (const model::DofTerm& row : rows[a])
-      for (std::size_t b = 0; b < rows.size(); ++b) {
-        const double value = block(static_cast<Index>(a), static_cast<Index>(b));
-        if (value == 0.0) continue;
-        for (const model::DofTerm& col : rows[b])
-          into.emplace_back(row.equation, col.equation, row.coefficient * col.coefficient * value);
-      }
 }
 
 // The fixed DOFs are the supports' (a tied DOF is never fixed: the builder refuses supports on
@@ -250,26 +249,28 @@ NodeVector translations(const model::Coordinates& vector, const model::DofMap& d
   return model::over_directions(vector, false, dofs.dimension());
 }
 
-// Adds `vector` at `node` into `into` (a force: through a tied DOF's terms onto its master), or
-// sets it there (a motion: on the node's own DOFs; a tied DOF follows its master's).
-void put_at_node(Vector& into, const model::DofMap& dofs, Index node, const NodeVector& vector,
-                 bool add) {
-  for (int d = 0; d < dofs.dofs_per_node(); ++d) {
-    const double component = vector[static_cast<std::size_t>(d)];
-    if (!add) {
-      if (const Index row = dofs.own_equation(node, d); row >= 0) into[row] = component;
-      continue;
-    }
+// Adds a force at `node` into `into`: through a tied DOF's terms onto its master (with its
+// moment about it).
+void add_force_at_node(Vector& into, const model::DofMap& dofs, Index node,
+                       const NodeVector& force) {
+  for (int d = 0; d < dofs.dofs_per_node(); ++d)
     for (const model::DofTerm& term : dofs.terms(node, d))
-      into[term.equation] += term.coefficient * component;
-  }
+      into[term.equation] += term.coefficient * force[static_cast<std::size_t>(d)];
+}
+
+// Sets a motion at `node` in `into`, on the node's own DOFs (a tied DOF follows its master's).
+void set_motion_at_node(Vector& into, const model::DofMap& dofs, Index node,
+                        const NodeVector& motion) {
+  for (int d = 0; d < dofs.dofs_per_node(); ++d)
+    if (const Index row = dofs.own_equation(node, d); row >= 0)
+      into[row] = motion[static_cast<std::size_t>(d)];
 }
 
 // The constant nodal forces on the free DOFs.
 Vector nodal_loads(const model::Model& model, const model::DofMap& dofs) {
   Vector loads = Vector::Zero(dofs.size());
   for (const model::NodalLoad& load : model.loads)
-    put_at_node(loads, dofs, load.node, translations(load.force, dofs), true);
+    add_force_at_node(loads, dofs, load.node, translations(load.force, dofs));
   return loads;
 }
 
@@ -279,7 +280,7 @@ Vector uniform_influence(const model::Model& model, const model::DofMap& dofs,
   Vector influence = Vector::Zero(dofs.size());
   const NodeVector along = translations(direction, dofs);
   for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
-    put_at_node(influence, dofs, node, along, false);
+    set_motion_at_node(influence, dofs, node, along);
   return influence;
 }
 
@@ -601,14 +602,8 @@ void StructuralSystem::add_geometric_stiffness(const model::Model& model,
       rows.push_back(dofs_.terms(dof.node, dof.direction));
       element_u[static_cast<Index>(rows.size() - 1)] = model::value_of(rows.back(), u);
     }
-    const Matrix k = element->geometric_stiffness(element_u, kind);
-    for (std::size_t a = 0; a < rows.size() && k.size() > 0; ++a)
-      for (const model::DofTerm& row : rows[a])
-        for (std::size_t b = 0; b < rows.size(); ++b)
-          for (const model::DofTerm& col : rows[b])
-            entries.emplace_back(row.equation, col.equation,
-                                 row.coefficient * col.coefficient *
-                                     k(static_cast<Index>(a), static_cast<Index>(b)));
+    if (const Matrix k = element->geometric_stiffness(element_u, kind); k.size() > 0)
+      scatter(entries, k, rows);
   }
   Eigen::SparseMatrix<double> geometric(size(), size());
   geometric.setFromTriplets(entries.begin(), entries.end());
@@ -872,8 +867,8 @@ Vector StructuralSystem::initial_velocity(const model::Model& model) const {
   Vector velocity = Vector::Zero(size());
   if (model.initial_velocity.empty()) return velocity;
   for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
-    put_at_node(velocity, dofs_, node,
-                translations(model.initial_velocity[static_cast<std::size_t>(node)], dofs_), false);
+    set_motion_at_node(velocity, dofs_, node,
+                       translations(model.initial_velocity[static_cast<std::size_t>(node)], dofs_));
   return velocity;
 }
 

@@ -5,12 +5,9 @@
 
 namespace pound::results {
 namespace {
-double value_at(const Vector& v, const DofReading& reading) { return model::value_of(reading, v); }
-
+// A sum of terms; +0, never -0, where it vanishes (as the summaries have always written it).
 double sum_of(const std::vector<Term>& terms, const Vector& v) {
-  double sum = 0.0;
-  for (const Term& term : terms) sum += term.coefficient * v[term.equation];
-  return sum;
+  return 0.0 + model::value_of(terms, v);
 }
 
 // The largest corner drift and the twist of a storey (3-D floors).
@@ -35,8 +32,8 @@ void DriftMonitors::record(const integrators::State& state) {
   for (std::size_t k = 0; k < storeys_.size(); ++k) {
     const Where& w = storeys_[k];
     DriftPeak& p = peaks_[k];
-    const double signed_drift = w.drift.empty() ? value_at(state.displacement, w.top) -
-                                                      value_at(state.displacement, w.bottom)
+    const double signed_drift = w.drift.empty() ? model::value_of(w.top, state.displacement) -
+                                                      model::value_of(w.bottom, state.displacement)
                                                 : sum_of(w.drift, state.displacement);
     p.residual_drift = signed_drift;
     if (std::abs(signed_drift) > p.peak_drift) {
@@ -70,7 +67,8 @@ void JointMonitors::record(const integrators::State& state) {
     p.residual_opening = -closing;
     double movement = 0.0;
     if (w.movement.empty())
-      movement = value_at(state.displacement, w.girder_x) - value_at(state.displacement, w.seat_x);
+      movement = model::value_of(w.girder_x, state.displacement) -
+                 model::value_of(w.seat_x, state.displacement);
     movement += sum_of(w.movement, state.displacement);
     p.peak_seat_movement = std::max(p.peak_seat_movement, std::abs(movement));
     p.peak_plan_rotation =

@@ -33,6 +33,12 @@ std::unique_ptr<Quantities> link_quantities(const builder::BuiltModel& built,
   return std::make_unique<LinkQuantities>(rows, ids);
 }
 
+// Appends weight x a DOF's terms to a sum of terms.
+void add_scaled(std::vector<Term>& into, std::span<const model::DofTerm> terms, double weight) {
+  for (const model::DofTerm& term : terms)
+    into.push_back({term.equation, weight * term.coefficient});
+}
+
 // How (node, direction) is read: through its terms (none where fixed).
 DofReading reading(const model::DofMap& dofs, Index node, int direction) {
   const std::span<const model::DofTerm> terms = dofs.terms(node, direction);
@@ -142,10 +148,8 @@ void add_point_terms(Index node, const std::array<double, 3>& r, const std::arra
                                     r[2] * n[0] - r[0] * n[2],
                                     r[0] * n[1] - r[1] * n[0]};
   for (int d = 0; d < std::min(6, dofs.dofs_per_node()); ++d) {
-    const double weight = sign * along[static_cast<std::size_t>(d)];
     if (along[static_cast<std::size_t>(d)] != 0.0)
-      for (const model::DofTerm& term : dofs.terms(node, d))
-        terms.push_back({term.equation, weight * term.coefficient});
+      add_scaled(terms, dofs.terms(node, d), sign * along[static_cast<std::size_t>(d)]);
   }
 }
 
@@ -153,8 +157,7 @@ void add_point_terms(Index node, const std::array<double, 3>& r, const std::arra
 std::vector<Term> turn_in_plan(Index node, Index reference, const model::DofMap& dofs) {
   std::vector<Term> terms;
   for (const auto& [at, sign] : {std::pair{node, 1.0}, std::pair{reference, -1.0}})
-    for (const model::DofTerm& term : dofs.terms(at, 5))
-      terms.push_back({term.equation, sign * term.coefficient});
+    add_scaled(terms, dofs.terms(at, 5), sign);
   return terms;
 }
 
