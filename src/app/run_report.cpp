@@ -20,6 +20,17 @@ std::string yielded_line(const results::LinkResult& link) {
                                : std::string());
 }
 
+// A bearing whose coupled shear yielded: the resultant's peak and residual, and what it
+// dissipated.
+std::string shear_line(const results::LinkResult& link) {
+  const results::ShearSummary& s = *link.summary.shear;
+  return fmt::format(
+      "  {} {} yielded in shear: peak {:.4g} ({:.2f} x yield), residual {:.4g}, hysteretic "
+      "energy {:.6g}\n",
+      link.shear->law, link.id, s.peak_deformation, link.shear_ductility().value_or(0.0),
+      s.final_deformation, link.shear_hysteretic_energy().value_or(0.0));
+}
+
 // Contacts and restrainers one line each; yielded springs and hinges one line each; the other
 // structural springs (bearings) in one line.
 std::string link_lines(const results::RunSummary& run) {
@@ -34,6 +45,9 @@ std::string link_lines(const results::RunSummary& run) {
         spring_force = std::max({spring_force, s.peak_force, s.peak_tension});
         if (link.yield_deformation && link.peak_deformation() > *link.yield_deformation)
           text += yielded_line(link);
+        if (link.shear_ductility().value_or(0.0) > 1.0) text += shear_line(link);
+        if (link.summary.shear)
+          spring_force = std::max(spring_force, link.summary.shear->peak_force);
         break;
       case links::LinkRole::tension:
         text += fmt::format("  {} {}: taut {} time(s), peak tension {:.6g}, peak opening {:.4g}\n",

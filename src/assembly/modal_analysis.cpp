@@ -14,22 +14,15 @@ namespace pound::assembly {
 
 namespace {
 
-// Each link's initial tangent (penetration -gap, at rest), on a copy of its law.
-double initial_tangent(const integrators::LinkSet& links, Index k) {
-  return links.law(k).clone()->set_trial({-links.gaps()[links.row(k)], 0.0, 0.0}).stiffness;
-}
-
-// K with every link at its initial tangent.
+// K with every link row at its initial tangent (penetration -gap, at rest).
 Matrix stiffness_with_links(const StructuralSystem& system) {
   Matrix stiffness = Matrix(system.stiffness());
   const integrators::LinkSet& links = system.links();
   const Matrix connectivity = Matrix(links.connectivity());
-  for (Index k = 0; k < links.count(); ++k) {
-    const Index row = links.row(k);
-    const double tangent = initial_tangent(links, k);
-    if (tangent != 0.0)
-      stiffness += tangent * connectivity.row(row).transpose() * connectivity.row(row);
-  }
+  const Vector tangent = links.rest_stiffness();
+  for (Index row = 0; row < links.size(); ++row)
+    if (tangent[row] != 0.0)
+      stiffness += tangent[row] * connectivity.row(row).transpose() * connectivity.row(row);
   return stiffness;
 }
 
@@ -77,13 +70,12 @@ Condensed condense(const Matrix& stiffness, const std::vector<Index>& with_mass,
 Vector stiffness_diagonal_with_links(const StructuralSystem& system) {
   Vector diagonal = system.stiffness().diagonal();
   const integrators::LinkSet& links = system.links();
-  for (Index k = 0; k < links.count(); ++k) {
-    const double tangent = initial_tangent(links, k);
-    if (tangent == 0.0) continue;
-    for (integrators::LinkSet::SparseRowMatrix::InnerIterator term(links.connectivity(),
-                                                                   links.row(k));
-         term; ++term)
-      diagonal[term.col()] += tangent * term.value() * term.value();
+  const Vector tangent = links.rest_stiffness();
+  for (Index row = 0; row < links.size(); ++row) {
+    if (tangent[row] == 0.0) continue;
+    for (integrators::LinkSet::SparseRowMatrix::InnerIterator term(links.connectivity(), row); term;
+         ++term)
+      diagonal[term.col()] += tangent[row] * term.value() * term.value();
   }
   return diagonal;
 }

@@ -294,8 +294,8 @@ NodeVector normal_direction(const model::Link& link, int dimension) {
   return model::over_directions(link.axis, false, dimension);
 }
 std::vector<model::Coordinates> tangents(const model::Link& link, int dimension) {
-  return link.friction ? model::contact_tangents(link.axis, dimension)
-                       : std::vector<model::Coordinates>{};
+  return link.friction || link.shear ? model::contact_tangents(link.axis, dimension)
+                                     : std::vector<model::Coordinates>{};
 }
 
 // A row's direction over the DOFs of node i and of node j (the same unless the ends are offset).
@@ -363,13 +363,14 @@ links::StickPenalty stick_penalty(const links::LinkLaw& law, const model::LinkFr
           friction.stick_damping.value_or(touch.damping), friction.stick_mass.value_or(touch.mass)};
 }
 
-// A link's rows and gap, with its law, inside a Coulomb friction law when it has friction.
+// A link's rows and gap, with its law, inside a Coulomb friction law when it has friction or a
+// bearing's coupled shear when it has one.
 integrators::LinkSet::Link link_entry(const model::DofMap& dofs, const model::Link& link,
                                       std::unique_ptr<links::LinkLaw> law) {
   integrators::LinkSet::Link entry;
   entry.normal_row = link_row(dofs, link, row_directions(link, link.axis, dofs.dimension()));
   entry.gap = link.gap;
-  if (!link.friction) {
+  if (!link.friction && !link.shear) {
     entry.law = std::move(law);
     return entry;
   }
@@ -377,6 +378,11 @@ integrators::LinkSet::Link link_entry(const model::DofMap& dofs, const model::Li
   for (const model::Coordinates& tangent : along)
     entry.tangential_rows.push_back(
         link_row(dofs, link, row_directions(link, tangent, dofs.dimension())));
+  if (link.shear) {
+    entry.shear = std::make_unique<links::CoupledShear>(std::move(law), link.shear->numbers,
+                                                        static_cast<int>(along.size()));
+    return entry;
+  }
   const links::StickPenalty stick = stick_penalty(*law, *link.friction);
   entry.friction = std::make_unique<links::CoulombFriction>(
       std::move(law), link.friction->coefficient, stick, link.friction->radius,
@@ -442,16 +448,6 @@ Vector attached_link_coefficients(const std::vector<LinkRowGeometry>& rows, Inde
   return direct;
 }
 
-// k_0 of every link row: its normal law's stiffness at rest (tangential rows: 0).
-Vector initial_link_tangent(const integrators::LinkSet& links) {
-  Vector tangent = Vector::Zero(links.size());
-  for (Index k = 0; k < links.count(); ++k) {
-    const Index row = links.row(k);
-    tangent[row] = links.law(k).clone()->set_trial({-links.gaps()[row], 0.0, 0.0}).stiffness;
-  }
-  return tangent;
-}
-
 // K + B^T k_0 B: the structure held by its links at rest; DOFs nothing holds even then (a
 // backwall behind open backfill) are regularised with 1e-12 of the largest diagonal.
 Eigen::SparseMatrix<double> held_by_links(const Eigen::SparseMatrix<double>& stiffness,
@@ -492,7 +488,7 @@ class SupportInfluence {
 
 SupportInfluence::SupportInfluence(const Eigen::SparseMatrix<double>& stiffness,
                                    const integrators::LinkSet& links)
-    : b_(Matrix(links.connectivity())), initial_tangent_(initial_link_tangent(links)) {
+    : b_(Matrix(links.connectivity())), initial_tangent_(links.rest_stiffness()) {
   held_factor_.compute(held_by_links(stiffness, links, initial_tangent_));
   if (held_factor_.info() != Eigen::Success)
     throw InputError("", "/excitations",
@@ -590,7 +586,7 @@ void StructuralSystem::store_stiffness_for_products() {
 // structure that K + K_G no longer holds has passed its elastic buckling load under gravity.
 void StructuralSystem::add_geometric_stiffness(const model::Model& model,
                                                model::GeometricStiffness kind) {
-  const Vector initial_tangent = initial_link_tangent(links_);
+  const Vector initial_tangent = links_.rest_stiffness();
   const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> gravity_state(
       held_by_links(stiffness_, links_, initial_tangent));
   const Vector u = gravity_state.solve(loads_);

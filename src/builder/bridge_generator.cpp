@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "builder/generators.hpp"
+#include "links/coupled_shear.hpp"
 
 namespace pound::builder {
 namespace {
@@ -130,6 +131,17 @@ std::vector<double> end_normal(const Bridge& bridge, double sign, double station
   return {sign * std::cos(skew), sign * std::sin(skew), 0.0};
 }
 
+// In space, one link per bearing carrying the law in both horizontal directions, coupled (its
+// axis up from the girder to the seat, so its tangents are x and y): unless asked not to, where
+// the law has the coupled form and no friction acts beside it.
+bool coupled_bearings(const Bridge& bridge, const ModelSpec& out) {
+  const GirderBridgeSpec& spec = bridge.spec;
+  if (!bridge.space || !spec.bearing || spec.bearing_friction) return false;
+  if (spec.bearing_coupled) return *spec.bearing_coupled;
+  const std::string path = fmt::format("/generators/{}/bearing", spec.generator_index);
+  return links::CoupledShear::numbers_of(*spec.bearing, {out.source, path}).has_value();
+}
+
 // A girder node sits on a seat: a horizontal bearing (the user's law) and a vertical one. A
 // sliding bearing's vertical link is a contact pointing down from the girder to the seat, so
 // that the girder's weight presses it (R_n > 0) and its tangent, n turned by +90 degrees, is +x:
@@ -148,6 +160,13 @@ void add_bearing(const Bridge& bridge, const std::string& girder, const std::str
                   elastic(spec.bearing_vertical_stiffness * spacing * spacing / 4.0));
     twist.rotational = true;
     out.links.push_back(std::move(twist));
+  }
+  if (coupled_bearings(bridge, out)) {
+    LinkSpec bearing = make_link(girder + ".bearing", girder, seat, upward(bridge, 1.0), 0.0,
+                                 elastic(spec.bearing_vertical_stiffness));
+    bearing.shear = spec.bearing;
+    out.links.push_back(std::move(bearing));
+    return;
   }
   if (spec.bearing) {
     out.links.push_back(make_link(girder + ".bearing_x", girder, seat, along(bridge, 1.0, station),

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "links/coupled_shear.hpp"
 #include "links/law_registry.hpp"
 #include "links/stiffness_damping.hpp"
 
@@ -154,6 +155,15 @@ void resolve_friction(const LinkPlace& place, model::Link& link) {
                                       friction.stick_damping, friction.stick_mass, friction.radius};
 }
 
+// A bearing's coupled shear, from its uniaxial law's numbers (the schema checked it has them).
+void resolve_shear(const LinkPlace& place, model::Link& link) {
+  const LawSpec& shear = *place.spec.shear;
+  const std::optional<links::ShearNumbers> numbers =
+      links::CoupledShear::numbers_of(shear, {place.resolver.spec().source, place.path + "/shear"});
+  if (!numbers) place.fail("/shear/type", fmt::format("a {} has no coupled form", shear.type));
+  link.shear = model::LinkShear{shear.type, *numbers};
+}
+
 // Link k's JSON path: its entry in "links", or its generator's.
 Origin link_origin(const Resolver& resolver) {
   return origin_of(resolver.user_spec().links.size(), "links",
@@ -173,6 +183,7 @@ model::Link resolve_link(const LinkPlace& place) {
   resolve_axis(place, link);
   resolve_law(place, link);
   if (spec.friction) resolve_friction(place, link);
+  if (spec.shear) resolve_shear(place, link);
   return link;
 }
 

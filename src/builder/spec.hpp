@@ -128,6 +128,9 @@ struct LinkSpec {
   std::optional<std::vector<double>> axis;  // unit vector from i to j; default from coordinates
   LawSpec law;
   std::optional<FrictionSpec> friction;
+  // A bearing's shear across the axis, its two directions coupled (links/coupled_shear.hpp); the
+  // link's law is then its axial law. Never with friction.
+  std::optional<LawSpec> shear;
   // Rigid offsets [L] from node i and node j to the points that touch (global axes; z = 0 in a
   // plane): a deck corner or a floor corner rigidly tied to the node at its centre.
   std::optional<std::array<std::array<double, 3>, 2>> offsets;
@@ -382,6 +385,10 @@ struct GirderBridgeSpec {
   // Sliding bearings: the vertical link is then compression-only and carries this friction
   // (a friction pendulum with a radius), in parallel with `bearing` if that is given too.
   std::optional<FrictionSpec> bearing_friction;
+  // 3-D: the bearing law's two horizontal directions coupled (a circular yield surface, one link
+  // `.bearing`) or each on its own (`.bearing_x`, `.bearing_y`); none: coupled where the law has
+  // a coupled form (links/coupled_shear.hpp) and there is no bearing_friction.
+  std::optional<bool> bearing_coupled;
   // 3-D scenes: the deck's width and skew (the angle of its ends and of the supports' lines from
   // the transverse axis, positive counter-clockwise in plan) [deg]; pounding at `contact_points`
   // points along each deck end (2: its corners; 1: its centre); shear keys at the abutments.

@@ -41,9 +41,12 @@ LinkSet::LinkSet(Index dofs, std::vector<Link> links) : links_(std::move(links))
   for (const Link& link : links_) {
     first_row_.push_back(rows);
     add_row(link.normal_row, link.gap);
-    if (link.friction && static_cast<int>(link.tangential_rows.size()) != link.friction->tangents())
+    const int tangents = link.friction ? link.friction->tangents()
+                         : link.shear  ? link.shear->tangents()
+                                       : 0;
+    if (static_cast<int>(link.tangential_rows.size()) != tangents || (link.friction && link.shear))
       throw std::invalid_argument(
-          "a friction link needs one tangential row per tangent of its law");
+          "a friction or shear link needs one tangential row per tangent of its law");
     for (const std::vector<Term>& tangential : link.tangential_rows) add_row(tangential, 0.0);
   }
   connectivity_.resize(rows, dofs);
@@ -113,20 +116,23 @@ void LinkSet::evaluate(const Vector& delta, const Vector& rate, const Vector& ac
   for (std::size_t k = 0; k < links_.size(); ++k) {
     const Index n = first_row_[k];
     const links::LinkKinematics normal{delta[n], rate[n], acceleration[n]};
-    if (!links_[k].friction) {
-      const links::LawResponse response = links_[k].law->set_trial(normal);
+    const Link& link = links_[k];
+    if (!link.friction && !link.shear) {
+      const links::LawResponse response = link.law->set_trial(normal);
       force[n] = response.force;
       tangent(n, n) = total(response);
       continue;
     }
-    const auto tangents = links_[k].tangential_rows.size();
+    const auto tangents = link.tangential_rows.size();
     std::array<links::LinkKinematics, links::kMaxTangents> slide;
     for (std::size_t a = 0; a < tangents; ++a) {
       const Index t = n + 1 + static_cast<Index>(a);
       slide[a] = {delta[t], rate[t], acceleration[t]};
     }
-    const links::FrictionResponse response =
-        links_[k].friction->set_trial(normal, std::span(slide.data(), tangents));
+    const std::span<const links::LinkKinematics> slides(slide.data(), tangents);
+    const links::FrictionResponse response = link.friction
+                                                 ? link.friction->set_trial(normal, slides)
+                                                 : link.shear->set_trial(normal, slides);
     force[n] = response.normal.force;
     tangent(n, n) = total(response.normal);
     for (std::size_t a = 0; a < tangents; ++a) {
@@ -150,6 +156,8 @@ void LinkSet::commit() {
   for (Link& link : links_) {
     if (link.friction)
       link.friction->commit();
+    else if (link.shear)
+      link.shear->commit();
     else
       link.law->commit();
   }
@@ -159,6 +167,8 @@ void LinkSet::revert() {
   for (Link& link : links_) {
     if (link.friction)
       link.friction->revert();
+    else if (link.shear)
+      link.shear->revert();
     else
       link.law->revert();
   }
@@ -167,8 +177,7 @@ void LinkSet::revert() {
 std::vector<char> LinkSet::impulsive_hard_contact_rows(const Vector* lumped_mass) const {
   std::vector<char> rows(static_cast<std::size_t>(size()), 0);
   for (std::size_t k = 0; k < links_.size(); ++k) {
-    const Link& link = links_[k];
-    if (!(link.friction ? link.friction->normal_law() : *link.law).is_hard_contact()) continue;
+    if (!law(static_cast<Index>(k)).is_hard_contact()) continue;
     const Index first = first_row_[k], last = first + LinkSet::rows(static_cast<Index>(k));
     bool massive = true;
     if (lumped_mass)
@@ -212,7 +221,19 @@ LinkSet::HardRows LinkSet::hard_rows() {
 
 const links::LinkLaw& LinkSet::law(Index link) const {
   const Link& entry = links_[static_cast<std::size_t>(link)];
+  if (entry.shear) return entry.shear->normal_law();
   return entry.friction ? entry.friction->normal_law() : *entry.law;
+}
+
+Vector LinkSet::rest_stiffness() const {
+  Vector stiffness = Vector::Zero(size());
+  for (Index k = 0; k < count(); ++k) {
+    const Index row = LinkSet::row(k);
+    stiffness[row] = law(k).clone()->set_trial({-gaps_[row], 0.0, 0.0}).stiffness;
+    if (const links::CoupledShear* bearing = shear(k))
+      stiffness.segment(row + 1, bearing->tangents()).setConstant(bearing->numbers().stiffness);
+  }
+  return stiffness;
 }
 
 }  // namespace pound::integrators

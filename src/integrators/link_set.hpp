@@ -12,6 +12,7 @@
 
 #include "core/types.hpp"
 #include "links/coulomb_friction.hpp"
+#include "links/coupled_shear.hpp"
 #include "links/link_law.hpp"
 
 namespace pound::integrators {
@@ -26,11 +27,12 @@ class LinkSet {
   struct Link {
     std::vector<Term> normal_row;
     double gap = 0.0;
-    std::unique_ptr<links::LinkLaw> law;  // without friction
-    // With friction: the tangential rows (one per tangent of the friction law) and the friction
-    // law, which owns the normal law.
+    std::unique_ptr<links::LinkLaw> law;  // without friction or a shear
+    // With friction or a shear: the tangential rows (one per tangent of the law) and the
+    // friction law or the bearing's coupled shear, which owns the normal law.
     std::vector<std::vector<Term>> tangential_rows;
     std::unique_ptr<links::CoulombFriction> friction;
+    std::unique_ptr<links::CoupledShear> shear;
   };
 
   LinkSet(Index dofs, std::vector<Link> links);
@@ -44,6 +46,9 @@ class LinkSet {
   Index row(Index link) const { return first_row_[static_cast<std::size_t>(link)]; }
   bool has_friction(Index link) const {
     return links_[static_cast<std::size_t>(link)].friction != nullptr;
+  }
+  const links::CoupledShear* shear(Index link) const {
+    return links_[static_cast<std::size_t>(link)].shear.get();
   }
   // A link's rows: its normal row, then its tangential ones.
   Index rows(Index link) const {
@@ -83,11 +88,16 @@ class LinkSet {
   // Friction links: CoulombFriction::anchor_at_rest with their committed tangential forces.
   void anchor_friction_at_rest(const Vector& force);
 
-  // The normal law of a link (for a link with friction, the one inside it).
+  // Each row's own stiffness at rest, on copies of the laws: a normal row's law at delta = -gap,
+  // a shear's k; 0 on friction's tangential rows (whose stick needs a contact).
+  Vector rest_stiffness() const;
+
+  // The normal law of a link (for a link with friction or a shear, the one inside it).
   const links::LinkLaw& law(Index link) const;
   // The hard contact of a link (with friction, its normal law); none for a force law.
   links::HardContact* hard_contact(Index link) {
     const Link& entry = links_[static_cast<std::size_t>(link)];
+    if (entry.shear) return nullptr;  // the builder gives a shear a force law
     return entry.friction ? entry.friction->hard_contact() : entry.law->hard_contact();
   }
   // The constraints by row, for the integrators that find their forces: a hard contact on its

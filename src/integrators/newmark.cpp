@@ -486,17 +486,18 @@ void Newmark::solve_correction(const Factorization& f) {
   correction_ = residual_;
   active_rows_.clear();
   moved_rows_.clear();
-  // The other rows of r's link (a friction link's), whose tangents T(r, q) couple into row r.
-  const auto others = [&](Index r, auto&& visit) {
-    if (!link_blocks_) return;
-    const LinkRows& rows = link_rows_[static_cast<std::size_t>(r)];
-    for (Index q = rows.first; q < rows.end; ++q)
-      if (q != r && tangent_(r, q) != 0.0) visit(q);
-  };
+  row_coupling_.resize(static_cast<std::size_t>(m));
   for (Index r = 0; r < m; ++r) {
-    bool coupled = false;
-    others(r, [&](Index) { coupled = true; });
-    if (tangent_(r, r) != 0.0 || coupled || hard_slipping_[static_cast<std::size_t>(r)])
+    // The other rows of r's link (a friction link's or a shear's) whose tangents couple into it.
+    RowCoupling& coupled = row_coupling_[static_cast<std::size_t>(r)];
+    coupled.count = 0;
+    if (link_blocks_) {
+      const LinkRows& rows = link_rows_[static_cast<std::size_t>(r)];
+      for (Index q = rows.first; q < rows.end; ++q)
+        if (q != r && tangent_(r, q) != 0.0)
+          coupled.rows[static_cast<std::size_t>(coupled.count++)] = q;
+    }
+    if (tangent_(r, r) != 0.0 || coupled.count > 0 || hard_slipping_[static_cast<std::size_t>(r)])
       active_rows_.push_back(r);
     else if (residual_[r] != 0.0)
       moved_rows_.push_back(r);
@@ -506,7 +507,11 @@ void Newmark::solve_correction(const Factorization& f) {
   // Row r of T G: T(r, r) G(r, :) + the sum of T(r, q) G(q, :) over the other rows of its link.
   const auto jacobian_entry = [&](Index r, Index c) {
     double entry = tangent_(r, r) * f.coupling(r, c);
-    others(r, [&](Index q) { entry += tangent_(r, q) * f.coupling(q, c); });
+    const RowCoupling& coupled = row_coupling_[static_cast<std::size_t>(r)];
+    for (int k = 0; k < coupled.count; ++k) {
+      const Index q = coupled.rows[static_cast<std::size_t>(k)];
+      entry += tangent_(r, q) * f.coupling(q, c);
+    }
     return entry;
   };
   reduced_residual_.resize(size);

@@ -196,9 +196,16 @@ class Newmark final : public Integrator {
     Index first = 0, end = 0;
   };
   std::vector<LinkRows> link_rows_;
-  bool link_blocks_ = false;             // any link with more than one row
-  std::vector<Index> active_rows_;       // link rows with a tangent, in order
-  std::vector<Index> moved_rows_;        // the others with a residual
+  bool link_blocks_ = false;        // any link with more than one row
+  std::vector<Index> active_rows_;  // link rows with a tangent, in order
+  std::vector<Index> moved_rows_;   // the others with a residual
+  // The other rows q of a row's link whose tangent T(r, q) couples into row r (a friction link's
+  // or a bearing's shear), found once per correction.
+  struct RowCoupling {
+    std::array<Index, links::kMaxTangents> rows{};
+    int count = 0;
+  };
+  std::vector<RowCoupling> row_coupling_;
   std::vector<double> active_tangents_;  // T(r, r), slip, T(r, q) of each active row
   // What jacobian_lu_ holds: the factorisation's id, the rows and their tangents.
   long factorization_count_ = 0, factored_id_ = 0;

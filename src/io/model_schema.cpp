@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "links/coupled_shear.hpp"
 #include "model/direction.hpp"
 
 namespace pound::io {
@@ -459,6 +460,33 @@ Field<LinkSpec> link_rayleigh_role() {
   });
 }
 
+// A shear link is a bearing: a force law along its axis, one law on its tangential rows, and one
+// that has a coupled form.
+Field<LinkSpec> shear_rules() {
+  return rule<LinkSpec>([](JsonObject& object, LinkSpec& link, Context&) {
+    if (!link.shear) return;
+    const auto refuse = [&](const std::string& key, const std::string& why) {
+      object.at(key).fail(why);
+    };
+    if (link.friction) refuse("friction", "a link has friction or a bearing's shear, not both");
+    if (link.rotational) refuse("dof", "a bearing's shear acts on translations: not a rotation");
+    if (link.rayleigh)
+      refuse("rayleigh",
+             "Rayleigh damping of a shear link is not available: a bearing's shear has none");
+    const links::LawEntry* axial = links::find_law(link.law.type);
+    if (axial && axial->traits.constraint)
+      refuse("law",
+             fmt::format("a shear link's axial law must be a force law, not a {}", link.law.type));
+    const JsonValue shear = object.at("shear");
+    if (!links::CoupledShear::numbers_of(*link.shear, {shear.file(), shear.path()}))
+      JsonObject(shear).at("type").fail(fmt::format(
+          "a bearing's shear couples its two directions as bilinear_spring, lead_rubber, "
+          "elastic_perfectly_plastic or elastic_spring can; a {} cannot (give it along each "
+          "direction as links of their own)",
+          link.shear->type));
+  });
+}
+
 // A surface or a contact is not a bearing: a radius there would give every touching node its
 // own dish, which no structure has.
 template <class Spec>
@@ -548,10 +576,16 @@ const Fields<LinkSpec>& link_fields() {
       }),
       optional("friction", &LinkSpec::friction, friction_object(),
                "Coulomb friction: along the tangent in a plane, in the contact plane in 3-D"),
+      optional("shear", &LinkSpec::shear, Law{LawPlace::link, "a bearing's shear"},
+               "a bearing's shear law across the axis, along the friction's tangents, its two "
+               "directions coupled in 3-D (a circular yield surface); `law` is then the axial "
+               "law. bilinear_spring, lead_rubber, elastic_perfectly_plastic or elastic_spring")
+          .in_dimensions(2, 3),
       optional("rayleigh", &LinkSpec::rayleigh,
                Object<builder::LinkRayleighSpec>{link_rayleigh_fields(), Docs::own_table},
                "stiffness-proportional damping a1·k·δ̇ of a spring or hinge (none without it)"),
       link_rayleigh_role(),
+      shear_rules(),
   };
   return fields;
 }
@@ -935,6 +969,30 @@ const Fields<GirderBridgeSpec>& girder_bridge_fields() {
                "sliding bearings: the vertical bearing becomes a compression-only gap_spring "
                "that carries this friction (with a radius: a friction pendulum); the friction "
                "follows its normal force, so the girders need their weight (\"gravity\")"),
+      optional("bearing_interaction", &GirderBridgeSpec::bearing_coupled,
+               Choice<bool>{{{"circular", true}, {"none", false}}},
+               "circular: the bearing law's two horizontal directions coupled, yielding on a "
+               "circle (one link `.bearing`); none: each direction on its own (`.bearing_x`, "
+               "`.bearing_y`)")
+          .in_space()
+          .default_text("circular, for a law that has the coupled form and no bearing_friction"),
+      rule<GirderBridgeSpec>([](JsonObject& object, GirderBridgeSpec& bridge, Context&) {
+        if (!bridge.bearing_coupled.value_or(false)) return;
+        if (bridge.bearing_friction)
+          object.at("bearing_interaction")
+              .fail(
+                  "with bearing_friction the bearing law acts beside the friction, each "
+                  "direction on its own: give \"none\"");
+        if (!bridge.bearing)
+          object.at("bearing_interaction").fail("couples the 'bearing' law, which is not given");
+        const JsonValue law = object.at("bearing");
+        if (!links::CoupledShear::numbers_of(*bridge.bearing, {law.file(), law.path()}))
+          object.at("bearing_interaction")
+              .fail(fmt::format("a {} bearing has no coupled form (bilinear_spring, "
+                                "lead_rubber, elastic_perfectly_plastic or elastic_spring "
+                                "have): give \"none\"",
+                                bridge.bearing->type));
+      }),
       rule<GirderBridgeSpec>([](JsonObject& object, GirderBridgeSpec& bridge, Context&) {
         if (!bridge.bearing && !bridge.bearing_friction)
           object.fail(

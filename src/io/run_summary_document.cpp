@@ -1,6 +1,7 @@
 #include "io/run_summary_document.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace pound::io {
 namespace {
@@ -41,6 +42,24 @@ void add_spring(const results::LinkResult& link, Document& doc) {
       .set("work", s.work);
 }
 
+// A bearing's coupled shear: the resultant over its directions.
+Document shear_document(const results::LinkResult& link) {
+  const results::ShearSummary& s = *link.summary.shear;
+  Document doc;
+  doc.set("law", link.shear->law)
+      .set("peak_force", s.peak_force)
+      .set("peak_deformation", s.peak_deformation)
+      .set("residual_deformation", s.final_deformation)
+      .set("work", s.work);
+  if (std::isfinite(link.shear->numbers.yield_force))
+    doc.set("yield_deformation", link.shear->numbers.yield_force / link.shear->numbers.stiffness);
+  if (const std::optional<double> ductility = link.shear_ductility())
+    doc.set("ductility", *ductility);
+  if (const std::optional<double> energy = link.shear_hysteretic_energy())
+    doc.set("hysteretic_energy", *energy);
+  return doc;
+}
+
 Document link_document(const results::LinkResult& link) {
   const results::LinkSummary& s = link.summary;
   Document doc;
@@ -61,6 +80,7 @@ Document link_document(const results::LinkResult& link) {
   }
   // stiffness-proportional damping added to the link ("rayleigh"): its part of `work`
   if (link.viscous.work != 0.0) doc.set("damping_energy", link.viscous.work);
+  if (link.shear && s.shear) doc.set("shear", shear_document(link));
   return doc;
 }
 

@@ -42,6 +42,9 @@ class BilinearSpring final : public LinkLaw {
   std::optional<double> yield_deformation() const override { return yield_force_ / stiffness_; }
 
   double plastic_deformation() const { return committed_plastic_; }
+  double stiffness() const { return stiffness_; }
+  double yield_force() const { return yield_force_; }
+  double hardening_ratio() const { return hardening_ratio_; }
   double back_force() const { return back_force_at(committed_plastic_); }
 
  private:

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "links/coupled_shear.hpp"
 #include "links/law_registry.hpp"
 #include "links/link_context.hpp"
 #include "model/direction.hpp"
@@ -79,6 +80,13 @@ struct LinkFriction {
   std::optional<double> radius;                                      // [L] > 0; none: a flat slider
 };
 
+// A bearing's shear across the link's axis, its directions coupled (links/coupled_shear.hpp),
+// from the numbers of a uniaxial law (`law`, for messages and summaries).
+struct LinkShear {
+  std::string law;
+  links::ShearNumbers numbers;
+};
+
 // The tangents of a contact plane with unit normal n: t = z x n in a plane scene (n turned by
 // +90 degrees); in 3-D t_1 = z x n / |z x n| (horizontal, the plane scene's t when n lies in
 // the x-y plane) and t_2 = n x t_1 (z for a horizontal n); for a vertical n, t_1 = x, t_2 = y.
@@ -96,6 +104,7 @@ struct Link {
   const links::LawEntry* law = nullptr;  // its law's registry entry (role, traits); none in code
   links::LawFactory make_law;
   std::optional<LinkFriction> friction;
+  std::optional<LinkShear> shear;  // on the tangential rows, as friction (never both)
   // Rigid offsets from node i and node j to the points that touch: the row follows
   // u + theta x r at each end (small rotations), so the nodes turn with the link.
   std::array<Coordinates, 2> offsets{};

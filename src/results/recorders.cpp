@@ -176,6 +176,34 @@ void LinkSummaries::set_step_forces(const std::vector<char>& by_row) {
     step_forces_[k] = by_row[static_cast<std::size_t>(rows_[k])];
 }
 
+LinkSummaries::LinkSummaries(std::vector<Index> normal_rows, const std::vector<Index>& shear_rows)
+    : rows_(std::move(normal_rows)),
+      shear_rows_(shear_rows),
+      summaries_(rows_.size()),
+      step_forces_(rows_.size(), 0) {
+  shear_rows_.resize(rows_.size(), 0);
+  for (std::size_t k = 0; k < rows_.size(); ++k)
+    if (shear_rows_[k] > 0) summaries_[k].shear = ShearSummary{};
+}
+
+double LinkSummaries::resultant(const Vector& values, std::size_t k) const {
+  return values.segment(rows_[k] + 1, shear_rows_[k]).norm();
+}
+
+void LinkSummaries::record_shear(const integrators::State& state, std::size_t k) {
+  ShearSummary& s = *summaries_[k].shear;
+  const Index first = rows_[k] + 1, count = shear_rows_[k];
+  if (started_)
+    s.work +=
+        0.5 * (state.link_force.segment(first, count) + previous_.link_force.segment(first, count))
+                  .dot(state.link_penetration.segment(first, count) -
+                       previous_.link_penetration.segment(first, count));
+  s.final_force = resultant(state.link_force, k);
+  s.final_deformation = resultant(state.link_penetration, k);
+  s.peak_force = std::max(s.peak_force, s.final_force);
+  s.peak_deformation = std::max(s.peak_deformation, s.final_deformation);
+}
+
 void LinkSummaries::record(const integrators::State& state) {
   for (std::size_t k = 0; k < summaries_.size(); ++k) {
     LinkSummary& s = summaries_[k];
@@ -211,6 +239,7 @@ void LinkSummaries::record(const integrators::State& state) {
     s.peak_opening = std::max(s.peak_opening, -penetration);
     s.final_force = force;
     s.final_deformation = penetration;
+    if (s.shear) record_shear(state, k);
   }
   previous_.time = state.time;
   previous_.link_force = state.link_force;

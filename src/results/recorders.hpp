@@ -155,6 +155,16 @@ class EnvelopeRecorder final : public Recorder {
   bool started_ = false;
 };
 
+// A bearing's shear over the run (a link with a coupled shear): the resultant of its tangential
+// rows, |F_t| and |s|.
+struct ShearSummary {
+  double peak_force = 0.0;         // [F]
+  double peak_deformation = 0.0;   // [L]
+  double work = 0.0;               // integral of F_t . ds [F L]
+  double final_force = 0.0;        // [F]
+  double final_deformation = 0.0;  // residual [L]
+};
+
 // Pounding summary of one link over the run.
 struct LinkSummary {
   int impacts = 0;                 // engagements: open -> force (contact, or a taut restrainer)
@@ -182,12 +192,14 @@ struct LinkSummary {
   double created_energy() const {
     return finished_created_energy + (engaged_at_start ? 0.0 : std::max(0.0, -engagement_work));
   }
+  std::optional<ShearSummary> shear;  // a bearing's shear, on the rows after the normal one
 };
 
 class LinkSummaries : public Observer {
  public:
-  explicit LinkSummaries(std::vector<Index> normal_rows)
-      : rows_(std::move(normal_rows)), summaries_(rows_.size()), step_forces_(rows_.size(), 0) {}
+  // shear_rows[k]: how many tangential rows after link k's normal row are a bearing's shear (0:
+  // none).
+  explicit LinkSummaries(std::vector<Index> normal_rows, const std::vector<Index>& shear_rows = {});
   // By row of B: 1 where the state's force is its step's average (an implicit integrator's hard
   // contact: its impulse acts in the step that found it), so impulse and work take the rectangle
   // rule there, F_{n+1} dt and F_{n+1} d(delta), instead of the trapezoidal one.
@@ -196,7 +208,11 @@ class LinkSummaries : public Observer {
   const std::vector<LinkSummary>& summaries() const { return summaries_; }
 
  private:
-  std::vector<Index> rows_;
+  // The shear's resultant |x| over its rows.
+  double resultant(const Vector& values, std::size_t k) const;
+  void record_shear(const integrators::State& state, std::size_t k);
+
+  std::vector<Index> rows_, shear_rows_;
   std::vector<LinkSummary> summaries_;
   std::vector<char> step_forces_;  // by summary
   integrators::State previous_;

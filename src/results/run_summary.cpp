@@ -137,6 +137,12 @@ std::vector<Index> normal_rows(const integrators::LinkSet& links) {
   return rows;
 }
 
+std::vector<Index> shear_rows(const integrators::LinkSet& links) {
+  std::vector<Index> rows;
+  for (Index k = 0; k < links.count(); ++k) rows.push_back(links.shear(k) ? links.rows(k) - 1 : 0);
+  return rows;
+}
+
 // Adds sign x n . (u + theta x r) of `node` (a point r from it, rigidly tied to it), with
 // n . (theta x r) = theta . (r x n).
 void add_point_terms(Index node, const std::array<double, 3>& r, const std::array<double, 3>& n,
@@ -311,7 +317,7 @@ RunObservers::RunObservers(const builder::BuiltModel& built,
     : ground_(ground_of(system)),
       recorders_(histories ? make_recorders(built, system, ground_)
                            : std::vector<std::unique_ptr<Recorder>>()),
-      links_(normal_rows(system.links())),
+      links_(normal_rows(system.links()), shear_rows(system.links())),
       energy_(system, built.analysis.integrator.acceleration_energy()),
       passive_links_(!system.has_link_motion()),
       drifts_(drift_places(built, system.dofs()), ground_),
@@ -476,11 +482,23 @@ std::optional<double> LinkResult::hysteretic_energy() const {
   return summary.work - viscous.work - force * force / (2.0 * *initial_stiffness);
 }
 
+std::optional<double> LinkResult::shear_ductility() const {
+  if (!shear || !summary.shear || !std::isfinite(shear->numbers.yield_force)) return std::nullopt;
+  return summary.shear->peak_deformation * shear->numbers.stiffness / shear->numbers.yield_force;
+}
+
+std::optional<double> LinkResult::shear_hysteretic_energy() const {
+  if (!shear || !summary.shear || !std::isfinite(shear->numbers.yield_force)) return std::nullopt;
+  const double force = summary.shear->final_force;
+  return summary.shear->work - force * force / (2.0 * shear->numbers.stiffness);
+}
+
 std::optional<double> RunSummary::hysteretic_energy() const {
   std::optional<double> total;
   for (const LinkResult& link : links)
-    if (const std::optional<double> dissipated = link.hysteretic_energy())
-      total = total.value_or(0.0) + *dissipated;
+    for (const std::optional<double> dissipated :
+         {link.hysteretic_energy(), link.shear_hysteretic_energy()})
+      if (dissipated) total = total.value_or(0.0) + *dissipated;
   return total;
 }
 
@@ -530,6 +548,7 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
     if ((result.yield_deformation = law.yield_deformation()))
       result.initial_stiffness =  // of a fresh law: this one has yielded
           link.make_law(system.link_context(link))->set_trial({0.0, 0.0, 0.0}).stiffness;
+    if (link.shear) result.shear = link.shear;
     run.links.push_back(result);
   }
   for (std::size_t k = 0; k < built.drift_monitors.size(); ++k) {

@@ -110,6 +110,11 @@ struct LinkResult {
   // Energy the law dissipated: its work less the elastic energy F^2 / (2 k_0) it still holds,
   // both without the viscous part.
   std::optional<double> hysteretic_energy() const;
+  // A bearing's coupled shear (model::LinkShear) and, when it yields, its resultant's peak
+  // over delta_y = F_y / k and the energy it dissipated (its work less k's F^2 / (2 k)).
+  std::optional<model::LinkShear> shear;
+  std::optional<double> shear_ductility() const;
+  std::optional<double> shear_hysteretic_energy() const;
 };
 
 struct DriftResult {

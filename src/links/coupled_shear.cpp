@@ -1,0 +1,94 @@
+#include "links/coupled_shear.hpp"
+
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "links/bilinear_spring.hpp"
+#include "links/elastic_spring.hpp"
+#include "links/law_registry.hpp"
+
+namespace pound::links {
+
+std::optional<ShearNumbers> CoupledShear::numbers_of(const LinkLaw& law) {
+  if (const auto* bilinear = dynamic_cast<const BilinearSpring*>(&law))
+    return ShearNumbers{bilinear->stiffness(), bilinear->yield_force(),
+                        bilinear->hardening_ratio()};
+  if (const auto* elastic = dynamic_cast<const ElasticSpring*>(&law))
+    return ShearNumbers{elastic->stiffness(), std::numeric_limits<double>::infinity(), 0.0};
+  return std::nullopt;
+}
+
+std::optional<ShearNumbers> CoupledShear::numbers_of(const LawSpec& law, const LawSource& where) {
+  if (!find_law(law.type)) return std::nullopt;
+  return numbers_of(*make_law(law, where)(LinkContext{}));
+}
+
+CoupledShear::CoupledShear(std::unique_ptr<LinkLaw> normal, ShearNumbers numbers, int tangents)
+    : normal_(std::move(normal)),
+      numbers_(numbers),
+      hardening_modulus_(numbers.hardening_ratio * numbers.stiffness /
+                         (1.0 - numbers.hardening_ratio)),
+      tangents_(tangents) {}
+
+CoupledShear::CoupledShear(const CoupledShear& other)
+    : normal_(other.normal_->clone()),
+      numbers_(other.numbers_),
+      hardening_modulus_(other.hardening_modulus_),
+      tangents_(other.tangents_),
+      committed_plastic_(other.committed_plastic_),
+      trial_plastic_(other.committed_plastic_) {}
+
+FrictionResponse CoupledShear::set_trial(const LinkKinematics& normal,
+                                         std::span<const LinkKinematics> tangential) {
+  FrictionResponse out;
+  out.normal = normal_->set_trial(normal);
+  const double k = numbers_.stiffness, hardening = hardening_modulus_;
+  const auto n = static_cast<std::size_t>(tangents_);
+  Tangential relative{};  // xi = k (s - p_n) - H p_n
+  double length = 0.0;
+  for (std::size_t a = 0; a < n; ++a) {
+    out.tangential_force[a] = k * (tangential[a].penetration - committed_plastic_[a]);
+    relative[a] = out.tangential_force[a] - hardening * committed_plastic_[a];
+    length += relative[a] * relative[a];
+  }
+  length = std::sqrt(length);
+  trial_plastic_ = committed_plastic_;
+  const double excess = length - numbers_.yield_force;
+  if (!(excess > 0.0)) {
+    for (std::size_t a = 0; a < n; ++a) out.tangential_on_slip[a][a].stiffness = k;
+    return out;
+  }
+  // Radial return: p moves by dgamma along e = xi / |xi|.
+  const double plastic_step = excess / (k + hardening);
+  const double along = k * k / (k + hardening), across = k * k * plastic_step / length;
+  for (std::size_t a = 0; a < n; ++a) {
+    const double step = n == 1 ? std::copysign(plastic_step, relative[a])
+                               : plastic_step * relative[a] / length;
+    trial_plastic_[a] += step;
+    out.tangential_force[a] -= k * step;
+  }
+  if (n == 1) {  // BilinearSpring's slope, b k, as that law computes it
+    out.tangential_on_slip[0][0].stiffness = numbers_.hardening_ratio * k;
+    return out;
+  }
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = 0; b < n; ++b) {
+      const double e_ab = relative[a] * relative[b] / (length * length);
+      out.tangential_on_slip[a][b].stiffness =
+          (a == b ? k - across : 0.0) - (along - across) * e_ab;
+    }
+  return out;
+}
+
+void CoupledShear::commit() {
+  normal_->commit();
+  committed_plastic_ = trial_plastic_;
+}
+
+void CoupledShear::revert() {
+  normal_->revert();
+  trial_plastic_ = committed_plastic_;
+}
+
+}  // namespace pound::links

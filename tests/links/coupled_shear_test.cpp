@@ -1,0 +1,190 @@
+// A bearing's coupled shear (links/coupled_shear.hpp) against what it must reduce to and against
+// closed forms: one direction is BilinearSpring to the bit; a diagonal push yields at F_y, not at
+// the sqrt(2) F_y of two uniaxial springs; a steady circular orbit dissipates
+// 2 pi F_y sqrt(r^2 - delta_y^2) a turn at |F| = F_y, lagging asin(delta_y / r); the consistent
+// tangent matches central differences of the force.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <numbers>
+#include <random>
+
+#include "links/bilinear_spring.hpp"
+#include "links/coupled_shear.hpp"
+#include "links/elastic_spring.hpp"
+#include "links/law_registry.hpp"
+
+namespace pound::links {
+namespace {
+
+constexpr double kStiffness = 2.0e7, kYield = 3.0e5;
+
+CoupledShear bearing(double hardening, int tangents = 2) {
+  return {std::make_unique<ElasticSpring>(1e10), {kStiffness, kYield, hardening}, tangents};
+}
+
+FrictionResponse push(CoupledShear& law, double x, double y) {
+  const std::array<LinkKinematics, 2> slide{LinkKinematics{x, 0.0, 0.0}, {y, 0.0, 0.0}};
+  return law.set_trial({}, std::span<const LinkKinematics>(slide.data(), 2));
+}
+
+TEST(CoupledShear, OneDirectionIsTheBilinearSpringToTheBit) {
+  BilinearSpring uniaxial(kStiffness, kYield, 0.1);
+  CoupledShear coupled = bearing(0.1, 1);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> step(-0.01, 0.01);
+  double s = 0.0;
+  int differences = 0;
+  for (int k = 0; k < 5000; ++k) {
+    s += step(random);
+    const LawResponse expected = uniaxial.set_trial({s, 0.0, 0.0});
+    const LinkKinematics slide{s, 0.0, 0.0};
+    const FrictionResponse got = coupled.set_trial({}, std::span<const LinkKinematics>(&slide, 1));
+    differences += got.tangential_force[0] != expected.force ||
+                   got.tangential_on_slip[0][0].stiffness != expected.stiffness;
+    uniaxial.commit();
+    coupled.commit();
+  }
+  EXPECT_EQ(differences, 0);
+}
+
+// Pushed along 45 degrees far past yield with no hardening: the coupled bearing holds |F| = F_y
+// along the push; two uniaxial springs would each reach F_y, sqrt(2) F_y together.
+TEST(CoupledShear, ADiagonalPushYieldsAtTheYieldForceNotRootTwoTimesIt) {
+  CoupledShear coupled = bearing(0.0);
+  BilinearSpring x(kStiffness, kYield, 0.0), y(kStiffness, kYield, 0.0);
+  const double reach = 20.0 * kYield / kStiffness;
+  FrictionResponse last;
+  double uniaxial = 0.0;
+  for (int k = 1; k <= 400; ++k) {
+    const double s = reach * k / 400.0 / std::numbers::sqrt2;
+    last = push(coupled, s, s);
+    coupled.commit();
+    uniaxial = std::hypot(x.set_trial({s, 0.0, 0.0}).force, y.set_trial({s, 0.0, 0.0}).force);
+    x.commit();
+    y.commit();
+  }
+  const double resultant = std::hypot(last.tangential_force[0], last.tangential_force[1]);
+  const double off_line = std::abs(last.tangential_force[0] - last.tangential_force[1]) / kYield;
+  std::cout << fmt::format(
+      "diagonal push to 20 delta_y: coupled |F| / F_y - 1 = {:.1e} (off the push {:.1e}); "
+      "uncoupled |F| / F_y = {:.6f}\n",
+      resultant / kYield - 1.0, off_line, uniaxial / kYield);
+  EXPECT_LT(std::abs(resultant / kYield - 1.0), 1e-14);
+  EXPECT_LT(off_line, 1e-14);
+  EXPECT_NEAR(uniaxial / kYield, std::numbers::sqrt2, 1e-14);
+}
+
+// The tangent of a yielding trial (b = 0.1, from a bent history) against central differences of
+// the force in each direction (step 1e-7 of the deformation: truncation ~1e-14 relative, round-off
+// ~1e-9): elastic k I before yield, and the radial return's tangent after.
+TEST(CoupledShear, TheTangentIsTheForcesDerivative) {
+  double worst = 0.0;
+  for (const std::array<double, 2> target : {std::array{0.004, 0.003}, std::array{0.02, -0.011}}) {
+    CoupledShear law = bearing(0.1);
+    push(law, 0.012, 0.0);  // a plastic history along x first
+    law.commit();
+    const FrictionResponse at = push(law, target[0], target[1]);
+    const double h = 1e-7;
+    for (int b = 0; b < 2; ++b) {
+      std::array<double, 2> plus = target, minus = target;
+      plus[static_cast<std::size_t>(b)] += h;
+      minus[static_cast<std::size_t>(b)] -= h;
+      const FrictionResponse up = push(law, plus[0], plus[1]);
+      const FrictionResponse down = push(law, minus[0], minus[1]);
+      for (std::size_t a = 0; a < 2; ++a) {
+        const double difference = (up.tangential_force[a] - down.tangential_force[a]) / (2 * h);
+        worst = std::max(worst, std::abs(difference - at.tangential_on_slip[a][b].stiffness) /
+                                    kStiffness);
+      }
+    }
+  }
+  std::cout << fmt::format("coupled shear tangent against central differences: {:.1e} of k\n",
+                           worst);
+  EXPECT_LT(worst, 1e-7);
+}
+
+// Driven around a circle of radius r = 5 delta_y (b = 0): in the steady state the plastic
+// deformation trails the displacement by phi = asin(delta_y / r) on a circle of radius r cos phi,
+// the force |F| = F_y points along its slip (ahead of the displacement by pi / 2 - phi), and a
+// turn dissipates 2 pi F_y sqrt(r^2 - delta_y^2). 20,000 steps a turn: the backward-Euler return's error in the
+// work is O(step), about 1e-4 here.
+TEST(CoupledShear, ACircularOrbitDissipatesTheClosedFormAtTheYieldForce) {
+  CoupledShear law = bearing(0.0);
+  const double yield_deformation = kYield / kStiffness, radius = 5.0 * yield_deformation;
+  const int per_turn = 20000;
+  double work = 0.0, largest_force_error = 0.0, lead = 0.0;
+  std::array<double, 2> previous_s{radius, 0.0}, previous_force{0.0, 0.0};
+  for (int k = 0; k <= 3 * per_turn; ++k) {
+    const double angle = 2.0 * std::numbers::pi * k / per_turn;
+    const std::array<double, 2> s{radius * std::cos(angle), radius * std::sin(angle)};
+    const FrictionResponse response = push(law, s[0], s[1]);
+    law.commit();
+    const std::array<double, 2> force{response.tangential_force[0], response.tangential_force[1]};
+    if (k > 2 * per_turn) {  // the third turn
+      for (std::size_t a = 0; a < 2; ++a)
+        work += 0.5 * (force[a] + previous_force[a]) * (s[a] - previous_s[a]);
+      largest_force_error =
+          std::max(largest_force_error, std::abs(std::hypot(force[0], force[1]) / kYield - 1.0));
+      lead = std::atan2(force[1], force[0]) - angle;
+    }
+    previous_s = s;
+    previous_force = force;
+  }
+  const double expected = 2.0 * std::numbers::pi * kYield *
+                          std::sqrt(radius * radius - yield_deformation * yield_deformation);
+  lead = std::remainder(lead, 2.0 * std::numbers::pi);
+  const double expected_lead = 0.5 * std::numbers::pi - std::asin(yield_deformation / radius);
+  std::cout << fmt::format(
+      "circular orbit r = 5 delta_y, third turn: work {:.6e} against {:.6e} ({:.1e}), |F| / F_y "
+      "- 1 up to {:.1e}, force ahead by {:.6f} rad against {:.6f}\n",
+      work, expected, work / expected - 1.0, largest_force_error, lead, expected_lead);
+  EXPECT_LT(std::abs(work / expected - 1.0), 5e-4);
+  EXPECT_LT(largest_force_error, 1e-13);
+  EXPECT_NEAR(lead, expected_lead, 5e-4);
+}
+
+TEST(CoupledShear, RevertForgetsTheTrialAndCopiesKeepTheCommittedState) {
+  CoupledShear law = bearing(0.05);
+  push(law, 0.05, 0.02);
+  law.commit();
+  const std::array<double, 2> plastic{law.plastic_deformation()[0], law.plastic_deformation()[1]};
+  EXPECT_GT(std::hypot(plastic[0], plastic[1]), 0.0);
+  push(law, -0.2, 0.3);
+  law.revert();
+  CoupledShear copy(law);
+  const FrictionResponse from_law = push(law, 0.01, 0.01);
+  const FrictionResponse from_copy = push(copy, 0.01, 0.01);
+  EXPECT_EQ(from_law.tangential_force[0], from_copy.tangential_force[0]);
+  EXPECT_EQ(from_law.tangential_force[1], from_copy.tangential_force[1]);
+  EXPECT_EQ(law.plastic_deformation()[0], plastic[0]);
+}
+
+// The numbers come from the uniaxial laws' own: lead_rubber's k_u, F_y = Q_d k_u / (k_u - k_d),
+// b = k_d / k_u; an elastic spring never yields; a Bouc-Wen bearing has no coupled form here.
+TEST(CoupledShear, TakesItsNumbersFromTheUniaxialLaws) {
+  const LawSource where{"test.json", "/links/0/shear"};
+  const auto lead = CoupledShear::numbers_of(
+      {"lead_rubber",
+       {{"characteristic_strength", 1e5}, {"post_yield_stiffness", 1e6}, {"elastic_stiffness", 1e7}}},
+      where);
+  ASSERT_TRUE(lead);
+  EXPECT_DOUBLE_EQ(lead->stiffness, 1e7);
+  EXPECT_DOUBLE_EQ(lead->yield_force, 1e5 * 1e7 / (1e7 - 1e6));
+  EXPECT_DOUBLE_EQ(lead->hardening_ratio, 0.1);
+  const auto elastic = CoupledShear::numbers_of({"elastic_spring", {{"stiffness", 3e6}}}, where);
+  ASSERT_TRUE(elastic);
+  EXPECT_EQ(elastic->yield_force, std::numeric_limits<double>::infinity());
+  CoupledShear spring(std::make_unique<ElasticSpring>(1.0), *elastic, 2);
+  const FrictionResponse far = push(spring, 10.0, -4.0);
+  EXPECT_EQ(far.tangential_force[0], 3e7);
+  EXPECT_EQ(far.tangential_on_slip[0][1].stiffness, 0.0);
+  EXPECT_FALSE(CoupledShear::numbers_of({"bouc_wen", find_law("bouc_wen")->example}, where));
+}
+
+}  // namespace
+}  // namespace pound::links
