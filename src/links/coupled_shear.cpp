@@ -43,42 +43,48 @@ FrictionResponse CoupledShear::set_trial(const LinkKinematics& normal,
                                          std::span<const LinkKinematics> tangential) {
   FrictionResponse out;
   out.normal = normal_->set_trial(normal);
+  trial_plastic_ = committed_plastic_;
+  Tangential relative{};
+  const double length = elastic_trial(tangential, relative, out);
+  if (length > numbers_.yield_force) return_to_circle(relative, length, out);
+  return out;
+}
+
+double CoupledShear::elastic_trial(std::span<const LinkKinematics> tangential, Tangential& relative,
+                                   FrictionResponse& out) const {
+  const double k = numbers_.stiffness;
+  double length = 0.0;
+  for (std::size_t a = 0; a < static_cast<std::size_t>(tangents_); ++a) {
+    out.tangential_force[a] = k * (tangential[a].penetration - committed_plastic_[a]);
+    relative[a] = out.tangential_force[a] - hardening_modulus_ * committed_plastic_[a];
+    length += relative[a] * relative[a];
+    out.tangential_on_slip[a][a].stiffness = k;
+  }
+  return std::sqrt(length);
+}
+
+void CoupledShear::return_to_circle(const Tangential& relative, double length,
+                                    FrictionResponse& out) {
   const double k = numbers_.stiffness, hardening = hardening_modulus_;
   const auto n = static_cast<std::size_t>(tangents_);
-  Tangential relative{};  // xi = k (s - p_n) - H p_n
-  double length = 0.0;
+  const double plastic_step = (length - numbers_.yield_force) / (k + hardening);
   for (std::size_t a = 0; a < n; ++a) {
-    out.tangential_force[a] = k * (tangential[a].penetration - committed_plastic_[a]);
-    relative[a] = out.tangential_force[a] - hardening * committed_plastic_[a];
-    length += relative[a] * relative[a];
-  }
-  length = std::sqrt(length);
-  trial_plastic_ = committed_plastic_;
-  const double excess = length - numbers_.yield_force;
-  if (!(excess > 0.0)) {
-    for (std::size_t a = 0; a < n; ++a) out.tangential_on_slip[a][a].stiffness = k;
-    return out;
-  }
-  // Radial return: p moves by dgamma along e = xi / |xi|.
-  const double plastic_step = excess / (k + hardening);
-  const double along = k * k / (k + hardening), across = k * k * plastic_step / length;
-  for (std::size_t a = 0; a < n; ++a) {
-    const double step = n == 1 ? std::copysign(plastic_step, relative[a])
-                               : plastic_step * relative[a] / length;
+    const double step =
+        n == 1 ? std::copysign(plastic_step, relative[a]) : plastic_step * relative[a] / length;
     trial_plastic_[a] += step;
     out.tangential_force[a] -= k * step;
   }
   if (n == 1) {  // BilinearSpring's slope, b k, as that law computes it
     out.tangential_on_slip[0][0].stiffness = numbers_.hardening_ratio * k;
-    return out;
+    return;
   }
+  const double along = k * k / (k + hardening), across = k * k * plastic_step / length;
   for (std::size_t a = 0; a < n; ++a)
     for (std::size_t b = 0; b < n; ++b) {
       const double e_ab = relative[a] * relative[b] / (length * length);
       out.tangential_on_slip[a][b].stiffness =
           (a == b ? k - across : 0.0) - (along - across) * e_ab;
     }
-  return out;
 }
 
 void CoupledShear::commit() {

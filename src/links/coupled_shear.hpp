@@ -37,8 +37,8 @@
 namespace pound::links {
 
 struct ShearNumbers {
-  double stiffness = 0.0;      // k
-  double yield_force = 0.0;    // F_y (infinite: elastic)
+  double stiffness = 0.0;        // k
+  double yield_force = 0.0;      // F_y (infinite: elastic)
   double hardening_ratio = 0.0;  // b
 };
 
@@ -69,6 +69,12 @@ class CoupledShear {
   const Tangential& plastic_deformation() const { return committed_plastic_; }
 
  private:
+  // The elastic trial force k (s - p_n) and xi = that - H p_n along each tangent; returns |xi|.
+  double elastic_trial(std::span<const LinkKinematics> tangential, Tangential& relative,
+                       FrictionResponse& out) const;
+  // The radial return of a trial past the yield circle, with its consistent tangent.
+  void return_to_circle(const Tangential& relative, double length, FrictionResponse& out);
+
   std::unique_ptr<LinkLaw> normal_;
   ShearNumbers numbers_;
   double hardening_modulus_;  // H
