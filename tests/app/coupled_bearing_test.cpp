@@ -42,8 +42,9 @@ json link(const std::string& id, std::array<double, 3> axis, json law) {
 // The deck over its seat, turning held; `links` its bearing(s), excited along `direction`.
 json deck(const std::vector<json>& links, std::array<double, 3> direction) {
   return {{"dimension", 3},
-          {"nodes", {{{"id", "deck"}, {"x", 0}, {"y", 0}, {"z", 0}},
-                     {{"id", "seat"}, {"x", 0}, {"y", 0}, {"z", 0}}}},
+          {"nodes",
+           {{{"id", "deck"}, {"x", 0}, {"y", 0}, {"z", 0}},
+            {{"id", "seat"}, {"x", 0}, {"y", 0}, {"z", 0}}}},
           {"masses", {{{"node", "deck"}, {"mass", kMass}}}},
           {"supports",
            {{{"node", "seat"}, {"fix", {"x", "y", "z", "rx", "ry", "rz"}}},
@@ -90,9 +91,9 @@ TEST(CoupledBearing, ADiagonalRecordYieldsItAsOneSpringAlongTheDiagonal) {
   const double reference = along["peak_deformation"].get<double>();
   const double deformation_error =
       std::abs(shear["peak_deformation"].get<double>() - reference) / reference;
-  const double energy_error =
-      std::abs(shear["hysteretic_energy"].get<double>() - along["hysteretic_energy"].get<double>()) /
-      along["hysteretic_energy"].get<double>();
+  const double energy_error = std::abs(shear["hysteretic_energy"].get<double>() -
+                                       along["hysteretic_energy"].get<double>()) /
+                              along["hysteretic_energy"].get<double>();
   // Two uniaxial springs along x and y: each reaches F_y.
   const json uncoupled = testing::model_summary(
       deck({link("x", {1, 0, 0}, bilinear()), link("y", {0, 1, 0}, bilinear()),
@@ -127,9 +128,9 @@ TEST(CoupledBearing, AlongOneAxisItIsTheUniaxialBearing) {
       kPath);
   const json& shear = link_summary(coupled, "bearing")["shear"];
   const json& x = link_summary(uncoupled, "x");
-  const double error = std::abs(shear["peak_deformation"].get<double>() -
-                                x["peak_deformation"].get<double>()) /
-                       x["peak_deformation"].get<double>();
+  const double error =
+      std::abs(shear["peak_deformation"].get<double>() - x["peak_deformation"].get<double>()) /
+      x["peak_deformation"].get<double>();
   std::cout << fmt::format("record along x: coupled against uniaxial peak deformation {:.1e}\n",
                            error);
   EXPECT_LT(error, 1e-12);
@@ -160,7 +161,8 @@ TEST(CoupledBearing, CentralDifferenceAndNewmarkAgreeUnderTwoComponents) {
   const json explicit_ = shear("central_difference");
   double worst = 0.0;
   for (const std::string key : {"peak_force", "peak_deformation", "hysteretic_energy"})
-    worst = std::max(worst, std::abs(explicit_[key].get<double>() / implicit[key].get<double>() - 1));
+    worst =
+        std::max(worst, std::abs(explicit_[key].get<double>() / implicit[key].get<double>() - 1));
   std::cout << fmt::format(
       "two components, ductility {:.1f}: central difference against Newmark {:.1e}\n",
       implicit["ductility"].get<double>(), worst);

@@ -1,8 +1,10 @@
 // A bearing's coupled shear (links/coupled_shear.hpp) against what it must reduce to and against
 // closed forms: one direction is BilinearSpring to the bit; a diagonal push yields at F_y, not at
 // the sqrt(2) F_y of two uniaxial springs; a steady circular orbit dissipates
-// 2 pi F_y sqrt(r^2 - delta_y^2) a turn at |F| = F_y, lagging asin(delta_y / r); the consistent
-// tangent matches central differences of the force.
+// 2 pi F_y sqrt(r^2 - delta_y^2) a turn at |F| = F_y; the consistent tangent matches central
+// differences of the force.
+#include "links/coupled_shear.hpp"
+
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -14,7 +16,6 @@
 #include <random>
 
 #include "links/bilinear_spring.hpp"
-#include "links/coupled_shear.hpp"
 #include "links/elastic_spring.hpp"
 #include "links/law_registry.hpp"
 
@@ -98,8 +99,8 @@ TEST(CoupledShear, TheTangentIsTheForcesDerivative) {
       const FrictionResponse down = push(law, minus[0], minus[1]);
       for (std::size_t a = 0; a < 2; ++a) {
         const double difference = (up.tangential_force[a] - down.tangential_force[a]) / (2 * h);
-        worst = std::max(worst, std::abs(difference - at.tangential_on_slip[a][b].stiffness) /
-                                    kStiffness);
+        worst = std::max(worst,
+                         std::abs(difference - at.tangential_on_slip[a][b].stiffness) / kStiffness);
       }
     }
   }
@@ -111,8 +112,8 @@ TEST(CoupledShear, TheTangentIsTheForcesDerivative) {
 // Driven around a circle of radius r = 5 delta_y (b = 0): in the steady state the plastic
 // deformation trails the displacement by phi = asin(delta_y / r) on a circle of radius r cos phi,
 // the force |F| = F_y points along its slip (ahead of the displacement by pi / 2 - phi), and a
-// turn dissipates 2 pi F_y sqrt(r^2 - delta_y^2). 20,000 steps a turn: the backward-Euler return's error in the
-// work is O(step), about 1e-4 here.
+// turn dissipates 2 pi F_y sqrt(r^2 - delta_y^2). 20,000 steps a turn: the backward-Euler return's
+// error in the work is O(step), about 1e-4 here.
 TEST(CoupledShear, ACircularOrbitDissipatesTheClosedFormAtTheYieldForce) {
   CoupledShear law = bearing(0.0);
   const double yield_deformation = kYield / kStiffness, radius = 5.0 * yield_deformation;
@@ -168,10 +169,11 @@ TEST(CoupledShear, RevertForgetsTheTrialAndCopiesKeepTheCommittedState) {
 // b = k_d / k_u; an elastic spring never yields; a Bouc-Wen bearing has no coupled form here.
 TEST(CoupledShear, TakesItsNumbersFromTheUniaxialLaws) {
   const LawSource where{"test.json", "/links/0/shear"};
-  const auto lead = CoupledShear::numbers_of(
-      {"lead_rubber",
-       {{"characteristic_strength", 1e5}, {"post_yield_stiffness", 1e6}, {"elastic_stiffness", 1e7}}},
-      where);
+  const auto lead = CoupledShear::numbers_of({"lead_rubber",
+                                              {{"characteristic_strength", 1e5},
+                                               {"post_yield_stiffness", 1e6},
+                                               {"elastic_stiffness", 1e7}}},
+                                             where);
   ASSERT_TRUE(lead);
   EXPECT_DOUBLE_EQ(lead->stiffness, 1e7);
   EXPECT_DOUBLE_EQ(lead->yield_force, 1e5 * 1e7 / (1e7 - 1e6));
