@@ -479,11 +479,10 @@ Field<LinkSpec> shear_rules() {
              fmt::format("a shear link's axial law must be a force law, not a {}", link.law.type));
     const JsonValue shear = object.at("shear");
     if (!links::CoupledShear::numbers_of(*link.shear, {shear.file(), shear.path()}))
-      JsonObject(shear).at("type").fail(fmt::format(
-          "a bearing's shear couples its two directions as bilinear_spring, lead_rubber, "
-          "elastic_perfectly_plastic or elastic_spring can; a {} cannot (give it along each "
-          "direction as links of their own)",
-          link.shear->type));
+      JsonObject(shear).at("type").fail(
+          fmt::format("a bearing's shear couples its two directions as {} can; a {} cannot (give "
+                      "it along each direction as links of their own)",
+                      links::CoupledShear::kLaws, link.shear->type));
   });
 }
 
@@ -579,7 +578,8 @@ const Fields<LinkSpec>& link_fields() {
       optional("shear", &LinkSpec::shear, Law{LawPlace::link, "a bearing's shear"},
                "a bearing's shear law across the axis, along the friction's tangents, its two "
                "directions coupled in 3-D (a circular yield surface); `law` is then the axial "
-               "law. bilinear_spring, lead_rubber, elastic_perfectly_plastic or elastic_spring")
+               "law. " +
+                   std::string(links::CoupledShear::kLaws))
           .in_dimensions(2, 3),
       optional("rayleigh", &LinkSpec::rayleigh,
                Object<builder::LinkRayleighSpec>{link_rayleigh_fields(), Docs::own_table},
@@ -988,10 +988,8 @@ const Fields<GirderBridgeSpec>& girder_bridge_fields() {
         const JsonValue law = object.at("bearing");
         if (!links::CoupledShear::numbers_of(*bridge.bearing, {law.file(), law.path()}))
           object.at("bearing_interaction")
-              .fail(fmt::format("a {} bearing has no coupled form (bilinear_spring, "
-                                "lead_rubber, elastic_perfectly_plastic or elastic_spring "
-                                "have): give \"none\"",
-                                bridge.bearing->type));
+              .fail(fmt::format("a {} bearing has no coupled form ({} have): give \"none\"",
+                                bridge.bearing->type, links::CoupledShear::kLaws));
       }),
       rule<GirderBridgeSpec>([](JsonObject& object, GirderBridgeSpec& bridge, Context&) {
         if (!bridge.bearing && !bridge.bearing_friction)

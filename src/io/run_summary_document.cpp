@@ -1,7 +1,6 @@
 #include "io/run_summary_document.hpp"
 
 #include <algorithm>
-#include <cmath>
 
 namespace pound::io {
 namespace {
@@ -51,8 +50,7 @@ Document shear_document(const results::LinkResult& link) {
       .set("peak_deformation", s.peak_deformation)
       .set("residual_deformation", s.final_deformation)
       .set("work", s.work);
-  if (std::isfinite(link.shear->numbers.yield_force))
-    doc.set("yield_deformation", link.shear->numbers.yield_force / link.shear->numbers.stiffness);
+  if (link.shear_yields()) doc.set("yield_deformation", link.shear->numbers.yield_deformation());
   if (const std::optional<double> ductility = link.shear_ductility())
     doc.set("ductility", *ductility);
   if (const std::optional<double> energy = link.shear_hysteretic_energy())

@@ -27,6 +27,7 @@
 // (BilinearSpring objects), or elastic_spring (F_y infinite: k I). Shear and axial are not
 // coupled (no axial-load-dependent strength, no P-Delta of the bearing). Units: k [F/L], F_y [F],
 // b [-] in [0, 1), s and p [L].
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <span>
@@ -40,6 +41,9 @@ struct ShearNumbers {
   double stiffness = 0.0;        // k
   double yield_force = 0.0;      // F_y (infinite: elastic)
   double hardening_ratio = 0.0;  // b
+
+  bool yields() const { return std::isfinite(yield_force); }
+  double yield_deformation() const { return yield_force / stiffness; }  // delta_y = F_y / k
 };
 
 struct LawSpec;
@@ -47,6 +51,9 @@ struct LawSource;
 
 class CoupledShear {
  public:
+  // The laws that have the coupled form, for messages and docs.
+  static constexpr const char* kLaws =
+      "bilinear_spring, lead_rubber, elastic_perfectly_plastic or elastic_spring";
   // The numbers of a uniaxial law that has a coupled form (see above); none for the others.
   static std::optional<ShearNumbers> numbers_of(const LinkLaw& law);
   static std::optional<ShearNumbers> numbers_of(const LawSpec& law, const LawSource& where);
@@ -64,8 +71,6 @@ class CoupledShear {
   int tangents() const { return tangents_; }
   const LinkLaw& normal_law() const { return *normal_; }
   const ShearNumbers& numbers() const { return numbers_; }
-  // delta_y = F_y / k (infinite for an elastic shear).
-  double yield_deformation() const { return numbers_.yield_force / numbers_.stiffness; }
   const Tangential& plastic_deformation() const { return committed_plastic_; }
 
  private:

@@ -482,13 +482,15 @@ std::optional<double> LinkResult::hysteretic_energy() const {
   return summary.work - viscous.work - force * force / (2.0 * *initial_stiffness);
 }
 
+bool LinkResult::shear_yields() const { return shear && summary.shear && shear->numbers.yields(); }
+
 std::optional<double> LinkResult::shear_ductility() const {
-  if (!shear || !summary.shear || !std::isfinite(shear->numbers.yield_force)) return std::nullopt;
+  if (!shear_yields()) return std::nullopt;
   return summary.shear->peak_deformation * shear->numbers.stiffness / shear->numbers.yield_force;
 }
 
 std::optional<double> LinkResult::shear_hysteretic_energy() const {
-  if (!shear || !summary.shear || !std::isfinite(shear->numbers.yield_force)) return std::nullopt;
+  if (!shear_yields()) return std::nullopt;
   const double force = summary.shear->final_force;
   return summary.shear->work - force * force / (2.0 * shear->numbers.stiffness);
 }
@@ -548,7 +550,7 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
     if ((result.yield_deformation = law.yield_deformation()))
       result.initial_stiffness =  // of a fresh law: this one has yielded
           link.make_law(system.link_context(link))->set_trial({0.0, 0.0, 0.0}).stiffness;
-    if (link.shear) result.shear = link.shear;
+    result.shear = link.shear;
     run.links.push_back(result);
   }
   for (std::size_t k = 0; k < built.drift_monitors.size(); ++k) {

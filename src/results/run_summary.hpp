@@ -113,6 +113,7 @@ struct LinkResult {
   // A bearing's coupled shear (model::LinkShear) and, when it yields, its resultant's peak
   // over delta_y = F_y / k and the energy it dissipated (its work less k's F^2 / (2 k)).
   std::optional<model::LinkShear> shear;
+  bool shear_yields() const;
   std::optional<double> shear_ductility() const;
   std::optional<double> shear_hysteretic_energy() const;
 };
