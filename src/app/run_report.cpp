@@ -20,15 +20,17 @@ std::string yielded_line(const results::LinkResult& link) {
                                : std::string());
 }
 
-// A bearing whose coupled shear yielded: the resultant's peak and residual, and what it
-// dissipated.
+// A bearing whose coupled shear yielded (a biaxial hinge: its bending): the resultant's peak
+// and residual, and what it dissipated.
 std::string shear_line(const results::LinkResult& link) {
   const results::ShearSummary& s = *link.summary.shear;
   return fmt::format(
-      "  {} {} yielded in shear: peak {:.4g} ({:.2f} x yield), residual {:.4g}, hysteretic "
+      "  {} {} yielded in {}: peak {} {:.4g} ({:.2f} x yield), residual {:.4g}, hysteretic "
       "energy {:.6g}\n",
-      link.shear->law, link.id, s.peak_deformation, link.shear_ductility().value_or(0.0),
-      s.final_deformation, link.shear_hysteretic_energy().value_or(0.0));
+      link.shear->law, link.id, link.rotational ? "bending" : "shear",
+      link.rotational ? "rotation" : "deformation", s.peak_deformation,
+      link.shear_ductility().value_or(0.0), s.final_deformation,
+      link.shear_hysteretic_energy().value_or(0.0));
 }
 
 // Contacts and restrainers one line each; yielded springs and hinges one line each; the other

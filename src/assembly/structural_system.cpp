@@ -284,14 +284,14 @@ Vector uniform_influence(const model::Model& model, const model::DofMap& dofs,
   return influence;
 }
 
-// The directions of a link's rows over a node's DOFs: the axis, or the rotation of a rotational
-// link (about z in a plane, about its axis in 3-D); with friction, the tangents of its contact
-// plane (model::contact_tangents).
-NodeVector normal_direction(const model::Link& link, int dimension) {
+// The directions of a link's rows over a node's DOFs: along the axis, or for a rotational link
+// the rotation about it (about z in a plane); with friction or a shear, along or about the
+// tangents of its contact plane (model::contact_tangents), a hinge's bending across its axis.
+NodeVector row_direction(const model::Link& link, const model::Coordinates& along, int dimension) {
   if (link.rotational)
-    return model::over_directions(dimension == 3 ? link.axis : model::Coordinates{0.0, 0.0, 1.0},
-                                  true, dimension);
-  return model::over_directions(link.axis, false, dimension);
+    return model::over_directions(dimension == 3 ? along : model::Coordinates{0.0, 0.0, 1.0}, true,
+                                  dimension);
+  return model::over_directions(along, false, dimension);
 }
 std::vector<model::Coordinates> tangents(const model::Link& link, int dimension) {
   return link.friction || link.shear ? model::contact_tangents(link.axis, dimension)
@@ -308,7 +308,7 @@ struct EndDirections {
 EndDirections row_directions(const model::Link& link, const model::Coordinates& along,
                              int dimension) {
   if (link.rotational) {
-    const NodeVector direction = normal_direction(link, dimension);
+    const NodeVector direction = row_direction(link, along, dimension);
     return {direction, direction};
   }
   const auto at = [&](const model::Coordinates& r) {
@@ -400,10 +400,11 @@ struct LinkRowGeometry {
 std::vector<LinkRowGeometry> link_row_geometry(const model::Model& model) {
   std::vector<LinkRowGeometry> rows;
   for (const model::Link& link : model.links) {
-    rows.push_back({&link, normal_direction(link, model.dimension),
+    rows.push_back({&link, row_direction(link, link.axis, model.dimension),
                     link.rotational ? model::Coordinates{} : link.axis});
     for (const model::Coordinates& tangent : tangents(link, model.dimension))
-      rows.push_back({&link, model::over_directions(tangent, false, model.dimension), tangent});
+      rows.push_back({&link, row_direction(link, tangent, model.dimension),
+                      link.rotational ? model::Coordinates{} : tangent});
   }
   return rows;
 }
@@ -642,7 +643,7 @@ void StructuralSystem::link_motion(double time, Vector& offset, Vector& rate,
 
 links::LinkContext StructuralSystem::link_context(const model::Link& link) const {
   links::LinkContext context;
-  const NodeVector direction = normal_direction(link, dofs_.dimension());
+  const NodeVector direction = row_direction(link, link.axis, dofs_.dimension());
   // Mass and diagonal stiffness of one end along the direction: n^T K_nn n over its free DOFs.
   // A tied end counts its master's along the same directions (each DOF's first term): a point of
   // a rigid floor is the floor's, as an offset end is its node's.

@@ -254,9 +254,32 @@ PierHinge pier_hinge(const GirderBridgeSpec& spec, int pier, bool across) {
   return made;
 }
 
+// In space, one hinge per pier base bending about x and y, coupled on an elliptic surface:
+// unless asked not to, where the law has the coupled form and no damping is added to it.
+bool coupled_hinges(const Bridge& bridge, const ModelSpec& out) {
+  const GirderBridgeSpec& spec = bridge.spec;
+  if (!bridge.space || !spec.pier_hinge || spec.pier_hinge->damping) return false;
+  if (spec.pier_hinge->coupled) return *spec.pier_hinge->coupled;
+  return spec.pier_hinge->law_couples(
+      {out.source, fmt::format("/generators/{}/pier_hinge/law", spec.generator_index)});
+}
+
+// A pier's coupled base hinge `<pier>.hinge` (axis up; its tangents are x and y): the bending
+// across the bridge (about x, t_1) and along it (about y, t_2) on one yield ellipse; its own law
+// the torsion, which the held hinge node never turns.
+LinkSpec coupled_hinge(const Bridge& bridge, const std::string& node, const std::string& base,
+                       const std::vector<PierHinge>& hinges) {
+  LinkSpec link = make_link(hinges.front().link, node, base, upward(bridge, 1.0), 0.0,
+                            elastic(hinges.front().law.parameters.at("stiffness")));
+  link.rotational = true;
+  link.shear = hinges[1].law;    // across: about x
+  link.shear_2 = hinges[0].law;  // along: about y
+  return link;
+}
+
 // A pier's base hinges: the hinge's free end node (named as the hinge along the bridge) and the
 // links. In a plane the hinge turns about z; in space the one along the bridge about y, the one
-// across it about x, and the free end is held in torsion.
+// across it about x (or one coupled hinge about both), and the free end is held in torsion.
 std::string add_pier_base(const Bridge& bridge, int pier, const std::vector<PierHinge>& hinges,
                           ModelSpec& out) {
   const GirderBridgeSpec& spec = bridge.spec;
@@ -270,6 +293,10 @@ std::string add_pier_base(const Bridge& bridge, int pier, const std::vector<Pier
     out.supports.push_back({node, {true, true, true, false, false, true}});
   else
     out.supports.push_back(held(bridge, node));
+  if (coupled_hinges(bridge, out)) {
+    out.links.push_back(coupled_hinge(bridge, node, base, hinges));
+    return node;
+  }
   for (std::size_t k = 0; k < hinges.size(); ++k) {
     LinkSpec link = make_link(hinges[k].link, node, base, {1.0, 0.0}, 0.0, hinges[k].law);
     link.rotational = true;  // a hinge acts on theta_i - theta_j
@@ -328,6 +355,10 @@ void add_pier(const Bridge& bridge, int pier, ModelSpec& out) {
       monitor.hinge = hinge->link;
       monitor.yield_curvature = hinge->yield_curvature;
       monitor.plastic_hinge_length = spec.pier_hinge->plastic_hinge_length;
+      if (coupled_hinges(bridge, out)) {  // one hinge: along the bridge about y (t_2)
+        monitor.hinge = hinges.front().link;
+        monitor.hinge_direction = direction == 0 ? 2 : 1;
+      }
     }
     out.drift_monitors.push_back(monitor);
   }

@@ -155,13 +155,21 @@ void resolve_friction(const LinkPlace& place, model::Link& link) {
                                       friction.stick_damping, friction.stick_mass, friction.radius};
 }
 
-// A bearing's coupled shear, from its uniaxial law's numbers (the schema checked it has them).
+// A bearing's coupled shear, from its uniaxial laws' numbers (the schema checked they have them).
 void resolve_shear(const LinkPlace& place, model::Link& link) {
-  const LawSpec& shear = *place.spec.shear;
-  const std::optional<links::ShearNumbers> numbers =
-      links::CoupledShear::numbers_of(shear, {place.resolver.spec().source, place.path + "/shear"});
-  if (!numbers) place.fail("/shear/type", fmt::format("a {} has no coupled form", shear.type));
-  link.shear = model::LinkShear{shear.type, *numbers};
+  const auto numbers_at = [&](const LawSpec& shear, const std::string& key) {
+    const std::optional<links::ShearNumbers> numbers = links::CoupledShear::numbers_of(
+        shear, {place.resolver.spec().source, place.path + "/" + key});
+    if (!numbers)
+      place.fail("/" + key + "/type", fmt::format("a {} has no coupled form", shear.type));
+    return *numbers;
+  };
+  const links::ShearNumbers first = numbers_at(*place.spec.shear, "shear");
+  const links::ShearNumbers second =
+      place.spec.shear_2 ? numbers_at(*place.spec.shear_2, "shear_2") : first;
+  if (const std::optional<std::string> why = links::CoupledShear::mismatch(first, second))
+    place.fail("/shear_2", *why);
+  link.shear = model::LinkShear{place.spec.shear->type, {first, second}};
 }
 
 // Link k's JSON path: its entry in "links", or its generator's.

@@ -67,6 +67,23 @@ std::string monitor_path(std::size_t k, std::size_t user_count, const char* kind
   return k < user_count ? fmt::format("/monitors/{}/{}", kind, k) : "/generators";
 }
 
+// A monitor's hinge: a uniaxial one, or one direction of a hinge that bends about two axes.
+DriftMonitor::Curvature curvature_of(const Resolver& resolver, const DriftMonitorSpec& m,
+                                     const std::string& path) {
+  const Index hinge = resolver.link(*m.hinge, path + "/hinge");
+  const LinkSpec& link = resolver.spec().links[static_cast<std::size_t>(hinge)];
+  const bool biaxial = link.rotational && link.shear;
+  if (biaxial && !m.hinge_direction)
+    resolver.fail(path + "/hinge",
+                  fmt::format("hinge '{}' bends about two axes (its `shear`): give "
+                              "'hinge_direction', 1 or 2, the tangent this drift bends it about",
+                              *m.hinge));
+  if (!biaxial && m.hinge_direction)
+    resolver.fail(path + "/hinge_direction",
+                  fmt::format("hinge '{}' bends about one axis: no direction to pick", *m.hinge));
+  return {hinge, *m.yield_curvature, *m.plastic_hinge_length, m.hinge_direction.value_or(0)};
+}
+
 }  // namespace
 
 std::vector<ResolvedRecorder> resolve_recorders(const Resolver& resolver, std::size_t link_count) {
@@ -103,9 +120,7 @@ std::vector<DriftMonitor> resolve_drift_monitors(const Resolver& resolver) {
       const double length = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
       monitor.axis = std::array{a[0] / length, a[1] / length, a[2] / length};
     }
-    if (m.hinge)
-      monitor.curvature = DriftMonitor::Curvature{resolver.link(*m.hinge, path + "/hinge"),
-                                                  *m.yield_curvature, *m.plastic_hinge_length};
+    if (m.hinge) monitor.curvature = curvature_of(resolver, m, path);
     if (m.base_element)
       monitor.base_element = resolver.element(*m.base_element, path + "/base_element");
     if (m.shear_link) monitor.shear_link = resolver.link(*m.shear_link, path + "/shear_link");

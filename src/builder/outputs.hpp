@@ -35,6 +35,8 @@ struct DriftMonitor {
   struct Curvature {
     Index hinge = 0;
     double yield_curvature = 0.0, plastic_hinge_length = 0.0;
+    // 0: theta_p of the link's own law; 1, 2: of its coupled bending about t_1, t_2.
+    int hinge_direction = 0;
   };
   std::optional<Curvature> curvature;
   // What carries the shear (DriftMonitorSpec): an element (end i at the bottom) or a link.

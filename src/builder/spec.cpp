@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "links/coupled_shear.hpp"
+
 namespace pound::builder {
 
 double UnitsSpec::gravity() const {
@@ -13,6 +15,13 @@ double UnitsSpec::gravity() const {
   static const std::map<std::string, double> seconds = {{"s", 1.0}, {"ms", 1e-3}};
   const double metre = metres.at(length), second = seconds.at(time);
   return 9.80665 / metre * second * second;
+}
+
+bool PierHingeSpec::law_couples(const links::LawSource& where) const {
+  LawSpec probe = law;
+  probe.parameters["stiffness"] = 1.0;
+  probe.parameters["yield_force"] = 1.0;
+  return links::CoupledShear::numbers_of(probe, where).has_value();
 }
 
 double UnitsSpec::second() const { return time == "ms" ? 1000.0 : 1.0; }

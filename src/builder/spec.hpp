@@ -129,8 +129,9 @@ struct LinkSpec {
   LawSpec law;
   std::optional<FrictionSpec> friction;
   // A bearing's shear across the axis, its two directions coupled (links/coupled_shear.hpp); the
-  // link's law is then its axial law. Never with friction.
-  std::optional<LawSpec> shear;
+  // link's law is then its axial law. Never with friction. With shear_2 (3-D): the law along the
+  // second tangent (an elliptic surface), shear's along the first.
+  std::optional<LawSpec> shear, shear_2;
   // Rigid offsets [L] from node i and node j to the points that touch (global axes; z = 0 in a
   // plane): a deck corner or a floor corner rigidly tied to the node at its centre.
   std::optional<std::array<std::array<double, 3>, 2>> offsets;
@@ -354,8 +355,10 @@ struct JointSpec {
 // cantilever). The pier then yields at the top displacement Delta_y = M_y h^2 / (3 E I), its
 // drift monitor's yield drift; with a plastic-hinge length L_p the curvature ductility is
 // 1 + theta_p / (phi_y L_p) (Priestley, Seible & Calvi 1996). In a 3-D bridge each pier base
-// has two such hinges, one per bending axis (each its own uniaxial law: no interaction), the
-// one across the bridge with E I_lateral and its own M_y or phi_y (default the same as along).
+// bends about both axes, across the bridge with E I_lateral and its own M_y or phi_y (default the
+// same as along): one hinge whose two directions yield together on the ellipse
+// (M_x / M_yx)^2 + (M_y / M_yy)^2 = 1 (a circle for a circular column), or two uniaxial hinges
+// (no interaction: up to sqrt(2) stronger at 45 degrees).
 struct PierHingeSpec {
   std::optional<double> yield_moment;              // [F L]
   std::optional<double> yield_curvature;           // [1/L]
@@ -365,6 +368,12 @@ struct PierHingeSpec {
   double stiffness_factor = 10.0;                  // n
   LawSpec law;                                     // stiffness and yield_force set by the generator
   std::optional<links::DampingStiffness> damping;  // the model's a1 times k_0 or k_t; none
+  // 3-D: one hinge bending about x and y on an elliptic yield surface (true), two uniaxial
+  // hinges (false); none: coupled where law_couples() and there is no damping.
+  std::optional<bool> coupled;
+  // Whether the law has a coupled form (links/coupled_shear.hpp) once the generator sets its
+  // stiffness and yield force.
+  bool law_couples(const links::LawSource& where) const;
 };
 struct GirderBridgeSpec {
   std::string id;
@@ -422,6 +431,9 @@ struct DriftMonitorSpec {
   std::optional<std::string> hinge;
   std::optional<double> yield_curvature;       // [1/L]
   std::optional<double> plastic_hinge_length;  // [L]
+  // A hinge that bends about two axes (a rotational link with a coupled `shear`): the tangent
+  // t_1 or t_2 (1, 2) about which this drift bends it.
+  std::optional<int> hinge_direction;
   // What carries its shear: the member's lowest element (its end i forces: base shear V_i and,
   // for a beam, base moment M_i), or a link whose force is the storey shear.
   std::optional<std::string> base_element, shear_link;

@@ -231,7 +231,8 @@ Vector LinkSet::rest_stiffness() const {
     const Index row = LinkSet::row(k);
     stiffness[row] = law(k).clone()->set_trial({-gaps_[row], 0.0, 0.0}).stiffness;
     if (const links::CoupledShear* bearing = shear(k))
-      stiffness.segment(row + 1, bearing->tangents()).setConstant(bearing->numbers().stiffness);
+      for (int a = 0; a < bearing->tangents(); ++a)
+        stiffness[row + 1 + a] = bearing->numbers()[static_cast<std::size_t>(a)].stiffness;
   }
   return stiffness;
 }

@@ -463,13 +463,18 @@ Field<LinkSpec> link_rayleigh_role() {
 // A shear link is a bearing: a force law along its axis, one law on its tangential rows, and one
 // that has a coupled form.
 Field<LinkSpec> shear_rules() {
-  return rule<LinkSpec>([](JsonObject& object, LinkSpec& link, Context&) {
+  return rule<LinkSpec>([](JsonObject& object, LinkSpec& link, Context& context) {
+    if (link.shear_2 && !link.shear)
+      object.at("shear_2").fail("shear_2 is the second direction of a `shear`: give `shear` too");
     if (!link.shear) return;
     const auto refuse = [&](const std::string& key, const std::string& why) {
       object.at(key).fail(why);
     };
     if (link.friction) refuse("friction", "a link has friction or a bearing's shear, not both");
-    if (link.rotational) refuse("dof", "a bearing's shear acts on translations: not a rotation");
+    if (link.rotational && context.dimension != 3)
+      refuse("dof",
+             "a hinge's coupled bending turns about the two axes across its own: a 3-D scene "
+             "(in a plane a hinge turns about z alone)");
     if (link.rayleigh)
       refuse("rayleigh",
              "Rayleigh damping of a shear link is not available: a bearing's shear has none");
@@ -477,12 +482,26 @@ Field<LinkSpec> shear_rules() {
     if (axial && axial->traits.constraint)
       refuse("law",
              fmt::format("a shear link's axial law must be a force law, not a {}", link.law.type));
-    const JsonValue shear = object.at("shear");
-    if (!links::CoupledShear::numbers_of(*link.shear, {shear.file(), shear.path()}))
-      JsonObject(shear).at("type").fail(
-          fmt::format("a bearing's shear couples its two directions as {} can; a {} cannot (give "
-                      "it along each direction as links of their own)",
-                      links::CoupledShear::kLaws, link.shear->type));
+    const auto numbers = [&](const std::string& key, const links::LawSpec& law) {
+      const JsonValue shear = object.at(key);
+      const std::optional<links::ShearNumbers> found =
+          links::CoupledShear::numbers_of(law, {shear.file(), shear.path()});
+      if (!found)
+        JsonObject(shear).at("type").fail(
+            fmt::format("a bearing's shear couples its two directions as {} can; a {} cannot "
+                        "(give it along each direction as links of their own)",
+                        links::CoupledShear::kLaws, law.type));
+      return *found;
+    };
+    const links::ShearNumbers first = numbers("shear", *link.shear);
+    if (!link.shear_2) return;
+    if (link.shear_2->type != link.shear->type)
+      JsonObject(object.at("shear_2"))
+          .at("type")
+          .fail(fmt::format("the second direction takes the first's law, a {}", link.shear->type));
+    if (const std::optional<std::string> why =
+            links::CoupledShear::mismatch(first, numbers("shear_2", *link.shear_2)))
+      object.at("shear_2").fail(*why);
   });
 }
 
@@ -579,8 +598,15 @@ const Fields<LinkSpec>& link_fields() {
                "a bearing's shear law across the axis, along the friction's tangents, its two "
                "directions coupled in 3-D (a circular yield surface); `law` is then the axial "
                "law. " +
-                   std::string(links::CoupledShear::kLaws))
+                   std::string(links::CoupledShear::kLaws) +
+                   ". A rotational link's (3-D): the hinge's bending about the two tangents, "
+                   "`law` its torsion")
           .in_dimensions(2, 3),
+      optional("shear_2", &LinkSpec::shear_2, Law{LawPlace::link, "the shear's second direction"},
+               "the shear law along the second tangent when it differs from `shear` (then "
+               "along the first alone): an elliptic yield surface, (F_1/F_y1)² + (F_2/F_y2)² = "
+               "1. Same type and hardening ratio as `shear`")
+          .in_space(),
       optional("rayleigh", &LinkSpec::rayleigh,
                Object<builder::LinkRayleighSpec>{link_rayleigh_fields(), Docs::own_table},
                "stiffness-proportional damping a1·k·δ̇ of a spring or hinge (none without it)"),
@@ -910,6 +936,26 @@ const Fields<builder::PierHingeSpec>& pier_hinge_fields() {
                "initial stiffness (the elastic pier's damping), or their tangent at the last "
                "converged step (the link's `rayleigh`)")
           .default_text("none"),
+      optional("interaction", &PierHingeSpec::coupled,
+               Choice<bool>{{{"elliptic", true}, {"none", false}}},
+               "elliptic: one hinge `<pier>.hinge` bending about x and y, yielding on "
+               "(M_x/M_yx)² + (M_y/M_yy)² = 1 (a circle when the two are equal); none: a hinge "
+               "per axis, each on its own (`.hinge`, `.hinge.across`)")
+          .in_space()
+          .default_text("elliptic, for a law that has the coupled form and no damping"),
+      rule<PierHingeSpec>([](JsonObject& object, PierHingeSpec& hinge, Context&) {
+        if (!hinge.coupled.value_or(false)) return;
+        if (hinge.damping)
+          object.at("interaction")
+              .fail(
+                  "Rayleigh damping of a coupled hinge is not available: give \"none\" (or no "
+                  "damping)");
+        const JsonValue law = object.at("law");
+        if (!hinge.law_couples({law.file(), law.path()}))
+          object.at("interaction")
+              .fail(fmt::format("a {} hinge has no coupled form ({} have): give \"none\"",
+                                hinge.law.type, links::CoupledShear::kLaws));
+      }),
   };
   return fields;
 }
@@ -1240,6 +1286,10 @@ const Fields<DriftMonitorSpec>& drift_monitor_fields() {
                "φ_y of the hinge's section, with hinge [1/L]"),
       optional("plastic_hinge_length", &DriftMonitorSpec::plastic_hinge_length, Number<>{positive},
                "L_p, with hinge [L]"),
+      optional("hinge_direction", &DriftMonitorSpec::hinge_direction,
+               Number<int>{at_least(1), at_most(2)},
+               "with a hinge that bends about two axes (a rotational link with `shear`): the "
+               "tangent t_1 or t_2 this drift bends it about, whose plastic rotation θ_p counts"),
       optional("base_element", &DriftMonitorSpec::base_element, Text{true},
                "id of the member's lowest element, end i at the bottom: the summary's peak "
                "`shear` |V_i| and, for a beam, `base_moment` |M_i|"),

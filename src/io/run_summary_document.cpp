@@ -41,7 +41,8 @@ void add_spring(const results::LinkResult& link, Document& doc) {
       .set("work", s.work);
 }
 
-// A bearing's coupled shear: the resultant over its directions.
+// A bearing's coupled shear (a hinge's bending across its axis): the resultant over its
+// directions; an elliptic one's numbers along each tangent.
 Document shear_document(const results::LinkResult& link) {
   const results::ShearSummary& s = *link.summary.shear;
   Document doc;
@@ -50,7 +51,16 @@ Document shear_document(const results::LinkResult& link) {
       .set("peak_deformation", s.peak_deformation)
       .set("residual_deformation", s.final_deformation)
       .set("work", s.work);
-  if (link.shear_yields()) doc.set("yield_deformation", link.shear->numbers.yield_deformation());
+  if (!link.shear->circular()) {
+    doc.set("peak_deformations",
+            std::vector<double>(s.peak_deformations.begin(), s.peak_deformations.end()));
+    if (link.shear_yields())
+      doc.set("yield_deformations",
+              std::vector<double>{link.shear->numbers[0].yield_deformation(),
+                                  link.shear->numbers[1].yield_deformation()});
+  } else if (link.shear_yields()) {
+    doc.set("yield_deformation", link.shear->numbers[0].yield_deformation());
+  }
   if (const std::optional<double> ductility = link.shear_ductility())
     doc.set("ductility", *ductility);
   if (const std::optional<double> energy = link.shear_hysteretic_energy())

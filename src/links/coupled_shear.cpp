@@ -1,5 +1,7 @@
 #include "links/coupled_shear.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -24,18 +26,36 @@ std::optional<ShearNumbers> CoupledShear::numbers_of(const LawSpec& law, const L
   return numbers_of(*make_law(law, where)(LinkContext{}));
 }
 
-CoupledShear::CoupledShear(std::unique_ptr<LinkLaw> normal, ShearNumbers numbers, int tangents)
+std::optional<std::string> CoupledShear::mismatch(const ShearNumbers& first,
+                                                  const ShearNumbers& second) {
+  if (first.yields() != second.yields()) return "one direction yields and the other does not";
+  if (first.hardening_ratio != second.hardening_ratio)
+    return fmt::format("the two directions harden by one ratio b (here {:g} and {:g})",
+                       first.hardening_ratio, second.hardening_ratio);
+  return std::nullopt;
+}
+
+CoupledShear::CoupledShear(std::unique_ptr<LinkLaw> normal, ShearDirections numbers, int tangents)
     : normal_(std::move(normal)),
       numbers_(numbers),
-      hardening_modulus_(numbers.hardening_ratio * numbers.stiffness /
-                         (1.0 - numbers.hardening_ratio)),
-      tangents_(tangents) {}
+      hardening_modulus_(numbers[0].hardening_ratio * numbers[0].stiffness /
+                         (1.0 - numbers[0].hardening_ratio)),
+      tangents_(tangents) {
+  // Equal directions scale by exactly 1 (the circular law to the bit).
+  for (std::size_t a = 1; a < static_cast<std::size_t>(tangents_); ++a) {
+    if (numbers[a] == numbers[0]) continue;
+    force_scale_[a] = numbers[0].yields() ? numbers[a].yield_force / numbers[0].yield_force : 1.0;
+    deformation_scale_[a] = numbers[a].stiffness / numbers[0].stiffness / force_scale_[a];
+  }
+}
 
 CoupledShear::CoupledShear(const CoupledShear& other)
     : normal_(other.normal_->clone()),
       numbers_(other.numbers_),
       hardening_modulus_(other.hardening_modulus_),
       tangents_(other.tangents_),
+      deformation_scale_(other.deformation_scale_),
+      force_scale_(other.force_scale_),
       committed_plastic_(other.committed_plastic_),
       trial_plastic_(other.committed_plastic_) {}
 
@@ -46,16 +66,33 @@ FrictionResponse CoupledShear::set_trial(const LinkKinematics& normal,
   trial_plastic_ = committed_plastic_;
   Tangential relative{};
   const double length = elastic_trial(tangential, relative, out);
-  if (length > numbers_.yield_force) return_to_circle(relative, length, out);
+  if (length > numbers_[0].yield_force) return_to_circle(relative, length, out);
+  to_own_units(out);
   return out;
+}
+
+void CoupledShear::to_own_units(FrictionResponse& out) const {
+  for (std::size_t a = 0; a < static_cast<std::size_t>(tangents_); ++a) {
+    out.tangential_force[a] *= force_scale_[a];
+    for (std::size_t b = 0; b < static_cast<std::size_t>(tangents_); ++b)
+      out.tangential_on_slip[a][b].stiffness *= force_scale_[a] * deformation_scale_[b];
+  }
+}
+
+Tangential CoupledShear::plastic_deformation() const {
+  Tangential plastic{};
+  for (std::size_t a = 0; a < static_cast<std::size_t>(tangents_); ++a)
+    plastic[a] = committed_plastic_[a] / deformation_scale_[a];
+  return plastic;
 }
 
 double CoupledShear::elastic_trial(std::span<const LinkKinematics> tangential, Tangential& relative,
                                    FrictionResponse& out) const {
-  const double k = numbers_.stiffness;
+  const double k = numbers_[0].stiffness;
   double length = 0.0;
   for (std::size_t a = 0; a < static_cast<std::size_t>(tangents_); ++a) {
-    out.tangential_force[a] = k * (tangential[a].penetration - committed_plastic_[a]);
+    out.tangential_force[a] =
+        k * (tangential[a].penetration * deformation_scale_[a] - committed_plastic_[a]);
     relative[a] = out.tangential_force[a] - hardening_modulus_ * committed_plastic_[a];
     length += relative[a] * relative[a];
     out.tangential_on_slip[a][a].stiffness = k;
@@ -65,9 +102,9 @@ double CoupledShear::elastic_trial(std::span<const LinkKinematics> tangential, T
 
 void CoupledShear::return_to_circle(const Tangential& relative, double length,
                                     FrictionResponse& out) {
-  const double k = numbers_.stiffness, hardening = hardening_modulus_;
+  const double k = numbers_[0].stiffness, hardening = hardening_modulus_;
   const auto n = static_cast<std::size_t>(tangents_);
-  const double plastic_step = (length - numbers_.yield_force) / (k + hardening);
+  const double plastic_step = (length - numbers_[0].yield_force) / (k + hardening);
   for (std::size_t a = 0; a < n; ++a) {
     const double step =
         n == 1 ? std::copysign(plastic_step, relative[a]) : plastic_step * relative[a] / length;
@@ -75,7 +112,7 @@ void CoupledShear::return_to_circle(const Tangential& relative, double length,
     out.tangential_force[a] -= k * step;
   }
   if (n == 1) {  // BilinearSpring's slope, b k, as that law computes it
-    out.tangential_on_slip[0][0].stiffness = numbers_.hardening_ratio * k;
+    out.tangential_on_slip[0][0].stiffness = numbers_[0].hardening_ratio * k;
     return;
   }
   const double along = k * k / (k + hardening), across = k * k * plastic_step / length;

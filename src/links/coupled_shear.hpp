@@ -1,8 +1,11 @@
 #pragma once
-// A bearing's shear in the plane across its axis, its two directions coupled: a circular yield
-// surface (an isotropic elastomeric or lead-rubber bearing, or a bilinear bearing, in space). It
-// acts on a link's tangential rows (links/coulomb_friction.hpp's tangents t_1, t_2 of its axis),
-// beside the link's own law on its normal row (the bearing's axial stiffness):
+// A bearing's shear in the plane across its axis, or a column hinge's bending about the two axes
+// across the column, its two directions coupled: a circular yield surface (an isotropic
+// elastomeric or lead-rubber bearing, a bilinear bearing, a circular column) or an elliptic one
+// (a rectangular column: each direction its own k_a and F_y,a). It acts on a link's tangential
+// rows (links/coulomb_friction.hpp's tangents t_1, t_2 of its axis; a rotational link's rows turn
+// about them), beside the link's own law on its normal row (the bearing's axial stiffness, the
+// hinge's torsion):
 //
 //   s = (u_i - u_j) . t_a                   (a vector of the plane; a = 1, 2)
 //   F = k (s - p)                           p: plastic deformation (a vector, history)
@@ -23,14 +26,22 @@
 // points along that slip, and each turn dissipates 2 pi F_y sqrt(r^2 - delta_y^2) (what the
 // tests check).
 //
+// Elliptic: with k_a, F_y,a and one b, the surface sum_a ((F_a - alpha_a) / F_y,a)^2 <= 1. In
+// units of direction 1 (s~_a = s_a (k_a / k_1) / (F_y,a / F_y,1), F~_a = F_a F_y,1 / F_y,a) the
+// law is the circular one with k_1, F_y,1 and b: the same return, F_a = F~_a F_y,a / F_y,1 and
+// the tangent scaled row by row and column by column. Equal directions scale by exactly 1: the
+// circular law to the bit. The flow is normal to the ellipse in those units (the elliptic
+// interaction used for biaxial column hinges); each direction alone is its own bilinear law.
+//
 // Made from a uniaxial law's numbers: bilinear_spring, lead_rubber and elastic_perfectly_plastic
 // (BilinearSpring objects), or elastic_spring (F_y infinite: k I). Shear and axial are not
 // coupled (no axial-load-dependent strength, no P-Delta of the bearing). Units: k [F/L], F_y [F],
-// b [-] in [0, 1), s and p [L].
+// b [-] in [0, 1), s and p [L] (a hinge's: k [F L/rad], F_y [F L], s and p [rad]).
 #include <cmath>
 #include <memory>
 #include <optional>
 #include <span>
+#include <string>
 
 #include "links/coulomb_friction.hpp"
 #include "links/link_law.hpp"
@@ -44,7 +55,10 @@ struct ShearNumbers {
 
   bool yields() const { return std::isfinite(yield_force); }
   double yield_deformation() const { return yield_force / stiffness; }  // delta_y = F_y / k
+  bool operator==(const ShearNumbers&) const = default;
 };
+// Along t_1 and t_2 (equal: a circular surface).
+using ShearDirections = std::array<ShearNumbers, kMaxTangents>;
 
 struct LawSpec;
 struct LawSource;
@@ -58,8 +72,12 @@ class CoupledShear {
   static std::optional<ShearNumbers> numbers_of(const LinkLaw& law);
   static std::optional<ShearNumbers> numbers_of(const LawSpec& law, const LawSource& where);
 
+  // Why two directions' numbers cannot make one law (a hardening ratio or a yielding that
+  // differs); none when they can.
+  static std::optional<std::string> mismatch(const ShearNumbers& first, const ShearNumbers& second);
+
   // normal: the link's law on its normal row; tangents: 1 (a plane) or 2 (space).
-  CoupledShear(std::unique_ptr<LinkLaw> normal, ShearNumbers numbers, int tangents);
+  CoupledShear(std::unique_ptr<LinkLaw> normal, ShearDirections numbers, int tangents);
   CoupledShear(const CoupledShear& other);
   CoupledShear& operator=(const CoupledShear&) = delete;
 
@@ -70,8 +88,9 @@ class CoupledShear {
   void revert();
   int tangents() const { return tangents_; }
   const LinkLaw& normal_law() const { return *normal_; }
-  const ShearNumbers& numbers() const { return numbers_; }
-  const Tangential& plastic_deformation() const { return committed_plastic_; }
+  const ShearDirections& numbers() const { return numbers_; }
+  // p along each tangent, committed [L].
+  Tangential plastic_deformation() const;
 
  private:
   // The elastic trial force k (s - p_n) and xi = that - H p_n along each tangent; returns |xi|.
@@ -79,12 +98,16 @@ class CoupledShear {
                        FrictionResponse& out) const;
   // The radial return of a trial past the yield circle, with its consistent tangent.
   void return_to_circle(const Tangential& relative, double length, FrictionResponse& out);
+  // Forces and tangent from direction 1's units to each direction's own.
+  void to_own_units(FrictionResponse& out) const;
 
   std::unique_ptr<LinkLaw> normal_;
-  ShearNumbers numbers_;
-  double hardening_modulus_;  // H
+  ShearDirections numbers_;
+  double hardening_modulus_;  // H of direction 1
   int tangents_;
-  Tangential committed_plastic_{}, trial_plastic_{};
+  // Direction a's units to direction 1's: s~ = s * deformation_scale, F = F~ * force_scale.
+  Tangential deformation_scale_{1.0, 1.0}, force_scale_{1.0, 1.0};
+  Tangential committed_plastic_{}, trial_plastic_{};  // p~, in direction 1's units
 };
 
 }  // namespace pound::links

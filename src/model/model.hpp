@@ -80,11 +80,13 @@ struct LinkFriction {
   std::optional<double> radius;                                      // [L] > 0; none: a flat slider
 };
 
-// A bearing's shear across the link's axis, its directions coupled (links/coupled_shear.hpp),
-// from the numbers of a uniaxial law (`law`, for messages and summaries).
+// A bearing's shear across the link's axis (a hinge's bending across it), its directions coupled
+// (links/coupled_shear.hpp), from the numbers of a uniaxial law along each tangent (`law`, the
+// type, for messages and summaries).
 struct LinkShear {
   std::string law;
-  links::ShearNumbers numbers;
+  links::ShearDirections numbers;
+  bool circular() const { return numbers[0] == numbers[1]; }
 };
 
 // The tangents of a contact plane with unit normal n: t = z x n in a plane scene (n turned by

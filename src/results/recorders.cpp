@@ -176,23 +176,25 @@ void LinkSummaries::set_step_forces(const std::vector<char>& by_row) {
     step_forces_[k] = by_row[static_cast<std::size_t>(rows_[k])];
 }
 
-LinkSummaries::LinkSummaries(std::vector<Index> normal_rows, const std::vector<Index>& shear_rows)
+LinkSummaries::LinkSummaries(std::vector<Index> normal_rows,
+                             const std::vector<ShearRows>& shear_rows)
     : rows_(std::move(normal_rows)),
       shear_rows_(shear_rows),
       summaries_(rows_.size()),
       step_forces_(rows_.size(), 0) {
-  shear_rows_.resize(rows_.size(), 0);
+  shear_rows_.resize(rows_.size());
   for (std::size_t k = 0; k < rows_.size(); ++k)
-    if (shear_rows_[k] > 0) summaries_[k].shear = ShearSummary{};
+    if (shear_rows_[k].count > 0) summaries_[k].shear = ShearSummary{};
 }
 
 double LinkSummaries::resultant(const Vector& values, std::size_t k) const {
-  return values.segment(rows_[k] + 1, shear_rows_[k]).norm();
+  return values.segment(rows_[k] + 1, shear_rows_[k].count).norm();
 }
 
 void LinkSummaries::record_shear(const integrators::State& state, std::size_t k) {
   ShearSummary& s = *summaries_[k].shear;
-  const Index first = rows_[k] + 1, count = shear_rows_[k];
+  const ShearRows& rows = shear_rows_[k];
+  const Index first = rows_[k] + 1, count = rows.count;
   if (started_)
     s.work +=
         0.5 * (state.link_force.segment(first, count) + previous_.link_force.segment(first, count))
@@ -202,6 +204,16 @@ void LinkSummaries::record_shear(const integrators::State& state, std::size_t k)
   s.final_deformation = resultant(state.link_penetration, k);
   s.peak_force = std::max(s.peak_force, s.final_force);
   s.peak_deformation = std::max(s.peak_deformation, s.final_deformation);
+  double ductility = 0.0;
+  for (Index a = 0; a < count; ++a) {
+    const auto along = static_cast<std::size_t>(a);
+    const double deformation = state.link_penetration[first + a];
+    s.final_forces[along] = state.link_force[first + a];
+    s.peak_deformations[along] = std::max(s.peak_deformations[along], std::abs(deformation));
+    const double ratio = deformation / rows.yield_deformation[along];
+    ductility += ratio * ratio;
+  }
+  s.peak_ductility = std::max(s.peak_ductility, std::sqrt(ductility));
 }
 
 void LinkSummaries::record(const integrators::State& state) {

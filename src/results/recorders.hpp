@@ -1,6 +1,7 @@
 #pragma once
 // Recorders: what a run keeps of each accepted step, only for what the user asked for.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -155,14 +156,26 @@ class EnvelopeRecorder final : public Recorder {
   bool started_ = false;
 };
 
-// A bearing's shear over the run (a link with a coupled shear): the resultant of its tangential
-// rows, |F_t| and |s|.
+// A bearing's shear over the run (a link with a coupled shear; a hinge's bending across its
+// axis): the resultant of its tangential rows, |F_t| and |s|, and each row's.
 struct ShearSummary {
   double peak_force = 0.0;         // [F]
   double peak_deformation = 0.0;   // [L]
   double work = 0.0;               // integral of F_t . ds [F L]
   double final_force = 0.0;        // [F]
   double final_deformation = 0.0;  // residual [L]
+  // Along each tangent: the largest |s_a| [L] and F_a at the end [F].
+  std::array<double, 2> peak_deformations{}, final_forces{};
+  // The largest |(s_1 / delta_y1, s_2 / delta_y2)|: the resultant's ductility on an elliptic
+  // surface (0 while the law has no yield).
+  double peak_ductility = 0.0;
+};
+
+// A link's shear rows: how many follow its normal row, and each one's yield deformation
+// (infinite: elastic).
+struct ShearRows {
+  Index count = 0;
+  std::array<double, 2> yield_deformation{};
 };
 
 // Pounding summary of one link over the run.
@@ -197,9 +210,10 @@ struct LinkSummary {
 
 class LinkSummaries : public Observer {
  public:
-  // shear_rows[k]: how many tangential rows after link k's normal row are a bearing's shear (0:
-  // none).
-  explicit LinkSummaries(std::vector<Index> normal_rows, const std::vector<Index>& shear_rows = {});
+  // shear_rows[k]: the tangential rows after link k's normal row that are a bearing's shear
+  // (count 0: none).
+  explicit LinkSummaries(std::vector<Index> normal_rows,
+                         const std::vector<ShearRows>& shear_rows = {});
   // By row of B: 1 where the state's force is its step's average (an implicit integrator's hard
   // contact: its impulse acts in the step that found it), so impulse and work take the rectangle
   // rule there, F_{n+1} dt and F_{n+1} d(delta), instead of the trapezoidal one.
@@ -212,7 +226,8 @@ class LinkSummaries : public Observer {
   double resultant(const Vector& values, std::size_t k) const;
   void record_shear(const integrators::State& state, std::size_t k);
 
-  std::vector<Index> rows_, shear_rows_;
+  std::vector<Index> rows_;
+  std::vector<ShearRows> shear_rows_;
   std::vector<LinkSummary> summaries_;
   std::vector<char> step_forces_;  // by summary
   integrators::State previous_;

@@ -137,9 +137,15 @@ std::vector<Index> normal_rows(const integrators::LinkSet& links) {
   return rows;
 }
 
-std::vector<Index> shear_rows(const integrators::LinkSet& links) {
-  std::vector<Index> rows;
-  for (Index k = 0; k < links.count(); ++k) rows.push_back(links.shear(k) ? links.rows(k) - 1 : 0);
+std::vector<ShearRows> shear_rows(const integrators::LinkSet& links) {
+  std::vector<ShearRows> rows(static_cast<std::size_t>(links.count()));
+  for (Index k = 0; k < links.count(); ++k)
+    if (const links::CoupledShear* shear = links.shear(k)) {
+      ShearRows& these = rows[static_cast<std::size_t>(k)];
+      these.count = shear->tangents();
+      for (std::size_t a = 0; a < these.yield_deformation.size(); ++a)
+        these.yield_deformation[a] = shear->numbers()[a].yield_deformation();
+    }
   return rows;
 }
 
@@ -482,17 +488,29 @@ std::optional<double> LinkResult::hysteretic_energy() const {
   return summary.work - viscous.work - force * force / (2.0 * *initial_stiffness);
 }
 
-bool LinkResult::shear_yields() const { return shear && summary.shear && shear->numbers.yields(); }
+bool LinkResult::shear_yields() const {
+  return shear && summary.shear && shear->numbers[0].yields();
+}
 
 std::optional<double> LinkResult::shear_ductility() const {
   if (!shear_yields()) return std::nullopt;
-  return summary.shear->peak_deformation * shear->numbers.stiffness / shear->numbers.yield_force;
+  return summary.shear->peak_ductility;
+}
+
+std::optional<double> LinkResult::shear_peak_plastic_deformation(std::size_t along) const {
+  if (!shear_yields()) return std::nullopt;
+  return std::max(
+      0.0, summary.shear->peak_deformations[along] - shear->numbers[along].yield_deformation());
 }
 
 std::optional<double> LinkResult::shear_hysteretic_energy() const {
   if (!shear_yields()) return std::nullopt;
-  const double force = summary.shear->final_force;
-  return summary.shear->work - force * force / (2.0 * shear->numbers.stiffness);
+  double stored = 0.0;
+  for (std::size_t a = 0; a < shear->numbers.size(); ++a) {
+    const double force = summary.shear->final_forces[a];
+    stored += force * force / (2.0 * shear->numbers[a].stiffness);
+  }
+  return summary.shear->work - stored;
 }
 
 std::optional<double> RunSummary::hysteretic_energy() const {
@@ -522,6 +540,17 @@ std::optional<double> JointResult::margin() const {
   if (!(monitor.seat_width > 0.0)) return std::nullopt;
   return monitor.seat_width - peak.peak_seat_movement;
 }
+
+namespace {
+// theta_p of a drift monitor's hinge: its law's, or its coupled bending's about one tangent.
+std::optional<double> hinge_plastic_rotation(const RunSummary& run,
+                                             const builder::DriftMonitor::Curvature& curvature) {
+  const LinkResult& hinge = run.links[static_cast<std::size_t>(curvature.hinge)];
+  if (curvature.hinge_direction == 0) return hinge.peak_plastic_deformation();
+  return hinge.shear_peak_plastic_deformation(
+      static_cast<std::size_t>(curvature.hinge_direction - 1));
+}
+}  // namespace
 
 RunSummary summarise_run(const builder::BuiltModel& built, const assembly::StructuralSystem& system,
                          const RunObservers& observers, RunStatus status,
@@ -556,8 +585,7 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
   for (std::size_t k = 0; k < built.drift_monitors.size(); ++k) {
     DriftResult drift{built.drift_monitors[k], observers.drifts().peaks()[k]};
     if (const auto& curvature = drift.monitor.curvature)
-      if (const std::optional<double> plastic =
-              run.links[static_cast<std::size_t>(curvature->hinge)].peak_plastic_deformation())
+      if (const std::optional<double> plastic = hinge_plastic_rotation(run, *curvature))
         drift.curvature_ductility =
             1.0 + *plastic / (curvature->yield_curvature * curvature->plastic_hinge_length);
     drift.peak_shear = observers.base_shear(k);

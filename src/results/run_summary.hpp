@@ -110,11 +110,14 @@ struct LinkResult {
   // Energy the law dissipated: its work less the elastic energy F^2 / (2 k_0) it still holds,
   // both without the viscous part.
   std::optional<double> hysteretic_energy() const;
-  // A bearing's coupled shear (model::LinkShear) and, when it yields, its resultant's peak
-  // over delta_y = F_y / k and the energy it dissipated (its work less k's F^2 / (2 k)).
+  // A bearing's coupled shear (model::LinkShear) and, when it yields, its resultant's peak in
+  // units of delta_y = F_y / k (of each direction's: the ellipse's), each direction's peak
+  // plastic deformation (a hinge's theta_p about that tangent) and the energy it dissipated (its
+  // work less sum_a F_a^2 / (2 k_a)).
   std::optional<model::LinkShear> shear;
   bool shear_yields() const;
   std::optional<double> shear_ductility() const;
+  std::optional<double> shear_peak_plastic_deformation(std::size_t along) const;
   std::optional<double> shear_hysteretic_energy() const;
 };
 

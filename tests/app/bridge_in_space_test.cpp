@@ -162,54 +162,70 @@ TEST(BridgeInSpace, HingedPiersMoveAsThePlaneHingedBridgeUntilItsFirstImpact) {
   EXPECT_EQ(across, 0.0);
 }
 
-// Each pier base has a hinge about y (along the bridge, E I) and one about x (across, E I_lateral,
-// its own M_y): the piers' drift monitors yield at M_y h^2 / (3 E I) in each direction, and the
-// hinges keep the elastic piers' stiffness at the pier top both ways where the pier is a
-// cantilever (the (n + 1) / n rule): along the bridge, and across it when the seat's twist
-// spring leaves the pier top free to turn (bearings 1 mm apart: its k_v s^2 / 4 ~ 0); with the
-// default spacing the deck's torsion holds the top, and the hinged pier is a little softer across
-// (printed).
+// Each pier base bends about y (along the bridge, E I) and about x (across, E I_lateral, its own
+// M_y): as two uniaxial hinges ("interaction": "none") or one hinge coupling both (the default
+// for a bilinear law). Either way the piers' drift monitors yield at M_y h^2 / (3 E I) in each
+// direction, and the hinges keep the elastic piers' stiffness at the pier top both ways where the
+// pier is a cantilever (the (n + 1) / n rule): along the bridge, and across it when the seat's
+// twist spring leaves the pier top free to turn (bearings 1 mm apart: its k_v s^2 / 4 ~ 0); with
+// the default spacing the deck's torsion holds the top, and the hinged pier is a little softer
+// across (printed).
 TEST(BridgeInSpace, EachPierBaseHasAHingeAboutEachBendingAxis) {
-  Json model = space_bridge(1.0, 0.0, 2);
-  model["generators"][0].erase("pier_yield_displacement");
-  model["generators"][0]["pier_hinge"] = {
-      {"yield_moment", 4.0e6},
-      {"yield_moment_lateral", 6.0e6},
-      {"law", {{"type", "bilinear_spring"}, {"hardening_ratio", 0.02}}}};
-  const BuiltModel hinged = app::load_model_text(model.dump(), kModels + "bridge.json").built;
-  const double e = 3.0e10, h = 8.0, along = 0.8, across = 1.2;
-  for (const DriftMonitor& monitor : hinged.drift_monitors) {
-    const bool lateral = monitor.direction == 1;
-    const double expected =
-        (lateral ? 6.0e6 : 4.0e6) * h * h / (3.0 * e * (lateral ? across : along));
-    EXPECT_TRUE(monitor.yields) << monitor.id;
-    EXPECT_NEAR(*monitor.yield_drift / expected, 1.0, 1e-15) << monitor.id;
+  for (const char* interaction : {"none", "elliptic"}) {
+    Json model = space_bridge(1.0, 0.0, 2);
+    model["generators"][0].erase("pier_yield_displacement");
+    model["generators"][0]["pier_hinge"] = {
+        {"yield_moment", 4.0e6},
+        {"yield_moment_lateral", 6.0e6},
+        {"interaction", interaction},
+        {"law", {{"type", "bilinear_spring"}, {"hardening_ratio", 0.02}}}};
+    const BuiltModel hinged = app::load_model_text(model.dump(), kModels + "bridge.json").built;
+    const double e = 3.0e10, h = 8.0, along = 0.8, across = 1.2;
+    for (const DriftMonitor& monitor : hinged.drift_monitors) {
+      const bool lateral = monitor.direction == 1;
+      const double expected =
+          (lateral ? 6.0e6 : 4.0e6) * h * h / (3.0 * e * (lateral ? across : along));
+      EXPECT_TRUE(monitor.yields) << monitor.id;
+      EXPECT_NEAR(*monitor.yield_drift / expected, 1.0, 1e-15) << monitor.id;
+    }
+    if (std::string(interaction) == "none") {
+      for (const auto& [id, axis] :
+           {std::pair{"bridge.p1.hinge", 1}, {"bridge.p1.hinge.across", 0}}) {
+        const model::Link& link = hinged.model.links[hinged.link_index.at(id)];
+        EXPECT_TRUE(link.rotational) << id;
+        EXPECT_EQ(link.axis[static_cast<std::size_t>(axis)], 1.0) << id;
+      }
+    } else {  // about x (t_1) across the bridge, about y (t_2) along it
+      const model::Link& link = hinged.model.links[hinged.link_index.at("bridge.p1.hinge")];
+      ASSERT_TRUE(link.rotational && link.shear);
+      EXPECT_EQ(link.axis[2], 1.0);
+      EXPECT_EQ(link.shear->numbers[0].yield_force, 6.0e6);
+      EXPECT_EQ(link.shear->numbers[1].yield_force, 4.0e6);
+      EXPECT_NEAR(link.shear->numbers[0].stiffness / link.shear->numbers[1].stiffness,
+                  across / along, 1e-15);
+      EXPECT_FALSE(hinged.link_index.contains("bridge.p1.hinge.across"));
+    }
+    // Pier-top stiffness along x and y: hinged against elastic piers, one small push each.
+    const auto ratio = [](Json with_hinges, int direction) {
+      Json elastic = with_hinges;
+      elastic["generators"][0].erase("pier_hinge");
+      return top_stiffness(app::load_model_text(with_hinges.dump(), kModels + "bridge.json").built,
+                           direction) /
+             top_stiffness(app::load_model_text(elastic.dump(), kModels + "bridge.json").built,
+                           direction);
+    };
+    Json free_top = model;
+    free_top["generators"][0]["bearing_spacing"] = 0.001;
+    const double along_x = ratio(model, 0), across_free = ratio(free_top, 1);
+    const double across_held = ratio(model, 1);
+    std::cout << fmt::format(
+        "interaction {}: pier-top stiffness, hinged / elastic - 1: along x {:.1e}; across, top "
+        "free to turn {:.1e}, held by the deck's torsion (default bearing spacing) {:.1e}\n",
+        interaction, along_x - 1.0, across_free - 1.0, across_held - 1.0);
+    EXPECT_LT(std::abs(along_x - 1.0), 1e-9);
+    EXPECT_LT(std::abs(across_free - 1.0), 1e-7);
+    EXPECT_LT(std::abs(across_held - 1.0), 0.05);
   }
-  for (const auto& [id, axis] : {std::pair{"bridge.p1.hinge", 1}, {"bridge.p1.hinge.across", 0}}) {
-    const model::Link& link = hinged.model.links[hinged.link_index.at(id)];
-    EXPECT_TRUE(link.rotational) << id;
-    EXPECT_EQ(link.axis[static_cast<std::size_t>(axis)], 1.0) << id;
-  }
-  // Pier-top stiffness along x and y: hinged against elastic piers, one small push each.
-  const auto ratio = [](Json with_hinges, int direction) {
-    Json elastic = with_hinges;
-    elastic["generators"][0].erase("pier_hinge");
-    return top_stiffness(app::load_model_text(with_hinges.dump(), kModels + "bridge.json").built,
-                         direction) /
-           top_stiffness(app::load_model_text(elastic.dump(), kModels + "bridge.json").built,
-                         direction);
-  };
-  Json free_top = model;
-  free_top["generators"][0]["bearing_spacing"] = 0.001;
-  const double along_x = ratio(model, 0), across_free = ratio(free_top, 1);
-  const double across_held = ratio(model, 1);
-  std::cout << fmt::format(
-      "pier-top stiffness, hinged / elastic - 1: along x {:.1e}; across, top free to turn "
-      "{:.1e}, held by the deck's torsion (default bearing spacing) {:.1e}\n",
-      along_x - 1.0, across_free - 1.0, across_held - 1.0);
-  EXPECT_LT(std::abs(along_x - 1.0), 1e-9);
-  EXPECT_LT(std::abs(across_free - 1.0), 1e-7);
-  EXPECT_LT(std::abs(across_held - 1.0), 0.05);
 }
 
 // A pier's base moment in each drift direction is the moment of the hinge about the axis across

@@ -25,7 +25,16 @@ namespace {
 constexpr double kStiffness = 2.0e7, kYield = 3.0e5;
 
 CoupledShear bearing(double hardening, int tangents = 2) {
-  return {std::make_unique<ElasticSpring>(1e10), {kStiffness, kYield, hardening}, tangents};
+  const ShearNumbers numbers{kStiffness, kYield, hardening};
+  return {std::make_unique<ElasticSpring>(1e10), {numbers, numbers}, tangents};
+}
+
+// A rectangular column's hinge: about t_2 three times as stiff and twice as strong as about t_1.
+constexpr double kStiffness2 = 3.0 * kStiffness, kYield2 = 2.0 * kYield;
+CoupledShear elliptic(double hardening) {
+  return {std::make_unique<ElasticSpring>(1e10),
+          {ShearNumbers{kStiffness, kYield, hardening}, {kStiffness2, kYield2, hardening}},
+          2};
 }
 
 FrictionResponse push(CoupledShear& law, double x, double y) {
@@ -85,27 +94,29 @@ TEST(CoupledShear, ADiagonalPushYieldsAtTheYieldForceNotRootTwoTimesIt) {
 // ~1e-9): elastic k I before yield, and the radial return's tangent after.
 TEST(CoupledShear, TheTangentIsTheForcesDerivative) {
   double worst = 0.0;
-  for (const std::array<double, 2> target : {std::array{0.004, 0.003}, std::array{0.02, -0.011}}) {
-    CoupledShear law = bearing(0.1);
-    push(law, 0.012, 0.0);  // a plastic history along x first
-    law.commit();
-    const FrictionResponse at = push(law, target[0], target[1]);
-    const double h = 1e-7;
-    for (int b = 0; b < 2; ++b) {
-      std::array<double, 2> plus = target, minus = target;
-      plus[static_cast<std::size_t>(b)] += h;
-      minus[static_cast<std::size_t>(b)] -= h;
-      const FrictionResponse up = push(law, plus[0], plus[1]);
-      const FrictionResponse down = push(law, minus[0], minus[1]);
-      for (std::size_t a = 0; a < 2; ++a) {
-        const double difference = (up.tangential_force[a] - down.tangential_force[a]) / (2 * h);
-        worst = std::max(worst,
-                         std::abs(difference - at.tangential_on_slip[a][b].stiffness) / kStiffness);
+  for (const std::array<double, 2> target : {std::array{0.004, 0.003}, std::array{0.02, -0.011}})
+    for (const bool ellipse : {false, true}) {
+      CoupledShear law = ellipse ? elliptic(0.1) : bearing(0.1);
+      push(law, 0.012, 0.0);  // a plastic history along x first
+      law.commit();
+      const FrictionResponse at = push(law, target[0], target[1]);
+      const double h = 1e-7;
+      for (int b = 0; b < 2; ++b) {
+        std::array<double, 2> plus = target, minus = target;
+        plus[static_cast<std::size_t>(b)] += h;
+        minus[static_cast<std::size_t>(b)] -= h;
+        const FrictionResponse up = push(law, plus[0], plus[1]);
+        const FrictionResponse down = push(law, minus[0], minus[1]);
+        for (std::size_t a = 0; a < 2; ++a) {
+          const double difference = (up.tangential_force[a] - down.tangential_force[a]) / (2 * h);
+          worst = std::max(
+              worst, std::abs(difference - at.tangential_on_slip[a][b].stiffness) / kStiffness);
+        }
       }
     }
-  }
-  std::cout << fmt::format("coupled shear tangent against central differences: {:.1e} of k\n",
-                           worst);
+  std::cout << fmt::format(
+      "coupled shear tangent against central differences (circle and ellipse): {:.1e} of k_1\n",
+      worst);
   EXPECT_LT(worst, 1e-7);
 }
 
@@ -165,6 +176,69 @@ TEST(CoupledShear, RevertForgetsTheTrialAndCopiesKeepTheCommittedState) {
   EXPECT_EQ(law.plastic_deformation()[0], plastic[0]);
 }
 
+// An elliptic surface: each direction alone is that direction's bilinear law to round-off (the
+// two-direction return computes what the uniaxial law does in another order; the second is also
+// scaled into the first's units and back), over a random history that yields both ways.
+TEST(CoupledShear, EachAxisOfAnEllipseIsItsOwnBilinearLaw) {
+  for (const std::size_t along : {std::size_t{0}, std::size_t{1}}) {
+    BilinearSpring uniaxial(along == 0 ? kStiffness : kStiffness2, along == 0 ? kYield : kYield2,
+                            0.1);
+    CoupledShear law = elliptic(0.1);
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> step(-0.01, 0.01);
+    double s = 0.0, worst_force = 0.0, worst_tangent = 0.0;
+    for (int k = 0; k < 5000; ++k) {
+      s += step(random);
+      const LawResponse expected = uniaxial.set_trial({s, 0.0, 0.0});
+      const FrictionResponse got = along == 0 ? push(law, s, 0.0) : push(law, 0.0, s);
+      worst_force = std::max(worst_force, std::abs(got.tangential_force[along] - expected.force));
+      worst_tangent =
+          std::max(worst_tangent,
+                   std::abs(got.tangential_on_slip[along][along].stiffness - expected.stiffness));
+      uniaxial.commit();
+      law.commit();
+    }
+    std::cout << fmt::format(
+        "ellipse along t_{}: force off the bilinear law by {:.1e} of F_y, tangent {:.1e} of k\n",
+        along + 1, worst_force / (along == 0 ? kYield : kYield2),
+        worst_tangent / (along == 0 ? kStiffness : kStiffness2));
+    EXPECT_LT(worst_force, 1e-13 * (along == 0 ? kYield : kYield2));
+    EXPECT_LT(worst_tangent, 1e-14 * (along == 0 ? kStiffness : kStiffness2));
+  }
+}
+
+// Pushed far past yield (b = 0) along s = r (delta_y1 cos a, delta_y2 sin a), a ray in yield
+// units, the force stops at (F_y1 cos a, F_y2 sin a): on the ellipse, at the point the ray meets.
+TEST(CoupledShear, ARayPushOnAnEllipseStopsWhereTheRayMeetsIt) {
+  double worst = 0.0;
+  for (const double angle : {0.3, 1.0, 2.2, 4.0}) {
+    CoupledShear law = elliptic(0.0);
+    FrictionResponse last;
+    for (int k = 1; k <= 200; ++k) {
+      const double r = 20.0 * k / 200.0;
+      last = push(law, r * kYield / kStiffness * std::cos(angle),
+                  r * kYield2 / kStiffness2 * std::sin(angle));
+      law.commit();
+    }
+    worst = std::max({worst, std::abs(last.tangential_force[0] / kYield - std::cos(angle)),
+                      std::abs(last.tangential_force[1] / kYield2 - std::sin(angle))});
+  }
+  std::cout << fmt::format(
+      "ray pushes to 20 delta_y on an ellipse: force off (F_y1 cos a, F_y2 "
+      "sin a) by {:.1e} of F_y\n",
+      worst);
+  EXPECT_LT(worst, 1e-14);
+}
+
+TEST(CoupledShear, TwoDirectionsMakeOneLawOnlyWithOneHardeningRatio) {
+  const ShearNumbers first{1e6, 1e4, 0.1};
+  EXPECT_FALSE(CoupledShear::mismatch(first, {3e6, 2e4, 0.1}));
+  const std::optional<std::string> hardening = CoupledShear::mismatch(first, {3e6, 2e4, 0.2});
+  ASSERT_TRUE(hardening);
+  EXPECT_NE(hardening->find("0.1 and 0.2"), std::string::npos) << *hardening;
+  EXPECT_TRUE(CoupledShear::mismatch(first, {3e6, std::numeric_limits<double>::infinity(), 0.1}));
+}
+
 // The numbers come from the uniaxial laws' own: lead_rubber's k_u, F_y = Q_d k_u / (k_u - k_d),
 // b = k_d / k_u; an elastic spring never yields; a Bouc-Wen bearing has no coupled form here.
 TEST(CoupledShear, TakesItsNumbersFromTheUniaxialLaws) {
@@ -181,7 +255,7 @@ TEST(CoupledShear, TakesItsNumbersFromTheUniaxialLaws) {
   const auto elastic = CoupledShear::numbers_of({"elastic_spring", {{"stiffness", 3e6}}}, where);
   ASSERT_TRUE(elastic);
   EXPECT_EQ(elastic->yield_force, std::numeric_limits<double>::infinity());
-  CoupledShear spring(std::make_unique<ElasticSpring>(1.0), *elastic, 2);
+  CoupledShear spring(std::make_unique<ElasticSpring>(1.0), {*elastic, *elastic}, 2);
   const FrictionResponse far = push(spring, 10.0, -4.0);
   EXPECT_EQ(far.tangential_force[0], 3e7);
   EXPECT_EQ(far.tangential_on_slip[0][1].stiffness, 0.0);
