@@ -294,8 +294,9 @@ NodeVector row_direction(const model::Link& link, const model::Coordinates& alon
   return model::over_directions(along, false, dimension);
 }
 std::vector<model::Coordinates> tangents(const model::Link& link, int dimension) {
-  return link.friction || link.shear ? model::contact_tangents(link.axis, dimension)
-                                     : std::vector<model::Coordinates>{};
+  if (!link.friction && !link.shear) return {};
+  if (link.tangent) return {*link.tangent, model::cross(link.axis, *link.tangent)};
+  return model::contact_tangents(link.axis, dimension);
 }
 
 // A row's direction over the DOFs of node i and of node j (the same unless the ends are offset).

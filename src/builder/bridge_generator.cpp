@@ -165,6 +165,7 @@ void add_bearing(const Bridge& bridge, const std::string& girder, const std::str
     LinkSpec bearing = make_link(girder + ".bearing", girder, seat, upward(bridge, 1.0), 0.0,
                                  elastic(spec.bearing_vertical_stiffness));
     bearing.shear = spec.bearing;
+    bearing.tangent = along(bridge, 1.0, station);  // t_1 along the bridge, t_2 across
     out.links.push_back(std::move(bearing));
     return;
   }
@@ -264,13 +265,15 @@ bool coupled_hinges(const Bridge& bridge, const ModelSpec& out) {
       {out.source, fmt::format("/generators/{}/pier_hinge/law", spec.generator_index)});
 }
 
-// A pier's coupled base hinge `<pier>.hinge` (axis up; its tangents are x and y): the bending
-// across the bridge (about x, t_1) and along it (about y, t_2) on one yield ellipse; its own law
-// the torsion, which the held hinge node never turns.
-LinkSpec coupled_hinge(const Bridge& bridge, const std::string& node, const std::string& base,
-                       const std::vector<PierHinge>& hinges) {
+// A pier's coupled base hinge `<pier>.hinge` (axis up; its tangents the bridge's directions at
+// its station, x and y on a straight bridge): the bending across the bridge (about the tangent
+// along it, t_1) and along it (about t_2, across) on one yield ellipse; its own law the torsion,
+// which the held hinge node never turns.
+LinkSpec coupled_hinge(const Bridge& bridge, int pier, const std::string& node,
+                       const std::string& base, const std::vector<PierHinge>& hinges) {
   LinkSpec link = make_link(hinges.front().link, node, base, upward(bridge, 1.0), 0.0,
                             elastic(hinges.front().law.parameters.at("stiffness")));
+  link.tangent = along(bridge, 1.0, bridge.x[pier]);
   link.rotational = true;
   link.shear = hinges[1].law;    // across: about x
   link.shear_2 = hinges[0].law;  // along: about y
@@ -278,8 +281,9 @@ LinkSpec coupled_hinge(const Bridge& bridge, const std::string& node, const std:
 }
 
 // A pier's base hinges: the hinge's free end node (named as the hinge along the bridge) and the
-// links. In a plane the hinge turns about z; in space the one along the bridge about y, the one
-// across it about x (or one coupled hinge about both), and the free end is held in torsion.
+// links. In a plane the hinge turns about z; in space the one along the bridge about the
+// horizontal across it (y on a straight bridge), the one across it about the bridge's tangent (x),
+// or one coupled hinge about both, and the free end is held in torsion.
 std::string add_pier_base(const Bridge& bridge, int pier, const std::vector<PierHinge>& hinges,
                           ModelSpec& out) {
   const GirderBridgeSpec& spec = bridge.spec;
@@ -294,14 +298,14 @@ std::string add_pier_base(const Bridge& bridge, int pier, const std::vector<Pier
   else
     out.supports.push_back(held(bridge, node));
   if (coupled_hinges(bridge, out)) {
-    out.links.push_back(coupled_hinge(bridge, node, base, hinges));
+    out.links.push_back(coupled_hinge(bridge, pier, node, base, hinges));
     return node;
   }
   for (std::size_t k = 0; k < hinges.size(); ++k) {
     LinkSpec link = make_link(hinges[k].link, node, base, {1.0, 0.0}, 0.0, hinges[k].law);
     link.rotational = true;  // a hinge acts on theta_i - theta_j
     if (bridge.space)
-      link.axis = k == 0 ? std::vector<double>{0.0, 1.0, 0.0} : std::vector<double>{1.0, 0.0, 0.0};
+      link.axis = k == 0 ? across(bridge, 1.0, bridge.x[pier]) : along(bridge, 1.0, bridge.x[pier]);
     else
       link.axis.reset();
     if (spec.pier_hinge->damping)  // with the model's a1, known to the builder

@@ -178,8 +178,10 @@ std::vector<std::string> add_column_cuts(const Building& building, std::size_t s
 // ("initial"), or a1 times its tangent ("committed"; links/stiffness_damping.hpp). In the link,
 // not beside it, so that the damping adds no link row to iterate. In space the link acts at the
 // stiffness centre, with the same law along y (`<storey>.y`, the storey's stiffness_y) and an
-// elastic twist spring (`<storey>.rz`). Returns its yield drift.
-std::optional<double> add_storey_link(const Building& building, std::size_t s, ModelSpec& out) {
+// elastic twist spring (`<storey>.rz`). Returns its yield drift along x and y (the law's F_y over
+// the stiffness along each).
+std::array<std::optional<double>, 2> add_storey_link(const Building& building, std::size_t s,
+                                                     ModelSpec& out) {
   const StoreySpec& storey = building.spec.storeys[s];
   const std::string id = storey_id(building, s);
   const std::string top = floor_node_id(building, s + 1), bottom = floor_node_id(building, s);
@@ -200,12 +202,12 @@ std::optional<double> add_storey_link(const Building& building, std::size_t s, M
   };
   LawSpec law = *storey.law;
   law.parameters["stiffness"] = storey.stiffness;
+  LawSpec across = law;
+  across.parameters["stiffness"] = storey.stiffness_y.value_or(storey.stiffness);
   if (!building.space) {
     storey_link(id, {1.0, 0.0}, law);
   } else {
     storey_link(id, {1.0, 0.0, 0.0}, law);
-    LawSpec across = law;
-    across.parameters["stiffness"] = storey.stiffness_y.value_or(storey.stiffness);
     storey_link(id + ".y", {0.0, 1.0, 0.0}, across);
     storey_link(id + ".rz", {0.0, 0.0, 1.0},
                 {.type = "elastic_spring",
@@ -214,7 +216,10 @@ std::optional<double> add_storey_link(const Building& building, std::size_t s, M
   }
   const std::string path = fmt::format("/generators/{}/{}/storeys/{}/law",
                                        building.pair.generator_index, kPairSides[building.side], s);
-  return links::make_law(law, {out.source, path})(links::LinkContext{})->yield_deformation();
+  const auto yield_drift = [&](const LawSpec& along) {
+    return links::make_law(along, {out.source, path})(links::LinkContext{})->yield_deformation();
+  };
+  return {yield_drift(law), yield_drift(across)};
 }
 
 // The weight above storey s on a pin-ended leaning column between its floors, whose geometric
@@ -266,7 +271,7 @@ void add_column(const Building& building, std::size_t s, const std::vector<std::
 // A storey's drift monitors: along x and, in space, along y, each also watching the floor's
 // plan corners (c0 at -x -y, then counter-clockwise) and the storey's twist.
 void add_drift_monitors(const Building& building, std::size_t s, const std::string& bottom,
-                        std::optional<double> yield_drift, ModelSpec& out) {
+                        const std::array<std::optional<double>, 2>& yield_drift, ModelSpec& out) {
   const StoreySpec& storey = building.spec.storeys[s];
   const std::string floor = floor_node_id(building, s + 1);
   for (int direction = 0; direction < (building.space ? 2 : 1); ++direction) {
@@ -277,7 +282,7 @@ void add_drift_monitors(const Building& building, std::size_t s, const std::stri
                              bottom,
                              floor,
                              storey.height,
-                             yield_drift};
+                             yield_drift[static_cast<std::size_t>(direction)]};
     if (storey.law)
       monitor.shear_link = storey_id(building, s) + suffix;
     else
@@ -311,7 +316,7 @@ void add_storey(const Building& building, std::size_t s, const std::vector<doubl
   if (building.space) rotary[2] = floor_rotary_inertia(building.spec, s);
   out.masses.push_back({floor, storey.mass, rotary, mass_damping});
   const std::vector<std::string> chain = add_column_cuts(building, s, contacts, out);
-  std::optional<double> yield_drift;
+  std::array<std::optional<double>, 2> yield_drift;
   if (storey.law)
     yield_drift = add_storey_link(building, s, out);  // the reader left it no cuts
   else

@@ -172,6 +172,22 @@ void resolve_shear(const LinkPlace& place, model::Link& link) {
   link.shear = model::LinkShear{place.spec.shear->type, {first, second}};
 }
 
+// t_1 given: its part across the (unit) axis, which must not vanish.
+void resolve_tangent(const LinkPlace& place, model::Link& link) {
+  const std::vector<double>& given = *place.spec.tangent;
+  model::Coordinates n = link.axis;
+  const double length = std::hypot(n[0], n[1], n[2]);
+  for (double& component : n) component /= length;
+  const double along = given[0] * n[0] + given[1] * n[1] + given[2] * n[2];
+  model::Coordinates across{given[0] - along * n[0], given[1] - along * n[1],
+                            given[2] - along * n[2]};
+  const double size = std::hypot(across[0], across[1], across[2]);
+  if (!(size > 1e-6))
+    place.fail("/tangent", "lies along the link's axis: t_1 must point across it");
+  for (double& component : across) component /= size;
+  link.tangent = across;
+}
+
 // Link k's JSON path: its entry in "links", or its generator's.
 Origin link_origin(const Resolver& resolver) {
   return origin_of(resolver.user_spec().links.size(), "links",
@@ -192,6 +208,7 @@ model::Link resolve_link(const LinkPlace& place) {
   resolve_law(place, link);
   if (spec.friction) resolve_friction(place, link);
   if (spec.shear) resolve_shear(place, link);
+  if (spec.tangent) resolve_tangent(place, link);
   return link;
 }
 

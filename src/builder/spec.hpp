@@ -132,6 +132,9 @@ struct LinkSpec {
   // link's law is then its axial law. Never with friction. With shear_2 (3-D): the law along the
   // second tangent (an elliptic surface), shear's along the first.
   std::optional<LawSpec> shear, shear_2;
+  // 3-D: the first tangent t_1 of the friction's or the shear's plane, projected across the axis
+  // (a bearing's or a hinge's local axes); none: contact_tangents'.
+  std::optional<std::vector<double>> tangent;
   // Rigid offsets [L] from node i and node j to the points that touch (global axes; z = 0 in a
   // plane): a deck corner or a floor corner rigidly tied to the node at its centre.
   std::optional<std::array<std::array<double, 3>, 2>> offsets;

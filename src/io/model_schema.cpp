@@ -607,6 +607,17 @@ const Fields<LinkSpec>& link_fields() {
                "along the first alone): an elliptic yield surface, (F_1/F_y1)² + (F_2/F_y2)² = "
                "1. Same type and hardening ratio as `shear`")
           .in_space(),
+      optional("tangent", &LinkSpec::tangent, UnitVector<std::vector<double>>{},
+               "t_1 of the friction's or the shear's plane, its part across the axis (t_2 = "
+               "axis × t_1): a bearing's or a hinge's local axes, which `shear` and `shear_2` "
+               "act along or about")
+          .in_space()
+          .default_text("for a vertical axis x (t_2 = y); else horizontal, z × axis"),
+      rule<LinkSpec>([](JsonObject& object, LinkSpec& link, Context&) {
+        if (link.tangent && !link.friction && !link.shear)
+          object.at("tangent").fail(
+              "orients a friction's or a shear's plane, and this link has neither");
+      }),
       optional("rayleigh", &LinkSpec::rayleigh,
                Object<builder::LinkRayleighSpec>{link_rayleigh_fields(), Docs::own_table},
                "stiffness-proportional damping a1·k·δ̇ of a spring or hinge (none without it)"),

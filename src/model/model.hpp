@@ -107,6 +107,9 @@ struct Link {
   links::LawFactory make_law;
   std::optional<LinkFriction> friction;
   std::optional<LinkShear> shear;  // on the tangential rows, as friction (never both)
+  // 3-D: t_1 of the tangential rows, a unit vector across the axis (t_2 = axis x t_1); none:
+  // contact_tangents'.
+  std::optional<Coordinates> tangent;
   // Rigid offsets from node i and node j to the points that touch: the row follows
   // u + theta x r at each end (small rotations), so the nodes turn with the link.
   std::array<Coordinates, 2> offsets{};

@@ -450,6 +450,42 @@ TEST(BridgeInSpace, ACurvedBridgesPierDriftsAreAlongAndAcrossTheCurve) {
   EXPECT_LT(worst, 1e-12);
 }
 
+// On a curved bridge a pier's hinges bend about the bridge's directions at its station, as its
+// section does (I along the curve, I_lateral across it): two uniaxial hinges about the horizontal
+// across the curve and about its tangent, or one elliptic hinge whose first tangent is the curve's
+// (tests/app/coupled_bearing_test.cpp checks that a link's `tangent` turns its shear's axes).
+TEST(BridgeInSpace, ACurvedBridgesHingesBendAboutItsOwnAxes) {
+  const double radius = 150.0, heading = 30.0 / radius;  // pier 1 stands at station 30
+  const model::Coordinates along{std::cos(heading), std::sin(heading), 0.0};
+  const model::Coordinates across{-std::sin(heading), std::cos(heading), 0.0};
+  for (const char* interaction : {"none", "elliptic"}) {
+    Json model = space_bridge(1.0, 0.0, 2);
+    Json& bridge = model["generators"][0];
+    bridge["plan_radius"] = radius;
+    bridge.erase("pier_yield_displacement");
+    bridge["pier_hinge"] = {{"yield_moment", 4.0e6},
+                            {"interaction", interaction},
+                            {"law", {{"type", "bilinear_spring"}, {"hardening_ratio", 0.02}}}};
+    const BuiltModel built = app::load_model_text(model.dump(), kModels + "bridge.json").built;
+    const auto off = [](const model::Coordinates& a, const model::Coordinates& b) {
+      return std::max({std::abs(a[0] - b[0]), std::abs(a[1] - b[1]), std::abs(a[2] - b[2])});
+    };
+    const model::Link& hinge = built.model.links[built.link_index.at("bridge.p1.hinge")];
+    double worst = 0.0;
+    if (std::string(interaction) == "none") {
+      worst = std::max(
+          off(hinge.axis, across),
+          off(built.model.links[built.link_index.at("bridge.p1.hinge.across")].axis, along));
+    } else {
+      ASSERT_TRUE(hinge.tangent);
+      worst = off(*hinge.tangent, along);
+    }
+    std::cout << fmt::format("curved bridge, interaction {}: hinge axes off the pier's by {:.1e}\n",
+                             interaction, worst);
+    EXPECT_LT(worst, 1e-15);
+  }
+}
+
 void expect_refused(const Json& model, const std::string& where, const std::string& phrase) {
   testing::expect_input_error(
       [&] { (void)app::load_model_text(model.dump(), kModels + "bridge.json"); }, where, phrase);

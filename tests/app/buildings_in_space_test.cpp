@@ -240,6 +240,25 @@ void expect_refused(const Json& model, const std::string& where, const std::stri
   testing::expect_input_error([&] { (void)build(model); }, where, phrase);
 }
 
+// A yielding storey stiffer along y yields there at a smaller drift: its monitor along y takes
+// F_y / k_y, the one along x F_y / k_x.
+TEST(BuildingsInSpace, AYieldingStoreysDriftMonitorsYieldAtEachDirectionsDrift) {
+  Json model = in_space(bundled("adjacent_buildings_yielding.json"), 1);
+  Json& storey = model["generators"][0]["left"]["storeys"][0];
+  storey["stiffness_y"] = 2.0 * storey["stiffness"].get<double>();
+  const double yield_force = storey["law"]["yield_force"].get<double>();
+  const BuiltModel built = build(model);
+  int found = 0;
+  for (const DriftMonitor& monitor : built.drift_monitors) {
+    if (monitor.id != "pair.left.s1" && monitor.id != "pair.left.s1.y") continue;
+    const double stiffness =
+        storey[monitor.direction == 0 ? "stiffness" : "stiffness_y"].get<double>();
+    EXPECT_NEAR(*monitor.yield_drift / (yield_force / stiffness), 1.0, 1e-15) << monitor.id;
+    ++found;
+  }
+  EXPECT_EQ(found, 2);
+}
+
 TEST(BuildingsInSpace, MeaninglessPlanInputIsRefusedWithItsPath) {
   const Json good = eccentric_pair();
   ASSERT_NO_THROW((void)build(good));

@@ -187,6 +187,52 @@ TEST(CoupledBearing, ItsRestStiffnessHoldsTheDeckInBothDirections) {
   EXPECT_NEAR(modes.omega_squared[2] / (1e10 / kMass), 1.0, 1e-14);
 }
 
+// A bearing whose plan axes are turned by 30 degrees ("tangent": t_1 = (cos 30, sin 30, 0)) and
+// whose two directions differ (shear_2 twice as stiff and 1.5 times as strong): under a record
+// along t_1 it is the uniaxial spring of `shear` along t_1, under one along t_2 = axis x t_1 the
+// uniaxial spring of `shear_2` along t_2.
+TEST(CoupledBearing, ATurnedEllipticBearingActsAlongItsOwnTangents) {
+  const double angle = std::numbers::pi / 6.0;
+  const std::array<double, 3> t1{std::cos(angle), std::sin(angle), 0.0};
+  const std::array<double, 3> t2{-std::sin(angle), std::cos(angle), 0.0};
+  const json second = {
+      {"type", "bilinear_spring"}, {"stiffness", 2.0 * kStiffness}, {"yield_force", 1.5 * kYield}};
+  json bearing = coupled_bearing();
+  bearing["shear_2"] = second;
+  bearing["tangent"] = t1;
+  double worst = 0.0;
+  for (const int along_tangent : {1, 2}) {
+    const std::array<double, 3>& direction = along_tangent == 1 ? t1 : t2;
+    const json law = along_tangent == 1 ? bilinear() : second;
+    const json coupled = testing::model_summary(deck({bearing}, direction).dump(), kPath);
+    const json& shear = link_summary(coupled, "bearing")["shear"];
+    const std::array<double, 3> normal{-direction[1], direction[0], 0.0};
+    const json uniaxial = testing::model_summary(
+        deck({link("along", direction, law), link("across", normal, bilinear()),
+              link("up", {0, 0, 1}, {{"type", "elastic_spring"}, {"stiffness", 1e10}})},
+             direction)
+            .dump(),
+        kPath);
+    const json& along = link_summary(uniaxial, "along");
+    const double error = std::abs(
+        shear["peak_deformation"].get<double>() / along["peak_deformation"].get<double>() - 1.0);
+    std::cout << fmt::format(
+        "bearing turned 30 deg, elliptic, record along t_{}: coupled against the uniaxial spring "
+        "{:.1e} (ductility {:.2f})\n",
+        along_tangent, error, shear["ductility"].get<double>());
+    EXPECT_GT(shear["ductility"].get<double>(), 2.0);
+    worst = std::max(worst, error);
+  }
+  EXPECT_LT(worst, 1e-9);
+  json alone = link("spring", {0, 0, 1}, bilinear());
+  alone["tangent"] = t1;
+  testing::expect_input_error([&] { load_model_text(deck({alone}, t1).dump(), kPath); },
+                              "/links/0/tangent", "has neither");
+  bearing["tangent"] = {0.0, 0.0, 1.0};
+  testing::expect_input_error([&] { load_model_text(deck({bearing}, t1).dump(), kPath); },
+                              "/links/0/tangent", "along the link's axis");
+}
+
 TEST(CoupledBearing, BadShearsAreRefusedAtTheirPath) {
   const auto refused = [&](json bearing, const std::string& where, const std::string& phrase,
                            int dimension = 3) {
