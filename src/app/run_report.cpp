@@ -20,17 +20,20 @@ std::string yielded_line(const results::LinkResult& link) {
                                : std::string());
 }
 
-// A bearing whose coupled shear yielded (a biaxial hinge: its bending): the resultant's peak
-// and residual, and what it dissipated.
+// A bearing whose coupled shear yielded: the resultant's peak (and ductility) and residual, and
+// what it dissipated; a biaxial hinge's bending: its plastic rotation about each tangent.
 std::string shear_line(const results::LinkResult& link) {
   const results::ShearSummary& s = *link.summary.shear;
-  return fmt::format(
-      "  {} {} yielded in {}: peak {} {:.4g} ({:.2f} x yield), residual {:.4g}, hysteretic "
-      "energy {:.6g}\n",
-      link.shear->law, link.id, link.rotational ? "bending" : "shear",
-      link.rotational ? "rotation" : "deformation", s.peak_deformation,
-      link.shear_ductility().value_or(0.0), s.final_deformation,
-      link.shear_hysteretic_energy().value_or(0.0));
+  const std::string demand =
+      link.rotational
+          ? fmt::format("peak rotation {:.4g} (plastic {:.4g} about t_1, {:.4g} about t_2)",
+                        s.peak_deformation, link.shear_peak_plastic_deformation(0).value_or(0.0),
+                        link.shear_peak_plastic_deformation(1).value_or(0.0))
+          : fmt::format("peak deformation {:.4g} ({:.2f} x yield)", s.peak_deformation,
+                        link.shear_ductility().value_or(0.0));
+  return fmt::format("  {} {} yielded in {}: {}, residual {:.4g}, hysteretic energy {:.6g}\n",
+                     link.shear->law, link.id, link.rotational ? "bending" : "shear", demand,
+                     s.final_deformation, link.shear_hysteretic_energy().value_or(0.0));
 }
 
 // Contacts and restrainers one line each; yielded springs and hinges one line each; the other
@@ -47,7 +50,8 @@ std::string link_lines(const results::RunSummary& run) {
         spring_force = std::max({spring_force, s.peak_force, s.peak_tension});
         if (link.yield_deformation && link.peak_deformation() > *link.yield_deformation)
           text += yielded_line(link);
-        if (link.shear_ductility().value_or(0.0) > 1.0) text += shear_line(link);
+        if (link.shear_yields() && link.summary.shear->peak_ductility > 1.0)
+          text += shear_line(link);
         if (link.summary.shear)
           spring_force = std::max(spring_force, link.summary.shear->peak_force);
         break;

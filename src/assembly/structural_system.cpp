@@ -382,6 +382,7 @@ integrators::LinkSet::Link link_entry(const model::DofMap& dofs, const model::Li
   if (link.shear) {
     entry.shear = std::make_unique<links::CoupledShear>(std::move(law), link.shear->numbers,
                                                         static_cast<int>(along.size()));
+    if (link.shear->damping) entry.shear->set_damping(*link.shear->damping);
     return entry;
   }
   const links::StickPenalty stick = stick_penalty(*law, *link.friction);

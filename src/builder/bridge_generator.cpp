@@ -256,10 +256,10 @@ PierHinge pier_hinge(const GirderBridgeSpec& spec, int pier, bool across) {
 }
 
 // In space, one hinge per pier base bending about x and y, coupled on an elliptic surface:
-// unless asked not to, where the law has the coupled form and no damping is added to it.
+// unless asked not to, where the law has the coupled form.
 bool coupled_hinges(const Bridge& bridge, const ModelSpec& out) {
   const GirderBridgeSpec& spec = bridge.spec;
-  if (!bridge.space || !spec.pier_hinge || spec.pier_hinge->damping) return false;
+  if (!bridge.space || !spec.pier_hinge) return false;
   if (spec.pier_hinge->coupled) return *spec.pier_hinge->coupled;
   return spec.pier_hinge->law_couples(
       {out.source, fmt::format("/generators/{}/pier_hinge/law", spec.generator_index)});
@@ -275,8 +275,10 @@ LinkSpec coupled_hinge(const Bridge& bridge, int pier, const std::string& node,
                             elastic(hinges.front().law.parameters.at("stiffness")));
   link.tangent = along(bridge, 1.0, bridge.x[pier]);
   link.rotational = true;
-  link.shear = hinges[1].law;    // across: about x
-  link.shear_2 = hinges[0].law;  // along: about y
+  link.shear = hinges[1].law;           // across: about x
+  link.shear_2 = hinges[0].law;         // along: about y
+  if (bridge.spec.pier_hinge->damping)  // with the model's a1, known to the builder
+    link.rayleigh = LinkRayleighSpec{.stiffness = *bridge.spec.pier_hinge->damping};
   return link;
 }
 

@@ -238,6 +238,8 @@ void add_link_damping(const Resolver& resolver,
     if (!coefficient)
       resolver.fail(origin(k) + "/rayleigh/stiffness_coefficient",
                     "the model has no \"damping\" to take a1 from: give the link its own");
+    if (links[k].shear)
+      links[k].shear->damping = links::ShearDamping{*coefficient, rayleigh->stiffness};
     links[k].make_law = [inner = links[k].make_law, a1 = *coefficient,
                          stiffness = rayleigh->stiffness](const links::LinkContext& context) {
       return std::make_unique<links::StiffnessDamping>(inner(context), a1, stiffness);

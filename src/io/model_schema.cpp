@@ -475,9 +475,6 @@ Field<LinkSpec> shear_rules() {
       refuse("dof",
              "a hinge's coupled bending turns about the two axes across its own: a 3-D scene "
              "(in a plane a hinge turns about z alone)");
-    if (link.rayleigh)
-      refuse("rayleigh",
-             "Rayleigh damping of a shear link is not available: a bearing's shear has none");
     const links::LawEntry* axial = links::find_law(link.law.type);
     if (axial && axial->traits.constraint)
       refuse("law",
@@ -953,14 +950,9 @@ const Fields<builder::PierHingeSpec>& pier_hinge_fields() {
                "(M_x/M_yx)² + (M_y/M_yy)² = 1 (a circle when the two are equal); none: a hinge "
                "per axis, each on its own (`.hinge`, `.hinge.across`)")
           .in_space()
-          .default_text("elliptic, for a law that has the coupled form and no damping"),
+          .default_text("elliptic, for a law that has the coupled form"),
       rule<PierHingeSpec>([](JsonObject& object, PierHingeSpec& hinge, Context&) {
         if (!hinge.coupled.value_or(false)) return;
-        if (hinge.damping)
-          object.at("interaction")
-              .fail(
-                  "Rayleigh damping of a coupled hinge is not available: give \"none\" (or no "
-                  "damping)");
         const JsonValue law = object.at("law");
         if (!hinge.law_couples({law.file(), law.path()}))
           object.at("interaction")

@@ -63,8 +63,13 @@ Document shear_document(const results::LinkResult& link) {
   }
   if (const std::optional<double> ductility = link.shear_ductility())
     doc.set("ductility", *ductility);
+  if (link.rotational && link.shear_yields())  // a hinge: theta_p about each tangent
+    doc.set("peak_plastic_deformations",
+            std::vector<double>{*link.shear_peak_plastic_deformation(0),
+                                *link.shear_peak_plastic_deformation(1)});
   if (const std::optional<double> energy = link.shear_hysteretic_energy())
     doc.set("hysteretic_energy", *energy);
+  if (link.shear_viscous.work != 0.0) doc.set("damping_energy", link.shear_viscous.work);
   return doc;
 }
 

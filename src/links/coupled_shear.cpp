@@ -57,7 +57,17 @@ CoupledShear::CoupledShear(const CoupledShear& other)
       deformation_scale_(other.deformation_scale_),
       force_scale_(other.force_scale_),
       committed_plastic_(other.committed_plastic_),
-      trial_plastic_(other.committed_plastic_) {}
+      trial_plastic_(other.committed_plastic_),
+      damping_(other.damping_),
+      dashpot_(other.dashpot_),
+      trial_tangent_(other.trial_tangent_),
+      trial_viscous_(other.committed_viscous_),
+      committed_viscous_(other.committed_viscous_),
+      trial_slide_(other.committed_slide_),
+      committed_slide_(other.committed_slide_),
+      trial_viscous_work_(other.committed_viscous_work_),
+      committed_viscous_work_(other.committed_viscous_work_),
+      started_(other.started_) {}
 
 FrictionResponse CoupledShear::set_trial(const LinkKinematics& normal,
                                          std::span<const LinkKinematics> tangential) {
@@ -68,7 +78,35 @@ FrictionResponse CoupledShear::set_trial(const LinkKinematics& normal,
   const double length = elastic_trial(tangential, relative, out);
   if (length > numbers_[0].yield_force) return_to_circle(relative, length, out);
   to_own_units(out);
+  if (damping_) add_damping(tangential, out);
   return out;
+}
+
+void CoupledShear::set_damping(const ShearDamping& damping) {
+  damping_ = damping;
+  for (std::size_t a = 0; a < static_cast<std::size_t>(tangents_); ++a)
+    dashpot_[a][a] = damping.stiffness_coefficient * numbers_[a].stiffness;
+}
+
+void CoupledShear::add_damping(std::span<const LinkKinematics> tangential, FrictionResponse& out) {
+  const auto n = static_cast<std::size_t>(tangents_);
+  if (!started_) {  // a link may start deformed
+    for (std::size_t a = 0; a < n; ++a) committed_slide_[a] = tangential[a].penetration;
+    started_ = true;
+  }
+  trial_viscous_work_ = committed_viscous_work_;
+  for (std::size_t a = 0; a < n; ++a) {
+    trial_viscous_[a] = 0.0;
+    for (std::size_t b = 0; b < n; ++b) {
+      trial_tangent_[a][b] = out.tangential_on_slip[a][b].stiffness;
+      trial_viscous_[a] += dashpot_[a][b] * tangential[b].penetration_rate;
+      out.tangential_on_slip[a][b].damping += dashpot_[a][b];
+    }
+    trial_slide_[a] = tangential[a].penetration;
+    out.tangential_force[a] += trial_viscous_[a];
+    trial_viscous_work_ +=
+        0.5 * (trial_viscous_[a] + committed_viscous_[a]) * (trial_slide_[a] - committed_slide_[a]);
+  }
 }
 
 void CoupledShear::to_own_units(FrictionResponse& out) const {
@@ -127,11 +165,22 @@ void CoupledShear::return_to_circle(const Tangential& relative, double length,
 void CoupledShear::commit() {
   normal_->commit();
   committed_plastic_ = trial_plastic_;
+  if (!damping_) return;
+  committed_viscous_ = trial_viscous_;
+  committed_slide_ = trial_slide_;
+  committed_viscous_work_ = trial_viscous_work_;
+  if (damping_->stiffness == DampingStiffness::committed)
+    for (std::size_t a = 0; a < static_cast<std::size_t>(tangents_); ++a)
+      for (std::size_t b = 0; b < static_cast<std::size_t>(tangents_); ++b)
+        dashpot_[a][b] = damping_->stiffness_coefficient * trial_tangent_[a][b];
 }
 
 void CoupledShear::revert() {
   normal_->revert();
   trial_plastic_ = committed_plastic_;
+  trial_viscous_ = committed_viscous_;
+  trial_slide_ = committed_slide_;
+  trial_viscous_work_ = committed_viscous_work_;
 }
 
 }  // namespace pound::links

@@ -30,8 +30,10 @@
 // units of direction 1 (s~_a = s_a (k_a / k_1) / (F_y,a / F_y,1), F~_a = F_a F_y,1 / F_y,a) the
 // law is the circular one with k_1, F_y,1 and b: the same return, F_a = F~_a F_y,a / F_y,1 and
 // the tangent scaled row by row and column by column. Equal directions scale by exactly 1: the
-// circular law to the bit. The flow is normal to the ellipse in those units (the elliptic
-// interaction used for biaxial column hinges); each direction alone is its own bilinear law.
+// circular law to the bit. Each direction alone is its own bilinear law. The flow is normal to
+// the ellipse in those units: in forces it is associated only when F_y,1^2 / k_1 =
+// F_y,2^2 / k_2 (the tangent is then symmetric; otherwise not), and it always dissipates,
+// F . dp = dgamma / |F~| sum_a (F_y,a / F_y,1)^2 / (k_a / k_1) F~_a^2 >= 0 (b = 0).
 //
 // Made from a uniaxial law's numbers: bilinear_spring, lead_rubber and elastic_perfectly_plastic
 // (BilinearSpring objects), or elastic_spring (F_y infinite: k I). Shear and axial are not
@@ -45,6 +47,7 @@
 
 #include "links/coulomb_friction.hpp"
 #include "links/link_law.hpp"
+#include "links/stiffness_damping.hpp"
 
 namespace pound::links {
 
@@ -59,6 +62,19 @@ struct ShearNumbers {
 };
 // Along t_1 and t_2 (equal: a circular surface).
 using ShearDirections = std::array<ShearNumbers, kMaxTangents>;
+
+// Stiffness-proportional damping of the shear (links/stiffness_damping.hpp in two directions):
+// F_t += C ds/dt with C = a1 diag(k_a) (initial) or a1 times the law's 2 x 2 tangent at the last
+// converged step (committed), held through the step.
+struct ShearDamping {
+  double stiffness_coefficient = 0.0;  // a1 [T]
+  DampingStiffness stiffness = DampingStiffness::initial;
+};
+// What that damping did: its work up to the committed state and its committed force.
+struct ShearViscousPart {
+  double work = 0.0;   // [F L]
+  Tangential force{};  // [F]
+};
 
 struct LawSpec;
 struct LawSource;
@@ -91,6 +107,8 @@ class CoupledShear {
   const ShearDirections& numbers() const { return numbers_; }
   // p along each tangent, committed [L].
   Tangential plastic_deformation() const;
+  void set_damping(const ShearDamping& damping);
+  ShearViscousPart viscous_part() const { return {committed_viscous_work_, committed_viscous_}; }
 
  private:
   // The elastic trial force k (s - p_n) and xi = that - H p_n along each tangent; returns |xi|.
@@ -100,6 +118,8 @@ class CoupledShear {
   void return_to_circle(const Tangential& relative, double length, FrictionResponse& out);
   // Forces and tangent from direction 1's units to each direction's own.
   void to_own_units(FrictionResponse& out) const;
+  // The damping's force C ds/dt, its work and its tangent, added to the law's response.
+  void add_damping(std::span<const LinkKinematics> tangential, FrictionResponse& out);
 
   std::unique_ptr<LinkLaw> normal_;
   ShearDirections numbers_;
@@ -108,6 +128,13 @@ class CoupledShear {
   // Direction a's units to direction 1's: s~ = s * deformation_scale, F = F~ * force_scale.
   Tangential deformation_scale_{1.0, 1.0}, force_scale_{1.0, 1.0};
   Tangential committed_plastic_{}, trial_plastic_{};  // p~, in direction 1's units
+  // Damping: a1 (none: 0), C of the step, the law's last trial tangent; the viscous force, the
+  // slide it works through and its work, trial and committed.
+  std::optional<ShearDamping> damping_;
+  std::array<Tangential, kMaxTangents> dashpot_{}, trial_tangent_{};
+  Tangential trial_viscous_{}, committed_viscous_{}, trial_slide_{}, committed_slide_{};
+  double trial_viscous_work_ = 0.0, committed_viscous_work_ = 0.0;
+  bool started_ = false;
 };
 
 }  // namespace pound::links

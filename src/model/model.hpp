@@ -86,6 +86,7 @@ struct LinkFriction {
 struct LinkShear {
   std::string law;
   links::ShearDirections numbers;
+  std::optional<links::ShearDamping> damping;  // the link's `rayleigh`
   bool circular() const { return numbers[0] == numbers[1]; }
 };
 

@@ -493,7 +493,7 @@ bool LinkResult::shear_yields() const {
 }
 
 std::optional<double> LinkResult::shear_ductility() const {
-  if (!shear_yields()) return std::nullopt;
+  if (!shear_yields() || rotational) return std::nullopt;
   return summary.shear->peak_ductility;
 }
 
@@ -505,12 +505,12 @@ std::optional<double> LinkResult::shear_peak_plastic_deformation(std::size_t alo
 
 std::optional<double> LinkResult::shear_hysteretic_energy() const {
   if (!shear_yields()) return std::nullopt;
-  double stored = 0.0;
+  double stored = 0.0;  // by the law, without the damping's force
   for (std::size_t a = 0; a < shear->numbers.size(); ++a) {
-    const double force = summary.shear->final_forces[a];
+    const double force = summary.shear->final_forces[a] - shear_viscous.force[a];
     stored += force * force / (2.0 * shear->numbers[a].stiffness);
   }
-  return summary.shear->work - stored;
+  return summary.shear->work - shear_viscous.work - stored;
 }
 
 std::optional<double> RunSummary::hysteretic_energy() const {
@@ -580,6 +580,8 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
       result.initial_stiffness =  // of a fresh law: this one has yielded
           link.make_law(system.link_context(link))->set_trial({0.0, 0.0, 0.0}).stiffness;
     result.shear = link.shear;
+    if (const links::CoupledShear* shear = system.links().shear(static_cast<Index>(k)))
+      result.shear_viscous = shear->viscous_part();
     run.links.push_back(result);
   }
   for (std::size_t k = 0; k < built.drift_monitors.size(); ++k) {

@@ -111,10 +111,12 @@ struct LinkResult {
   // both without the viscous part.
   std::optional<double> hysteretic_energy() const;
   // A bearing's coupled shear (model::LinkShear) and, when it yields, its resultant's peak in
-  // units of delta_y = F_y / k (of each direction's: the ellipse's), each direction's peak
+  // units of delta_y = F_y / k (of each direction's: the ellipse's; none for a hinge, as
+  // ductility()), each direction's peak
   // plastic deformation (a hinge's theta_p about that tangent) and the energy it dissipated (its
   // work less sum_a F_a^2 / (2 k_a)).
   std::optional<model::LinkShear> shear;
+  links::ShearViscousPart shear_viscous;  // what the shear's `rayleigh` did
   bool shear_yields() const;
   std::optional<double> shear_ductility() const;
   std::optional<double> shear_peak_plastic_deformation(std::size_t along) const;

@@ -230,6 +230,42 @@ TEST(CoupledShear, ARayPushOnAnEllipseStopsWhereTheRayMeetsIt) {
   EXPECT_LT(worst, 1e-14);
 }
 
+// Rayleigh damping of the shear: on the initial stiffness a dashpot a1 k_a along each direction;
+// on the committed tangent a1 times the 2 x 2 tangent of the last converged step, held through
+// the next; its work the trapezoid of its force over the slide.
+TEST(CoupledShear, ItsDampingIsTheInitialOrTheCommittedStiffnessTimesA1) {
+  const double a1 = 0.01;
+  const auto trial = [](CoupledShear& law, double x, double y, double rate_x, double rate_y) {
+    const std::array<LinkKinematics, 2> slide{LinkKinematics{x, rate_x, 0.0}, {y, rate_y, 0.0}};
+    return law.set_trial({}, std::span<const LinkKinematics>(slide.data(), 2));
+  };
+  CoupledShear initial = elliptic(0.1);
+  initial.set_damping({a1, DampingStiffness::initial});
+  trial(initial, 0.0, 0.0, 0.3, 0.5);  // the slide the work starts from
+  initial.commit();
+  const FrictionResponse elastic = trial(initial, 1e-4, -2e-4, 0.3, 0.5);
+  EXPECT_DOUBLE_EQ(elastic.tangential_force[0], kStiffness * 1e-4 + a1 * kStiffness * 0.3);
+  EXPECT_DOUBLE_EQ(elastic.tangential_force[1], -kStiffness2 * 2e-4 + a1 * kStiffness2 * 0.5);
+  EXPECT_EQ(elastic.tangential_on_slip[0][0].damping, a1 * kStiffness);
+  EXPECT_EQ(elastic.tangential_on_slip[1][1].damping, a1 * kStiffness2);
+  EXPECT_EQ(elastic.tangential_on_slip[0][1].damping, 0.0);
+  initial.commit();
+  EXPECT_DOUBLE_EQ(initial.viscous_part().work,
+                   a1 * (kStiffness * 0.3 * 1e-4 + kStiffness2 * 0.5 * -2e-4));
+
+  CoupledShear committed = elliptic(0.1);
+  committed.set_damping({a1, DampingStiffness::committed});
+  const FrictionResponse yielding = trial(committed, 0.05, 0.03, 0.0, 0.0);
+  committed.commit();
+  const FrictionResponse next = trial(committed, 0.05, 0.03, 1.0, 0.0);
+  for (std::size_t a = 0; a < 2; ++a)
+    for (std::size_t b = 0; b < 2; ++b)
+      EXPECT_DOUBLE_EQ(next.tangential_on_slip[a][b].damping,
+                       a1 * yielding.tangential_on_slip[a][b].stiffness);
+  const double viscous = a1 * yielding.tangential_on_slip[1][0].stiffness;
+  EXPECT_NEAR(next.tangential_force[1] - yielding.tangential_force[1], viscous, 1e-12 * kYield2);
+}
+
 TEST(CoupledShear, TwoDirectionsMakeOneLawOnlyWithOneHardeningRatio) {
   const ShearNumbers first{1e6, 1e4, 0.1};
   EXPECT_FALSE(CoupledShear::mismatch(first, {3e6, 2e4, 0.1}));
