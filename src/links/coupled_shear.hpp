@@ -35,6 +35,10 @@
 // F_y,2^2 / k_2 (the tangent is then symmetric; otherwise not), and it always dissipates,
 // F . dp = dgamma / |F~| sum_a (F_y,a / F_y,1)^2 / (k_a / k_1) F~_a^2 >= 0 (b = 0).
 //
+// With stiffness-proportional damping (set_damping, a link's `rayleigh`): F_t += C ds/dt, C the
+// initial a1 diag(k_a) or a1 times the 2 x 2 tangent of the last converged step, its work kept
+// apart (viscous_part), as links/stiffness_damping.hpp does for one direction.
+//
 // Made from a uniaxial law's numbers: bilinear_spring, lead_rubber and elastic_perfectly_plastic
 // (BilinearSpring objects), or elastic_spring (F_y infinite: k I). Shear and axial are not
 // coupled (no axial-load-dependent strength, no P-Delta of the bearing). Units: k [F/L], F_y [F],
