@@ -97,12 +97,31 @@ Vector load_pattern(const LoadedModel& loaded, const assembly::StructuralSystem&
   return p / total;
 }
 
-// The links that yield (a law with a yield deformation): their deformations are recorded.
-std::vector<Index> yielding_links(const assembly::StructuralSystem& system) {
-  std::vector<Index> links;
-  for (Index k = 0; k < system.links().count(); ++k)
-    if (system.links().law(k).yield_deformation()) links.push_back(k);
-  return links;
+// A link that yields: its law (one row, a yield deformation), or its coupled shear (its
+// tangential rows, each direction's yield deformation: it yields when |(s_a / delta_ya)| >= 1).
+struct YieldingLink {
+  Index link = 0;
+  std::vector<Index> rows;
+  std::vector<double> yield_deformations;
+};
+
+std::vector<YieldingLink> yielding_links(const assembly::StructuralSystem& system) {
+  const integrators::LinkSet& links = system.links();
+  std::vector<YieldingLink> yielding;
+  for (Index k = 0; k < links.count(); ++k) {
+    if (const std::optional<double> yield = links.law(k).yield_deformation())
+      yielding.push_back({k, {links.row(k)}, {*yield}});
+    const links::CoupledShear* shear = links.shear(k);
+    if (!shear || !shear->numbers()[0].yields()) continue;
+    YieldingLink coupled{k, {}, {}};
+    for (int a = 0; a < shear->tangents(); ++a) {
+      coupled.rows.push_back(links.row(k) + 1 + a);
+      coupled.yield_deformations.push_back(
+          shear->numbers()[static_cast<std::size_t>(a)].yield_deformation());
+    }
+    yielding.push_back(coupled);
+  }
+  return yielding;
 }
 
 struct FirstYield {
@@ -117,7 +136,14 @@ class CapacityRecorder {
       : system_(system), links_(yielding_links(system)) {
     std::vector<std::string> columns{"displacement", "base_shear", "iterations"};
     for (const auto& [id, index] : loaded.built.link_index) ids_[index] = id;
-    for (Index k : links_) columns.push_back(ids_[k] + ".deformation");
+    for (const YieldingLink& link : links_) {
+      if (link.rows.size() == 1 && link.rows.front() == system.links().row(link.link)) {
+        columns.push_back(ids_[link.link] + ".deformation");
+        continue;
+      }
+      for (std::size_t a = 0; a < link.rows.size(); ++a)  // a coupled shear, along each tangent
+        columns.push_back(fmt::format("{}.deformation_{}", ids_[link.link], a + 1));
+    }
     table_ = table_with_columns(columns);
   }
 
@@ -125,13 +151,17 @@ class CapacityRecorder {
     Vector delta;
     system_.links().penetration(u, delta);
     append_row(table_, {point.displacement, point.load_factor, double(point.iterations)});
-    for (std::size_t c = 0; c < links_.size(); ++c) {
-      const Index k = links_[c];
-      const double deformation = delta[system_.links().row(k)];
-      table_.values[c + 3].push_back(deformation);
-      if (!first_yield_ &&
-          std::abs(deformation) >= *system_.links().law(k).yield_deformation() * (1 - 1e-9))
-        first_yield_ = FirstYield{ids_[k], point.displacement, point.load_factor};
+    std::size_t column = 3;
+    for (const YieldingLink& link : links_) {
+      double ratio = 0.0;  // |(delta_a / delta_ya)|: past 1, the link has yielded
+      for (std::size_t a = 0; a < link.rows.size(); ++a) {
+        const double deformation = delta[link.rows[a]];
+        table_.values[column++].push_back(deformation);
+        const double share = deformation / link.yield_deformations[a];
+        ratio += share * share;
+      }
+      if (!first_yield_ && std::sqrt(ratio) >= 1 - 1e-9)
+        first_yield_ = FirstYield{ids_[link.link], point.displacement, point.load_factor};
     }
   }
 
@@ -140,7 +170,7 @@ class CapacityRecorder {
 
  private:
   const assembly::StructuralSystem& system_;
-  std::vector<Index> links_;
+  std::vector<YieldingLink> links_;
   std::map<Index, std::string> ids_;
   Table table_;
   std::optional<FirstYield> first_yield_;

@@ -177,16 +177,28 @@ std::vector<std::string> add_column_cuts(const Building& building, std::size_t s
 // the building's stiffness-proportional damping: a1 k0, the dashpot its column would have given
 // ("initial"), or a1 times its tangent ("committed"; links/stiffness_damping.hpp). In the link,
 // not beside it, so that the damping adds no link row to iterate. In space the link acts at the
-// stiffness centre, with the same law along y (`<storey>.y`, the storey's stiffness_y) and an
-// elastic twist spring (`<storey>.rz`). Returns its yield drift along x and y (the law's F_y over
-// the stiffness along each).
+// stiffness centre, with the same law along y (the storey's stiffness_y): coupled, one link whose
+// vertical axis (the floors hold it) carries the two as its shear (coupled_storeys), or a link
+// `<storey>.y` of its own; and an elastic twist spring (`<storey>.rz`). Returns its yield drift
+// along x and y (the law's F_y over the stiffness along each).
+// In space, whether storey s is one link whose x and y shears are coupled: as asked, or where
+// its law has the coupled form.
+bool coupled_storeys(const Building& building, std::size_t s, const ModelSpec& out) {
+  const StoreySpec& storey = building.spec.storeys[s];
+  if (!building.space || !storey.law) return false;
+  if (building.spec.storeys_coupled) return *building.spec.storeys_coupled;
+  return storey.law_couples(
+      {out.source, fmt::format("/generators/{}/{}/storeys/{}/law", building.pair.generator_index,
+                               kPairSides[building.side], s)});
+}
+
 std::array<std::optional<double>, 2> add_storey_link(const Building& building, std::size_t s,
                                                      ModelSpec& out) {
   const StoreySpec& storey = building.spec.storeys[s];
   const std::string id = storey_id(building, s);
   const std::string top = floor_node_id(building, s + 1), bottom = floor_node_id(building, s);
   const auto storey_link = [&](const std::string& link_id, std::vector<double> axis,
-                               const LawSpec& law, bool rotational = false) {
+                               const LawSpec& law, bool rotational = false) -> LinkSpec& {
     LinkSpec link = make_link(link_id, top, bottom, std::move(axis), 0.0, law);
     link.rotational = rotational;
     if (building.rayleigh && building.spec.storey_damping != StoreyDamping::none)
@@ -199,6 +211,7 @@ std::array<std::optional<double>, 2> add_storey_link(const Building& building, s
       link.offsets = std::array{building.column_arm(),
                                 s > 0 ? building.column_arm() : std::array<double, 3>{}};
     out.links.push_back(link);
+    return out.links.back();
   };
   LawSpec law = *storey.law;
   law.parameters["stiffness"] = storey.stiffness;
@@ -206,6 +219,16 @@ std::array<std::optional<double>, 2> add_storey_link(const Building& building, s
   across.parameters["stiffness"] = storey.stiffness_y.value_or(storey.stiffness);
   if (!building.space) {
     storey_link(id, {1.0, 0.0}, law);
+  } else if (coupled_storeys(building, s, out)) {
+    LinkSpec& link =
+        storey_link(id, {0.0, 0.0, 1.0},
+                    {.type = "elastic_spring", .parameters = {{"stiffness", storey.stiffness}}});
+    link.shear = law;  // along x (t_1)
+    link.shear_2 = across;
+    storey_link(id + ".rz", {0.0, 0.0, 1.0},
+                {.type = "elastic_spring",
+                 .parameters = {{"stiffness", torsional_stiffness(building.spec, s)}}},
+                true);
   } else {
     storey_link(id, {1.0, 0.0, 0.0}, law);
     storey_link(id + ".y", {0.0, 1.0, 0.0}, across);
@@ -283,9 +306,12 @@ void add_drift_monitors(const Building& building, std::size_t s, const std::stri
                              floor,
                              storey.height,
                              yield_drift[static_cast<std::size_t>(direction)]};
-    if (storey.law)
+    if (coupled_storeys(building, s, out)) {  // one link: its shear along x (t_1) or y (t_2)
+      monitor.shear_link = storey_id(building, s);
+      monitor.shear_link_direction = direction + 1;
+    } else if (storey.law) {
       monitor.shear_link = storey_id(building, s) + suffix;
-    else
+    } else
       monitor.base_element = fmt::format("{}.c0", storey_id(building, s));
     monitor.direction = direction;
     if (building.space) {

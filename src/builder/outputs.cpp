@@ -67,6 +67,23 @@ std::string monitor_path(std::size_t k, std::size_t user_count, const char* kind
   return k < user_count ? fmt::format("/monitors/{}/{}", kind, k) : "/generators";
 }
 
+// Which force of a monitor's shear link is its shear: the link's own (0), or, for a link with a
+// coupled shear, the one along the tangent the monitor names (1, 2).
+int shear_link_direction(const Resolver& resolver, const DriftMonitorSpec& m, Index link,
+                         const std::string& path) {
+  const bool coupled = resolver.spec().links[static_cast<std::size_t>(link)].shear.has_value();
+  if (coupled && !m.shear_link_direction)
+    resolver.fail(path + "/shear_link",
+                  fmt::format("link '{}' carries a shear in two directions: give "
+                              "'shear_link_direction', 1 or 2, the tangent of this drift's shear",
+                              *m.shear_link));
+  if (!coupled && m.shear_link_direction)
+    resolver.fail(
+        path + "/shear_link_direction",
+        fmt::format("link '{}' has no coupled shear: its force is the shear", *m.shear_link));
+  return m.shear_link_direction.value_or(0);
+}
+
 // A monitor's hinge: a uniaxial one, or one direction of a hinge that bends about two axes.
 DriftMonitor::Curvature curvature_of(const Resolver& resolver, const DriftMonitorSpec& m,
                                      const std::string& path) {
@@ -123,7 +140,10 @@ std::vector<DriftMonitor> resolve_drift_monitors(const Resolver& resolver) {
     if (m.hinge) monitor.curvature = curvature_of(resolver, m, path);
     if (m.base_element)
       monitor.base_element = resolver.element(*m.base_element, path + "/base_element");
-    if (m.shear_link) monitor.shear_link = resolver.link(*m.shear_link, path + "/shear_link");
+    if (m.shear_link) {
+      monitor.shear_link = resolver.link(*m.shear_link, path + "/shear_link");
+      monitor.shear_link_direction = shear_link_direction(resolver, m, *monitor.shear_link, path);
+    }
     monitors.push_back(monitor);
   }
   return monitors;

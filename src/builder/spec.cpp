@@ -24,6 +24,13 @@ bool PierHingeSpec::law_couples(const links::LawSource& where) const {
   return links::CoupledShear::numbers_of(probe, where).has_value();
 }
 
+bool StoreySpec::law_couples(const links::LawSource& where) const {
+  if (!law) return false;
+  LawSpec probe = *law;
+  probe.parameters["stiffness"] = stiffness;
+  return links::CoupledShear::numbers_of(probe, where).has_value();
+}
+
 double UnitsSpec::second() const { return time == "ms" ? 1000.0 : 1.0; }
 
 std::optional<std::string> UnitsSpec::force() const {

@@ -291,6 +291,9 @@ struct StoreySpec {
   // a x b, (k_x b^2 + k_y a^2) / 12), and the floor's polar moment of inertia about its mass
   // centre [M L^2] (default a uniform slab's, m (a^2 + b^2) / 12).
   std::optional<double> stiffness_y, torsional_stiffness, rotary_inertia;
+  // Whether `law` has a coupled form (links/coupled_shear.hpp) once the storey sets its
+  // stiffness.
+  bool law_couples(const links::LawSource& where) const;
 };
 // What a yielding storey's link adds to the building's stiffness-proportional damping a1 K:
 // initial, a linear dashpot a1 k0 beside it (the elastic building's damping, whatever the
@@ -300,6 +303,10 @@ struct BuildingSpec {
   std::vector<StoreySpec> storeys;  // from the ground up
   double damping_ratio = 0.0;       // Rayleigh on the building's own modes 1 and 2 (0: none)
   StoreyDamping storey_damping = StoreyDamping::initial;
+  // 3-D: each yielding storey one link whose x and y shears yield together on an ellipse
+  // (true), or one link per direction (false); none: coupled where the storey's law has the
+  // coupled form.
+  std::optional<bool> storeys_coupled;
   // 3-D: plan dimensions a along x (toward the other building) and b along y [L], and where the
   // mass centre and the stiffness centre lie from the plan's centre (at every floor) [L].
   std::array<double, 2> plan{0.0, 0.0};
@@ -437,6 +444,8 @@ struct DriftMonitorSpec {
   // A hinge that bends about two axes (a rotational link with a coupled `shear`): the tangent
   // t_1 or t_2 (1, 2) about which this drift bends it.
   std::optional<int> hinge_direction;
+  // A shear link with a coupled `shear`: the tangent (1, 2) whose force is this drift's shear.
+  std::optional<int> shear_link_direction;
   // What carries its shear: the member's lowest element (its end i forces: base shear V_i and,
   // for a beam, base moment M_i), or a link whose force is the storey shear.
   std::optional<std::string> base_element, shear_link;

@@ -708,6 +708,26 @@ const Fields<BuildingSpec>& building_fields() {
                "the stiffness-proportional damping of its yielding storeys: a1 times their "
                "initial stiffness (the elastic column's), a1 times their tangent at the last "
                "converged step, or none (the link's `rayleigh`)"),
+      optional("storey_interaction", &BuildingSpec::storeys_coupled,
+               Choice<bool>{{{"elliptic", true}, {"none", false}}},
+               "elliptic: each yielding storey one link `<storey>` whose shears along x and y "
+               "yield together, (V_x/V_yx)² + (V_y/V_yy)² = 1 (a circle when stiffness_y = "
+               "stiffness); none: a link per direction (`<storey>`, `<storey>.y`)")
+          .in_space()
+          .default_text("elliptic, for a storey law that has the coupled form"),
+      rule<BuildingSpec>([](JsonObject& object, BuildingSpec& building, Context&) {
+        if (!building.storeys_coupled.value_or(false)) return;
+        const JsonValue storeys = object.at("storeys");
+        for (std::size_t s = 0; s < building.storeys.size(); ++s) {
+          const StoreySpec& storey = building.storeys[s];
+          if (storey.law &&
+              !storey.law_couples({storeys.file(), fmt::format("{}/{}/law", storeys.path(), s)}))
+            object.at("storey_interaction")
+                .fail(fmt::format(
+                    "storey {} has a {} law, which has no coupled form ({} have): give \"none\"",
+                    s + 1, storey.law->type, links::CoupledShear::kLaws));
+        }
+      }),
       required("plan", &BuildingSpec::plan, Pair<>{positive},
                "plan dimensions [a, b]: a along x (toward the other building), b along y [L]")
           .in_space(),
@@ -1299,6 +1319,10 @@ const Fields<DriftMonitorSpec>& drift_monitor_fields() {
       optional("shear_link", &DriftMonitorSpec::shear_link, Text{true},
                "id of a link whose force is the storey shear (a yielding storey): the summary's "
                "peak `shear`"),
+      optional("shear_link_direction", &DriftMonitorSpec::shear_link_direction,
+               Number<int>{at_least(1), at_most(2)},
+               "with a shear link whose `shear` acts in two directions (a coupled storey): the "
+               "tangent t_1 or t_2 whose force is this drift's shear"),
       rule<DriftMonitorSpec>([](JsonObject& object, DriftMonitorSpec& monitor, Context&) {
         if (monitor.base_element && monitor.shear_link)
           object.at("shear_link").fail("give 'base_element' or 'shear_link', not both");

@@ -210,6 +210,7 @@ void LinkSummaries::record_shear(const integrators::State& state, std::size_t k)
     const double deformation = state.link_penetration[first + a];
     s.final_forces[along] = state.link_force[first + a];
     s.peak_deformations[along] = std::max(s.peak_deformations[along], std::abs(deformation));
+    s.peak_forces[along] = std::max(s.peak_forces[along], std::abs(s.final_forces[along]));
     const double ratio = deformation / rows.yield_deformation[along];
     ductility += ratio * ratio;
   }

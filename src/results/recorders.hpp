@@ -164,8 +164,8 @@ struct ShearSummary {
   double work = 0.0;               // integral of F_t . ds [F L]
   double final_force = 0.0;        // [F]
   double final_deformation = 0.0;  // residual [L]
-  // Along each tangent: the largest |s_a| [L] and F_a at the end [F].
-  std::array<double, 2> peak_deformations{}, final_forces{};
+  // Along each tangent: the largest |s_a| [L] and |F_a| [F], and F_a at the end [F].
+  std::array<double, 2> peak_deformations{}, peak_forces{}, final_forces{};
   // The largest |(s_1 / delta_y1, s_2 / delta_y2)|: the resultant's ductility on an elliptic
   // surface (0 while the law has no yield).
   double peak_ductility = 0.0;

@@ -596,7 +596,9 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
       drift.peak_base_moment = observers.base_moment(k);
     if (const std::optional<Index> link = drift.monitor.shear_link) {
       const LinkSummary& s = run.links[static_cast<std::size_t>(*link)].summary;
-      drift.peak_shear = std::max(s.peak_force, s.peak_tension);
+      const int along = drift.monitor.shear_link_direction;
+      drift.peak_shear = along == 0 ? std::max(s.peak_force, s.peak_tension)
+                                    : s.shear->peak_forces[static_cast<std::size_t>(along - 1)];
     }
     run.drifts.push_back(drift);
   }

@@ -259,6 +259,54 @@ TEST(BuildingsInSpace, AYieldingStoreysDriftMonitorsYieldAtEachDirectionsDrift) 
   EXPECT_EQ(found, 2);
 }
 
+// The yielding pair in space with bilinear storeys, 1 m apart (no pounding), under the record
+// along x: each storey is one link whose x and y shears yield together (the default for a
+// bilinear law) or a link per direction ("none"). Along x alone the two move alike (the coupled
+// law along one direction is the uniaxial one to rounding); the drift monitors take the storey
+// shear from the coupled link's force along their own direction.
+TEST(BuildingsInSpace, ACoupledStoreyAlongXIsTheUncoupledOne) {
+  Json model = in_space(bundled("adjacent_buildings_yielding.json"), 1);
+  Json& pair = model["generators"][0];
+  pair["separation"] = 1.0;
+  for (const char* side : {"left", "right"})
+    for (Json& storey : pair[side]["storeys"]) {
+      const double yield_force = storey["law"]["yield_force"].get<double>();
+      storey["law"] = {
+          {"type", "bilinear_spring"}, {"yield_force", yield_force}, {"hardening_ratio", 0.05}};
+      storey["stiffness_y"] = 1.5 * storey["stiffness"].get<double>();
+    }
+  const BuiltModel coupled = build(model);
+  const model::Link& storey = coupled.model.links[coupled.link_index.at("pair.left.s1")];
+  ASSERT_TRUE(storey.shear);
+  EXPECT_FALSE(coupled.link_index.contains("pair.left.s1.y"));
+  EXPECT_DOUBLE_EQ(storey.shear->numbers[1].stiffness / storey.shear->numbers[0].stiffness, 1.5);
+  const Json summary = testing::model_summary(model.dump(), kModels + "buildings.json");
+  pair["left"]["storey_interaction"] = "none";
+  pair["right"]["storey_interaction"] = "none";
+  EXPECT_TRUE(build(model).link_index.contains("pair.left.s1.y"));
+  const Json uncoupled = testing::model_summary(model.dump(), kModels + "buildings.json");
+  double worst = 0.0, largest = 0.0;
+  for (std::size_t k = 0; k < summary["storeys"].size(); ++k) {
+    const Json& mine = summary["storeys"][k];
+    const Json& theirs = uncoupled["storeys"][k];
+    ASSERT_EQ(mine["id"], theirs["id"]);
+    if (mine.contains("direction") && mine["direction"] == "y") continue;
+    largest = std::max(largest, mine["ductility"].get<double>());
+    for (const char* key : {"peak_drift", "peak_shear"})
+      worst = std::max(worst, std::abs(mine[key].get<double>() / theirs[key].get<double>() - 1.0));
+  }
+  std::cout << fmt::format(
+      "yielding pair in space, record along x: coupled storeys against uncoupled: peak drifts and "
+      "storey shears to {:.1e} (largest storey ductility {:.2f})\n",
+      worst, largest);
+  EXPECT_GT(largest, 1.5) << "the storeys must yield";
+  EXPECT_LT(worst, 1e-9);
+  Json takeda = in_space(bundled("adjacent_buildings_yielding.json"), 1);
+  takeda["generators"][0]["left"]["storey_interaction"] = "elliptic";
+  testing::expect_input_error([&] { build(takeda); }, "/generators/0/left/storey_interaction",
+                              "no coupled form");
+}
+
 TEST(BuildingsInSpace, MeaninglessPlanInputIsRefusedWithItsPath) {
   const Json good = eccentric_pair();
   ASSERT_NO_THROW((void)build(good));
