@@ -172,15 +172,6 @@ std::vector<std::string> add_column_cuts(const Building& building, std::size_t s
   return chain;
 }
 
-// A yielding storey's shear link between its floors: the user's law with the storey's
-// stiffness, drift positive when the upper floor moves along +x, and in it the storey's share of
-// the building's stiffness-proportional damping: a1 k0, the dashpot its column would have given
-// ("initial"), or a1 times its tangent ("committed"; links/stiffness_damping.hpp). In the link,
-// not beside it, so that the damping adds no link row to iterate. In space the link acts at the
-// stiffness centre, with the same law along y (the storey's stiffness_y): coupled, one link whose
-// vertical axis (the floors hold it) carries the two as its shear (coupled_storeys), or a link
-// `<storey>.y` of its own; and an elastic twist spring (`<storey>.rz`). Returns its yield drift
-// along x and y (the law's F_y over the stiffness along each).
 // In space, whether storey s is one link whose x and y shears are coupled: as asked, or where
 // its law has the coupled form.
 bool coupled_storeys(const Building& building, std::size_t s, const ModelSpec& out) {
@@ -192,6 +183,15 @@ bool coupled_storeys(const Building& building, std::size_t s, const ModelSpec& o
                                kPairSides[building.side], s)});
 }
 
+// A yielding storey's shear link between its floors: the user's law with the storey's
+// stiffness, drift positive when the upper floor moves along +x, and in it the storey's share of
+// the building's stiffness-proportional damping: a1 k0, the dashpot its column would have given
+// ("initial"), or a1 times its tangent ("committed"; links/stiffness_damping.hpp). In the link,
+// not beside it, so that the damping adds no link row to iterate. In space the link acts at the
+// stiffness centre, with the same law along y (the storey's stiffness_y): coupled, one link whose
+// vertical axis (the floors hold it) carries the two as its shear (coupled_storeys), or a link
+// `<storey>.y` of its own; and an elastic twist spring (`<storey>.rz`). Returns its yield drift
+// along x and y (the law's F_y over the stiffness along each).
 std::array<std::optional<double>, 2> add_storey_link(const Building& building, std::size_t s,
                                                      ModelSpec& out) {
   const StoreySpec& storey = building.spec.storeys[s];
