@@ -17,18 +17,21 @@ double UnitsSpec::gravity() const {
   return 9.80665 / metre * second * second;
 }
 
+namespace {
+// Whether a generator's law has a coupled form once the generator sets its `numbers`.
+bool couples_with(LawSpec law, const std::map<std::string, double>& numbers,
+                  const links::LawSource& where) {
+  for (const auto& [name, value] : numbers) law.parameters[name] = value;
+  return links::CoupledShear::numbers_of(law, where).has_value();
+}
+}  // namespace
+
 bool PierHingeSpec::law_couples(const links::LawSource& where) const {
-  LawSpec probe = law;
-  probe.parameters["stiffness"] = 1.0;
-  probe.parameters["yield_force"] = 1.0;
-  return links::CoupledShear::numbers_of(probe, where).has_value();
+  return couples_with(law, {{"stiffness", 1.0}, {"yield_force", 1.0}}, where);
 }
 
 bool StoreySpec::law_couples(const links::LawSource& where) const {
-  if (!law) return false;
-  LawSpec probe = *law;
-  probe.parameters["stiffness"] = stiffness;
-  return links::CoupledShear::numbers_of(probe, where).has_value();
+  return law && couples_with(*law, {{"stiffness", stiffness}}, where);
 }
 
 double UnitsSpec::second() const { return time == "ms" ? 1000.0 : 1.0; }

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "app/model_loading.hpp"
+#include "support/hinged_column.hpp"
 #include "support/input_error.hpp"
 #include "support/model_summary.hpp"
 
@@ -32,8 +33,9 @@ using nlohmann::json;
 const std::string kPath = std::string(POUND_SOURCE_DIR) + "/models/column.json";
 // A 8 m column of 1,000 t on a hinge ten times as stiff as the column (3 E I / h), yielding at
 // about a third of its elastic demand.
-constexpr double kHeight = 8.0, kYoungs = 3.0e10, kInertia = 0.05, kMass = 1.0e6;
-constexpr double kHingeStiffness = 10.0 * 3.0 * kYoungs * kInertia / kHeight, kYield = 8.0e6;
+constexpr double kHingeStiffness =
+    10.0 * 3.0 * testing::kColumnYoungs * testing::kColumnInertia / testing::kColumnHeight;
+constexpr double kYield = 8.0e6;
 
 json bilinear(double stiffness, double yield_moment) {
   return {{"type", "bilinear_spring"}, {"stiffness", stiffness}, {"yield_force", yield_moment}};
@@ -57,40 +59,8 @@ json coupled(json about_x, std::optional<json> about_y = std::nullopt) {
   return link;
 }
 
-// The column on its hinge node (held but for its bending), its links, excited along `direction`.
 json column(const std::vector<json>& links, std::array<double, 3> direction) {
-  return {{"dimension", 3},
-          {"nodes",
-           {{{"id", "base"}, {"x", 0}, {"y", 0}, {"z", 0}},
-            {{"id", "hinge"}, {"x", 0}, {"y", 0}, {"z", 0}},
-            {{"id", "top"}, {"x", 0}, {"y", 0}, {"z", kHeight}}}},
-          {"materials",
-           {{{"id", "concrete"},
-             {"youngs_modulus", kYoungs},
-             {"density", 0.0},
-             {"poisson_ratio", 0.2}}}},
-          {"elements",
-           {{{"id", "column"},
-             {"type", "beam"},
-             {"nodes", {"hinge", "top"}},
-             {"material", "concrete"},
-             {"area", 1.0},
-             {"inertia_y", kInertia},
-             {"inertia_z", kInertia},
-             {"torsion", 2.0 * kInertia},
-             {"orientation", {1.0, 0.0, 0.0}}}}},
-          {"masses", {{{"node", "top"}, {"mass", kMass}}}},
-          {"supports",
-           {{{"node", "base"}, {"fix", {"x", "y", "z", "rx", "ry", "rz"}}},
-            {{"node", "hinge"}, {"fix", {"x", "y", "z", "rz"}}},
-            {{"node", "top"}, {"fix", {"z"}}}}},
-          {"links", links},
-          {"excitations",
-           {{{"record", "../ground_motions/synthetic_firm_01.AT2"},
-             {"units", "g"},
-             {"scale", {{"pga", 0.4}}},
-             {"direction", direction}}}},
-          {"analysis", {{"time_step", 0.005}, {"duration", 12.0}}}};
+  return testing::hinged_column(links, direction);
 }
 
 const json& entry(const json& summary, const char* list, const std::string& id) {

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "support/hinged_column.hpp"
 #include "support/process.hpp"
 
 namespace pound::testing {
@@ -39,48 +40,18 @@ TEST_F(PushoverCommand, WritesTheCapacityCurveAndFindsTheFirstYield) {
 // V_y (h^2 / k_h + h^3 / (3 E I)) = 0.1252 m; the first point past it (1 mm increments) is
 // reported.
 TEST_F(PushoverCommand, FindsTheFirstYieldOfABiaxialHinge) {
-  const double height = 8.0, youngs = 3.0e10, inertia = 0.05, yield = 8.0e6;
-  const double hinge_stiffness = 10.0 * 3.0 * youngs * inertia / height;
+  const double height = kColumnHeight, youngs = kColumnYoungs, inertia = kColumnInertia;
+  const double yield = 8.0e6, hinge_stiffness = 10.0 * 3.0 * youngs * inertia / height;
   const nlohmann::json law = {
       {"type", "bilinear_spring"}, {"stiffness", hinge_stiffness}, {"yield_force", yield}};
-  const nlohmann::json model = {
-      {"dimension", 3},
-      {"nodes",
-       {{{"id", "base"}, {"x", 0}, {"y", 0}, {"z", 0}},
-        {{"id", "hinge"}, {"x", 0}, {"y", 0}, {"z", 0}},
-        {{"id", "top"}, {"x", 0}, {"y", 0}, {"z", height}}}},
-      {"materials",
-       {{{"id", "concrete"},
-         {"youngs_modulus", youngs},
-         {"density", 0.0},
-         {"poisson_ratio", 0.2}}}},
-      {"elements",
-       {{{"id", "column"},
-         {"type", "beam"},
-         {"nodes", {"hinge", "top"}},
-         {"material", "concrete"},
-         {"area", 1.0},
-         {"inertia_y", inertia},
-         {"inertia_z", inertia},
-         {"torsion", 2.0 * inertia},
-         {"orientation", {1.0, 0.0, 0.0}}}}},
-      {"masses", {{{"node", "top"}, {"mass", 1.0e6}}}},
-      {"supports",
-       {{{"node", "base"}, {"fix", {"x", "y", "z", "rx", "ry", "rz"}}},
-        {{"node", "hinge"}, {"fix", {"x", "y", "z", "rz"}}},
-        {{"node", "top"}, {"fix", {"z"}}}}},
-      {"links",
-       {{{"id", "hinge"},
-         {"nodes", {"hinge", "base"}},
-         {"dof", "rotation"},
-         {"axis", {0, 0, 1}},
-         {"law", {{"type", "elastic_spring"}, {"stiffness", hinge_stiffness}}},
-         {"shear", law}}}},
-      {"excitations",
-       {{{"record", std::string(POUND_SOURCE_DIR) + "/ground_motions/synthetic_firm_01.AT2"},
-         {"units", "g"},
-         {"direction", {1.0, 0.0, 0.0}}}}},
-      {"analysis", {{"time_step", 0.005}, {"duration", 2.0}}}};
+  const nlohmann::json model =
+      hinged_column({{{"id", "hinge"},
+                      {"nodes", {"hinge", "base"}},
+                      {"dof", "rotation"},
+                      {"axis", {0, 0, 1}},
+                      {"law", {{"type", "elastic_spring"}, {"stiffness", hinge_stiffness}}},
+                      {"shear", law}}},
+                    {1.0, 0.0, 0.0});
   std::ofstream(path("column.json")) << model.dump(2);
   const Outcome outcome =
       pound({"pushover", path("column.json").string(), "--node", "top", "--to", "0.2",
