@@ -232,7 +232,8 @@ Vector LinkSet::rest_stiffness() const {
     stiffness[row] = law(k).clone()->set_trial({-gaps_[row], 0.0, 0.0}).stiffness;
     if (const links::CoupledShear* bearing = shear(k))
       for (int a = 0; a < bearing->tangents(); ++a)
-        stiffness[row + 1 + a] = bearing->numbers()[static_cast<std::size_t>(a)].stiffness;
+        stiffness[row + 1 + a] =
+            bearing->numbers()[static_cast<std::size_t>(a)].initial_stiffness();
   }
   return stiffness;
 }

@@ -57,8 +57,17 @@ std::optional<BoucWen::Refusal> BoucWen::refusal(const Parameters& p) {
   return std::nullopt;
 }
 
+BoucWen::Parameters BoucWen::with_yield_force(Parameters p, double yield_force) {
+  const double saturation = p.amplitude * yield_force / p.stiffness;
+  const double factor = p.amplitude / std::pow(saturation, p.sharpness) / (p.beta + p.gamma);
+  p.beta *= factor;
+  p.gamma *= factor;
+  return p;
+}
+
 BoucWen::BoucWen(const Parameters& p)
-    : stiffness_(p.stiffness),
+    : parameters_(p),
+      stiffness_(p.stiffness),
       hardening_ratio_(p.hardening_ratio),
       sharpness_(p.sharpness),
       beta_(p.beta),
@@ -204,7 +213,11 @@ const LawEntry& BoucWen::entry() {
            {"gamma", Range::non_negative, "1/L^n",
             "γ (OpenSees gamma): loading slope `dz/dδ = A − (β + γ)·|z|^n`, unloading "
             "`A + (β − γ)·|z|^n` (γ = β: unloading at the initial slope)"},
-           {"amplitude", Range::positive, "-", "A (OpenSees Ao): dz/dδ at z = 0 (default 1)"}},
+           {"amplitude", Range::positive, "-", "A (OpenSees Ao): dz/dδ at z = 0 (default 1)"},
+           {"yield_force", Range::positive, "F",
+            "F_y: the equivalent bilinear yield force k·z_max/A; with it β and γ give only the "
+            "loop's shape, both scaled by one factor so that z_max = A·F_y/k (a generator sets "
+            "it for pier hinges)"}},
       .required = {"stiffness", "sharpness", "beta", "gamma"},
       .traits = {.role = LinkRole::spring, .penalty = false},
       // z_max = 5 mm: beta + gamma = 1 / z_max^2 for n = 2.
@@ -214,12 +227,20 @@ const LawEntry& BoucWen::entry() {
                   {"beta", 2e4},
                   {"gamma", 2e4}},
       .make = [](const LawSpec& law, const LawSource& where) -> LawFactory {
-        const Parameters parameters{.stiffness = *law.number("stiffness"),
-                                    .hardening_ratio = law.number("hardening_ratio").value_or(0.0),
-                                    .sharpness = *law.number("sharpness"),
-                                    .beta = *law.number("beta"),
-                                    .gamma = *law.number("gamma"),
-                                    .amplitude = law.number("amplitude").value_or(1.0)};
+        Parameters parameters{.stiffness = *law.number("stiffness"),
+                              .hardening_ratio = law.number("hardening_ratio").value_or(0.0),
+                              .sharpness = *law.number("sharpness"),
+                              .beta = *law.number("beta"),
+                              .gamma = *law.number("gamma"),
+                              .amplitude = law.number("amplitude").value_or(1.0)};
+        const std::optional<double> yield_force = law.number("yield_force");
+        if (yield_force && !refusal(parameters)) {
+          parameters = with_yield_force(parameters, *yield_force);
+          if (const std::optional<Refusal> refused = refusal(parameters))
+            throw InputError(where.file, where.path + "/yield_force",
+                             fmt::format("bouc_wen: yield_force {} makes {} {}", *yield_force,
+                                         refused->parameter, refused->reason));
+        }
         if (const std::optional<Refusal> refused = refusal(parameters))
           throw InputError(where.file, where.path + "/" + refused->parameter,
                            "bouc_wen: " + refused->parameter + " " + refused->reason);

@@ -18,6 +18,10 @@
 //                                    (gamma = beta: unloading at the initial slope A) [1/L^n]
 //   A      amplitude        [Ao]     dz/d(delta) at z = 0, default 1 [-]
 //
+// yield_force F_y (optional) [F]: the equivalent bilinear yield force k z_max / A. With it, beta
+// and gamma give only the loop's shape: both are scaled by one factor so that z_max = A F_y / k
+// (what a generator sets for a pier hinge, from its yield moment).
+//
 // z is a deformation [L]; on loading it tends to z_max = (A / (beta + gamma))^(1/n), so the
 // force tends to the lines F = a k delta +- (1 - a) k z_max: (1 - a) k z_max is the
 // characteristic strength (the force intercept of the post-yield branch), the initial slope is
@@ -72,6 +76,8 @@ class BoucWen final : public LinkLaw {
     std::string reason;
   };
   static std::optional<Refusal> refusal(const Parameters& parameters);
+  // The parameters with beta and gamma scaled so that k z_max / A = yield_force.
+  static Parameters with_yield_force(Parameters parameters, double yield_force);
 
   // Throws std::invalid_argument when `refusal` refuses the parameters.
   explicit BoucWen(const Parameters& parameters);
@@ -87,6 +93,7 @@ class BoucWen final : public LinkLaw {
   bool in_contact() const override { return committed_force_ != 0.0; }
   std::optional<double> yield_deformation() const override { return saturation_ / amplitude_; }
 
+  const Parameters& parameters() const { return parameters_; }
   double hysteretic_deformation() const { return committed_z_; }  // z [L]
   double saturation() const { return saturation_; }               // z_max [L]
 
@@ -107,6 +114,7 @@ class BoucWen final : public LinkLaw {
   // dz/d(delta) at z moving in `direction`.
   double slope(double z, double direction) const;
 
+  Parameters parameters_;
   double stiffness_, hardening_ratio_, sharpness_, beta_, gamma_, amplitude_;
   double saturation_;   // z_max
   double max_substep_;  // RK4 sub-step (n != 1)

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "links/bilinear_spring.hpp"
+#include "links/bouc_wen.hpp"
 #include "links/elastic_spring.hpp"
 #include "links/law_registry.hpp"
 
@@ -16,6 +17,11 @@ std::optional<ShearNumbers> CoupledShear::numbers_of(const LinkLaw& law) {
   if (const auto* bilinear = dynamic_cast<const BilinearSpring*>(&law))
     return ShearNumbers{bilinear->stiffness(), bilinear->yield_force(),
                         bilinear->hardening_ratio()};
+  if (const auto* smooth = dynamic_cast<const BoucWen*>(&law)) {
+    const BoucWen::Parameters& p = smooth->parameters();
+    return ShearNumbers{p.stiffness, p.stiffness * *smooth->yield_deformation(), p.hardening_ratio,
+                        SmoothShape{p.sharpness, p.beta, p.gamma, p.amplitude}};
+  }
   if (const auto* elastic = dynamic_cast<const ElasticSpring*>(&law))
     return ShearNumbers{elastic->stiffness(), std::numeric_limits<double>::infinity(), 0.0};
   return std::nullopt;
@@ -32,14 +38,29 @@ std::optional<std::string> CoupledShear::mismatch(const ShearNumbers& first,
   if (first.hardening_ratio != second.hardening_ratio)
     return fmt::format("the two directions harden by one ratio b (here {:g} and {:g})",
                        first.hardening_ratio, second.hardening_ratio);
+  if (first.smooth.has_value() != second.smooth.has_value())
+    return "both directions are bouc_wen laws, or neither is";
+  if (!first.smooth) return std::nullopt;
+  const SmoothShape &one = *first.smooth, &two = *second.smooth;
+  if (one.sharpness != two.sharpness || one.amplitude != two.amplitude)
+    return fmt::format(
+        "the two directions have one sharpness n and one amplitude A (here n {:g} "
+        "and {:g}, A {:g} and {:g})",
+        one.sharpness, two.sharpness, one.amplitude, two.amplitude);
+  const double share_one = one.beta / (one.beta + one.gamma);
+  const double share_two = two.beta / (two.beta + two.gamma);
+  if (std::abs(share_one - share_two) > 1e-12)
+    return fmt::format(
+        "the two directions have one loop shape, beta / (beta + gamma) (here {:g} "
+        "and {:g}; their z_max may differ)",
+        share_one, share_two);
   return std::nullopt;
 }
 
 CoupledShear::CoupledShear(std::unique_ptr<LinkLaw> normal, ShearDirections numbers, int tangents)
     : normal_(std::move(normal)),
       numbers_(numbers),
-      hardening_modulus_(numbers[0].hardening_ratio * numbers[0].stiffness /
-                         (1.0 - numbers[0].hardening_ratio)),
+      hysteresis_(make_plane_hysteresis(numbers[0], tangents)),
       tangents_(tangents) {
   // Equal directions scale by exactly 1 (the circular law to the bit).
   for (std::size_t a = 1; a < static_cast<std::size_t>(tangents_); ++a) {
@@ -52,12 +73,10 @@ CoupledShear::CoupledShear(std::unique_ptr<LinkLaw> normal, ShearDirections numb
 CoupledShear::CoupledShear(const CoupledShear& other)
     : normal_(other.normal_->clone()),
       numbers_(other.numbers_),
-      hardening_modulus_(other.hardening_modulus_),
+      hysteresis_(other.hysteresis_->clone()),
       tangents_(other.tangents_),
       deformation_scale_(other.deformation_scale_),
       force_scale_(other.force_scale_),
-      committed_plastic_(other.committed_plastic_),
-      trial_plastic_(other.committed_plastic_),
       damping_(other.damping_),
       dashpot_(other.dashpot_),
       trial_tangent_(other.trial_tangent_),
@@ -73,10 +92,15 @@ FrictionResponse CoupledShear::set_trial(const LinkKinematics& normal,
                                          std::span<const LinkKinematics> tangential) {
   FrictionResponse out;
   out.normal = normal_->set_trial(normal);
-  trial_plastic_ = committed_plastic_;
-  Tangential relative{};
-  const double length = elastic_trial(tangential, relative, out);
-  if (length > numbers_[0].yield_force) return_to_circle(relative, length, out);
+  Tangential deformation{};
+  for (std::size_t a = 0; a < static_cast<std::size_t>(tangents_); ++a)
+    deformation[a] = tangential[a].penetration * deformation_scale_[a];
+  const PlaneResponse plane = hysteresis_->set_trial(deformation);
+  for (std::size_t a = 0; a < static_cast<std::size_t>(tangents_); ++a) {
+    out.tangential_force[a] = plane.force[a];
+    for (std::size_t b = 0; b < static_cast<std::size_t>(tangents_); ++b)
+      out.tangential_on_slip[a][b].stiffness = plane.tangent[a][b];
+  }
   to_own_units(out);
   if (damping_) add_damping(tangential, out);
   return out;
@@ -85,7 +109,7 @@ FrictionResponse CoupledShear::set_trial(const LinkKinematics& normal,
 void CoupledShear::set_damping(const ShearDamping& damping) {
   damping_ = damping;
   for (std::size_t a = 0; a < static_cast<std::size_t>(tangents_); ++a)
-    dashpot_[a][a] = damping.stiffness_coefficient * numbers_[a].stiffness;
+    dashpot_[a][a] = damping.stiffness_coefficient * numbers_[a].initial_stiffness();
 }
 
 void CoupledShear::add_damping(std::span<const LinkKinematics> tangential, FrictionResponse& out) {
@@ -118,53 +142,15 @@ void CoupledShear::to_own_units(FrictionResponse& out) const {
 }
 
 Tangential CoupledShear::plastic_deformation() const {
-  Tangential plastic{};
+  Tangential plastic = hysteresis_->plastic_deformation();
   for (std::size_t a = 0; a < static_cast<std::size_t>(tangents_); ++a)
-    plastic[a] = committed_plastic_[a] / deformation_scale_[a];
+    plastic[a] /= deformation_scale_[a];
   return plastic;
-}
-
-double CoupledShear::elastic_trial(std::span<const LinkKinematics> tangential, Tangential& relative,
-                                   FrictionResponse& out) const {
-  const double k = numbers_[0].stiffness;
-  double length = 0.0;
-  for (std::size_t a = 0; a < static_cast<std::size_t>(tangents_); ++a) {
-    out.tangential_force[a] =
-        k * (tangential[a].penetration * deformation_scale_[a] - committed_plastic_[a]);
-    relative[a] = out.tangential_force[a] - hardening_modulus_ * committed_plastic_[a];
-    length += relative[a] * relative[a];
-    out.tangential_on_slip[a][a].stiffness = k;
-  }
-  return std::sqrt(length);
-}
-
-void CoupledShear::return_to_circle(const Tangential& relative, double length,
-                                    FrictionResponse& out) {
-  const double k = numbers_[0].stiffness, hardening = hardening_modulus_;
-  const auto n = static_cast<std::size_t>(tangents_);
-  const double plastic_step = (length - numbers_[0].yield_force) / (k + hardening);
-  for (std::size_t a = 0; a < n; ++a) {
-    const double step =
-        n == 1 ? std::copysign(plastic_step, relative[a]) : plastic_step * relative[a] / length;
-    trial_plastic_[a] += step;
-    out.tangential_force[a] -= k * step;
-  }
-  if (n == 1) {  // BilinearSpring's slope, b k, as that law computes it
-    out.tangential_on_slip[0][0].stiffness = numbers_[0].hardening_ratio * k;
-    return;
-  }
-  const double along = k * k / (k + hardening), across = k * k * plastic_step / length;
-  for (std::size_t a = 0; a < n; ++a)
-    for (std::size_t b = 0; b < n; ++b) {
-      const double e_ab = relative[a] * relative[b] / (length * length);
-      out.tangential_on_slip[a][b].stiffness =
-          (a == b ? k - across : 0.0) - (along - across) * e_ab;
-    }
 }
 
 void CoupledShear::commit() {
   normal_->commit();
-  committed_plastic_ = trial_plastic_;
+  hysteresis_->commit();
   if (!damping_) return;
   committed_viscous_ = trial_viscous_;
   committed_slide_ = trial_slide_;
@@ -177,7 +163,7 @@ void CoupledShear::commit() {
 
 void CoupledShear::revert() {
   normal_->revert();
-  trial_plastic_ = committed_plastic_;
+  hysteresis_->revert();
   trial_viscous_ = committed_viscous_;
   trial_slide_ = committed_slide_;
   trial_viscous_work_ = committed_viscous_work_;

@@ -508,7 +508,7 @@ std::optional<double> LinkResult::shear_hysteretic_energy() const {
   double stored = 0.0;  // by the law, without the damping's force
   for (std::size_t a = 0; a < shear->numbers.size(); ++a) {
     const double force = summary.shear->final_forces[a] - shear_viscous.force[a];
-    stored += force * force / (2.0 * shear->numbers[a].stiffness);
+    stored += force * force / (2.0 * shear->numbers[a].initial_stiffness());
   }
   return summary.shear->work - shear_viscous.work - stored;
 }

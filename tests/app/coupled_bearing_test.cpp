@@ -58,6 +58,10 @@ json deck(const std::vector<json>& links, std::array<double, 3> direction) {
           {"analysis", {{"time_step", 0.005}, {"duration", 12.0}}}};
 }
 
+json takeda_law() {
+  return {{"type", "takeda"}, {"stiffness", kStiffness}, {"yield_force", kYield}};
+}
+
 json coupled_bearing() {
   json bearing = link("bearing", {0, 0, 1}, {{"type", "elastic_spring"}, {"stiffness", 1e10}});
   bearing["shear"] = bilinear();
@@ -75,18 +79,20 @@ double peak(const json& entry) { return entry["peak_force"].get<double>(); }
 constexpr double kHalfRoot2 = 0.5 * std::numbers::sqrt2;
 constexpr std::array<double, 3> kDiagonal{kHalfRoot2, kHalfRoot2, 0.0};
 
+// The reference of a coupled bearing under the diagonal record: one uniaxial spring of `law`
+// along the diagonal (across it a spring that never acts), excited along it.
+json along_the_diagonal(const json& law) {
+  return deck({link("along", kDiagonal, law),
+               link("across", {-kHalfRoot2, kHalfRoot2, 0.0},
+                    {{"type", "elastic_spring"}, {"stiffness", kStiffness}}),
+               link("up", {0, 0, 1}, {{"type", "elastic_spring"}, {"stiffness", 1e10}})},
+              kDiagonal);
+}
+
 TEST(CoupledBearing, ADiagonalRecordYieldsItAsOneSpringAlongTheDiagonal) {
   const json coupled = testing::model_summary(deck({coupled_bearing()}, kDiagonal).dump(), kPath);
   const json& shear = link_summary(coupled, "bearing")["shear"];
-  // The reference: one uniaxial spring along the diagonal (across it a spring that never acts).
-  const json diagonal = testing::model_summary(
-      deck({link("along", kDiagonal, bilinear()),
-            link("across", {-kHalfRoot2, kHalfRoot2, 0.0},
-                 {{"type", "elastic_spring"}, {"stiffness", kStiffness}}),
-            link("up", {0, 0, 1}, {{"type", "elastic_spring"}, {"stiffness", 1e10}})},
-           kDiagonal)
-          .dump(),
-      kPath);
+  const json diagonal = testing::model_summary(along_the_diagonal(bilinear()).dump(), kPath);
   const json& along = link_summary(diagonal, "along");
   const double reference = along["peak_deformation"].get<double>();
   const double deformation_error =
@@ -114,6 +120,43 @@ TEST(CoupledBearing, ADiagonalRecordYieldsItAsOneSpringAlongTheDiagonal) {
   EXPECT_LT(energy_error, 1e-9);
   EXPECT_NEAR(shear["peak_force"].get<double>() / kYield, 1.0, 1e-12);
   EXPECT_NEAR(uncoupled_peak / kYield, std::numbers::sqrt2, 1e-9);
+  EXPECT_LT(coupled["energy"]["balance_error"].get<double>(), 1e-9);
+}
+
+// A Bouc-Wen isolator (n = 2, beta = gamma, F_y = k z_max, 5 % hardening): coupled, under the
+// diagonal record, it moves the deck as the uniaxial Bouc-Wen spring along the diagonal does
+// (each integrates z within ~1e-9 z_max of its ODE, tests/links/plane_bouc_wen_test.cpp; for
+// n = 2 on nearly the same sub-steps).
+TEST(CoupledBearing, ACoupledBoucWenIsolatorIsTheUniaxialLawAlongTheDiagonal) {
+  const json smooth = {{"type", "bouc_wen"},
+                       {"stiffness", kStiffness},
+                       {"hardening_ratio", 0.05},
+                       {"sharpness", 2.0},
+                       {"beta", 1.0},
+                       {"gamma", 1.0},
+                       {"yield_force", kYield}};
+  json bearing = coupled_bearing();
+  bearing["shear"] = smooth;
+  const json coupled = testing::model_summary(deck({bearing}, kDiagonal).dump(), kPath);
+  const json& shear = link_summary(coupled, "bearing")["shear"];
+  const json diagonal = testing::model_summary(along_the_diagonal(smooth).dump(), kPath);
+  const json& along = link_summary(diagonal, "along");
+  const auto relative = [](const json& a, const json& b) {
+    return std::abs(a.get<double>() - b.get<double>()) / std::abs(b.get<double>());
+  };
+  const double deformation_error = relative(shear["peak_deformation"], along["peak_deformation"]);
+  const double force_error = relative(shear["peak_force"], along["peak_force"]);
+  const double energy_error = relative(shear["hysteretic_energy"], along["hysteretic_energy"]);
+  std::cout << fmt::format(
+      "Bouc-Wen isolator, diagonal record, ductility {:.2f}: coupled against the uniaxial law "
+      "along the diagonal: peak deformation {:.1e}, peak force {:.1e}, hysteretic energy {:.1e}; "
+      "energy balance {:.1e}\n",
+      shear["ductility"].get<double>(), deformation_error, force_error, energy_error,
+      coupled["energy"]["balance_error"].get<double>());
+  EXPECT_GT(shear["ductility"].get<double>(), 3.0) << "the isolator must yield well";
+  EXPECT_LT(deformation_error, 1e-9);
+  EXPECT_LT(force_error, 1e-9);
+  EXPECT_LT(energy_error, 1e-9);
   EXPECT_LT(coupled["energy"]["balance_error"].get<double>(), 1e-9);
 }
 
@@ -282,10 +325,9 @@ TEST(CoupledBearing, BadShearsAreRefusedAtTheirPath) {
   json friction = coupled_bearing();
   friction["friction"] = {{"coefficient", 0.1}};
   refused(friction, "/links/0/friction", "not both");
-  json bouc_wen = coupled_bearing();
-  bouc_wen["shear"] = {
-      {"type", "bouc_wen"}, {"stiffness", 2e7}, {"sharpness", 2.0}, {"beta", 2e4}, {"gamma", 2e4}};
-  refused(bouc_wen, "/links/0/shear/type", "bouc_wen cannot");
+  json takeda = coupled_bearing();
+  takeda["shear"] = takeda_law();
+  refused(takeda, "/links/0/shear/type", "takeda cannot");
   json hard = coupled_bearing();
   hard["law"] = {{"type", "hard_contact"}, {"restitution", 0.5}};
   refused(hard, "/links/0/law", "force law");
@@ -310,13 +352,17 @@ TEST(CoupledBearing, TheBridgeGeneratorCouplesItsBearingsInSpace) {
   const auto [coupled, x] = bearings(model);
   EXPECT_GT(coupled, 0);
   EXPECT_EQ(x, 0);
+  json smooth = model;  // a Bouc-Wen isolator couples too
+  smooth["generators"][0]["bearing"] = {{"type", "bouc_wen"}, {"stiffness", 2e7},
+                                        {"sharpness", 2.0},   {"beta", 1.0},
+                                        {"gamma", 1.0},       {"yield_force", 3e5}};
+  EXPECT_EQ(bearings(smooth), (std::pair{coupled, 0}));
   model["generators"][0]["bearing_interaction"] = "none";
   const auto [none_coupled, none_x] = bearings(model);
   EXPECT_EQ(none_coupled, 0);
   EXPECT_EQ(none_x, coupled);
   model["generators"][0]["bearing_interaction"] = "circular";
-  model["generators"][0]["bearing"] = {
-      {"type", "bouc_wen"}, {"stiffness", 2e7}, {"sharpness", 2.0}, {"beta", 2e4}, {"gamma", 2e4}};
+  model["generators"][0]["bearing"] = takeda_law();
   testing::expect_input_error([&] { load_model_text(model.dump(), kPath); },
                               "/generators/0/bearing_interaction", "no coupled form");
 }

@@ -199,6 +199,23 @@ TEST(CoupledHinge, TheBridgeGeneratorCouplesItsPierHingesInSpace) {
   ASSERT_TRUE(damped_hinge.shear && damped_hinge.shear->damping);
   EXPECT_GT(damped_hinge.shear->damping->stiffness_coefficient, 0.0);
   bridge["pier_hinge"].erase("damping");
+  // A Bouc-Wen hinge yields at the section's M_y too: its beta and gamma give the loop's shape.
+  bridge["pier_hinge"]["law"] = {
+      {"type", "bouc_wen"}, {"sharpness", 2.0}, {"beta", 1.0}, {"gamma", 1.0}};
+  const LoadedModel smooth = load_model_text(model.dump(), kPath);
+  const model::Link& smooth_hinge =
+      smooth.built.model.links[smooth.built.link_index.at("bridge.p1.hinge")];
+  ASSERT_TRUE(smooth_hinge.shear && smooth_hinge.shear->numbers[0].smooth);
+  EXPECT_NEAR(smooth_hinge.shear->numbers[0].yield_force / (e * 1.2 * 0.003), 1.0, 1e-14);
+  EXPECT_NEAR(smooth_hinge.shear->numbers[1].yield_force / (e * 0.8 * 0.004), 1.0, 1e-14);
+  bridge["pier_hinge"]["interaction"] = "none";
+  const LoadedModel smooth_none = load_model_text(model.dump(), kPath);
+  const model::Link& along =
+      smooth_none.built.model.links[smooth_none.built.link_index.at("bridge.p1.hinge")];
+  const double rotation = *along.make_law({})->yield_deformation();
+  EXPECT_NEAR(rotation * along.make_law({})->set_trial({}).stiffness / (e * 0.8 * 0.004), 1.0,
+              1e-14);
+  bridge["pier_hinge"]["interaction"] = "elliptic";
   bridge["pier_hinge"]["law"] = {
       {"type", "takeda"}, {"hardening_ratio", 0.03}, {"unloading_exponent", 0.4}};
   testing::expect_input_error([&] { load_model_text(model.dump(), kPath); },

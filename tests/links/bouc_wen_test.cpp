@@ -18,41 +18,15 @@
 #include "builder/build.hpp"
 #include "core/errors.hpp"
 #include "io/model_reader.hpp"
+#include "support/bouc_wen_shapes.hpp"
 
 namespace pound::links {
 namespace {
 
-constexpr double kStiffness = 2e7;  // N/m
-constexpr double kZmax = 5e-3;      // m
-
-struct Shape {
-  std::string label;
-  BoucWen::Parameters parameters;
-};
-
-// beta and gamma as fractions of (beta + gamma) = A / z_max^n, so every shape saturates at kZmax
-// (times A^(1/n) / A^(1/n) = 1 for A = 1; the amplitude-2 shape saturates at 2^(1/n) kZmax).
-BoucWen::Parameters shape(double n, double beta_share, double gamma_share, double hardening,
-                          double amplitude = 1.0) {
-  const double sum = 1.0 / std::pow(kZmax, n);
-  return {.stiffness = kStiffness,
-          .hardening_ratio = hardening,
-          .sharpness = n,
-          .beta = beta_share * sum,
-          .gamma = gamma_share * sum,
-          .amplitude = amplitude};
-}
-
-std::vector<Shape> shapes() {
-  return {{"n = 1, beta = gamma", shape(1.0, 0.5, 0.5, 0.05)},
-          {"n = 1, gamma > beta", shape(1.0, 0.1, 0.9, 0.0)},
-          {"n = 1, gamma < 0", shape(1.0, 1.5, -0.5, 0.1)},
-          {"n = 2, beta = gamma", shape(2.0, 0.5, 0.5, 0.05)},
-          {"n = 1.25, gamma > beta", shape(1.25, 0.1, 0.9, 0.02)},
-          {"n = 2.5, gamma = 0, A = 2", shape(2.5, 1.0, 0.0, 0.05, 2.0)},
-          {"n = 10, beta > gamma", shape(10.0, 0.75, 0.25, 0.05)},
-          {"n = 25, gamma < 0", shape(25.0, 1.2, -0.2, 0.0)}};
-}
+using Shape = testing::BoucWenShape;
+constexpr double kStiffness = testing::kBoucWenStiffness;
+constexpr double kZmax = testing::kBoucWenZmax;
+constexpr auto shapes = testing::bouc_wen_shapes;
 
 LinkKinematics at(double penetration) { return {penetration, 0.0, 0.0}; }
 
@@ -234,7 +208,7 @@ TEST(BoucWen, StaysInsideItsBoundsAndRevertsItsTrial) {
 }
 
 TEST(BoucWen, RefusesParametersWithoutBoundedHysteresis) {
-  const BoucWen::Parameters good = shape(2.0, 0.5, 0.5, 0.05);
+  const BoucWen::Parameters good = testing::bouc_wen_shape(2.0, 0.5, 0.5, 0.05);
   EXPECT_NO_THROW(BoucWen{good});
   auto refused = [&](auto change) {
     BoucWen::Parameters p = good;

@@ -276,7 +276,8 @@ TEST(CoupledShear, TwoDirectionsMakeOneLawOnlyWithOneHardeningRatio) {
 }
 
 // The numbers come from the uniaxial laws' own: lead_rubber's k_u, F_y = Q_d k_u / (k_u - k_d),
-// b = k_d / k_u; an elastic spring never yields; a Bouc-Wen bearing has no coupled form here.
+// b = k_d / k_u; an elastic spring never yields; a Bouc-Wen law's F_y is k z_max / A (or its
+// yield_force), with its shape; a Takeda law has no coupled form.
 TEST(CoupledShear, TakesItsNumbersFromTheUniaxialLaws) {
   const LawSource where{"test.json", "/links/0/shear"};
   const auto lead = CoupledShear::numbers_of({"lead_rubber",
@@ -295,7 +296,24 @@ TEST(CoupledShear, TakesItsNumbersFromTheUniaxialLaws) {
   const FrictionResponse far = push(spring, 10.0, -4.0);
   EXPECT_EQ(far.tangential_force[0], 3e7);
   EXPECT_EQ(far.tangential_on_slip[0][1].stiffness, 0.0);
-  EXPECT_FALSE(CoupledShear::numbers_of({"bouc_wen", find_law("bouc_wen")->example}, where));
+  const auto smooth = CoupledShear::numbers_of(
+      {"bouc_wen",
+       {{"stiffness", 2e7}, {"sharpness", 2.0}, {"beta", 1.0}, {"gamma", 3.0}, {"amplitude", 2.0}}},
+      where);
+  ASSERT_TRUE(smooth && smooth->smooth);
+  EXPECT_DOUBLE_EQ(smooth->yield_deformation(), std::sqrt(2.0 / 4.0) / 2.0);
+  EXPECT_DOUBLE_EQ(smooth->initial_stiffness(), 2.0 * 2e7);
+  const auto strong = CoupledShear::numbers_of({"bouc_wen",
+                                                {{"stiffness", 2e7},
+                                                 {"sharpness", 2.0},
+                                                 {"beta", 1.0},
+                                                 {"gamma", 3.0},
+                                                 {"yield_force", 3e5}}},
+                                               where);
+  ASSERT_TRUE(strong && strong->smooth);
+  EXPECT_DOUBLE_EQ(strong->yield_force, 3e5);
+  EXPECT_DOUBLE_EQ(strong->smooth->beta / (strong->smooth->beta + strong->smooth->gamma), 0.25);
+  EXPECT_FALSE(CoupledShear::numbers_of({"takeda", find_law("takeda")->example}, where));
 }
 
 }  // namespace
