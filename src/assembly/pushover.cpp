@@ -33,11 +33,8 @@ class BorderedNewton {
       if (iterations == control_.max_iterations) return false;
       Vector rhs(u.size() + 1);
       rhs << residual, offset;
-      Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
-      solver.compute(bordered_tangent());
-      if (solver.info() != Eigen::Success) return false;
-      const Vector correction = solver.solve(rhs);
-      if (!correction.allFinite()) return false;
+      Vector correction;
+      if (!correct(rhs, correction)) return false;
       u += correction.head(u.size());
       lambda += correction[u.size()];
     }
@@ -45,6 +42,19 @@ class BorderedNewton {
   }
 
  private:
+  // Newton's correction of (u, lambda); false where the tangent does not factor even with the
+  // DOFs only links hold held (static_tangent).
+  bool correct(const Vector& rhs, Vector& correction) const {
+    for (const bool hold_link_held : {false, true}) {
+      Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
+      solver.compute(bordered_tangent(hold_link_held));
+      if (solver.info() != Eigen::Success) continue;
+      correction = solver.solve(rhs);
+      if (correction.allFinite()) return true;
+    }
+    return false;
+  }
+
   // f_0 + lambda p - K u - B^T F at (u, lambda), the links left at that trial; returns the
   // force scale the tolerance is relative to.
   double unbalanced(const Vector& u, double lambda, Vector& residual) {
@@ -61,9 +71,10 @@ class BorderedNewton {
     return std::max({applied.norm(), link_force.norm(), stiffness_force.norm(), 1e-300});
   }
 
-  Eigen::SparseMatrix<double> bordered_tangent() const {
+  // `hold_link_held`: as static_tangent's, for a tangent that does not factor without it.
+  Eigen::SparseMatrix<double> bordered_tangent(bool hold_link_held) const {
     const Index n = system_.size();
-    const Eigen::SparseMatrix<double> structure = static_tangent(system_, tangent_);
+    const Eigen::SparseMatrix<double> structure = static_tangent(system_, tangent_, hold_link_held);
     std::vector<Eigen::Triplet<double>> entries;
     entries.reserve(static_cast<std::size_t>(structure.nonZeros() + 2 * n + 1));
     for (Index col = 0; col < structure.outerSize(); ++col)

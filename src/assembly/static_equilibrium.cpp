@@ -21,12 +21,18 @@ void hold_unheld_dofs(Eigen::SparseMatrix<double>& tangent) {
 }
 
 Eigen::SparseMatrix<double> static_tangent(const StructuralSystem& system,
-                                           const Matrix& link_tangent) {
+                                           const Matrix& link_tangent, bool hold_link_held) {
   const Eigen::SparseMatrix<double>& b = system.links().connectivity();
   Eigen::SparseMatrix<double> tangent =
       system.stiffness() +
       Eigen::SparseMatrix<double>(b.transpose() * link_tangent.sparseView() * b);
   hold_unheld_dofs(tangent);
+  if (hold_link_held && tangent.size() > 0) {
+    const double largest = tangent.diagonal().cwiseAbs().maxCoeff();
+    const Vector elements = system.stiffness().diagonal();
+    for (Index i = 0; i < tangent.rows(); ++i)
+      if (elements[i] == 0.0) tangent.coeffRef(i, i) += 1e-12 * largest;
+  }
   tangent.makeCompressed();
   return tangent;
 }
@@ -34,15 +40,20 @@ Eigen::SparseMatrix<double> static_tangent(const StructuralSystem& system,
 namespace {
 
 // Newton's correction du (with hard contacts, their new multipliers too); false: a mechanism.
-bool newton_correction(const StaticHardContacts& hard, const Eigen::SparseMatrix<double>& matrix,
-                       const Vector& residual, const Vector& delta, Vector& correction,
-                       Vector& multipliers) {
-  if (hard.any()) return hard.solve(matrix, residual, delta, correction, multipliers);
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
-  solver.compute(matrix);
-  if (solver.info() != Eigen::Success) return false;
-  correction = solver.solve(residual);
-  return correction.allFinite();
+bool newton_correction(const StaticHardContacts& hard, const StructuralSystem& system,
+                       const Matrix& link_tangent, const Vector& residual, const Vector& delta,
+                       Vector& correction, Vector& multipliers) {
+  if (hard.any())
+    return hard.solve(static_tangent(system, link_tangent), residual, delta, correction,
+                      multipliers);
+  for (const bool hold_link_held : {false, true}) {
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
+    solver.compute(static_tangent(system, link_tangent, hold_link_held));
+    if (solver.info() != Eigen::Success) continue;
+    correction = solver.solve(residual);
+    if (correction.allFinite()) return true;
+  }
+  return false;
 }
 
 SolveError mechanism(double time, const integrators::LinkSet& links) {
@@ -128,8 +139,7 @@ StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
                                            "(unbalanced force {:.3g} of {:.3g})",
                                            max_iterations, 100 * increment / increments,
                                            std::max(result.unbalanced_force, violation), scale));
-      if (!newton_correction(hard, static_tangent(system, tangent), residual, delta, correction,
-                             multipliers))
+      if (!newton_correction(hard, system, tangent, residual, delta, correction, multipliers))
         throw mechanism(time, links);
       const Vector start_multipliers = hard.multipliers();
       const double merit = result.unbalanced_force + violation;

@@ -24,9 +24,14 @@ struct StaticEquilibrium {
 void hold_unheld_dofs(Eigen::SparseMatrix<double>& tangent);
 
 // K + B^T (dF/d delta) B with its unheld DOFs held: the static tangent at the links' trial state
-// (`link_tangent` as LinkSet::set_trial gives it).
+// (`link_tangent` as LinkSet::set_trial gives it). `hold_link_held`: also every DOF that only
+// links hold (no element stiffness), by the same 1e-12 spring: for a tangent that is singular
+// without a zero diagonal, a DOF free along a direction its links leave open that is not one of
+// its axes (a curved bridge's backwall, its backfill open, free along the bridge's turned
+// tangent). The solvers ask for it only when the plain tangent does not factor, so every other
+// solution is unchanged.
 Eigen::SparseMatrix<double> static_tangent(const StructuralSystem& system,
-                                           const Matrix& link_tangent);
+                                           const Matrix& link_tangent, bool hold_link_held = false);
 
 StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
                                      double relative_tolerance = 1e-10, int max_iterations = 50);
