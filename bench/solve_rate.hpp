@@ -6,14 +6,18 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "app/model_loading.hpp"
 #include "app/model_run.hpp"
+#include "assembly/structural_system.hpp"
 
 namespace pound::bench {
 
 struct SolveRate {
   double seconds_per_step = NAN;  // NaN when a run failed
-  double links = 0.0;             // the summary's links (each one link row here: no friction)
+  double links = 0.0;             // the summary's links
+  double link_rows = 0.0;         // their rows: one each, and a shear's or friction's tangents
   double per_link() const { return seconds_per_step / links; }
+  double per_link_row() const { return seconds_per_step / link_rows; }
 };
 
 inline SolveRate solve_rate(const std::string& model_path, int repeats) {
@@ -31,6 +35,8 @@ inline SolveRate solve_rate(const std::string& model_path, int repeats) {
           static_cast<double>(nlohmann::json::parse(outcome.summary.dump())["links"].size());
   }
   rate.seconds_per_step = best;
+  rate.link_rows = static_cast<double>(
+      assembly::StructuralSystem(app::load_model(model_path).built.model).links().size());
   return rate;
 }
 

@@ -51,7 +51,8 @@ LinkSet::LinkSet(Index dofs, std::vector<Link> links) : links_(std::move(links))
   }
   connectivity_.resize(rows, dofs);
   connectivity_.setFromTriplets(triplets.begin(), triplets.end());
-  gram_ = Matrix(connectivity_ * connectivity_.transpose());
+  const Index scatter_cost = dofs + 2 * connectivity_.nonZeros();
+  if (rows * rows < scatter_cost) gram_ = Matrix(connectivity_ * connectivity_.transpose());
   gaps_ = Eigen::Map<const Vector>(gaps.data(), rows);
 }
 
@@ -65,7 +66,21 @@ void LinkSet::project(const Vector& x, Vector& projected) const {
 }
 
 double LinkSet::nodal_norm(const Vector& row_values) const {
-  nodal_scratch_.noalias() = gram_ * row_values;  // into kept storage: no allocation per call
+  // Into kept storage: no allocation per call.
+  if (gram_.size() == 0) {
+    nodal_scratch_.setZero(connectivity_.cols());
+    const double* __restrict__ values = connectivity_.valuePtr();
+    const auto* __restrict__ columns = connectivity_.innerIndexPtr();
+    const auto* __restrict__ starts = connectivity_.outerIndexPtr();
+    double* __restrict__ nodal = nodal_scratch_.data();
+    for (Index row = 0; row < connectivity_.rows(); ++row) {
+      const double value = row_values[row];
+      if (value == 0.0) continue;  // an open contact's row
+      for (auto k = starts[row]; k < starts[row + 1]; ++k) nodal[columns[k]] += values[k] * value;
+    }
+    return nodal_scratch_.norm();
+  }
+  nodal_scratch_.noalias() = gram_ * row_values;
   return std::sqrt(std::max(0.0, row_values.dot(nodal_scratch_)));
 }
 

@@ -61,7 +61,8 @@ class LinkSet {
   void penetration(const Vector& displacement, Vector& delta) const;
   // B x (their rates and accelerations).
   void project(const Vector& x, Vector& projected) const;
-  // ||B^T s||_2 without forming B^T s (B B^T is kept).
+  // ||B^T s||_2: as sqrt(s^T (B B^T) s) with B B^T kept where that is the cheaper (few link rows
+  // on many DOFs, m^2 < n + 2 nnz(B): the rod), else from B^T s scattered (the bridges).
   double nodal_norm(const Vector& row_values) const;
 
   // Sets every law's trial state; returns the row forces and the total tangent
@@ -132,7 +133,7 @@ class LinkSet {
   std::vector<Link> links_;
   std::vector<Index> first_row_;
   SparseRowMatrix connectivity_;
-  Matrix gram_;                   // B B^T
+  Matrix gram_;                   // B B^T, or empty
   mutable Vector nodal_scratch_;  // of nodal_norm
   Vector gaps_;
 };

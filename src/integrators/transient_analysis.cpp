@@ -85,14 +85,15 @@ TransientStatistics TransientAnalysis::run(State& state, const StepObserver& obs
   return statistics_;
 }
 
-void TransientAnalysis::check_limits(const State& state) {
+void TransientAnalysis::check_limits(const State& state, bool cutting) {
   throw_if_interrupted();  // Ctrl-C or SIGTERM: unwind, so no half-written result is left
   const TransientStatistics& stats = statistics_;
   if (settings_.max_steps > 0 && stats.steps >= settings_.max_steps)
     throw SolveError(state.time,
                      fmt::format("step limit of {} steps reached", settings_.max_steps));
-  // The clock is read only when a limit is set, and then every 64 steps (a few ns per step).
-  if (settings_.time_limit > 0.0 && stats.steps % 64 == 0) {
+  // The clock is read only when a limit is set, and then every 64 steps (a few ns per step) and
+  // at every attempt of a cut step.
+  if (settings_.time_limit > 0.0 && (stats.steps % 64 == 0 || cutting)) {
     const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - started_;
     if (elapsed.count() > settings_.time_limit)
       throw SolveError(state.time,
@@ -113,7 +114,7 @@ void TransientAnalysis::accept(State& state, const StepResult& result) {
 void TransientAnalysis::advance(State& state, double dt, double end, int depth,
                                 const StepObserver& observer) {
   TransientStatistics& stats = statistics_;
-  check_limits(state);
+  check_limits(state, depth > 0);
   const StepResult result = integrator_.advance(system_, state, dt, next_);
   if (result.converged) {
     accept(state, result);

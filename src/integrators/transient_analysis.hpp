@@ -62,7 +62,9 @@ class TransientAnalysis {
   void advance(State& state, double dt, double end, int depth, const StepObserver& observer);
   // The trial in next_ becomes the state, and counts.
   void accept(State& state, const StepResult& result);
-  void check_limits(const State& state);
+  // `cutting`: inside a cut step, whose attempts may each take long (the clock is then read at
+  // every attempt, not every 64 steps).
+  void check_limits(const State& state, bool cutting = false);
 
   SecondOrderSystem& system_;
   Integrator& integrator_;

@@ -20,6 +20,8 @@ constexpr double kSubstepsPerRate = 64.0;
 // Near z = 0: sub-steps of at most kGrading times the travel from z = 0, and at least
 // kSmallestSubstep times the largest.
 constexpr double kGrading = 0.125, kSmallestSubstep = 1e-3;
+// The sharpest knee: z's sub-steps are z_max / (64 n A) of travel.
+constexpr double kMostSharpness = 50.0;
 
 // (1 - e^-x) / x and log(1 + x) / x, both 1 at x = 0, accurate for small x.
 double one_minus_exp_over(double x) { return x == 0.0 ? 1.0 : -std::expm1(-x) / x; }
@@ -39,6 +41,14 @@ std::optional<BoucWen::Refusal> BoucWen::refusal(const Parameters& p) {
                    fmt::format("must be >= 1 (below 1 the tangent changes at an unbounded rate "
                                "at every z = 0), got {}",
                                p.sharpness)};
+  if (p.sharpness > kMostSharpness)
+    return Refusal{
+        "sharpness",
+        fmt::format("must be <= {:g} (the knee is then as sharp as a bilinear law's to "
+                    "within a few per cent of the yield deformation, and the integration's "
+                    "sub-steps shrink as 1/n: for a sharper knee use bilinear_spring), "
+                    "got {}",
+                    kMostSharpness, p.sharpness)};
   if (!(p.amplitude > 0.0))
     return Refusal{"amplitude", fmt::format("must be > 0, got {}", p.amplitude)};
   if (!(p.beta > 0.0))
@@ -206,7 +216,7 @@ const LawEntry& BoucWen::entry() {
            {"hardening_ratio", Range::fraction, "-",
             "a (OpenSees alpha): post-yield / initial stiffness, 0 <= a < 1 (default 0)"},
            {"sharpness", Range::positive, "-",
-            "n (OpenSees n) >= 1: sharpness of the knee, 1 smooth, 10 or more nearly bilinear"},
+            "n (OpenSees n), 1 to 50: sharpness of the knee, 1 smooth, 10 or more nearly bilinear"},
            {"beta", Range::positive, "1/L^n",
             "β (OpenSees beta) > 0: unloading is stiffer than loading by 2·β·|z|^n (the loop's "
             "width)"},

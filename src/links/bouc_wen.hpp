@@ -33,9 +33,10 @@
 // (z is bounded: with beta + gamma <= 0 loading never saturates), beta > 0 (with beta = 0 z is
 // a function of delta, an elastic curve that dissipates nothing; with beta < 0 loops run
 // anticlockwise and create energy; beta > 0 also keeps the unloading slope >= 2 A beta /
-// (beta + gamma) > 0, so |z| <= z_max always), and n >= 1 (below 1 the rate of change of the
-// tangent is unbounded at every z = 0). They are derived here from the two branch slopes; cf.
-// the bounded-input bounded-output analysis of Ikhouane, Manosa & Rodellar (2007, Syst.
+// (beta + gamma) > 0, so |z| <= z_max always), and 1 <= n <= 50 (below 1 the rate of change of
+// the tangent is unbounded at every z = 0; above 50 the knee is bilinear's for all purposes while
+// the sub-steps, z_max / (64 n A), grow too many). They are derived here from the two branch
+// slopes; cf. the bounded-input bounded-output analysis of Ikhouane, Manosa & Rodellar (2007, Syst.
 // Control Lett. 56), which also takes n >= 1. Constantinou & Adnane (1987) normalise
 // A / (beta + gamma) = 1; Ma, Zhang & Foliente (2004, J. Appl. Mech. 71) show A is redundant
 // with k, beta and gamma (it is kept for OpenSees' numbers). The model reader

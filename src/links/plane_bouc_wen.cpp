@@ -11,9 +11,12 @@ namespace {
 // As the uniaxial law (links/bouc_wen.cpp): sub-steps per 1 / lambda, their grading near z = 0.
 constexpr double kSubstepsPerRate = 64.0;
 constexpr double kGrading = 0.125, kSmallestSubstep = 1e-3;
-// A branch stops once a sub-step changes nothing (saturated to the last bit) or after this many
-// sub-steps (then 15,000 / lambda of travel: saturated far below rounding).
-constexpr int kMostSubsteps = 1'000'000;
+// Loading along a line saturates: the part of z along the move grows at A until |z| nears
+// z_max, and the rest dies at about A / z_max per unit of travel (faster for n <= 2), so past
+// 64 z_max / A of loading travel z is z_max d, d = D / |D|, to rounding (e^-60), whatever it
+// started from. A longer move takes that limit, and its sensitivity z_max / |D| (I - d d^T) (only
+// d turns z), instead of sub-steps: a move of any length costs a bounded number of them.
+constexpr double kSaturatedTravel = 64.0;
 
 using State = PlaneBoucWen::State;
 
@@ -105,7 +108,7 @@ State PlaneBoucWen::rk4_step(const State& state, double h, const Tangential& mov
 double PlaneBoucWen::advance_branch(State& state, double start, const Tangential& move,
                                     double sign) const {
   const double travel = std::hypot(move[0], move[1]);
-  for (int count = 0; start < 1.0 && count < kMostSubsteps; ++count) {
+  while (start < 1.0) {
     const double length = std::hypot(state.z[0], state.z[1]);
     const double graded = std::max(kGrading * length / amplitude_, kSmallestSubstep * max_substep_);
     const double h = std::min(std::min(max_substep_, graded) / travel, 1.0 - start);
@@ -136,6 +139,16 @@ State PlaneBoucWen::advance(const Tangential& move) const {
   }
   double start = 0.0;
   if (dot(state.z, move) < 0.0) start = advance_branch(state, 0.0, move, -1.0);
+  const double travel = std::hypot(move[0], move[1]);
+  if ((1.0 - start) * travel > kSaturatedTravel * saturation_ / amplitude_) {
+    for (std::size_t a = 0; a < kMaxTangents; ++a) {
+      state.z[a] = saturation_ * move[a] / travel;
+      for (std::size_t b = 0; b < kMaxTangents; ++b)
+        state.sensitivity[a][b] =
+            saturation_ / travel * ((a == b ? 1.0 : 0.0) - move[a] * move[b] / (travel * travel));
+    }
+    return state;
+  }
   if (start < 1.0) advance_branch(state, start, move, 1.0);
   return state;
 }

@@ -3,10 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <limits>
 #include <set>
+#include <thread>
 #include <vector>
 
 #include "core/errors.hpp"
@@ -165,6 +167,48 @@ TEST(TransientAnalysis, TimeLimitStopsARunawayRunWithTheTimeAndTheReason) {
     EXPECT_GT(error.time(), 0.0);
     EXPECT_LT(error.time(), 1.0);
     EXPECT_EQ(state.time, error.time());  // the state is the last accepted step
+  }
+}
+
+// A law that costs 1 ms a trial (a Bouc-Wen law asked for an enormous move takes that long):
+// once the mass 5 mm from the wall strikes it, each attempt at the 1 ms step fails after 30 slow
+// iterations and is cut. The clock is read every 64 accepted steps, and at every attempt of a
+// cut step: the run stops at the first cut after the limit, with the last accepted state before
+// the contact, not 64 steps later.
+class SlowCubic final : public links::LinkLaw {
+ public:
+  std::string name() const override { return "slow_cubic"; }
+  std::unique_ptr<links::LinkLaw> clone() const override { return std::make_unique<SlowCubic>(); }
+  links::LawResponse set_trial(const links::LinkKinematics& trial) override {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    return cubic_.set_trial(trial);
+  }
+  void commit() override {}
+  void revert() override {}
+  bool in_contact() const override { return false; }
+
+ private:
+  CubicWithoutTangent cubic_{1.0e14};
+};
+
+TEST(TransientAnalysis, TimeLimitStopsASlowCutStep) {
+  testing::Oscillator system = mass_against_wall(std::make_unique<SlowCubic>());
+  integrators::Newmark newmark = integrators::Newmark::average_acceleration(
+      {.relative_tolerance = 1e-10, .max_iterations = 30});
+  integrators::TransientAnalysis analysis(
+      system, newmark,
+      {.time_step = 1e-3, .end_time = 1.0, .max_step_cuts = 12, .time_limit = 0.02});
+  integrators::State state;
+  state.displacement = Vector::Constant(1, -0.0045);
+  state.velocity = Vector::Constant(1, 1.0);
+  try {
+    analysis.run(state);
+    FAIL() << "the run was not stopped";
+  } catch (const SolveError& error) {
+    std::cout << "error: " << error.what() << "\n";
+    EXPECT_NE(std::string(error.what()).find("time limit of 0.02 s"), std::string::npos)
+        << error.what();
+    EXPECT_LT(error.time(), 0.0055) << "stopped after the contact's cut step, not at it";
   }
 }
 

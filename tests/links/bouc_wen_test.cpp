@@ -221,6 +221,7 @@ TEST(BoucWen, RefusesParametersWithoutBoundedHysteresis) {
   EXPECT_EQ(refused([](auto& p) { p.beta = -p.gamma / 2; }), "beta");
   EXPECT_EQ(refused([](auto& p) { p.gamma = -p.beta; }), "gamma");
   EXPECT_EQ(refused([](auto& p) { p.sharpness = 0.5; }), "sharpness");
+  EXPECT_EQ(refused([](auto& p) { p.sharpness = 51.0; }), "sharpness");
   EXPECT_EQ(refused([](auto& p) { p.amplitude = 0.0; }), "amplitude");
   EXPECT_EQ(refused([](auto& p) { p.hardening_ratio = 1.0; }), "hardening_ratio");
   EXPECT_EQ(refused([](auto& p) { p.stiffness = 0.0; }), "stiffness");
@@ -260,16 +261,17 @@ TEST(BoucWen, BuildsFromAModelFile) {
 }
 
 // The reader's ranges (beta > 0, gamma >= 0, amplitude > 0, hardening_ratio < 1) and the law's
-// own condition (sharpness >= 1) both name the parameter's path.
+// own conditions (1 <= sharpness <= 50) both name the parameter's path.
 TEST(BoucWen, BadParametersAreInputErrorsAtTheirPath) {
   struct Bad {
     std::string parameter;
     double value;
     std::string part;
   };
-  for (const Bad& bad : {Bad{"sharpness", 0.5, "must be >= 1"}, Bad{"beta", 0.0, "must be > 0"},
-                         Bad{"gamma", -1e4, "must be >= 0"}, Bad{"amplitude", 0.0, "must be > 0"},
-                         Bad{"hardening_ratio", 1.0, "must be < 1"}}) {
+  for (const Bad& bad :
+       {Bad{"sharpness", 0.5, "must be >= 1"}, Bad{"sharpness", 2e12, "<= 50"},
+        Bad{"beta", 0.0, "must be > 0"}, Bad{"gamma", -1e4, "must be >= 0"},
+        Bad{"amplitude", 0.0, "must be > 0"}, Bad{"hardening_ratio", 1.0, "must be < 1"}}) {
     std::optional<InputError> error;
     try {
       (void)built(law_text({{bad.parameter, bad.value}}));

@@ -242,6 +242,48 @@ TEST(PlaneBoucWen, EachAxisOfAnEllipseIsItsOwnUniaxialLaw) {
   EXPECT_TRUE(CoupledShear::mismatch(numbers(one), {kStiffness, 1e5, 0.05}));
 }
 
+// A move of any length costs a bounded number of sub-steps: past 64 z_max / A of loading z is
+// z_max along the move to rounding, and its sensitivity dz/dD = z_max / |D| (I - d d^T) (only
+// the move's direction turns z). A push of 60 z_max / A, integrated, and of 1e9 z_max, taken
+// as that limit, against the closed form, from a state with z across the move, every shape.
+TEST(PlaneBoucWen, AnEnormousMoveSaturatesAtOnce) {
+  std::array<double, 2> worst_z{}, worst_tangent{};  // integrated, limit
+  for (const Shape& s : shapes()) {
+    const BoucWen::Parameters& p = s.parameters;
+    for (const std::size_t limit : {0u, 1u}) {
+      PlaneBoucWen law(numbers(p), 2);
+      law.set_trial({0.5 * kZmax, -0.3 * kZmax});  // a state with z across the move first
+      law.commit();
+      const double z_max = law.saturation(), a = p.hardening_ratio, k = p.stiffness;
+      const double length = limit ? 1e9 * kZmax : 60.0 * z_max / p.amplitude, angle = 2.5;
+      const Tangential d{std::cos(angle), std::sin(angle)};
+      // The move D = length d from the committed s.
+      const PlaneResponse response =
+          law.set_trial({0.5 * kZmax + length * d[0], -0.3 * kZmax + length * d[1]});
+      law.commit();
+      for (std::size_t i = 0; i < 2; ++i) {
+        const double z = law.hysteretic_deformation()[i];
+        worst_z[limit] = std::max(worst_z[limit], std::abs(z - z_max * d[i]) / z_max);
+        for (std::size_t j = 0; j < 2; ++j) {
+          const double across = (i == j ? 1.0 : 0.0) - d[i] * d[j];
+          const double tangent =
+              a * k * (i == j ? 1.0 : 0.0) + (1.0 - a) * k * z_max / length * across;
+          worst_tangent[limit] =
+              std::max(worst_tangent[limit], std::abs(response.tangent[i][j] - tangent) / k);
+        }
+      }
+    }
+  }
+  std::cout << fmt::format(
+      "a push of 60 z_max / A (integrated): z off z_max d by {:.1e} of z_max, tangent off the "
+      "limit's by {:.1e} of k; of 1e9 z_max (the limit): {:.1e}, {:.1e}\n",
+      worst_z[0], worst_tangent[0], worst_z[1], worst_tangent[1]);
+  EXPECT_LT(worst_z[0], 1e-12);
+  EXPECT_LT(worst_tangent[0], 1e-12);
+  EXPECT_LT(worst_z[1], 1e-15);
+  EXPECT_LT(worst_tangent[1], 1e-15);
+}
+
 TEST(PlaneBoucWen, RevertForgetsTheTrialAndCopiesKeepTheCommittedState) {
   const BoucWen::Parameters p = testing::bouc_wen_shape(1.25, 0.1, 0.9, 0.02);
   CoupledShear law = coupled(p), untouched = coupled(p);
