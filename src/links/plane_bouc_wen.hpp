@@ -26,7 +26,9 @@
 // z . D can only grow through 0 (its rate there is A |D|^2), so a move unloads (sigma = -1)
 // until z . D = 0 and loads after: RK4 on each branch, in sub-steps of at most 1 / (64 lambda)
 // of travel as the uniaxial law takes, graded down near z = 0, the change of branch found inside
-// its sub-step by bisection. The consistent tangent dF/ds = a k I + (1 - a) k dz/dD integrates
+// its sub-step by bisection; a move whose loading travel passes 64 z_max / A takes its
+// limit instead (z = z_max d, d = D / |D|, to rounding), so any move costs a bounded number of
+// sub-steps (plane_bouc_wen.cpp). The consistent tangent dF/ds = a k I + (1 - a) k dz/dD integrates
 // the sensitivity S = dz/dD along with z (dS/dt = df/dz S + df/dD; the branch change adds no
 // jump, f being continuous there). A trial equal to the committed s takes the slope of the last
 // committed move's branch. Units: k [F/L], beta and gamma [1/L^n], s and z [L] (a hinge's rad).
