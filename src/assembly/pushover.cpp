@@ -34,7 +34,8 @@ class BorderedNewton {
       Vector rhs(u.size() + 1);
       rhs << residual, offset;
       Vector correction;
-      if (!correct(rhs, correction)) return false;
+      if (!solve_static([this](bool hold) { return bordered_tangent(hold); }, rhs, correction))
+        return false;
       u += correction.head(u.size());
       lambda += correction[u.size()];
     }
@@ -42,19 +43,6 @@ class BorderedNewton {
   }
 
  private:
-  // Newton's correction of (u, lambda); false where the tangent does not factor even with the
-  // DOFs only links hold held (static_tangent).
-  bool correct(const Vector& rhs, Vector& correction) const {
-    for (const bool hold_link_held : {false, true}) {
-      Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
-      solver.compute(bordered_tangent(hold_link_held));
-      if (solver.info() != Eigen::Success) continue;
-      correction = solver.solve(rhs);
-      if (correction.allFinite()) return true;
-    }
-    return false;
-  }
-
   // f_0 + lambda p - K u - B^T F at (u, lambda), the links left at that trial; returns the
   // force scale the tolerance is relative to.
   double unbalanced(const Vector& u, double lambda, Vector& residual) {

@@ -37,6 +37,18 @@ Eigen::SparseMatrix<double> static_tangent(const StructuralSystem& system,
   return tangent;
 }
 
+bool solve_static(const std::function<Eigen::SparseMatrix<double>(bool)>& matrix, const Vector& rhs,
+                  Vector& solution) {
+  for (const bool hold_link_held : {false, true}) {
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
+    solver.compute(matrix(hold_link_held));
+    if (solver.info() != Eigen::Success) continue;
+    solution = solver.solve(rhs);
+    if (solution.allFinite()) return true;
+  }
+  return false;
+}
+
 namespace {
 
 // Newton's correction du (with hard contacts, their new multipliers too); false: a mechanism.
@@ -46,14 +58,9 @@ bool newton_correction(const StaticHardContacts& hard, const StructuralSystem& s
   if (hard.any())
     return hard.solve(static_tangent(system, link_tangent), residual, delta, correction,
                       multipliers);
-  for (const bool hold_link_held : {false, true}) {
-    Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
-    solver.compute(static_tangent(system, link_tangent, hold_link_held));
-    if (solver.info() != Eigen::Success) continue;
-    correction = solver.solve(residual);
-    if (correction.allFinite()) return true;
-  }
-  return false;
+  return solve_static(
+      [&](bool hold_link_held) { return static_tangent(system, link_tangent, hold_link_held); },
+      residual, correction);
 }
 
 SolveError mechanism(double time, const integrators::LinkSet& links) {

@@ -8,6 +8,8 @@
 // friction are constraints with their forces as multipliers (a primal-dual active set inside the
 // same Newton iteration: static_equilibrium.cpp). Throws SolveError when Newton does not converge
 // or the structure is a mechanism under the loads.
+#include <functional>
+
 #include "assembly/structural_system.hpp"
 
 namespace pound::assembly {
@@ -32,6 +34,12 @@ void hold_unheld_dofs(Eigen::SparseMatrix<double>& tangent);
 // solution is unchanged.
 Eigen::SparseMatrix<double> static_tangent(const StructuralSystem& system,
                                            const Matrix& link_tangent, bool hold_link_held = false);
+
+// Solves matrix(false) x = rhs, or, where that does not factor or gives a non-finite x,
+// matrix(true) x = rhs (the tangent with static_tangent's `hold_link_held`); false when neither
+// does (a mechanism).
+bool solve_static(const std::function<Eigen::SparseMatrix<double>(bool)>& matrix, const Vector& rhs,
+                  Vector& solution);
 
 StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
                                      double relative_tolerance = 1e-10, int max_iterations = 50);

@@ -13,13 +13,6 @@ namespace pound::links {
 
 namespace {
 
-// RK4 sub-steps per 1 / lambda: z is then within ~1e-10 z_max of the ODE's solution and the
-// tangent (the ODE's slope) within ~1e-8 of the derivative of the computed force
-// (tests/links/bouc_wen_test.cpp measures both).
-constexpr double kSubstepsPerRate = 64.0;
-// Near z = 0: sub-steps of at most kGrading times the travel from z = 0, and at least
-// kSmallestSubstep times the largest.
-constexpr double kGrading = 0.125, kSmallestSubstep = 1e-3;
 // The sharpest knee: z's sub-steps are z_max / (64 n A) of travel.
 constexpr double kMostSharpness = 50.0;
 
@@ -83,13 +76,10 @@ BoucWen::BoucWen(const Parameters& p)
       beta_(p.beta),
       gamma_(p.gamma),
       amplitude_(p.amplitude),
-      saturation_(std::pow(p.amplitude / (p.beta + p.gamma), 1.0 / p.sharpness)) {
+      saturation_(std::pow(p.amplitude / (p.beta + p.gamma), 1.0 / p.sharpness)),
+      substeps_(saturation_, p.sharpness, p.amplitude, p.beta, p.gamma) {
   if (const std::optional<Refusal> refused = refusal(p))
     throw std::invalid_argument("bouc_wen: " + refused->parameter + " " + refused->reason);
-  // lambda = max |d(rate)/dw| on 0 <= w <= z_max, reached at z_max: n A / z_max on loading,
-  // n A |beta - gamma| / ((beta + gamma) z_max) on unloading.
-  const double widest = std::max(1.0, std::abs(beta_ - gamma_) / (beta_ + gamma_));
-  max_substep_ = saturation_ / (kSubstepsPerRate * sharpness_ * amplitude_ * widest);
 }
 
 double BoucWen::rate(double w, Branch branch) const {
@@ -139,8 +129,7 @@ double BoucWen::rk4_step(double w, double h, Branch branch) const {
 // to the travel from z = 0 (~ w / A) and RK4 keeps its accuracy on both sides of a crossing.
 double BoucWen::advance_rk4(double w, double& travel, Branch branch) const {
   for (double start = 0.0; start < travel;) {
-    const double graded = std::max(kGrading * w / amplitude_, kSmallestSubstep * max_substep_);
-    const double h = std::min({max_substep_, graded, travel - start});
+    const double h = std::min(substeps_.at(w), travel - start);
     const double next = rk4_step(w, h, branch);
     if (branch == Branch::unloading && next <= 0.0) {
       // z reaches 0 inside this sub-step: bisect its length (the step is smooth in it).

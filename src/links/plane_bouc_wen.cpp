@@ -8,9 +8,6 @@ namespace pound::links {
 
 namespace {
 
-// As the uniaxial law (links/bouc_wen.cpp): sub-steps per 1 / lambda, their grading near z = 0.
-constexpr double kSubstepsPerRate = 64.0;
-constexpr double kGrading = 0.125, kSmallestSubstep = 1e-3;
 // Loading along a line saturates: the part of z along the move grows at A until |z| nears
 // z_max, and the rest dies at about A / z_max per unit of travel (faster for n <= 2), so past
 // 64 z_max / A of loading travel z is z_max d, d = D / |D|, to rounding (e^-60), whatever it
@@ -39,17 +36,17 @@ PlaneBoucWen::PlaneBoucWen(const ShearNumbers& numbers, int tangents)
       hardening_ratio_(numbers.hardening_ratio),
       amplitude_(numbers.smooth->amplitude),
       sharpness_(numbers.smooth->sharpness),
+      saturation_(
+          std::pow(amplitude_ / (numbers.smooth->beta + numbers.smooth->gamma), 1.0 / sharpness_)),
+      substeps_(saturation_, sharpness_, amplitude_, numbers.smooth->beta, numbers.smooth->gamma),
       tangents_(tangents) {
   const SmoothShape& shape = *numbers.smooth;
   const double sum = shape.beta + shape.gamma;
-  saturation_ = std::pow(amplitude_ / sum, 1.0 / sharpness_);
   // |z|^(n-2) (beta sigma + gamma) = (|z| / z_max)^(n-2) times these: no power of a small
   // deformation underflows.
   const double scale = amplitude_ / (sum * saturation_ * saturation_);
   loading_ = scale * sum;
   unloading_ = scale * (shape.gamma - shape.beta);
-  const double widest = std::max(1.0, std::abs(shape.beta - shape.gamma) / sum);
-  max_substep_ = saturation_ / (kSubstepsPerRate * sharpness_ * amplitude_ * widest);
 }
 
 std::unique_ptr<PlaneHysteresis> PlaneBoucWen::clone() const {
@@ -110,8 +107,7 @@ double PlaneBoucWen::advance_branch(State& state, double start, const Tangential
   const double travel = std::hypot(move[0], move[1]);
   while (start < 1.0) {
     const double length = std::hypot(state.z[0], state.z[1]);
-    const double graded = std::max(kGrading * length / amplitude_, kSmallestSubstep * max_substep_);
-    const double h = std::min(std::min(max_substep_, graded) / travel, 1.0 - start);
+    const double h = std::min(substeps_.at(length) / travel, 1.0 - start);
     const State next = rk4_step(state, h, move, sign);
     if (sign < 0.0 && dot(next.z, move) >= 0.0) {
       // z . D reaches 0 inside this sub-step: bisect its length.

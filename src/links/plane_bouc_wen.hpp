@@ -32,6 +32,7 @@
 // the sensitivity S = dz/dD along with z (dS/dt = df/dz S + df/dD; the branch change adds no
 // jump, f being continuous there). A trial equal to the committed s takes the slope of the last
 // committed move's branch. Units: k [F/L], beta and gamma [1/L^n], s and z [L] (a hinge's rad).
+#include "links/bouc_wen.hpp"
 #include "links/plane_hysteresis.hpp"
 
 namespace pound::links {
@@ -70,7 +71,7 @@ class PlaneBoucWen final : public PlaneHysteresis {
   double sharpness_;
   double loading_, unloading_;  // A (beta sigma + gamma) / ((beta + gamma) z_max^2), sigma = +-1
   double saturation_;           // z_max
-  double max_substep_;          // of travel [L]
+  BoucWenSubsteps substeps_;    // as the uniaxial law's
   int tangents_;
   Tangential committed_s_{}, committed_z_{}, committed_direction_{};
   Tangential trial_s_{}, trial_z_{};
