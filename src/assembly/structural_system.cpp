@@ -13,6 +13,7 @@
 #include "assembly/not_positive_definite.hpp"
 #include "assembly/twisted_tridiagonal.hpp"
 #include "core/errors.hpp"
+#include "core/packets.hpp"
 
 namespace pound::assembly {
 namespace {
@@ -30,6 +31,32 @@ class FactorSolver final : public integrators::LinearSolver {
  private:
   Factor factor_;
 };
+
+// Rows i, ..., i + 3 of a band product (Band = 0: the bandwidth b at run time) into out[0, 4),
+// their sums in one packet, each row's terms from 0 in column order (the bits of Eigen's and
+// the former diagonal-by-diagonal product). `bands` holds diagonal b + k at bands + (b + k) rows;
+// `in` is x with b zeros before and after it.
+template <Index Band>
+void band_rows(const double* __restrict__ bands, Index rows, Index b, const double* in, Index i,
+               double* __restrict__ out) {
+  const Index width = Band > 0 ? Band : b;
+  Packet4 sums{};
+  for (Index k = -width; k <= width; ++k)
+    sums += load_packet(bands + (width + k) * rows + i) * load_packet(in + i + k);
+  store_packet(sums, out);
+}
+
+template <Index Band>
+void multiply_band_rows(const double* __restrict__ bands, Index rows, Index b, const double* in,
+                        double* __restrict__ out, Index first, Index last) {
+  constexpr Index kRows = 4;
+  Index i = first;
+  for (; i + kRows <= last; i += kRows) band_rows<Band>(bands, rows, b, in, i, out + i);
+  if (i == last) return;
+  std::array<double, kRows> tail{};  // the rows past `last` read stale input: dropped
+  band_rows<Band>(bands, rows, b, in, i, tail.data());
+  std::copy(tail.begin(), tail.begin() + (last - i), out + i);
+}
 
 // A band made narrow by renumbering: LDL^T of P A P^T, the right-hand side and solution permuted
 // on the way in and out.
@@ -571,7 +598,8 @@ void StructuralSystem::store_stiffness_for_products() {
   if (const Index b = BandedLdlt::bandwidth_of(stiffness_);
       n > 0 && (2 * b + 1) * n <= 4 * stiffness_.nonZeros()) {
     stiffness_bandwidth_ = b;
-    stiffness_band_ = Matrix::Zero(n, 2 * b + 1);
+    // But for a tridiagonal band, rows of zeros up to a multiple of four (multiply_band).
+    stiffness_band_ = Matrix::Zero(b != 1 ? (n + 3) / 4 * 4 : n, 2 * b + 1);
     for (Index col = 0; col < stiffness_.outerSize(); ++col)
       for (Eigen::SparseMatrix<double>::InnerIterator it(stiffness_, col); it; ++it)
         stiffness_band_(it.row(), b + col - it.row()) = it.value();
@@ -778,11 +806,29 @@ void StructuralSystem::multiply_band(const Vector& x, Vector& y, Index first, In
     if (last == n) out[n - 1] = lower[n - 1] * in[n - 2] + diagonal[n - 1] * in[n - 1];
     return;
   }
-  std::fill(out + first, out + last, 0.0);
-  for (Index k = -b; k <= b; ++k) {
-    const double* __restrict__ band = stiffness_band_.col(b + k).data();
-    const Index end = std::min(last, n - k);
-    for (Index i = std::max(first, -k); i < end; ++i) out[i] += band[i] * in[i + k];
+  // x with b zeros before and after it (and past the rows padding the band to a multiple of
+  // four): the terms past the matrix's ends are 0 x 0, which leave a sum unchanged (sums start
+  // at +0, so are never -0). Only the entries these rows read are copied (an explicit step makes
+  // x block by block).
+  const Index rows = stiffness_band_.rows();
+  if (padded_input_.size() != rows + 2 * b) padded_input_.setZero(rows + 2 * b);
+  const Index from = std::max<Index>(0, first - b), to = std::min(n, last + b);
+  std::copy(in + from, in + to, padded_input_.data() + b + from);
+  const double* padded = padded_input_.data() + b;
+  const double* __restrict__ bands = stiffness_band_.data();
+  switch (b) {
+    case 2:
+      return multiply_band_rows<2>(bands, rows, b, padded, out, first, last);
+    case 3:
+      return multiply_band_rows<3>(bands, rows, b, padded, out, first, last);
+    case 4:
+      return multiply_band_rows<4>(bands, rows, b, padded, out, first, last);
+    case 5:
+      return multiply_band_rows<5>(bands, rows, b, padded, out, first, last);
+    case 6:
+      return multiply_band_rows<6>(bands, rows, b, padded, out, first, last);
+    default:
+      return multiply_band_rows<0>(bands, rows, b, padded, out, first, last);
   }
 }
 
@@ -810,6 +856,16 @@ double StructuralSystem::support_acceleration(Index node, int direction, double 
 }
 
 void StructuralSystem::external_force(double time, Vector& force) const {
+  if (time == last_external_time_ && last_external_force_.size() == size()) {
+    force = last_external_force_;
+    return;
+  }
+  compute_external_force(time, force);
+  last_external_force_ = force;
+  last_external_time_ = time;
+}
+
+void StructuralSystem::compute_external_force(double time, Vector& force) const {
   force = loads_;
   for (const Excitation& excitation : excitations_)
     force -= excitation.motion.at(time) * excitation.inertia;  // -M iota a_g(t)

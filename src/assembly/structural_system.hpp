@@ -4,6 +4,7 @@
 // C = a0 M + a1 K only when the model has damping, loads and uniform ground excitation
 // -M iota a_g(t), and the links as a LinkSet. Only the free DOFs of the scene are numbered.
 #include <Eigen/SparseCore>
+#include <limits>
 
 #include "integrators/second_order_system.hpp"
 #include "model/model.hpp"
@@ -101,6 +102,12 @@ class StructuralSystem final : public integrators::SecondOrderSystem {
   Index stiffness_bandwidth_ = -1;    // -1: K is kept by rows
   bool stiffness_symmetric_ = false;  // tridiagonal with K(i, i - 1) = K(i - 1, i)
   void multiply_band(const Vector& x, Vector& y, Index first, Index last) const;  // y[first, last)
+  mutable Vector padded_input_;  // of multiply_band
+  // The last external force computed and its time: a step asks for f(t_{n+1}) twice (the
+  // integrator and the energy balance).
+  void compute_external_force(double time, Vector& force) const;
+  mutable Vector last_external_force_;
+  mutable double last_external_time_ = std::numeric_limits<double>::quiet_NaN();
   Eigen::SparseMatrix<double, Eigen::RowMajor> stiffness_rows_;
   // Keeps stiffness_ for K x: by diagonals or by rows, as above.
   void store_stiffness_for_products();

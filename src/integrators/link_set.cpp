@@ -61,6 +61,31 @@ void LinkSet::penetration(const Vector& displacement, Vector& delta) const {
   delta -= gaps_;
 }
 
+void LinkSet::penetrations_and_rate(const Vector& u_1, const Vector& u_2, const Vector& v,
+                                    Vector& delta_1, Vector& delta_2, Vector& rate) const {
+  const Index rows = connectivity_.rows();
+  delta_1.resize(rows);
+  delta_2.resize(rows);
+  rate.resize(rows);
+  const double* __restrict__ values = connectivity_.valuePtr();
+  const auto* __restrict__ columns = connectivity_.innerIndexPtr();
+  const auto* __restrict__ starts = connectivity_.outerIndexPtr();
+  for (Index row = 0; row < rows; ++row) {
+    // Each sum as Eigen's sparse row product forms it (0 + the terms in order), so -0 becomes +0
+    // as there.
+    double sum_1 = 0.0, sum_2 = 0.0, sum_v = 0.0;
+    for (auto k = starts[row]; k < starts[row + 1]; ++k) {
+      const double value = values[k];
+      sum_1 += value * u_1[columns[k]];
+      sum_2 += value * u_2[columns[k]];
+      sum_v += value * v[columns[k]];
+    }
+    delta_1[row] = (0.0 + sum_1) - gaps_[row];
+    delta_2[row] = (0.0 + sum_2) - gaps_[row];
+    rate[row] = 0.0 + sum_v;
+  }
+}
+
 void LinkSet::project(const Vector& x, Vector& projected) const {
   projected.noalias() = connectivity_ * x;
 }

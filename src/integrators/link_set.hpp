@@ -59,6 +59,10 @@ class LinkSet {
 
   // Row deformations B u - gap (penetrations and slides).
   void penetration(const Vector& displacement, Vector& delta) const;
+  // penetration(u_1, delta_1), penetration(u_2, delta_2) and project(v, rate) in one pass over
+  // B's rows, to the same bits: a time step's predicted link state.
+  void penetrations_and_rate(const Vector& u_1, const Vector& u_2, const Vector& v, Vector& delta_1,
+                             Vector& delta_2, Vector& rate) const;
   // B x (their rates and accelerations).
   void project(const Vector& x, Vector& projected) const;
   // ||B^T s||_2: as sqrt(s^T (B B^T) s) with B B^T kept where that is the cheaper (few link rows

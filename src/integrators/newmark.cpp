@@ -402,9 +402,8 @@ double Newmark::add_loads_and_damping(SecondOrderSystem& system, double time, do
 
 void Newmark::predict_links(SecondOrderSystem& system, const State& to) {
   const LinkSet& links = system.links();
-  links.penetration(to.displacement, delta_linear_);
-  links.penetration(predicted_displacement_, delta_predicted_);
-  links.project(predicted_velocity_, rate_predicted_);
+  links.penetrations_and_rate(to.displacement, predicted_displacement_, predicted_velocity_,
+                              delta_linear_, delta_predicted_, rate_predicted_);
   // Support motion moves the links' deformation by s(t); B a = c_m (delta - delta~) stays.
   links_move_ = system.has_link_motion();
   if (links_move_) {
@@ -425,9 +424,15 @@ bool Newmark::solve_link_forces(SecondOrderSystem& system, const Factorization& 
       return false;
     }
     result.unbalanced_force = links.nodal_norm(residual_);
-    const double reference = std::max(external_norm, law_force_norm_);
-    if (result.unbalanced_force <= test_.relative_tolerance * reference + test_.absolute_tolerance)
-      return true;
+    const auto allowed = [&](double reference) {
+      return test_.relative_tolerance * reference + test_.absolute_tolerance;
+    };
+    // The reference is the larger of ||f|| and ||B^T F_law||: the second is needed only when the
+    // first does not already pass the step.
+    double reference = external_norm;
+    if (result.unbalanced_force <= allowed(reference)) return true;
+    reference = std::max(external_norm, links.nodal_norm(law_force_));
+    if (result.unbalanced_force <= allowed(reference)) return true;
     if (iteration == test_.max_iterations) {
       result.failure = fmt::format(
           "Newton did not converge in {} iterations (unbalanced force {:.3e}, reference {:.3e})",
@@ -588,12 +593,14 @@ void Newmark::evaluate_links(LinkSet& links, const Factorization& f, double c_m,
   if (links_move_) acceleration_ += link_offset_acceleration_;
   links.set_trial(delta_, rate_, acceleration_, c_c, c_m, law_force_, tangent_);
   if (has_hard_contacts_) evaluate_hard_contacts(f);
-  law_force_norm_ = links.nodal_norm(law_force_);
+  // law_force_ stays the whole law forces (the convergence test's reference); a folded row's
+  // residual is against its law force less K_r (B u)_r.
+  residual_ = assumed_force_ - law_force_;
   for (const Index r : f.folded_rows) {
-    law_force_[r] -= f.folded_stiffness[r] * folded_projection(r);
+    const double folded_force = law_force_[r] - f.folded_stiffness[r] * folded_projection(r);
+    residual_[r] = assumed_force_[r] - folded_force;
     tangent_(r, r) -= f.folded_stiffness[r];
   }
-  residual_ = assumed_force_ - law_force_;
 }
 
 double Newmark::folded_projection(Index row, double delta, double offset) const {

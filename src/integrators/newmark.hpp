@@ -183,7 +183,6 @@ class Newmark final : public Integrator {
   Vector history_;
   Vector delta_linear_, delta_predicted_, rate_predicted_;
   Vector delta_, rate_, acceleration_, assumed_force_, law_force_, residual_, correction_;
-  double law_force_norm_ = 0.0;  // ||B^T F_law|| of the whole law forces, folded rows' too
   // dF/d(delta), dF/d(delta_dot), dF/d(delta_ddot) of each row at the initial state, on the rows
   // that may be folded (a force law's, not a contact's nor a friction link's), zero elsewhere.
   Vector reference_stiffness_, reference_damping_, reference_mass_;

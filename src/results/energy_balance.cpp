@@ -54,8 +54,10 @@ void EnergyBalance::set_step_forces(const std::vector<char>& by_row) {
 
 void EnergyBalance::record(const integrators::State& state) {
   const Index n = system_.size();
-  external_ = Vector::Zero(n);
-  if (system_.has_external_force()) system_.external_force(state.time, external_);
+  if (system_.has_external_force())
+    system_.external_force(state.time, external_);
+  else
+    external_.setZero(n);
   system_.multiply_mass(state.velocity, work_);
   terms_.kinetic = 0.5 * state.velocity.dot(work_);
   system_.multiply_stiffness(state.displacement, stiffness_force_);

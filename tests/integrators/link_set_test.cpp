@@ -76,6 +76,31 @@ TEST(LinkSet, PenetrationsAreBuMinusTheGapsAndRatesAreBx) {
   EXPECT_EQ(rate, entries({3.0, 0.5, 4.0}));
 }
 
+// A step's three products in one pass are the three separate ones to the bit, signed zeros
+// included (Eigen's sparse product sums from +0).
+TEST(LinkSet, PenetrationsAndRateInOnePassAreTheSeparatePassesToTheBit) {
+  const LinkSet links = two_links();
+  const std::array<Vector, 4> vectors = {
+      entries({0.3, 0.15, 0.02, 0.01}), entries({1.0 / 3.0, -2.0 / 7.0, 1e-17, 5.5}),
+      entries({-0.0, 0.0, -0.0, -0.0}), entries({0.1, 0.1, 0.0, -0.05})};
+  for (const Vector& u_1 : vectors)
+    for (const Vector& u_2 : vectors)
+      for (const Vector& v : vectors) {
+        Vector delta_1, delta_2, rate, expected_1, expected_2, expected_rate;
+        links.penetrations_and_rate(u_1, u_2, v, delta_1, delta_2, rate);
+        links.penetration(u_1, expected_1);
+        links.penetration(u_2, expected_2);
+        links.project(v, expected_rate);
+        for (Index r = 0; r < links.size(); ++r) {
+          EXPECT_EQ(delta_1[r], expected_1[r]);
+          EXPECT_EQ(delta_2[r], expected_2[r]);
+          EXPECT_EQ(rate[r], expected_rate[r]);
+          EXPECT_EQ(std::signbit(rate[r]), std::signbit(expected_rate[r]));
+          EXPECT_EQ(std::signbit(delta_1[r]), std::signbit(expected_1[r]));
+        }
+      }
+}
+
 TEST(LinkSet, ForcesEnterTheEquationsAsBTransposeF) {
   const LinkSet links = two_links();
   const Vector nodal = links.connectivity().transpose() * entries({7.0, 4.0, 2.0});
