@@ -1,5 +1,9 @@
 #include "assembly/beam.hpp"
 
+#include <array>
+
+#include "core/packets.hpp"
+
 namespace pound::assembly {
 namespace {
 
@@ -88,8 +92,16 @@ model::ElementMass Beam::mass() const {
 std::span<const model::EndForce> Beam::end_force_names() const { return kEndForces; }
 
 Vector Beam::end_forces(const Vector& u) const {
-  const Eigen::Matrix<double, 6, 1> local = local_stiffness_ * (rotation_ * u);
-  return local;
+  Vector forces(6);
+  write_end_forces(u, forces.data());
+  return forces;
+}
+
+void Beam::write_end_forces(const Vector& u, double* forces) const {
+  // K' (T u), each row of each product summed from 0 in column order (core/packets.hpp).
+  std::array<double, 6> local_displacements;
+  multiply_by_columns<6, 6>(rotation_.data(), u.data(), local_displacements.data());
+  multiply_by_columns<6, 6>(local_stiffness_.data(), local_displacements.data(), forces);
 }
 
 // Local geometric stiffness on (v'_i, theta_i, v'_j, theta_j) (Przemieniecki 1968, chapter 15),

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/packets.hpp"
+
 namespace pound::assembly {
 namespace {
 
@@ -158,8 +160,16 @@ model::ElementMass Beam3d::mass() const {
 std::span<const model::EndForce> Beam3d::end_force_names() const { return kEndForces; }
 
 Vector Beam3d::end_forces(const Vector& u) const {
-  const Eigen::Matrix<double, 12, 1> local = local_stiffness_ * (transformation_ * u);
-  return local;
+  Vector forces(12);
+  write_end_forces(u, forces.data());
+  return forces;
+}
+
+void Beam3d::write_end_forces(const Vector& u, double* forces) const {
+  // K' (T u), each row of each product summed from 0 in column order (core/packets.hpp).
+  std::array<double, 12> local_displacements;
+  multiply_by_columns<12, 12>(transformation_.data(), u.data(), local_displacements.data());
+  multiply_by_columns<12, 12>(local_stiffness_.data(), local_displacements.data(), forces);
 }
 
 Matrix Beam3d::geometric_stiffness(const Vector& u, model::GeometricStiffness kind) const {

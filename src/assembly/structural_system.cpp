@@ -42,7 +42,7 @@ void band_rows(const double* __restrict__ bands, Index rows, Index b, const doub
   const Index width = Band > 0 ? Band : b;
   Packet4 sums{};
   for (Index k = -width; k <= width; ++k)
-    sums += load_packet(bands + (width + k) * rows + i) * load_packet(in + i + k);
+    sums = multiply_add(load_packet(bands + (width + k) * rows + i), load_packet(in + i + k), sums);
   store_packet(sums, out);
 }
 

@@ -8,6 +8,7 @@
 // model/direction.hpp: in a plane 0 x, 1 y, 2 rotation theta_z), the same at every node; its blocks
 // are over its DOFs node by node, each node's directions in that order, in global axes. A scene
 // carries at each node as many DOFs as its elements ask for (Model::dofs_per_node).
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <span>
@@ -88,6 +89,12 @@ class Element {
   // dofs(): in the element's local axes, units of force (moments force x length).
   virtual std::span<const EndForce> end_force_names() const = 0;
   virtual Vector end_forces(const Vector& u) const = 0;
+  // The same into forces[0, end_force_names().size()), without allocating where the element can
+  // (the recorders ask at every step).
+  virtual void write_end_forces(const Vector& u, double* forces) const {
+    const Vector values = end_forces(u);
+    std::copy(values.begin(), values.end(), forces);
+  }
 
   // Its geometric stiffness over dofs() in global axes under the axial force it carries at
   // displacements u (over dofs()); empty for an element without one (a quad: plane continua

@@ -91,8 +91,8 @@ void ElementQuantities::take(const integrators::State& state, double* values) co
     Vector& displacement = displacements_[k];
     for (std::size_t d = 0; d < readings.size(); ++d)
       displacement[static_cast<Index>(d)] = model::value_of(readings[d], state.displacement);
-    const Vector forces = elements_[k]->end_forces(displacement);
-    for (Index f = 0; f < forces.size(); ++f) *values++ = forces[f];
+    elements_[k]->write_end_forces(displacement, values);
+    values += elements_[k]->end_force_names().size();
   }
 }
 

@@ -145,8 +145,6 @@ class EnvelopeRecorder final : public Recorder {
   double held_values(double, double) const override { return 0.0; }
   // The larger of |max| and |min| of quantity q so far.
   double abs_max(std::size_t q) const { return std::max(std::abs(max_[q]), std::abs(min_[q])); }
-  // The quantities of the last step recorded.
-  const std::vector<double>& last_row() const { return row_; }
 
  private:
   std::string file_;

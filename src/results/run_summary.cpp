@@ -359,9 +359,10 @@ RunObservers::RunObservers(const builder::BuiltModel& built,
     base_rows_.push_back(rows);
     first += names.size();
   }
-  if (!elements.empty())
-    base_forces_ =
-        std::make_unique<EnvelopeRecorder>("", element_quantities(built, system.dofs(), elements));
+  if (!elements.empty()) {
+    base_forces_ = element_quantities(built, system.dofs(), elements);
+    base_row_.resize(base_forces_->names().size());
+  }
 }
 
 void RunObservers::record(const integrators::State& state) {
@@ -369,10 +370,7 @@ void RunObservers::record(const integrators::State& state) {
   links_.record(state);
   energy_.record(state);
   drifts_.record(state);
-  if (base_forces_) {
-    base_forces_->record(state);
-    record_base_forces();
-  }
+  if (base_forces_) record_base_forces(state);
   joints_.record(state);
   for (Observer* observer : extra_) observer->record(state);
   // Energy the integration made up: an unstable step or an unresolved stiff contact, which keeps
@@ -406,8 +404,9 @@ double resultant(const std::vector<double>& row, const std::vector<std::size_t>&
 }
 }  // namespace
 
-void RunObservers::record_base_forces() {
-  const std::vector<double>& row = base_forces_->last_row();
+void RunObservers::record_base_forces(const integrators::State& state) {
+  base_forces_->take(state, base_row_.data());
+  const std::vector<double>& row = base_row_;
   for (std::optional<BaseRows>& rows : base_rows_) {
     if (!rows) continue;
     if (!rows->shear.empty())

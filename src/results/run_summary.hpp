@@ -52,21 +52,22 @@ class RunObservers {
   // which then feed energy in through them.
   bool passive_links_;
   DriftMonitors drifts_;
-  // The envelope of the drift monitors' base elements' end forces, and where monitor k's are in
-  // it (none without a base element).
+  // The drift monitors' base elements' end forces at each step, and where monitor k's are in
+  // them (none without a base element): only their peak shear and moment are kept.
   // Its base element's shear and moment at end i, each one component (V_i, M_i of a plane beam)
   // or two (Vy_i, Vz_i and My_i, Mz_i of a 3-D one: along the drift's direction, and about the
   // horizontal axis across it); a truss has neither.
   struct BaseRows {
-    std::vector<std::size_t> shear, moment;  // in the envelope's row
+    std::vector<std::size_t> shear, moment;  // in base_row_
     // A 3-D beam's: each component's share of the shear along the drift and of the moment about
     // the horizontal axis across it (its local axis' global component); empty: the resultant.
     std::vector<double> shear_weights, moment_weights;
     double peak_shear = 0.0, peak_moment = 0.0;
   };
   std::vector<std::optional<BaseRows>> base_rows_;
-  std::unique_ptr<EnvelopeRecorder> base_forces_;
-  void record_base_forces();
+  std::unique_ptr<Quantities> base_forces_;
+  std::vector<double> base_row_;
+  void record_base_forces(const integrators::State& state);
   JointMonitors joints_;
   std::vector<Observer*> extra_;
 };
