@@ -547,6 +547,7 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
     // Elements damp with their own coefficients: C is assembled, not a0 M + a1 K.
     damping_matrix_ = with_diagonal(elements.damping, elements.damping_diagonal);
     damping_matrix_.prune(0.0);
+    damping_rows_ = damping_matrix_;
   }
 
   loads_ = nodal_loads(model, dofs_);
@@ -736,7 +737,7 @@ std::optional<integrators::SecondOrderSystem::Rayleigh> StructuralSystem::raylei
 
 void StructuralSystem::multiply_damping(const Vector& x, Vector& y) const {
   if (damping_matrix_.size() > 0) {
-    y.noalias() = damping_matrix_ * x;
+    y.noalias() = damping_rows_ * x;
     return;
   }
   // C = a0 M + a1 K

@@ -70,7 +70,10 @@ class StructuralSystem final : public integrators::SecondOrderSystem {
   Eigen::SparseMatrix<double> mass_matrix_;  // all of M, only with consistent masses
   model::RayleighDamping damping_;
   Eigen::SparseMatrix<double> damping_matrix_;  // assembled C, only when elements damp on their own
-  Vector loads_;                                // constant nodal forces on the free DOFs
+  // The same by rows for C x: each entry of y one sum in registers, the terms in the same order
+  // as by columns (twice as fast as the columns' scatter on the 3-D buildings).
+  Eigen::SparseMatrix<double, Eigen::RowMajor> damping_rows_;
+  Vector loads_;  // constant nodal forces on the free DOFs
   bool has_loads_ = false;
   struct Excitation {
     model::GroundMotion motion;
