@@ -33,9 +33,9 @@ class FactorSolver final : public integrators::LinearSolver {
 };
 
 // Rows i, ..., i + 3 of a band product (Band = 0: the bandwidth b at run time) into out[0, 4),
-// their sums in one packet, each row's terms from 0 in column order (the bits of Eigen's and
-// the former diagonal-by-diagonal product). `bands` holds diagonal b + k at bands + (b + k) rows;
-// `in` is x with b zeros before and after it.
+// their sums in one packet, each row's terms from 0 in column order (the bits of the former
+// diagonal-by-diagonal product). `bands` holds diagonal b + k at bands + (b + k) rows; `in` is x
+// with b zeros before and after it.
 template <Index Band>
 void band_rows(const double* __restrict__ bands, Index rows, Index b, const double* in, Index i,
                double* __restrict__ out) {
@@ -599,8 +599,9 @@ void StructuralSystem::store_stiffness_for_products() {
   if (const Index b = BandedLdlt::bandwidth_of(stiffness_);
       n > 0 && (2 * b + 1) * n <= 4 * stiffness_.nonZeros()) {
     stiffness_bandwidth_ = b;
-    // But for a tridiagonal band, rows of zeros up to a multiple of four (multiply_band).
-    stiffness_band_ = Matrix::Zero(b != 1 ? (n + 3) / 4 * 4 : n, 2 * b + 1);
+    // But for a tridiagonal band, three rows of zeros past the last: multiply_band's last block
+    // of four rows may start at any row.
+    stiffness_band_ = Matrix::Zero(b != 1 ? n + 3 : n, 2 * b + 1);
     for (Index col = 0; col < stiffness_.outerSize(); ++col)
       for (Eigen::SparseMatrix<double>::InnerIterator it(stiffness_, col); it; ++it)
         stiffness_band_(it.row(), b + col - it.row()) = it.value();
@@ -807,10 +808,9 @@ void StructuralSystem::multiply_band(const Vector& x, Vector& y, Index first, In
     if (last == n) out[n - 1] = lower[n - 1] * in[n - 2] + diagonal[n - 1] * in[n - 1];
     return;
   }
-  // x with b zeros before and after it (and past the rows padding the band to a multiple of
-  // four): the terms past the matrix's ends are 0 x 0, which leave a sum unchanged (sums start
-  // at +0, so are never -0). Only the entries these rows read are copied (an explicit step makes
-  // x block by block).
+  // x with b zeros before and after it (and past the band's three rows of zeros): the terms past
+  // the matrix's ends are 0 x 0, which leave a sum unchanged (sums start at +0, so are never -0).
+  // Only the entries these rows read are copied (an explicit step makes x block by block).
   const Index rows = stiffness_band_.rows();
   if (padded_input_.size() != rows + 2 * b) padded_input_.setZero(rows + 2 * b);
   const Index from = std::max<Index>(0, first - b), to = std::min(n, last + b);

@@ -11,6 +11,8 @@
 
 namespace pound::assembly {
 
+// One per run: its products and external force keep scratch space and the last force computed,
+// so one system is not used from two threads at once.
 class StructuralSystem final : public integrators::SecondOrderSystem {
  public:
   // Throws InputError when a free DOF has no mass (the equations of motion would be singular).

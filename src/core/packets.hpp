@@ -2,8 +2,8 @@
 // Four doubles in one vector register (GCC's and Clang's vector extension), for the few small
 // dense loops of a time step that sum across an inner index: GCC's vectoriser turns the scalar
 // form of such a loop into products and separate adds. Multiply-adds are explicit, fused where
-// the machine has FMA (as Eigen's packets are), so the bits do not depend on the optimisation
-// level or contraction setting of the file that includes this.
+// the machine has FMA (x86-64-v3, as Eigen's packets are there), so the bits do not depend on
+// the optimisation level or contraction setting of the file that includes this.
 #include <cmath>
 #include <cstring>
 #ifdef __FMA__
