@@ -406,15 +406,14 @@ double resultant(const std::vector<double>& row, const std::vector<std::size_t>&
 
 void RunObservers::record_base_forces(const integrators::State& state) {
   base_forces_->take(state, base_row_.data());
-  const std::vector<double>& row = base_row_;
   for (std::optional<BaseRows>& rows : base_rows_) {
     if (!rows) continue;
     if (!rows->shear.empty())
       rows->peak_shear =
-          std::max(rows->peak_shear, resultant(row, rows->shear, rows->shear_weights));
+          std::max(rows->peak_shear, resultant(base_row_, rows->shear, rows->shear_weights));
     if (!rows->moment.empty())
       rows->peak_moment =
-          std::max(rows->peak_moment, resultant(row, rows->moment, rows->moment_weights));
+          std::max(rows->peak_moment, resultant(base_row_, rows->moment, rows->moment_weights));
   }
 }
 
