@@ -87,7 +87,18 @@ void LinkSet::penetrations_and_rate(const Vector& u_1, const Vector& u_2, const 
 }
 
 void LinkSet::project(const Vector& x, Vector& projected) const {
-  projected.noalias() = connectivity_ * x;
+  // Each row as Eigen's sparse row product forms it (0 + the terms in order), without its
+  // set-up per product.
+  const Index rows = connectivity_.rows();
+  projected.resize(rows);
+  const double* __restrict__ values = connectivity_.valuePtr();
+  const auto* __restrict__ columns = connectivity_.innerIndexPtr();
+  const auto* __restrict__ starts = connectivity_.outerIndexPtr();
+  for (Index row = 0; row < rows; ++row) {
+    double sum = 0.0;
+    for (auto k = starts[row]; k < starts[row + 1]; ++k) sum += values[k] * x[columns[k]];
+    projected[row] = 0.0 + sum;
+  }
 }
 
 double LinkSet::nodal_norm(const Vector& row_values) const {

@@ -483,7 +483,7 @@ void Newmark::solve_correction(const Factorization& f) {
       for_each_hard_entry(r, [&](Index row, double entry) { jacobian_(r, row) += entry; });
     }
     jacobian_lu_.compute(jacobian_);
-    correction_ = jacobian_lu_.solve(residual_);
+    jacobian_lu_.solve(residual_, correction_);
     if (!correction_.allFinite()) correction_ = least_norm_correction(jacobian_, residual_);
     factored_id_ = 0;
     return;
@@ -495,36 +495,45 @@ void Newmark::solve_correction(const Factorization& f) {
   for (Index r = 0; r < m; ++r) {
     // The other rows of r's link (a friction link's or a shear's) whose tangents couple into it.
     RowCoupling& coupled = row_coupling_[static_cast<std::size_t>(r)];
+    coupled.row = r;
+    coupled.diagonal = tangent_(r, r);
     coupled.count = 0;
     if (link_blocks_) {
       const LinkRows& rows = link_rows_[static_cast<std::size_t>(r)];
       for (Index q = rows.first; q < rows.end; ++q)
-        if (q != r && tangent_(r, q) != 0.0)
-          coupled.rows[static_cast<std::size_t>(coupled.count++)] = q;
+        if (const double tangent = tangent_(r, q); q != r && tangent != 0.0) {
+          coupled.rows[static_cast<std::size_t>(coupled.count)] = q;
+          coupled.tangents[static_cast<std::size_t>(coupled.count++)] = tangent;
+        }
     }
-    if (tangent_(r, r) != 0.0 || coupled.count > 0 || hard_slipping_[static_cast<std::size_t>(r)])
+    if (coupled.diagonal != 0.0 || coupled.count > 0 || hard_slipping_[static_cast<std::size_t>(r)])
       active_rows_.push_back(r);
     else if (residual_[r] != 0.0)
       moved_rows_.push_back(r);
   }
   const Index size = static_cast<Index>(active_rows_.size());
   if (size == 0) return;
-  // Row r of T G: T(r, r) G(r, :) + the sum of T(r, q) G(q, :) over the other rows of its link.
-  const auto jacobian_entry = [&](Index r, Index c) {
-    double entry = tangent_(r, r) * f.coupling(r, c);
-    const RowCoupling& coupled = row_coupling_[static_cast<std::size_t>(r)];
-    for (int k = 0; k < coupled.count; ++k) {
-      const Index q = coupled.rows[static_cast<std::size_t>(k)];
-      entry += tangent_(r, q) * f.coupling(q, c);
-    }
+  // Row r of T G: T(r, r) G(r, c) + the sum of T(r, q) G(q, c) over the other rows of its link,
+  // G(r, c) at coupling[c m + r]. Each row's tangents are copied out of row_coupling_ before its
+  // loop, so they stay in registers (stores to jacobian_ might otherwise alias them).
+  const double* const coupling = f.coupling.data();
+  const auto jacobian_entry = [coupling](const RowCoupling& row, Index column_start) {
+    double entry = row.diagonal * coupling[column_start + row.row];
+    for (int k = 0; k < row.count; ++k)
+      entry += row.tangents[static_cast<std::size_t>(k)] *
+               coupling[column_start + row.rows[static_cast<std::size_t>(k)]];
     return entry;
   };
+  column_starts_.clear();
+  for (const Index c : moved_rows_) column_starts_.push_back(c * m);
   reduced_residual_.resize(size);
   for (Index i = 0; i < size; ++i) {
-    const Index r = active_rows_[static_cast<std::size_t>(i)];
+    const RowCoupling row =
+        row_coupling_[static_cast<std::size_t>(active_rows_[static_cast<std::size_t>(i)])];
     // The identity rows' known corrections move to the right-hand side.
-    double rhs = residual_[r];
-    for (const Index c : moved_rows_) rhs -= jacobian_entry(r, c) * residual_[c];
+    double rhs = residual_[row.row];
+    for (std::size_t k = 0; k < moved_rows_.size(); ++k)
+      rhs -= jacobian_entry(row, column_starts_[k]) * residual_[moved_rows_[k]];
     reduced_residual_[i] = rhs;
   }
   // The same rows with the same tangents (linear laws, or branches that did not change): the
@@ -545,10 +554,13 @@ void Newmark::solve_correction(const Factorization& f) {
   if (f.id != factored_id_ || active_rows_ != factored_rows_ ||
       active_tangents_ != factored_tangents_) {
     jacobian_.resize(size, size);
+    column_starts_.clear();
+    for (const Index c : active_rows_) column_starts_.push_back(c * m);
     for (Index i = 0; i < size; ++i) {
       const Index r = active_rows_[static_cast<std::size_t>(i)];
+      const RowCoupling coupled = row_coupling_[static_cast<std::size_t>(r)];
       for (Index j = 0; j < size; ++j)
-        jacobian_(i, j) = jacobian_entry(r, active_rows_[static_cast<std::size_t>(j)]);
+        jacobian_(i, j) = jacobian_entry(coupled, column_starts_[static_cast<std::size_t>(j)]);
       // A pressing hard contact's row is s G(r, :) alone: its F_law moves with F. A slipping
       // friction row's adds its entries on its link's rows, which are active too and come in
       // order just around it (the normal row, the tangents), at i - (r - row).
@@ -565,7 +577,7 @@ void Newmark::solve_correction(const Factorization& f) {
     factored_rows_ = active_rows_;
     factored_tangents_ = active_tangents_;
   }
-  reduced_correction_.noalias() = jacobian_lu_.solve(reduced_residual_);
+  jacobian_lu_.solve(reduced_residual_, reduced_correction_);
   if (!reduced_correction_.allFinite())
     reduced_correction_ = least_norm_correction(jacobian_, reduced_residual_);
   for (Index i = 0; i < size; ++i)

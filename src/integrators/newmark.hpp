@@ -49,6 +49,7 @@
 #include <map>
 #include <vector>
 
+#include "core/pivoted_lu.hpp"
 #include "integrators/integrator.hpp"
 #include "integrators/integrator_catalog.hpp"
 
@@ -188,7 +189,7 @@ class Newmark final : public Integrator {
   Vector reference_stiffness_, reference_damping_, reference_mass_;
   bool linear_part_checked_ = false;  // c_m M + c_c C + K factored alone once, when folding
   Matrix tangent_, jacobian_;
-  Eigen::PartialPivLU<Matrix> jacobian_lu_;
+  PivotedLu jacobian_lu_;
   bool general_correction_ = false;
   // The rows of each row's link, [first, end): a friction link's tangents couple them.
   struct LinkRows {
@@ -201,10 +202,14 @@ class Newmark final : public Integrator {
   // The other rows q of a row's link whose tangent T(r, q) couples into row r (a friction link's
   // or a bearing's shear), found once per correction.
   struct RowCoupling {
+    Index row = 0;
+    double diagonal = 0.0;  // T(r, r)
     std::array<Index, links::kMaxTangents> rows{};
+    std::array<double, links::kMaxTangents> tangents{};  // T(r, q) of those rows
     int count = 0;
   };
   std::vector<RowCoupling> row_coupling_;
+  std::vector<Index> column_starts_;     // c m of the columns c of G a correction reads
   std::vector<double> active_tangents_;  // T(r, r), slip, T(r, q) of each active row
   // What jacobian_lu_ holds: the factorisation's id, the rows and their tangents.
   long factorization_count_ = 0, factored_id_ = 0;
