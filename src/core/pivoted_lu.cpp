@@ -1,6 +1,7 @@
 #include "core/pivoted_lu.hpp"
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -8,11 +9,11 @@
 
 namespace pound {
 
-void PivotedLu::compute(const Matrix& a) {
+void PivotedLu::compute(const Matrix& a, Path path) {
   lu_ = a;
   const Index n = lu_.rows();
   transpositions_.resize(n);
-  if (n <= kUnblockedRows) {
+  if (n <= kUnblockedRows && path == Path::loops) {
     factor_unblocked();
   } else {
     int swaps = 0;
@@ -57,8 +58,77 @@ void PivotedLu::factor_unblocked() {
   }
 }
 
-void PivotedLu::solve(const Vector& b, Vector& x) const {
+// Eigen's triangular_solve_vector (panels of EIGEN_TUNE_TRIANGULAR_PANEL_WIDTH rows) and its
+// column-major matrix-vector product for the rows past a panel, step for step.
+constexpr Index kPanelRows = 8;
+
+namespace {
+// c + a b with the product rounded first, as Eigen's scalar loops compute it: the empty asm
+// keeps the compiler from fusing the two.
+double multiply_then_add(double a, double b, double c) {
+  double product = a * b;
+#if defined(__x86_64__)
+  asm("" : "+x"(product));
+#else
+  volatile double kept = product;
+  product = kept;
+#endif
+  return c + product;
+}
+}  // namespace
+
+// Row t of the panel's columns [start, end) times x, summed from 0 in column order as Eigen's
+// matrix-vector product sums it: rows in packets of four or two with fused multiply-adds, and
+// its last row, when it takes an odd number of rows, in its scalar loop (product, then sum).
+double PivotedLu::panel_sum(Index t, Index start, Index end, const double* x,
+                            bool scalar_row) const {
+  const Index n = lu_.rows();
+  const double* const a = lu_.data();
+  double sum = 0.0;
+  for (Index j = start; j < end; ++j)
+    sum = scalar_row ? multiply_then_add(a[j * n + t], x[j], sum)
+                     : multiply_add(a[j * n + t], x[j], sum);
+  return sum;
+}
+
+void PivotedLu::solve_unit_lower(double* x) const {
+  const Index n = lu_.rows();
+  const double* const a = lu_.data();
+  for (Index start = 0; start < n; start += kPanelRows) {
+    const Index end = std::min(n, start + kPanelRows);
+    for (Index i = start; i < end; ++i) {
+      const double known = x[i];
+      if (known == 0.0) continue;  // Eigen skips a zero (not a NaN)
+      for (Index t = i + 1; t < end; ++t) x[t] = multiply_add(-known, a[i * n + t], x[t]);
+    }
+    for (Index t = end; t < n; ++t)
+      x[t] -= panel_sum(t, start, end, x, (n - end) % 2 == 1 && t == n - 1);
+  }
+}
+
+void PivotedLu::solve_upper(double* x) const {
+  const Index n = lu_.rows();
+  const double* const a = lu_.data();
+  for (Index end = n; end > 0; end -= kPanelRows) {
+    const Index start = std::max<Index>(0, end - kPanelRows);
+    for (Index i = end - 1; i >= start; --i) {
+      if (x[i] == 0.0) continue;
+      x[i] /= a[i * n + i];
+      const double known = x[i];
+      for (Index t = start; t < i; ++t) x[t] = multiply_add(-known, a[i * n + t], x[t]);
+    }
+    for (Index t = 0; t < start; ++t)
+      x[t] -= panel_sum(t, start, end, x, start % 2 == 1 && t == start - 1);
+  }
+}
+
+void PivotedLu::solve(const Vector& b, Vector& x, Path path) const {
   x = permutation_ * b;
+  if (lu_.rows() <= kUnblockedRows && path == Path::loops) {
+    solve_unit_lower(x.data());
+    solve_upper(x.data());
+    return;
+  }
   lu_.triangularView<Eigen::UnitLower>().solveInPlace(x);
   lu_.triangularView<Eigen::Upper>().solveInPlace(x);
 }

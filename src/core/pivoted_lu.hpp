@@ -1,14 +1,16 @@
 #pragma once
 // LU factors with partial pivoting of a small dense matrix (the link system's active rows, a
-// dozen or two), P A = L U, as Eigen::PartialPivLU computes them, to the bit. Up to 16 rows
-// Eigen factors column by column (unblocked), and each column's update of a dynamic-size
-// block costs more in set-up than in arithmetic at that size; here the same operations run as
-// plain loops: the first largest |a_ik| as pivot, an exact division, each update a_ij - l_i u_j
-// rounded once. Larger matrices take Eigen's blocked algorithm itself (its panel products sum
-// in another order). The solves are Eigen's triangular solves, as PartialPivLU::solve does
-// them; no 1-norm is kept (PartialPivLU keeps it for rcond(), unused here).
+// dozen or two), P A = L U, and its solves, as Eigen::PartialPivLU computes them, to the bit.
+// Up to 16 rows Eigen factors column by column (unblocked) and solves in panels of 8 rows (each
+// row below a panel less the sum, from 0 in column order, of the panel's terms); each of those
+// steps on a dynamic-size block costs more in set-up than in arithmetic at that size, so here
+// the same operations run as plain loops: the first largest |a_ik| as pivot, exact divisions,
+// every update and sum rounded once per term (fused multiply-adds, as Eigen's packets are on
+// x86-64-v3) except where Eigen's own scalar loop rounds the product first (tested against
+// Eigen's code on every size, Path::eigen). Larger matrices take Eigen's own code (its blocked
+// factorisation sums its panel products in another order). No 1-norm is kept (PartialPivLU's, for
+// rcond(), is unused here).
 #include <Eigen/Core>
-#include <vector>
 
 #include "core/types.hpp"
 
@@ -17,14 +19,19 @@ namespace pound {
 class PivotedLu {
  public:
   static constexpr Index kUnblockedRows = 16;  // Eigen's own bound for its unblocked algorithm
+  // `eigen`: Eigen's code at every size, the general path the loops are compared with.
+  enum class Path { loops, eigen };
 
-  void compute(const Matrix& a);
+  void compute(const Matrix& a, Path path = Path::loops);
   // x = A^-1 b (non-finite where A is singular, as Eigen's).
-  void solve(const Vector& b, Vector& x) const;
+  void solve(const Vector& b, Vector& x, Path path = Path::loops) const;
   const Matrix& factors() const { return lu_; }  // L below the diagonal (unit), U on and above
 
  private:
   void factor_unblocked();
+  void solve_unit_lower(double* x) const;
+  void solve_upper(double* x) const;
+  double panel_sum(Index t, Index start, Index end, const double* x, bool scalar_row) const;
 
   Matrix lu_;
   Eigen::Transpositions<Eigen::Dynamic, Eigen::Dynamic, int> transpositions_;
