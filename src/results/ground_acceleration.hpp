@@ -27,10 +27,7 @@ class GroundAcceleration {
   double absolute(const integrators::State& state, const DofReading& reading, Index node,
                   int direction) {
     if (reading.empty()) return support_(node, direction, state.time);
-    if (!(state.time == frame_time_)) {
-      frame_(state.time, frame_now_);
-      frame_time_ = state.time;
-    }
+    update_frame(state.time);
     const auto at = [&](const model::DofTerm& term) {
       return term.coefficient * (state.acceleration[term.equation] + frame_now_[term.equation]);
     };
@@ -38,8 +35,21 @@ class GroundAcceleration {
     for (std::size_t k = 1; k < reading.size(); ++k) acceleration += at(reading[k]);
     return acceleration;
   }
+  // a + the frame's acceleration at every free DOF, for reading many DOFs at once: a reading's
+  // terms c (a + frame) over it are then what absolute() forms.
+  void absolute_free(const integrators::State& state, Vector& absolute) {
+    update_frame(state.time);
+    absolute = state.acceleration + frame_now_;
+  }
 
  private:
+  void update_frame(double time) {
+    if (!(time == frame_time_)) {
+      frame_(time, frame_now_);
+      frame_time_ = time;
+    }
+  }
+
   Frame frame_;
   Support support_;
   double frame_time_ = std::numeric_limits<double>::quiet_NaN();  // of frame_now_

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace pound::results {
 namespace {
@@ -10,50 +11,86 @@ double sum_of(const std::vector<Term>& terms, const Vector& v) {
   return 0.0 + model::value_of(terms, v);
 }
 
+}  // namespace
+
+DriftMonitors::DriftMonitors(std::vector<Where> storeys, GroundAcceleration& ground)
+    : storeys_(std::move(storeys)), ground_(ground), peaks_(storeys_.size()) {
+  for (const Where& w : storeys_) {
+    Places& at = places_.emplace_back();
+    if (w.drift.empty()) {
+      at.top = displacement_sums_.add(w.top);
+      at.bottom = displacement_sums_.add(w.bottom);
+    } else {
+      at.drift = displacement_sums_.add(w.drift);
+    }
+    at.corners = displacement_sums_.size();
+    for (const std::vector<Term>& corner : w.corners) displacement_sums_.add(corner);
+    at.twist = displacement_sums_.add(w.twist);
+    if (w.top_along.size() > at.along_acceleration.size())
+      throw std::invalid_argument("a drift monitor reads its top along at most three axes");
+    at.top_acceleration = acceleration_sums_.add(w.top);
+    for (std::size_t d = 0; d < w.top_along.size(); ++d)
+      at.along_acceleration[d] = acceleration_sums_.add(w.top_along[d].first);
+  }
+  displacements_.resize(displacement_sums_.size());
+  accelerations_.resize(acceleration_sums_.size());
+}
+
 // The largest corner drift and the twist of a storey (3-D floors).
-void record_plan(const DriftMonitors::Where& w, const integrators::State& state, DriftPeak& p) {
+void DriftMonitors::record_plan(const Where& w, const Places& at, const integrators::State& state,
+                                DriftPeak& p) const {
   for (std::size_t c = 0; c < w.corners.size(); ++c) {
-    const double drift = std::abs(sum_of(w.corners[c], state.displacement));
+    const double drift = std::abs(0.0 + displacements_[at.corners + c]);
     if (drift > p.peak_corner_drift) {
       p.peak_corner_drift = drift;
       p.corner = c;
       p.corner_time = state.time;
     }
   }
-  const double twist = std::abs(sum_of(w.twist, state.displacement));
+  const double twist = std::abs(0.0 + displacements_[at.twist]);
   if (twist > p.peak_twist) {
     p.peak_twist = twist;
     p.twist_time = state.time;
   }
 }
-}  // namespace
+
+// |a_abs| of the storey's top along the drift; a fixed top's is the ground's own.
+double DriftMonitors::absolute_acceleration(const Where& w, const Places& at,
+                                            const integrators::State& state) {
+  const auto reading = [&](const DofReading& dof, std::size_t place, int direction) {
+    return dof.empty() ? ground_.absolute(state, dof, w.top_node, direction)
+                       : accelerations_[place];
+  };
+  if (w.top_along.empty()) return std::abs(reading(w.top, at.top_acceleration, w.direction));
+  double acceleration = 0.0;
+  for (std::size_t d = 0; d < w.top_along.size(); ++d)
+    if (const auto& [dof, weight] = w.top_along[d]; weight != 0.0)
+      acceleration += weight * reading(dof, at.along_acceleration[d], static_cast<int>(d));
+  return std::abs(acceleration);
+}
 
 void DriftMonitors::record(const integrators::State& state) {
+  if (storeys_.empty()) return;
+  displacement_sums_.evaluate(state.displacement, displacements_.data());
+  ground_.absolute_free(state, absolute_);
+  acceleration_sums_.evaluate(absolute_, accelerations_.data());
   for (std::size_t k = 0; k < storeys_.size(); ++k) {
     const Where& w = storeys_[k];
+    const Places& at = places_[k];
     DriftPeak& p = peaks_[k];
-    const double signed_drift = w.drift.empty() ? model::value_of(w.top, state.displacement) -
-                                                      model::value_of(w.bottom, state.displacement)
-                                                : sum_of(w.drift, state.displacement);
+    const double signed_drift = w.drift.empty() ? displacements_[at.top] - displacements_[at.bottom]
+                                                : 0.0 + displacements_[at.drift];
     p.residual_drift = signed_drift;
     if (std::abs(signed_drift) > p.peak_drift) {
       p.peak_drift = std::abs(signed_drift);
       p.time = state.time;
     }
-    double acceleration = 0.0;
-    if (w.top_along.empty())
-      acceleration = std::abs(ground_.absolute(state, w.top, w.top_node, w.direction));
-    else
-      for (std::size_t d = 0; d < w.top_along.size(); ++d)
-        if (const auto& [reading, weight] = w.top_along[d]; weight != 0.0)
-          acceleration +=
-              weight * ground_.absolute(state, reading, w.top_node, static_cast<int>(d));
-    acceleration = std::abs(acceleration);
+    const double acceleration = absolute_acceleration(w, at, state);
     if (acceleration > p.peak_acceleration) {
       p.peak_acceleration = acceleration;
       p.acceleration_time = state.time;
     }
-    if (!w.corners.empty()) record_plan(w, state, p);
+    if (!w.corners.empty()) record_plan(w, at, state, p);
   }
 }
 

@@ -2,6 +2,7 @@
 // Peak responses an engineer checks after a pounding run: storey and pier drifts (with the
 // displacement ductility demand where a yield drift is known), and joints (how far the gap
 // opened and closed, how far the girder moved on its seat, and the margin left to unseating).
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -9,6 +10,7 @@
 #include "integrators/integrator.hpp"
 #include "results/ground_acceleration.hpp"
 #include "results/observer.hpp"
+#include "results/term_sums.hpp"
 
 namespace pound::results {
 
@@ -45,15 +47,28 @@ class DriftMonitors : public Observer {
     std::vector<std::vector<Term>> corners = {};
     std::vector<Term> twist = {};
   };
-  DriftMonitors(std::vector<Where> storeys, GroundAcceleration& ground)
-      : storeys_(std::move(storeys)), ground_(ground), peaks_(storeys_.size()) {}
+  DriftMonitors(std::vector<Where> storeys, GroundAcceleration& ground);
   void record(const integrators::State& state) override;
   const std::vector<DriftPeak>& peaks() const { return peaks_; }
 
  private:
+  // Where a storey's sums are among the tables' values.
+  struct Places {
+    std::size_t top = 0, bottom = 0, drift = 0, corners = 0, twist = 0;  // displacement sums
+    std::size_t top_acceleration = 0;                                    // acceleration sums
+    std::array<std::size_t, 3> along_acceleration{};
+  };
+  double absolute_acceleration(const Where& w, const Places& at, const integrators::State& state);
+  void record_plan(const Where& w, const Places& at, const integrators::State& state,
+                   DriftPeak& p) const;
+
   std::vector<Where> storeys_;
   GroundAcceleration& ground_;
   std::vector<DriftPeak> peaks_;
+  std::vector<Places> places_;
+  TermSums displacement_sums_, acceleration_sums_;
+  std::vector<double> displacements_, accelerations_;  // their values at the step
+  Vector absolute_;                                    // a + the frame's, at the free DOFs
 };
 
 struct JointPeak {

@@ -77,22 +77,22 @@ void NodeQuantities::take(const integrators::State& state, double* values) const
 
 ElementQuantities::ElementQuantities(std::vector<std::shared_ptr<const model::Element>> elements,
                                      std::vector<std::vector<DofReading>> readings)
-    : elements_(std::move(elements)), readings_(std::move(readings)) {
+    : elements_(std::move(elements)) {
   for (std::size_t k = 0; k < elements_.size(); ++k) {
     for (const model::EndForce& force : elements_[k]->end_force_names())
       add(elements_[k]->id() + "." + std::string(force.name), force.dimension);
-    displacements_.emplace_back(static_cast<Index>(readings_[k].size()));
+    force_counts_.push_back(elements_[k]->end_force_names().size());
+    TermSums& dofs = dofs_.emplace_back();
+    for (const DofReading& reading : readings[k]) dofs.add(reading);
+    displacements_.emplace_back(static_cast<Index>(dofs.size()));
   }
 }
 
 void ElementQuantities::take(const integrators::State& state, double* values) const {
   for (std::size_t k = 0; k < elements_.size(); ++k) {
-    const std::vector<DofReading>& readings = readings_[k];
-    Vector& displacement = displacements_[k];
-    for (std::size_t d = 0; d < readings.size(); ++d)
-      displacement[static_cast<Index>(d)] = model::value_of(readings[d], state.displacement);
-    elements_[k]->write_end_forces(displacement, values);
-    values += elements_[k]->end_force_names().size();
+    dofs_[k].evaluate(state.displacement, displacements_[k].data());
+    elements_[k]->write_end_forces(displacements_[k], values);
+    values += force_counts_[k];
   }
 }
 

@@ -14,6 +14,7 @@
 #include "model/element.hpp"
 #include "results/ground_acceleration.hpp"
 #include "results/observer.hpp"
+#include "results/term_sums.hpp"
 
 namespace pound::results {
 
@@ -104,7 +105,8 @@ class ElementQuantities final : public Quantities {
 
  private:
   std::vector<std::shared_ptr<const model::Element>> elements_;
-  std::vector<std::vector<DofReading>> readings_;
+  std::vector<TermSums> dofs_;                 // each element's dofs() as sums of equations
+  std::vector<std::size_t> force_counts_;      // each element's end forces
   mutable std::vector<Vector> displacements_;  // scratch: each element's u_e
 };
 

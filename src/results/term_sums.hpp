@@ -1,0 +1,43 @@
+#pragma once
+// Many sums of coefficient x value over equations (model::DofTerm), read in one pass. The
+// monitors and element recorders read hundreds of DOFs a step (a 3-D building's rigid floors
+// make most of them two or three terms); a loop per sum cost more in its set-up than in its
+// terms, so the sums are kept in groups of equal length, each group's terms in one flat table
+// read without a loop per sum. Every sum is formed as model::value_of forms it, the first term's
+// product and then multiply-adds in order (0 with no terms), so the values are the same to the
+// bit.
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "core/types.hpp"
+#include "model/dof_term.hpp"
+
+namespace pound::results {
+
+class TermSums {
+ public:
+  // The place of the sum of `terms` in evaluate's output.
+  std::size_t add(std::span<const model::DofTerm> terms);
+  std::size_t size() const { return count_; }
+  // out[s] = sum s of the terms over v, for each of the size() sums.
+  void evaluate(const Vector& v, double* out) const;
+
+ private:
+  static constexpr std::size_t kGrouped = 4;  // sums of 1 to 4 terms in groups, longer ones apart
+  struct Group {
+    std::vector<std::uint32_t> places;  // in evaluate's output
+    std::vector<Index> equations;       // the sums' terms one after the other
+    std::vector<double> coefficients;
+    std::vector<std::uint32_t> ends;  // one past each sum's last term (the longer sums only)
+  };
+  template <std::size_t Terms>
+  static void evaluate_group(const Group& group, const double* v, double* out);
+
+  std::array<Group, kGrouped + 1> groups_;  // [k - 1]: sums of k terms; [kGrouped]: longer
+  std::vector<std::uint32_t> empty_;        // places of the sums without terms
+  std::size_t count_ = 0;
+};
+
+}  // namespace pound::results
