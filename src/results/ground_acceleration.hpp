@@ -35,11 +35,10 @@ class GroundAcceleration {
     for (std::size_t k = 1; k < reading.size(); ++k) acceleration += at(reading[k]);
     return acceleration;
   }
-  // a + the frame's acceleration at every free DOF, for reading many DOFs at once: a reading's
-  // terms c (a + frame) over it are then what absolute() forms.
-  void absolute_free(const integrators::State& state, Vector& absolute) {
-    update_frame(state.time);
-    absolute = state.acceleration + frame_now_;
+  // The frame's acceleration at every free DOF at `time` (absolute() adds it to a there).
+  const Vector& frame(double time) {
+    update_frame(time);
+    return frame_now_;
   }
 
  private:

@@ -72,8 +72,7 @@ double DriftMonitors::absolute_acceleration(const Where& w, const Places& at,
 void DriftMonitors::record(const integrators::State& state) {
   if (storeys_.empty()) return;
   displacement_sums_.evaluate(state.displacement, displacements_.data());
-  ground_.absolute_free(state, absolute_);
-  acceleration_sums_.evaluate(absolute_, accelerations_.data());
+  acceleration_sums_.evaluate(state.acceleration, ground_.frame(state.time), accelerations_.data());
   for (std::size_t k = 0; k < storeys_.size(); ++k) {
     const Where& w = storeys_[k];
     const Places& at = places_[k];

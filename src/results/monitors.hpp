@@ -68,7 +68,6 @@ class DriftMonitors : public Observer {
   std::vector<Places> places_;
   TermSums displacement_sums_, acceleration_sums_;
   std::vector<double> displacements_, accelerations_;  // their values at the step
-  Vector absolute_;                                    // a + the frame's, at the free DOFs
 };
 
 struct JointPeak {

@@ -27,35 +27,45 @@ std::size_t TermSums::add(std::span<const model::DofTerm> terms) {
   return place;
 }
 
-template <std::size_t Terms>
-void TermSums::evaluate_group(const Group& group, const double* v, double* out) {
+template <std::size_t Terms, typename Value>
+void TermSums::evaluate_group(const Group& group, Value value, double* out) {
   const Index* equations = group.equations.data();
   const double* coefficients = group.coefficients.data();
   for (const std::uint32_t place : group.places) {
-    double sum = coefficients[0] * v[equations[0]];
+    double sum = coefficients[0] * value(equations[0]);
     for (std::size_t k = 1; k < Terms; ++k)
-      sum = multiply_add(coefficients[k], v[equations[k]], sum);
+      sum = multiply_add(coefficients[k], value(equations[k]), sum);
     out[place] = sum;
     equations += Terms;
     coefficients += Terms;
   }
 }
 
-void TermSums::evaluate(const Vector& v, double* out) const {
-  const double* values = v.data();
+template <typename Value>
+void TermSums::evaluate_with(Value value, double* out) const {
   for (const std::uint32_t place : empty_) out[place] = 0.0;
-  evaluate_group<1>(groups_[0], values, out);
-  evaluate_group<2>(groups_[1], values, out);
-  evaluate_group<3>(groups_[2], values, out);
-  evaluate_group<4>(groups_[3], values, out);
+  evaluate_group<1>(groups_[0], value, out);
+  evaluate_group<2>(groups_[1], value, out);
+  evaluate_group<3>(groups_[2], value, out);
+  evaluate_group<4>(groups_[3], value, out);
   const Group& longer = groups_[kGrouped];
   std::uint32_t k = 0;
   for (std::size_t s = 0; s < longer.places.size(); ++s) {
-    double sum = longer.coefficients[k] * values[longer.equations[k]];
+    double sum = longer.coefficients[k] * value(longer.equations[k]);
     for (++k; k < longer.ends[s]; ++k)
-      sum = multiply_add(longer.coefficients[k], values[longer.equations[k]], sum);
+      sum = multiply_add(longer.coefficients[k], value(longer.equations[k]), sum);
     out[longer.places[s]] = sum;
   }
+}
+
+void TermSums::evaluate(const Vector& v, double* out) const {
+  const double* values = v.data();
+  evaluate_with([values](Index e) { return values[e]; }, out);
+}
+
+void TermSums::evaluate(const Vector& v, const Vector& w, double* out) const {
+  const double *first = v.data(), *second = w.data();
+  evaluate_with([first, second](Index e) { return first[e] + second[e]; }, out);
 }
 
 }  // namespace pound::results

@@ -23,6 +23,8 @@ class TermSums {
   std::size_t size() const { return count_; }
   // out[s] = sum s of the terms over v, for each of the size() sums.
   void evaluate(const Vector& v, double* out) const;
+  // The same over v + w, each term's c (v_e + w_e) (absolute accelerations: a + the frame's).
+  void evaluate(const Vector& v, const Vector& w, double* out) const;
 
  private:
   static constexpr std::size_t kGrouped = 4;  // sums of 1 to 4 terms in groups, longer ones apart
@@ -32,8 +34,10 @@ class TermSums {
     std::vector<double> coefficients;
     std::vector<std::uint32_t> ends;  // one past each sum's last term (the longer sums only)
   };
-  template <std::size_t Terms>
-  static void evaluate_group(const Group& group, const double* v, double* out);
+  template <typename Value>
+  void evaluate_with(Value value, double* out) const;
+  template <std::size_t Terms, typename Value>
+  static void evaluate_group(const Group& group, Value value, double* out);
 
   std::array<Group, kGrouped + 1> groups_;  // [k - 1]: sums of k terms; [kGrouped]: longer
   std::vector<std::uint32_t> empty_;        // places of the sums without terms

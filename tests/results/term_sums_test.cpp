@@ -54,7 +54,17 @@ TEST(TermSums, EachSumIsValueOfsToTheBitWhateverItsLength) {
     if (scale > 0.0)
       worst = std::max(worst, std::abs(out[s] - model::value_of(sums[s], v)) / scale);
   }
-  std::cout << "  400 sums of 0 to 7 terms (" << negative_zeros << " of them -0): " << unequal
+  // Over v + w: each term c (v_e + w_e), as GroundAcceleration::absolute forms a + the frame's.
+  Vector w(n);
+  for (Index i = 0; i < n; ++i) w[i] = i % 7 == 0 ? -v[i] : value(rng);
+  table.evaluate(v, w, out.data());
+  const Vector sum = v + w;
+  for (std::size_t s = 0; s < sums.size(); ++s) {
+    const double expected = fused_value_of(sums[s], sum);
+    unequal += out[s] != expected || std::signbit(out[s]) != std::signbit(expected);
+  }
+  std::cout << "  400 sums of 0 to 7 terms (" << negative_zeros
+            << " of them -0), over v and over v + w: " << unequal
             << " unequal to value_of's fused form; within " << worst
             << " of value_of compiled here, relative to the sum of |terms|" << std::endl;
   EXPECT_EQ(unequal, 0);
