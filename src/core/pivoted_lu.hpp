@@ -5,11 +5,11 @@
 // row below a panel less the sum, from 0 in column order, of the panel's terms); each of those
 // steps on a dynamic-size block costs more in set-up than in arithmetic at that size, so here
 // the same operations run as plain loops: the first largest |a_ik| as pivot, exact divisions,
-// every update and sum rounded once per term (fused multiply-adds, as Eigen's packets are on
-// x86-64-v3) except where Eigen's own scalar loop rounds the product first (tested against
-// Eigen's code on every size, Path::eigen). Larger matrices take Eigen's own code (its blocked
-// factorisation sums its panel products in another order). No 1-norm is kept (PartialPivLU's, for
-// rcond(), is unused here).
+// every update and sum rounded once per term (fused multiply-adds, as GCC fuses Eigen's code in
+// the release build on x86-64-v3; not at -O1) except where Eigen's own scalar loop rounds the
+// product first (tested against Eigen's code on every size, Path::eigen). Larger matrices take
+// Eigen's own code (its blocked factorisation sums its panel products in another order). No 1-norm
+// is kept (PartialPivLU's, for rcond(), is unused here).
 #include <Eigen/Core>
 
 #include "core/types.hpp"
