@@ -6,9 +6,12 @@
 
 namespace pound::results {
 namespace {
-// A sum of terms; +0, never -0, where it vanishes (as the summaries have always written it).
+// A sum read as the summaries have always written it: +0, never -0, where it vanishes.
+double plus_zero(double sum) { return 0.0 + sum; }
+
+// A sum of terms, so read.
 double sum_of(const std::vector<Term>& terms, const Vector& v) {
-  return 0.0 + model::value_of(terms, v);
+  return plus_zero(model::value_of(terms, v));
 }
 
 }  // namespace
@@ -40,14 +43,14 @@ DriftMonitors::DriftMonitors(std::vector<Where> storeys, GroundAcceleration& gro
 void DriftMonitors::record_plan(const Where& w, const Places& at, const integrators::State& state,
                                 DriftPeak& p) const {
   for (std::size_t c = 0; c < w.corners.size(); ++c) {
-    const double drift = std::abs(0.0 + displacements_[at.corners + c]);
+    const double drift = std::abs(plus_zero(displacements_[at.corners + c]));
     if (drift > p.peak_corner_drift) {
       p.peak_corner_drift = drift;
       p.corner = c;
       p.corner_time = state.time;
     }
   }
-  const double twist = std::abs(0.0 + displacements_[at.twist]);
+  const double twist = std::abs(plus_zero(displacements_[at.twist]));
   if (twist > p.peak_twist) {
     p.peak_twist = twist;
     p.twist_time = state.time;
@@ -78,7 +81,7 @@ void DriftMonitors::record(const integrators::State& state) {
     const Places& at = places_[k];
     DriftPeak& p = peaks_[k];
     const double signed_drift = w.drift.empty() ? displacements_[at.top] - displacements_[at.bottom]
-                                                : 0.0 + displacements_[at.drift];
+                                                : plus_zero(displacements_[at.drift]);
     p.residual_drift = signed_drift;
     if (std::abs(signed_drift) > p.peak_drift) {
       p.peak_drift = std::abs(signed_drift);
