@@ -172,19 +172,46 @@ Table EnvelopeRecorder::table() const {
 }
 
 void LinkSummaries::set_step_forces(const std::vector<char>& by_row) {
+  step_force_links_.clear();
   for (std::size_t k = 0; k < rows_.size(); ++k)
-    step_forces_[k] = by_row[static_cast<std::size_t>(rows_[k])];
+    if (by_row[static_cast<std::size_t>(rows_[k])]) step_force_links_.push_back(k);
 }
 
 LinkSummaries::LinkSummaries(std::vector<Index> normal_rows,
                              const std::vector<ShearRows>& shear_rows)
-    : rows_(std::move(normal_rows)),
-      shear_rows_(shear_rows),
-      summaries_(rows_.size()),
-      step_forces_(rows_.size(), 0) {
+    : rows_(std::move(normal_rows)), shear_rows_(shear_rows), summaries_(rows_.size()) {
   shear_rows_.resize(rows_.size());
-  for (std::size_t k = 0; k < rows_.size(); ++k)
-    if (shear_rows_[k].count > 0) summaries_[k].shear = ShearSummary{};
+  for (std::size_t k = 0; k < rows_.size(); ++k) {
+    if (shear_rows_[k].count == 0) continue;
+    summaries_[k].shear = ShearSummary{};
+    any_shear_ = true;
+  }
+  const std::size_t count = rows_.size();
+  for (std::vector<double>* column :
+       {&running_.force, &running_.penetration, &running_.previous_force,
+        &running_.previous_penetration, &running_.average_force, &running_.peak_force,
+        &running_.peak_tension, &running_.peak_penetration, &running_.peak_opening,
+        &running_.impulse, &running_.work, &running_.engagement_work})
+    column->assign(count, 0.0);
+  running_.last_contact.assign(count, -1.0);
+}
+
+const std::vector<LinkSummary>& LinkSummaries::summaries() const {
+  const Running& r = running_;
+  for (std::size_t k = 0; k < summaries_.size(); ++k) {
+    LinkSummary& s = summaries_[k];
+    s.peak_force = r.peak_force[k];
+    s.peak_tension = r.peak_tension[k];
+    s.peak_penetration = r.peak_penetration[k];
+    s.peak_opening = r.peak_opening[k];
+    s.impulse = r.impulse[k];
+    s.work = r.work[k];
+    s.engagement_work = r.engagement_work[k];
+    s.last_contact = r.last_contact[k];
+    s.final_force = r.force[k];
+    s.final_deformation = r.penetration[k];
+  }
+  return summaries_;
 }
 
 double LinkSummaries::resultant(const Vector& values, std::size_t k) const {
@@ -217,46 +244,94 @@ void LinkSummaries::record_shear(const integrators::State& state, std::size_t k)
   s.peak_ductility = std::max(s.peak_ductility, std::sqrt(ductility));
 }
 
-void LinkSummaries::record(const integrators::State& state) {
-  for (std::size_t k = 0; k < summaries_.size(); ++k) {
-    LinkSummary& s = summaries_[k];
-    const Index link = rows_[k];
-    const double force = state.link_force[link];
-    const double penetration = state.link_penetration[link];
-    const bool contact = force != 0.0;
-    if (started_) {
-      const double previous_force = previous_.link_force[link];
-      const double dt = state.time - previous_.time;
-      const double average = step_forces_[k] ? force : 0.5 * (force + previous_force);
-      s.impulse += average * dt;
-      const double work = average * (penetration - previous_.link_penetration[link]);
-      s.work += work;
-      s.engagement_work += work;
-      if (contact && previous_force == 0.0) ++s.impacts;
-      if (!contact && previous_force != 0.0) {  // an engagement ended this step
-        if (!s.engaged_at_start) s.finished_created_energy += std::max(0.0, -s.engagement_work);
-        s.engagement_work = 0.0;
-        s.engaged_at_start = false;
-      }
-    } else if (contact) {
-      ++s.impacts;
-      s.engaged_at_start = true;
-    }
-    if (contact) {
-      if (s.first_contact < 0.0) s.first_contact = state.time;
-      s.last_contact = state.time;
-    }
-    s.peak_force = std::max(s.peak_force, force);
-    s.peak_tension = std::max(s.peak_tension, -force);
-    s.peak_penetration = std::max(s.peak_penetration, penetration);
-    s.peak_opening = std::max(s.peak_opening, -penetration);
-    s.final_force = force;
-    s.final_deformation = penetration;
-    if (s.shear) record_shear(state, k);
+namespace {
+
+// Element by element, without branches, the arrays unaliased (as parameters, so GCC knows it):
+// the loops vectorise.
+void add_step_work(std::size_t count, double dt, const double* __restrict__ average,
+                   const double* __restrict__ penetration,
+                   const double* __restrict__ previous_penetration, double* __restrict__ impulse,
+                   double* __restrict__ work, double* __restrict__ engagement_work) {
+  for (std::size_t k = 0; k < count; ++k) {
+    impulse[k] += average[k] * dt;
+    const double step_work = average[k] * (penetration[k] - previous_penetration[k]);
+    work[k] += step_work;
+    engagement_work[k] += step_work;
   }
-  previous_.time = state.time;
-  previous_.link_force = state.link_force;
-  previous_.link_penetration = state.link_penetration;
+}
+
+void raise_peaks(std::size_t count, double time, const double* __restrict__ force,
+                 const double* __restrict__ penetration, double* __restrict__ last_contact,
+                 double* __restrict__ peak_force, double* __restrict__ peak_tension,
+                 double* __restrict__ peak_penetration, double* __restrict__ peak_opening) {
+  for (std::size_t k = 0; k < count; ++k) {
+    last_contact[k] = force[k] != 0.0 ? time : last_contact[k];
+    peak_force[k] = std::max(peak_force[k], force[k]);
+    peak_tension[k] = std::max(peak_tension[k], -force[k]);
+    peak_penetration[k] = std::max(peak_penetration[k], penetration[k]);
+    peak_opening[k] = std::max(peak_opening[k], -penetration[k]);
+  }
+}
+
+}  // namespace
+
+// Impulse and work by the trapezoidal rule (the rectangle rule for a step force).
+void LinkSummaries::accumulate(double dt) {
+  Running& r = running_;
+  const std::size_t count = rows_.size();
+  for (std::size_t k = 0; k < count; ++k)
+    r.average_force[k] = 0.5 * (r.force[k] + r.previous_force[k]);
+  for (const std::size_t k : step_force_links_) r.average_force[k] = r.force[k];
+  add_step_work(count, dt, r.average_force.data(), r.penetration.data(),
+                r.previous_penetration.data(), r.impulse.data(), r.work.data(),
+                r.engagement_work.data());
+}
+
+void LinkSummaries::record_peaks(double time) {
+  Running& r = running_;
+  raise_peaks(rows_.size(), time, r.force.data(), r.penetration.data(), r.last_contact.data(),
+              r.peak_force.data(), r.peak_tension.data(), r.peak_penetration.data(),
+              r.peak_opening.data());
+}
+
+void LinkSummaries::record_engagements(double time) {
+  Running& r = running_;
+  for (std::size_t k = 0; k < rows_.size(); ++k) {
+    const bool contact = r.force[k] != 0.0;
+    const bool was_in_contact = started_ && r.previous_force[k] != 0.0;
+    if (contact == was_in_contact) continue;
+    LinkSummary& s = summaries_[k];
+    if (contact) {
+      ++s.impacts;
+      if (!started_) s.engaged_at_start = true;
+      if (s.first_contact < 0.0) s.first_contact = time;
+    } else {  // an engagement ended this step
+      if (!s.engaged_at_start) s.finished_created_energy += std::max(0.0, -r.engagement_work[k]);
+      r.engagement_work[k] = 0.0;
+      s.engaged_at_start = false;
+    }
+  }
+}
+
+void LinkSummaries::record(const integrators::State& state) {
+  Running& r = running_;
+  const std::size_t count = rows_.size();
+  r.force.swap(r.previous_force);
+  r.penetration.swap(r.previous_penetration);
+  for (std::size_t k = 0; k < count; ++k) {
+    r.force[k] = state.link_force[rows_[k]];
+    r.penetration[k] = state.link_penetration[rows_[k]];
+  }
+  if (started_) accumulate(state.time - previous_time_);
+  record_engagements(state.time);
+  record_peaks(state.time);
+  if (any_shear_) {
+    for (std::size_t k = 0; k < count; ++k)
+      if (summaries_[k].shear) record_shear(state, k);
+    previous_.link_force = state.link_force;
+    previous_.link_penetration = state.link_penetration;
+  }
+  previous_time_ = state.time;
   started_ = true;
 }
 

@@ -4,6 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+#include <utility>
+#include <vector>
+
 #include "support/dof_readings.hpp"
 #include "support/vectors.hpp"
 
@@ -263,6 +270,94 @@ TEST(LinkSummaries, ALinkNeverInContactHasNoContactTimes) {
   EXPECT_EQ(s.first_contact, -1.0);
   EXPECT_EQ(s.last_contact, -1.0);
   EXPECT_EQ(s.impulse, 0.0);
+}
+
+// The summaries keep their running quantities by column (one array per quantity over the links);
+// each link must still get what following it alone by the definitions gives: five links on rows
+// 0, 2, 3, 5, 6 of seven, engagements starting and ending at random, one link's force a step
+// force (rectangle rule), one in contact at the start, over 2,000 steps.
+TEST(LinkSummaries, EachLinkGetsWhatFollowingItAloneGives) {
+  const std::vector<Index> rows = {0, 2, 3, 5, 6};
+  LinkSummaries summaries(rows);
+  std::vector<char> step_rows(7, 0);
+  step_rows[3] = 1;
+  summaries.set_step_forces(step_rows);
+  std::vector<LinkSummary> reference(rows.size());
+  std::vector<double> previous_force(rows.size()), previous_penetration(rows.size());
+  std::uint64_t seed = 12345;
+  const auto uniform = [&seed] {  // in [0, 1), the same on every platform
+    seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(seed >> 11) * 0x1.0p-53;
+  };
+  double time = 0.0;
+  for (int step = 0; step < 2000; ++step) {
+    Vector force = Vector::Zero(7), penetration = Vector::Zero(7);
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      const Index row = rows[k];
+      penetration[row] = 0.02 * (uniform() - 0.5);
+      const bool contact = (step == 0 && k == 1) || uniform() < 0.3;
+      force[row] = contact ? 1e6 * (uniform() - 0.2) : 0.0;
+    }
+    const double dt = step == 0 ? 0.0 : 0.001 + 0.001 * uniform();
+    time += dt;
+    summaries.record(link_state(time, force, penetration));
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      LinkSummary& s = reference[k];
+      const double f = force[rows[k]], d = penetration[rows[k]];
+      const bool contact = f != 0.0, was = step > 0 && previous_force[k] != 0.0;
+      if (step > 0) {
+        const double average = k == 2 ? f : 0.5 * (f + previous_force[k]);
+        s.impulse += average * dt;
+        s.work += average * (d - previous_penetration[k]);
+        s.engagement_work += average * (d - previous_penetration[k]);
+      }
+      if (contact && !was) {
+        ++s.impacts;
+        s.engaged_at_start = s.engaged_at_start || step == 0;
+        if (s.first_contact < 0.0) s.first_contact = time;
+      }
+      if (!contact && was) {
+        if (!s.engaged_at_start) s.finished_created_energy += std::max(0.0, -s.engagement_work);
+        s.engagement_work = 0.0;
+        s.engaged_at_start = false;
+      }
+      if (contact) s.last_contact = time;
+      s.peak_force = std::max(s.peak_force, f);
+      s.peak_tension = std::max(s.peak_tension, -f);
+      s.peak_penetration = std::max(s.peak_penetration, d);
+      s.peak_opening = std::max(s.peak_opening, -d);
+      s.final_force = f;
+      s.final_deformation = d;
+      previous_force[k] = f;
+      previous_penetration[k] = d;
+    }
+  }
+  // Sums within rounding (the library may fuse a product into its sum, this file does not);
+  // everything else exactly.
+  double worst = 0.0;
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const LinkSummary &s = summaries.summaries()[k], &r = reference[k];
+    EXPECT_GE(r.impacts, 100) << "link " << k << ": too few engagements to test";
+    EXPECT_EQ(s.impacts, r.impacts) << "link " << k;
+    EXPECT_EQ(s.engaged_at_start, r.engaged_at_start) << "link " << k;
+    EXPECT_EQ(s.first_contact, r.first_contact) << "link " << k;
+    EXPECT_EQ(s.last_contact, r.last_contact) << "link " << k;
+    EXPECT_EQ(s.peak_force, r.peak_force) << "link " << k;
+    EXPECT_EQ(s.peak_tension, r.peak_tension) << "link " << k;
+    EXPECT_EQ(s.peak_penetration, r.peak_penetration) << "link " << k;
+    EXPECT_EQ(s.peak_opening, r.peak_opening) << "link " << k;
+    EXPECT_EQ(s.final_force, r.final_force) << "link " << k;
+    EXPECT_EQ(s.final_deformation, r.final_deformation) << "link " << k;
+    const double scale = 1e6 * 0.02 * 2000;  // |F| |d delta| summed over the steps
+    for (const auto& [got, expected] :
+         {std::pair{s.impulse, r.impulse}, std::pair{s.work, r.work},
+          std::pair{s.engagement_work, r.engagement_work},
+          std::pair{s.finished_created_energy, r.finished_created_energy}})
+      worst = std::max(worst, std::abs(got - expected) / scale);
+  }
+  std::cout << "largest difference of a sum, relative to its scale: " << worst << "\n";
+  EXPECT_LT(worst, 1e-14);
+  EXPECT_TRUE(reference[1].engaged_at_start || reference[1].impacts > 1);
 }
 
 }  // namespace
