@@ -9,7 +9,9 @@ namespace {
 // A sum read as the summaries have always written it: +0, never -0, where it vanishes.
 double plus_zero(double sum) { return 0.0 + sum; }
 
-// A sum of terms, so read.
+// A sum of terms, so read. For a joint's movement and plan rotation (a skewed deck's corner: many
+// terms) value_of's loop, which GCC may compile as products then sums, not fused as TermSums
+// forms its longer sums: kept, so their bits stay.
 double sum_of(const std::vector<Term>& terms, const Vector& v) {
   return plus_zero(model::value_of(terms, v));
 }
@@ -104,8 +106,6 @@ JointMonitors::JointMonitors(std::vector<Where> joints, GroundAcceleration& grou
       at.girder = displacement_sums_.add(w.girder_x);
       at.seat = displacement_sums_.add(w.seat_x);
     }
-    at.movement = displacement_sums_.add(w.movement);
-    at.plan_rotation = displacement_sums_.add(w.plan_rotation);
     at.girder_acceleration = acceleration_sums_.add(w.girder_x);
   }
   displacements_.resize(displacement_sums_.size());
@@ -126,10 +126,10 @@ void JointMonitors::record(const integrators::State& state) {
     p.residual_opening = -closing;
     double movement = 0.0;
     if (w.movement.empty()) movement = displacements_[at.girder] - displacements_[at.seat];
-    movement += plus_zero(displacements_[at.movement]);
+    movement += sum_of(w.movement, state.displacement);
     p.peak_seat_movement = std::max(p.peak_seat_movement, std::abs(movement));
     p.peak_plan_rotation =
-        std::max(p.peak_plan_rotation, std::abs(plus_zero(displacements_[at.plan_rotation])));
+        std::max(p.peak_plan_rotation, std::abs(sum_of(w.plan_rotation, state.displacement)));
     // A fixed girder DOF's acceleration is the ground's own.
     const double acceleration = w.girder_x.empty()
                                     ? ground_.absolute(state, w.girder_x, w.girder, 0)

@@ -101,7 +101,7 @@ class JointMonitors : public Observer {
  private:
   // Where each joint's readings are in displacements_ and accelerations_.
   struct Places {
-    std::size_t girder = 0, seat = 0, movement = 0, plan_rotation = 0, girder_acceleration = 0;
+    std::size_t girder = 0, seat = 0, girder_acceleration = 0;
   };
   std::vector<Where> joints_;
   GroundAcceleration& ground_;

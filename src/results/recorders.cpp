@@ -187,6 +187,8 @@ LinkSummaries::LinkSummaries(std::vector<Index> normal_rows,
     any_shear_ = true;
   }
   const std::size_t count = rows_.size();
+  for (std::size_t k = 1; k < count; ++k)
+    contiguous_rows_ = contiguous_rows_ && rows_[k] == rows_[k - 1] + 1;
   for (std::vector<double>* column :
        {&running_.force, &running_.penetration, &running_.previous_force,
         &running_.previous_penetration, &running_.average_force, &running_.peak_force,
@@ -294,8 +296,24 @@ void LinkSummaries::record_peaks(double time) {
               r.peak_opening.data());
 }
 
+namespace {
+
+// Whether any link's force went from 0 to not 0 or back: one vectorised pass, so the steps
+// without such an event (nearly all) skip the loop with its branches.
+bool any_engagement_changed(std::size_t count, const double* __restrict__ force,
+                            const double* __restrict__ previous_force) {
+  int changed = 0;
+  for (std::size_t k = 0; k < count; ++k)
+    changed |= static_cast<int>(force[k] != 0.0) ^ static_cast<int>(previous_force[k] != 0.0);
+  return changed != 0;
+}
+
+}  // namespace
+
 void LinkSummaries::record_engagements(double time) {
   Running& r = running_;
+  if (started_ && !any_engagement_changed(rows_.size(), r.force.data(), r.previous_force.data()))
+    return;
   for (std::size_t k = 0; k < rows_.size(); ++k) {
     const bool contact = r.force[k] != 0.0;
     const bool was_in_contact = started_ && r.previous_force[k] != 0.0;
@@ -318,9 +336,14 @@ void LinkSummaries::record(const integrators::State& state) {
   const std::size_t count = rows_.size();
   r.force.swap(r.previous_force);
   r.penetration.swap(r.previous_penetration);
-  for (std::size_t k = 0; k < count; ++k) {
-    r.force[k] = state.link_force[rows_[k]];
-    r.penetration[k] = state.link_penetration[rows_[k]];
+  if (contiguous_rows_ && count > 0) {
+    std::copy_n(state.link_force.data() + rows_[0], count, r.force.begin());
+    std::copy_n(state.link_penetration.data() + rows_[0], count, r.penetration.begin());
+  } else {
+    for (std::size_t k = 0; k < count; ++k) {
+      r.force[k] = state.link_force[rows_[k]];
+      r.penetration[k] = state.link_penetration[rows_[k]];
+    }
   }
   if (started_) accumulate(state.time - previous_time_);
   record_engagements(state.time);

@@ -245,6 +245,7 @@ class LinkSummaries : public Observer {
   std::vector<std::size_t> step_force_links_;   // k whose force is its step's average
   Running running_;
   bool any_shear_ = false;
+  bool contiguous_rows_ = true;  // rows_ one after the other (no shear rows between): copied
   integrators::State previous_;  // kept only for the shear rows
   double previous_time_ = 0.0;
   bool started_ = false;
