@@ -9,9 +9,7 @@ namespace {
 // A sum read as the summaries have always written it: +0, never -0, where it vanishes.
 double plus_zero(double sum) { return 0.0 + sum; }
 
-// A sum of terms, so read. For a joint's movement and plan rotation (a skewed deck's corner: many
-// terms) value_of's loop, which GCC may compile as products then sums, not fused as TermSums
-// forms its longer sums: kept, so their bits stay.
+// A sum of terms, so read.
 double sum_of(const std::vector<Term>& terms, const Vector& v) {
   return plus_zero(model::value_of(terms, v));
 }
@@ -98,43 +96,24 @@ void DriftMonitors::record(const integrators::State& state) {
   }
 }
 
-JointMonitors::JointMonitors(std::vector<Where> joints, GroundAcceleration& ground)
-    : joints_(std::move(joints)), ground_(ground), peaks_(joints_.size()) {
-  for (const Where& w : joints_) {
-    Places& at = places_.emplace_back();
-    if (w.movement.empty()) {
-      at.girder = displacement_sums_.add(w.girder_x);
-      at.seat = displacement_sums_.add(w.seat_x);
-    }
-    at.girder_acceleration = acceleration_sums_.add(w.girder_x);
-  }
-  displacements_.resize(displacement_sums_.size());
-  accelerations_.resize(acceleration_sums_.size());
-}
-
 void JointMonitors::record(const integrators::State& state) {
-  if (joints_.empty()) return;
-  displacement_sums_.evaluate(state.displacement, displacements_.data());
-  acceleration_sums_.evaluate(state.acceleration, ground_.frame(state.time), accelerations_.data());
   for (std::size_t k = 0; k < joints_.size(); ++k) {
     const Where& w = joints_[k];
-    const Places& at = places_[k];
     const double closing = state.link_penetration[w.link_row] + w.gap;
     JointPeak& p = peaks_[k];
     p.peak_closing = std::max(p.peak_closing, closing);
     p.peak_opening = std::max(p.peak_opening, -closing);
     p.residual_opening = -closing;
     double movement = 0.0;
-    if (w.movement.empty()) movement = displacements_[at.girder] - displacements_[at.seat];
+    if (w.movement.empty())
+      movement = model::value_of(w.girder_x, state.displacement) -
+                 model::value_of(w.seat_x, state.displacement);
     movement += sum_of(w.movement, state.displacement);
     p.peak_seat_movement = std::max(p.peak_seat_movement, std::abs(movement));
     p.peak_plan_rotation =
         std::max(p.peak_plan_rotation, std::abs(sum_of(w.plan_rotation, state.displacement)));
-    // A fixed girder DOF's acceleration is the ground's own.
-    const double acceleration = w.girder_x.empty()
-                                    ? ground_.absolute(state, w.girder_x, w.girder, 0)
-                                    : accelerations_[at.girder_acceleration];
-    p.peak_girder_acceleration = std::max(p.peak_girder_acceleration, std::abs(acceleration));
+    p.peak_girder_acceleration = std::max(
+        p.peak_girder_acceleration, std::abs(ground_.absolute(state, w.girder_x, w.girder, 0)));
   }
 }
 

@@ -94,21 +94,15 @@ class JointMonitors : public Observer {
     std::vector<Term> movement = {};
     std::vector<Term> plan_rotation = {};  // theta_z of the girder less the seat's (3-D, z up)
   };
-  JointMonitors(std::vector<Where> joints, GroundAcceleration& ground);
+  JointMonitors(std::vector<Where> joints, GroundAcceleration& ground)
+      : joints_(std::move(joints)), ground_(ground), peaks_(joints_.size()) {}
   void record(const integrators::State& state) override;
   const std::vector<JointPeak>& peaks() const { return peaks_; }
 
  private:
-  // Where each joint's readings are in displacements_ and accelerations_.
-  struct Places {
-    std::size_t girder = 0, seat = 0, girder_acceleration = 0;
-  };
   std::vector<Where> joints_;
   GroundAcceleration& ground_;
   std::vector<JointPeak> peaks_;
-  std::vector<Places> places_;
-  TermSums displacement_sums_, acceleration_sums_;
-  std::vector<double> displacements_, accelerations_;  // their values at the step
 };
 
 }  // namespace pound::results

@@ -172,14 +172,16 @@ Table EnvelopeRecorder::table() const {
 }
 
 void LinkSummaries::set_step_forces(const std::vector<char>& by_row) {
-  step_force_links_.clear();
   for (std::size_t k = 0; k < rows_.size(); ++k)
-    if (by_row[static_cast<std::size_t>(rows_[k])]) step_force_links_.push_back(k);
+    step_forces_[k] = by_row[static_cast<std::size_t>(rows_[k])];
 }
 
 LinkSummaries::LinkSummaries(std::vector<Index> normal_rows,
                              const std::vector<ShearRows>& shear_rows)
-    : rows_(std::move(normal_rows)), shear_rows_(shear_rows), summaries_(rows_.size()) {
+    : rows_(std::move(normal_rows)),
+      shear_rows_(shear_rows),
+      summaries_(rows_.size()),
+      step_forces_(rows_.size(), 0) {
   shear_rows_.resize(rows_.size());
   for (std::size_t k = 0; k < rows_.size(); ++k) {
     if (shear_rows_[k].count == 0) continue;
@@ -187,11 +189,9 @@ LinkSummaries::LinkSummaries(std::vector<Index> normal_rows,
     any_shear_ = true;
   }
   const std::size_t count = rows_.size();
-  for (std::size_t k = 1; k < count; ++k)
-    contiguous_rows_ = contiguous_rows_ && rows_[k] == rows_[k - 1] + 1;
   for (std::vector<double>* column :
        {&running_.force, &running_.penetration, &running_.previous_force,
-        &running_.previous_penetration, &running_.average_force, &running_.peak_force,
+        &running_.previous_penetration, &running_.peak_force,
         &running_.peak_tension, &running_.peak_penetration, &running_.peak_opening,
         &running_.impulse, &running_.work, &running_.engagement_work})
     column->assign(count, 0.0);
@@ -248,15 +248,19 @@ void LinkSummaries::record_shear(const integrators::State& state, std::size_t k)
 
 namespace {
 
-// Element by element, without branches, the arrays unaliased (as parameters, so GCC knows it):
-// the loops vectorise.
-void add_step_work(std::size_t count, double dt, const double* __restrict__ average,
+// Element by element, without branches (both averages formed, one kept), the arrays unaliased
+// (as parameters, so GCC knows it): the loops vectorise. The impulse and work by the trapezoidal
+// rule, or the rectangle rule for a step force.
+void add_step_work(std::size_t count, double dt, const double* __restrict__ force,
+                   const double* __restrict__ previous_force, const char* __restrict__ step_force,
                    const double* __restrict__ penetration,
                    const double* __restrict__ previous_penetration, double* __restrict__ impulse,
                    double* __restrict__ work, double* __restrict__ engagement_work) {
   for (std::size_t k = 0; k < count; ++k) {
-    impulse[k] += average[k] * dt;
-    const double step_work = average[k] * (penetration[k] - previous_penetration[k]);
+    const double trapezoid = 0.5 * (force[k] + previous_force[k]);
+    const double average = step_force[k] ? force[k] : trapezoid;
+    impulse[k] += average * dt;
+    const double step_work = average * (penetration[k] - previous_penetration[k]);
     work[k] += step_work;
     engagement_work[k] += step_work;
   }
@@ -275,29 +279,6 @@ void raise_peaks(std::size_t count, double time, const double* __restrict__ forc
   }
 }
 
-}  // namespace
-
-// Impulse and work by the trapezoidal rule (the rectangle rule for a step force).
-void LinkSummaries::accumulate(double dt) {
-  Running& r = running_;
-  const std::size_t count = rows_.size();
-  for (std::size_t k = 0; k < count; ++k)
-    r.average_force[k] = 0.5 * (r.force[k] + r.previous_force[k]);
-  for (const std::size_t k : step_force_links_) r.average_force[k] = r.force[k];
-  add_step_work(count, dt, r.average_force.data(), r.penetration.data(),
-                r.previous_penetration.data(), r.impulse.data(), r.work.data(),
-                r.engagement_work.data());
-}
-
-void LinkSummaries::record_peaks(double time) {
-  Running& r = running_;
-  raise_peaks(rows_.size(), time, r.force.data(), r.penetration.data(), r.last_contact.data(),
-              r.peak_force.data(), r.peak_tension.data(), r.peak_penetration.data(),
-              r.peak_opening.data());
-}
-
-namespace {
-
 // Whether any link's force went from 0 to not 0 or back: one vectorised pass, so the steps
 // without such an event (nearly all) skip the loop with its branches.
 bool any_engagement_changed(std::size_t count, const double* __restrict__ force,
@@ -312,8 +293,6 @@ bool any_engagement_changed(std::size_t count, const double* __restrict__ force,
 
 void LinkSummaries::record_engagements(double time) {
   Running& r = running_;
-  if (started_ && !any_engagement_changed(rows_.size(), r.force.data(), r.previous_force.data()))
-    return;
   for (std::size_t k = 0; k < rows_.size(); ++k) {
     const bool contact = r.force[k] != 0.0;
     const bool was_in_contact = started_ && r.previous_force[k] != 0.0;
@@ -336,18 +315,19 @@ void LinkSummaries::record(const integrators::State& state) {
   const std::size_t count = rows_.size();
   r.force.swap(r.previous_force);
   r.penetration.swap(r.previous_penetration);
-  if (contiguous_rows_ && count > 0) {
-    std::copy_n(state.link_force.data() + rows_[0], count, r.force.begin());
-    std::copy_n(state.link_penetration.data() + rows_[0], count, r.penetration.begin());
-  } else {
-    for (std::size_t k = 0; k < count; ++k) {
-      r.force[k] = state.link_force[rows_[k]];
-      r.penetration[k] = state.link_penetration[rows_[k]];
-    }
+  for (std::size_t k = 0; k < count; ++k) {
+    r.force[k] = state.link_force[rows_[k]];
+    r.penetration[k] = state.link_penetration[rows_[k]];
   }
-  if (started_) accumulate(state.time - previous_time_);
-  record_engagements(state.time);
-  record_peaks(state.time);
+  if (started_)
+    add_step_work(count, state.time - previous_time_, r.force.data(), r.previous_force.data(),
+                  step_forces_.data(), r.penetration.data(), r.previous_penetration.data(),
+                  r.impulse.data(), r.work.data(), r.engagement_work.data());
+  if (!started_ || any_engagement_changed(count, r.force.data(), r.previous_force.data()))
+    record_engagements(state.time);
+  raise_peaks(count, state.time, r.force.data(), r.penetration.data(), r.last_contact.data(),
+              r.peak_force.data(), r.peak_tension.data(), r.peak_penetration.data(),
+              r.peak_opening.data());
   if (any_shear_) {
     for (std::size_t k = 0; k < count; ++k)
       if (summaries_[k].shear) record_shear(state, k);

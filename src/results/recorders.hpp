@@ -227,25 +227,21 @@ class LinkSummaries : public Observer {
   // vectorises: the bridge's 20 links cost 1,500 instructions a step as rows of LinkSummary.
   struct Running {
     std::vector<double> force, penetration, previous_force, previous_penetration;
-    std::vector<double> average_force;  // over the step: trapezoid, or the step force
     std::vector<double> peak_force, peak_tension, peak_penetration, peak_opening;
     std::vector<double> impulse, work, engagement_work, last_contact;
   };
   // The shear's resultant |x| over its rows.
   double resultant(const Vector& values, std::size_t k) const;
   void record_shear(const integrators::State& state, std::size_t k);
-  void accumulate(double dt);
-  void record_peaks(double time);
   // Engagements begun or ended this step (force from or to 0): counts and created energy.
   void record_engagements(double time);
 
   std::vector<Index> rows_;
   std::vector<ShearRows> shear_rows_;
   mutable std::vector<LinkSummary> summaries_;  // the rarely written fields live here
-  std::vector<std::size_t> step_force_links_;   // k whose force is its step's average
+  std::vector<char> step_forces_;               // by summary
   Running running_;
   bool any_shear_ = false;
-  bool contiguous_rows_ = true;  // rows_ one after the other (no shear rows between): copied
   integrators::State previous_;  // kept only for the shear rows
   double previous_time_ = 0.0;
   bool started_ = false;
