@@ -16,6 +16,10 @@ class BandedLdlt {
   Index size() const { return size_; }
   Index bandwidth() const { return bandwidth_; }
   void solve(const Vector& rhs, Vector& solution) const;
+  // The factors A = L D L^T: lower()(k, i) = L(i, i - k - 1) for k < bandwidth (column i holds
+  // row i of L), and 1 / D(i).
+  const Matrix& lower() const { return lower_; }
+  const Vector& inverse_pivots() const { return inverse_pivot_; }
 
   // Half-bandwidth of a symmetric sparse matrix: max |i - j| over its entries.
   static Index bandwidth_of(const Eigen::SparseMatrix<double>& matrix);
@@ -23,10 +27,12 @@ class BandedLdlt {
  private:
   template <Index Band>
   void substitute(const double* rhs, double* x) const;
+  template <Index Band>
+  void substitute_in_registers(const double* rhs, double* x) const;
 
   Index size_;
   Index bandwidth_;
-  // lower_(k, i) = L(i, i - k - 1) for k < b; stored column by row so a row is contiguous.
+  // lower_(k, i) = L(i, i - k - 1) for k < b; stored by column, so that a row of L is contiguous.
   Matrix lower_;
   Vector inverse_pivot_;  // 1 / D(i)
 };
