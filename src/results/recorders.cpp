@@ -191,9 +191,9 @@ LinkSummaries::LinkSummaries(std::vector<Index> normal_rows,
   const std::size_t count = rows_.size();
   for (std::vector<double>* column :
        {&running_.force, &running_.penetration, &running_.previous_force,
-        &running_.previous_penetration, &running_.peak_force,
-        &running_.peak_tension, &running_.peak_penetration, &running_.peak_opening,
-        &running_.impulse, &running_.work, &running_.engagement_work})
+        &running_.previous_penetration, &running_.peak_force, &running_.peak_tension,
+        &running_.peak_penetration, &running_.peak_opening, &running_.impulse, &running_.work,
+        &running_.engagement_work})
     column->assign(count, 0.0);
   running_.last_contact.assign(count, -1.0);
 }

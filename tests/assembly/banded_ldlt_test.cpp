@@ -93,8 +93,7 @@ TEST(BandedLdlt, SubstitutionFusesEachRowsProductsFarthestFirst) {
       }
       for (Index i = 0; i < n; ++i) {
         ++entries;
-        const bool same =
-            x[i] == reference[i] && std::signbit(x[i]) == std::signbit(reference[i]);
+        const bool same = x[i] == reference[i] && std::signbit(x[i]) == std::signbit(reference[i]);
         unequal += !same;
         EXPECT_TRUE(same) << "bandwidth " << b << ", n = " << n << ", x[" << i << "] = " << x[i]
                           << ", written out " << reference[i];
