@@ -116,10 +116,10 @@ void BandedLdlt::substitute(const double* rhs, double* x) const {
 // x[i + k + 1] back). The products farthest first: a row waits for the one before it only for
 // its last multiply-add, and through a register; a store and a load of x[i - 1] added the
 // store-to-load forwarding to every row's wait (the bridge's substitution: 13 % -> 8 % of its
-// cycles). The same operations in the same order as substitute's own loops.
+// cycles). The same operations in the same order as substitute's own loops; rhs and x may be
+// the same array, as there.
 template <Index Band>
-void BandedLdlt::substitute_in_registers(const double* __restrict__ rhs,
-                                         double* __restrict__ x) const {
+void BandedLdlt::substitute_in_registers(const double* rhs, double* x) const {
   const Index n = size_;
   const double* __restrict__ inv_d = inverse_pivot_.data();
   const double* __restrict__ lower = lower_.data();

@@ -79,6 +79,9 @@ TEST(BandedLdlt, SubstitutionFusesEachRowsProductsFarthestFirst) {
       for (Index i = 0; i < n; i += 3) rhs[i] = i % 2 ? -0.0 : 0.0;  // signed zeros kept
       Vector x(n), reference(n);
       solver.solve(rhs, x);
+      Vector in_place = rhs;  // the right-hand side overwritten by the solution: the same bits
+      solver.solve(in_place, in_place);
+      EXPECT_TRUE(in_place.cwiseEqual(x).all()) << "bandwidth " << b << ", n = " << n;
       for (Index i = 0; i < n; ++i) {
         double value = rhs[i];
         for (Index k = std::min(i, b) - 1; k >= 0; --k)
