@@ -83,6 +83,36 @@ void BandedLdlt::solve(const Vector& rhs, Vector& solution) const {
   }
 }
 
+namespace {
+
+// Row i of the forward pass from the x already in memory: rhs[i] less its `terms` nearest
+// products L(i, i - k - 1) x[i - k - 1], farthest first, each fused (row i of L at lower + i b).
+double forward_row(const double* lower, Index b, const double* rhs, const double* x, Index i,
+                   Index terms) {
+  double value = rhs[i];
+  for (Index k = terms - 1; k >= 0; --k)
+    value = multiply_add(-lower[i * b + k], x[i - k - 1], value);
+  return value;
+}
+
+// Row i of the back pass: x[i] / D(i) less its `terms` products L(i + k + 1, i) x[i + k + 1].
+double back_row(const double* lower, Index b, const double* inv_d, const double* x, Index i,
+                Index terms) {
+  double value = x[i] * inv_d[i];
+  for (Index k = terms - 1; k >= 0; --k)
+    value = multiply_add(-lower[(i + k + 1) * b + k], x[i + k + 1], value);
+  return value;
+}
+
+// The newest value in front, the oldest dropped.
+template <std::size_t Size>
+void push(std::array<double, Size>& window, double value) {
+  for (std::size_t k = Size - 1; k > 0; --k) window[k] = window[k - 1];
+  window[0] = value;
+}
+
+}  // namespace
+
 // Forward and back substitution. Each row's sum starts from its right-hand side and takes its
 // products farthest first, each fused explicitly (multiply_add): left to itself GCC vectorised
 // some of a row's products and subtracted them apart, so the bits depended on the band and on the
@@ -91,44 +121,28 @@ void BandedLdlt::solve(const Vector& rhs, Vector& solution) const {
 template <Index Band>
 void BandedLdlt::substitute(const double* rhs, double* x) const {
   const Index n = size_, b = Band > 0 ? Band : bandwidth_;
-  const double* inv_d = inverse_pivot_.data();
-  const double* lower = lower_.data();  // row i of L at lower + i * b
   if constexpr (Band > 0) {
     if (n > Band) return substitute_in_registers<Band>(rhs, x);
   }
-  for (Index i = 0; i < n; ++i) {
-    double value = rhs[i];
-    const double* row = lower + i * b;
-    for (Index k = std::min(i, b) - 1; k >= 0; --k)
-      value = multiply_add(-row[k], x[i - k - 1], value);
-    x[i] = value;
-  }
-  for (Index i = n - 1; i >= 0; --i) {
-    double value = x[i] * inv_d[i];
-    for (Index k = std::min(b, n - i - 1) - 1; k >= 0; --k)
-      value = multiply_add(-lower[(i + k + 1) * b + k], x[i + k + 1], value);
-    x[i] = value;
-  }
+  const double* inv_d = inverse_pivot_.data();
+  const double* lower = lower_.data();
+  for (Index i = 0; i < n; ++i) x[i] = forward_row(lower, b, rhs, x, i, std::min(i, b));
+  for (Index i = n - 1; i >= 0; --i) x[i] = back_row(lower, b, inv_d, x, i, std::min(b, n - i - 1));
 }
 
-// substitute's loops for n > Band, the rows past the first (forward) and before the last (back)
-// Band reading the previous Band values from `window` (window[k]: x[i - k - 1] forward,
-// x[i + k + 1] back). The products farthest first: a row waits for the one before it only for
-// its last multiply-add, and through a register; a store and a load of x[i - 1] added the
-// store-to-load forwarding to every row's wait (the bridge's substitution: 13 % -> 8 % of its
-// cycles). The same operations in the same order as substitute's own loops; rhs and x may be
-// the same array, as there.
+// substitute's loops for n > Band: the rows with all Band terms (past the first Band forward,
+// before the last Band back) read the previous Band values from `window` (window[k]: x[i - k - 1]
+// forward, x[i + k + 1] back), so a row waits for the one before it only for its last
+// multiply-add, and through a register; a store and a load of x[i - 1] added the store-to-load
+// forwarding to every row's wait (the bridge's substitution: 13 % -> 8 % of its cycles). The same
+// operations in the same order as substitute's own loops; rhs and x may be the same array, as
+// there.
 template <Index Band>
 void BandedLdlt::substitute_in_registers(const double* rhs, double* x) const {
   const Index n = size_;
   const double* __restrict__ inv_d = inverse_pivot_.data();
   const double* __restrict__ lower = lower_.data();
-  for (Index i = 0; i < Band; ++i) {
-    double value = rhs[i];
-    for (Index k = i - 1; k >= 0; --k)
-      value = multiply_add(-lower[i * Band + k], x[i - k - 1], value);
-    x[i] = value;
-  }
+  for (Index i = 0; i < Band; ++i) x[i] = forward_row(lower, Band, rhs, x, i, i);
   std::array<double, Band> window;
   for (Index k = 0; k < Band; ++k) window[k] = x[Band - k - 1];
   for (Index i = Band; i < n; ++i) {
@@ -136,23 +150,16 @@ void BandedLdlt::substitute_in_registers(const double* rhs, double* x) const {
     double value = rhs[i];
     for (Index k = Band - 1; k >= 0; --k) value = multiply_add(-row[k], window[k], value);
     x[i] = value;
-    for (Index k = Band - 1; k > 0; --k) window[k] = window[k - 1];
-    window[0] = value;
+    push(window, value);
   }
-  for (Index i = n - 1; i >= n - Band; --i) {
-    double value = x[i] * inv_d[i];
-    for (Index k = n - i - 2; k >= 0; --k)
-      value = multiply_add(-lower[(i + k + 1) * Band + k], x[i + k + 1], value);
-    x[i] = value;
-  }
+  for (Index i = n - 1; i >= n - Band; --i) x[i] = back_row(lower, Band, inv_d, x, i, n - i - 1);
   for (Index k = 0; k < Band; ++k) window[k] = x[n - Band + k];
   for (Index i = n - Band - 1; i >= 0; --i) {
     double value = x[i] * inv_d[i];
     for (Index k = Band - 1; k >= 0; --k)
       value = multiply_add(-lower[(i + k + 1) * Band + k], window[k], value);
     x[i] = value;
-    for (Index k = Band - 1; k > 0; --k) window[k] = window[k - 1];
-    window[0] = value;
+    push(window, value);
   }
 }
 

@@ -219,7 +219,7 @@ class LinkSummaries : public Observer {
   // rule there, F_{n+1} dt and F_{n+1} d(delta), instead of the trapezoidal one.
   void set_step_forces(const std::vector<char>& by_row);
   void record(const integrators::State& state) override;
-  // Gathered from the running columns below when asked for.
+  // Gathered from the running columns below at each call: take it once, not per link.
   const std::vector<LinkSummary>& summaries() const;
 
  private:

@@ -566,11 +566,11 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
                  system.size(),
                  statistics,
                  analysis.adaptive};
+  const std::vector<results::LinkSummary>& link_summaries = observers.links().summaries();
   for (std::size_t k = 0; k < built.model.links.size(); ++k) {
     const model::Link& link = built.model.links[k];
     const links::LinkLaw& law = system.links().law(static_cast<Index>(k));
-    LinkResult result{link.id, law.name(), link.role(), observers.links().summaries()[k],
-                      link.rotational};
+    LinkResult result{link.id, law.name(), link.role(), link_summaries[k], link.rotational};
     result.viscous = law.viscous_part();
     result.passive_engagements =
         link.role() != links::LinkRole::spring && !(link.law && link.law->traits.inertia);
