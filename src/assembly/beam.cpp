@@ -92,16 +92,12 @@ model::ElementMass Beam::mass() const {
 std::span<const model::EndForce> Beam::end_force_names() const { return kEndForces; }
 
 Vector Beam::end_forces(const Vector& u) const {
-  Vector forces(6);
-  write_end_forces(u, forces.data());
-  return forces;
-}
-
-void Beam::write_end_forces(const Vector& u, double* forces) const {
   // K' (T u), each row of each product summed from 0 in column order (core/packets.hpp).
   std::array<double, 6> local_displacements;
   multiply_by_columns<6, 6>(rotation_.data(), u.data(), local_displacements.data());
-  multiply_by_columns<6, 6>(local_stiffness_.data(), local_displacements.data(), forces);
+  Vector forces(6);
+  multiply_by_columns<6, 6>(local_stiffness_.data(), local_displacements.data(), forces.data());
+  return forces;
 }
 
 // Local geometric stiffness on (v'_i, theta_i, v'_j, theta_j) (Przemieniecki 1968, chapter 15),

@@ -160,16 +160,12 @@ model::ElementMass Beam3d::mass() const {
 std::span<const model::EndForce> Beam3d::end_force_names() const { return kEndForces; }
 
 Vector Beam3d::end_forces(const Vector& u) const {
-  Vector forces(12);
-  write_end_forces(u, forces.data());
-  return forces;
-}
-
-void Beam3d::write_end_forces(const Vector& u, double* forces) const {
   // K' (T u), each row of each product summed from 0 in column order (core/packets.hpp).
   std::array<double, 12> local_displacements;
   multiply_by_columns<12, 12>(transformation_.data(), u.data(), local_displacements.data());
-  multiply_by_columns<12, 12>(local_stiffness_.data(), local_displacements.data(), forces);
+  Vector forces(12);
+  multiply_by_columns<12, 12>(local_stiffness_.data(), local_displacements.data(), forces.data());
+  return forces;
 }
 
 Matrix Beam3d::geometric_stiffness(const Vector& u, model::GeometricStiffness kind) const {

@@ -69,7 +69,6 @@ class Beam3d final : public model::Element {
   model::ElementMass mass() const override;
   std::span<const model::EndForce> end_force_names() const override;
   Vector end_forces(const Vector& u) const override;
-  void write_end_forces(const Vector& u, double* forces) const override;
   Matrix geometric_stiffness(const Vector& u, model::GeometricStiffness kind) const override;
 
   double length() const { return length_; }

@@ -15,6 +15,18 @@ std::vector<ElementDof> Element::dofs() const {
   return dofs;
 }
 
+Matrix end_force_map(const Element& element) {
+  const auto dofs = static_cast<Index>(element.dofs().size());
+  Matrix map(static_cast<Index>(element.end_force_names().size()), dofs);
+  Vector unit = Vector::Zero(dofs);
+  for (Index j = 0; j < dofs; ++j) {
+    unit[j] = 1.0;
+    map.col(j) = element.end_forces(unit);
+    unit[j] = 0.0;
+  }
+  return map;
+}
+
 Coordinates to_coordinates(std::span<const double> components) {
   Coordinates coordinates{};
   std::copy_n(components.begin(), std::min(components.size(), coordinates.size()),

@@ -86,15 +86,10 @@ class Element {
   virtual ElementMass mass() const = 0;
 
   // Its end forces (none when it reports none), and their values for displacements u over
-  // dofs(): in the element's local axes, units of force (moments force x length).
+  // dofs(): in the element's local axes, units of force (moments force x length). Linear in u,
+  // as the element is elastic (end_force_map).
   virtual std::span<const EndForce> end_force_names() const = 0;
   virtual Vector end_forces(const Vector& u) const = 0;
-  // The same into forces[0, end_force_names().size()), without allocating where the element can
-  // (the recorders ask at every step).
-  virtual void write_end_forces(const Vector& u, double* forces) const {
-    const Vector values = end_forces(u);
-    std::copy(values.begin(), values.end(), forces);
-  }
 
   // Its geometric stiffness over dofs() in global axes under the axial force it carries at
   // displacements u (over dofs()); empty for an element without one (a quad: plane continua
@@ -110,6 +105,11 @@ class Element {
   std::vector<Index> nodes_;
   std::optional<RayleighDamping> damping_;
 };
+
+// E with end_forces(u) = E u, (end forces) x dofs(): column j the end forces of a unit
+// displacement of DOF j, so each entry is what end_forces forms for it. The recorders read end
+// forces at every step as rows of E (only the ones asked for) over the DOFs.
+Matrix end_force_map(const Element& element);
 
 // Distance between two points of a scene of `dimension` 1 (along x only), 2 or 3.
 double distance(const Coordinates& a, const Coordinates& b, int dimension);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "model/direction.hpp"
 
@@ -75,25 +76,48 @@ void NodeQuantities::take(const integrators::State& state, double* values) const
     }
 }
 
+namespace {
+// Row `force` of `map` (end forces x the element's DOFs) over the equations: each DOF's readings
+// weighted by the row's entry, the terms on one equation added, in the equations' order.
+std::vector<model::DofTerm> end_force_terms(const Matrix& map, std::size_t force,
+                                            const std::vector<DofReading>& readings) {
+  std::map<Index, double> by_equation;
+  for (std::size_t j = 0; j < readings.size(); ++j) {
+    const double entry = map(static_cast<Index>(force), static_cast<Index>(j));
+    if (entry == 0.0) continue;
+    for (const model::DofTerm& term : readings[j])
+      by_equation[term.equation] += entry * term.coefficient;
+  }
+  std::vector<model::DofTerm> terms;
+  for (const auto& [equation, coefficient] : by_equation)
+    if (coefficient != 0.0) terms.push_back({equation, coefficient});
+  return terms;
+}
+}  // namespace
+
 ElementQuantities::ElementQuantities(std::vector<std::shared_ptr<const model::Element>> elements,
-                                     std::vector<std::vector<DofReading>> readings)
-    : elements_(std::move(elements)) {
-  for (std::size_t k = 0; k < elements_.size(); ++k) {
-    for (const model::EndForce& force : elements_[k]->end_force_names())
-      add(elements_[k]->id() + "." + std::string(force.name), force.dimension);
-    force_counts_.push_back(elements_[k]->end_force_names().size());
-    TermSums& dofs = dofs_.emplace_back();
-    for (const DofReading& reading : readings[k]) dofs.add(reading);
-    displacements_.emplace_back(static_cast<Index>(dofs.size()));
+                                     std::vector<std::vector<DofReading>> readings,
+                                     std::vector<std::vector<std::size_t>> wanted) {
+  for (std::size_t k = 0; k < elements.size(); ++k) {
+    const model::Element& element = *elements[k];
+    const std::span<const model::EndForce> names = element.end_force_names();
+    std::vector<std::size_t> forces;
+    if (wanted.empty())
+      for (std::size_t s = 0; s < names.size(); ++s) forces.push_back(s);
+    const std::vector<std::size_t>& taken = wanted.empty() ? forces : wanted[k];
+    const Matrix map = model::end_force_map(element);
+    for (const std::size_t s : taken) {
+      add(element.id() + "." + std::string(names[s].name), names[s].dimension);
+      forces_.add(end_force_terms(map, s, readings[k]));
+    }
   }
 }
 
 void ElementQuantities::take(const integrators::State& state, double* values) const {
-  for (std::size_t k = 0; k < elements_.size(); ++k) {
-    dofs_[k].evaluate(state.displacement, displacements_[k].data());
-    elements_[k]->write_end_forces(displacements_[k], values);
-    values += force_counts_[k];
-  }
+  forces_.evaluate(state.displacement, values);
+  // A sum of products that are all -0 (negative entries on zero displacements) is -0; the
+  // elements sum theirs from +0, which x + 0 gives without changing any other value.
+  for (std::size_t s = 0; s < forces_.size(); ++s) values[s] += 0.0;
 }
 
 HistoryRecorder::HistoryRecorder(std::string file, std::unique_ptr<Quantities> quantities,

@@ -98,16 +98,18 @@ class NodeQuantities final : public Quantities {
 // the element's axes, as the nodes act on it, without damping or second-order terms.
 class ElementQuantities final : public Quantities {
  public:
-  // readings[k]: each of elements[k]'s dofs(), no terms where fixed.
+  // readings[k]: each of elements[k]'s dofs(), no terms where fixed. wanted[k]: the end forces
+  // taken of elements[k] (places in its end_force_names()), in that order; empty: all of every
+  // element's.
   ElementQuantities(std::vector<std::shared_ptr<const model::Element>> elements,
-                    std::vector<std::vector<DofReading>> readings);
+                    std::vector<std::vector<DofReading>> readings,
+                    std::vector<std::vector<std::size_t>> wanted = {});
   void take(const integrators::State& state, double* values) const override;
 
  private:
-  std::vector<std::shared_ptr<const model::Element>> elements_;
-  std::vector<TermSums> dofs_;                 // each element's dofs() as sums of equations
-  std::vector<std::size_t> force_counts_;      // each element's end forces
-  mutable std::vector<Vector> displacements_;  // scratch: each element's u_e
+  // Each end force as one sum over the equations: its row of the element's end force map
+  // (model::end_force_map) times the DOFs' readings, formed once.
+  TermSums forces_;
 };
 
 // A time history: columns time and the quantities, a row per sampled step; `units` name the

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <string_view>
 
 #include "assembly/beam_3d.hpp"
@@ -91,7 +92,8 @@ std::vector<SpectrumPlace> spectrum_places(const builder::BuiltModel& built,
 
 std::unique_ptr<Quantities> element_quantities(const builder::BuiltModel& built,
                                                const model::DofMap& dofs,
-                                               const std::vector<Index>& items) {
+                                               const std::vector<Index>& items,
+                                               std::vector<std::vector<std::size_t>> wanted = {}) {
   std::vector<std::shared_ptr<const model::Element>> elements;
   std::vector<std::vector<DofReading>> readings;
   for (Index item : items) {
@@ -100,7 +102,8 @@ std::unique_ptr<Quantities> element_quantities(const builder::BuiltModel& built,
     for (const model::ElementDof& dof : elements.back()->dofs())
       each.push_back(reading(dofs, dof.node, dof.direction));
   }
-  return std::make_unique<ElementQuantities>(std::move(elements), std::move(readings));
+  return std::make_unique<ElementQuantities>(std::move(elements), std::move(readings),
+                                             std::move(wanted));
 }
 
 std::unique_ptr<Recorder> make_recorder(const builder::BuiltModel& built,
@@ -334,33 +337,49 @@ RunObservers::RunObservers(const builder::BuiltModel& built,
     links_.set_step_forces(step_forces);
     energy_.set_step_forces(step_forces);
   }
+  // Each base element's shears and moments at end i (V_i in a plane, Vy_i and Vz_i in space;
+  // M likewise), read once a step however many monitors share it (a storey's x and y).
+  const auto is_shear = [](std::string_view name) {
+    return name == "V_i" || name == "Vy_i" || name == "Vz_i";
+  };
+  const auto is_moment = [](std::string_view name) {
+    return name == "M_i" || name == "My_i" || name == "Mz_i";
+  };
   std::vector<Index> elements;
-  std::size_t first = 0;
+  std::vector<std::vector<std::size_t>> wanted;
+  std::map<Index, std::size_t> first_place;  // of each base element's values in base_row_
+  std::size_t places = 0;
   for (const builder::DriftMonitor& m : built.drift_monitors) {
     if (!m.base_element) {
       base_rows_.emplace_back();
       continue;
     }
-    elements.push_back(*m.base_element);
-    const auto names =
-        built.model.elements[static_cast<std::size_t>(*m.base_element)]->end_force_names();
-    BaseRows rows;
-    for (std::size_t k = 0; k < names.size(); ++k) {
-      const std::string_view name = names[k].name;
-      if (name == "V_i" || name == "Vy_i" || name == "Vz_i") rows.shear.push_back(first + k);
-      if (name == "M_i" || name == "My_i" || name == "Mz_i") rows.moment.push_back(first + k);
+    const model::Element& element =
+        *built.model.elements[static_cast<std::size_t>(*m.base_element)];
+    const auto names = element.end_force_names();
+    std::vector<std::size_t> taken;
+    for (std::size_t k = 0; k < names.size(); ++k)
+      if (is_shear(names[k].name) || is_moment(names[k].name)) taken.push_back(k);
+    const auto [first, added] = first_place.try_emplace(*m.base_element, places);
+    if (added) {
+      elements.push_back(*m.base_element);
+      wanted.push_back(taken);
+      places += taken.size();
     }
-    const DriftWeights weights =
-        along_drift(*built.model.elements[static_cast<std::size_t>(*m.base_element)], m);
+    BaseRows rows;
+    for (std::size_t k = 0; k < taken.size(); ++k) {
+      const std::string_view name = names[taken[k]].name;
+      (is_shear(name) ? rows.shear : rows.moment).push_back(first->second + k);
+    }
+    const DriftWeights weights = along_drift(element, m);
     if (rows.shear.size() == 2 && rows.moment.size() == 2) {
       rows.shear_weights = weights.shear;
       rows.moment_weights = weights.moment;
     }
     base_rows_.push_back(rows);
-    first += names.size();
   }
   if (!elements.empty()) {
-    base_forces_ = element_quantities(built, system.dofs(), elements);
+    base_forces_ = element_quantities(built, system.dofs(), elements, std::move(wanted));
     base_row_.resize(base_forces_->names().size());
   }
 }

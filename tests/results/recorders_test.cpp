@@ -8,9 +8,12 @@
 #include <cmath>
 #include <cstdint>
 #include <iostream>
+#include <random>
 #include <utility>
 #include <vector>
 
+#include "assembly/beam.hpp"
+#include "assembly/beam_3d.hpp"
 #include "support/dof_readings.hpp"
 #include "support/vectors.hpp"
 
@@ -119,6 +122,116 @@ std::vector<double> kept_times(builder::OutputSampling sampling, double dt, int 
   for (std::size_t r = 0; r < table.values[0].size(); ++r)
     EXPECT_EQ(table.values[1][r], 10.0 * table.values[0][r]);  // rows stay whole
   return table.values[0];
+}
+
+// A 3-D column with rigid offsets on a skewed axis whose DOFs a rigid floor gives as two or
+// three equations (u_x = u_m - y theta, ...), and a plane beam with one DOF fixed.
+std::vector<std::shared_ptr<const model::Element>> test_elements() {
+  assembly::Beam3d::Section section;
+  section.youngs_modulus = 3.0e10;
+  section.shear_modulus = 1.25e10;
+  section.area = 0.36;
+  section.inertia_y = 0.0108;
+  section.inertia_z = 0.0075;
+  section.torsion = 0.012;
+  const assembly::Point3 bottom(0.4, -0.2, 0.0), top(0.9, 0.3, 3.5);
+  assembly::Beam::Section beam_section;
+  beam_section.youngs_modulus = 2.0e11;
+  beam_section.area = 0.02;
+  beam_section.inertia = 3.0e-4;
+  return {
+      std::make_shared<assembly::Beam3d>(
+          "column",
+          std::array<assembly::Beam3d::End, 2>{
+              {{0, bottom, {0.0, 0.0, 0.2}}, {1, top, {0.1, 0.0, -0.3}}}},
+          assembly::Point3(1.0, 0.2, 0.0), section, false, std::nullopt),
+      std::make_shared<assembly::Beam>(
+          "girder", std::array<model::ElementNode, 2>{{{2, {0.0, 0.0, 0.0}}, {3, {6.0, 0.8, 0.0}}}},
+          beam_section, false, std::nullopt)};
+}
+
+// Each element DOF over equations 0-19: one to three terms, or none (fixed).
+std::vector<std::vector<DofReading>> test_readings(std::mt19937& random) {
+  std::uniform_int_distribution<Index> equation(0, 19), terms(0, 3);
+  std::uniform_real_distribution<double> coefficient(-4.0, 4.0);
+  std::vector<std::vector<DofReading>> readings(2);
+  for (std::size_t k = 0; k < readings.size(); ++k)
+    for (int j = 0; j < (k == 0 ? 12 : 6); ++j) {
+      DofReading& reading = readings[k].emplace_back();
+      const Index count = j == 2 && k == 1 ? 0 : std::max<Index>(1, terms(random));
+      for (Index t = 0; t < count; ++t) reading.push_back({equation(random), coefficient(random)});
+    }
+  return readings;
+}
+
+TEST(ElementQuantities, EndForcesAreTheElementsOwnWithinRoundOffAndOnlyThoseAskedFor) {
+  // Each end force is read as one sum over the equations, its row of the element's end force map
+  // times the readings. Against the same quantity in long double from the element's map and
+  // each DOF's reading, and against the element's own end_forces(u_e): within a few units of
+  // round-off of the sum of the terms' magnitudes (the scale any ordering of the sum is exact
+  // to), over displacements with a large rigid part (cancellation).
+  std::mt19937 random(20261129);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const auto elements = test_elements();
+  double worst_map = 0.0, worst_element = 0.0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const auto readings = test_readings(random);
+    const ElementQuantities all(elements, readings);
+    ASSERT_EQ(all.names().size(), 18u);
+    EXPECT_EQ(all.names()[0], "column.N_i");
+    EXPECT_EQ(all.names()[12], "girder.N_i");
+    integrators::State state;
+    state.displacement = Vector(20);
+    const double rigid = trial % 2 == 0 ? 1.0 : 1.0e4;
+    for (Index e = 0; e < 20; ++e) state.displacement[e] = rigid + 1e-3 * unit(random);
+    std::vector<double> values(18);
+    all.take(state, values.data());
+    std::size_t place = 0;
+    for (std::size_t k = 0; k < elements.size(); ++k) {
+      const Matrix map = model::end_force_map(*elements[k]);
+      Vector element_u(map.cols());
+      for (Index j = 0; j < map.cols(); ++j)
+        element_u[j] =
+            model::value_of(readings[k][static_cast<std::size_t>(j)], state.displacement);
+      const Vector own = elements[k]->end_forces(element_u);
+      for (Index s = 0; s < map.rows(); ++s, ++place) {
+        long double exact = 0.0L, scale = 0.0L;
+        for (Index j = 0; j < map.cols(); ++j)
+          for (const model::DofTerm& term : readings[k][static_cast<std::size_t>(j)]) {
+            const long double product = static_cast<long double>(map(s, j)) * term.coefficient *
+                                        state.displacement[term.equation];
+            exact += product;
+            scale += std::abs(product);
+          }
+        const double margin = static_cast<double>(scale) + 1e-300;
+        worst_map =
+            std::max(worst_map, std::abs(values[place] - static_cast<double>(exact)) / margin);
+        worst_element = std::max(worst_element, std::abs(values[place] - own[s]) / margin);
+      }
+    }
+    // Only the end forces asked for, in the order asked: the same sums, so the same bits.
+    const ElementQuantities some(elements, readings, {{7, 1}, {}});
+    ASSERT_EQ(some.names(), (std::vector<std::string>{"column.Vy_j", "column.Vy_i"}));
+    std::vector<double> chosen(2);
+    some.take(state, chosen.data());
+    EXPECT_EQ(chosen[0], values[7]);
+    EXPECT_EQ(chosen[1], values[1]);
+  }
+  std::cout << "end forces against long double: " << worst_map
+            << " of the terms' magnitudes; against the element's own: " << worst_element << '\n';
+  EXPECT_LT(worst_map, 1e-15);
+  EXPECT_LT(worst_element, 1e-14);
+}
+
+TEST(ElementQuantities, AnUnloadedElementsEndForcesArePositiveZeros) {
+  // As the element's own products summed from 0: no -0 in a history or an envelope.
+  std::mt19937 random(7);
+  const ElementQuantities quantities(test_elements(), test_readings(random));
+  integrators::State state;
+  state.displacement = Vector::Zero(20);
+  std::vector<double> values(18, 1.0);
+  quantities.take(state, values.data());
+  for (const double value : values) EXPECT_TRUE(value == 0.0 && !std::signbit(value));
 }
 
 TEST(HistoryRecorder, KeepsEveryKthStepCountingTheStartAsStepZero) {
