@@ -47,6 +47,22 @@ BandedLdlt::BandedLdlt(const Eigen::SparseMatrix<double>& matrix)
   inverse_pivot_ = pivot.cwiseInverse();
 }
 
+BandedLdlt BandedLdlt::restricted(const std::vector<Index>& rows) const {
+  BandedLdlt part = *this;
+  const Index n = static_cast<Index>(rows.size()), b = bandwidth_;
+  part.size_ = n;
+  part.lower_ = Matrix::Zero(lower_.rows(), n);
+  part.inverse_pivot_.resize(n);
+  for (Index i = 0; i < n; ++i) {
+    const Index row = rows[static_cast<std::size_t>(i)];
+    part.inverse_pivot_[i] = inverse_pivot_[row];
+    for (Index k = 0; k < b && i - k - 1 >= 0; ++k)
+      if (const Index distance = row - rows[static_cast<std::size_t>(i - k - 1)]; distance <= b)
+        part.lower_(k, i) = lower_(distance - 1, row);
+  }
+  return part;
+}
+
 void BandedLdlt::solve(const Vector& rhs, Vector& solution) const {
   const Index n = size_, b = bandwidth_;
   solution.resize(n);
@@ -137,29 +153,116 @@ void BandedLdlt::substitute(const double* rhs, double* x) const {
 // forwarding to every row's wait (the bridge's substitution: 13 % -> 8 % of its cycles). The same
 // operations in the same order as substitute's own loops; rhs and x may be the same array, as
 // there.
+namespace {
+template <Index Band>
+class RegisterSweep {
+ public:
+  RegisterSweep(const Matrix& lower, const Vector& inverse_pivots, const double* rhs, double* x)
+      : lower_(lower.data()),
+        inv_d_(inverse_pivots.data()),
+        n_(inverse_pivots.size()),
+        rhs_(rhs),
+        x_(x) {}
+  Index size() const { return n_; }
+  // The first Band rows of the forward pass, from memory; then rows Band, Band + 1, ... in turn.
+  void begin_forward() {
+    for (Index i = 0; i < Band; ++i) x_[i] = forward_row(lower_, Band, rhs_, x_, i, i);
+    for (Index k = 0; k < Band; ++k) window_[k] = x_[Band - k - 1];
+  }
+  void forward(Index i) {
+    const double* row = lower_ + i * Band;
+    double value = rhs_[i];
+    for (Index k = Band - 1; k >= 0; --k) value = multiply_add(-row[k], window_[k], value);
+    x_[i] = value;
+    push(window_, value);
+  }
+  // The last Band rows of the back pass; then rows n - Band - 1, n - Band - 2, ... in turn.
+  void begin_back() {
+    for (Index i = n_ - 1; i >= n_ - Band; --i)
+      x_[i] = back_row(lower_, Band, inv_d_, x_, i, n_ - i - 1);
+    for (Index k = 0; k < Band; ++k) window_[k] = x_[n_ - Band + k];
+  }
+  void back(Index i) {
+    double value = x_[i] * inv_d_[i];
+    for (Index k = Band - 1; k >= 0; --k)
+      value = multiply_add(-lower_[(i + k + 1) * Band + k], window_[k], value);
+    x_[i] = value;
+    push(window_, value);
+  }
+
+ private:
+  const double* __restrict__ lower_;
+  const double* __restrict__ inv_d_;
+  Index n_;
+  const double* rhs_;
+  double* x_;
+  std::array<double, Band> window_;
+};
+}  // namespace
+
 template <Index Band>
 void BandedLdlt::substitute_in_registers(const double* rhs, double* x) const {
+  RegisterSweep<Band> sweep(lower_, inverse_pivot_, rhs, x);
   const Index n = size_;
-  const double* __restrict__ inv_d = inverse_pivot_.data();
-  const double* __restrict__ lower = lower_.data();
-  for (Index i = 0; i < Band; ++i) x[i] = forward_row(lower, Band, rhs, x, i, i);
-  std::array<double, Band> window;
-  for (Index k = 0; k < Band; ++k) window[k] = x[Band - k - 1];
-  for (Index i = Band; i < n; ++i) {
-    const double* row = lower + i * Band;
-    double value = rhs[i];
-    for (Index k = Band - 1; k >= 0; --k) value = multiply_add(-row[k], window[k], value);
-    x[i] = value;
-    push(window, value);
+  sweep.begin_forward();
+  for (Index i = Band; i < n; ++i) sweep.forward(i);
+  sweep.begin_back();
+  for (Index i = n - Band - 1; i >= 0; --i) sweep.back(i);
+}
+
+// Two sweeps, each row of one beside the same row of the other (back: counted from each end),
+// then the rest of the longer alone: each solution's operations are those of its own sweep.
+template <Index Band>
+void BandedLdlt::substitute_pair(const BandedLdlt& a, const double* rhs_a, double* x_a,
+                                 const BandedLdlt& b, const double* rhs_b, double* x_b) {
+  RegisterSweep<Band> first(a.lower_, a.inverse_pivot_, rhs_a, x_a);
+  RegisterSweep<Band> second(b.lower_, b.inverse_pivot_, rhs_b, x_b);
+  const Index n_a = a.size_, n_b = b.size_, common = std::min(n_a, n_b);
+  first.begin_forward();
+  second.begin_forward();
+  for (Index i = Band; i < common; ++i) {
+    first.forward(i);
+    second.forward(i);
   }
-  for (Index i = n - 1; i >= n - Band; --i) x[i] = back_row(lower, Band, inv_d, x, i, n - i - 1);
-  for (Index k = 0; k < Band; ++k) window[k] = x[n - Band + k];
-  for (Index i = n - Band - 1; i >= 0; --i) {
-    double value = x[i] * inv_d[i];
-    for (Index k = Band - 1; k >= 0; --k)
-      value = multiply_add(-lower[(i + k + 1) * Band + k], window[k], value);
-    x[i] = value;
-    push(window, value);
+  for (Index i = common; i < n_a; ++i) first.forward(i);
+  for (Index i = common; i < n_b; ++i) second.forward(i);
+  first.begin_back();
+  second.begin_back();
+  for (Index from_end = Band + 1; from_end <= common; ++from_end) {
+    first.back(n_a - from_end);
+    second.back(n_b - from_end);
+  }
+  for (Index i = n_a - common - 1; i >= 0; --i) first.back(i);
+  for (Index i = n_b - common - 1; i >= 0; --i) second.back(i);
+}
+
+void BandedLdlt::solve_pair(const BandedLdlt& a, const Vector& rhs_a, Vector& x_a,
+                            const BandedLdlt& b, const Vector& rhs_b, Vector& x_b) {
+  const Index band = a.bandwidth_;
+  if (band != b.bandwidth_ || band < 2 || band > 8 || a.size_ <= band || b.size_ <= band) {
+    a.solve(rhs_a, x_a);
+    b.solve(rhs_b, x_b);
+    return;
+  }
+  x_a.resize(a.size_);
+  x_b.resize(b.size_);
+  const double *r_a = rhs_a.data(), *r_b = rhs_b.data();
+  double *s_a = x_a.data(), *s_b = x_b.data();
+  switch (band) {
+    case 2:
+      return substitute_pair<2>(a, r_a, s_a, b, r_b, s_b);
+    case 3:
+      return substitute_pair<3>(a, r_a, s_a, b, r_b, s_b);
+    case 4:
+      return substitute_pair<4>(a, r_a, s_a, b, r_b, s_b);
+    case 5:
+      return substitute_pair<5>(a, r_a, s_a, b, r_b, s_b);
+    case 6:
+      return substitute_pair<6>(a, r_a, s_a, b, r_b, s_b);
+    case 7:
+      return substitute_pair<7>(a, r_a, s_a, b, r_b, s_b);
+    default:
+      return substitute_pair<8>(a, r_a, s_a, b, r_b, s_b);
   }
 }
 

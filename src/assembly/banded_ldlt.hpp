@@ -3,6 +3,7 @@
 // constant effective matrix of the linear part: factored once, solved every step in O(n b).
 // A chain of rods numbered in node order has b = 1 per DOF direction.
 #include <Eigen/SparseCore>
+#include <vector>
 
 #include "core/types.hpp"
 
@@ -12,10 +13,23 @@ class BandedLdlt {
  public:
   // Throws std::domain_error naming the equation whose pivot is not positive.
   explicit BandedLdlt(const Eigen::SparseMatrix<double>& matrix);
+  // The factors of the equations `rows` (increasing) alone, in this band, when no entry of L
+  // joins them to the others (one or more connected components of the matrix): L's entries
+  // between them as they are, zeros where their distance grew past the band. A row's sum then
+  // takes the same products in the same order but for zeros, so solutions keep their bits.
+  // (Factoring those equations' matrix anew can round otherwise: GCC vectorises the factor's
+  // product loops differently for another bandwidth.)
+  BandedLdlt restricted(const std::vector<Index>& rows) const;
 
   Index size() const { return size_; }
   Index bandwidth() const { return bandwidth_; }
   void solve(const Vector& rhs, Vector& solution) const;
+  // a x_a = rhs_a and b x_b = rhs_b, each solution to the bit as solve() gives it. With the same
+  // bandwidth (2 to 8) and both larger than it, the two substitutions go row by row side by side,
+  // so that each one's chain of rows (a row waits for the one before it) fills the other's waits:
+  // two structures that only links join (buildings that pound) in the time of the larger.
+  static void solve_pair(const BandedLdlt& a, const Vector& rhs_a, Vector& x_a, const BandedLdlt& b,
+                         const Vector& rhs_b, Vector& x_b);
   // The factors A = L D L^T: lower()(k, i) = L(i, i - k - 1) for k < bandwidth (column i holds
   // row i of L), and 1 / D(i).
   const Matrix& lower() const { return lower_; }
@@ -29,6 +43,9 @@ class BandedLdlt {
   void substitute(const double* rhs, double* x) const;
   template <Index Band>
   void substitute_in_registers(const double* rhs, double* x) const;
+  template <Index Band>
+  static void substitute_pair(const BandedLdlt& a, const double* rhs_a, double* x_a,
+                              const BandedLdlt& b, const double* rhs_b, double* x_b);
 
   Index size_;
   Index bandwidth_;

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <numeric>
 
 #include "assembly/band_ordering.hpp"
 #include "assembly/banded_ldlt.hpp"
@@ -26,6 +27,7 @@ template <typename Factor>
 class FactorSolver final : public integrators::LinearSolver {
  public:
   explicit FactorSolver(const Eigen::SparseMatrix<double>& matrix) : factor_(matrix) {}
+  explicit FactorSolver(Factor factor) : factor_(std::move(factor)) {}
   void solve(const Vector& rhs, Vector& solution) const override { factor_.solve(rhs, solution); }
 
  private:
@@ -80,11 +82,11 @@ void multiply_band_rows(const double* __restrict__ bands, Index rows, Index b, c
 // on the way in and out.
 class PermutedBandSolver final : public integrators::LinearSolver {
  public:
-  PermutedBandSolver(const Eigen::SparseMatrix<double>& permuted_matrix, std::vector<Index> order)
-      : factor_(factor(permuted_matrix, order)),
+  PermutedBandSolver(BandedLdlt factor, std::vector<Index> order)
+      : factor_(std::move(factor)),
         order_(std::move(order)),
-        permuted_rhs_(permuted_matrix.rows()),
-        permuted_solution_(permuted_matrix.rows()) {}
+        permuted_rhs_(factor_.size()),
+        permuted_solution_(factor_.size()) {}
   void solve(const Vector& rhs, Vector& solution) const override {
     const Index n = permuted_rhs_.size();
     for (Index k = 0; k < n; ++k) permuted_rhs_[k] = rhs[order_[static_cast<std::size_t>(k)]];
@@ -95,20 +97,106 @@ class PermutedBandSolver final : public integrators::LinearSolver {
   }
 
  private:
-  // A pivot that is not positive names the model's equation, not its place in the new order.
-  static BandedLdlt factor(const Eigen::SparseMatrix<double>& matrix,
-                           const std::vector<Index>& order) {
-    try {
-      return BandedLdlt(matrix);
-    } catch (const NotPositiveDefinite& failure) {
-      throw NotPositiveDefinite(order[static_cast<std::size_t>(failure.equation())],
-                                failure.pivot());
-    }
-  }
   BandedLdlt factor_;
   std::vector<Index> order_;
   mutable Vector permuted_rhs_, permuted_solution_;
 };
+
+// LDL^T of P A P^T (`order`: P's); a pivot that is not positive names the model's equation, not
+// its place in the new order.
+BandedLdlt factor_in_order(const Eigen::SparseMatrix<double>& renumbered,
+                           const std::vector<Index>& order) {
+  try {
+    return BandedLdlt(renumbered);
+  } catch (const NotPositiveDefinite& failure) {
+    throw NotPositiveDefinite(order[static_cast<std::size_t>(failure.equation())], failure.pivot());
+  }
+}
+
+// Structures that only unfolded links join (two buildings that pound) are apart in the matrix:
+// its connected components, each contiguous in the band's order, in two groups of about equal
+// size, each group's factors taken from the band's (BandedLdlt::restricted), both solved side by
+// side (BandedLdlt::solve_pair). The solution is the band's own, to the bit.
+class PairedBandSolver final : public integrators::LinearSolver {
+ public:
+  using Orders = std::array<std::vector<Index>, 2>;
+  PairedBandSolver(std::array<BandedLdlt, 2> factors, Orders orders)
+      : factors_(std::move(factors)), orders_(std::move(orders)) {
+    for (std::size_t g = 0; g < 2; ++g) {
+      rhs_[g].resize(static_cast<Index>(orders_[g].size()));
+      solution_[g].resize(static_cast<Index>(orders_[g].size()));
+    }
+  }
+  void solve(const Vector& rhs, Vector& solution) const override {
+    for (std::size_t g = 0; g < 2; ++g)
+      for (std::size_t k = 0; k < orders_[g].size(); ++k)
+        rhs_[g][static_cast<Index>(k)] = rhs[orders_[g][k]];
+    BandedLdlt::solve_pair(factors_[0], rhs_[0], solution_[0], factors_[1], rhs_[1], solution_[1]);
+    solution.resize(rhs.size());
+    for (std::size_t g = 0; g < 2; ++g)
+      for (std::size_t k = 0; k < orders_[g].size(); ++k)
+        solution[orders_[g][k]] = solution_[g][static_cast<Index>(k)];
+  }
+
+ private:
+  std::array<BandedLdlt, 2> factors_;
+  Orders orders_;
+  mutable std::array<Vector, 2> rhs_, solution_;
+};
+
+// Each component's place in two groups of about equal size: the largest first, each into the
+// smaller group.
+std::vector<int> balanced_groups(const Components& components) {
+  std::vector<Index> sizes(static_cast<std::size_t>(components.count), 0);
+  for (const int component : components.of) ++sizes[static_cast<std::size_t>(component)];
+  std::vector<int> by_size(sizes.size());
+  std::iota(by_size.begin(), by_size.end(), 0);
+  std::stable_sort(by_size.begin(), by_size.end(), [&](int p, int q) {
+    return sizes[static_cast<std::size_t>(p)] > sizes[static_cast<std::size_t>(q)];
+  });
+  std::vector<int> group(sizes.size());
+  std::array<Index, 2> group_size{};
+  for (const int component : by_size) {
+    const int smaller = group_size[1] < group_size[0] ? 1 : 0;
+    group[static_cast<std::size_t>(component)] = smaller;
+    group_size[static_cast<std::size_t>(smaller)] += sizes[static_cast<std::size_t>(component)];
+  }
+  return group;
+}
+
+// The paired solver of `matrix` from its band factors `whole` in `order` (whole(k) is equation
+// order[k]), when it has two components or more, each contiguous in that order, and both groups
+// are larger than the band (2 to kUnrolledBand); else none.
+std::unique_ptr<integrators::LinearSolver> paired_band_solver(
+    const Eigen::SparseMatrix<double>& matrix, const BandedLdlt& whole,
+    const std::vector<Index>& order) {
+  const Index band = whole.bandwidth();
+  if (band < 2 || band > kUnrolledBand) return nullptr;
+  const Components components = connected_components(matrix);
+  if (components.count < 2) return nullptr;
+  const auto component_at = [&](std::size_t k) {
+    return components.of[static_cast<std::size_t>(order[k])];
+  };
+  std::vector<char> seen(static_cast<std::size_t>(components.count), 0);
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    if (k > 0 && component_at(k) == component_at(k - 1)) continue;
+    if (seen[static_cast<std::size_t>(component_at(k))]) return nullptr;  // not contiguous
+    seen[static_cast<std::size_t>(component_at(k))] = 1;
+  }
+  const std::vector<int> group = balanced_groups(components);
+  std::array<std::vector<Index>, 2> places;
+  PairedBandSolver::Orders orders;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const auto g = static_cast<std::size_t>(group[static_cast<std::size_t>(component_at(k))]);
+    places[g].push_back(static_cast<Index>(k));
+    orders[g].push_back(order[k]);
+  }
+  for (const std::vector<Index>& each : places)
+    if (static_cast<Index>(each.size()) <= band) return nullptr;
+  return std::make_unique<PairedBandSolver>(
+      std::array<BandedLdlt, 2>{whole.restricted(places[0]), whole.restricted(places[1])},
+      std::move(orders));
+}
 
 // Wide bands (unlucky numbering) go to a general sparse LDL^T with fill-reducing ordering.
 class SparseSolver final : public integrators::LinearSolver {
@@ -913,13 +1001,22 @@ std::unique_ptr<integrators::LinearSolver> StructuralSystem::factor_matrix(
   effective.prune(0.0);
   const Index bandwidth = BandedLdlt::bandwidth_of(effective);
   if (bandwidth <= 1) return std::make_unique<FactorSolver<TwistedTridiagonal>>(effective);
-  if (bandwidth <= kUnrolledBand) return std::make_unique<FactorSolver<BandedLdlt>>(effective);
+  if (bandwidth <= kUnrolledBand) {
+    BandedLdlt whole(effective);
+    std::vector<Index> natural(static_cast<std::size_t>(effective.rows()));
+    std::iota(natural.begin(), natural.end(), Index{0});
+    if (auto paired = paired_band_solver(effective, whole, natural)) return paired;
+    return std::make_unique<FactorSolver<BandedLdlt>>(std::move(whole));
+  }
   // Past the bands whose substitution is unrolled, a renumbering may narrow it.
   std::vector<Index> order = reverse_cuthill_mckee(effective);
   Eigen::SparseMatrix<double> renumbered = permuted(effective, order);
   if (const Index narrowed = BandedLdlt::bandwidth_of(renumbered);
-      narrowed < bandwidth && narrowed <= kBandedLimit)
-    return std::make_unique<PermutedBandSolver>(renumbered, std::move(order));
+      narrowed < bandwidth && narrowed <= kBandedLimit) {
+    BandedLdlt whole = factor_in_order(renumbered, order);
+    if (auto paired = paired_band_solver(effective, whole, order)) return paired;
+    return std::make_unique<PermutedBandSolver>(std::move(whole), std::move(order));
+  }
   if (bandwidth <= kBandedLimit) return std::make_unique<FactorSolver<BandedLdlt>>(effective);
   return std::make_unique<SparseSolver>(effective);
 }

@@ -106,6 +106,66 @@ TEST(BandedLdlt, SubstitutionFusesEachRowsProductsFarthestFirst) {
   std::cout << entries << " solution entries, " << unequal << " unequal to the written-out sums\n";
 }
 
+// Two systems solved side by side give each the bits of its own solve, whatever their sizes
+// (equal, one longer by less or more than the band, one just past the band); pairs the
+// side-by-side path does not take (bandwidths that differ, a system within its band) are solved
+// one after the other.
+TEST(BandedLdlt, APairSolvedSideBySideGivesEachItsOwnSolution) {
+  std::mt19937 rng(23);
+  int pairs = 0;
+  for (Index band : {2, 3, 4, 6, 8}) {
+    for (const auto& [n_a, n_b] : std::vector<std::pair<Index, Index>>{
+             {band + 1, band + 1}, {40, 40}, {34, 55}, {55, 34}, {band + 2, 200}, {97, band + 1}}) {
+      const BandedLdlt a(random_banded({n_a}, band, rng)), b(random_banded({n_b}, band, rng));
+      const Vector rhs_a = random_vector(n_a, rng), rhs_b = random_vector(n_b, rng);
+      Vector alone_a, alone_b, x_a = Vector::Constant(3, 9.0), x_b;
+      a.solve(rhs_a, alone_a);
+      b.solve(rhs_b, alone_b);
+      BandedLdlt::solve_pair(a, rhs_a, x_a, b, rhs_b, x_b);
+      ASSERT_EQ(x_a.size(), n_a);
+      ASSERT_EQ(x_b.size(), n_b);
+      for (Index i = 0; i < n_a; ++i) ASSERT_EQ(x_a[i], alone_a[i]) << "b " << band << " row " << i;
+      for (Index i = 0; i < n_b; ++i) ASSERT_EQ(x_b[i], alone_b[i]) << "b " << band << " row " << i;
+      ++pairs;
+    }
+  }
+  // The factors of a block-diagonal band restricted to each block's rows (one block, or the
+  // first and third together): each solution the band's own, to the bit, alone or side by side
+  // with the other group; a band of 3 beside one of 5, or a system of 4 beside a band of 6, one
+  // at a time.
+  const Sparse blocks = random_banded({30, 25, 20}, 5, rng);
+  const BandedLdlt whole(blocks);
+  std::vector<Index> first_third, second;
+  for (Index i = 0; i < 75; ++i) (i >= 30 && i < 55 ? second : first_third).push_back(i);
+  const BandedLdlt outer = whole.restricted(first_third), middle = whole.restricted(second);
+  EXPECT_EQ(outer.bandwidth(), 5);
+  EXPECT_EQ(outer.size(), 50);
+  const Vector rhs = random_vector(75, rng);
+  Vector x_whole, x_outer, x_middle, rhs_outer(50), rhs_middle(25);
+  whole.solve(rhs, x_whole);
+  for (std::size_t k = 0; k < first_third.size(); ++k) rhs_outer[Index(k)] = rhs[first_third[k]];
+  for (std::size_t k = 0; k < second.size(); ++k) rhs_middle[Index(k)] = rhs[second[k]];
+  BandedLdlt::solve_pair(outer, rhs_outer, x_outer, middle, rhs_middle, x_middle);
+  for (std::size_t k = 0; k < first_third.size(); ++k)
+    EXPECT_EQ(x_outer[Index(k)], x_whole[first_third[k]]) << "row " << first_third[k];
+  for (std::size_t k = 0; k < second.size(); ++k)
+    EXPECT_EQ(x_middle[Index(k)], x_whole[second[k]]) << "row " << second[k];
+  const BandedLdlt three(random_banded({60}, 3, rng)), five(random_banded({30}, 5, rng));
+  const BandedLdlt small(random_banded({4}, 6, rng)), wide(random_banded({70}, 6, rng));
+  Vector x_three, x_five, alone_three, alone_five, x_small, x_wide, alone_small, alone_wide;
+  BandedLdlt::solve_pair(three, rhs.head(60), x_three, five, rhs.head(30), x_five);
+  three.solve(rhs.head(60), alone_three);
+  five.solve(rhs.head(30), alone_five);
+  EXPECT_EQ(x_three, alone_three);
+  EXPECT_EQ(x_five, alone_five);
+  BandedLdlt::solve_pair(small, rhs.head(4), x_small, wide, rhs.head(70), x_wide);
+  small.solve(rhs.head(4), alone_small);
+  wide.solve(rhs.head(70), alone_wide);
+  EXPECT_EQ(x_small, alone_small);
+  EXPECT_EQ(x_wide, alone_wide);
+  std::cout << pairs << " pairs solved side by side, each to the bit of its own solve\n";
+}
+
 TEST(BandedLdlt, BandwidthOfIsTheFarthestNonZeroFromTheDiagonal) {
   Sparse matrix = Sparse(Matrix::Identity(6, 6).sparseView());
   EXPECT_EQ(BandedLdlt::bandwidth_of(matrix), 0);

@@ -346,6 +346,47 @@ model::Model banded_chain(Index n, Index band) {
   return m;
 }
 
+// Two chains that nothing joins (two buildings whose only link is a contact, not folded): the
+// factored matrix solves to round-off whether their equations come one chain after the other
+// (each factored part of the band, both solved side by side) or interleaved (one band).
+TEST(StructuralSystem, FactorSolvesTwoStructuresApartSideBySide) {
+  for (const bool interleaved : {false, true}) {
+    // Chain 0 of 40 nodes and chain 1 of 27, each node joined to its next three; node k of chain
+    // c at place(c, k): chain 1 after chain 0, or the first 27 of each alternating.
+    const auto place = [interleaved](int chain, Index k) -> Index {
+      if (!interleaved) return chain == 0 ? k : 40 + k;
+      return k < 27 ? 2 * k + chain : 27 + k;
+    };
+    model::Model m;
+    m.dimension = 1;
+    m.nodes.resize(67);
+    for (int chain = 0; chain < 2; ++chain)
+      for (Index k = 0; k < (chain == 0 ? 40 : 27); ++k)
+        m.nodes[static_cast<std::size_t>(place(chain, k))] = {fmt::format("c{}n{}", chain, k),
+                                                              {static_cast<double>(k) * 1.25, 0.0}};
+    for (int chain = 0; chain < 2; ++chain) {
+      const Index length = chain == 0 ? 40 : 27;
+      for (Index k = 0; k < length; ++k)
+        for (Index l = k + 1; l <= std::min(length - 1, k + 3); ++l)
+          m.elements.push_back(truss(m, place(chain, k), place(chain, l),
+                                     100.0 + 7.0 * static_cast<double>(k + 3 * l + chain), 1.0,
+                                     1.0));
+      m.supports.push_back({.node = place(chain, 0), .fixed = {true, false}});
+    }
+    const StructuralSystem system(m);
+    const auto solver = system.factor(4.0, 0.5, 1.0);
+    const Vector rhs = random_vector(system.size(), 7);
+    Vector x;
+    solver->solve(rhs, x);
+    const Matrix effective = Matrix(system.stiffness()) + 4.0 * Matrix(system.mass_matrix());
+    const Vector reference = effective.llt().solve(rhs);
+    const double error = (x - reference).norm() / reference.norm();
+    std::cout << (interleaved ? "interleaved" : "one after the other") << ": relative error "
+              << error << "\n";
+    EXPECT_LE(error, 1e-14);
+  }
+}
+
 // K x with each row's terms summed from +0 in column order, one rounding per multiply-add where
 // the machine fuses them: the order every product of K keeps (core/packets.hpp).
 Vector row_sums(const Eigen::SparseMatrix<double>& k, const Vector& x) {
