@@ -679,6 +679,7 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
   if (model.gravity && model.gravity->p_delta)
     add_geometric_stiffness(model, *model.gravity->p_delta);
 
+  has_link_motion_ = find_link_motion();
   if (model.support_excitations.empty()) return;
   const SupportInfluence supports(stiffness_, links_);
   for (const model::SupportExcitation& excitation : model.support_excitations)
@@ -698,6 +699,7 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
       moving.static_load = -(stiffness_ * influence + coupling);
       moving_supports_.push_back(std::move(moving));
     }
+  has_link_motion_ = find_link_motion();
 }
 
 void StructuralSystem::store_stiffness_for_products() {
@@ -755,7 +757,7 @@ void StructuralSystem::add_geometric_stiffness(const model::Model& model,
                      "stiffness); check the masses, the sections and the supports");
 }
 
-bool StructuralSystem::has_link_motion() const {
+bool StructuralSystem::find_link_motion() const {
   if (surface_rate_.size() > 0 && surface_rate_.any()) return true;
   for (const MovingSupport& support : moving_supports_)
     if (support.link_coefficients.size() > 0 && support.link_coefficients.any()) return true;

@@ -33,7 +33,7 @@ class StructuralSystem final : public integrators::SecondOrderSystem {
   bool has_external_force() const override {
     return has_loads_ || !excitations_.empty() || !moving_supports_.empty();
   }
-  bool has_link_motion() const override;
+  bool has_link_motion() const override { return has_link_motion_; }
   void link_motion(double time, Vector& offset, Vector& rate, Vector& acceleration) const override;
   void external_force(double time, Vector& force) const override;
   std::unique_ptr<integrators::LinearSolver> factor(double c_m, double c_c,
@@ -95,6 +95,9 @@ class StructuralSystem final : public integrators::SecondOrderSystem {
   };
   std::vector<MovingSupport> moving_supports_;
   Vector surface_rate_;  // d(delta)/dt of each link row from its moving j side (belts)
+  // Whether the belts or the supports' motion move any link row, found once (asked every step).
+  bool find_link_motion() const;
+  bool has_link_motion_ = false;
   Eigen::SparseMatrix<double> stiffness_;
   Eigen::SparseMatrix<double> elastic_stiffness_;  // only with P-Delta: K without it
   void add_geometric_stiffness(const model::Model& model, model::GeometricStiffness kind);
