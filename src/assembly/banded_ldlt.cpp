@@ -64,11 +64,13 @@ BandedLdlt BandedLdlt::restricted(const std::vector<Index>& rows) const {
 }
 
 void BandedLdlt::solve(const Vector& rhs, Vector& solution) const {
+  solution.resize(size_);
+  solve(rhs.data(), solution.data());
+}
+
+void BandedLdlt::solve(const double* r, double* x) const {
   const Index n = size_, b = bandwidth_;
-  solution.resize(n);
   if (n == 0) return;
-  double* x = solution.data();
-  const double* r = rhs.data();
   const double* inv_d = inverse_pivot_.data();
   if (b == 1) {
     // Tridiagonal: the common case of rods numbered along their length.
@@ -238,16 +240,19 @@ void BandedLdlt::substitute_pair(const BandedLdlt& a, const double* rhs_a, doubl
 
 void BandedLdlt::solve_pair(const BandedLdlt& a, const Vector& rhs_a, Vector& x_a,
                             const BandedLdlt& b, const Vector& rhs_b, Vector& x_b) {
-  const Index band = a.bandwidth_;
-  if (band != b.bandwidth_ || band < 2 || band > 8 || a.size_ <= band || b.size_ <= band) {
-    a.solve(rhs_a, x_a);
-    b.solve(rhs_b, x_b);
-    return;
-  }
   x_a.resize(a.size_);
   x_b.resize(b.size_);
-  const double *r_a = rhs_a.data(), *r_b = rhs_b.data();
-  double *s_a = x_a.data(), *s_b = x_b.data();
+  solve_pair(a, rhs_a.data(), x_a.data(), b, rhs_b.data(), x_b.data());
+}
+
+void BandedLdlt::solve_pair(const BandedLdlt& a, const double* r_a, double* s_a,
+                            const BandedLdlt& b, const double* r_b, double* s_b) {
+  const Index band = a.bandwidth_;
+  if (band != b.bandwidth_ || band < 2 || band > 8 || a.size_ <= band || b.size_ <= band) {
+    a.solve(r_a, s_a);
+    b.solve(r_b, s_b);
+    return;
+  }
   switch (band) {
     case 2:
       return substitute_pair<2>(a, r_a, s_a, b, r_b, s_b);

@@ -30,6 +30,10 @@ class BandedLdlt {
   // two structures that only links join (buildings that pound) in the time of the larger.
   static void solve_pair(const BandedLdlt& a, const Vector& rhs_a, Vector& x_a, const BandedLdlt& b,
                          const Vector& rhs_b, Vector& x_b);
+  // The same on arrays of size() entries (each solution and its right-hand side may be one).
+  void solve(const double* rhs, double* solution) const;
+  static void solve_pair(const BandedLdlt& a, const double* rhs_a, double* x_a, const BandedLdlt& b,
+                         const double* rhs_b, double* x_b);
   // The factors A = L D L^T: lower()(k, i) = L(i, i - k - 1) for k < bandwidth (column i holds
   // row i of L), and 1 / D(i).
   const Matrix& lower() const { return lower_; }

@@ -125,14 +125,23 @@ class PairedBandSolver final : public integrators::LinearSolver {
     for (std::size_t g = 0; g < 2; ++g) {
       rhs_[g].resize(static_cast<Index>(orders_[g].size()));
       solution_[g].resize(static_cast<Index>(orders_[g].size()));
+      const std::vector<Index>& order = orders_[g];
+      for (std::size_t k = 1; k < order.size() && first_[g] >= 0; ++k)
+        if (order[k] != order[k - 1] + 1) first_[g] = -1;
+      if (first_[g] >= 0) first_[g] = order.front();
     }
   }
   void solve(const Vector& rhs, Vector& solution) const override {
+    solution.resize(rhs.size());
+    if (first_[0] >= 0 && first_[1] >= 0) {  // each group one range of equations: in place
+      BandedLdlt::solve_pair(factors_[0], rhs.data() + first_[0], solution.data() + first_[0],
+                             factors_[1], rhs.data() + first_[1], solution.data() + first_[1]);
+      return;
+    }
     for (std::size_t g = 0; g < 2; ++g)
       for (std::size_t k = 0; k < orders_[g].size(); ++k)
         rhs_[g][static_cast<Index>(k)] = rhs[orders_[g][k]];
     BandedLdlt::solve_pair(factors_[0], rhs_[0], solution_[0], factors_[1], rhs_[1], solution_[1]);
-    solution.resize(rhs.size());
     for (std::size_t g = 0; g < 2; ++g)
       for (std::size_t k = 0; k < orders_[g].size(); ++k)
         solution[orders_[g][k]] = solution_[g][static_cast<Index>(k)];
@@ -141,6 +150,7 @@ class PairedBandSolver final : public integrators::LinearSolver {
  private:
   std::array<BandedLdlt, 2> factors_;
   Orders orders_;
+  std::array<Index, 2> first_{0, 0};  // a group's first equation when it is one range, else -1
   mutable std::array<Vector, 2> rhs_, solution_;
 };
 

@@ -348,13 +348,24 @@ model::Model banded_chain(Index n, Index band) {
 
 // Two chains that nothing joins (two buildings whose only link is a contact, not folded): the
 // factored matrix solves to round-off whether their equations come one chain after the other
-// (each factored part of the band, both solved side by side) or interleaved (one band).
+// (each factored part of the band, both solved side by side in place), scrambled (a wide band:
+// renumbered, the chains then one after the other, solved side by side through the order) or
+// interleaved (one band of both).
 TEST(StructuralSystem, FactorSolvesTwoStructuresApartSideBySide) {
-  for (const bool interleaved : {false, true}) {
+  enum class Numbering { one_after_the_other, scrambled, interleaved };
+  for (const Numbering numbering :
+       {Numbering::one_after_the_other, Numbering::scrambled, Numbering::interleaved}) {
     // Chain 0 of 40 nodes and chain 1 of 27, each node joined to its next three; node k of chain
-    // c at place(c, k): chain 1 after chain 0, or the first 27 of each alternating.
-    const auto place = [interleaved](int chain, Index k) -> Index {
-      if (!interleaved) return chain == 0 ? k : 40 + k;
+    // c at place(c, k).
+    const auto place = [numbering](int chain, Index k) -> Index {
+      switch (numbering) {
+        case Numbering::one_after_the_other:
+          return chain == 0 ? k : 40 + k;
+        case Numbering::scrambled:
+          return chain == 0 ? k : 40 + (7 * k) % 27;
+        case Numbering::interleaved:
+          break;
+      }
       return k < 27 ? 2 * k + chain : 27 + k;
     };
     model::Model m;
@@ -381,8 +392,8 @@ TEST(StructuralSystem, FactorSolvesTwoStructuresApartSideBySide) {
     const Matrix effective = Matrix(system.stiffness()) + 4.0 * Matrix(system.mass_matrix());
     const Vector reference = effective.llt().solve(rhs);
     const double error = (x - reference).norm() / reference.norm();
-    std::cout << (interleaved ? "interleaved" : "one after the other") << ": relative error "
-              << error << "\n";
+    std::cout << "numbering " << static_cast<int>(numbering) << ": relative error " << error
+              << "\n";
     EXPECT_LE(error, 1e-14);
   }
 }
