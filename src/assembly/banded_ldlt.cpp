@@ -165,7 +165,6 @@ class RegisterSweep {
         n_(inverse_pivots.size()),
         rhs_(rhs),
         x_(x) {}
-  Index size() const { return n_; }
   // The first Band rows of the forward pass, from memory; then rows Band, Band + 1, ... in turn.
   void begin_forward() {
     for (Index i = 0; i < Band; ++i) x_[i] = forward_row(lower_, Band, rhs_, x_, i, i);
