@@ -5,11 +5,39 @@
 #include <algorithm>
 #include <array>
 #include <stdexcept>
+#include <type_traits>
 
 #include "assembly/not_positive_definite.hpp"
 #include "core/packets.hpp"
 
 namespace pound::assembly {
+namespace {
+
+// visit(std::integral_constant<Index, b>) for a bandwidth b of 2 to 8, whose substitution is
+// unrolled; visit(std::integral_constant<Index, 0>) for any other (the bandwidth at run time).
+template <typename Visit>
+void with_fixed_band(Index b, Visit visit) {
+  switch (b) {
+    case 2:
+      return visit(std::integral_constant<Index, 2>{});
+    case 3:
+      return visit(std::integral_constant<Index, 3>{});
+    case 4:
+      return visit(std::integral_constant<Index, 4>{});
+    case 5:
+      return visit(std::integral_constant<Index, 5>{});
+    case 6:
+      return visit(std::integral_constant<Index, 6>{});
+    case 7:
+      return visit(std::integral_constant<Index, 7>{});
+    case 8:
+      return visit(std::integral_constant<Index, 8>{});
+    default:
+      return visit(std::integral_constant<Index, 0>{});
+  }
+}
+
+}  // namespace
 
 Index BandedLdlt::bandwidth_of(const Eigen::SparseMatrix<double>& matrix) {
   Index band = 0;
@@ -81,24 +109,7 @@ void BandedLdlt::solve(const double* r, double* x) const {
     for (Index i = n - 2; i >= 0; --i) next = x[i] = multiply_add(-l[i + 1], next, x[i] * inv_d[i]);
     return;
   }
-  switch (b) {
-    case 2:
-      return substitute<2>(r, x);
-    case 3:
-      return substitute<3>(r, x);
-    case 4:
-      return substitute<4>(r, x);
-    case 5:
-      return substitute<5>(r, x);
-    case 6:
-      return substitute<6>(r, x);
-    case 7:
-      return substitute<7>(r, x);
-    case 8:
-      return substitute<8>(r, x);
-    default:
-      return substitute<0>(r, x);
-  }
+  with_fixed_band(b, [&](auto band) { substitute<band()>(r, x); });
 }
 
 namespace {
@@ -252,22 +263,9 @@ void BandedLdlt::solve_pair(const BandedLdlt& a, const double* r_a, double* s_a,
     b.solve(r_b, s_b);
     return;
   }
-  switch (band) {
-    case 2:
-      return substitute_pair<2>(a, r_a, s_a, b, r_b, s_b);
-    case 3:
-      return substitute_pair<3>(a, r_a, s_a, b, r_b, s_b);
-    case 4:
-      return substitute_pair<4>(a, r_a, s_a, b, r_b, s_b);
-    case 5:
-      return substitute_pair<5>(a, r_a, s_a, b, r_b, s_b);
-    case 6:
-      return substitute_pair<6>(a, r_a, s_a, b, r_b, s_b);
-    case 7:
-      return substitute_pair<7>(a, r_a, s_a, b, r_b, s_b);
-    default:
-      return substitute_pair<8>(a, r_a, s_a, b, r_b, s_b);
-  }
+  with_fixed_band(band, [&](auto fixed) {
+    if constexpr (fixed() > 0) substitute_pair<fixed()>(a, r_a, s_a, b, r_b, s_b);
+  });
 }
 
 }  // namespace pound::assembly
