@@ -13,10 +13,11 @@
 namespace pound::assembly {
 namespace {
 
-// visit(std::integral_constant<Index, b>) for a bandwidth b of 2 to 8, whose substitution is
-// unrolled; visit(std::integral_constant<Index, 0>) for any other (the bandwidth at run time).
+// visit(std::integral_constant<Index, b>) for a bandwidth b of 2 to BandedLdlt::kUnrolledBand;
+// visit(std::integral_constant<Index, 0>) for any other (the bandwidth at run time).
 template <typename Visit>
 void with_fixed_band(Index b, Visit visit) {
+  static_assert(BandedLdlt::kUnrolledBand == 8, "one case for each unrolled bandwidth");
   switch (b) {
     case 2:
       return visit(std::integral_constant<Index, 2>{});
@@ -258,7 +259,8 @@ void BandedLdlt::solve_pair(const BandedLdlt& a, const Vector& rhs_a, Vector& x_
 void BandedLdlt::solve_pair(const BandedLdlt& a, const double* r_a, double* s_a,
                             const BandedLdlt& b, const double* r_b, double* s_b) {
   const Index band = a.bandwidth_;
-  if (band != b.bandwidth_ || band < 2 || band > 8 || a.size_ <= band || b.size_ <= band) {
+  if (band != b.bandwidth_ || band < 2 || band > kUnrolledBand || a.size_ <= band ||
+      b.size_ <= band) {
     a.solve(r_a, s_a);
     b.solve(r_b, s_b);
     return;

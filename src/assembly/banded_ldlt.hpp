@@ -11,6 +11,9 @@ namespace pound::assembly {
 
 class BandedLdlt {
  public:
+  // Bandwidths 2 to this have their substitution unrolled, the last b values kept in registers.
+  static constexpr Index kUnrolledBand = 8;
+
   // Throws std::domain_error naming the equation whose pivot is not positive.
   explicit BandedLdlt(const Eigen::SparseMatrix<double>& matrix);
   // The factors of the equations `rows` (increasing) alone, in this band, when no entry of L

@@ -21,7 +21,7 @@ namespace {
 
 // Bands up to kUnrolledBand have their substitution unrolled (BandedLdlt::substitute); up to
 // kBandedLimit a band LDL^T beats the general sparse one.
-constexpr Index kUnrolledBand = 8, kBandedLimit = 32;
+constexpr Index kUnrolledBand = BandedLdlt::kUnrolledBand, kBandedLimit = 32;
 
 template <typename Factor>
 class FactorSolver final : public integrators::LinearSolver {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
 
 #include "model/direction.hpp"
 
@@ -101,10 +102,9 @@ ElementQuantities::ElementQuantities(std::vector<std::shared_ptr<const model::El
   for (std::size_t k = 0; k < elements.size(); ++k) {
     const model::Element& element = *elements[k];
     const std::span<const model::EndForce> names = element.end_force_names();
-    std::vector<std::size_t> forces;
-    if (wanted.empty())
-      for (std::size_t s = 0; s < names.size(); ++s) forces.push_back(s);
-    const std::vector<std::size_t>& taken = wanted.empty() ? forces : wanted[k];
+    std::vector<std::size_t> all(names.size());
+    std::iota(all.begin(), all.end(), std::size_t{0});
+    const std::vector<std::size_t>& taken = wanted.empty() ? all : wanted[k];
     const Matrix map = model::end_force_map(element);
     for (const std::size_t s : taken) {
       add(element.id() + "." + std::string(names[s].name), names[s].dimension);
