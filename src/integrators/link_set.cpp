@@ -49,6 +49,12 @@ LinkSet::LinkSet(Index dofs, std::vector<Link> links) : links_(std::move(links))
           "a friction or shear link needs one tangential row per tangent of its law");
     for (const std::vector<Term>& tangential : link.tangential_rows) add_row(tangential, 0.0);
   }
+  for (std::size_t k = 0; k < links_.size(); ++k) {
+    if (links_[k].friction || links_[k].shear)
+      block_links_.push_back(k);
+    else
+      scalar_links_.push_back({links_[k].law.get(), first_row_[k]});
+  }
   connectivity_.resize(rows, dofs);
   connectivity_.setFromTriplets(triplets.begin(), triplets.end());
   const Index scatter_cost = dofs + 2 * connectivity_.nonZeros();
@@ -56,9 +62,47 @@ LinkSet::LinkSet(Index dofs, std::vector<Link> links) : links_(std::move(links))
   gaps_ = Eigen::Map<const Vector>(gaps.data(), rows);
 }
 
+// Each sum as Eigen's sparse row product forms it (0 + the terms in order, so -0 becomes +0 as
+// there), without its set-up per product.
+void LinkSet::project_rows(const Vector& x, Vector& projected, const Vector* gaps) const {
+  const Index rows = connectivity_.rows();
+  projected.resize(rows);
+  const double* __restrict__ values = connectivity_.valuePtr();
+  const auto* __restrict__ columns = connectivity_.innerIndexPtr();
+  const auto* __restrict__ starts = connectivity_.outerIndexPtr();
+  const double* __restrict__ in = x.data();
+  double* __restrict__ out = projected.data();
+  for (Index row = 0; row < rows; ++row) {
+    double sum = 0.0;
+    for (auto k = starts[row]; k < starts[row + 1]; ++k) sum += values[k] * in[columns[k]];
+    out[row] = 0.0 + sum;
+  }
+  if (gaps)
+    for (Index row = 0; row < rows; ++row) out[row] -= (*gaps)[row];
+}
+
 void LinkSet::penetration(const Vector& displacement, Vector& delta) const {
-  delta.noalias() = connectivity_ * displacement;
-  delta -= gaps_;
+  project_rows(displacement, delta, &gaps_);
+}
+
+void LinkSet::penetration_and_rate(const Vector& u, const Vector& v, Vector& delta,
+                                   Vector& rate) const {
+  const Index rows = connectivity_.rows();
+  delta.resize(rows);
+  rate.resize(rows);
+  const double* __restrict__ values = connectivity_.valuePtr();
+  const auto* __restrict__ columns = connectivity_.innerIndexPtr();
+  const auto* __restrict__ starts = connectivity_.outerIndexPtr();
+  for (Index row = 0; row < rows; ++row) {
+    double sum_u = 0.0, sum_v = 0.0;
+    for (auto k = starts[row]; k < starts[row + 1]; ++k) {
+      const double value = values[k];
+      sum_u += value * u[columns[k]];
+      sum_v += value * v[columns[k]];
+    }
+    delta[row] = (0.0 + sum_u) - gaps_[row];
+    rate[row] = 0.0 + sum_v;
+  }
 }
 
 void LinkSet::penetrations_and_rate(const Vector& u_1, const Vector& u_2, const Vector& v,
@@ -71,8 +115,6 @@ void LinkSet::penetrations_and_rate(const Vector& u_1, const Vector& u_2, const 
   const auto* __restrict__ columns = connectivity_.innerIndexPtr();
   const auto* __restrict__ starts = connectivity_.outerIndexPtr();
   for (Index row = 0; row < rows; ++row) {
-    // Each sum as Eigen's sparse row product forms it (0 + the terms in order), so -0 becomes +0
-    // as there.
     double sum_1 = 0.0, sum_2 = 0.0, sum_v = 0.0;
     for (auto k = starts[row]; k < starts[row + 1]; ++k) {
       const double value = values[k];
@@ -87,17 +129,18 @@ void LinkSet::penetrations_and_rate(const Vector& u_1, const Vector& u_2, const 
 }
 
 void LinkSet::project(const Vector& x, Vector& projected) const {
-  // Each row as Eigen's sparse row product forms it (0 + the terms in order), without its
-  // set-up per product.
-  const Index rows = connectivity_.rows();
-  projected.resize(rows);
+  project_rows(x, projected, nullptr);
+}
+
+void LinkSet::subtract_transpose(const Vector& row_values, Vector& nodal) const {
   const double* __restrict__ values = connectivity_.valuePtr();
   const auto* __restrict__ columns = connectivity_.innerIndexPtr();
   const auto* __restrict__ starts = connectivity_.outerIndexPtr();
-  for (Index row = 0; row < rows; ++row) {
-    double sum = 0.0;
-    for (auto k = starts[row]; k < starts[row + 1]; ++k) sum += values[k] * x[columns[k]];
-    projected[row] = 0.0 + sum;
+  double* __restrict__ out = nodal.data();
+  for (Index row = 0; row < connectivity_.rows(); ++row) {
+    const double value = row_values[row];
+    if (value == 0.0) continue;
+    for (auto k = starts[row]; k < starts[row + 1]; ++k) out[columns[k]] -= values[k] * value;
   }
 }
 
@@ -164,16 +207,19 @@ void LinkSet::evaluate(const Vector& delta, const Vector& rate, const Vector& ac
   const Index rows = size();
   force.resize(rows);
   if (tangent.rows() != rows || tangent.cols() != rows) tangent.setZero(rows, rows);
-  for (std::size_t k = 0; k < links_.size(); ++k) {
+  // The links of one row, from flat arrays: a law call and two stores each.
+  double* __restrict__ forces = force.data();
+  double* __restrict__ diagonal = tangent.data();
+  for (const ScalarLink& link : scalar_links_) {
+    const Index n = link.row;
+    const links::LawResponse response = link.law->set_trial({delta[n], rate[n], acceleration[n]});
+    forces[n] = response.force;
+    diagonal[n * (rows + 1)] = total(response);
+  }
+  for (const std::size_t k : block_links_) {
     const Index n = first_row_[k];
     const links::LinkKinematics normal{delta[n], rate[n], acceleration[n]};
     const Link& link = links_[k];
-    if (!link.friction && !link.shear) {
-      const links::LawResponse response = link.law->set_trial(normal);
-      force[n] = response.force;
-      tangent(n, n) = total(response);
-      continue;
-    }
     const auto tangents = link.tangential_rows.size();
     std::array<links::LinkKinematics, links::kMaxTangents> slide;
     for (std::size_t a = 0; a < tangents; ++a) {
@@ -204,24 +250,24 @@ void LinkSet::anchor_friction_at_rest(const Vector& force) {
 }
 
 void LinkSet::commit() {
-  for (Link& link : links_) {
+  for (const ScalarLink& link : scalar_links_) link.law->commit();
+  for (const std::size_t k : block_links_) {
+    Link& link = links_[k];
     if (link.friction)
       link.friction->commit();
-    else if (link.shear)
-      link.shear->commit();
     else
-      link.law->commit();
+      link.shear->commit();
   }
 }
 
 void LinkSet::revert() {
-  for (Link& link : links_) {
+  for (const ScalarLink& link : scalar_links_) link.law->revert();
+  for (const std::size_t k : block_links_) {
+    Link& link = links_[k];
     if (link.friction)
       link.friction->revert();
-    else if (link.shear)
-      link.shear->revert();
     else
-      link.law->revert();
+      link.shear->revert();
   }
 }
 

@@ -59,12 +59,17 @@ class LinkSet {
 
   // Row deformations B u - gap (penetrations and slides).
   void penetration(const Vector& displacement, Vector& delta) const;
-  // penetration(u_1, delta_1), penetration(u_2, delta_2) and project(v, rate) in one pass over
-  // B's rows, to the same bits: a time step's predicted link state.
+  // penetration(u, delta) and project(v, rate) in one pass over B's rows, to the same bits: a
+  // time step's predicted link state.
+  void penetration_and_rate(const Vector& u, const Vector& v, Vector& delta, Vector& rate) const;
+  // penetration(u_1, delta_1), penetration(u_2, delta_2) and project(v, rate) in one pass, to
+  // the same bits: the same with the linear solution's.
   void penetrations_and_rate(const Vector& u_1, const Vector& u_2, const Vector& v, Vector& delta_1,
                              Vector& delta_2, Vector& rate) const;
   // B x (their rates and accelerations).
   void project(const Vector& x, Vector& projected) const;
+  // nodal -= B^T F, over the rows whose F is not zero.
+  void subtract_transpose(const Vector& row_values, Vector& nodal) const;
   // ||B^T s||_2: as sqrt(s^T (B B^T) s) with B B^T kept where that is the cheaper (few link rows
   // on many DOFs, m^2 < n + 2 nnz(B): the rod), else from B^T s scattered (the bridges).
   double nodal_norm(const Vector& row_values) const;
@@ -129,6 +134,8 @@ class LinkSet {
   }
 
  private:
+  // B x, less the gaps when given.
+  void project_rows(const Vector& x, Vector& projected, const Vector* gaps) const;
   // Evaluates every law once; `total` makes the tangent entries of a LawResponse.
   template <typename Total>
   void evaluate(const Vector& delta, const Vector& rate, const Vector& acceleration, Total total,
@@ -136,6 +143,13 @@ class LinkSet {
 
   std::vector<Link> links_;
   std::vector<Index> first_row_;
+  // The links of one row (a law alone) and their rows; the others (friction, a shear) by index.
+  struct ScalarLink {
+    links::LinkLaw* law;
+    Index row;
+  };
+  std::vector<ScalarLink> scalar_links_;
+  std::vector<std::size_t> block_links_;
   SparseRowMatrix connectivity_;
   Matrix gram_;                   // B B^T, or empty
   mutable Vector nodal_scratch_;  // of nodal_norm

@@ -28,6 +28,29 @@ void predict(Index n, double dt, double displacement_factor, double velocity_fac
   }
 }
 
+// The predictors, x = c_c u~ - v~ and M (inertia u~ + a0 x) + f over [first, last).
+struct DampedPrediction {
+  double dt, displacement_factor, velocity_factor, c_c, inertia, mass_coefficient;
+};
+void predict_damped(Index first, Index last, const DampedPrediction& p,
+                    const double* __restrict__ u, const double* __restrict__ v,
+                    const double* __restrict__ a, const double* __restrict__ mass,
+                    const double* __restrict__ force, double* __restrict__ predicted_u,
+                    double* __restrict__ predicted_v, double* __restrict__ x,
+                    double* __restrict__ rhs) {
+  for (Index i = first; i < last; ++i) {
+    predicted_u[i] = u[i] + p.dt * v[i] + p.displacement_factor * a[i];
+    predicted_v[i] = v[i] + p.velocity_factor * a[i];
+    x[i] = p.c_c * predicted_u[i] - predicted_v[i];
+    rhs[i] = mass[i] * (p.inertia * predicted_u[i] + p.mass_coefficient * x[i]) + force[i];
+  }
+}
+
+void add_scaled(Index first, Index last, double scale, const double* __restrict__ x,
+                double* __restrict__ y) {
+  for (Index i = first; i < last; ++i) y[i] += scale * x[i];
+}
+
 void correct(Index n, double c_m, double velocity_gain, const double* __restrict__ u,
              const double* __restrict__ predicted_u, const double* __restrict__ predicted_v,
              double* __restrict__ a, double* __restrict__ v) {
@@ -299,17 +322,40 @@ StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double
   const double c_m = 1.0 / (beta_ * dt * dt);
   const double c_c = gamma_ / (beta_ * dt);
   to.time = from.time + dt;
-  predict_step(system, from, dt, c_m);
-  if (alpha_m_ != 0.0 || alpha_f_ != 0.0) add_alpha_history(system, from);
-  const double external_norm = add_loads_and_damping(system, to.time, c_c);
+  double external_norm = 0.0;
+  if (const Vector* mass = system.lumped_mass();
+      mass && (!system.has_damping() || system.rayleigh())) {
+    external_norm = predict_lumped(system, from, *mass, dt, c_m, c_c);
+    if (alpha_m_ != 0.0 || alpha_f_ != 0.0) add_alpha_history(system, from);
+  } else {
+    predict_step(system, from, dt, c_m);
+    if (alpha_m_ != 0.0 || alpha_f_ != 0.0) add_alpha_history(system, from);
+    external_norm = add_loads_and_damping(system, to.time, c_c);
+  }
+  // Folded rows start from their predicted unknowns, F_start, which go into the linear solve:
+  // only the iteration's corrections then go through Z. Without them F_start = 0, and the
+  // predicted link state is taken in the same pass as the solution's.
+  const bool links = system.links().size() > 0;
+  started_loaded_ = links && !f.folded_rows.empty();
+  if (started_loaded_) {
+    predict_links(system, to, false);
+    start_folded_rows(system, f, from);
+    start_force_ = assumed_force_;
+    system.links().subtract_transpose(start_force_, rhs_);
+  }
   to.displacement.resize(n);
-  f.solver->solve(rhs_, to.displacement);  // u_lin
+  f.solver->solve(rhs_, to.displacement);  // u at F_start
 
   StepResult result;
-  if (system.links().size() > 0) {
-    predict_links(system, to);
-    if (has_hard_contacts_) bound_hard_contacts(system, from, c_c);
-    start_folded_rows(system, f, from);
+  if (links) {
+    if (started_loaded_) {
+      system.links().penetration(to.displacement, delta_start_);
+      if (links_move_) delta_start_ += link_offset_;
+    } else {
+      predict_links(system, to, true);
+      if (has_hard_contacts_) bound_hard_contacts(system, from, c_c);
+      start_folded_rows(system, f, from);
+    }
     if (!solve_link_forces(system, f, c_m, c_c, external_norm, result)) return result;
     apply_link_forces(f, to);
   } else {
@@ -330,6 +376,52 @@ StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double
   }
   result.converged = true;
   return result;
+}
+
+// With a lumped mass and Rayleigh damping (C = a0 M + a1 K) or none, the right-hand side is
+// M (c_m u~ + a0 x) + f + a1 K x with x = c_c u~ - v~: the predictors, x and all but the band
+// product's part in one pass, made block by block as the product reads them.
+double Newmark::predict_lumped(SecondOrderSystem& system, const State& from, const Vector& mass,
+                               double dt, double c_m, double c_c) {
+  const Index n = system.size();
+  const double mass_weight = (1.0 - alpha_m_) / (1.0 - alpha_f_);
+  const DampedPrediction p{dt,  (0.5 - beta_) * dt * dt, (1.0 - gamma_) * dt,
+                           c_c, mass_weight * c_m,       0.0};
+  predicted_displacement_.resize(n);
+  predicted_velocity_.resize(n);
+  rhs_.resize(n);
+  double external_norm = 0.0;
+  if (system.has_external_force()) {
+    system.external_force(from.time + dt, external_);
+    external_norm = external_.norm();
+  } else {
+    external_.setZero(n);
+  }
+  const auto rayleigh = system.rayleigh();
+  if (!rayleigh) {
+    predict(n, dt, p.displacement_factor, p.velocity_factor, p.inertia, from.displacement.data(),
+            from.velocity.data(), from.acceleration.data(), mass.data(),
+            predicted_displacement_.data(), predicted_velocity_.data(), rhs_.data());
+    rhs_ += external_;
+    return external_norm;
+  }
+  DampedPrediction damped = p;
+  damped.mass_coefficient = rayleigh->mass_coefficient;
+  const double stiffness_coefficient = rayleigh->stiffness_coefficient;
+  work_.resize(n);
+  damping_force_.resize(n);
+  system.multiply_stiffness_by_blocks(
+      work_, damping_force_,
+      [&](Index first, Index last) {
+        predict_damped(first, last, damped, from.displacement.data(), from.velocity.data(),
+                       from.acceleration.data(), mass.data(), external_.data(),
+                       predicted_displacement_.data(), predicted_velocity_.data(), work_.data(),
+                       rhs_.data());
+      },
+      [&](Index first, Index last) {
+        add_scaled(first, last, stiffness_coefficient, damping_force_.data(), rhs_.data());
+      });
+  return external_norm;
 }
 
 void Newmark::predict_step(SecondOrderSystem& system, const State& from, double dt, double c_m) {
@@ -400,15 +492,19 @@ double Newmark::add_loads_and_damping(SecondOrderSystem& system, double time, do
   return external_norm;
 }
 
-void Newmark::predict_links(SecondOrderSystem& system, const State& to) {
+void Newmark::predict_links(SecondOrderSystem& system, const State& to, bool solved) {
   const LinkSet& links = system.links();
-  links.penetrations_and_rate(to.displacement, predicted_displacement_, predicted_velocity_,
-                              delta_linear_, delta_predicted_, rate_predicted_);
+  if (solved)
+    links.penetrations_and_rate(to.displacement, predicted_displacement_, predicted_velocity_,
+                                delta_start_, delta_predicted_, rate_predicted_);
+  else
+    links.penetration_and_rate(predicted_displacement_, predicted_velocity_, delta_predicted_,
+                               rate_predicted_);
   // Support motion moves the links' deformation by s(t); B a = c_m (delta - delta~) stays.
   links_move_ = system.has_link_motion();
   if (links_move_) {
     system.link_motion(to.time, link_offset_, link_offset_rate_, link_offset_acceleration_);
-    delta_linear_ += link_offset_;
+    if (solved) delta_start_ += link_offset_;
     delta_predicted_ += link_offset_;
     rate_predicted_ += link_offset_rate_;
   }
@@ -419,11 +515,13 @@ bool Newmark::solve_link_forces(SecondOrderSystem& system, const Factorization& 
   LinkSet& links = system.links();
   for (int iteration = 0;; ++iteration) {
     evaluate_links(links, f, c_m, c_c);
-    if (!residual_.allFinite() || !law_force_.allFinite()) {
+    const ResidualKind kind = residual_kind();
+    if (kind == ResidualKind::not_finite) {
       result.failure = "link forces are not finite";
       return false;
     }
-    result.unbalanced_force = links.nodal_norm(residual_);
+    // Every residual an exact zero (every row on the branch it started on): converged.
+    result.unbalanced_force = kind == ResidualKind::zero ? 0.0 : links.nodal_norm(residual_);
     const auto allowed = [&](double reference) {
       return test_.relative_tolerance * reference + test_.absolute_tolerance;
     };
@@ -584,35 +682,58 @@ void Newmark::solve_correction(const Factorization& f) {
     correction_[active_rows_[static_cast<std::size_t>(i)]] = reduced_correction_[i];
 }
 
-// delta = delta_lin - G F over the links that carry a force (most are open at most steps); a
-// dense product when most carry one.
+// delta = delta_start - G (F - F_start) over the rows the iteration has corrected (none at its
+// first evaluation, few after it); a dense product when most are.
 void Newmark::deform_links(const Factorization& f) {
-  Index loaded = 0;
-  for (Index k = 0; k < assumed_force_.size(); ++k) loaded += assumed_force_[k] != 0.0;
-  if (2 * loaded > assumed_force_.size()) {
-    delta_.noalias() = delta_linear_ - f.coupling * assumed_force_;
+  const Index m = assumed_force_.size();
+  Index moved = 0;
+  for (Index k = 0; k < m; ++k) moved += force_change(k) != 0.0;
+  if (2 * moved > m) {
+    force_change_.resize(m);
+    for (Index k = 0; k < m; ++k) force_change_[k] = force_change(k);
+    delta_.noalias() = delta_start_ - f.coupling * force_change_;
     return;
   }
-  delta_ = delta_linear_;
-  for (Index k = 0; k < assumed_force_.size(); ++k)
-    if (assumed_force_[k] != 0.0) delta_.noalias() -= assumed_force_[k] * f.coupling.col(k);
+  delta_ = delta_start_;
+  for (Index k = 0; k < m; ++k)
+    if (const double change = force_change(k); change != 0.0)
+      delta_.noalias() -= change * f.coupling.col(k);
 }
 
 void Newmark::evaluate_links(LinkSet& links, const Factorization& f, double c_m, double c_c) {
   deform_links(f);
-  rate_ = rate_predicted_ + c_c * (delta_ - delta_predicted_);
-  acceleration_ = c_m * (delta_ - delta_predicted_);
+  const Index m = delta_.size();
+  rate_.resize(m);
+  acceleration_.resize(m);
+  for (Index r = 0; r < m; ++r) {
+    const double change = delta_[r] - delta_predicted_[r];
+    rate_[r] = rate_predicted_[r] + c_c * change;
+    acceleration_[r] = c_m * change;
+  }
   if (links_move_) acceleration_ += link_offset_acceleration_;
   links.set_trial(delta_, rate_, acceleration_, c_c, c_m, law_force_, tangent_);
   if (has_hard_contacts_) evaluate_hard_contacts(f);
   // law_force_ stays the whole law forces (the convergence test's reference); a folded row's
   // residual is against its law force less K_r (B u)_r.
-  residual_ = assumed_force_ - law_force_;
+  residual_.resize(m);
+  for (Index r = 0; r < m; ++r) residual_[r] = assumed_force_[r] - law_force_[r];
   for (const Index r : f.folded_rows) {
     const double folded_force = law_force_[r] - f.folded_stiffness[r] * folded_projection(r);
     residual_[r] = assumed_force_[r] - folded_force;
     tangent_(r, r) -= f.folded_stiffness[r];
   }
+}
+
+// Whether every residual is finite (a law force that is not makes its row's residual not
+// finite), and whether every one is an exact zero, in one pass.
+Newmark::ResidualKind Newmark::residual_kind() const {
+  int not_finite = 0, nonzero = 0;
+  for (Index r = 0; r < residual_.size(); ++r) {
+    const double value = residual_[r];
+    not_finite |= static_cast<int>(!(value - value == 0.0));
+    nonzero |= static_cast<int>(value != 0.0);
+  }
+  return not_finite ? ResidualKind::not_finite : nonzero ? ResidualKind::some : ResidualKind::zero;
 }
 
 double Newmark::folded_projection(Index row, double delta, double offset) const {
@@ -832,9 +953,10 @@ void Newmark::release_constraint_acceleration(SecondOrderSystem& system, State& 
 }
 
 void Newmark::apply_link_forces(const Factorization& f, State& to) const {
-  // u_{n+1} = u_lin - Z F
+  // u_{n+1} = u_start - Z (F - F_start)
   for (Index k = 0; k < assumed_force_.size(); ++k)
-    if (assumed_force_[k] != 0.0) to.displacement -= assumed_force_[k] * f.influence.col(k);
+    if (const double change = force_change(k); change != 0.0)
+      to.displacement -= change * f.influence.col(k);
   to.link_penetration = delta_;
   to.link_force = assumed_force_;
   for (const Index r : f.folded_rows)

@@ -8,8 +8,11 @@
 // With A = M/(beta dt^2) + gamma/(beta dt) C + K factored once per dt, u_{n+1} = u_lin - Z F
 // where u_lin = A^{-1}(linear right-hand side) and Z = A^{-1} B^T. The remaining equations are
 // m scalar ones, F - F_law(delta_lin - G F) = 0 with G = B Z, solved by Newton with the laws'
-// consistent tangents. This is the full Newton method on the whole system, only cheaper: the
-// unbalanced force of the whole system is exactly B^T (F - F_law).
+// consistent tangents. The iteration's start F_start goes into the linear solve,
+// u_start = A^{-1}(r - B^T F_start), so that only its corrections F - F_start go through Z and G:
+// a step that converges at its start (no link leaves its branch) does no n x m work. This is the
+// full Newton method on the whole system, only cheaper: the unbalanced force of the whole system is
+// exactly B^T (F - F_law).
 //
 // A hard contact (links/hard_contact.hpp) has no F_law. Its row is a constraint with the impact
 // law at velocity level, as in Moreau-Jean time stepping (Jean 1999, "The non-smooth contact
@@ -117,12 +120,17 @@ class Newmark final : public Integrator {
   // The steps of advance(), c_m = 1 / (beta dt^2) and c_c = gamma / (beta dt).
   // u~, v~ and the right-hand side's inertia part.
   void predict_step(SecondOrderSystem& system, const State& from, double dt, double c_m);
+  // The same and the right-hand side but the alpha history, with a lumped mass and Rayleigh
+  // damping or none; returns ||f_{n+1}||.
+  double predict_lumped(SecondOrderSystem& system, const State& from, const Vector& mass, double dt,
+                        double c_m, double c_c);
   // The alpha methods' history term, added to the right-hand side.
   void add_alpha_history(SecondOrderSystem& system, const State& from);
   // f_{n+1} and the damping term, added to the right-hand side; returns ||f_{n+1}||.
   double add_loads_and_damping(SecondOrderSystem& system, double time, double c_c);
-  // The link deformations of u_lin and u~ and the rates of v~, with the supports' motion.
-  void predict_links(SecondOrderSystem& system, const State& to);
+  // The link deformations of u~ and the rates of v~, with the supports' motion; `solved`: and
+  // those of u at F_start (to.displacement, solved), in the same pass.
+  void predict_links(SecondOrderSystem& system, const State& to, bool solved);
   // F_{n+1} by the condensed Newton iteration; false, with result.failure, when it fails.
   bool solve_link_forces(SecondOrderSystem& system, const Factorization& f, double c_m, double c_c,
                          double external_norm, StepResult& result);
@@ -132,7 +140,9 @@ class Newmark final : public Integrator {
   // there, and the residual F - F_law.
   void deform_links(const Factorization& f);
   void evaluate_links(LinkSet& links, const Factorization& f, double c_m, double c_c);
-  // u_{n+1} = u_lin - Z F and the link state of `to`.
+  enum class ResidualKind { zero, some, not_finite };
+  ResidualKind residual_kind() const;
+  // u_{n+1} = u_start - Z (F - F_start) and the link state of `to`.
   void apply_link_forces(const Factorization& f, State& to) const;
   // (B u)_r of a folded row from its deformation and the supports' offset, or at the current
   // iterate.
@@ -182,7 +192,15 @@ class Newmark final : public Integrator {
   // Work vectors, kept to avoid allocation inside the time loop.
   Vector predicted_displacement_, predicted_velocity_, rhs_, work_, external_, damping_force_;
   Vector history_;
-  Vector delta_linear_, delta_predicted_, rate_predicted_;
+  // The iteration starts from F_start (the folded rows' predicted unknowns, 0 elsewhere), which
+  // the linear solve takes in its right-hand side: u_start = A^{-1}(r - B^T F_start), whose link
+  // deformations are delta_start; F - F_start, the iteration's corrections so far.
+  Vector start_force_, delta_start_, force_change_;
+  bool started_loaded_ = false;  // F_start has folded rows (else it is zero)
+  double force_change(Index row) const {
+    return started_loaded_ ? assumed_force_[row] - start_force_[row] : assumed_force_[row];
+  }
+  Vector delta_predicted_, rate_predicted_;
   Vector delta_, rate_, acceleration_, assumed_force_, law_force_, residual_, correction_;
   // dF/d(delta), dF/d(delta_dot), dF/d(delta_ddot) of each row at the initial state, on the rows
   // that may be folded (a force law's, not a contact's nor a friction link's), zero elsewhere.

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/packets.hpp"
+
 namespace pound::results {
 
 double EnergyTerms::largest_term() const {
@@ -52,58 +54,84 @@ void EnergyBalance::set_step_forces(const std::vector<char>& by_row) {
   if (!any) step_force_weight_.resize(0);
 }
 
+namespace {
+
+// The sums of one step's energy terms over the DOFs, in one pass (lumped mass): four at a time in
+// packets, the rest one by one, each sum then added across its packet.
+struct StepSums {
+  double kinetic = 0.0;            // sum m v^2
+  double strain = 0.0;             // sum u K u
+  double input = 0.0;              // sum du (f + f_n)
+  double mass_damping = 0.0;       // sum du m (v + v_n)
+  double stiffness_damping = 0.0;  // sum (v + v_n) (K u - K u_n)
+  double damping = 0.0;            // sum du (C v_avg), when C is assembled
+};
+
+struct StepVectors {
+  const double* mass;
+  const double* u;
+  const double* v;
+  const double* stiffness_force;
+  const double* external;
+  const double* previous_u;
+  const double* previous_v;
+  const double* previous_stiffness_force;
+  const double* previous_external;
+  const double* damping_force;  // C v_avg, or nullptr
+  double* step;                 // du, written
+};
+
+double sum_of(Packet4 packet) { return (packet[0] + packet[1]) + (packet[2] + packet[3]); }
+
+StepSums step_sums(Index n, const StepVectors& x) {
+  Packet4 kinetic{}, strain{}, input{}, mass_damping{}, stiffness_damping{}, damping{};
+  const Index packed = n / 4 * 4;
+  for (Index i = 0; i < packed; i += 4) {
+    const Packet4 v = load_packet(x.v + i), u = load_packet(x.u + i);
+    const Packet4 mass = load_packet(x.mass + i), stiffness = load_packet(x.stiffness_force + i);
+    const Packet4 step = u - load_packet(x.previous_u + i);
+    const Packet4 velocities = v + load_packet(x.previous_v + i);
+    store_packet(step, x.step + i);
+    kinetic = multiply_add(mass * v, v, kinetic);
+    strain = multiply_add(u, stiffness, strain);
+    input = multiply_add(step, load_packet(x.external + i) + load_packet(x.previous_external + i),
+                         input);
+    mass_damping = multiply_add(step * mass, velocities, mass_damping);
+    stiffness_damping = multiply_add(
+        velocities, stiffness - load_packet(x.previous_stiffness_force + i), stiffness_damping);
+    if (x.damping_force) damping = multiply_add(step, load_packet(x.damping_force + i), damping);
+  }
+  StepSums sums{sum_of(kinetic),           sum_of(strain), sum_of(input), sum_of(mass_damping),
+                sum_of(stiffness_damping), sum_of(damping)};
+  for (Index i = packed; i < n; ++i) {
+    const double step = x.u[i] - x.previous_u[i], velocities = x.v[i] + x.previous_v[i];
+    x.step[i] = step;
+    sums.kinetic = multiply_add(x.mass[i] * x.v[i], x.v[i], sums.kinetic);
+    sums.strain = multiply_add(x.u[i], x.stiffness_force[i], sums.strain);
+    sums.input = multiply_add(step, x.external[i] + x.previous_external[i], sums.input);
+    sums.mass_damping = multiply_add(step * x.mass[i], velocities, sums.mass_damping);
+    sums.stiffness_damping = multiply_add(
+        velocities, x.stiffness_force[i] - x.previous_stiffness_force[i], sums.stiffness_damping);
+    if (x.damping_force) sums.damping = multiply_add(step, x.damping_force[i], sums.damping);
+  }
+  return sums;
+}
+
+}  // namespace
+
 void EnergyBalance::record(const integrators::State& state) {
   const Index n = system_.size();
   if (system_.has_external_force())
     system_.external_force(state.time, external_);
   else
     external_.setZero(n);
-  system_.multiply_mass(state.velocity, work_);
-  terms_.kinetic = 0.5 * state.velocity.dot(work_);
   system_.multiply_stiffness(state.displacement, stiffness_force_);
-  terms_.strain = 0.5 * state.displacement.dot(stiffness_force_);
+  const Vector* mass = system_.lumped_mass();
   const bool algorithmic = acceleration_energy_ != 0.0 && state.acceleration.size() == n;
-  if (!started_) {
-    terms_.initial = terms_.kinetic + terms_.strain;
-    if (algorithmic) initial_acceleration_norm_ = mass_norm(state.acceleration);
-    started_ = true;
-  } else {
-    if (algorithmic) {
-      const double dt = state.time - previous_.time;
-      terms_.algorithmic = acceleration_energy_ * dt * dt *
-                           (mass_norm(state.acceleration) - initial_acceleration_norm_);
-    }
-    // Sampled: a floor needs no exact maximum, and on the smallest models (two DOFs) taking it
-    // every step cost 8 % of the solve.
-    if (recorded_steps_++ % kRoundOffStride == 0)
-      terms_.round_off =
-          std::max(terms_.round_off, 1e-9 * step_load_energy(state.time - previous_.time));
-    step_ = state.displacement - previous_.displacement;
-    const Vector& step = step_;
-    terms_.input += 0.5 * step.dot(external_ + previous_external_);
-    if (system_.has_damping()) {
-      average_ = 0.5 * (state.velocity + previous_.velocity);
-      if (const auto rayleigh = system_.rayleigh()) {
-        system_.multiply_mass(average_, work_);
-        terms_.damping += rayleigh->mass_coefficient * step.dot(work_) +
-                          rayleigh->stiffness_coefficient *
-                              average_.dot(stiffness_force_ - previous_stiffness_force_);
-      } else {
-        system_.multiply_damping(average_, work_);
-        terms_.damping += step.dot(work_);
-      }
-    }
-    if (state.link_force.size() > 0) {
-      // Work of the link forces on the structure (B du): with moving supports the links also
-      // deform by the supports' motion, whose work is not the structure's.
-      system_.links().project(step, link_step_);
-      average_force_ = 0.5 * (state.link_force + previous_.link_force);
-      if (step_force_weight_.size() > 0)
-        average_force_ +=
-            0.5 * step_force_weight_.cwiseProduct(state.link_force - previous_.link_force);
-      terms_.links += average_force_.dot(link_step_);
-    }
-  }
+  if (started_ && mass && !algorithmic)
+    record_step_lumped(state, *mass);
+  else
+    record_general(state, algorithmic);
   worst_ = std::max(worst_, terms_.balance_error());
   previous_external_.swap(external_);
   previous_stiffness_force_.swap(stiffness_force_);
@@ -111,7 +139,89 @@ void EnergyBalance::record(const integrators::State& state) {
   previous_.displacement = state.displacement;
   previous_.velocity = state.velocity;
   previous_.link_force = state.link_force;
-  previous_.link_penetration = state.link_penetration;
+}
+
+void EnergyBalance::record_step_lumped(const integrators::State& state, const Vector& mass) {
+  sample_round_off(state.time - previous_.time);
+  const Index n = system_.size();
+  const auto rayleigh = system_.rayleigh();
+  const bool damped = system_.has_damping();
+  if (damped && !rayleigh) {
+    average_ = 0.5 * (state.velocity + previous_.velocity);
+    system_.multiply_damping(average_, work_);
+  }
+  step_.resize(n);
+  const StepSums sums = step_sums(
+      n, {mass.data(), state.displacement.data(), state.velocity.data(), stiffness_force_.data(),
+          external_.data(), previous_.displacement.data(), previous_.velocity.data(),
+          previous_stiffness_force_.data(), previous_external_.data(),
+          damped && !rayleigh ? work_.data() : nullptr, step_.data()});
+  terms_.kinetic = 0.5 * sums.kinetic;
+  terms_.strain = 0.5 * sums.strain;
+  terms_.input += 0.5 * sums.input;
+  if (rayleigh)
+    terms_.damping += 0.5 * (rayleigh->mass_coefficient * sums.mass_damping +
+                             rayleigh->stiffness_coefficient * sums.stiffness_damping);
+  else if (damped)
+    terms_.damping += sums.damping;
+  add_link_work(state);
+}
+
+void EnergyBalance::sample_round_off(double dt) {
+  // Sampled: a floor needs no exact maximum, and on the smallest models (two DOFs) taking it
+  // every step cost 8 % of the solve.
+  if (recorded_steps_++ % kRoundOffStride == 0)
+    terms_.round_off = std::max(terms_.round_off, 1e-9 * step_load_energy(dt));
+}
+
+void EnergyBalance::add_link_work(const integrators::State& state) {
+  if (state.link_force.size() == 0) return;
+  // Work of the link forces on the structure (B du): with moving supports the links also
+  // deform by the supports' motion, whose work is not the structure's. A step-average row's
+  // force is F_{n+1} (weight 1), every other row's the trapezoidal average.
+  system_.links().project(step_, link_step_);
+  const bool weighted = step_force_weight_.size() > 0;
+  double work = 0.0;
+  for (Index r = 0; r < link_step_.size(); ++r) {
+    const double now = state.link_force[r], before = previous_.link_force[r];
+    double average = 0.5 * (now + before);
+    if (weighted) average += 0.5 * step_force_weight_[r] * (now - before);
+    work = multiply_add(average, link_step_[r], work);
+  }
+  terms_.links += work;
+}
+
+void EnergyBalance::record_general(const integrators::State& state, bool algorithmic) {
+  system_.multiply_mass(state.velocity, work_);
+  terms_.kinetic = 0.5 * state.velocity.dot(work_);
+  terms_.strain = 0.5 * state.displacement.dot(stiffness_force_);
+  if (!started_) {
+    terms_.initial = terms_.kinetic + terms_.strain;
+    if (algorithmic) initial_acceleration_norm_ = mass_norm(state.acceleration);
+    started_ = true;
+    return;
+  }
+  if (algorithmic) {
+    const double dt = state.time - previous_.time;
+    terms_.algorithmic = acceleration_energy_ * dt * dt *
+                         (mass_norm(state.acceleration) - initial_acceleration_norm_);
+  }
+  sample_round_off(state.time - previous_.time);
+  step_ = state.displacement - previous_.displacement;
+  terms_.input += 0.5 * step_.dot(external_ + previous_external_);
+  if (system_.has_damping()) {
+    average_ = 0.5 * (state.velocity + previous_.velocity);
+    if (const auto rayleigh = system_.rayleigh()) {
+      system_.multiply_mass(average_, work_);
+      terms_.damping += rayleigh->mass_coefficient * step_.dot(work_) +
+                        rayleigh->stiffness_coefficient *
+                            average_.dot(stiffness_force_ - previous_stiffness_force_);
+    } else {
+      system_.multiply_damping(average_, work_);
+      terms_.damping += step_.dot(work_);
+    }
+  }
+  add_link_work(state);
 }
 
 }  // namespace pound::results

@@ -75,6 +75,14 @@ class EnergyBalance : public Observer {
 
  private:
   double mass_norm(const Vector& acceleration);  // a^T M a
+  // A step's terms: with a lumped mass and no algorithmic energy, the sums over the DOFs in one
+  // pass; otherwise (and at the start) term by term.
+  void record_step_lumped(const integrators::State& state, const Vector& mass);
+  void record_general(const integrators::State& state, bool algorithmic);
+  // The round-off floor, every kRoundOffStride steps.
+  void sample_round_off(double dt);
+  // F_avg . B du over the link rows, from step_ (du).
+  void add_link_work(const integrators::State& state);
   // 1/2 sum (f_i dt)^2 / m_i over the lumped masses (0 with consistent ones).
   double step_load_energy(double dt);
 
@@ -92,7 +100,6 @@ class EnergyBalance : public Observer {
   static constexpr long kRoundOffStride = 64;  // steps between samples of the round-off floor
   long recorded_steps_ = 0;                    // since the start
   Vector step_force_weight_;  // by row: 1 for a step-average force, else 0 (empty: none)
-  Vector average_force_;
   // K u at this step and the previous one: with Rayleigh damping the damping work follows from
   // them (du^T K v_avg = v_avg^T (K u_{n+1} - K u_n)), one band product less per step.
   Vector stiffness_force_, previous_stiffness_force_;

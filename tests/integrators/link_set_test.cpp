@@ -101,6 +101,40 @@ TEST(LinkSet, PenetrationsAndRateInOnePassAreTheSeparatePassesToTheBit) {
       }
 }
 
+// The predictor's two products in one pass are the separate ones to the bit, signed zeros
+// included.
+TEST(LinkSet, PenetrationAndRateInOnePassAreTheSeparatePassesToTheBit) {
+  const LinkSet links = two_links();
+  const std::array<Vector, 3> vectors = {entries({0.3, 0.15, 0.02, 0.01}),
+                                         entries({1.0 / 3.0, -2.0 / 7.0, 1e-17, 5.5}),
+                                         entries({-0.0, 0.0, -0.0, -0.0})};
+  for (const Vector& u : vectors)
+    for (const Vector& v : vectors) {
+      Vector delta, rate, expected_delta, expected_rate;
+      links.penetration_and_rate(u, v, delta, rate);
+      links.penetration(u, expected_delta);
+      links.project(v, expected_rate);
+      for (Index r = 0; r < links.size(); ++r) {
+        EXPECT_EQ(delta[r], expected_delta[r]);
+        EXPECT_EQ(rate[r], expected_rate[r]);
+        EXPECT_EQ(std::signbit(rate[r]), std::signbit(expected_rate[r]));
+      }
+    }
+}
+
+// nodal -= B^T F over the rows with a force: the rows of F = 0 leave every entry as it was, -0
+// included.
+TEST(LinkSet, SubtractTransposeTakesBTransposeFFromTheNodalVector) {
+  const LinkSet links = two_links();
+  Vector nodal = entries({1.0, -0.0, 2.0, 0.5});
+  links.subtract_transpose(entries({7.0, 0.0, 2.0}), nodal);
+  EXPECT_EQ(nodal, entries({1.0 - 7.0, -0.0 + 7.0 - 2.0, 2.0, 0.5 - 4.0}));
+  Vector untouched = entries({1.0, -0.0, 2.0, 0.5});
+  links.subtract_transpose(entries({0.0, 0.0, 0.0}), untouched);
+  EXPECT_TRUE(std::signbit(untouched[1]));
+  EXPECT_EQ(untouched, entries({1.0, -0.0, 2.0, 0.5}));
+}
+
 TEST(LinkSet, ForcesEnterTheEquationsAsBTransposeF) {
   const LinkSet links = two_links();
   const Vector nodal = links.connectivity().transpose() * entries({7.0, 4.0, 2.0});
