@@ -20,7 +20,7 @@ class StructuralSystem final : public integrators::SecondOrderSystem {
 
   Index size() const override { return dofs_.size(); }
   void multiply_mass(const Vector& x, Vector& y) const override;
-  std::optional<Rayleigh> rayleigh() const override;
+  const Rayleigh* rayleigh() const override;
   bool has_damping() const override {
     return damping_matrix_.size() > 0 || damping_.mass_coefficient != 0.0 ||
            damping_.stiffness_coefficient != 0.0;
@@ -75,7 +75,15 @@ class StructuralSystem final : public integrators::SecondOrderSystem {
   // The same by rows for C x: each entry of y one sum in registers, the terms in the same order
   // as by columns (a sixth fewer instructions than the columns' scatter on the 3-D buildings).
   Eigen::SparseMatrix<double, Eigen::RowMajor> damping_rows_;
-  Vector loads_;  // constant nodal forces on the free DOFs
+  // C as diag(a0) M + diag(a1) K where it is (Rayleigh damping, or each structure's own), for
+  // its products: none with P-Delta (a1 times the first-order K) or where an equation has two.
+  std::optional<Rayleigh> rayleigh_;
+  // From the model's a0, a1 or, with `own` damping, the elements' by equation (`by_dof`: one of
+  // each on every equation; NaN where none).
+  void set_rayleigh(bool own, bool by_dof, const Vector& mass_coefficient,
+                    const Vector& stiffness_coefficient);
+  mutable Vector damping_work_;  // K x of multiply_damping
+  Vector loads_;                 // constant nodal forces on the free DOFs
   bool has_loads_ = false;
   struct Excitation {
     model::GroundMotion motion;

@@ -28,27 +28,28 @@ void predict(Index n, double dt, double displacement_factor, double velocity_fac
   }
 }
 
-// The predictors, x = c_c u~ - v~ and M (inertia u~ + a0 x) + f over [first, last).
+// The predictors, x = c_c u~ - v~ and M (inertia u~ + a0 x) + f over [first, last), a0 by DOF.
 struct DampedPrediction {
-  double dt, displacement_factor, velocity_factor, c_c, inertia, mass_coefficient;
+  double dt, displacement_factor, velocity_factor, c_c, inertia;
 };
 void predict_damped(Index first, Index last, const DampedPrediction& p,
                     const double* __restrict__ u, const double* __restrict__ v,
                     const double* __restrict__ a, const double* __restrict__ mass,
-                    const double* __restrict__ force, double* __restrict__ predicted_u,
-                    double* __restrict__ predicted_v, double* __restrict__ x,
-                    double* __restrict__ rhs) {
+                    const double* __restrict__ mass_coefficient, const double* __restrict__ force,
+                    double* __restrict__ predicted_u, double* __restrict__ predicted_v,
+                    double* __restrict__ x, double* __restrict__ rhs) {
   for (Index i = first; i < last; ++i) {
     predicted_u[i] = u[i] + p.dt * v[i] + p.displacement_factor * a[i];
     predicted_v[i] = v[i] + p.velocity_factor * a[i];
     x[i] = p.c_c * predicted_u[i] - predicted_v[i];
-    rhs[i] = mass[i] * (p.inertia * predicted_u[i] + p.mass_coefficient * x[i]) + force[i];
+    rhs[i] = mass[i] * (p.inertia * predicted_u[i] + mass_coefficient[i] * x[i]) + force[i];
   }
 }
 
-void add_scaled(Index first, Index last, double scale, const double* __restrict__ x,
-                double* __restrict__ y) {
-  for (Index i = first; i < last; ++i) y[i] += scale * x[i];
+// y += s x by entry over [first, last).
+void add_product(Index first, Index last, const double* __restrict__ scale,
+                 const double* __restrict__ x, double* __restrict__ y) {
+  for (Index i = first; i < last; ++i) y[i] += scale[i] * x[i];
 }
 
 void correct(Index n, double c_m, double velocity_gain, const double* __restrict__ u,
@@ -385,8 +386,8 @@ double Newmark::predict_lumped(SecondOrderSystem& system, const State& from, con
                                double dt, double c_m, double c_c) {
   const Index n = system.size();
   const double mass_weight = (1.0 - alpha_m_) / (1.0 - alpha_f_);
-  const DampedPrediction p{dt,  (0.5 - beta_) * dt * dt, (1.0 - gamma_) * dt,
-                           c_c, mass_weight * c_m,       0.0};
+  const DampedPrediction p{dt, (0.5 - beta_) * dt * dt, (1.0 - gamma_) * dt, c_c,
+                           mass_weight * c_m};
   predicted_displacement_.resize(n);
   predicted_velocity_.resize(n);
   rhs_.resize(n);
@@ -397,7 +398,7 @@ double Newmark::predict_lumped(SecondOrderSystem& system, const State& from, con
   } else {
     external_.setZero(n);
   }
-  const auto rayleigh = system.rayleigh();
+  const SecondOrderSystem::Rayleigh* rayleigh = system.has_damping() ? system.rayleigh() : nullptr;
   if (!rayleigh) {
     predict(n, dt, p.displacement_factor, p.velocity_factor, p.inertia, from.displacement.data(),
             from.velocity.data(), from.acceleration.data(), mass.data(),
@@ -405,22 +406,22 @@ double Newmark::predict_lumped(SecondOrderSystem& system, const State& from, con
     rhs_ += external_;
     return external_norm;
   }
-  DampedPrediction damped = p;
-  damped.mass_coefficient = rayleigh->mass_coefficient;
-  const double stiffness_coefficient = rayleigh->stiffness_coefficient;
   work_.resize(n);
+  const auto make = [&](Index first, Index last) {
+    predict_damped(first, last, p, from.displacement.data(), from.velocity.data(),
+                   from.acceleration.data(), mass.data(), rayleigh->mass_coefficient.data(),
+                   external_.data(), predicted_displacement_.data(), predicted_velocity_.data(),
+                   work_.data(), rhs_.data());
+  };
+  if (!rayleigh->stiffness) {  // mass-proportional only: no product by K
+    make(0, n);
+    return external_norm;
+  }
   damping_force_.resize(n);
-  system.multiply_stiffness_by_blocks(
-      work_, damping_force_,
-      [&](Index first, Index last) {
-        predict_damped(first, last, damped, from.displacement.data(), from.velocity.data(),
-                       from.acceleration.data(), mass.data(), external_.data(),
-                       predicted_displacement_.data(), predicted_velocity_.data(), work_.data(),
-                       rhs_.data());
-      },
-      [&](Index first, Index last) {
-        add_scaled(first, last, stiffness_coefficient, damping_force_.data(), rhs_.data());
-      });
+  system.multiply_stiffness_by_blocks(work_, damping_force_, make, [&](Index first, Index last) {
+    add_product(first, last, rayleigh->stiffness_coefficient.data(), damping_force_.data(),
+                rhs_.data());
+  });
   return external_norm;
 }
 
@@ -539,6 +540,7 @@ bool Newmark::solve_link_forces(SecondOrderSystem& system, const Factorization& 
     }
     solve_correction(f);
     assumed_force_ -= correction_;
+    mark_changed_rows();
     ++result.iterations;
     // Converged to machine precision: with a very stiff penalty the residual cannot fall below
     // its round-off (stiffness x eps x displacement) while the correction already has.
@@ -682,20 +684,26 @@ void Newmark::solve_correction(const Factorization& f) {
     correction_[active_rows_[static_cast<std::size_t>(i)]] = reduced_correction_[i];
 }
 
+void Newmark::mark_changed_rows() {
+  for (Index r = 0; r < correction_.size(); ++r)
+    if (correction_[r] != 0.0 && !changed_mark_[static_cast<std::size_t>(r)]) {
+      changed_mark_[static_cast<std::size_t>(r)] = 1;
+      changed_rows_.push_back(r);
+    }
+}
+
 // delta = delta_start - G (F - F_start) over the rows the iteration has corrected (none at its
 // first evaluation, few after it); a dense product when most are.
 void Newmark::deform_links(const Factorization& f) {
   const Index m = assumed_force_.size();
-  Index moved = 0;
-  for (Index k = 0; k < m; ++k) moved += force_change(k) != 0.0;
-  if (2 * moved > m) {
+  if (2 * static_cast<Index>(changed_rows_.size()) > m) {
     force_change_.resize(m);
     for (Index k = 0; k < m; ++k) force_change_[k] = force_change(k);
     delta_.noalias() = delta_start_ - f.coupling * force_change_;
     return;
   }
   delta_ = delta_start_;
-  for (Index k = 0; k < m; ++k)
+  for (const Index k : changed_rows_)
     if (const double change = force_change(k); change != 0.0)
       delta_.noalias() -= change * f.coupling.col(k);
 }
@@ -752,7 +760,11 @@ double Newmark::folded_projection(Index row) const {
 // for a spring (k = K_r, no rate, no motion), whose unknown then stays exactly what it was.
 void Newmark::start_folded_rows(SecondOrderSystem& system, const Factorization& f,
                                 const State& from) {
-  assumed_force_.setZero(system.links().size());
+  const Index m = system.links().size();
+  assumed_force_.setZero(m);
+  for (const Index r : changed_rows_) changed_mark_[static_cast<std::size_t>(r)] = 0;
+  changed_rows_.clear();
+  changed_mark_.resize(static_cast<std::size_t>(m), 0);
   if (f.folded_rows.empty()) return;
   if (links_move_)
     system.link_motion(from.time, start_offset_, start_offset_rate_, start_offset_acceleration_);
@@ -954,7 +966,7 @@ void Newmark::release_constraint_acceleration(SecondOrderSystem& system, State& 
 
 void Newmark::apply_link_forces(const Factorization& f, State& to) const {
   // u_{n+1} = u_start - Z (F - F_start)
-  for (Index k = 0; k < assumed_force_.size(); ++k)
+  for (const Index k : changed_rows_)
     if (const double change = force_change(k); change != 0.0)
       to.displacement -= change * f.influence.col(k);
   to.link_penetration = delta_;

@@ -197,6 +197,11 @@ class Newmark final : public Integrator {
   // deformations are delta_start; F - F_start, the iteration's corrections so far.
   Vector start_force_, delta_start_, force_change_;
   bool started_loaded_ = false;  // F_start has folded rows (else it is zero)
+  // The rows this step's iteration has corrected (F may differ from F_start on these only), in
+  // the order first corrected, and a mark by row.
+  std::vector<Index> changed_rows_;
+  std::vector<char> changed_mark_;
+  void mark_changed_rows();  // after a correction
   double force_change(Index row) const {
     return started_loaded_ ? assumed_force_[row] - start_force_[row] : assumed_force_[row];
   }

@@ -48,12 +48,16 @@ class SecondOrderSystem {
   virtual const Vector* lumped_mass() const { return nullptr; }
   virtual bool has_damping() const = 0;
   virtual void multiply_damping(const Vector& x, Vector& y) const = 0;  // y = C x
-  // The coefficients when C = a0 M + a1 K with the K of multiply_stiffness, so that C x can
-  // follow from products already made; none otherwise (an assembled C, or no damping).
+  // C = diag(a0) M + diag(a1) K with the M and K of the products here, by DOF, where neither M
+  // nor K couples two DOFs of different coefficients: Rayleigh damping a0 M + a1 K (every
+  // coefficient the same), or each structure of a scene damped with its own a0 and a1 (two
+  // buildings that only their links join). C x then follows from products already made (none of
+  // K when every a1 is 0); none otherwise (a C that must be assembled, or no damping).
   struct Rayleigh {
-    double mass_coefficient = 0.0, stiffness_coefficient = 0.0;
+    Vector mass_coefficient, stiffness_coefficient;  // a0 [1/T] and a1 [T] of each DOF
+    bool stiffness = false;                          // some a1 is not 0
   };
-  virtual std::optional<Rayleigh> rayleigh() const { return std::nullopt; }
+  virtual const Rayleigh* rayleigh() const { return nullptr; }
   virtual void multiply_stiffness(const Vector& x, Vector& y) const = 0;  // y = K x
   // y = K x with x made on the way, so that a step's vector passes can share one trip through
   // the cache: make(first, last) writes x[first, last) and is called in order, before any entry

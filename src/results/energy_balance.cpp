@@ -62,8 +62,8 @@ struct StepSums {
   double kinetic = 0.0;            // sum m v^2
   double strain = 0.0;             // sum u K u
   double input = 0.0;              // sum du (f + f_n)
-  double mass_damping = 0.0;       // sum du m (v + v_n)
-  double stiffness_damping = 0.0;  // sum (v + v_n) (K u - K u_n)
+  double mass_damping = 0.0;       // sum a0 du m (v + v_n)
+  double stiffness_damping = 0.0;  // sum a1 (v + v_n) (K u - K u_n)
   double damping = 0.0;            // sum du (C v_avg), when C is assembled
 };
 
@@ -77,8 +77,10 @@ struct StepVectors {
   const double* previous_v;
   const double* previous_stiffness_force;
   const double* previous_external;
-  const double* damping_force;  // C v_avg, or nullptr
-  double* step;                 // du, written
+  const double* damping_force;          // C v_avg, or nullptr
+  const double* mass_coefficient;       // a0 of Rayleigh damping by DOF, or nullptr
+  const double* stiffness_coefficient;  // its a1
+  double* step;                         // du, written
 };
 
 double sum_of(Packet4 packet) { return (packet[0] + packet[1]) + (packet[2] + packet[3]); }
@@ -96,9 +98,13 @@ StepSums step_sums(Index n, const StepVectors& x) {
     strain = multiply_add(u, stiffness, strain);
     input = multiply_add(step, load_packet(x.external + i) + load_packet(x.previous_external + i),
                          input);
-    mass_damping = multiply_add(step * mass, velocities, mass_damping);
-    stiffness_damping = multiply_add(
-        velocities, stiffness - load_packet(x.previous_stiffness_force + i), stiffness_damping);
+    if (x.mass_coefficient) {
+      mass_damping =
+          multiply_add(load_packet(x.mass_coefficient + i) * step * mass, velocities, mass_damping);
+      stiffness_damping =
+          multiply_add(load_packet(x.stiffness_coefficient + i) * velocities,
+                       stiffness - load_packet(x.previous_stiffness_force + i), stiffness_damping);
+    }
     if (x.damping_force) damping = multiply_add(step, load_packet(x.damping_force + i), damping);
   }
   StepSums sums{sum_of(kinetic),           sum_of(strain), sum_of(input), sum_of(mass_damping),
@@ -109,9 +115,13 @@ StepSums step_sums(Index n, const StepVectors& x) {
     sums.kinetic = multiply_add(x.mass[i] * x.v[i], x.v[i], sums.kinetic);
     sums.strain = multiply_add(x.u[i], x.stiffness_force[i], sums.strain);
     sums.input = multiply_add(step, x.external[i] + x.previous_external[i], sums.input);
-    sums.mass_damping = multiply_add(step * x.mass[i], velocities, sums.mass_damping);
-    sums.stiffness_damping = multiply_add(
-        velocities, x.stiffness_force[i] - x.previous_stiffness_force[i], sums.stiffness_damping);
+    if (x.mass_coefficient) {
+      sums.mass_damping =
+          multiply_add(x.mass_coefficient[i] * step * x.mass[i], velocities, sums.mass_damping);
+      sums.stiffness_damping = multiply_add(x.stiffness_coefficient[i] * velocities,
+                                            x.stiffness_force[i] - x.previous_stiffness_force[i],
+                                            sums.stiffness_damping);
+    }
     if (x.damping_force) sums.damping = multiply_add(step, x.damping_force[i], sums.damping);
   }
   return sums;
@@ -144,24 +154,25 @@ void EnergyBalance::record(const integrators::State& state) {
 void EnergyBalance::record_step_lumped(const integrators::State& state, const Vector& mass) {
   sample_round_off(state.time - previous_.time);
   const Index n = system_.size();
-  const auto rayleigh = system_.rayleigh();
   const bool damped = system_.has_damping();
+  const integrators::SecondOrderSystem::Rayleigh* rayleigh = damped ? system_.rayleigh() : nullptr;
   if (damped && !rayleigh) {
     average_ = 0.5 * (state.velocity + previous_.velocity);
     system_.multiply_damping(average_, work_);
   }
   step_.resize(n);
-  const StepSums sums = step_sums(
-      n, {mass.data(), state.displacement.data(), state.velocity.data(), stiffness_force_.data(),
-          external_.data(), previous_.displacement.data(), previous_.velocity.data(),
-          previous_stiffness_force_.data(), previous_external_.data(),
-          damped && !rayleigh ? work_.data() : nullptr, step_.data()});
+  const StepSums sums =
+      step_sums(n, {mass.data(), state.displacement.data(), state.velocity.data(),
+                    stiffness_force_.data(), external_.data(), previous_.displacement.data(),
+                    previous_.velocity.data(), previous_stiffness_force_.data(),
+                    previous_external_.data(), damped && !rayleigh ? work_.data() : nullptr,
+                    rayleigh ? rayleigh->mass_coefficient.data() : nullptr,
+                    rayleigh ? rayleigh->stiffness_coefficient.data() : nullptr, step_.data()});
   terms_.kinetic = 0.5 * sums.kinetic;
   terms_.strain = 0.5 * sums.strain;
   terms_.input += 0.5 * sums.input;
   if (rayleigh)
-    terms_.damping += 0.5 * (rayleigh->mass_coefficient * sums.mass_damping +
-                             rayleigh->stiffness_coefficient * sums.stiffness_damping);
+    terms_.damping += 0.5 * (sums.mass_damping + sums.stiffness_damping);
   else if (damped)
     terms_.damping += sums.damping;
   add_link_work(state);
@@ -211,11 +222,13 @@ void EnergyBalance::record_general(const integrators::State& state, bool algorit
   terms_.input += 0.5 * step_.dot(external_ + previous_external_);
   if (system_.has_damping()) {
     average_ = 0.5 * (state.velocity + previous_.velocity);
-    if (const auto rayleigh = system_.rayleigh()) {
+    if (const auto* rayleigh = system_.rayleigh()) {
+      // du^T diag(a0) M v_avg + v_avg^T diag(a1) (K u - K u_n): C = diag(a0) M + diag(a1) K is
+      // symmetric, as M and K couple no DOFs of different coefficients.
       system_.multiply_mass(average_, work_);
-      terms_.damping += rayleigh->mass_coefficient * step_.dot(work_) +
-                        rayleigh->stiffness_coefficient *
-                            average_.dot(stiffness_force_ - previous_stiffness_force_);
+      terms_.damping += step_.cwiseProduct(rayleigh->mass_coefficient).dot(work_) +
+                        average_.cwiseProduct(rayleigh->stiffness_coefficient)
+                            .dot(stiffness_force_ - previous_stiffness_force_);
     } else {
       system_.multiply_damping(average_, work_);
       terms_.damping += step_.dot(work_);

@@ -520,8 +520,17 @@ TEST(StructuralSystem, AssemblyLosesNothing) {
   system.multiply_mass(u, m_u);
   const Vector expected = kA0 * m_u + kA1 * k_u;
   EXPECT_LE((c_u - expected).norm(), 1e-14 * expected.norm());
-  // Assembled from the parts' own damping, C is not given as a0 M + a1 K.
-  EXPECT_FALSE(system.rayleigh());
+  // The parts' own damping, the same everywhere: C = diag(a0) M + diag(a1) K by DOF (a0 0 where
+  // no mass is, a rotation without rotary inertia).
+  const auto* rayleigh = system.rayleigh();
+  ASSERT_TRUE(rayleigh);
+  EXPECT_TRUE(rayleigh->stiffness);
+  for (Index i = 0; i < system.size(); ++i) {
+    EXPECT_EQ(rayleigh->stiffness_coefficient[i], kA1);
+    if (mass(i, i) != 0.0) {
+      EXPECT_EQ(rayleigh->mass_coefficient[i], kA0) << i;
+    }
+  }
 }
 
 // The model's Rayleigh damping is said to be so (the energy balance then takes C x from K x and
@@ -530,10 +539,63 @@ TEST(StructuralSystem, ModelRayleighDampingIsSaidToBeSo) {
   model::Model m = chain();
   EXPECT_FALSE(StructuralSystem(m).rayleigh());
   m.damping = model::RayleighDamping{0.3, 0.002};
-  const auto rayleigh = StructuralSystem(m).rayleigh();
+  const StructuralSystem system(m);
+  const auto* rayleigh = system.rayleigh();
   ASSERT_TRUE(rayleigh);
-  EXPECT_EQ(rayleigh->mass_coefficient, 0.3);
-  EXPECT_EQ(rayleigh->stiffness_coefficient, 0.002);
+  EXPECT_EQ(rayleigh->mass_coefficient, Vector::Constant(system.size(), 0.3));
+  EXPECT_EQ(rayleigh->stiffness_coefficient, Vector::Constant(system.size(), 0.002));
+  EXPECT_TRUE(rayleigh->stiffness);
+}
+
+// Two bars that share no node (two structures that only links would join), each damped with
+// its own a0 and a1: C = diag(a0) M + diag(a1) K by DOF, C x the assembled C's to round-off.
+// Joined at a node, the node's equation has two of each: C is assembled and none is said; and a
+// mass-proportional C needs no a1 at all.
+TEST(StructuralSystem, StructuresDampedEachWithItsOwnGiveRayleighByDof) {
+  const auto bar = [](const model::Model& m, Index i, Index j, double a0, double a1) {
+    const auto end = [&m](Index node) {
+      return model::ElementNode{node, m.nodes[static_cast<std::size_t>(node)].position};
+    };
+    return std::make_shared<const Truss>(
+        fmt::format("t{}_{}", i, j), std::array{end(i), end(j)}, 1,
+        Truss::Section{.youngs_modulus = 100.0, .area = 1.0, .density = 2.0},
+        model::RayleighDamping{a0, a1});
+  };
+  model::Model apart;
+  apart.dimension = 1;
+  for (double x : {0.0, 1.0, 3.0, 4.0}) apart.nodes.push_back({fmt::format("n{}", x), {x, 0.0}});
+  apart.elements = {bar(apart, 0, 1, 0.3, 0.002), bar(apart, 2, 3, 0.5, 0.004)};
+  apart.supports = {{.node = 0, .fixed = {true, false}}, {.node = 3, .fixed = {true, false}}};
+  apart.masses = {{.node = 1, .mass = 4.0, .damping = model::RayleighDamping{0.3, 0.0}},
+                  {.node = 2, .mass = 6.0, .damping = model::RayleighDamping{0.5, 0.0}}};
+  const StructuralSystem system(apart);
+  const auto* rayleigh = system.rayleigh();
+  ASSERT_TRUE(rayleigh);
+  EXPECT_EQ(rayleigh->mass_coefficient, (Vector{{0.3, 0.5}}));
+  EXPECT_EQ(rayleigh->stiffness_coefficient, (Vector{{0.002, 0.004}}));
+  // Masses 4 + 1 and 6 + 1 (each bar's half, rho A L / 2 = 1), bars E A / L = 100:
+  // C = diag(0.3 * 5 + 0.002 * 100, 0.5 * 7 + 0.004 * 100).
+  const Vector u{{0.7, -1.3}};
+  Vector c_u;
+  system.multiply_damping(u, c_u);
+  const Vector by_dof{{1.7 * 0.7, 3.9 * -1.3}};
+  EXPECT_LE((c_u - by_dof).norm(), 1e-15 * by_dof.norm());
+
+  // A bar 1-2 (E A / L = 50, half mass 2, a0 0.3, a1 0.002): C's rows 0.3 * 7 + 0.3, -0.1 and
+  // -0.1, 0.5 * 7 + 0.3 * 2 + 0.5.
+  model::Model joined = apart;
+  joined.elements.push_back(bar(joined, 1, 2, 0.3, 0.002));
+  const StructuralSystem shared(joined);
+  EXPECT_FALSE(shared.rayleigh());
+  shared.multiply_damping(u, c_u);
+  const Vector assembled{{2.4 * 0.7 - 0.1 * -1.3, -0.1 * 0.7 + 4.6 * -1.3}};
+  EXPECT_LE((c_u - assembled).norm(), 1e-15 * assembled.norm());
+
+  model::Model by_mass = apart;
+  by_mass.elements = {bar(by_mass, 0, 1, 0.3, 0.0), bar(by_mass, 2, 3, 0.5, 0.0)};
+  const auto* mass_only = StructuralSystem(by_mass).rayleigh();
+  ASSERT_TRUE(mass_only);
+  EXPECT_FALSE(mass_only->stiffness);
 }
 
 }  // namespace

@@ -20,8 +20,11 @@ class Chain final : public integrators::SecondOrderSystem {
   // Masses 1 + 0.1 k, springs 50 + 5 k; damping a0 M + a1 K, said to be Rayleigh's or assembled
   // as a matrix; the load on mass k is amplitude sin(2 t + k).
   Chain(Index masses, Damping damping, integrators::LinkSet links, double amplitude = 1.0)
-      : mass_(masses), stiffness_(Matrix::Zero(masses, masses)), links_(std::move(links)),
-        damping_kind_(damping), amplitude_(amplitude) {
+      : mass_(masses),
+        stiffness_(Matrix::Zero(masses, masses)),
+        links_(std::move(links)),
+        damping_kind_(damping),
+        amplitude_(amplitude) {
     for (Index k = 0; k < masses; ++k) {
       mass_[k] = 1.0 + 0.1 * static_cast<double>(k);
       const double spring = 50.0 + 5.0 * static_cast<double>(k);
@@ -33,6 +36,8 @@ class Chain final : public integrators::SecondOrderSystem {
       }
     }
     damping_ = kMassCoefficient * Matrix(mass_.asDiagonal()) + kStiffnessCoefficient * stiffness_;
+    rayleigh_ = {Vector::Constant(masses, kMassCoefficient),
+                 Vector::Constant(masses, kStiffnessCoefficient), true};
   }
 
   static constexpr double kMassCoefficient = 0.3, kStiffnessCoefficient = 0.002;
@@ -49,9 +54,8 @@ class Chain final : public integrators::SecondOrderSystem {
     else
       y.noalias() = damping_ * x;
   }
-  std::optional<Rayleigh> rayleigh() const override {
-    if (damping_kind_ != Damping::rayleigh) return std::nullopt;
-    return Rayleigh{kMassCoefficient, kStiffnessCoefficient};
+  const Rayleigh* rayleigh() const override {
+    return damping_kind_ == Damping::rayleigh ? &rayleigh_ : nullptr;
   }
   void multiply_stiffness(const Vector& x, Vector& y) const override {
     y.noalias() = stiffness_ * x;
@@ -85,10 +89,12 @@ class Chain final : public integrators::SecondOrderSystem {
     void solve(const Vector& rhs, Vector& solution) const override {
       solution = factors.solve(rhs);
     }
-    Eigen::LDLT<Matrix> factors;
+    // Cholesky, not LDL^T (whose unit-lower solve is the LU's): tests/core/pivoted_lu_test.cpp.
+    Eigen::LLT<Matrix> factors;
   };
   Vector mass_;
   Matrix stiffness_, damping_;
+  Rayleigh rayleigh_;
   integrators::LinkSet links_;
   Damping damping_kind_;
   double amplitude_;

@@ -48,9 +48,9 @@ class Oscillator final : public integrators::SecondOrderSystem {
   // Its damping as a0 m + a1 k, said so (as a Rayleigh-damped structure does).
   void set_rayleigh(double a0, double a1) {
     damping_ = a0 * mass_ + a1 * stiffness_;
-    rayleigh_ = Rayleigh{a0, a1};
+    rayleigh_ = Rayleigh{Vector::Constant(1, a0), Vector::Constant(1, a1), a1 != 0.0};
   }
-  std::optional<Rayleigh> rayleigh() const override { return rayleigh_; }
+  const Rayleigh* rayleigh() const override { return rayleigh_ ? &*rayleigh_ : nullptr; }
 
  private:
   struct Scalar final : integrators::LinearSolver {
