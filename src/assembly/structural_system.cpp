@@ -1015,9 +1015,13 @@ void StructuralSystem::multiply_band(const Vector& x, Vector& y, Index first, In
 }
 
 void StructuralSystem::frame_acceleration(double time, Vector& acceleration) const {
-  acceleration.setZero(size());
-  for (const Excitation& excitation : excitations_)
-    acceleration += excitation.motion.at(time) * excitation.influence;
+  // The first excitation's term written, not added to zeros.
+  if (excitations_.empty())
+    acceleration.setZero(size());
+  else
+    acceleration = excitations_[0].motion.at(time) * excitations_[0].influence;
+  for (std::size_t k = 1; k < excitations_.size(); ++k)
+    acceleration += excitations_[k].motion.at(time) * excitations_[k].influence;
   for (const MovingSupport& support : moving_supports_)
     acceleration += support.kinematics.at(time).acceleration * support.influence;
 }
@@ -1048,9 +1052,13 @@ void StructuralSystem::external_force(double time, Vector& force) const {
 }
 
 void StructuralSystem::compute_external_force(double time, Vector& force) const {
-  force = loads_;
-  for (const Excitation& excitation : excitations_)
-    force -= excitation.motion.at(time) * excitation.inertia;  // -M iota a_g(t)
+  // -M iota a_g(t) of each excitation; the first one's with the loads in one pass.
+  if (excitations_.empty())
+    force = loads_;
+  else
+    force = loads_ - excitations_[0].motion.at(time) * excitations_[0].inertia;
+  for (std::size_t k = 1; k < excitations_.size(); ++k)
+    force -= excitations_[k].motion.at(time) * excitations_[k].inertia;
   for (const MovingSupport& support : moving_supports_) {
     const model::GroundState ground = support.kinematics.at(time);
     force -= ground.acceleration * support.inertia;      // -M r a_s(t)

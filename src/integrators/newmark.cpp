@@ -160,6 +160,7 @@ std::string Newmark::name() const {
 
 void Newmark::initialize(SecondOrderSystem& system, State& state, double /*first_step*/) {
   factorizations_.by_step.clear();
+  factorizations_.last = nullptr;
   linear_part_checked_ = false;
   mass_solver_.solver.reset();
   factorizations_.uses.clear();
@@ -266,9 +267,22 @@ Vector Newmark::folded_stiffness(double dt) const {
 }
 
 const Newmark::Factorization& Newmark::factorization(SecondOrderSystem& system, double dt) {
-  ++factorizations_.uses[dt];
+  // A fixed step asks for the same factors at every step: no search; its uses are counted when
+  // another step is asked for.
+  FactorCache& cache = factorizations_;
+  if (dt == cache.last_step && cache.last) {
+    ++cache.last_repeats;
+    return *cache.last;
+  }
+  if (cache.last) cache.uses[cache.last_step] += cache.last_repeats;
+  cache.last_repeats = 0;
+  ++cache.uses[dt];
   auto found = factorizations_.by_step.find(dt);
-  if (found != factorizations_.by_step.end()) return found->second;
+  if (found != factorizations_.by_step.end()) {
+    factorizations_.last_step = dt;
+    factorizations_.last = &found->second;
+    return found->second;
+  }
   // Adaptive stepping and step cuts ask for a few step sizes over and over, contact location
   // for one-off ones: keep a handful, dropping the least used.
   if (factorizations_.by_step.size() >= 8) {
@@ -277,6 +291,7 @@ const Newmark::Factorization& Newmark::factorization(SecondOrderSystem& system, 
       if (factorizations_.uses[it->first] < factorizations_.uses[least->first]) least = it;
     factorizations_.uses.erase(least->first);
     factorizations_.by_step.erase(least);
+    factorizations_.last = nullptr;
   }
   // With alpha_m, alpha_f the mass term weighs (1 - a_m) / (1 - a_f).
   const double c_m = (1.0 - alpha_m_) / (1.0 - alpha_f_) / (beta_ * dt * dt);
@@ -314,7 +329,10 @@ const Newmark::Factorization& Newmark::factorization(SecondOrderSystem& system, 
     f.influence.col(k) = solution;
   }
   f.coupling = links.connectivity() * f.influence;
-  return factorizations_.by_step.emplace(dt, std::move(f)).first->second;
+  Factorization& made = factorizations_.by_step.emplace(dt, std::move(f)).first->second;
+  factorizations_.last_step = dt;
+  factorizations_.last = &made;
+  return made;
 }
 
 StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double dt, State& to) {

@@ -184,10 +184,14 @@ class Newmark final : public Integrator {
     FactorCache& operator=(const FactorCache&) {
       by_step.clear();
       uses.clear();
+      last = nullptr;
       return *this;
     }
     std::map<double, Factorization> by_step;
     std::map<double, long> uses;  // how often each was asked for
+    double last_step = 0.0;       // the step last asked for, and its factors (nullptr: none)
+    const Factorization* last = nullptr;
+    long last_repeats = 0;  // asked for again since, not yet in uses
   } factorizations_;
   // Work vectors, kept to avoid allocation inside the time loop.
   Vector predicted_displacement_, predicted_velocity_, rhs_, work_, external_, damping_force_;
