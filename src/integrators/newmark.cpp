@@ -161,6 +161,7 @@ std::string Newmark::name() const {
 void Newmark::initialize(SecondOrderSystem& system, State& state, double /*first_step*/) {
   factorizations_.by_step.clear();
   factorizations_.last = nullptr;
+  external_.resize(0);  // zeroed at the first step of a system without loads
   linear_part_checked_ = false;
   mass_solver_.solver.reset();
   factorizations_.uses.clear();
@@ -410,18 +411,19 @@ double Newmark::predict_lumped(SecondOrderSystem& system, const State& from, con
   predicted_velocity_.resize(n);
   rhs_.resize(n);
   double external_norm = 0.0;
-  if (system.has_external_force()) {
+  const bool loaded = system.has_external_force();
+  if (loaded) {
     system.external_force(from.time + dt, external_);
     external_norm = external_.norm();
-  } else {
-    external_.setZero(n);
+  } else if (external_.size() != n) {
+    external_.setZero(n);  // once: nothing writes it without loads
   }
   const SecondOrderSystem::Rayleigh* rayleigh = system.has_damping() ? system.rayleigh() : nullptr;
   if (!rayleigh) {
     predict(n, dt, p.displacement_factor, p.velocity_factor, p.inertia, from.displacement.data(),
             from.velocity.data(), from.acceleration.data(), mass.data(),
             predicted_displacement_.data(), predicted_velocity_.data(), rhs_.data());
-    rhs_ += external_;
+    if (loaded) rhs_ += external_;
     return external_norm;
   }
   work_.resize(n);
