@@ -15,6 +15,7 @@
 #include "assembly/twisted_tridiagonal.hpp"
 #include "core/errors.hpp"
 #include "core/packets.hpp"
+#include "core/sparse_rows.hpp"
 
 namespace pound::assembly {
 namespace {
@@ -62,25 +63,6 @@ void band_rows_in_pairs(const double* __restrict__ bands, Index rows, Index b, c
   }
   store_packet(first, out);
   store_packet(second, out + 4);
-}
-
-// y = A x for a matrix kept by rows (compressed), each row summed from 0 in column order: a third
-// of the instructions of Eigen's sparse product by rows, whose evaluator sets up each row and
-// steps an iterator per entry (its sums may round otherwise).
-void multiply_rows(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Vector& x,
-                   Vector& y) {
-  const Index rows = a.rows();
-  y.resize(rows);
-  const double* __restrict__ values = a.valuePtr();
-  const auto* __restrict__ columns = a.innerIndexPtr();
-  const auto* __restrict__ starts = a.outerIndexPtr();
-  const double* __restrict__ in = x.data();
-  double* __restrict__ out = y.data();
-  for (Index row = 0; row < rows; ++row) {
-    double sum = 0.0;
-    for (auto k = starts[row]; k < starts[row + 1]; ++k) sum += values[k] * in[columns[k]];
-    out[row] = 0.0 + sum;
-  }
 }
 
 template <Index Band>

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/sparse_rows.hpp"
+
 namespace pound::integrators {
 namespace {
 
@@ -62,53 +64,21 @@ LinkSet::LinkSet(Index dofs, std::vector<Link> links) : links_(std::move(links))
   gaps_ = Eigen::Map<const Vector>(gaps.data(), rows);
 }
 
-// Each sum as Eigen's sparse row product forms it (0 + the terms in order, so -0 becomes +0 as
-// there), without its set-up per product.
 void LinkSet::project_rows(const Vector& x, Vector& projected, const Vector* gaps) const {
-  const Index rows = connectivity_.rows();
-  projected.resize(rows);
-  const double* __restrict__ values = connectivity_.valuePtr();
-  const auto* __restrict__ columns = connectivity_.innerIndexPtr();
-  const auto* __restrict__ starts = connectivity_.outerIndexPtr();
-  const double* __restrict__ in = x.data();
-  double* __restrict__ out = projected.data();
-  for (Index row = 0; row < rows; ++row) {
-    double sum = 0.0;
-    for (auto k = starts[row]; k < starts[row + 1]; ++k) sum += values[k] * in[columns[k]];
-    out[row] = 0.0 + sum;
-  }
-  if (gaps)
-    for (Index row = 0; row < rows; ++row) out[row] -= (*gaps)[row];
+  multiply_rows(connectivity_, x, projected);
+  if (gaps) projected -= *gaps;
 }
 
 void LinkSet::penetration(const Vector& displacement, Vector& delta) const {
   project_rows(displacement, delta, &gaps_);
 }
 
-void LinkSet::penetration_and_rate(const Vector& u, const Vector& v, Vector& delta,
-                                   Vector& rate) const {
+// Each sum as project_rows forms it, so the bits are the separate passes' (tested).
+template <bool WithSolution>
+void LinkSet::project_step(const Vector* u_1, const Vector& u_2, const Vector& v, Vector* delta_1,
+                           Vector& delta_2, Vector& rate) const {
   const Index rows = connectivity_.rows();
-  delta.resize(rows);
-  rate.resize(rows);
-  const double* __restrict__ values = connectivity_.valuePtr();
-  const auto* __restrict__ columns = connectivity_.innerIndexPtr();
-  const auto* __restrict__ starts = connectivity_.outerIndexPtr();
-  for (Index row = 0; row < rows; ++row) {
-    double sum_u = 0.0, sum_v = 0.0;
-    for (auto k = starts[row]; k < starts[row + 1]; ++k) {
-      const double value = values[k];
-      sum_u += value * u[columns[k]];
-      sum_v += value * v[columns[k]];
-    }
-    delta[row] = (0.0 + sum_u) - gaps_[row];
-    rate[row] = 0.0 + sum_v;
-  }
-}
-
-void LinkSet::penetrations_and_rate(const Vector& u_1, const Vector& u_2, const Vector& v,
-                                    Vector& delta_1, Vector& delta_2, Vector& rate) const {
-  const Index rows = connectivity_.rows();
-  delta_1.resize(rows);
+  if constexpr (WithSolution) delta_1->resize(rows);
   delta_2.resize(rows);
   rate.resize(rows);
   const double* __restrict__ values = connectivity_.valuePtr();
@@ -118,14 +88,24 @@ void LinkSet::penetrations_and_rate(const Vector& u_1, const Vector& u_2, const 
     double sum_1 = 0.0, sum_2 = 0.0, sum_v = 0.0;
     for (auto k = starts[row]; k < starts[row + 1]; ++k) {
       const double value = values[k];
-      sum_1 += value * u_1[columns[k]];
+      if constexpr (WithSolution) sum_1 += value * (*u_1)[columns[k]];
       sum_2 += value * u_2[columns[k]];
       sum_v += value * v[columns[k]];
     }
-    delta_1[row] = (0.0 + sum_1) - gaps_[row];
+    if constexpr (WithSolution) (*delta_1)[row] = (0.0 + sum_1) - gaps_[row];
     delta_2[row] = (0.0 + sum_2) - gaps_[row];
     rate[row] = 0.0 + sum_v;
   }
+}
+
+void LinkSet::penetration_and_rate(const Vector& u, const Vector& v, Vector& delta,
+                                   Vector& rate) const {
+  project_step<false>(nullptr, u, v, nullptr, delta, rate);
+}
+
+void LinkSet::penetrations_and_rate(const Vector& u_1, const Vector& u_2, const Vector& v,
+                                    Vector& delta_1, Vector& delta_2, Vector& rate) const {
+  project_step<true>(&u_1, u_2, v, &delta_1, delta_2, rate);
 }
 
 void LinkSet::project(const Vector& x, Vector& projected) const {

@@ -134,7 +134,12 @@ class LinkSet {
   }
 
  private:
-  // B x, less the gaps when given.
+  // A step's predicted link state in one pass over B's rows: B u_2 - gap and B v, and with
+  // WithSolution B u_1 - gap too.
+  template <bool WithSolution>
+  void project_step(const Vector* u_1, const Vector& u_2, const Vector& v, Vector* delta_1,
+                    Vector& delta_2, Vector& rate) const;
+  // B x (core/sparse_rows.hpp), less the gaps when given.
   void project_rows(const Vector& x, Vector& projected, const Vector* gaps) const;
   // Evaluates every law once; `total` makes the tangent entries of a LawResponse.
   template <typename Total>
