@@ -100,8 +100,9 @@ class EnergyBalance : public Observer {
   static constexpr long kRoundOffStride = 64;  // steps between samples of the round-off floor
   long recorded_steps_ = 0;                    // since the start
   Vector step_force_weight_;  // by row: 1 for a step-average force, else 0 (empty: none)
-  // K u at this step and the previous one: with Rayleigh damping the damping work follows from
-  // them (du^T K v_avg = v_avg^T (K u_{n+1} - K u_n)), one band product less per step.
+  // K u at this step and the previous one: with Rayleigh damping (by DOF) the damping work
+  // follows from them (du^T diag(a1) K v_avg = v_avg^T diag(a1) (K u_{n+1} - K u_n)), one
+  // product less per step.
   Vector stiffness_force_, previous_stiffness_force_;
 };
 
