@@ -593,7 +593,8 @@ TEST(StructuralSystem, StructuresDampedEachWithItsOwnGiveRayleighByDof) {
 
   model::Model by_mass = apart;
   by_mass.elements = {bar(by_mass, 0, 1, 0.3, 0.0), bar(by_mass, 2, 3, 0.5, 0.0)};
-  const auto* mass_only = StructuralSystem(by_mass).rayleigh();
+  const StructuralSystem damped_by_mass(by_mass);
+  const auto* mass_only = damped_by_mass.rayleigh();  // the system's own: it must outlive this
   ASSERT_TRUE(mass_only);
   EXPECT_FALSE(mass_only->stiffness);
 }
