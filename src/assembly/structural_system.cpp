@@ -996,16 +996,18 @@ void StructuralSystem::multiply_band(const Vector& x, Vector& y, Index first, In
   }
 }
 
-void StructuralSystem::frame_acceleration(double time, Vector& acceleration) const {
-  // The first excitation's term written, not added to zeros.
-  if (excitations_.empty())
-    acceleration.setZero(size());
-  else
-    acceleration = excitations_[0].motion.at(time) * excitations_[0].influence;
-  for (std::size_t k = 1; k < excitations_.size(); ++k)
-    acceleration += excitations_[k].motion.at(time) * excitations_[k].influence;
+std::vector<Vector> StructuralSystem::frame_shapes() const {
+  std::vector<Vector> shapes;
+  for (const Excitation& excitation : excitations_) shapes.push_back(excitation.influence);
+  for (const MovingSupport& support : moving_supports_) shapes.push_back(support.influence);
+  return shapes;
+}
+
+void StructuralSystem::frame_scales(double time, std::vector<double>& scales) const {
+  scales.clear();
+  for (const Excitation& excitation : excitations_) scales.push_back(excitation.motion.at(time));
   for (const MovingSupport& support : moving_supports_)
-    acceleration += support.kinematics.at(time).acceleration * support.influence;
+    scales.push_back(support.kinematics.at(time).acceleration);
 }
 
 double StructuralSystem::support_acceleration(Index node, int direction, double time) const {

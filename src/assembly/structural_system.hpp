@@ -60,8 +60,10 @@ class StructuralSystem final : public integrators::SecondOrderSystem {
   Vector initial_velocity(const model::Model& model) const;
   // u is measured from the ground's motion (u = u_abs - iota u_g for a uniform excitation, the
   // quasi-static R u_s removed for moving supports): the acceleration of that frame at each
-  // free DOF, sum iota a_g(t) + sum r a_s(t), so that a + frame is the absolute acceleration.
-  void frame_acceleration(double time, Vector& acceleration) const;
+  // free DOF, sum iota a_g(t) + sum r a_s(t), so that a + frame is the absolute acceleration:
+  // a sum of shapes (iota, r) times scales (a_g, a_s), the scales at `time` in the shapes' order.
+  std::vector<Vector> frame_shapes() const;
+  void frame_scales(double time, std::vector<double>& scales) const;
   // The absolute acceleration of a supported DOF (node, direction 0 = x, 1 = y): the ground's
   // along the excitations' directions, and a moving support's own record.
   double support_acceleration(Index node, int direction, double time) const;

@@ -89,7 +89,7 @@ void check_first_step(const BuiltModel& built, const AnalysisSpec& analysis,
       start.displacement = assembly::static_equilibrium(system, 0.0).displacement;
     during = fmt::format("the first step of {}", analysis.integrator.label());
     integrator->initialize(system, start, analysis.time_step);
-    integrator->advance(system, start, analysis.time_step, next);
+    integrator->advance(system, start, analysis.time_step, start.time + analysis.time_step, next);
     system.links().revert();
   } catch (const assembly::NotPositiveDefinite& failure) {
     system.links().revert();

@@ -297,12 +297,12 @@ void CentralDifference::initialize(SecondOrderSystem& system, State& state, doub
 }
 
 StepResult CentralDifference::advance(SecondOrderSystem& system, const State& from, double dt,
-                                      State& to) {
+                                      double end, State& to) {
   LinkSet& links = system.links();
   const Index n = system.size(), m = links.size();
   if (inverse_mass_.size() != n) inverse_mass_ = diagonal_mass(system).cwiseInverse();
   StepResult result;
-  to.time = from.time + dt;
+  to.time = end;
   const double half_dt = 0.5 * dt;
   to.displacement.resize(n);
   to.acceleration.resize(n);

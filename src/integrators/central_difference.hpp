@@ -42,7 +42,8 @@ class CentralDifference final : public Integrator {
   // Its catalog entry (integrators/integrator_catalog.hpp).
   static const IntegratorEntry& entry();
   void initialize(SecondOrderSystem& system, State& state, double first_step) override;
-  StepResult advance(SecondOrderSystem& system, const State& from, double dt, State& to) override;
+  StepResult advance(SecondOrderSystem& system, const State& from, double dt, double end,
+                     State& to) override;
 
  private:
   // The steps of advance().

@@ -43,8 +43,10 @@ class Integrator {
   // Completes `state` (acceleration, link state) at its time from u and v; `first_step` is the
   // size of the step to come (central difference enforces hard contacts over it).
   virtual void initialize(SecondOrderSystem& system, State& state, double first_step) = 0;
-  // Tries one step of size dt from `from` into `to`; links are left at the trial state.
-  virtual StepResult advance(SecondOrderSystem& system, const State& from, double dt,
+  // Tries one step of size dt from `from` into `to`, which is at time `end` (from.time + dt up
+  // to rounding: a run's steps end on its grid of k dt, and the loads are taken there, at the
+  // time the step is reported at); links are left at the trial state.
+  virtual StepResult advance(SecondOrderSystem& system, const State& from, double dt, double end,
                              State& to) = 0;
 };
 

@@ -336,16 +336,17 @@ const Newmark::Factorization& Newmark::factorization(SecondOrderSystem& system, 
   return made;
 }
 
-StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double dt, State& to) {
+StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double dt, double end,
+                            State& to) {
   const Factorization& f = factorization(system, dt);
   const Index n = system.size();
   const double c_m = 1.0 / (beta_ * dt * dt);
   const double c_c = gamma_ / (beta_ * dt);
-  to.time = from.time + dt;
+  to.time = end;
   double external_norm = 0.0;
   if (const Vector* mass = system.lumped_mass();
       mass && (!system.has_damping() || system.rayleigh())) {
-    external_norm = predict_lumped(system, from, *mass, dt, c_m, c_c);
+    external_norm = predict_lumped(system, from, end, *mass, dt, c_m, c_c);
     if (alpha_m_ != 0.0 || alpha_f_ != 0.0) add_alpha_history(system, from);
   } else {
     predict_step(system, from, dt, c_m);
@@ -401,8 +402,8 @@ StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double
 // With a lumped mass and Rayleigh damping (C = a0 M + a1 K) or none, the right-hand side is
 // M (c_m u~ + a0 x) + f + a1 K x with x = c_c u~ - v~: the predictors, x and all but the band
 // product's part in one pass, made block by block as the product reads them.
-double Newmark::predict_lumped(SecondOrderSystem& system, const State& from, const Vector& mass,
-                               double dt, double c_m, double c_c) {
+double Newmark::predict_lumped(SecondOrderSystem& system, const State& from, double end,
+                               const Vector& mass, double dt, double c_m, double c_c) {
   const Index n = system.size();
   const double mass_weight = (1.0 - alpha_m_) / (1.0 - alpha_f_);
   const DampedPrediction p{dt, (0.5 - beta_) * dt * dt, (1.0 - gamma_) * dt, c_c,
@@ -413,7 +414,7 @@ double Newmark::predict_lumped(SecondOrderSystem& system, const State& from, con
   double external_norm = 0.0;
   const bool loaded = system.has_external_force();
   if (loaded) {
-    system.external_force(from.time + dt, external_);
+    system.external_force(end, external_);
     external_norm = external_.norm();
   } else if (external_.size() != n) {
     external_.setZero(n);  // once: nothing writes it without loads

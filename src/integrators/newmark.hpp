@@ -87,7 +87,8 @@ class Newmark final : public Integrator {
 
   std::string name() const override;
   void initialize(SecondOrderSystem& system, State& state, double first_step) override;
-  StepResult advance(SecondOrderSystem& system, const State& from, double dt, State& to) override;
+  StepResult advance(SecondOrderSystem& system, const State& from, double dt, double end,
+                     State& to) override;
 
   // The general path of the Newton correction: I + T G over every link row, factored at every
   // iteration, no link row folded into the linear part. Off by default (linear rows folded, the
@@ -121,9 +122,9 @@ class Newmark final : public Integrator {
   // u~, v~ and the right-hand side's inertia part.
   void predict_step(SecondOrderSystem& system, const State& from, double dt, double c_m);
   // The same and the right-hand side but the alpha history, with a lumped mass and Rayleigh
-  // damping or none; returns ||f_{n+1}||.
-  double predict_lumped(SecondOrderSystem& system, const State& from, const Vector& mass, double dt,
-                        double c_m, double c_c);
+  // damping or none, f_{n+1} taken at `end`; returns ||f_{n+1}||.
+  double predict_lumped(SecondOrderSystem& system, const State& from, double end,
+                        const Vector& mass, double dt, double c_m, double c_c);
   // The alpha methods' history term, added to the right-hand side.
   void add_alpha_history(SecondOrderSystem& system, const State& from);
   // f_{n+1} and the damping term, added to the right-hand side; returns ||f_{n+1}||.

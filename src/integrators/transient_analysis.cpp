@@ -115,10 +115,9 @@ void TransientAnalysis::advance(State& state, double dt, double end, int depth,
                                 const StepObserver& observer) {
   TransientStatistics& stats = statistics_;
   check_limits(state, depth > 0);
-  const StepResult result = integrator_.advance(system_, state, dt, next_);
+  const StepResult result = integrator_.advance(system_, state, dt, end, next_);
   if (result.converged) {
     accept(state, result);
-    state.time = end;  // from + dt up to rounding
     if (observer) observer(state, result);
     return;
   }
@@ -200,8 +199,8 @@ void TransientAnalysis::AdaptiveRun::run() {
   while (end - state_.time > 1e-12 * std::max(1.0, std::abs(end))) {
     analysis_.check_limits(state_);
     const double step = next_step();
-    const StepResult result =
-        analysis_.integrator_.advance(analysis_.system_, state_, step, analysis_.next_);
+    const StepResult result = analysis_.integrator_.advance(analysis_.system_, state_, step,
+                                                            state_.time + step, analysis_.next_);
     if (!result.converged) {
       cut(step, result);
       continue;
@@ -256,8 +255,8 @@ bool TransientAnalysis::AdaptiveRun::redo_to_contact(double step) {
   // Land just short of the contact, so the link is still open there and the next step
   // starts the contact at its beginning.
   const double to_contact_step = theta * (1.0 - 1e-9) * step;
-  const StepResult to_contact =
-      analysis_.integrator_.advance(analysis_.system_, state_, to_contact_step, analysis_.next_);
+  const StepResult to_contact = analysis_.integrator_.advance(
+      analysis_.system_, state_, to_contact_step, state_.time + to_contact_step, analysis_.next_);
   if (to_contact.converged) {
     accept(to_contact_step, to_contact);
     dt_ = on_grid(std::max(floor_, 0.5 * dt_));  // the contact begins: look closer

@@ -16,10 +16,13 @@ namespace pound::results {
 namespace {
 
 GroundAcceleration ground_of(const assembly::StructuralSystem& system) {
-  return {[&system](double time, Vector& frame) { system.frame_acceleration(time, frame); },
-          [&system](Index node, int direction, double time) {
-            return system.support_acceleration(node, direction, time);
-          }};
+  return {
+      system.size(),
+      [&system](double time, std::vector<double>& scales) { system.frame_scales(time, scales); },
+      system.frame_shapes(),
+      [&system](Index node, int direction, double time) {
+        return system.support_acceleration(node, direction, time);
+      }};
 }
 
 std::unique_ptr<Quantities> link_quantities(const builder::BuiltModel& built,

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "integrators/central_difference.hpp"
 #include "integrators/newmark.hpp"
 #include "support/oscillator.hpp"
 
@@ -242,10 +243,10 @@ class StepSizeSpy final : public integrators::Integrator {
     newmark.initialize(system, state, first_step);
   }
   integrators::StepResult advance(integrators::SecondOrderSystem& system,
-                                  const integrators::State& from, double dt,
+                                  const integrators::State& from, double dt, double end,
                                   integrators::State& to) override {
     steps.insert(dt);
-    return newmark.advance(system, from, dt, to);
+    return newmark.advance(system, from, dt, end, to);
   }
   integrators::Newmark newmark = integrators::Newmark::average_acceleration();
   std::set<double> steps;
@@ -269,6 +270,46 @@ TEST(TransientAnalysis, EveryStepIsTheNominalStepExactly) {
   for (std::size_t k = 1; k + 1 < times.size(); ++k)
     ASSERT_EQ(times[k], static_cast<double>(k) * 0.0015) << k;
   EXPECT_EQ(times.back(), 25.0);
+}
+
+// The loads of a step are taken at the time the step is reported at, its grid time k dt: they
+// were taken at from.time + dt, which differs from k dt in its last bit at about a third of the
+// steps, so the load the step carried was not the load at its state's time (and the observers,
+// which read f at the state's time, formed it a second time).
+TEST(TransientAnalysis, EachStepsLoadIsTakenAtTheTimeItIsReportedAt) {
+  std::vector<double> asked;
+  const auto force = [&](double time) {
+    asked.push_back(time);
+    return std::sin(3.0 * time);
+  };
+  integrators::Newmark newmark = integrators::Newmark::average_acceleration();
+  integrators::CentralDifference central;
+  // Undamped and damped: Newmark's lumped-mass step and its general one.
+  for (const auto& [integrator, damping] : std::vector<std::pair<integrators::Integrator*, double>>{
+           {&newmark, 0.0}, {&newmark, 0.05}, {&central, 0.0}}) {
+    testing::Oscillator system(1.0, damping, 40.0, integrators::LinkSet(1), force);
+    integrators::TransientAnalysis analysis(system, *integrator,
+                                            {.time_step = 0.0015, .end_time = 3.0});
+    integrators::State state;
+    state.displacement = Vector::Constant(1, 1.0);
+    std::vector<double> reported;
+    analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
+      reported.push_back(s.time);
+    });
+    asked.clear();
+    // Once more, now that the reported times are known: every load asked for is at one of them.
+    integrators::State again;
+    again.displacement = Vector::Constant(1, 1.0);
+    integrators::TransientAnalysis(system, *integrator, {.time_step = 0.0015, .end_time = 3.0})
+        .run(again);
+    const std::set<double> grid(reported.begin(), reported.end());
+    std::size_t off_grid = 0;
+    for (double time : asked) off_grid += grid.count(time) == 0 ? 1 : 0;
+    std::cout << integrator->name() << " (damping " << damping << "): " << asked.size()
+              << " loads asked, " << off_grid << " off the reported times\n";
+    EXPECT_GT(asked.size(), 1999u);
+    EXPECT_EQ(off_grid, 0u) << integrator->name() << ", damping " << damping;
+  }
 }
 
 }  // namespace

@@ -23,7 +23,9 @@ integrators::State state(double time, const Vector& displacement, const Vector& 
 
 // A ground accelerating at 2 t everywhere: its supports' too.
 GroundAcceleration ramp_ground() {
-  return {[](double time, Vector& frame) { frame = Vector::Constant(3, 2.0 * time); },
+  return {3,
+          [](double time, std::vector<double>& scales) { scales = {2.0 * time}; },
+          {Vector::Ones(3)},
           [](Index, int, double time) { return 2.0 * time; }};
 }
 

@@ -56,9 +56,9 @@ TEST(LinkRecorder, WritesForceAndPenetrationAndForAFrictionLinkItsTangentialRow)
 
 // A ground accelerating at 10 t along x and 100 t along y, with node 7's y support moving too.
 GroundAcceleration test_ground() {
-  return {[](double time, Vector& frame) {
-            frame = entries({10.0 * time, 10.0 * time});
-          },
+  return {2,
+          [](double time, std::vector<double>& scales) { scales = {10.0 * time}; },
+          {entries({1.0, 1.0})},
           [](Index node, int direction, double time) {
             return direction == 0 ? 10.0 * time : (node == 7 ? 100.0 : 0.0) * time;
           }};

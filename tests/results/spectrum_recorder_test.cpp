@@ -18,7 +18,9 @@ using testing::entries;
 
 // A ground at rest: the node's absolute acceleration is its relative one.
 GroundAcceleration still_ground() {
-  return {[](double, Vector& frame) { frame = entries({0.0}); },
+  return {1,
+          [](double, std::vector<double>& scales) { scales.clear(); },
+          {},
           [](Index, int, double) { return 0.0; }};
 }
 
