@@ -278,21 +278,22 @@ const Newmark::Factorization& Newmark::factorization(SecondOrderSystem& system, 
   if (cache.last) cache.uses[cache.last_step] += cache.last_repeats;
   cache.last_repeats = 0;
   ++cache.uses[dt];
-  auto found = factorizations_.by_step.find(dt);
-  if (found != factorizations_.by_step.end()) {
-    factorizations_.last_step = dt;
-    factorizations_.last = &found->second;
-    return found->second;
-  }
+  const auto found = cache.by_step.find(dt);
+  cache.last = found != cache.by_step.end() ? &found->second : &new_factorization(system, dt);
+  cache.last_step = dt;
+  return *cache.last;
+}
+
+Newmark::Factorization& Newmark::new_factorization(SecondOrderSystem& system, double dt) {
   // Adaptive stepping and step cuts ask for a few step sizes over and over, contact location
   // for one-off ones: keep a handful, dropping the least used.
-  if (factorizations_.by_step.size() >= 8) {
-    auto least = factorizations_.by_step.begin();
-    for (auto it = factorizations_.by_step.begin(); it != factorizations_.by_step.end(); ++it)
-      if (factorizations_.uses[it->first] < factorizations_.uses[least->first]) least = it;
-    factorizations_.uses.erase(least->first);
-    factorizations_.by_step.erase(least);
-    factorizations_.last = nullptr;
+  FactorCache& cache = factorizations_;
+  if (cache.by_step.size() >= 8) {
+    auto least = cache.by_step.begin();
+    for (auto it = cache.by_step.begin(); it != cache.by_step.end(); ++it)
+      if (cache.uses[it->first] < cache.uses[least->first]) least = it;
+    cache.uses.erase(least->first);
+    cache.by_step.erase(least);
   }
   // With alpha_m, alpha_f the mass term weighs (1 - a_m) / (1 - a_f).
   const double c_m = (1.0 - alpha_m_) / (1.0 - alpha_f_) / (beta_ * dt * dt);
@@ -330,10 +331,7 @@ const Newmark::Factorization& Newmark::factorization(SecondOrderSystem& system, 
     f.influence.col(k) = solution;
   }
   f.coupling = links.connectivity() * f.influence;
-  Factorization& made = factorizations_.by_step.emplace(dt, std::move(f)).first->second;
-  factorizations_.last_step = dt;
-  factorizations_.last = &made;
-  return made;
+  return cache.by_step.emplace(dt, std::move(f)).first->second;
 }
 
 StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double dt, double end,

@@ -116,7 +116,10 @@ class Newmark final : public Integrator {
   };
   // K_r of every row for this step (zero where the row is not folded), from the references.
   Vector folded_stiffness(double dt) const;
+  // The factors for dt: the last ones, or those kept for dt, or new ones.
   const Factorization& factorization(SecondOrderSystem& system, double dt);
+  // Factors dt's matrix into the cache, dropping the least used beyond a handful.
+  Factorization& new_factorization(SecondOrderSystem& system, double dt);
 
   // The steps of advance(), c_m = 1 / (beta dt^2) and c_c = gamma / (beta dt).
   // u~, v~ and the right-hand side's inertia part.

@@ -293,15 +293,11 @@ TEST(TransientAnalysis, EachStepsLoadIsTakenAtTheTimeItIsReportedAt) {
     integrators::State state;
     state.displacement = Vector::Constant(1, 1.0);
     std::vector<double> reported;
+    asked.clear();
     analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
       reported.push_back(s.time);
     });
-    asked.clear();
-    // Once more, now that the reported times are known: every load asked for is at one of them.
-    integrators::State again;
-    again.displacement = Vector::Constant(1, 1.0);
-    integrators::TransientAnalysis(system, *integrator, {.time_step = 0.0015, .end_time = 3.0})
-        .run(again);
+    // Every load asked for is at one of the reported times.
     const std::set<double> grid(reported.begin(), reported.end());
     std::size_t off_grid = 0;
     for (double time : asked) off_grid += grid.count(time) == 0 ? 1 : 0;
