@@ -168,47 +168,70 @@ void BandedLdlt::substitute(const double* rhs, double* x) const {
 // operations in the same order as substitute's own loops; rhs and x may be the same array, as
 // there.
 namespace {
-template <Index Band>
+// With `places` (Placed), row i's right-hand side is rhs[places[i]] and its solution goes to
+// out[places[i]], x being scratch: a renumbered matrix's equations gathered and scattered in the
+// sweeps' own loads and stores, the same operations on the same values.
+template <Index Band, bool Placed = false>
 class RegisterSweep {
  public:
-  RegisterSweep(const Matrix& lower, const Vector& inverse_pivots, const double* rhs, double* x)
+  RegisterSweep(const Matrix& lower, const Vector& inverse_pivots, const double* rhs, double* x,
+                const Index* places = nullptr, double* out = nullptr)
       : lower_(lower.data()),
         inv_d_(inverse_pivots.data()),
         n_(inverse_pivots.size()),
         rhs_(rhs),
-        x_(x) {}
-  // The first Band rows of the forward pass, from memory; then rows Band, Band + 1, ... in turn.
+        x_(x),
+        places_(places),
+        out_(out) {}
+  // The first Band rows of the forward pass, from memory (forward_row's operations); then rows
+  // Band, Band + 1, ... in turn.
   void begin_forward() {
-    for (Index i = 0; i < Band; ++i) x_[i] = forward_row(lower_, Band, rhs_, x_, i, i);
+    for (Index i = 0; i < Band; ++i) {
+      double value = right_hand_side(i);
+      for (Index k = i - 1; k >= 0; --k)
+        value = multiply_add(-lower_[i * Band + k], x_[i - k - 1], value);
+      x_[i] = value;
+    }
     for (Index k = 0; k < Band; ++k) window_[k] = x_[Band - k - 1];
   }
   void forward(Index i) {
     const double* row = lower_ + i * Band;
-    double value = rhs_[i];
+    double value = right_hand_side(i);
     for (Index k = Band - 1; k >= 0; --k) value = multiply_add(-row[k], window_[k], value);
     x_[i] = value;
     push(window_, value);
   }
   // The last Band rows of the back pass; then rows n - Band - 1, n - Band - 2, ... in turn.
   void begin_back() {
-    for (Index i = n_ - 1; i >= n_ - Band; --i)
+    for (Index i = n_ - 1; i >= n_ - Band; --i) {
       x_[i] = back_row(lower_, Band, inv_d_, x_, i, n_ - i - 1);
+      if constexpr (Placed) out_[places_[i]] = x_[i];
+    }
     for (Index k = 0; k < Band; ++k) window_[k] = x_[n_ - Band + k];
   }
   void back(Index i) {
     double value = x_[i] * inv_d_[i];
     for (Index k = Band - 1; k >= 0; --k)
       value = multiply_add(-lower_[(i + k + 1) * Band + k], window_[k], value);
-    x_[i] = value;
+    if constexpr (Placed)
+      out_[places_[i]] = value;  // x[i] is not read again: the window holds it
+    else
+      x_[i] = value;
     push(window_, value);
   }
 
  private:
+  double right_hand_side(Index i) const {
+    if constexpr (Placed) return rhs_[places_[i]];
+    return rhs_[i];
+  }
   const double* __restrict__ lower_;
   const double* __restrict__ inv_d_;
   Index n_;
   const double* rhs_;
   double* x_;
+  const Index* __restrict__ places_;
+  double* out_;
   std::array<double, Band> window_;
 };
 }  // namespace
@@ -225,11 +248,14 @@ void BandedLdlt::substitute_in_registers(const double* rhs, double* x) const {
 
 // Two sweeps, each row of one beside the same row of the other (back: counted from each end),
 // then the rest of the longer alone: each solution's operations are those of its own sweep.
-template <Index Band>
+template <Index Band, bool Placed>
 void BandedLdlt::substitute_pair(const BandedLdlt& a, const double* rhs_a, double* x_a,
-                                 const BandedLdlt& b, const double* rhs_b, double* x_b) {
-  RegisterSweep<Band> first(a.lower_, a.inverse_pivot_, rhs_a, x_a);
-  RegisterSweep<Band> second(b.lower_, b.inverse_pivot_, rhs_b, x_b);
+                                 const BandedLdlt& b, const double* rhs_b, double* x_b,
+                                 const PairPlaces* places) {
+  RegisterSweep<Band, Placed> first(a.lower_, a.inverse_pivot_, rhs_a, x_a,
+                                    Placed ? places->a : nullptr, Placed ? places->out : nullptr);
+  RegisterSweep<Band, Placed> second(b.lower_, b.inverse_pivot_, rhs_b, x_b,
+                                     Placed ? places->b : nullptr, Placed ? places->out : nullptr);
   const Index n_a = a.size_, n_b = b.size_, common = std::min(n_a, n_b);
   first.begin_forward();
   second.begin_forward();
@@ -266,8 +292,22 @@ void BandedLdlt::solve_pair(const BandedLdlt& a, const double* r_a, double* s_a,
     return;
   }
   with_fixed_band(band, [&](auto fixed) {
-    if constexpr (fixed() > 0) substitute_pair<fixed()>(a, r_a, s_a, b, r_b, s_b);
+    if constexpr (fixed() > 0) substitute_pair<fixed(), false>(a, r_a, s_a, b, r_b, s_b, nullptr);
   });
+}
+
+bool BandedLdlt::solve_pair_in_place(const BandedLdlt& a, const BandedLdlt& b,
+                                     const PairPlaces& places, const double* rhs, double* scratch_a,
+                                     double* scratch_b) {
+  const Index band = a.bandwidth_;
+  if (band != b.bandwidth_ || band < 2 || band > kUnrolledBand || a.size_ <= band ||
+      b.size_ <= band)
+    return false;
+  with_fixed_band(band, [&](auto fixed) {
+    if constexpr (fixed() > 0)
+      substitute_pair<fixed(), true>(a, rhs, scratch_a, b, rhs, scratch_b, &places);
+  });
+  return true;
 }
 
 }  // namespace pound::assembly

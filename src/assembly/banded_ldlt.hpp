@@ -37,6 +37,19 @@ class BandedLdlt {
   void solve(const double* rhs, double* solution) const;
   static void solve_pair(const BandedLdlt& a, const double* rhs_a, double* x_a, const BandedLdlt& b,
                          const double* rhs_b, double* x_b);
+  // The same for two groups of one system's equations: a's row i is equation places.a[i], b's
+  // places.b[i]; right-hand sides read from rhs and solutions written to places.out at those
+  // places, in the sweeps' own loads and stores (scratch_a, scratch_b: a.size() and b.size()
+  // entries), to the same bits as gathered, solve_pair and scattered. False (nothing done)
+  // outside solve_pair's paired case.
+  struct PairPlaces {
+    const Index* a;
+    const Index* b;
+    double* out;
+  };
+  static bool solve_pair_in_place(const BandedLdlt& a, const BandedLdlt& b,
+                                  const PairPlaces& places, const double* rhs, double* scratch_a,
+                                  double* scratch_b);
   // The factors A = L D L^T: lower()(k, i) = L(i, i - k - 1) for k < bandwidth (column i holds
   // row i of L), and 1 / D(i).
   const Matrix& lower() const { return lower_; }
@@ -50,9 +63,10 @@ class BandedLdlt {
   void substitute(const double* rhs, double* x) const;
   template <Index Band>
   void substitute_in_registers(const double* rhs, double* x) const;
-  template <Index Band>
+  template <Index Band, bool Placed>
   static void substitute_pair(const BandedLdlt& a, const double* rhs_a, double* x_a,
-                              const BandedLdlt& b, const double* rhs_b, double* x_b);
+                              const BandedLdlt& b, const double* rhs_b, double* x_b,
+                              const PairPlaces* places);
 
   Index size_;
   Index bandwidth_;

@@ -139,6 +139,10 @@ class PairedBandSolver final : public integrators::LinearSolver {
                              factors_[1], rhs.data() + first_[1], solution.data() + first_[1]);
       return;
     }
+    const BandedLdlt::PairPlaces places{orders_[0].data(), orders_[1].data(), solution.data()};
+    if (BandedLdlt::solve_pair_in_place(factors_[0], factors_[1], places, rhs.data(),
+                                        solution_[0].data(), solution_[1].data()))
+      return;
     for (std::size_t g = 0; g < 2; ++g)
       for (std::size_t k = 0; k < orders_[g].size(); ++k)
         rhs_[g][static_cast<Index>(k)] = rhs[orders_[g][k]];

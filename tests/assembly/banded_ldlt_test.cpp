@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <numeric>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -164,6 +165,53 @@ TEST(BandedLdlt, APairSolvedSideBySideGivesEachItsOwnSolution) {
   EXPECT_EQ(x_small, alone_small);
   EXPECT_EQ(x_wide, alone_wide);
   std::cout << pairs << " pairs solved side by side, each to the bit of its own solve\n";
+}
+
+// Two groups of one system's equations, interleaved (each group's places shuffled), solved in
+// place: the right-hand sides read and the solutions written at their places in the sweeps'
+// loads and stores give the bits of gathering, solving side by side and scattering; outside the
+// side-by-side case (bandwidths that differ) nothing is done.
+TEST(BandedLdlt, APairSolvedInPlaceGivesTheGatheredPairsBits) {
+  std::mt19937 rng(29);
+  int pairs = 0;
+  for (Index band : {2, 4, 5, 8}) {
+    for (const auto& [n_a, n_b] : std::vector<std::pair<Index, Index>>{
+             {band + 1, band + 1}, {34, 55}, {55, 34}, {97, band + 1}}) {
+      const BandedLdlt a(random_banded({n_a}, band, rng)), b(random_banded({n_b}, band, rng));
+      std::vector<Index> places(static_cast<std::size_t>(n_a + n_b));
+      std::iota(places.begin(), places.end(), Index{0});
+      std::shuffle(places.begin(), places.end(), rng);
+      const std::vector<Index> places_a(places.begin(), places.begin() + n_a);
+      const std::vector<Index> places_b(places.begin() + n_a, places.end());
+      const Vector rhs = random_vector(n_a + n_b, rng);
+      Vector rhs_a(n_a), rhs_b(n_b), x_a, x_b;
+      for (Index i = 0; i < n_a; ++i) rhs_a[i] = rhs[places_a[static_cast<std::size_t>(i)]];
+      for (Index i = 0; i < n_b; ++i) rhs_b[i] = rhs[places_b[static_cast<std::size_t>(i)]];
+      BandedLdlt::solve_pair(a, rhs_a, x_a, b, rhs_b, x_b);
+      Vector solution = Vector::Constant(n_a + n_b, 9.0), scratch_a(n_a), scratch_b(n_b);
+      ASSERT_TRUE(
+          BandedLdlt::solve_pair_in_place(a, b, {places_a.data(), places_b.data(), solution.data()},
+                                          rhs.data(), scratch_a.data(), scratch_b.data()));
+      for (Index i = 0; i < n_a; ++i)
+        ASSERT_EQ(solution[places_a[static_cast<std::size_t>(i)]], x_a[i])
+            << "b " << band << " row " << i;
+      for (Index i = 0; i < n_b; ++i)
+        ASSERT_EQ(solution[places_b[static_cast<std::size_t>(i)]], x_b[i])
+            << "b " << band << " row " << i;
+      ++pairs;
+    }
+  }
+  const BandedLdlt three(random_banded({20}, 3, rng)), five(random_banded({20}, 5, rng));
+  std::vector<Index> places(40);
+  std::iota(places.begin(), places.end(), Index{0});
+  const Vector rhs = random_vector(40, rng);
+  Vector solution = Vector::Zero(40), scratch(20);
+  EXPECT_FALSE(BandedLdlt::solve_pair_in_place(three, five,
+                                               {places.data(), places.data() + 20, solution.data()},
+                                               rhs.data(), scratch.data(), scratch.data()));
+  EXPECT_EQ(solution, Vector::Zero(40));
+  std::cout << pairs
+            << " interleaved pairs solved in place, each to the bits of the gathered pair\n";
 }
 
 TEST(BandedLdlt, BandwidthOfIsTheFarthestNonZeroFromTheDiagonal) {
