@@ -46,10 +46,34 @@ void predict_damped(Index first, Index last, const DampedPrediction& p,
   }
 }
 
-// y += s x by entry over [first, last).
-void add_product(Index first, Index last, const double* __restrict__ scale,
-                 const double* __restrict__ x, double* __restrict__ y) {
-  for (Index i = first; i < last; ++i) y[i] += scale[i] * x[i];
+// The same with the stiffness-proportional damping by the shift (Newmark::predict_lumped):
+// rhs = c_m M u~ + w x + f and S x, w and S by DOF.
+void predict_shifted(Index n, const DampedPrediction& p, const double* __restrict__ u,
+                     const double* __restrict__ v, const double* __restrict__ a,
+                     const double* __restrict__ mass, const double* __restrict__ weight,
+                     const double* __restrict__ shift_coefficient, const double* __restrict__ force,
+                     double* __restrict__ predicted_u, double* __restrict__ predicted_v,
+                     double* __restrict__ x, double* __restrict__ shift, double* __restrict__ rhs) {
+  for (Index i = 0; i < n; ++i) {
+    predicted_u[i] = u[i] + p.dt * v[i] + p.displacement_factor * a[i];
+    predicted_v[i] = v[i] + p.velocity_factor * a[i];
+    x[i] = p.c_c * predicted_u[i] - predicted_v[i];
+    shift[i] = shift_coefficient[i] * x[i];
+    rhs[i] = p.inertia * mass[i] * predicted_u[i] + weight[i] * x[i] + force[i];
+  }
+}
+
+// rhs -= L S x = B^T K_f B S x over the folded rows' terms (Newmark::Factorization).
+void subtract_folded_shift(const std::vector<Index>& starts, const std::vector<Index>& dofs,
+                           const std::vector<double>& gather, const std::vector<double>& scatter,
+                           const double* __restrict__ x, double* __restrict__ rhs) {
+  for (std::size_t k = 0; k + 1 < starts.size(); ++k) {
+    const auto first = static_cast<std::size_t>(starts[k]);
+    const auto last = static_cast<std::size_t>(starts[k + 1]);
+    double projection = 0.0;
+    for (std::size_t j = first; j < last; ++j) projection += gather[j] * x[dofs[j]];
+    for (std::size_t j = first; j < last; ++j) rhs[dofs[j]] -= scatter[j] * projection;
+  }
 }
 
 void correct(Index n, double c_m, double velocity_gain, const double* __restrict__ u,
@@ -321,6 +345,7 @@ Newmark::Factorization& Newmark::new_factorization(SecondOrderSystem& system, do
     f.folded_stiffness.resize(0);
     f.solver = system.factor(c_m, damping_factor, 1.0);
   }
+  set_rayleigh_shift(system, c_m, damping_factor, f);
   const LinkSet& links = system.links();
   const Index n = system.size(), m = links.size();
   f.influence.resize(n, m);
@@ -334,6 +359,28 @@ Newmark::Factorization& Newmark::new_factorization(SecondOrderSystem& system, do
   return cache.by_step.emplace(dt, std::move(f)).first->second;
 }
 
+void Newmark::set_rayleigh_shift(const SecondOrderSystem& system, double c_m, double c_c,
+                                 Factorization& f) {
+  const Vector* mass = system.lumped_mass();
+  const SecondOrderSystem::Rayleigh* rayleigh = system.has_damping() ? system.rayleigh() : nullptr;
+  if (!mass || !rayleigh || !rayleigh->stiffness) return;
+  const Vector& a0 = rayleigh->mass_coefficient;
+  const Vector& a1 = rayleigh->stiffness_coefficient;
+  f.rayleigh_shift = a1.array() / (1.0 + c_c * a1.array());
+  f.rayleigh_weight =
+      mass->array() * (a0.array() - f.rayleigh_shift.array() * (c_m + c_c * a0.array()));
+  const LinkSet::SparseRowMatrix& connectivity = system.links().connectivity();
+  for (const Index r : f.folded_rows) {
+    f.shift_starts.push_back(static_cast<Index>(f.shift_dofs.size()));
+    for (LinkSet::SparseRowMatrix::InnerIterator term(connectivity, r); term; ++term) {
+      f.shift_dofs.push_back(term.col());
+      f.shift_gather.push_back(term.value() * f.rayleigh_shift[term.col()]);
+      f.shift_scatter.push_back(term.value() * f.folded_stiffness[r]);
+    }
+  }
+  f.shift_starts.push_back(static_cast<Index>(f.shift_dofs.size()));
+}
+
 StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double dt, double end,
                             State& to) {
   const Factorization& f = factorization(system, dt);
@@ -342,9 +389,11 @@ StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double
   const double c_c = gamma_ / (beta_ * dt);
   to.time = end;
   double external_norm = 0.0;
+  bool shifted = false;  // the solution is that of u - S x (predict_lumped)
   if (const Vector* mass = system.lumped_mass();
       mass && (!system.has_damping() || system.rayleigh())) {
-    external_norm = predict_lumped(system, from, end, *mass, dt, c_m, c_c);
+    external_norm = predict_lumped(system, f, from, end, *mass, dt, c_m, c_c);
+    shifted = f.rayleigh_shift.size() > 0;
     if (alpha_m_ != 0.0 || alpha_f_ != 0.0) add_alpha_history(system, from);
   } else {
     predict_step(system, from, dt, c_m);
@@ -364,6 +413,7 @@ StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double
   }
   to.displacement.resize(n);
   f.solver->solve(rhs_, to.displacement);  // u at F_start
+  if (shifted) to.displacement += shift_;
 
   StepResult result;
   if (links) {
@@ -398,10 +448,16 @@ StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double
 }
 
 // With a lumped mass and Rayleigh damping (C = a0 M + a1 K) or none, the right-hand side is
-// M (c_m u~ + a0 x) + f + a1 K x with x = c_c u~ - v~: the predictors, x and all but the band
-// product's part in one pass, made block by block as the product reads them.
-double Newmark::predict_lumped(SecondOrderSystem& system, const State& from, double end,
-                               const Vector& mass, double dt, double c_m, double c_c) {
+// M (c_m u~ + a0 x) + f + a1 K x with x = c_c u~ - v~. Its K x needs no product: the factored
+// matrix is A = M'' + (I + c_c D1) K + L, with M'' = (c_m + c_c D0) M diagonal, D0 and D1 the
+// coefficients by DOF and L = B^T K_f B the folded link rows; K couples no DOFs of different
+// coefficients, so S = D1 (I + c_c D1)^-1 commutes with K and M'', and S A = A S + S L - L S.
+// Then A^-1 D1 K x = A^-1 S (A - M'' - L) x = S x - A^-1 (S M'' x + L S x): u is the solution
+// for the right-hand side M c_m u~ + w x + f - L S x, with w = M D0 - S M'', plus S x (shift_).
+// In the low modes the two parts cancel to ~ (omega dt)^2 of S x, which costs round-off of u's
+// size only (S x is about u~, as c_c S < 1).
+double Newmark::predict_lumped(SecondOrderSystem& system, const Factorization& f, const State& from,
+                               double end, const Vector& mass, double dt, double c_m, double c_c) {
   const Index n = system.size();
   const double mass_weight = (1.0 - alpha_m_) / (1.0 - alpha_f_);
   const DampedPrediction p{dt, (0.5 - beta_) * dt * dt, (1.0 - gamma_) * dt, c_c,
@@ -418,6 +474,17 @@ double Newmark::predict_lumped(SecondOrderSystem& system, const State& from, dou
     external_.setZero(n);  // once: nothing writes it without loads
   }
   const SecondOrderSystem::Rayleigh* rayleigh = system.has_damping() ? system.rayleigh() : nullptr;
+  if (f.rayleigh_shift.size() > 0) {
+    shift_.resize(n);
+    x_.resize(n);
+    predict_shifted(n, p, from.displacement.data(), from.velocity.data(), from.acceleration.data(),
+                    mass.data(), f.rayleigh_weight.data(), f.rayleigh_shift.data(),
+                    external_.data(), predicted_displacement_.data(), predicted_velocity_.data(),
+                    x_.data(), shift_.data(), rhs_.data());
+    subtract_folded_shift(f.shift_starts, f.shift_dofs, f.shift_gather, f.shift_scatter, x_.data(),
+                          rhs_.data());
+    return external_norm;
+  }
   if (!rayleigh) {
     predict(n, dt, p.displacement_factor, p.velocity_factor, p.inertia, from.displacement.data(),
             from.velocity.data(), from.acceleration.data(), mass.data(),
@@ -425,22 +492,12 @@ double Newmark::predict_lumped(SecondOrderSystem& system, const State& from, dou
     if (loaded) rhs_ += external_;
     return external_norm;
   }
+  // Mass-proportional only (a1 K x is the shift's, above).
   work_.resize(n);
-  const auto make = [&](Index first, Index last) {
-    predict_damped(first, last, p, from.displacement.data(), from.velocity.data(),
-                   from.acceleration.data(), mass.data(), rayleigh->mass_coefficient.data(),
-                   external_.data(), predicted_displacement_.data(), predicted_velocity_.data(),
-                   work_.data(), rhs_.data());
-  };
-  if (!rayleigh->stiffness) {  // mass-proportional only: no product by K
-    make(0, n);
-    return external_norm;
-  }
-  damping_force_.resize(n);
-  system.multiply_stiffness_by_blocks(work_, damping_force_, make, [&](Index first, Index last) {
-    add_product(first, last, rayleigh->stiffness_coefficient.data(), damping_force_.data(),
-                rhs_.data());
-  });
+  predict_damped(0, n, p, from.displacement.data(), from.velocity.data(), from.acceleration.data(),
+                 mass.data(), rayleigh->mass_coefficient.data(), external_.data(),
+                 predicted_displacement_.data(), predicted_velocity_.data(), work_.data(),
+                 rhs_.data());
   return external_norm;
 }
 

@@ -113,7 +113,18 @@ class Newmark final : public Integrator {
     Vector folded_stiffness;
     std::vector<Index> folded_rows;
     bool folded_rates = false;  // some folded row has a dashpot or a mass term
+    // With a lumped mass and Rayleigh damping with a1: the stiffness-proportional damping's
+    // right-hand side without a product by K (predict_lumped): S = a1 / (1 + c_c a1) and
+    // w = m (a0 - S (c_m + c_c a0)) by DOF; empty otherwise.
+    Vector rayleigh_shift, rayleigh_weight;
+    // The folded rows' L S x = B^T K_f B S x over their terms alone: row k's p = sum of
+    // gather * x over its terms [starts[k], starts[k + 1]), then scatter * p off each term's DOF.
+    std::vector<Index> shift_starts, shift_dofs;
+    std::vector<double> shift_gather, shift_scatter;
   };
+  // rayleigh_shift and rayleigh_weight of f for these coefficients, when they apply.
+  static void set_rayleigh_shift(const SecondOrderSystem& system, double c_m, double c_c,
+                                 Factorization& f);
   // K_r of every row for this step (zero where the row is not folded), from the references.
   Vector folded_stiffness(double dt) const;
   // The factors for dt: the last ones, or those kept for dt, or new ones.
@@ -125,9 +136,10 @@ class Newmark final : public Integrator {
   // u~, v~ and the right-hand side's inertia part.
   void predict_step(SecondOrderSystem& system, const State& from, double dt, double c_m);
   // The same and the right-hand side but the alpha history, with a lumped mass and Rayleigh
-  // damping or none, f_{n+1} taken at `end`; returns ||f_{n+1}||.
-  double predict_lumped(SecondOrderSystem& system, const State& from, double end,
-                        const Vector& mass, double dt, double c_m, double c_c);
+  // damping or none, f_{n+1} taken at `end`; returns ||f_{n+1}||. With f's rayleigh_shift, the
+  // right-hand side is that of u - S x, and shift_ holds S x (added to the solution).
+  double predict_lumped(SecondOrderSystem& system, const Factorization& f, const State& from,
+                        double end, const Vector& mass, double dt, double c_m, double c_c);
   // The alpha methods' history term, added to the right-hand side.
   void add_alpha_history(SecondOrderSystem& system, const State& from);
   // f_{n+1} and the damping term, added to the right-hand side; returns ||f_{n+1}||.
@@ -199,6 +211,7 @@ class Newmark final : public Integrator {
   } factorizations_;
   // Work vectors, kept to avoid allocation inside the time loop.
   Vector predicted_displacement_, predicted_velocity_, rhs_, work_, external_, damping_force_;
+  Vector shift_, x_;  // S x of predict_lumped and its x = c_c u~ - v~
   Vector history_;
   // The iteration starts from F_start (the folded rows' predicted unknowns, 0 elsewhere), which
   // the linear solve takes in its right-hand side: u_start = A^{-1}(r - B^T F_start), whose link

@@ -42,6 +42,21 @@ class Chain final : public integrators::SecondOrderSystem {
 
   static constexpr double kMassCoefficient = 0.3, kStiffnessCoefficient = 0.002;
 
+  // Cuts the spring between masses first - 1 and first, and damps the masses from `first` on
+  // with a0, a1 of their own: two structures that only links join, each with its Rayleigh
+  // damping (the coefficients by DOF).
+  void split(Index first, double mass_coefficient, double stiffness_coefficient) {
+    const double spring = -stiffness_(first - 1, first);
+    stiffness_(first - 1, first) = stiffness_(first, first - 1) = 0.0;
+    stiffness_(first - 1, first - 1) -= spring;
+    stiffness_(first, first) -= spring;
+    const Index rest = size() - first;
+    rayleigh_.mass_coefficient.tail(rest).setConstant(mass_coefficient);
+    rayleigh_.stiffness_coefficient.tail(rest).setConstant(stiffness_coefficient);
+    damping_ = rayleigh_.mass_coefficient.asDiagonal() * Matrix(mass_.asDiagonal()) +
+               rayleigh_.stiffness_coefficient.asDiagonal() * stiffness_;
+  }
+
   void set_lumped(bool lumped) { lumped_ = lumped; }
 
   Index size() const override { return mass_.size(); }
