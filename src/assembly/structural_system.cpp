@@ -963,6 +963,11 @@ void StructuralSystem::multiply_band(const Vector& x, Vector& y, Index first, In
   const double* __restrict__ in = x.data();
   double* __restrict__ out = y.data();
   // Each row's terms are added in column order, as the product by rows adds them.
+  if (b == 0) {  // diagonal: oscillators that only links join
+    const double* __restrict__ diagonal = stiffness_band_.data();
+    for (Index i = first; i < last; ++i) out[i] = diagonal[i] * in[i];
+    return;
+  }
   if (b == 1) {
     const double* __restrict__ diagonal = stiffness_band_.col(1).data();
     const double* __restrict__ upper = stiffness_band_.col(2).data();

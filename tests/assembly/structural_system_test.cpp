@@ -440,6 +440,30 @@ TEST(StructuralSystem, BandProductSumsEachRowInColumnOrder) {
       }
     }
   }
+  // A diagonal K (each mass on its own spring to the ground: oscillators that only links join).
+  for (const Index n : {1, 2, 7}) {
+    model::Model m;
+    m.dimension = 1;
+    for (Index i = 0; i < n; ++i) {
+      m.nodes.push_back({fmt::format("ground{}", i), {2.0 * static_cast<double>(i), 0.0}});
+      m.nodes.push_back({fmt::format("mass{}", i), {2.0 * static_cast<double>(i) + 1.0, 0.0}});
+      m.elements.push_back(
+          truss(m, 2 * i, 2 * i + 1, 100.0 + 7.0 * static_cast<double>(i), 1.0, 1.0));
+      m.supports.push_back({.node = 2 * i, .fixed = {true, true}});
+    }
+    const StructuralSystem system(m);
+    ASSERT_EQ(system.size(), n);
+    ASSERT_EQ(BandedLdlt::bandwidth_of(system.stiffness()), 0);
+    Vector x = random_vector(n, 4), y;
+    x[0] = 0.0;
+    system.multiply_stiffness(x, y);
+    const Vector expected = row_sums(system.stiffness(), x);
+    for (Index i = 0; i < n; ++i) {
+      EXPECT_EQ(y[i], expected[i]) << "diagonal, n = " << n << ", row " << i;
+      EXPECT_EQ(std::signbit(y[i]), std::signbit(expected[i])) << "row " << i;
+    }
+    ++cases;
+  }
   // An explicit step's blocks of 256 rows, each made just before it is needed.
   for (const Index band : {2, 5, 8}) {
     const StructuralSystem system(banded_chain(700, band));  // three blocks
@@ -461,7 +485,7 @@ TEST(StructuralSystem, BandProductSumsEachRowInColumnOrder) {
     for (Index i = 0; i < system.size(); ++i) ASSERT_EQ(y[i], expected[i]) << "row " << i;
     ++cases;
   }
-  std::cout << cases << " band products (b = 2 ... 9) equal to the row sums in every bit; "
+  std::cout << cases << " band products (b = 0, 2 ... 9) equal to the row sums in every bit; "
             << "tridiagonal within " << tridiagonal_error << "\n";
   EXPECT_LE(tridiagonal_error, 4e-16);
 }
