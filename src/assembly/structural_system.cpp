@@ -790,7 +790,9 @@ void StructuralSystem::add_geometric_stiffness(const model::Model& model,
   Eigen::SparseMatrix<double> geometric(size(), size());
   geometric.setFromTriplets(entries.begin(), entries.end());
   elastic_stiffness_ = stiffness_;
-  rayleigh_.reset();  // a1 K is the first-order K, not the K of the products
+  elastic_rows_ = elastic_stiffness_;
+  elastic_rows_.makeCompressed();  // multiply_rows reads its arrays
+  rayleigh_.reset();               // a1 K is the first-order K, not the K of the products
   stiffness_ += geometric;
   stiffness_.prune(0.0);
   store_stiffness_for_products();
@@ -920,10 +922,12 @@ void StructuralSystem::multiply_damping(const Vector& x, Vector& y) const {
     multiply_rows(damping_rows_, x, y);
     return;
   }
-  // C = a0 M + a1 K_elastic (P-Delta: a1 times the first-order K)
+  // C = a0 M + a1 K_elastic (P-Delta: a1 times the first-order K), K_elastic x by rows into kept
+  // storage (the column product's sums, without its temporary).
   const double a0 = damping_.mass_coefficient, a1 = damping_.stiffness_coefficient;
   multiply_mass(x, y);
-  y = a0 * y + a1 * (elastic_stiffness_ * x);
+  multiply_rows(elastic_rows_, x, damping_work_);
+  y = a0 * y + a1 * damping_work_;
 }
 
 void StructuralSystem::multiply_stiffness(const Vector& x, Vector& y) const {

@@ -109,7 +109,8 @@ class StructuralSystem final : public integrators::SecondOrderSystem {
   bool find_link_motion() const;
   bool has_link_motion_ = false;
   Eigen::SparseMatrix<double> stiffness_;
-  Eigen::SparseMatrix<double> elastic_stiffness_;  // only with P-Delta: K without it
+  Eigen::SparseMatrix<double> elastic_stiffness_;              // only with P-Delta: K without it
+  Eigen::SparseMatrix<double, Eigen::RowMajor> elastic_rows_;  // the same by rows, for C x
   void add_geometric_stiffness(const model::Model& model, model::GeometricStiffness kind);
   // The same for K x, a large part of an explicit step. A band at least half full (chains
   // numbered in node order) is kept by diagonals, column b + k holding K(i, i + k): the product

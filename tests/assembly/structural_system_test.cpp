@@ -17,8 +17,10 @@
 #include "assembly/banded_ldlt.hpp"
 #include "assembly/beam.hpp"
 #include "assembly/truss.hpp"
+#include "builder/build.hpp"
 #include "core/errors.hpp"
 #include "core/packets.hpp"
+#include "io/model_reader.hpp"
 #include "links/gap_spring.hpp"
 #include "support/elements.hpp"
 
@@ -415,6 +417,51 @@ Vector row_sums(const Eigen::SparseMatrix<double>& k, const Vector& x) {
 // The band product (blocks of four rows, its ends through zero padding) sums every row as
 // row_sums does, to the bit, for every bandwidth, length and block of an explicit step. (The
 // tridiagonal product has its own three-term form: within a rounding.)
+// With P-Delta, Rayleigh damping's a1 K is the first-order K (the geometric stiffness under the
+// column's weight does not damp): C x = a0 M x + a1 K_elastic x, to round-off of the dense
+// product, and not a1 times the K of the products (which the weight softens).
+TEST(StructuralSystem, DampingUnderPDeltaIsProportionalToTheFirstOrderStiffness) {
+  const StructuralSystem system(builder::build(io::parse_model(R"({
+    "dimension": 2,
+    "nodes": [{"id": "base", "x": 0, "y": 0}, {"id": "n1", "x": 0, "y": 3}, {"id": "n2", "x": 0, "y": 6},
+              {"id": "top", "x": 0, "y": 9}],
+    "materials": [{"id": "c", "youngs_modulus": 3e10, "density": 2500}],
+    "elements": [{"id": "e1", "type": "beam", "nodes": ["base", "n1"], "material": "c", "area": 0.5, "inertia": 0.02},
+                 {"id": "e2", "type": "beam", "nodes": ["n1", "n2"], "material": "c", "area": 0.5, "inertia": 0.02},
+                 {"id": "e3", "type": "beam", "nodes": ["n2", "top"], "material": "c", "area": 0.5, "inertia": 0.02}],
+    "masses": [{"node": "top", "mass": 4e5}],
+    "supports": [{"node": "base", "fix": ["x", "y", "rz"]}],
+    "gravity": {"acceleration": 9.81, "p_delta": "chord"},
+    "damping": {"mass_coefficient": 0.4, "stiffness_coefficient": 0.003},
+    "analysis": {"time_step": 0.01, "duration": 1}
+  })",
+                                                               "column.json"))
+                                    .model);
+  ASSERT_EQ(system.rayleigh(), nullptr);  // a1 K is not the products' K
+  const Matrix elastic(system.elastic_stiffness()), second_order(system.stiffness());
+  ASSERT_GT((second_order - elastic).norm(), 1e-6 * elastic.norm());  // the weight's K_G
+  Matrix mass(system.size(), system.size());
+  for (Index i = 0; i < system.size(); ++i) {
+    Vector column;
+    system.multiply_mass(Vector::Unit(system.size(), i), column);
+    mass.col(i) = column;
+  }
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> value(-1.0, 1.0);
+  Vector x(system.size()), y;
+  for (Index i = 0; i < x.size(); ++i) x[i] = value(rng);
+  system.multiply_damping(x, y);
+  const Vector expected = 0.4 * mass * x + 0.003 * elastic * x;
+  const double error = (y - expected).cwiseAbs().maxCoeff() / expected.cwiseAbs().maxCoeff();
+  const double softened =
+      (0.4 * mass * x + 0.003 * second_order * x - expected).cwiseAbs().maxCoeff() /
+      expected.cwiseAbs().maxCoeff();
+  std::cout << "C x under P-Delta against a0 M x + a1 K_elastic x: " << error
+            << " (a1 times the second-order K would be off by " << softened << ")\n";
+  EXPECT_LE(error, 1e-15);
+  EXPECT_GT(softened, 1e3 * error);
+}
+
 TEST(StructuralSystem, BandProductSumsEachRowInColumnOrder) {
   int cases = 0;
   double tridiagonal_error = 0.0;
