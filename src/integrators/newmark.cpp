@@ -345,7 +345,7 @@ Newmark::Factorization& Newmark::new_factorization(SecondOrderSystem& system, do
     f.folded_stiffness.resize(0);
     f.solver = system.factor(c_m, damping_factor, 1.0);
   }
-  set_rayleigh_shift(system, c_m, damping_factor, f);
+  if (!general_correction_) set_rayleigh_shift(system, c_m, damping_factor, f);
   const LinkSet& links = system.links();
   const Index n = system.size(), m = links.size();
   f.influence.resize(n, m);
@@ -391,7 +391,7 @@ StepResult Newmark::advance(SecondOrderSystem& system, const State& from, double
   double external_norm = 0.0;
   bool shifted = false;  // the solution is that of u - S x (predict_lumped)
   if (const Vector* mass = system.lumped_mass();
-      mass && (!system.has_damping() || system.rayleigh())) {
+      mass && (!system.has_damping() || system.rayleigh()) && !general_correction_) {
     external_norm = predict_lumped(system, f, from, end, *mass, dt, c_m, c_c);
     shifted = f.rayleigh_shift.size() > 0;
     if (alpha_m_ != 0.0 || alpha_f_ != 0.0) add_alpha_history(system, from);

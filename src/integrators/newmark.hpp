@@ -90,10 +90,11 @@ class Newmark final : public Integrator {
   StepResult advance(SecondOrderSystem& system, const State& from, double dt, double end,
                      State& to) override;
 
-  // The general path of the Newton correction: I + T G over every link row, factored at every
-  // iteration, no link row folded into the linear part. Off by default (linear rows folded, the
-  // active rows only, factors kept while their tangents stay); on, to verify that the fast path
-  // gives the same results.
+  // The general path: the Newton correction I + T G over every link row, factored at every
+  // iteration, no link row folded into the linear part, and the right-hand side by products with
+  // M and C (no lumped mass's fused pass, no Rayleigh shift). Off by default (linear rows folded,
+  // the active rows only, factors kept while their tangents stay, a1 K x by the shift); on, to
+  // verify that the fast path gives the same results.
   void set_general_correction(bool general) { general_correction_ = general; }
 
   double beta() const { return beta_; }

@@ -1,8 +1,9 @@
 // Issue 20: Newmark's Newton correction is solved on the active link rows only, with the LU kept
-// while their tangents stay, and the links on a linear branch folded into the factored matrix.
+// while their tangents stay, and the links on a linear branch folded into the factored matrix;
+// with a lumped mass its right-hand side is one fused pass, Rayleigh damping's a1 K x by a shift.
 // On every bundled model run by an implicit integrator, the first four seconds (the bridges'
 // first abutment impacts at 2.4 s) give the state of the general path (every row, none folded,
-// factored at every iteration) to within the Newton tolerance: each run's
+// factored at every iteration, products with M and C) to within the Newton tolerance: each run's
 // displacements, velocities and link forces are compared at the end of the span, relative to their
 // largest magnitude.
 #include <gtest/gtest.h>
