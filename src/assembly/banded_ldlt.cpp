@@ -115,11 +115,12 @@ void BandedLdlt::solve(const double* r, double* x) const {
 
 namespace {
 
-// Row i of the forward pass from the x already in memory: rhs[i] less its `terms` nearest
-// products L(i, i - k - 1) x[i - k - 1], farthest first, each fused (row i of L at lower + i b).
-double forward_row(const double* lower, Index b, const double* rhs, const double* x, Index i,
+// Row i of the forward pass from the x already in memory: its right-hand side less its `terms`
+// nearest products L(i, i - k - 1) x[i - k - 1], farthest first, each fused (row i of L at lower +
+// i b).
+double forward_row(const double* lower, Index b, double rhs, const double* x, Index i,
                    Index terms) {
-  double value = rhs[i];
+  double value = rhs;
   for (Index k = terms - 1; k >= 0; --k)
     value = multiply_add(-lower[i * b + k], x[i - k - 1], value);
   return value;
@@ -156,7 +157,7 @@ void BandedLdlt::substitute(const double* rhs, double* x) const {
   }
   const double* inv_d = inverse_pivot_.data();
   const double* lower = lower_.data();
-  for (Index i = 0; i < n; ++i) x[i] = forward_row(lower, b, rhs, x, i, std::min(i, b));
+  for (Index i = 0; i < n; ++i) x[i] = forward_row(lower, b, rhs[i], x, i, std::min(i, b));
   for (Index i = n - 1; i >= 0; --i) x[i] = back_row(lower, b, inv_d, x, i, std::min(b, n - i - 1));
 }
 
@@ -183,15 +184,10 @@ class RegisterSweep {
         x_(x),
         places_(places),
         out_(out) {}
-  // The first Band rows of the forward pass, from memory (forward_row's operations); then rows
-  // Band, Band + 1, ... in turn.
+  // The first Band rows of the forward pass, from memory; then rows Band, Band + 1, ... in turn.
   void begin_forward() {
-    for (Index i = 0; i < Band; ++i) {
-      double value = right_hand_side(i);
-      for (Index k = i - 1; k >= 0; --k)
-        value = multiply_add(-lower_[i * Band + k], x_[i - k - 1], value);
-      x_[i] = value;
-    }
+    for (Index i = 0; i < Band; ++i)
+      x_[i] = forward_row(lower_, Band, right_hand_side(i), x_, i, i);
     for (Index k = 0; k < Band; ++k) window_[k] = x_[Band - k - 1];
   }
   void forward(Index i) {

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <stdexcept>
 
 #include "assembly/band_ordering.hpp"
 #include "assembly/banded_ldlt.hpp"
@@ -117,15 +118,15 @@ BandedLdlt factor_in_order(const Eigen::SparseMatrix<double>& renumbered,
 // Structures that only unfolded links join (two buildings that pound) are apart in the matrix:
 // its connected components, each contiguous in the band's order, in two groups of about equal
 // size, each group's factors taken from the band's (BandedLdlt::restricted), both solved side by
-// side (BandedLdlt::solve_pair). The solution is the band's own, to the bit.
+// side (BandedLdlt::solve_pair, or solve_pair_in_place where a group is not one range of
+// equations). The solution is the band's own, to the bit.
 class PairedBandSolver final : public integrators::LinearSolver {
  public:
   using Orders = std::array<std::vector<Index>, 2>;
   PairedBandSolver(std::array<BandedLdlt, 2> factors, Orders orders)
       : factors_(std::move(factors)), orders_(std::move(orders)) {
     for (std::size_t g = 0; g < 2; ++g) {
-      rhs_[g].resize(static_cast<Index>(orders_[g].size()));
-      solution_[g].resize(static_cast<Index>(orders_[g].size()));
+      scratch_[g].resize(static_cast<Index>(orders_[g].size()));
       const std::vector<Index>& order = orders_[g];
       for (std::size_t k = 1; k < order.size() && first_[g] >= 0; ++k)
         if (order[k] != order[k - 1] + 1) first_[g] = -1;
@@ -139,24 +140,19 @@ class PairedBandSolver final : public integrators::LinearSolver {
                              factors_[1], rhs.data() + first_[1], solution.data() + first_[1]);
       return;
     }
+    // Interleaved groups, read and written at their places by the sweeps (paired_band_solver
+    // makes only pairs of one band, 2 to kUnrolledBand, each group larger than it).
     const BandedLdlt::PairPlaces places{orders_[0].data(), orders_[1].data(), solution.data()};
-    if (BandedLdlt::solve_pair_in_place(factors_[0], factors_[1], places, rhs.data(),
-                                        solution_[0].data(), solution_[1].data()))
-      return;
-    for (std::size_t g = 0; g < 2; ++g)
-      for (std::size_t k = 0; k < orders_[g].size(); ++k)
-        rhs_[g][static_cast<Index>(k)] = rhs[orders_[g][k]];
-    BandedLdlt::solve_pair(factors_[0], rhs_[0], solution_[0], factors_[1], rhs_[1], solution_[1]);
-    for (std::size_t g = 0; g < 2; ++g)
-      for (std::size_t k = 0; k < orders_[g].size(); ++k)
-        solution[orders_[g][k]] = solution_[g][static_cast<Index>(k)];
+    if (!BandedLdlt::solve_pair_in_place(factors_[0], factors_[1], places, rhs.data(),
+                                         scratch_[0].data(), scratch_[1].data()))
+      throw std::logic_error("PairedBandSolver: groups that cannot be solved side by side");
   }
 
  private:
   std::array<BandedLdlt, 2> factors_;
   Orders orders_;
-  std::array<Index, 2> first_{0, 0};  // a group's first equation when it is one range, else -1
-  mutable std::array<Vector, 2> rhs_, solution_;
+  std::array<Index, 2> first_{0, 0};       // a group's first equation when it is one range, else -1
+  mutable std::array<Vector, 2> scratch_;  // each group's forward sweep
 };
 
 // Each component's place in two groups of about equal size: the largest first, each into the
