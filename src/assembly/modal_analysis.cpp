@@ -123,8 +123,8 @@ Modes modal_analysis(const StructuralSystem& system, Index max_dofs) {
   return modes;
 }
 
-std::vector<double> natural_periods(const StructuralSystem& system, int count) {
-  const Modes modes = modal_analysis(system);
+std::vector<double> natural_periods(const StructuralSystem& system, int count, Index max_dofs) {
+  const Modes modes = modal_analysis(system, max_dofs);
   const double largest = modes.omega_squared.size() ? modes.omega_squared.maxCoeff() : 0.0;
   std::vector<double> periods;
   for (Index k = 0; k < modes.omega_squared.size() && static_cast<int>(periods.size()) < count; ++k)

@@ -30,6 +30,7 @@ Vector stiffness_diagonal_with_links(const StructuralSystem& system);
 // stiffness-to-mass ratio past 1e150).
 Modes modal_analysis(const StructuralSystem& system, Index max_dofs = 4000);
 // The first `count` periods 2 pi / w of the vibration modes (rigid-body modes left out).
-std::vector<double> natural_periods(const StructuralSystem& system, int count);
+std::vector<double> natural_periods(const StructuralSystem& system, int count,
+                                    Index max_dofs = 4000);
 
 }  // namespace pound::assembly

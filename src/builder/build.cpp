@@ -167,11 +167,40 @@ integrators::TransientSettings make_transient_settings(const AnalysisSpec& analy
 
 namespace {
 
+// a1 K alone gives a mode of frequency w the ratio a1 w / 2, more in every higher mode: past 1 at
+// the first, nothing in the structure can vibrate, and far past it the damping swamps the mass in
+// the step's matrix (at a1 = 1e15 s on the bundled bridge the girders' mass is lost to round-off).
+// Models whose modes cannot be found (none with mass, a massless mechanism) or would take long
+// (past 1,000 DOFs: a dense eigenproblem, about a second there) are not checked.
+void check_stiffness_damping(double a1, const model::Model& model, const std::string& time,
+                             const std::string& source) {
+  if (!(a1 > 0.0)) return;
+  std::vector<double> first;
+  try {
+    first = assembly::natural_periods(assembly::StructuralSystem(model), 1, 1000);
+  } catch (const std::exception&) {
+    return;  // the run's own checks name what is wrong with such a model
+  }
+  if (first.empty()) return;
+  const double ratio = a1 * std::numbers::pi / first[0];
+  if (ratio <= 1.0) return;
+  throw InputError(
+      source, "/damping/stiffness_coefficient",
+      fmt::format(
+          "a1 = {:.3g} {} gives the first mode (period {:.3g} {}) a damping ratio of {:.3g} "
+          "from the stiffness-proportional part alone, above critical (1): no mode of the "
+          "structure could vibrate. A ratio xi at period T takes a1 = xi T / pi ({:.3g} {} "
+          "for 5 % at the first mode), or give 'ratio' with 'periods' or 'modes'",
+          a1, time, first[0], time, ratio, 0.05 * first[0] / std::numbers::pi, time));
+}
+
 // a0 = 2 xi w1 w2 / (w1 + w2), a1 = 2 xi / (w1 + w2): the ratio xi at both frequencies.
 model::RayleighDamping rayleigh_damping(const DampingSpec& damping, const model::Model& model,
-                                        const std::string& source) {
-  if (damping.mass_coefficient || damping.stiffness_coefficient)
+                                        const std::string& time, const std::string& source) {
+  if (damping.mass_coefficient || damping.stiffness_coefficient) {
+    check_stiffness_damping(damping.stiffness_coefficient.value_or(0.0), model, time, source);
     return {damping.mass_coefficient.value_or(0.0), damping.stiffness_coefficient.value_or(0.0)};
+  }
   std::array<double, 2> periods{};
   if (damping.periods) {
     periods = *damping.periods;
@@ -419,7 +448,7 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
   if (!built.analysis.time_step_auto) check_step_count(built.analysis, spec.source);
   if (spec.damping) {
     try {
-      model.damping = rayleigh_damping(*spec.damping, model, spec.source);
+      model.damping = rayleigh_damping(*spec.damping, model, spec.units.time, spec.source);
     } catch (const assembly::NotPositiveDefinite& failure) {
       throw not_held_error(built, model::DofMap(model), failure,
                            "the modal analysis for Rayleigh damping (/damping/modes)", spec.source);

@@ -1,12 +1,16 @@
 #include "builder/build.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <optional>
 #include <string>
 
+#include "assembly/modal_analysis.hpp"
 #include "assembly/structural_system.hpp"
 #include "assembly/truss.hpp"
 #include "core/errors.hpp"
@@ -163,6 +167,29 @@ TEST(Build, UncountablyManySteps) {
                "/analysis/time_step", "is 1e+302 steps");
   EXPECT_FALSE(build_error(spec_of(
       patched(kModel, R"([{"op": "replace", "path": "/analysis/time_step", "value": 1e-14}])"))));
+}
+
+// Stiffness-proportional damping past critical at the first mode (a1 w1 / 2 > 1) is refused at
+// its path: at a1 = 1e15 s the bundled bridge was refused for "nothing holds it" (the girders'
+// mass lost to round-off beside a1 K) and at 1e10 s it ran with no motion left to study. Just
+// below critical builds.
+TEST(Build, StiffnessDampingPastCriticalAtTheFirstModeIsRefused) {
+  const BuiltModel undamped = build(spec_of(kModel));
+  const double period =
+      assembly::natural_periods(assembly::StructuralSystem(undamped.model), 1).at(0);
+  const double critical = period / std::numbers::pi;  // a1 w1 / 2 = 1
+  const auto with_a1 = [](double a1) {
+    return spec_of(patched(kModel, fmt::format(R"([{{"op": "add", "path": "/damping", "value":
+        {{"mass_coefficient": 0.1, "stiffness_coefficient": {:.17g}}}}}])",
+                                               a1)));
+  };
+  const BuiltModel below = build(with_a1(0.99 * critical));
+  EXPECT_DOUBLE_EQ(below.model.damping->stiffness_coefficient, 0.99 * critical);
+  expect_error(
+      with_a1(1.01 * critical), "/damping/stiffness_coefficient",
+      fmt::format("gives the first mode (period {:.3g} s) a damping ratio of 1.01 ", period));
+  expect_error(with_a1(1e15), "/damping/stiffness_coefficient", "above critical (1)");
+  std::printf("first period %.6g s, critical a1 %.6g s\n", period, critical);
 }
 
 TEST(Build, LinkJoiningANodeToItself) {
