@@ -7,9 +7,13 @@
 // the same operations run as plain loops: the first largest |a_ik| as pivot, exact divisions,
 // every update and sum rounded once per term (fused multiply-adds, as GCC fuses Eigen's code in
 // the release build on x86-64-v3; not at -O1) except where Eigen's own scalar loop rounds the
-// product first (tested against Eigen's code on every size, Path::eigen). Larger matrices take
-// Eigen's own code (its blocked factorisation sums its panel products in another order). No 1-norm
-// is kept (PartialPivLU's, for rcond(), is unused here).
+// product first (tested against Eigen's code on every size, Path::eigen). From 17 to 64 rows
+// (the link systems of buildings with yielding storeys: 35 Takeda storeys and their contacts)
+// Eigen blocks its factorisation and its solves, whose set-up cost the Takeda buildings 13 % of
+// their run; the same unblocked loops factor them here (equal to Eigen's only within rounding:
+// its blocks sum the panel products in another order) and the solves are plain column sweeps.
+// Larger matrices take Eigen's own code. No 1-norm is kept (PartialPivLU's, for rcond(), is
+// unused here).
 #include <Eigen/Core>
 
 #include "core/types.hpp"
@@ -19,6 +23,7 @@ namespace pound {
 class PivotedLu {
  public:
   static constexpr Index kUnblockedRows = 16;  // Eigen's own bound for its unblocked algorithm
+  static constexpr Index kLoopRows = 64;       // the loops' bound (Eigen's code past it)
   // `eigen`: Eigen's code at every size, the general path the loops are compared with.
   enum class Path { loops, eigen };
 
@@ -31,6 +36,7 @@ class PivotedLu {
   void factor_unblocked();
   void solve_unit_lower(double* x) const;
   void solve_upper(double* x) const;
+  void solve_by_columns(double* x) const;  // both sweeps, past kUnblockedRows
   double panel_sum(Index t, Index start, Index end, const double* x, bool scalar_row) const;
 
   Matrix lu_;

@@ -1,7 +1,9 @@
 // The small LU: its loops give Eigen's factors and solutions to the bit (Path::eigen runs
 // Eigen's own code, compiled in the library with the loops' flags), and the factors are those of
-// the unblocked algorithm written out here; its solves leave residuals at rounding at every size,
-// blocked ones included; a singular matrix gives non-finite values, as Eigen's does.
+// the unblocked algorithm written out here (to 64 rows), its solves past 16 rows column sweeps
+// written out here and within rounding of Eigen's blocked ones; they leave residuals at rounding
+// at every size, Eigen's blocks past 64 included; a singular matrix gives non-finite values, as
+// Eigen's does.
 // No test file may instantiate Eigen's LU or its column-major triangular solves itself: the
 // tests are compiled at -Og, without fused multiply-adds, and the linker keeps one copy of each
 // template, which would then be the test's in the library code too (that is why
@@ -62,9 +64,34 @@ Reference reference_lu(Matrix lu) {
   return result;
 }
 
+// The sizes the loops take: every one up to Eigen's unblocked bound, then a sample to theirs.
+std::vector<Index> loop_sizes() {
+  std::vector<Index> sizes;
+  for (Index n = 1; n <= PivotedLu::kUnblockedRows; ++n) sizes.push_back(n);
+  for (const Index n : {17, 20, 24, 33, 47, 63}) sizes.push_back(n);
+  sizes.push_back(PivotedLu::kLoopRows);
+  return sizes;
+}
+
+// The reference's solution: P b, then the unit lower and the upper sweeps column by column.
+Vector reference_solve(const Reference& reference, Vector x) {
+  const Matrix& lu = reference.lu;
+  const Index n = lu.rows();
+  for (Index k = 0; k < n; ++k) std::swap(x[k], x[reference.pivots[static_cast<std::size_t>(k)]]);
+  for (Index j = 0; j < n; ++j)
+    if (x[j] != 0.0)
+      for (Index i = j + 1; i < n; ++i) x[i] = multiply_add(-x[j], lu(i, j), x[i]);
+  for (Index j = n - 1; j >= 0; --j) {
+    if (x[j] == 0.0) continue;
+    x[j] /= lu(j, j);
+    for (Index i = 0; i < j; ++i) x[i] = multiply_add(-x[j], lu(i, j), x[i]);
+  }
+  return x;
+}
+
 TEST(PivotedLu, FactorsAreTheUnblockedAlgorithmsToTheBit) {
   int unequal = 0, compared = 0;
-  for (Index n = 1; n <= PivotedLu::kUnblockedRows; ++n)
+  for (const Index n : loop_sizes())
     for (unsigned seed = 0; seed < 20; ++seed) {
       Matrix a = random_matrix(n, 100 * static_cast<unsigned>(n) + seed);
       if (seed % 5 == 0 && n > 2) a.row(1) = a.row(0);  // ties for the pivot, then a zero one
@@ -78,9 +105,54 @@ TEST(PivotedLu, FactorsAreTheUnblockedAlgorithmsToTheBit) {
           ++compared;
         }
     }
-  std::cout << "  " << compared << " factor entries (sizes 1 to 16, ties and zero pivots), "
+  std::cout << "  " << compared << " factor entries (sizes 1 to 64, ties and zero pivots), "
             << unequal << " unequal to the reference's in value or sign" << std::endl;
   EXPECT_EQ(unequal, 0);
+}
+
+// Past 16 rows the solves are column sweeps: the reference's, to the bit, zeros (which both
+// skip) and -0 among the right-hand sides.
+TEST(PivotedLu, SolvesPastSixteenRowsAreTheColumnSweepsToTheBit) {
+  int unequal = 0, compared = 0;
+  for (const Index n : loop_sizes()) {
+    if (n <= PivotedLu::kUnblockedRows) continue;
+    for (unsigned seed = 0; seed < 10; ++seed) {
+      const Matrix a = random_matrix(n, 900 * static_cast<unsigned>(n) + seed);
+      std::mt19937 rng(500 * static_cast<unsigned>(n) + seed);
+      Vector b = testing::random_vector(n, rng);
+      if (seed % 3 == 0) b.head(n / 2).setZero();
+      if (seed % 2 == 0) b[1] = -0.0;
+      PivotedLu lu;
+      lu.compute(a);
+      Vector x;
+      lu.solve(b, x);
+      const Vector want = reference_solve(reference_lu(a), b);
+      for (Index i = 0; i < n; ++i, ++compared) unequal += !same_bits(x[i], want[i]);
+    }
+  }
+  std::cout << "  sizes 17 to 64: " << compared << " solution entries, " << unequal
+            << " unequal to the reference's column sweeps" << std::endl;
+  EXPECT_EQ(unequal, 0);
+}
+
+// And within rounding of Eigen's blocked factors and solves (which sum in another order).
+TEST(PivotedLu, PastSixteenRowsTheLoopsAreEigensWithinRounding) {
+  double worst = 0.0;
+  for (const Index n : loop_sizes()) {
+    if (n <= PivotedLu::kUnblockedRows) continue;
+    const Matrix a = random_matrix(n, 40 * static_cast<unsigned>(n));
+    std::mt19937 rng(60 * static_cast<unsigned>(n));
+    const Vector b = testing::random_vector(n, rng);
+    PivotedLu loops, eigen;
+    loops.compute(a);
+    eigen.compute(a, PivotedLu::Path::eigen);
+    Vector x, y;
+    loops.solve(b, x);
+    eigen.solve(b, y, PivotedLu::Path::eigen);
+    worst = std::max(worst, (x - y).norm() / y.norm());
+  }
+  std::cout << "  sizes 17 to 64: largest |x_loops - x_eigen| / |x_eigen| " << worst << std::endl;
+  EXPECT_LT(worst, 1e-13);
 }
 
 // Whether this build's Eigen code fuses its updates a - l u (the release build's -O3 does; the
@@ -150,7 +222,7 @@ TEST(PivotedLu, LoopsGiveEigensFactorsAndSolutionsToTheBit) {
 
 TEST(PivotedLu, SolvesLeaveResidualsAtRoundingAtEverySize) {
   double worst_residual = 0.0;
-  for (const Index n : {1, 2, 3, 7, 13, 16, 17, 24, 40, 64}) {
+  for (const Index n : {1, 2, 3, 7, 13, 16, 17, 24, 40, 64, 65, 80}) {
     const Matrix a = random_matrix(n, 7 * static_cast<unsigned>(n));
     std::mt19937 rng(11 * static_cast<unsigned>(n));
     const Vector b = testing::random_vector(n, rng);
@@ -160,7 +232,8 @@ TEST(PivotedLu, SolvesLeaveResidualsAtRoundingAtEverySize) {
     lu.solve(b, x);
     worst_residual = std::max(worst_residual, (a * x - b).norm() / (a.norm() * x.norm()));
   }
-  std::cout << "  sizes 1 to 64 (blocked past 16): largest residual |A x - b| / (|A| |x|) "
+  std::cout << "  sizes 1 to 80 (column sweeps past 16, Eigen's blocks past 64): largest residual "
+               "|A x - b| / (|A| |x|) "
             << worst_residual << std::endl;
   EXPECT_LT(worst_residual, 1e-15);
 }
