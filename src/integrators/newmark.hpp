@@ -96,6 +96,10 @@ class Newmark final : public Integrator {
   // the active rows only, factors kept while their tangents stay, a1 K x by the shift); on, to
   // verify that the fast path gives the same results.
   void set_general_correction(bool general) { general_correction_ = general; }
+  // Corrections solved with the kept factors updated by rows (large link systems, one or two
+  // rows changed), for the tests that compare that path with the general one.
+  long row_updates() const { return row_update_count_; }
+  void set_row_updates(bool allowed) { row_updates_allowed_ = allowed; }
 
   double beta() const { return beta_; }
   double gamma() const { return gamma_; }
@@ -153,6 +157,9 @@ class Newmark final : public Integrator {
                          double external_norm, StepResult& result);
   // The Newton correction of the link forces from residual_ and tangent_, in correction_.
   void solve_correction(const Factorization& f);
+  bool solve_by_row_update(const double* coupling, Index m);  // the kept factors, Woodbury
+  long row_update_count_ = 0;
+  bool row_updates_allowed_ = true;
   // delta, rate and acceleration of the links at the assumed F, the laws' forces and tangent
   // there, and the residual F - F_law.
   void deform_links(const Factorization& f);
@@ -254,12 +261,23 @@ class Newmark final : public Integrator {
     int count = 0;
   };
   std::vector<RowCoupling> row_coupling_;
+  // Row (r) of T G at the columns c whose G(:, c) start at column_start = c m.
+  static double tangent_times_coupling(const double* coupling, const RowCoupling& row,
+                                       Index column_start);
   std::vector<Index> column_starts_;     // c m of the columns c of G a correction reads
   std::vector<double> active_tangents_;  // T(r, r), slip, T(r, q) of each active row
   // What jacobian_lu_ holds: the factorisation's id, the rows and their tangents.
   long factorization_count_ = 0, factored_id_ = 0;
   std::vector<Index> factored_rows_;
   std::vector<double> factored_tangents_;
+  // Row updates of the kept factors (solve_by_row_update): from this many active rows, up to
+  // this many changed rows.
+  static constexpr Index kRowUpdateSize = 24;
+  static constexpr int kMaxRowUpdates = 2;  // (its small solve is written for one or two)
+  std::vector<Index> tangent_offsets_, factored_offsets_;  // each active row's first tangent
+  std::vector<Index> changed_places_, update_places_;      // (places in active_rows_)
+  Matrix row_changes_, update_columns_;                    // D, and Z = J0^-1 E of update_places_
+  Vector unit_, update_column_;
   Vector reduced_residual_, reduced_correction_;
   Vector link_offset_, link_offset_rate_, link_offset_acceleration_;
   bool links_move_ = false;  // this step's links see the supports' motion (predict_links)
