@@ -702,9 +702,6 @@ void Newmark::solve_correction(const Factorization& f) {
   // G(r, c) at coupling[c m + r]. Each row's tangents are copied out of row_coupling_ before its
   // loop, so they stay in registers (stores to jacobian_ might otherwise alias them).
   const double* const coupling = f.coupling.data();
-  const auto jacobian_entry = [coupling](const RowCoupling& row, Index column_start) {
-    return tangent_times_coupling(coupling, row, column_start);
-  };
   column_starts_.clear();
   for (const Index c : moved_rows_) column_starts_.push_back(c * m);
   reduced_residual_.resize(size);
@@ -714,7 +711,7 @@ void Newmark::solve_correction(const Factorization& f) {
     // The identity rows' known corrections move to the right-hand side.
     double rhs = residual_[row.row];
     for (std::size_t k = 0; k < moved_rows_.size(); ++k)
-      rhs -= jacobian_entry(row, column_starts_[k]) * residual_[moved_rows_[k]];
+      rhs -= tangent_times_coupling(coupling, row, column_starts_[k]) * residual_[moved_rows_[k]];
     reduced_residual_[i] = rhs;
   }
   // The same rows with the same tangents (linear laws, or branches that did not change): the
@@ -735,12 +732,18 @@ void Newmark::solve_correction(const Factorization& f) {
       if (q != r) active_tangents_.push_back(tangent_(r, q));
   }
   const bool same_rows = f.id == factored_id_ && active_rows_ == factored_rows_;
-  if (same_rows && active_tangents_ != factored_tangents_ && solve_by_row_update(coupling, m)) {
-    for (Index i = 0; i < size; ++i)
-      correction_[active_rows_[static_cast<std::size_t>(i)]] = reduced_correction_[i];
-    return;
-  }
-  if (!same_rows || active_tangents_ != factored_tangents_) {
+  const bool same_matrix = same_rows && active_tangents_ == factored_tangents_;
+  if (!(same_rows && !same_matrix && solve_by_row_update(coupling, m)))
+    solve_with_factors(f, coupling, m, same_matrix);
+  for (Index i = 0; i < size; ++i)
+    correction_[active_rows_[static_cast<std::size_t>(i)]] = reduced_correction_[i];
+}
+
+// reduced_correction_ with jacobian_lu_, factored anew first unless `same_matrix`.
+void Newmark::solve_with_factors(const Factorization& f, const double* coupling, Index m,
+                                 bool same_matrix) {
+  const Index size = static_cast<Index>(active_rows_.size());
+  if (!same_matrix) {
     jacobian_.resize(size, size);
     column_starts_.clear();
     for (const Index c : active_rows_) column_starts_.push_back(c * m);
@@ -748,7 +751,8 @@ void Newmark::solve_correction(const Factorization& f) {
       const Index r = active_rows_[static_cast<std::size_t>(i)];
       const RowCoupling coupled = row_coupling_[static_cast<std::size_t>(r)];
       for (Index j = 0; j < size; ++j)
-        jacobian_(i, j) = jacobian_entry(coupled, column_starts_[static_cast<std::size_t>(j)]);
+        jacobian_(i, j) =
+            tangent_times_coupling(coupling, coupled, column_starts_[static_cast<std::size_t>(j)]);
       // A pressing hard contact's row is s G(r, :) alone: its F_law moves with F. A slipping
       // friction row's adds its entries on its link's rows, which are active too and come in
       // order just around it (the normal row, the tangents), at i - (r - row).
@@ -770,8 +774,6 @@ void Newmark::solve_correction(const Factorization& f) {
   jacobian_lu_.solve(reduced_residual_, reduced_correction_);
   if (!reduced_correction_.allFinite())
     reduced_correction_ = least_norm_correction(jacobian_, reduced_residual_);
-  for (Index i = 0; i < size; ++i)
-    correction_[active_rows_[static_cast<std::size_t>(i)]] = reduced_correction_[i];
 }
 
 // The active rows whose tangents differ from the factored ones: with one or two of them in a
@@ -806,7 +808,8 @@ bool Newmark::solve_by_row_update(const double* coupling, Index m) {
   // D: the changed rows' entries of I + T G less J0's (jacobian_ keeps J0).
   column_starts_.clear();
   for (const Index c : active_rows_) column_starts_.push_back(c * m);
-  row_changes_.resize(k, size);
+  // D and Z at their largest row and column count, so a change of k allocates nothing.
+  row_changes_.resize(kMaxRowUpdates, size);
   for (Index a = 0; a < k; ++a) {
     const Index i = changed_places_[static_cast<std::size_t>(a)];
     const RowCoupling& row =
@@ -817,7 +820,7 @@ bool Newmark::solve_by_row_update(const double* coupling, Index m) {
           (i == j ? 1.0 : 0.0) - jacobian_(i, j);
   }
   if (changed_places_ != update_places_) {
-    update_columns_.resize(size, k);
+    update_columns_.resize(size, kMaxRowUpdates);
     for (Index a = 0; a < k; ++a) {
       unit_.setZero(size);
       unit_[changed_places_[static_cast<std::size_t>(a)]] = 1.0;

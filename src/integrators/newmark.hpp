@@ -158,6 +158,8 @@ class Newmark final : public Integrator {
   // The Newton correction of the link forces from residual_ and tangent_, in correction_.
   void solve_correction(const Factorization& f);
   bool solve_by_row_update(const double* coupling, Index m);  // the kept factors, Woodbury
+  void solve_with_factors(const Factorization& f, const double* coupling, Index m,
+                          bool same_matrix);
   long row_update_count_ = 0;
   bool row_updates_allowed_ = true;
   // delta, rate and acceleration of the links at the assumed F, the laws' forces and tangent
