@@ -184,14 +184,16 @@ void check_stiffness_damping(double a1, const model::Model& model, const std::st
   if (first.empty()) return;
   const double ratio = a1 * std::numbers::pi / first[0];
   if (ratio <= 1.0) return;
+  // Near the largest double the ratio overflows: say so rather than print "inf".
+  const std::string ratio_text =
+      std::isfinite(ratio) ? fmt::format("{:.3g}", ratio) : "over 1e308 (too large to represent)";
   throw InputError(
       source, "/damping/stiffness_coefficient",
-      fmt::format(
-          "a1 = {:.3g} {} gives the first mode (period {:.3g} {}) a damping ratio of {:.3g} "
-          "from the stiffness-proportional part alone, above critical (1): no mode of the "
-          "structure could vibrate. A ratio xi at period T takes a1 = xi T / pi ({:.3g} {} "
-          "for 5 % at the first mode), or give 'ratio' with 'periods' or 'modes'",
-          a1, time, first[0], time, ratio, 0.05 * first[0] / std::numbers::pi, time));
+      fmt::format("a1 = {:.3g} {} gives the first mode (period {:.3g} {}) a damping ratio of {} "
+                  "from the stiffness-proportional part alone, above critical (1): no mode of the "
+                  "structure could vibrate. A ratio xi at period T takes a1 = xi T / pi ({:.3g} {} "
+                  "for 5 % at the first mode), or give 'ratio' with 'periods' or 'modes'",
+                  a1, time, first[0], time, ratio_text, 0.05 * first[0] / std::numbers::pi, time));
 }
 
 // a0 = 2 xi w1 w2 / (w1 + w2), a1 = 2 xi / (w1 + w2): the ratio xi at both frequencies.

@@ -189,6 +189,8 @@ TEST(Build, StiffnessDampingPastCriticalAtTheFirstModeIsRefused) {
       with_a1(1.01 * critical), "/damping/stiffness_coefficient",
       fmt::format("gives the first mode (period {:.3g} s) a damping ratio of 1.01 ", period));
   expect_error(with_a1(1e15), "/damping/stiffness_coefficient", "above critical (1)");
+  expect_error(with_a1(1e308), "/damping/stiffness_coefficient",
+               "a damping ratio of over 1e308 (too large to represent)");
   std::printf("first period %.6g s, critical a1 %.6g s\n", period, critical);
 }
 
