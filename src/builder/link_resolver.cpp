@@ -110,6 +110,7 @@ void resolve_law(const LinkPlace& place, model::Link& link) {
                                    type, place.spec.gap));
   link.make_law =
       links::make_law(place.spec.law, {place.resolver.spec().source, place.path + "/law"});
+  link.law_spec = place.spec.law;
 }
 
 // A constraint (hard_contact) sticks exactly: no stick penalty to give, and no pendulum (its
@@ -240,6 +241,7 @@ void add_link_damping(const Resolver& resolver,
                     "the model has no \"damping\" to take a1 from: give the link its own");
     if (links[k].shear)
       links[k].shear->damping = links::ShearDamping{*coefficient, rayleigh->stiffness};
+    links[k].law_spec.reset();  // the law is no longer the spec's alone
     links[k].make_law = [inner = links[k].make_law, a1 = *coefficient,
                          stiffness = rayleigh->stiffness](const links::LinkContext& context) {
       return std::make_unique<links::StiffnessDamping>(inner(context), a1, stiffness);

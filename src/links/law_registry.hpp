@@ -27,6 +27,8 @@ struct LawSpec {
 
   std::optional<double> number(const std::string& name) const;
   std::string choice(const std::string& name, const std::string& fallback) const;
+  // Equal specs make equal laws in equal contexts (verification's contact probe shares them).
+  bool operator==(const LawSpec&) const = default;
 };
 
 // Where a law object is in its file, for the errors found only when the law is made.

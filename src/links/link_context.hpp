@@ -20,6 +20,7 @@ struct LinkContext {
     if (fixed_j) return mass_i;
     return mass_i * mass_j / (mass_i + mass_j);
   }
+  bool operator==(const LinkContext&) const = default;
 };
 
 }  // namespace pound::links

@@ -106,6 +106,9 @@ struct Link {
   double gap = 0.0;                      // initial clear distance [L], >= 0
   const links::LawEntry* law = nullptr;  // its law's registry entry (role, traits); none in code
   links::LawFactory make_law;
+  // The spec make_law makes its law from, when that is all it is made from (none: a law made in
+  // code, or wrapped in the link's own Rayleigh damping): equal specs make equal laws.
+  std::optional<links::LawSpec> law_spec;
   std::optional<LinkFriction> friction;
   std::optional<LinkShear> shear;  // on the tangential rows, as friction (never both)
   // 3-D: t_1 of the tangential rows, a unit vector across the axis (t_2 = axis x t_1); none:

@@ -103,15 +103,46 @@ LinkCheck check_contact(const model::Link& link, const links::LinkLaw& law,
   return c;
 }
 
+// The probes already run: links of one law spec in one context at one approach velocity (a
+// building pair's pounding links storey by storey, a bridge's two abutments) make equal laws,
+// which the probe finds the same (it is a few thousand steps of a two-mass model: a third of a
+// Takeda pair's run when it was repeated for each of its 15 contacts).
+struct ProbeMemo {
+  struct Entry {
+    links::LawSpec spec;
+    links::LinkContext context;
+    double approach_velocity = 0.0;
+    std::optional<ContactEnergyProbe> probe;
+  };
+  std::vector<Entry> entries;
+  std::size_t probes_run = 0;
+
+  std::optional<ContactEnergyProbe> probe(const model::Link& link, const links::LinkLaw& law,
+                                          const links::LinkContext& context,
+                                          const builder::AnalysisSpec& analysis,
+                                          double approach_velocity) {
+    if (link.law_spec)
+      for (const Entry& e : entries)
+        if (e.approach_velocity == approach_velocity && e.context == context &&
+            e.spec == *link.law_spec)
+          return e.probe;
+    ++probes_run;
+    std::optional<ContactEnergyProbe> result =
+        probe_contact_energy(law, context, analysis, approach_velocity);
+    if (link.law_spec) entries.push_back({*link.law_spec, context, approach_velocity, result});
+    return result;
+  }
+};
+
 // An impact of the link's end masses at the run's integrator and step that creates more than
 // kContactCreatedWarning of its approach energy.
 void warn_created_energy(const model::Link& link, const links::LinkLaw& law,
                          const assembly::StructuralSystem& system,
                          const builder::AnalysisSpec& analysis, double approach_velocity,
-                         std::vector<std::string>& warnings) {
+                         ProbeMemo& memo, std::vector<std::string>& warnings) {
   if (link.law && link.law->traits.inertia) return;  // its engagements' work has no sign
   const std::optional<ContactEnergyProbe> probe =
-      probe_contact_energy(law, system.link_context(link), analysis, approach_velocity);
+      memo.probe(link, law, system.link_context(link), analysis, approach_velocity);
   if (!probe || !(probe->created_fraction > results::kContactCreatedWarning)) return;
   warnings.push_back(fmt::format(
       "link {}: an impact of its end masses at {:.3g} (twice the peak ground velocity or the "
@@ -210,6 +241,7 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
   const double ground_velocity = peak_ground_velocity(built.model);
   Vector closing;
   links.project(system.initial_velocity(built.model), closing);
+  ProbeMemo memo;
   for (Index k = 0; k < links.count(); ++k) {
     const model::Link& link = built.model.links[static_cast<std::size_t>(k)];
     if (link.role() != links::LinkRole::contact) continue;
@@ -221,9 +253,10 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
     if (c.adjacent > 0.0 && c.stiff_at_first_touch && plain_penalty)
       warn_k_ratio(c, check.warnings);
     warn_contact_steps(c, analysis, check.warnings);
-    warn_created_energy(link, links.law(k), system, analysis, approach, check.warnings);
+    warn_created_energy(link, links.law(k), system, analysis, approach, memo, check.warnings);
     check.contacts.push_back(c);
   }
+  check.contact_energy_probes = memo.probes_run;
   if (!check.periods.empty() && !analysis.time_step_auto &&
       analysis.time_step > check.periods.back() / 10.0)
     check.warnings.push_back(

@@ -46,6 +46,9 @@ struct ModelCheck {
   // Why there are no explicit steps: no lumped mass on some DOF, or no stable step at all.
   std::string explicit_unavailable;
   std::vector<LinkCheck> contacts;
+  // How many impacts of a contact's end masses were simulated for the created-energy warning:
+  // one for each distinct law spec, context and approach velocity (contact_energy_probe.hpp).
+  std::size_t contact_energy_probes = 0;
   std::vector<std::string> warnings;
 };
 

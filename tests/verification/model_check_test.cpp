@@ -1,0 +1,76 @@
+// The model check's created-energy probe: links of one law spec in one context at one approach
+// velocity are probed once and warned each, as a probe of their own would warn them.
+#include "verification/model_check.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "assembly/structural_system.hpp"
+#include "builder/build.hpp"
+#include "io/model_reader.hpp"
+#include "verification/contact_energy_probe.hpp"
+
+namespace pound::verification {
+namespace {
+
+// Four pairs of masses closing through elastic gap springs (k = 1e4) at a step that creates
+// energy at some phase of first touch (tests/verification/contact_energy_probe_test.cpp): c1 and
+// c2 alike, c3 with a heavier mass, c4 like c1 but closing faster.
+constexpr const char* kPairs = R"({
+  "dimension": 1,
+  "nodes": [{"id": "a1", "x": 0}, {"id": "b1", "x": 0}, {"id": "a2", "x": 0}, {"id": "b2", "x": 0},
+            {"id": "a3", "x": 0}, {"id": "b3", "x": 0}, {"id": "a4", "x": 0}, {"id": "b4", "x": 0}],
+  "masses": [{"node": "a1", "mass": 1}, {"node": "b1", "mass": 2}, {"node": "a2", "mass": 1},
+             {"node": "b2", "mass": 2}, {"node": "a3", "mass": 1}, {"node": "b3", "mass": 5},
+             {"node": "a4", "mass": 1}, {"node": "b4", "mass": 2}],
+  "initial_velocities": [{"node": "a1", "x": 1}, {"node": "b1", "x": -0.5},
+                         {"node": "a2", "x": 1}, {"node": "b2", "x": -0.5},
+                         {"node": "a3", "x": 1}, {"node": "b3", "x": -0.5},
+                         {"node": "a4", "x": 2}, {"node": "b4", "x": -0.5}],
+  "links": [
+    {"id": "c1", "nodes": ["a1", "b1"], "axis": [1], "gap": 0.00123, "law": {"type": "gap_spring", "stiffness": 1e4}},
+    {"id": "c2", "nodes": ["a2", "b2"], "axis": [1], "gap": 0.00123, "law": {"type": "gap_spring", "stiffness": 1e4}},
+    {"id": "c3", "nodes": ["a3", "b3"], "axis": [1], "gap": 0.00123, "law": {"type": "gap_spring", "stiffness": 1e4}},
+    {"id": "c4", "nodes": ["a4", "b4"], "axis": [1], "gap": 0.00123, "law": {"type": "gap_spring", "stiffness": 1e4}}
+  ],
+  "analysis": {"integrator": "newmark_average_acceleration", "time_step": 0.0047, "duration": 0.1}
+})";
+
+// The warning of `link` in `warnings`, or "".
+std::string warning_of(const std::vector<std::string>& warnings, const std::string& link) {
+  for (const std::string& w : warnings)
+    if (w.starts_with("link " + link + ": an impact")) return w;
+  return "";
+}
+
+TEST(ModelCheck, ContactsOfOneSpecAndContextAreProbedOnceAndWarnedEach) {
+  const builder::BuiltModel built = builder::build(io::parse_model(kPairs, "pairs.json"));
+  assembly::StructuralSystem system(built.model);
+  const ModelCheck check = check_model(built, system, false);
+  // c1 and c2 share one probe; c3 (another context) and c4 (another approach velocity) have
+  // theirs.
+  EXPECT_EQ(check.contact_energy_probes, 3u);
+  for (Index k = 0; k < 4; ++k) {
+    const model::Link& link = built.model.links[static_cast<std::size_t>(k)];
+    const auto own = probe_contact_energy(system.links().law(k), system.link_context(link),
+                                          built.analysis, k == 3 ? 2.5 : 1.5);
+    ASSERT_TRUE(own.has_value()) << link.id;
+    const std::string warning = warning_of(check.warnings, link.id);
+    std::printf("%s: its own probe creates %.4f %%; check: %s\n", link.id.c_str(),
+                100.0 * own->created_fraction, warning.c_str());
+    ASSERT_GT(own->created_fraction, 0.01) << link.id;  // each warns
+    EXPECT_NE(warning.find(fmt::format("creates up to {:.2f} %", 100.0 * own->created_fraction)),
+              std::string::npos)
+        << warning;
+  }
+  EXPECT_EQ(warning_of(check.warnings, "c1").substr(8), warning_of(check.warnings, "c2").substr(8));
+  EXPECT_NE(warning_of(check.warnings, "c1").substr(8), warning_of(check.warnings, "c3").substr(8));
+}
+
+}  // namespace
+}  // namespace pound::verification
