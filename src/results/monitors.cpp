@@ -36,25 +36,32 @@ DriftMonitors::DriftMonitors(std::vector<Where> storeys, GroundAcceleration& gro
       at.along_acceleration[d] = acceleration_sums_.add(w.top_along[d].first);
   }
   displacements_.resize(displacement_sums_.size());
+  sum_peaks_.assign(displacement_sums_.size(), 0.0);
+  sum_times_.assign(displacement_sums_.size(), 0.0);
   accelerations_.resize(acceleration_sums_.size());
 }
 
-// The largest corner drift and the twist of a storey (3-D floors).
-void DriftMonitors::record_plan(const Where& w, const Places& at, const integrators::State& state,
-                                DriftPeak& p) const {
+// The largest corner drift and the twist of a storey (3-D floors), from its sums' peaks: as if
+// each step's corners were compared in order with the largest so far, the first corner and step
+// to reach the largest (the earliest time of the corners that reach it, then the first of them).
+void DriftMonitors::record_plan(const Where& w, const Places& at, DriftPeak& p) const {
   for (std::size_t c = 0; c < w.corners.size(); ++c) {
-    const double drift = std::abs(plus_zero(displacements_[at.corners + c]));
-    if (drift > p.peak_corner_drift) {
-      p.peak_corner_drift = drift;
+    const double peak = sum_peaks_[at.corners + c], time = sum_times_[at.corners + c];
+    if (peak > p.peak_corner_drift || (peak == p.peak_corner_drift && time < p.corner_time)) {
+      p.peak_corner_drift = peak;
       p.corner = c;
-      p.corner_time = state.time;
+      p.corner_time = time;
     }
   }
-  const double twist = std::abs(plus_zero(displacements_[at.twist]));
-  if (twist > p.peak_twist) {
-    p.peak_twist = twist;
-    p.twist_time = state.time;
-  }
+  p.peak_twist = sum_peaks_[at.twist];
+  p.twist_time = sum_times_[at.twist];
+}
+
+const std::vector<DriftPeak>& DriftMonitors::peaks() const {
+  peaks_with_plan_ = peaks_;
+  for (std::size_t k = 0; k < storeys_.size(); ++k)
+    if (!storeys_[k].corners.empty()) record_plan(storeys_[k], places_[k], peaks_with_plan_[k]);
+  return peaks_with_plan_;
 }
 
 // |a_abs| of the storey's top along the drift; a fixed top's is the ground's own.
@@ -76,6 +83,18 @@ void DriftMonitors::record(const integrators::State& state) {
   if (storeys_.empty()) return;
   displacement_sums_.evaluate(state.displacement, displacements_.data());
   acceleration_sums_.evaluate(state.acceleration, ground_.frame(state.time), accelerations_.data());
+  // Every sum's peak, without branches (a tie is no new peak; NaN none).
+  const double time = state.time;
+  const std::size_t sums = displacements_.size();
+  const double* __restrict__ values = displacements_.data();
+  double* __restrict__ peaks = sum_peaks_.data();
+  double* __restrict__ times = sum_times_.data();
+  for (std::size_t s = 0; s < sums; ++s) {
+    const double size = std::abs(plus_zero(values[s]));
+    const bool larger = size > peaks[s];
+    peaks[s] = larger ? size : peaks[s];
+    times[s] = larger ? time : times[s];
+  }
   for (std::size_t k = 0; k < storeys_.size(); ++k) {
     const Where& w = storeys_[k];
     const Places& at = places_[k];
@@ -92,7 +111,6 @@ void DriftMonitors::record(const integrators::State& state) {
       p.peak_acceleration = acceleration;
       p.acceleration_time = state.time;
     }
-    if (!w.corners.empty()) record_plan(w, at, state, p);
   }
 }
 

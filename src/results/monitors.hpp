@@ -49,7 +49,9 @@ class DriftMonitors : public Observer {
   };
   DriftMonitors(std::vector<Where> storeys, GroundAcceleration& ground);
   void record(const integrators::State& state) override;
-  const std::vector<DriftPeak>& peaks() const { return peaks_; }
+  // With each storey's largest corner drift, its corner and time, and its twist, from the peaks
+  // of the plan sums.
+  const std::vector<DriftPeak>& peaks() const;
 
  private:
   // Where a storey's sums are among the tables' values.
@@ -59,8 +61,7 @@ class DriftMonitors : public Observer {
     std::array<std::size_t, 3> along_acceleration{};
   };
   double absolute_acceleration(const Where& w, const Places& at, const integrators::State& state);
-  void record_plan(const Where& w, const Places& at, const integrators::State& state,
-                   DriftPeak& p) const;
+  void record_plan(const Where& w, const Places& at, DriftPeak& p) const;
 
   std::vector<Where> storeys_;
   GroundAcceleration& ground_;
@@ -68,6 +69,11 @@ class DriftMonitors : public Observer {
   std::vector<Places> places_;
   TermSums displacement_sums_, acceleration_sums_;
   std::vector<double> displacements_, accelerations_;  // their values at the step
+  // The largest |sum| of every displacement sum and when it first was, kept in one pass over
+  // them all (a 3-D building's four corners and twist a storey; record_plan read them one by
+  // one, a fifth of the eccentric buildings' step): each storey's plan peaks come from them.
+  std::vector<double> sum_peaks_, sum_times_;
+  mutable std::vector<DriftPeak> peaks_with_plan_;
 };
 
 struct JointPeak {

@@ -1,6 +1,7 @@
 #include "results/term_sums.hpp"
 
 #include <algorithm>
+#include <map>
 #include <stdexcept>
 
 #include "core/packets.hpp"
@@ -8,23 +9,62 @@
 namespace pound::results {
 
 std::size_t TermSums::add(std::span<const model::DofTerm> terms) {
-  if (count_ >= UINT32_MAX) throw std::length_error("more than 2^32 sums to read");
-  const auto place = static_cast<std::uint32_t>(count_++);
-  if (terms.empty()) {
-    empty_.push_back(place);
-    return place;
+  if (count_ >= UINT32_MAX - 1) throw std::length_error("more than 2^32 sums to read");
+  sums_.emplace_back(terms.begin(), terms.end());
+  arranged_ = false;
+  return count_++;
+}
+
+// Sums of two or more terms whose equations two other sums or more share go to batches of four
+// (two alone in a packet took more instructions than apart: a column's shear and moment about
+// one axis), the rest to the groups by length.
+void TermSums::arrange() const {
+  for (Group& group : groups_) group = Group{};
+  shared_ = Shared{};
+  empty_.clear();
+  std::map<std::vector<Index>, std::vector<std::uint32_t>> by_equations;
+  for (std::size_t s = 0; s < sums_.size(); ++s) {
+    if (sums_[s].size() < 2) continue;
+    std::vector<Index> equations;
+    for (const model::DofTerm& term : sums_[s]) equations.push_back(term.equation);
+    by_equations[equations].push_back(static_cast<std::uint32_t>(s));
   }
-  Group& group = groups_[std::min(terms.size(), kGrouped + 1) - 1];
-  group.places.push_back(place);
-  for (const model::DofTerm& term : terms) {
-    group.equations.push_back(term.equation);
-    group.coefficients.push_back(term.coefficient);
+  std::vector<char> batched(sums_.size(), 0);
+  for (const auto& [equations, places] : by_equations) {
+    if (places.size() < 3) continue;
+    for (std::size_t first = 0; first < places.size(); first += 4) {
+      shared_.equations.insert(shared_.equations.end(), equations.begin(), equations.end());
+      for (std::size_t k = 0; k < equations.size(); ++k)
+        for (std::size_t j = first; j < first + 4; ++j)
+          shared_.coefficients.push_back(j < places.size() ? sums_[places[j]][k].coefficient : 0.0);
+      for (std::size_t j = first; j < first + 4; ++j) {
+        shared_.places.push_back(j < places.size() ? places[j] : kUnused);
+        if (j < places.size()) batched[places[j]] = 1;
+      }
+      if (shared_.equations.size() > UINT32_MAX) throw std::length_error("more than 2^32 terms");
+      shared_.starts.push_back(static_cast<std::uint32_t>(shared_.equations.size()));
+    }
   }
-  if (terms.size() > kGrouped) {
-    if (group.equations.size() > UINT32_MAX) throw std::length_error("more than 2^32 terms");
-    group.ends.push_back(static_cast<std::uint32_t>(group.equations.size()));
+  for (std::size_t s = 0; s < sums_.size(); ++s) {
+    const auto place = static_cast<std::uint32_t>(s);
+    const std::vector<model::DofTerm>& terms = sums_[s];
+    if (terms.empty()) {
+      empty_.push_back(place);
+      continue;
+    }
+    if (batched[s]) continue;
+    Group& group = groups_[std::min(terms.size(), kGrouped + 1) - 1];
+    group.places.push_back(place);
+    for (const model::DofTerm& term : terms) {
+      group.equations.push_back(term.equation);
+      group.coefficients.push_back(term.coefficient);
+    }
+    if (terms.size() > kGrouped) {
+      if (group.equations.size() > UINT32_MAX) throw std::length_error("more than 2^32 terms");
+      group.ends.push_back(static_cast<std::uint32_t>(group.equations.size()));
+    }
   }
-  return place;
+  arranged_ = true;
 }
 
 template <std::size_t Terms, typename Value>
@@ -42,8 +82,25 @@ void TermSums::evaluate_group(const Group& group, Value value, double* out) {
 }
 
 template <typename Value>
+void TermSums::evaluate_shared(const Shared& shared, Value value, double* out) {
+  const double* coefficients = shared.coefficients.data();
+  const std::uint32_t* places = shared.places.data();
+  for (std::size_t b = 0; b + 1 < shared.starts.size(); ++b, places += 4) {
+    std::uint32_t k = shared.starts[b];
+    Packet4 sums = load_packet(coefficients + 4 * k) * broadcast(value(shared.equations[k]));
+    for (++k; k < shared.starts[b + 1]; ++k)
+      sums = multiply_add(load_packet(coefficients + 4 * k), broadcast(value(shared.equations[k])),
+                          sums);
+    for (std::size_t j = 0; j < 4; ++j)
+      if (places[j] != kUnused) out[places[j]] = sums[j];
+  }
+}
+
+template <typename Value>
 void TermSums::evaluate_with(Value value, double* out) const {
+  if (!arranged_) arrange();
   for (const std::uint32_t place : empty_) out[place] = 0.0;
+  evaluate_shared(shared_, value, out);
   evaluate_group<1>(groups_[0], value, out);
   evaluate_group<2>(groups_[1], value, out);
   evaluate_group<3>(groups_[2], value, out);

@@ -3,9 +3,12 @@
 // monitors and element recorders read hundreds of DOFs a step (a 3-D building's rigid floors
 // make most of them two or three terms); a loop per sum cost more in its set-up than in its
 // terms, so the sums are kept in groups of equal length, each group's terms in one flat table
-// read without a loop per sum. Every sum is formed as model::value_of forms it, the first term's
-// product and then multiply-adds in order (0 with no terms), so the values are the same to the
-// bit.
+// read without a loop per sum. Sums over the same equations in the same order, three or more of
+// them (a 3-D storey's four corner drifts, a beam's end shears and moments about one axis), are
+// read four at a time, one
+// packet a term, each lane its own coefficients. Every sum is formed as model::value_of forms
+// it, the first term's product and then multiply-adds in order (0 with no terms), so the values
+// are the same to the bit. The tables are arranged at the first evaluate after an add.
 #include <array>
 #include <cstdint>
 #include <span>
@@ -34,13 +37,29 @@ class TermSums {
     std::vector<double> coefficients;
     std::vector<std::uint32_t> ends;  // one past each sum's last term (the longer sums only)
   };
+  // Batches of up to four sums over the same equations: batch b's equations
+  // [starts[b], starts[b + 1]), the coefficient of its term k in lane j at 4 (starts[b] + k) + j,
+  // lane j's place at 4 b + j (kUnused past the batch's sums, whose coefficients are 0).
+  struct Shared {
+    std::vector<std::uint32_t> starts{0};
+    std::vector<Index> equations;
+    std::vector<double> coefficients;
+    std::vector<std::uint32_t> places;
+  };
+  static constexpr std::uint32_t kUnused = UINT32_MAX;
+  void arrange() const;
   template <typename Value>
   void evaluate_with(Value value, double* out) const;
   template <std::size_t Terms, typename Value>
   static void evaluate_group(const Group& group, Value value, double* out);
+  template <typename Value>
+  static void evaluate_shared(const Shared& shared, Value value, double* out);
 
-  std::array<Group, kGrouped + 1> groups_;  // [k - 1]: sums of k terms; [kGrouped]: longer
-  std::vector<std::uint32_t> empty_;        // places of the sums without terms
+  std::vector<std::vector<model::DofTerm>> sums_;  // as added, sum s at place s
+  mutable bool arranged_ = true;
+  mutable std::array<Group, kGrouped + 1> groups_;  // [k - 1]: sums of k terms; [kGrouped]: longer
+  mutable Shared shared_;
+  mutable std::vector<std::uint32_t> empty_;  // places of the sums without terms
   std::size_t count_ = 0;
 };
 

@@ -58,6 +58,39 @@ TEST(DriftMonitors, KeepTheTopsLargestAbsoluteAcceleration) {
   EXPECT_EQ(drifts.peaks()[0].acceleration_time, 0.5);
 }
 
+// A 3-D storey's corners (u -+ 2 theta) and twist: the largest corner drift, the first corner to
+// reach it and when (a later tie is no new peak; a tie within a step goes to the first corner).
+TEST(DriftMonitors, KeepTheFirstCornerToReachTheLargestDriftAndTheTwist) {
+  GroundAcceleration ground = ramp_ground();
+  const std::vector<std::vector<Term>> corners = {{{0, 1.0}, {1, -2.0}}, {{0, 1.0}, {1, 2.0}}};
+  DriftMonitors::Where turning{dof(-1), dof(0), 10};
+  turning.corners = corners;
+  turning.twist = {{1, 1.0}};
+  DriftMonitors::Where level = turning;  // equations 2 and 3: no twist, both corners alike
+  level.top = dof(2);
+  level.corners = {{{2, 1.0}, {3, -2.0}}, {{2, 1.0}, {3, 2.0}}};
+  level.twist = {{3, 1.0}};
+  DriftMonitors drifts({turning, level}, ground);
+  drifts.record(state(0.0, entries({0.0, 0.0, 0.0, 0.0})));
+  drifts.record(state(0.1, entries({0.0, 0.25, 0.25, 0.0})));   // corners -0.5, 0.5; 0.25 both
+  drifts.record(state(0.2, entries({0.5, 0.125, 0.5, 0.0})));   // 0.25, 0.75; 0.5 both
+  drifts.record(state(0.3, entries({0.75, 0.0, -0.25, 0.0})));  // 0.75, 0.75: a tie
+  const DriftPeak& turned = drifts.peaks()[0];
+  EXPECT_EQ(turned.peak_corner_drift, 0.75);
+  EXPECT_EQ(turned.corner, 1u);
+  EXPECT_EQ(turned.corner_time, 0.2);
+  EXPECT_EQ(turned.peak_twist, 0.25);
+  EXPECT_EQ(turned.twist_time, 0.1);
+  EXPECT_EQ(turned.peak_drift, 0.75);
+  EXPECT_EQ(turned.time, 0.3);
+  const DriftPeak& still = drifts.peaks()[1];
+  EXPECT_EQ(still.peak_corner_drift, 0.5);
+  EXPECT_EQ(still.corner, 0u);
+  EXPECT_EQ(still.corner_time, 0.2);
+  EXPECT_EQ(still.peak_twist, 0.0);
+  EXPECT_EQ(still.twist_time, 0.0);
+}
+
 TEST(JointMonitors, OpeningClosingAndSeatMovementFromTheLinkAndTheGirder) {
   // A joint whose link (row 1) has a 0.05 gap; the girder is equation 2, the seat fixed; a
   // second joint on row 0 with its seat on equation 0.

@@ -71,5 +71,58 @@ TEST(TermSums, EachSumIsValueOfsToTheBitWhateverItsLength) {
   EXPECT_LT(worst, 1e-15);
 }
 
+// Sums over the same equations (1 to 9 of them on each list: full batches of four and partly
+// filled ones; two or fewer are read apart), among sums of their own, read four to a packet: still
+// each one value_of's to the bit, over v and over v + w; and a sum added after an evaluate is read
+// at the next.
+TEST(TermSums, SumsOverTheSameEquationsAreValueOfsToTheBit) {
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<double> value(-1.0, 1.0);
+  const Index n = 40;
+  Vector v(n), w(n);
+  for (Index i = 0; i < n; ++i) {
+    v[i] = i % 7 == 0 ? 0.0 : 1e3 * value(rng);
+    w[i] = i % 5 == 0 ? -v[i] : value(rng);
+  }
+  std::uniform_int_distribution<Index> equation(0, n - 1);
+  std::vector<std::vector<model::DofTerm>> sums;
+  TermSums table;
+  for (int list = 0; list < 30; ++list) {
+    std::vector<Index> equations(static_cast<std::size_t>(2 + list % 5));
+    for (Index& e : equations) e = equation(rng);
+    for (int sharing = 1 + list % 9; sharing > 0; --sharing) {
+      std::vector<model::DofTerm>& sum = sums.emplace_back();
+      for (const Index e : equations) sum.push_back({e, sharing % 3 == 0 ? 0.0 : value(rng)});
+      EXPECT_EQ(table.add(sum), sums.size() - 1);
+      if (list % 4 == 0) table.add(sums.emplace_back(1, model::DofTerm{equation(rng), 2.0}));
+    }
+  }
+  std::vector<double> out;
+  int unequal = 0, written_past = 0;
+  const auto compare = [&](std::size_t count) {
+    out.assign(count + 1, 123.0);
+    table.evaluate(v, out.data());
+    for (std::size_t s = 0; s < count; ++s) {
+      const double expected = fused_value_of(sums[s], v);
+      unequal += out[s] != expected || std::signbit(out[s]) != std::signbit(expected);
+    }
+    table.evaluate(v, w, out.data());
+    for (std::size_t s = 0; s < count; ++s) {
+      const double expected = fused_value_of(sums[s], v + w);
+      unequal += out[s] != expected || std::signbit(out[s]) != std::signbit(expected);
+    }
+    written_past += out[count] != 123.0;
+  };
+  compare(sums.size());
+  sums.push_back(sums.front());  // shares the first list
+  EXPECT_EQ(table.add(sums.back()), sums.size() - 1);
+  compare(sums.size());
+  std::cout << "  " << sums.size()
+            << " sums, most over lists of equations shared by 2 to 9: " << unequal
+            << " unequal to value_of's fused form" << std::endl;
+  EXPECT_EQ(unequal, 0);
+  EXPECT_EQ(written_past, 0);  // the unused lanes are not stored
+}
+
 }  // namespace
 }  // namespace pound::results

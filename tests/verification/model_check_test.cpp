@@ -2,9 +2,8 @@
 // velocity are probed once and warned each, as a probe of their own would warn them.
 #include "verification/model_check.hpp"
 
-#include <gtest/gtest.h>
-
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include <cstdio>
 #include <string>
