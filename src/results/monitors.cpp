@@ -106,7 +106,10 @@ void DriftMonitors::record(const integrators::State& state) {
       p.peak_drift = std::abs(signed_drift);
       p.time = state.time;
     }
-    const double acceleration = absolute_acceleration(w, at, state);
+    // A free top along the drift (a storey of a plane frame or along x or y): its sum alone.
+    const double acceleration = w.top_along.empty() && !w.top.empty()
+                                    ? std::abs(accelerations_[at.top_acceleration])
+                                    : absolute_acceleration(w, at, state);
     if (acceleration > p.peak_acceleration) {
       p.peak_acceleration = acceleration;
       p.acceleration_time = state.time;

@@ -37,8 +37,10 @@ void TermSums::arrange() const {
       for (std::size_t k = 0; k < equations.size(); ++k)
         for (std::size_t j = first; j < first + 4; ++j)
           shared_.coefficients.push_back(j < places.size() ? sums_[places[j]][k].coefficient : 0.0);
+      // A lane past the list's sums writes its (unused) sum to the batch's first place, which the
+      // first lane, stored last, then writes again: no branch per lane.
       for (std::size_t j = first; j < first + 4; ++j) {
-        shared_.places.push_back(j < places.size() ? places[j] : kUnused);
+        shared_.places.push_back(places[j < places.size() ? j : first]);
         if (j < places.size()) batched[places[j]] = 1;
       }
       if (shared_.equations.size() > UINT32_MAX) throw std::length_error("more than 2^32 terms");
@@ -91,8 +93,10 @@ void TermSums::evaluate_shared(const Shared& shared, Value value, double* out) {
     for (++k; k < shared.starts[b + 1]; ++k)
       sums = multiply_add(load_packet(coefficients + 4 * k), broadcast(value(shared.equations[k])),
                           sums);
-    for (std::size_t j = 0; j < 4; ++j)
-      if (places[j] != kUnused) out[places[j]] = sums[j];
+    out[places[3]] = sums[3];
+    out[places[2]] = sums[2];
+    out[places[1]] = sums[1];
+    out[places[0]] = sums[0];
   }
 }
 

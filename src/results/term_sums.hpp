@@ -39,14 +39,13 @@ class TermSums {
   };
   // Batches of up to four sums over the same equations: batch b's equations
   // [starts[b], starts[b + 1]), the coefficient of its term k in lane j at 4 (starts[b] + k) + j,
-  // lane j's place at 4 b + j (kUnused past the batch's sums, whose coefficients are 0).
+  // lane j's place at 4 b + j (past the batch's sums, whose coefficients are 0, lane 0's).
   struct Shared {
     std::vector<std::uint32_t> starts{0};
     std::vector<Index> equations;
     std::vector<double> coefficients;
     std::vector<std::uint32_t> places;
   };
-  static constexpr std::uint32_t kUnused = UINT32_MAX;
   void arrange() const;
   template <typename Value>
   void evaluate_with(Value value, double* out) const;
