@@ -47,24 +47,42 @@ void TermSums::arrange() const {
       shared_.starts.push_back(static_cast<std::uint32_t>(shared_.equations.size()));
     }
   }
+  std::array<std::vector<std::uint32_t>, kGrouped + 1> by_length;
   for (std::size_t s = 0; s < sums_.size(); ++s) {
     const auto place = static_cast<std::uint32_t>(s);
-    const std::vector<model::DofTerm>& terms = sums_[s];
-    if (terms.empty()) {
+    if (sums_[s].empty())
       empty_.push_back(place);
-      continue;
+    else if (!batched[s])
+      by_length[std::min(sums_[s].size(), kGrouped + 1) - 1].push_back(place);
+  }
+  // The groups of 1 to 4 terms four sums at a time, term k of lane j at 4 k + j of its four,
+  // then the rest one after the other.
+  for (std::size_t t = 0; t < kGrouped; ++t) {
+    Group& group = groups_[t];
+    const std::vector<std::uint32_t>& places = by_length[t];
+    const std::size_t lanes = places.size() / 4 * 4;
+    for (std::size_t first = 0; first < lanes; first += 4)
+      for (std::size_t k = 0; k <= t; ++k)
+        for (std::size_t j = first; j < first + 4; ++j) {
+          group.equations.push_back(sums_[places[j]][k].equation);
+          group.coefficients.push_back(sums_[places[j]][k].coefficient);
+        }
+    for (std::size_t j = lanes; j < places.size(); ++j)
+      for (const model::DofTerm& term : sums_[places[j]]) {
+        group.equations.push_back(term.equation);
+        group.coefficients.push_back(term.coefficient);
+      }
+    group.places = places;
+  }
+  Group& longer = groups_[kGrouped];
+  for (const std::uint32_t place : by_length[kGrouped]) {
+    longer.places.push_back(place);
+    for (const model::DofTerm& term : sums_[place]) {
+      longer.equations.push_back(term.equation);
+      longer.coefficients.push_back(term.coefficient);
     }
-    if (batched[s]) continue;
-    Group& group = groups_[std::min(terms.size(), kGrouped + 1) - 1];
-    group.places.push_back(place);
-    for (const model::DofTerm& term : terms) {
-      group.equations.push_back(term.equation);
-      group.coefficients.push_back(term.coefficient);
-    }
-    if (terms.size() > kGrouped) {
-      if (group.equations.size() > UINT32_MAX) throw std::length_error("more than 2^32 terms");
-      group.ends.push_back(static_cast<std::uint32_t>(group.equations.size()));
-    }
+    if (longer.equations.size() > UINT32_MAX) throw std::length_error("more than 2^32 terms");
+    longer.ends.push_back(static_cast<std::uint32_t>(longer.equations.size()));
   }
   arranged_ = true;
 }
@@ -73,11 +91,24 @@ template <std::size_t Terms, typename Value>
 void TermSums::evaluate_group(const Group& group, Value value, double* out) {
   const Index* equations = group.equations.data();
   const double* coefficients = group.coefficients.data();
-  for (const std::uint32_t place : group.places) {
+  const std::uint32_t* places = group.places.data();
+  const std::size_t count = group.places.size(), lanes = count / 4 * 4;
+  const auto gather = [&](const Index* e) {
+    return Packet4{value(e[0]), value(e[1]), value(e[2]), value(e[3])};
+  };
+  for (std::size_t s = 0; s < lanes; s += 4) {
+    Packet4 sums = load_packet(coefficients) * gather(equations);
+    for (std::size_t k = 1; k < Terms; ++k)
+      sums = multiply_add(load_packet(coefficients + 4 * k), gather(equations + 4 * k), sums);
+    for (std::size_t j = 0; j < 4; ++j) out[places[s + j]] = sums[j];
+    equations += 4 * Terms;
+    coefficients += 4 * Terms;
+  }
+  for (std::size_t s = lanes; s < count; ++s) {
     double sum = coefficients[0] * value(equations[0]);
     for (std::size_t k = 1; k < Terms; ++k)
       sum = multiply_add(coefficients[k], value(equations[k]), sum);
-    out[place] = sum;
+    out[places[s]] = sum;
     equations += Terms;
     coefficients += Terms;
   }

@@ -8,7 +8,8 @@
 // read four at a time, one
 // packet a term, each lane its own coefficients. Every sum is formed as model::value_of forms
 // it, the first term's product and then multiply-adds in order (0 with no terms), so the values
-// are the same to the bit. The tables are arranged at the first evaluate after an add.
+// are the same to the bit. The other sums of 1 to 4 terms are read four to a packet too, each
+// lane from its own equations. The tables are arranged at the first evaluate after an add.
 #include <array>
 #include <cstdint>
 #include <span>
@@ -33,7 +34,9 @@ class TermSums {
   static constexpr std::size_t kGrouped = 4;  // sums of 1 to 4 terms in groups, longer ones apart
   struct Group {
     std::vector<std::uint32_t> places;  // in evaluate's output
-    std::vector<Index> equations;       // the sums' terms one after the other
+    // The sums' terms: of 1 to 4 terms, four sums at a time (term k of the j-th at 4 k + j),
+    // then the last one to three one after the other; longer sums one after the other.
+    std::vector<Index> equations;
     std::vector<double> coefficients;
     std::vector<std::uint32_t> ends;  // one past each sum's last term (the longer sums only)
   };
