@@ -3,13 +3,13 @@
 // monitors and element recorders read hundreds of DOFs a step (a 3-D building's rigid floors
 // make most of them two or three terms); a loop per sum cost more in its set-up than in its
 // terms, so the sums are kept in groups of equal length, each group's terms in one flat table
-// read without a loop per sum. Sums over the same equations in the same order, three or more of
-// them (a 3-D storey's four corner drifts, a beam's end shears and moments about one axis), are
-// read four at a time, one
-// packet a term, each lane its own coefficients. Every sum is formed as model::value_of forms
-// it, the first term's product and then multiply-adds in order (0 with no terms), so the values
-// are the same to the bit. The other sums of 1 to 4 terms are read four to a packet too, each
-// lane from its own equations. The tables are arranged at the first evaluate after an add.
+// read without a loop per sum, four sums to a packet (core/packets.hpp): sums over the same
+// equations in the same order, three or more of them (a 3-D storey's four corner drifts, a
+// beam's end shears and moments about one axis), with one value a term for all four lanes; the
+// other sums of 1 to 4 terms each lane from its own equations. Every sum is formed as
+// model::value_of forms it, the first term's product and then multiply-adds in order (0 with no
+// terms), so the values are the same to the bit. The tables are arranged at the first evaluate
+// after an add (the owners add all their sums first).
 #include <array>
 #include <cstdint>
 #include <span>
