@@ -45,6 +45,9 @@ DriftMonitors::DriftMonitors(std::vector<Where> storeys, GroundAcceleration& gro
 // each step's corners were compared in order with the largest so far, the first corner and step
 // to reach the largest (the earliest time of the corners that reach it, then the first of them).
 void DriftMonitors::record_plan(const Where& w, const Places& at, DriftPeak& p) const {
+  p.peak_corner_drift = 0.0;
+  p.corner = 0;
+  p.corner_time = 0.0;
   for (std::size_t c = 0; c < w.corners.size(); ++c) {
     const double peak = sum_peaks_[at.corners + c], time = sum_times_[at.corners + c];
     if (peak > p.peak_corner_drift || (peak == p.peak_corner_drift && time < p.corner_time)) {
@@ -58,15 +61,25 @@ void DriftMonitors::record_plan(const Where& w, const Places& at, DriftPeak& p) 
 }
 
 const std::vector<DriftPeak>& DriftMonitors::peaks() const {
-  peaks_with_plan_ = peaks_;
-  for (std::size_t k = 0; k < storeys_.size(); ++k)
-    if (!storeys_[k].corners.empty()) record_plan(storeys_[k], places_[k], peaks_with_plan_[k]);
-  return peaks_with_plan_;
+  if (!plan_current_)
+    for (std::size_t k = 0; k < storeys_.size(); ++k)
+      if (!storeys_[k].corners.empty()) record_plan(storeys_[k], places_[k], peaks_[k]);
+  plan_current_ = true;
+  return peaks_;
 }
 
-// |a_abs| of the storey's top along the drift; a fixed top's is the ground's own.
+// |a_abs| of the storey's top along the drift. A free top along the drift (every storey of a
+// plane frame, or along x or y) is its sum alone, taken here without a call;
+// fixed_or_along_axis the others.
 double DriftMonitors::absolute_acceleration(const Where& w, const Places& at,
                                             const integrators::State& state) {
+  if (w.top_along.empty() && !w.top.empty()) return std::abs(accelerations_[at.top_acceleration]);
+  return fixed_or_along_axis(w, at, state);
+}
+
+// A fixed top's is the ground's own; along an axis, the top's translations weighted.
+double DriftMonitors::fixed_or_along_axis(const Where& w, const Places& at,
+                                          const integrators::State& state) {
   const auto reading = [&](const DofReading& dof, std::size_t place, int direction) {
     return dof.empty() ? ground_.absolute(state, dof, w.top_node, direction)
                        : accelerations_[place];
@@ -81,6 +94,7 @@ double DriftMonitors::absolute_acceleration(const Where& w, const Places& at,
 
 void DriftMonitors::record(const integrators::State& state) {
   if (storeys_.empty()) return;
+  plan_current_ = false;
   displacement_sums_.evaluate(state.displacement, displacements_.data());
   acceleration_sums_.evaluate(state.acceleration, ground_.frame(state.time), accelerations_.data());
   // Every sum's peak, without branches (a tie is no new peak; NaN none).
@@ -106,10 +120,7 @@ void DriftMonitors::record(const integrators::State& state) {
       p.peak_drift = std::abs(signed_drift);
       p.time = state.time;
     }
-    // A free top along the drift (a storey of a plane frame or along x or y): its sum alone.
-    const double acceleration = w.top_along.empty() && !w.top.empty()
-                                    ? std::abs(accelerations_[at.top_acceleration])
-                                    : absolute_acceleration(w, at, state);
+    const double acceleration = absolute_acceleration(w, at, state);
     if (acceleration > p.peak_acceleration) {
       p.peak_acceleration = acceleration;
       p.acceleration_time = state.time;

@@ -61,11 +61,14 @@ class DriftMonitors : public Observer {
     std::array<std::size_t, 3> along_acceleration{};
   };
   double absolute_acceleration(const Where& w, const Places& at, const integrators::State& state);
+  double fixed_or_along_axis(const Where& w, const Places& at, const integrators::State& state);
   void record_plan(const Where& w, const Places& at, DriftPeak& p) const;
 
   std::vector<Where> storeys_;
   GroundAcceleration& ground_;
-  std::vector<DriftPeak> peaks_;
+  // The plan fields (corner, twist) are folded in from the sums' peaks when read after a record.
+  mutable std::vector<DriftPeak> peaks_;
+  mutable bool plan_current_ = true;
   std::vector<Places> places_;
   TermSums displacement_sums_, acceleration_sums_;
   std::vector<double> displacements_, accelerations_;  // their values at the step
@@ -73,7 +76,6 @@ class DriftMonitors : public Observer {
   // them all (a 3-D building's four corners and twist a storey; record_plan read them one by
   // one, a fifth of the eccentric buildings' step): each storey's plan peaks come from them.
   std::vector<double> sum_peaks_, sum_times_;
-  mutable std::vector<DriftPeak> peaks_with_plan_;
 };
 
 struct JointPeak {

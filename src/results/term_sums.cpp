@@ -9,11 +9,22 @@
 namespace pound::results {
 
 std::size_t TermSums::add(std::span<const model::DofTerm> terms) {
-  if (count_ >= UINT32_MAX - 1) throw std::length_error("more than 2^32 sums to read");
+  if (sums_.size() >= UINT32_MAX - 1) throw std::length_error("more than 2^32 sums to read");
   sums_.emplace_back(terms.begin(), terms.end());
   arranged_ = false;
-  return count_++;
+  return sums_.size() - 1;
 }
+
+namespace {
+// A sum's terms after the group's last, in order.
+template <typename Group>
+void append_terms(const std::vector<model::DofTerm>& terms, Group& group) {
+  for (const model::DofTerm& term : terms) {
+    group.equations.push_back(term.equation);
+    group.coefficients.push_back(term.coefficient);
+  }
+}
+}  // namespace
 
 // Sums of two or more terms whose equations two other sums or more share go to batches of four
 // (two alone in a packet took more instructions than apart: a column's shear and moment about
@@ -67,20 +78,13 @@ void TermSums::arrange() const {
           group.equations.push_back(sums_[places[j]][k].equation);
           group.coefficients.push_back(sums_[places[j]][k].coefficient);
         }
-    for (std::size_t j = lanes; j < places.size(); ++j)
-      for (const model::DofTerm& term : sums_[places[j]]) {
-        group.equations.push_back(term.equation);
-        group.coefficients.push_back(term.coefficient);
-      }
+    for (std::size_t j = lanes; j < places.size(); ++j) append_terms(sums_[places[j]], group);
     group.places = places;
   }
   Group& longer = groups_[kGrouped];
   for (const std::uint32_t place : by_length[kGrouped]) {
     longer.places.push_back(place);
-    for (const model::DofTerm& term : sums_[place]) {
-      longer.equations.push_back(term.equation);
-      longer.coefficients.push_back(term.coefficient);
-    }
+    append_terms(sums_[place], longer);
     if (longer.equations.size() > UINT32_MAX) throw std::length_error("more than 2^32 terms");
     longer.ends.push_back(static_cast<std::uint32_t>(longer.equations.size()));
   }

@@ -24,7 +24,7 @@ class TermSums {
  public:
   // The place of the sum of `terms` in evaluate's output.
   std::size_t add(std::span<const model::DofTerm> terms);
-  std::size_t size() const { return count_; }
+  std::size_t size() const { return sums_.size(); }
   // out[s] = sum s of the terms over v, for each of the size() sums.
   void evaluate(const Vector& v, double* out) const;
   // The same over v + w, each term's c (v_e + w_e) (absolute accelerations: a + the frame's).
@@ -62,7 +62,6 @@ class TermSums {
   mutable std::array<Group, kGrouped + 1> groups_;  // [k - 1]: sums of k terms; [kGrouped]: longer
   mutable Shared shared_;
   mutable std::vector<std::uint32_t> empty_;  // places of the sums without terms
-  std::size_t count_ = 0;
 };
 
 }  // namespace pound::results

@@ -58,6 +58,16 @@ TEST(DriftMonitors, KeepTheTopsLargestAbsoluteAcceleration) {
   EXPECT_EQ(drifts.peaks()[0].acceleration_time, 0.5);
 }
 
+// A storey's plan peaks: largest corner drift, its corner and time, twist and its time.
+void expect_plan(const DriftPeak& p, double corner_drift, std::size_t corner, double corner_time,
+                 double twist, double twist_time) {
+  EXPECT_EQ(p.peak_corner_drift, corner_drift);
+  EXPECT_EQ(p.corner, corner);
+  EXPECT_EQ(p.corner_time, corner_time);
+  EXPECT_EQ(p.peak_twist, twist);
+  EXPECT_EQ(p.twist_time, twist_time);
+}
+
 // A 3-D storey's corners (u -+ 2 theta) and twist: the largest corner drift, the first corner to
 // reach it and when (a later tie is no new peak; a tie within a step goes to the first corner).
 TEST(DriftMonitors, KeepTheFirstCornerToReachTheLargestDriftAndTheTwist) {
@@ -76,19 +86,14 @@ TEST(DriftMonitors, KeepTheFirstCornerToReachTheLargestDriftAndTheTwist) {
   drifts.record(state(0.2, entries({0.5, 0.125, 0.5, 0.0})));   // 0.25, 0.75; 0.5 both
   drifts.record(state(0.3, entries({0.75, 0.0, -0.25, 0.0})));  // 0.75, 0.75: a tie
   const DriftPeak& turned = drifts.peaks()[0];
-  EXPECT_EQ(turned.peak_corner_drift, 0.75);
-  EXPECT_EQ(turned.corner, 1u);
-  EXPECT_EQ(turned.corner_time, 0.2);
-  EXPECT_EQ(turned.peak_twist, 0.25);
-  EXPECT_EQ(turned.twist_time, 0.1);
+  expect_plan(turned, 0.75, 1, 0.2, 0.25, 0.1);
   EXPECT_EQ(turned.peak_drift, 0.75);
   EXPECT_EQ(turned.time, 0.3);
-  const DriftPeak& still = drifts.peaks()[1];
-  EXPECT_EQ(still.peak_corner_drift, 0.5);
-  EXPECT_EQ(still.corner, 0u);
-  EXPECT_EQ(still.corner_time, 0.2);
-  EXPECT_EQ(still.peak_twist, 0.0);
-  EXPECT_EQ(still.twist_time, 0.0);
+  expect_plan(drifts.peaks()[1], 0.5, 0, 0.2, 0.0, 0.0);
+  // Read again after another step: folded anew from the sums' peaks, not onto the last fold.
+  drifts.record(state(0.4, entries({0.0, -0.5, 0.0, 0.0})));  // corners 1, 1: a new peak at 0.4
+  expect_plan(drifts.peaks()[0], 1.0, 0, 0.4, 0.5, 0.4);
+  expect_plan(drifts.peaks()[1], 0.5, 0, 0.2, 0.0, 0.0);
 }
 
 TEST(JointMonitors, OpeningClosingAndSeatMovementFromTheLinkAndTheGirder) {
