@@ -13,7 +13,9 @@
 // their run; the same unblocked loops factor them here (equal to Eigen's only within rounding:
 // its blocks sum the panel products in another order) and the solves are plain column sweeps.
 // Larger matrices take Eigen's own code. No 1-norm is kept (PartialPivLU's, for rcond(), is
-// unused here).
+// unused here). The loops keep each entry's chain of operations but not Eigen's loop order: the
+// factorisation takes two pivots per pass over the columns right of them, and a panel's sums are
+// taken four rows to a packet, each lane its own row's chain (docs/performance.md).
 #include <Eigen/Core>
 
 #include "core/types.hpp"
@@ -34,10 +36,15 @@ class PivotedLu {
 
  private:
   void factor_unblocked();
+  void take_pivot(Index k);
+  void subtract_pivot_row(Index k, Index j);
+  void subtract_pivot_rows(Index k);
   void solve_unit_lower(double* x) const;
   void solve_upper(double* x) const;
   void solve_by_columns(double* x) const;  // both sweeps, past kUnblockedRows
   double panel_sum(Index t, Index start, Index end, const double* x, bool scalar_row) const;
+  void subtract_panel_sums(Index first, Index last, Index start, Index end, double* x,
+                           Index scalar_row) const;
 
   Matrix lu_;
   Eigen::Transpositions<Eigen::Dynamic, Eigen::Dynamic, int> transpositions_;
