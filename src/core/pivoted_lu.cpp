@@ -22,6 +22,17 @@ void PivotedLu::compute(const Matrix& a, Path path) {
   permutation_ = transpositions_;
 }
 
+namespace {
+// x[start, end) -= known * column[start, end), four rows at a time, each rounded once.
+void subtract_multiple(double known, const double* column, double* x, Index start, Index end) {
+  const Packet4 factor = broadcast(-known);
+  Index i = start;
+  for (; i + 4 <= end; i += 4)
+    store_packet(multiply_add(factor, load_packet(column + i), load_packet(x + i)), x + i);
+  for (; i < end; ++i) x[i] = multiply_add(-known, column[i], x[i]);
+}
+}  // namespace
+
 // Eigen's partial_lu_impl::unblocked_lu, every entry's updates the same in the same order, two
 // pivots at a time: the columns right of a pair take both of its updates in one pass (one load
 // and one store of each entry for two multiply-adds). Taking pivot k + 1's row swap before pivot
@@ -32,7 +43,9 @@ void PivotedLu::factor_unblocked() {
   Index k = 0;
   for (; k + 2 <= n; k += 2) {
     take_pivot(k);
-    subtract_pivot_row(k, k + 1);
+    double* const column = lu_.data() + k * n;
+    double* const next = column + n;  // column k + 1 takes pivot k's update before its pivot
+    subtract_multiple(next[k], column, next, k + 1, n);
     take_pivot(k + 1);
     subtract_pivot_rows(k);
   }
@@ -60,20 +73,6 @@ void PivotedLu::take_pivot(Index k) {
     for (Index j = 0; j < n; ++j) std::swap(data[j * n + k], data[j * n + pivot_row]);
   const double pivot = column[k];
   for (Index i = k + 1; i < n; ++i) column[i] /= pivot;
-}
-
-// Column j's rows below k less column k's multipliers times its row-k entry.
-void PivotedLu::subtract_pivot_row(Index k, Index j) {
-  const Index n = lu_.rows();
-  const double* const column = lu_.data() + k * n;
-  double* const target = lu_.data() + j * n;
-  const double upper = target[k];
-  const Packet4 upper_packet = broadcast(upper);
-  Index i = k + 1;
-  for (; i + 4 <= n; i += 4)
-    store_packet(multiply_add(-load_packet(column + i), upper_packet, load_packet(target + i)),
-                 target + i);
-  for (; i < n; ++i) target[i] = multiply_add(-column[i], upper, target[i]);
 }
 
 // The columns right of the pair k, k + 1 less both pivots' updates: in each, row k + 1 first,
@@ -118,15 +117,6 @@ double multiply_then_add(double a, double b, double c) {
 #endif
   return c + product;
 }
-
-// x[start, end) -= known * column[start, end), four rows at a time, each rounded once.
-void subtract_multiple(double known, const double* column, double* x, Index start, Index end) {
-  const Packet4 factor = broadcast(-known);
-  Index i = start;
-  for (; i + 4 <= end; i += 4)
-    store_packet(multiply_add(factor, load_packet(column + i), load_packet(x + i)), x + i);
-  for (; i < end; ++i) x[i] = multiply_add(-known, column[i], x[i]);
-}
 }  // namespace
 
 // Row t of the panel's columns [start, end) times x, summed from 0 in column order as Eigen's
@@ -144,12 +134,13 @@ double PivotedLu::panel_sum(Index t, Index start, Index end, const double* x,
 }
 
 // Rows [first, last) less their panel sums, four rows to a packet (each lane the same chain of
-// multiply-adds from 0 as panel_sum's), then the rest one by one. The rows are even in number
-// where none is `scalar_row` (Eigen's odd last row), which is last: no packet reaches it.
-void PivotedLu::subtract_panel_sums(Index first, Index last, Index start, Index end, double* x,
-                                    Index scalar_row) const {
+// multiply-adds from 0 as panel_sum's), then the rest one by one. Of an odd number of rows Eigen
+// takes the last in its scalar loop; the packets, four rows each from the first, never reach it.
+void PivotedLu::subtract_panel_sums(Index first, Index last, Index start, Index end,
+                                    double* x) const {
   const Index n = lu_.rows();
   const double* const a = lu_.data();
+  const bool odd = (last - first) % 2 == 1;
   Index t = first;
   for (; t + 4 <= last; t += 4) {
     Packet4 sums{};
@@ -157,7 +148,7 @@ void PivotedLu::subtract_panel_sums(Index first, Index last, Index start, Index 
       sums = multiply_add(load_packet(a + j * n + t), broadcast(x[j]), sums);
     store_packet(load_packet(x + t) - sums, x + t);
   }
-  for (; t < last; ++t) x[t] -= panel_sum(t, start, end, x, t == scalar_row);
+  for (; t < last; ++t) x[t] -= panel_sum(t, start, end, x, odd && t == last - 1);
 }
 
 void PivotedLu::solve_unit_lower(double* x) const {
@@ -170,7 +161,7 @@ void PivotedLu::solve_unit_lower(double* x) const {
       if (known == 0.0) continue;  // Eigen skips a zero (not a NaN)
       subtract_multiple(known, a + i * n, x, i + 1, end);
     }
-    if (end < n) subtract_panel_sums(end, n, start, end, x, (n - end) % 2 == 1 ? n - 1 : n);
+    if (end < n) subtract_panel_sums(end, n, start, end, x);
   }
 }
 
@@ -184,7 +175,7 @@ void PivotedLu::solve_upper(double* x) const {
       x[i] /= a[i * n + i];
       subtract_multiple(x[i], a + i * n, x, start, i);
     }
-    if (start > 0) subtract_panel_sums(0, start, start, end, x, start % 2 == 1 ? start - 1 : start);
+    if (start > 0) subtract_panel_sums(0, start, start, end, x);
   }
 }
 

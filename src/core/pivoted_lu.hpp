@@ -37,14 +37,12 @@ class PivotedLu {
  private:
   void factor_unblocked();
   void take_pivot(Index k);
-  void subtract_pivot_row(Index k, Index j);
   void subtract_pivot_rows(Index k);
   void solve_unit_lower(double* x) const;
   void solve_upper(double* x) const;
   void solve_by_columns(double* x) const;  // both sweeps, past kUnblockedRows
   double panel_sum(Index t, Index start, Index end, const double* x, bool scalar_row) const;
-  void subtract_panel_sums(Index first, Index last, Index start, Index end, double* x,
-                           Index scalar_row) const;
+  void subtract_panel_sums(Index first, Index last, Index start, Index end, double* x) const;
 
   Matrix lu_;
   Eigen::Transpositions<Eigen::Dynamic, Eigen::Dynamic, int> transpositions_;
