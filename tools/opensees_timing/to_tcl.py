@@ -7,7 +7,8 @@
 The script builds the same structure (nodes, lumped masses, fixities, elastic beams or springs,
 one zeroLength element per link with the matching OpenSees material, Rayleigh damping of the
 linear elements at the model's two modes, the record as a UniformExcitation), runs Newmark's
-average acceleration with Newton iterations over the model's steps, and prints
+average acceleration over the model's steps (--algorithm, --system and --test choose OpenSees'
+iteration; the defaults are the fastest found that converge to the same answers), and prints
 `steps N ok 0 solve_ms T`: the time of `analyze` alone, as pound_bench times the solve alone.
 With --record-nodes it also writes those nodes' x displacements every step (OUT.tcl's name with
 .disp.out), to check the two programs agree until the first impact (compare.py).
@@ -21,7 +22,8 @@ bilinear_spring (Steel01), elastic_spring (Elastic), hertz_damp (Hertzdamp), res
 Anything else stops with a message naming it. Known differences, which move results only after
 the first impact: OpenSees' Hertzdamp takes the impact velocity from the strain rate at the end
 of the first step in contact (pound interpolates the instant of first contact), its tangent has
-no damping term, and ViscoelasticGap does not clip tension.
+no damping term, and ViscoelasticGap does not clip tension (pound's kelvin_voigt does, by
+default) and has no damping term in its tangent either.
 """
 import argparse
 import json
