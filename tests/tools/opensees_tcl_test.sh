@@ -4,17 +4,9 @@
 # material), and a model it does not cover, or a file it cannot read, exits 2 naming the file.
 # usage: opensees_tcl_test.sh POUND_BINARY REPO_ROOT
 set -euo pipefail
-if [ $# -ne 2 ]; then
-  echo "usage: $0 POUND_BINARY REPO_ROOT" >&2
-  exit 1
-fi
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
+# shellcheck source-path=SCRIPTDIR source=tool_test_common.sh
+source "$(dirname "${BASH_SOURCE[0]}")/tool_test_common.sh"  # the arguments, fail, $tmp
 python=python3
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
 pound=$1
 root=$2
 script="$root/tools/opensees_timing/to_tcl.py"
@@ -43,7 +35,8 @@ for line in open(sys.argv[1]):
         materials[words[1]] += 1
     elif words[0] == "element" and words[1] == "zeroLength" and int(words[2]) > 10000:
         links += 1
-print(dofs - fixed, round(mass, 6), links, " ".join(f"{k}:{v}" for k, v in sorted(materials.items())))
+kinds = " ".join(f"{k}:{v}" for k, v in sorted(materials.items()))
+print(dofs - fixed, round(mass, 6), links, kinds)
 EOF
 
 convert() {  # model name, expected counts line
@@ -76,10 +69,19 @@ expect_refused() {  # model file, words of the message
   grep -q "$2" "$tmp/stderr" || fail "the message does not say '$2': $(cat "$tmp/stderr")"
   ! grep -q Traceback "$tmp/stderr" || fail "a traceback on $1"
   [ ! -e "$tmp/refused.tcl" ] || fail "a script was written for $1"
+  [ ! -e "$tmp/refused.acc" ] || fail "a record file was written for $1"
 }
 "$pound" expand "$root/models/adjacent_buildings_yielding.json" --out "$tmp/takeda.json" >/dev/null
 expect_refused "$tmp/takeda.json" "not covered"
 echo '{"nodes": [' >"$tmp/broken.json"
 expect_refused "$tmp/broken.json" "cannot be read as JSON"
 expect_refused "$tmp/missing.json" "cannot be read"
+# refused after the record is read (the integrator is checked last): still nothing written
+"$python" - "$tmp/two_sdof_girders.json" "$tmp/refused.json" <<'EOF'
+import json, sys
+model = json.load(open(sys.argv[1]))
+model["analysis"]["integrator"] = {"type": "newmark", "beta": 0.3025, "gamma": 0.6}
+json.dump(model, open(sys.argv[2], "w"))
+EOF
+expect_refused "$tmp/refused.json" "average acceleration"
 echo "opensees_tcl: ok"

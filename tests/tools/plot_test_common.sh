@@ -4,15 +4,8 @@
 # Checks the arguments and defines: fail, $python (a python3 that imports matplotlib), $tmp (a
 # scratch folder removed on exit, also holding MPLCONFIGDIR), is_png, and for a test that sets
 # $script (the plotting script) check_folder and expect_input_error.
-if [ $# -ne 2 ]; then
-  echo "usage: $0 POUND_BINARY REPO_ROOT" >&2
-  exit 1
-fi
-
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
+# shellcheck source-path=SCRIPTDIR source=tool_test_common.sh
+source "$(dirname "${BASH_SOURCE[0]}")/tool_test_common.sh"  # the arguments, fail, $tmp
 
 # Debian's python3-matplotlib is seen by /usr/bin/python3, not necessarily by the python3 on PATH
 # (pyenv, a venv): take the first of the two that can import it.
@@ -26,9 +19,6 @@ done
 [ -n "$python" ] || fail "matplotlib is not importable by /usr/bin/python3 nor by python3 on PATH; \
 install it with tools/install_dependencies.sh (Debian package python3-matplotlib)"
 echo "using $python"
-
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
 export MPLCONFIGDIR="$tmp/matplotlib"
 
 is_png() {  # a PNG signature and more than a blank canvas

@@ -6,8 +6,8 @@
 POUND_NODES.csv: a pound node history of the nodes to_tcl.py --record-nodes named, in that order;
 POUND_LINKS.csv: a pound link history of the contacts (the first nonzero force is the first
 impact); OPENSEES_DISP.out: what the script's recorder wrote (time, then x of each node).
-Prints the largest difference before the first impact's step, to 4 s, 8 s and the end, and each node's
-peak |u_x| in both over the same windows.
+Prints the largest difference before the first impact's step, to 4 s, 8 s and the end, and each
+node's peak |u_x| in both over the same windows.
 """
 import csv
 import sys

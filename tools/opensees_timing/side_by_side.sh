@@ -8,9 +8,10 @@
 # OPENSEES: the Tcl interpreter built from OpenSees' source (docs/performance.md says how; nothing
 # of OpenSees is in this repository). BUILD_DIR: pound's Release build (its src/pound and
 # bench/pound_bench). ROUNDS (default 5): each round runs OpenSees on each script three times (the
-# best of the three; OpenSees writes what a script puts to stderr) and pound_bench once (the best of its 7 solves). Prints each round's times and
-# ratios, then the medians. Both time the solve alone: OpenSees its `analyze`, pound its run
-# without histories (the model read and built, restitution calibrated, before the clock starts).
+# best of the three; OpenSees writes what a script puts to stderr) and pound_bench once (the best
+# of its 7 solves). Prints each round's times and ratios, then the medians. Both time the solve
+# alone: OpenSees its `analyze`, pound its run without histories (the model read and built,
+# restitution calibrated, before the clock starts).
 #
 # Two settings of OpenSees: `plain`, its textbook recipe (Newton with a new tangent every
 # iteration, BandGeneral, NormDispIncr 1e-12), and `fast`, to_tcl.py's defaults, the fastest
@@ -39,15 +40,15 @@ for model in three_span_bridge:bridge two_sdof_girders:girders; do
 done
 
 echo "== the same bridge: x displacements of both abutment girder ends and a pier top"
-python3 "$here/to_tcl.py" "$work/bridge.json" "$work/bridge_check.tcl" \
-  --record-nodes bridge.g0.n0,bridge.p1.top,bridge.g2.n4
-python3 - "$work/bridge.json" "$work/bridge_check.json" <<'PY'
+nodes=bridge.g0.n0,bridge.p1.top,bridge.g2.n4
+python3 "$here/to_tcl.py" "$work/bridge.json" "$work/bridge_check.tcl" --record-nodes "$nodes"
+python3 - "$work/bridge.json" "$work/bridge_check.json" "$nodes" <<'PY'
 import json, sys
 model = json.load(open(sys.argv[1]))
 model["recorders"] = [
-    {"type": "node", "nodes": ["bridge.g0.n0", "bridge.p1.top", "bridge.g2.n4"], "file": "nodes.csv"},
-    {"type": "link", "links": ["bridge.a0.joint", "bridge.joint1", "bridge.joint2", "bridge.a1.joint"],
-     "file": "contacts.csv"}]
+    {"type": "node", "nodes": sys.argv[3].split(","), "file": "nodes.csv"},
+    {"type": "link", "file": "contacts.csv",
+     "links": ["bridge.a0.joint", "bridge.joint1", "bridge.joint2", "bridge.a1.joint"]}]
 json.dump(model, open(sys.argv[2], "w"))
 PY
 "$build/src/pound" run "$work/bridge_check.json" --out "$work/pound_check" >/dev/null
@@ -66,9 +67,14 @@ opensees_ms() {  # script: the best solve_ms of three processes
   echo "$best"
 }
 
+show_row() {  # label, the ten numbers of a row of $work/ratios after its round
+  # shellcheck disable=SC2086  # the numbers are the format's arguments, split on purpose
+  printf "%6s  %8.1f / %6.1f  %6.2f  %4.1fx %4.1fx | %8.2f / %5.2f  %5.3f  %4.1fx %4.1fx\n" "$1" $2
+}
+
 echo "== solve times, ms (OpenSees best of 3 processes, pound best of 7 solves)"
-echo "         bridge, 16,667 steps                   | two SDOF girders, per 4,000 steps"
-echo "round  OpenSees plain / fast   pound  ratios     | OpenSees plain / fast  pound  ratios"
+echo "          bridge, 16,667 steps                   | two SDOF girders, per 4,000 steps"
+echo " round  OpenSees plain / fast   pound  ratios     | OpenSees plain / fast  pound  ratios"
 : >"$work/ratios"
 for round in $(seq "$rounds"); do
   times=()
@@ -90,11 +96,11 @@ print(sys.argv[3], bridge_plain, bridge_fast, pound_bridge, bridge_plain / pound
       bridge_fast / pound_bridge, girders_plain, girders_fast, pound_girders,
       girders_plain / pound_girders, girders_fast / pound_girders)
 PY
-  tail -1 "$work/ratios" | awk '{printf "%5d  %8.1f / %6.1f  %6.2f  %4.1fx %4.1fx | %8.2f / %5.2f  %5.3f  %4.1fx %4.1fx\n", $1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11}'
+  show_row "$round" "$(tail -1 "$work/ratios" | cut -d' ' -f2-)"
 done
-python3 - "$work/ratios" <<'PY'
+show_row median "$(python3 - "$work/ratios" <<'PY'
 import statistics, sys
 rows = [list(map(float, line.split())) for line in open(sys.argv[1])]
-median = tuple(statistics.median(r[k] for r in rows) for k in range(1, 11))
-print("median %8.1f / %6.1f  %6.2f  %4.1fx %4.1fx | %8.2f / %5.2f  %5.3f  %4.1fx %4.1fx" % median)
+print(*(statistics.median(r[k] for r in rows) for k in range(1, 11)))
 PY
+)"

@@ -102,6 +102,7 @@ class Script:
         self.tag_of = {node["id"]: k + 1 for k, node in enumerate(model["nodes"])}
         self.coordinates = {n["id"]: (n["x"], n.get("y", 0.0)) for n in model["nodes"]}
         self.lines = []
+        self.record_values = []
         self.mass = {node: 0.0 for node in self.tag_of}
         self.beam_nodes = set()
         self.linear_elements = []
@@ -202,18 +203,21 @@ class Script:
                     f"{failure_ratio!r} {-ultimate!r} {-gap!r}")
         if kind == "kelvin_voigt" and "restitution" in law:
             first, second = link["nodes"]
-            effective = self.mass[first] * self.mass[second] / (self.mass[first] + self.mass[second])
+            m1, m2 = self.mass[first], self.mass[second]
+            effective = m1 * m2 / (m1 + m2)
             log_e = math.log(law["restitution"])
             ratio = -log_e / math.sqrt(math.pi ** 2 + log_e ** 2)
             damping = 2 * ratio * math.sqrt(law["stiffness"] * effective)
-            return f"uniaxialMaterial ViscoelasticGap {tag} {law['stiffness']!r} {damping!r} {-gap!r}"
+            return (f"uniaxialMaterial ViscoelasticGap {tag} {law['stiffness']!r} {damping!r} "
+                    f"{-gap!r}")
         fail(f"link {link['id']}: law {kind} is not covered")
 
     def damping(self):
         for mass in self.model.get("masses", []):
             if "mass_damping" in mass:
                 tag = self.tag_of[mass["node"]]
-                self.put(f"region {100 + tag} -nodeOnly {tag} -rayleigh {mass['mass_damping']!r} 0 0 0")
+                self.put(f"region {100 + tag} -nodeOnly {tag} "
+                         f"-rayleigh {mass['mass_damping']!r} 0 0 0")
         damping = self.model.get("damping")
         if not damping:
             return
@@ -253,8 +257,7 @@ class Script:
             fail("excitation scale: only a factor or a PGA is covered")
         if excitation.get("direction", [1.0])[0] != 1.0:
             fail("only an excitation along x is covered")
-        with open(out_prefix + ".acc", "w") as out:
-            out.write("\n".join(repr(v) for v in values) + "\n")
+        self.record_values = values  # written beside the script once all of it is made
         self.put(f"timeSeries Path 1 -dt {dt!r} -filePath {out_prefix}.acc -factor {G * factor!r}")
         self.put("pattern UniformExcitation 1 1 -accel 1")
         return (len(values) - 1) * dt
@@ -315,6 +318,8 @@ def main():
         script.analysis(duration, args.steps, record_nodes, args, prefix)
     except (KeyError, TypeError, ValueError) as error:
         fail(f"not a model as `pound expand` writes it ({type(error).__name__}: {error})")
+    with open(prefix + ".acc", "w") as out:
+        out.write("\n".join(repr(v) for v in script.record_values) + "\n")
     with open(args.tcl, "w") as out:
         out.write("\n".join(script.lines) + "\n")
 
