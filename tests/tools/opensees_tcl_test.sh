@@ -84,4 +84,13 @@ model["analysis"]["integrator"] = {"type": "newmark", "beta": 0.3025, "gamma": 0
 json.dump(model, open(sys.argv[2], "w"))
 EOF
 expect_refused "$tmp/refused.json" "average acceleration"
+# a wrong type, and no mass at a Kelvin-Voigt link's ends (its damping would divide by zero)
+"$python" - "$tmp/two_sdof_girders.json" "$tmp/wrong_type.json" "$tmp/no_mass.json" <<'EOF'
+import json, sys
+model = json.load(open(sys.argv[1]))
+json.dump(dict(model, nodes=5), open(sys.argv[2], "w"))
+json.dump(dict(model, masses=[]), open(sys.argv[3], "w"))
+EOF
+expect_refused "$tmp/wrong_type.json" "TypeError"
+expect_refused "$tmp/no_mass.json" "ZeroDivisionError"
 echo "opensees_tcl: ok"

@@ -304,19 +304,20 @@ def main():
         fail(f"cannot be read as JSON ({error})")
     if not isinstance(model, dict) or "nodes" not in model or "analysis" not in model:
         fail("expected a model as `pound expand` writes it (nodes, analysis)")
-    script = Script(model, os.path.dirname(os.path.abspath(args.expanded)))
     record_nodes = [n for n in args.record_nodes.split(",") if n]
-    for node in record_nodes:
-        if node not in script.tag_of:
-            fail(f"--record-nodes: no node {node} in {args.expanded}")
     prefix = os.path.splitext(os.path.abspath(args.tcl))[0]
     try:
+        script = Script(model, os.path.dirname(os.path.abspath(args.expanded)))
+        for node in record_nodes:
+            if node not in script.tag_of:
+                fail(f"--record-nodes: no node {node}")
         script.structure()
         script.links()
         script.damping()
         duration = script.excitation(prefix)
         script.analysis(duration, args.steps, record_nodes, args, prefix)
-    except (KeyError, TypeError, ValueError) as error:
+    except (KeyError, TypeError, ValueError, ArithmeticError) as error:
+        # wrong types, a missing field, zero masses at a Kelvin-Voigt link, ...
         fail(f"not a model as `pound expand` writes it ({type(error).__name__}: {error})")
     with open(prefix + ".acc", "w") as out:
         out.write("\n".join(repr(v) for v in script.record_values) + "\n")
