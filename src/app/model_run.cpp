@@ -119,6 +119,15 @@ Solved solve(PreparedRun& run) {
   } catch (const SolveError& error) {
     solved.status = {error.reason(), error.time()};
     solved.statistics = analysis.statistics();  // up to the failure
+  } catch (const assembly::NotPositiveDefinite& failure) {
+    // The first step's matrix held (builder::check_first_step), a later step size's does not:
+    // a cut step's, or the last, shorter one's. The time is the start of the step that failed.
+    solved.status = {
+        builder::not_held_error(built, run.system->dofs(), failure, "the matrix of a new step size",
+                                run.loaded.spec.source)
+            .reason(),
+        solved.state.time};
+    solved.statistics = analysis.statistics();
   }
   solved.run_time = stopwatch.seconds();
   return solved;

@@ -70,7 +70,7 @@ BandedLdlt::BandedLdlt(const Eigen::SparseMatrix<double>& matrix)
     double diagonal = band(0, i);
     for (Index k = first; k < i; ++k)
       diagonal -= lower_(i - k - 1, i) * lower_(i - k - 1, i) * pivot[k];
-    if (!(diagonal > 0.0)) throw NotPositiveDefinite(i, diagonal);
+    if (!pivot_holds(diagonal, band(0, i))) throw NotPositiveDefinite(i, diagonal, band(0, i));
     pivot[i] = diagonal;
   }
   inverse_pivot_ = pivot.cwiseInverse();

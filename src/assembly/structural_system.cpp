@@ -111,7 +111,8 @@ BandedLdlt factor_in_order(const Eigen::SparseMatrix<double>& renumbered,
   try {
     return BandedLdlt(renumbered);
   } catch (const NotPositiveDefinite& failure) {
-    throw NotPositiveDefinite(order[static_cast<std::size_t>(failure.equation())], failure.pivot());
+    throw NotPositiveDefinite(order[static_cast<std::size_t>(failure.equation())], failure.pivot(),
+                              failure.diagonal());
   }
 }
 
@@ -213,13 +214,19 @@ std::unique_ptr<integrators::LinearSolver> paired_band_solver(
 class SparseSolver final : public integrators::LinearSolver {
  public:
   explicit SparseSolver(const Eigen::SparseMatrix<double>& matrix) : factor_(matrix) {
-    // LDL^T of P A P^T: a pivot d_k that is not positive belongs to equation P^-1 k.
+    // LDL^T of P A P^T: pivot d_k belongs to equation P^-1 k, whose diagonal is A's there.
     const Vector& pivots = factor_.vectorD();
-    if (factor_.info() == Eigen::Success && (pivots.array() > 0.0).all()) return;
+    if (pivots.size() == 0) throw NotPositiveDefinite(0, 0.0);
+    const auto equation = [&](Index k) { return factor_.permutationPinv().indices()[k]; };
+    const auto holds = [&](Index k) {
+      return pivot_holds(pivots[k], matrix.coeff(equation(k), equation(k)));
+    };
     Index k = 0;
-    while (k + 1 < pivots.size() && pivots[k] > 0.0) ++k;
+    while (k < pivots.size() && holds(k)) ++k;
+    if (factor_.info() == Eigen::Success && k == pivots.size()) return;
+    if (k == pivots.size()) k = 0;  // the factorisation failed before any pivot
     const double pivot = k < pivots.size() ? pivots[k] : 0.0;
-    throw NotPositiveDefinite(factor_.permutationPinv().indices()[k], pivot);
+    throw NotPositiveDefinite(equation(k), pivot, matrix.coeff(equation(k), equation(k)));
   }
   void solve(const Vector& rhs, Vector& solution) const override { solution = factor_.solve(rhs); }
 

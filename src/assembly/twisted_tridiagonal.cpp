@@ -32,8 +32,10 @@ Tridiagonal tridiagonal_parts(const Eigen::SparseMatrix<double>& matrix) {
   return parts;
 }
 
-double inverse(double pivot, Index row) {
-  if (!(pivot > 0.0)) throw NotPositiveDefinite(row, pivot);
+// 1 / p_i of row i, whose diagonal is d_i (refused as assembly::pivot_holds says).
+double inverse(double pivot, const std::vector<double>& diagonal, Index row) {
+  const double own = diagonal[static_cast<std::size_t>(row)];
+  if (!pivot_holds(pivot, own)) throw NotPositiveDefinite(row, pivot, own);
   return 1.0 / pivot;
 }
 
@@ -70,7 +72,7 @@ void TwistedTridiagonal::factor_block(Index a, Index b, const std::vector<double
   }
   const double twist =
       diagonal[k] - block.from_above * off[k] - (k + 1 < b ? block.from_below * off[k + 1] : 0.0);
-  inverse_pivot_[k] = inverse(twist, k);
+  inverse_pivot_[k] = inverse(twist, diagonal, k);
   blocks_.push_back(block);
 }
 
@@ -79,11 +81,11 @@ double TwistedTridiagonal::factor_top(Index a, Index k, const std::vector<double
                                       const std::vector<double>& off) {
   double pivot = diagonal[a];
   for (Index i = a + 1; i < k; ++i) {
-    inverse_pivot_[i - 1] = inverse(pivot, i - 1);
+    inverse_pivot_[i - 1] = inverse(pivot, diagonal, i - 1);
     multiplier_[i] = off[i] / pivot;
     pivot = diagonal[i] - multiplier_[i] * off[i];
   }
-  inverse_pivot_[k - 1] = inverse(pivot, k - 1);
+  inverse_pivot_[k - 1] = inverse(pivot, diagonal, k - 1);
   return off[k] / pivot;
 }
 
@@ -92,11 +94,11 @@ double TwistedTridiagonal::factor_bottom(Index k, Index b, const std::vector<dou
                                          const std::vector<double>& off) {
   double pivot = diagonal[b - 1];
   for (Index i = b - 2; i > k; --i) {
-    inverse_pivot_[i + 1] = inverse(pivot, i + 1);
+    inverse_pivot_[i + 1] = inverse(pivot, diagonal, i + 1);
     multiplier_[i] = off[i + 1] / pivot;
     pivot = diagonal[i] - multiplier_[i] * off[i + 1];
   }
-  inverse_pivot_[k + 1] = inverse(pivot, k + 1);
+  inverse_pivot_[k + 1] = inverse(pivot, diagonal, k + 1);
   return off[k + 1] / pivot;
 }
 

@@ -40,15 +40,23 @@ InputError not_held_error(const BuiltModel& built, const model::DofMap& dofs,
                           const std::string& source) {
   const NodeDirection place = node_of(built.model, dofs, failure.equation());
   if (place.node < 0) return InputError(source, "", fmt::format("{}: {}", during, failure.what()));
+  const std::string mechanism =
+      "it belongs to a part that can move with neither mass nor stiffness against it (a "
+      "mechanism without mass; add mass to that part, e.g. a girder's extra_mass, or an element, "
+      "bearing or support that restrains it)";
   const std::string what =
       !std::isfinite(failure.pivot())
           ? "the matrix overflows the number range there (a mass, stiffness or damping far "
             "beyond physical ones, or one near zero beside them?)"
-      : failure.pivot() < 0.0
-          ? "the matrix is not positive there (a negative stiffness or mass?)"
-          : "nothing holds it: it belongs to a part that can move with neither mass nor stiffness "
-            "against it (a mechanism without mass; add mass to that part, e.g. a girder's "
-            "extra_mass, or an element, bearing or support that restrains it)";
+      : failure.cancelled()
+          ? fmt::format(
+                "nothing holds it to double precision: its diagonal {:.3e} cancels to "
+                "round-off against the equations before it, where {}, or where "
+                "stiffnesses (or masses) that meet there are {:g} or more times apart (a "
+                "value far beyond physical ones?)",
+                failure.diagonal(), mechanism, 1.0 / assembly::kLostPivot)
+      : failure.pivot() < 0.0 ? "the matrix is not positive there (a negative stiffness or mass?)"
+                              : "nothing holds it: " + mechanism;
   return InputError(source, node_path(built, place),
                     fmt::format("{} fails at {}: {} (pivot {:.3e})", during,
                                 node_words(built, place), what, failure.pivot()));

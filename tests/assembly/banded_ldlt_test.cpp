@@ -240,5 +240,9 @@ TEST(BandedLdlt, SingularMatrixThrows) {
   EXPECT_THROW(BandedLdlt{matrix}, std::domain_error);
 }
 
+TEST(BandedLdlt, PivotCancelledToRoundOffIsRefused) {
+  testing::expect_cancelled_pivot_refused<BandedLdlt>();
+}
+
 }  // namespace
 }  // namespace pound::assembly

@@ -110,5 +110,9 @@ TEST(TwistedTridiagonal, WiderBandThrows) {
   EXPECT_THROW(TwistedTridiagonal{matrix}, std::domain_error);
 }
 
+TEST(TwistedTridiagonal, PivotCancelledToRoundOffIsRefused) {
+  testing::expect_cancelled_pivot_refused<TwistedTridiagonal>();
+}
+
 }  // namespace
 }  // namespace pound::assembly
