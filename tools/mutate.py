@@ -49,11 +49,14 @@ BREAK_CLASSES = (
     "silent_nonfinite",  # exit 0 with a non-finite number (or no/unreadable output)
     "refusal_without_path",  # exit 2 without "error: FILE: /path:" or "FILE: line N:"
     "failure_without_message",  # exit 3 without an "error:" message
+    "unexpected_failure",  # exit 3 from an error no check caught ("an unexpected failure")
     "other_exit",  # an exit code other than 0, 2, 3
     "written_on_refusal",  # exit 2 with something in the output folder or file
     "input_overwritten",  # the input file changed during the run
 )
 
+# What main_entry.cpp says of an exception that escaped every check (a gap in them).
+UNEXPECTED = "(an unexpected failure: please report it with the input)"
 NONFINITE_CSV = re.compile(r"^[+-]?(nan|inf|infinity)(\(.*\))?$", re.IGNORECASE)
 REFUSAL = re.compile(r"^error: (?P<file>.+?): (?P<where>/[^:]*|line \d+)(:|$)")
 
@@ -457,6 +460,8 @@ class Harness:
         if status == 3:
             if not any(line.startswith("error:") for line in lines):
                 return "failed", ["failure_without_message"], "exit 3 without an error: line"
+            if any(UNEXPECTED in line for line in lines):
+                return "failed", ["unexpected_failure"], "an error no check caught"
             return "failed", [], None
         if status == 0:
             learn = baseline

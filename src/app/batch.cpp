@@ -138,19 +138,30 @@ CaseRun run_case_model(const RunRequest& request, const std::optional<builder::S
   return run;
 }
 
-// A case whose model or record cannot be read fails alone: an outcome saying why.
+// A case whose model or record cannot be read fails alone: an outcome saying why. So does one
+// whose analysis fails before its first step (its static equilibrium under gravity not found):
+// a failed case, as one that fails during its run, not a stop of the batch.
 CaseRun run_or_report_input_error(const RunRequest& request,
                                   const std::optional<builder::SetEnsemble>& ensemble) {
+  const auto stopped = [&](results::CaseStatus status, const std::string& reason) {
+    RunOutcome outcome;
+    outcome.case_summary.status = status;
+    outcome.case_summary.reason = one_line(reason);
+    outcome.summary.set("model", request.model_path)
+        .set("status", results::status_name(status))
+        .set("failure", outcome.case_summary.reason);
+    return CaseRun{outcome, {}};
+  };
   try {
     return run_case_model(request, ensemble);
   } catch (const InputError& error) {
-    RunOutcome outcome;
-    outcome.case_summary.status = results::CaseStatus::input_error;
-    outcome.case_summary.reason = one_line(error.what());
-    outcome.summary.set("model", request.model_path)
-        .set("status", "input_error")
-        .set("failure", outcome.case_summary.reason);
-    return {outcome, {}};
+    return stopped(results::CaseStatus::input_error, error.what());
+  } catch (const SolveError& error) {
+    CaseRun run = stopped(results::CaseStatus::failed, error.what());
+    run.outcome.failure = error.reason();
+    run.outcome.failure_time = error.time();
+    run.outcome.case_summary.end_time = error.time();
+    return run;
   }
 }
 

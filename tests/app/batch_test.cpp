@@ -442,6 +442,37 @@ TEST_F(Batch, AnEnsembleSetRowsTheCopiesMedians) {
   EXPECT_FALSE(fs::exists(path("bad")));
 }
 
+// A case whose analysis fails before its first step (the yielding buildings' static equilibrium
+// under gravity and a record scaled past the number range) fails alone, in its row, as one that
+// fails during its run: the batch goes on and exits 3, not as if its results could not be written.
+TEST_F(Batch, ACaseFailingBeforeItsFirstStepFailsAlone) {
+  std::ofstream(path("set.json")) << fmt::format(
+      R"({{"models": ["{0}/models/adjacent_buildings_yielding.json"],
+           "records": [{{"file": "{0}/ground_motions/synthetic_firm_01.AT2", "id": "overflowed",
+                         "scale": {{"pga": 1e308}}}},
+                       {{"file": "{0}/ground_motions/synthetic_firm_01.AT2", "id": "firm",
+                         "scale": {{"pga": 0.3}}}}],
+           "histories": false}})",
+      kSource);
+  const Outcome outcome =
+      pound({"batch", path("set.json").string(), "--out", path("out").string(), "--quiet"});
+  EXPECT_EQ(outcome.exit_code, 3) << outcome.err;
+  EXPECT_NE(outcome.err.find("1 of 2 cases failed"), std::string::npos) << outcome.err;
+  std::ifstream in(path("out") / "batch_summary.csv");
+  const std::string csv((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto rows = rows_of(csv);
+  ASSERT_EQ(rows.size(), 3u) << csv;
+  for (std::size_t row = 1; row < rows.size(); ++row) {
+    const bool overflowed = cell(rows, row, "record") == "overflowed";
+    EXPECT_EQ(cell(rows, row, "status"), overflowed ? "failed" : "completed") << csv;
+    if (overflowed) {
+      EXPECT_NE(cell(rows, row, "reason").find("analysis failed at t = 0: static equilibrium"),
+                std::string::npos)
+          << csv;
+    }
+  }
+}
+
 TEST_F(Batch, ABadSetWritesNothing) {
   std::ofstream(path("set.json")) << R"({"models": ["nowhere.json"], "records": []})";
   const Outcome outcome =
