@@ -40,6 +40,8 @@ class NotPositiveDefinite : public std::domain_error {
   double pivot() const { return pivot_; }
   double diagonal() const { return diagonal_; }
   // The pivot is round-off of its diagonal (of either sign, or zero): cancelled, not negative.
+  // Round-off's own size is a few eps A_ii, well inside 10 kLostPivot A_ii; a negative pivot past
+  // that is a negative stiffness or mass.
   bool cancelled() const {
     return diagonal_ > 0.0 && std::isfinite(diagonal_) && std::isfinite(pivot_) &&
            std::abs(pivot_) <= 10.0 * kLostPivot * diagonal_;

@@ -216,17 +216,13 @@ class SparseSolver final : public integrators::LinearSolver {
   explicit SparseSolver(const Eigen::SparseMatrix<double>& matrix) : factor_(matrix) {
     // LDL^T of P A P^T: pivot d_k belongs to equation P^-1 k, whose diagonal is A's there.
     const Vector& pivots = factor_.vectorD();
-    if (pivots.size() == 0) throw NotPositiveDefinite(0, 0.0);
-    const auto equation = [&](Index k) { return factor_.permutationPinv().indices()[k]; };
-    const auto holds = [&](Index k) {
-      return pivot_holds(pivots[k], matrix.coeff(equation(k), equation(k)));
-    };
-    Index k = 0;
-    while (k < pivots.size() && holds(k)) ++k;
-    if (factor_.info() == Eigen::Success && k == pivots.size()) return;
-    if (k == pivots.size()) k = 0;  // the factorisation failed before any pivot
-    const double pivot = k < pivots.size() ? pivots[k] : 0.0;
-    throw NotPositiveDefinite(equation(k), pivot, matrix.coeff(equation(k), equation(k)));
+    for (Index k = 0; k < pivots.size(); ++k) {
+      const Index equation = factor_.permutationPinv().indices()[k];
+      const double diagonal = matrix.coeff(equation, equation);
+      if (!pivot_holds(pivots[k], diagonal))
+        throw NotPositiveDefinite(equation, pivots[k], diagonal);
+    }
+    if (factor_.info() != Eigen::Success) throw NotPositiveDefinite(0, 0.0);  // no pivot says where
   }
   void solve(const Vector& rhs, Vector& solution) const override { solution = factor_.solve(rhs); }
 
