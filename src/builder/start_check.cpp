@@ -33,6 +33,18 @@ std::string node_path(const BuiltModel& built, const NodeDirection& place) {
   return node < built.node_origins.size() ? built.node_origins[node] : "";
 }
 
+// With P-Delta the negative stiffness is most likely gravity's, -P/L: at a node that only links
+// hold (a floor between yielding storeys), a mass near zero leaves nothing against it, as the
+// first step's matrix is the structure's without its links.
+std::string not_positive_words(const model::Model& model) {
+  if (!(model.gravity && model.gravity->p_delta))
+    return "the matrix is not positive there (a negative stiffness or mass?)";
+  return "the matrix is not positive there: gravity's P-Delta (the negative geometric stiffness "
+         "-P/L of the elements there) is more than the node's mass and elements hold (a mass "
+         "near zero at a node that only links hold, such as a floor between yielding storeys? "
+         "give it its real mass)";
+}
+
 }  // namespace
 
 InputError not_held_error(const BuiltModel& built, const model::DofMap& dofs,
@@ -55,7 +67,7 @@ InputError not_held_error(const BuiltModel& built, const model::DofMap& dofs,
                 "stiffnesses (or masses) that meet there are {:g} or more times apart (a "
                 "value far beyond physical ones?)",
                 failure.diagonal(), mechanism, 1.0 / assembly::kLostPivot)
-      : failure.pivot() < 0.0 ? "the matrix is not positive there (a negative stiffness or mass?)"
+      : failure.pivot() < 0.0 ? not_positive_words(built.model)
                               : "nothing holds it: " + mechanism;
   return InputError(source, node_path(built, place),
                     fmt::format("{} fails at {}: {} (pivot {:.3e})", during,
