@@ -9,6 +9,7 @@
 #include "app/model_loading.hpp"
 #include "builder/spec.hpp"
 #include "integrators/integrator_catalog.hpp"
+#include "verification/rod_impact.hpp"
 
 namespace pound::app {
 
@@ -24,6 +25,23 @@ std::optional<std::string> rod_impact_request_error(const RodImpactRequest& requ
   if (!(request.eta >= 0.0)) return "--eta must be >= 0";
   return std::nullopt;
 }
+
+namespace {
+
+// A step longer than the run computes nothing, and its metrics would read as a perfect result
+// (the energy kept, the rods' velocities exact, since they never meet).
+void check_step_fits_run(const verification::RodImpactOptions& run) {
+  const verification::RodImpactTimes times = verification::rod_impact_times(run);
+  if (!(times.time_step < times.duration))
+    throw std::invalid_argument(fmt::format(
+        "{}: the time step {:.4g} is longer than the whole run ({:.4g}: the first contact at "
+        "{:.4g}, then --duration-ratio {:g} contact durations of {:.4g}), so no step would be "
+        "computed",
+        run.courant ? "--courant" : "--dt-ratio", times.time_step, times.duration,
+        times.first_contact, run.duration_ratio, times.contact_duration));
+}
+
+}  // namespace
 
 verification::RodImpactOptions rod_impact_options(const RodImpactRequest& request) {
   if (const std::optional<std::string> error = rod_impact_request_error(request))
@@ -51,6 +69,8 @@ verification::RodImpactOptions rod_impact_options(const RodImpactRequest& reques
   // An explicit method without a step takes its stable one, as "time_step": "auto" does.
   if (run.integrator.is_explicit() && !request.courant && !request.dt_ratio_given)
     run.stable_fraction = builder::AnalysisSpec{}.safety_factor;
+  else
+    check_step_fits_run(run);
   if (request.profiles) run.profile_times = {0.0, 0.25, 0.5, 0.75};
   return run;
 }

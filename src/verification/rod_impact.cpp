@@ -229,20 +229,31 @@ RodImpactMetrics rod_pair_metrics(const builder::RodPairSpec& pair, const RodPai
   return metrics;
 }
 
+RodImpactTimes rod_impact_times(const RodImpactOptions& options) {
+  const builder::RodPairSpec& pair = options.pair;
+  RodImpactTimes times;
+  std::tie(times.first_contact, times.contact_duration) = exact_contact_window(pair);
+  const double h_left = pair.left.length / pair.left.elements;
+  times.time_step = options.courant ? *options.courant * h_left /
+                                          std::sqrt(pair.left.youngs_modulus / pair.left.density)
+                                    : options.dt_ratio * times.contact_duration;
+  times.duration = times.first_contact + options.duration_ratio * times.contact_duration;
+  return times;
+}
+
 struct RodPairSimulation::Impl {
   explicit Impl(const RodImpactOptions& opts) : options(opts) {
     const builder::RodPairSpec& pair = options.pair;
-    std::tie(first_contact, exact_duration) = exact_contact_window(pair);
-    const double h_left = pair.left.length / pair.left.elements;
-    time_step = options.courant ? *options.courant * h_left /
-                                      std::sqrt(pair.left.youngs_modulus / pair.left.density)
-                                : options.dt_ratio * exact_duration;
+    const RodImpactTimes times = rod_impact_times(options);
+    first_contact = times.first_contact;
+    exact_duration = times.contact_duration;
+    time_step = times.time_step;
     builder::ModelSpec spec;
     spec.source = "rod-impact";
     spec.rod_pairs = {pair};
     spec.rod_pair_generator_index = {0};
     spec.analysis.time_step = time_step;
-    spec.analysis.duration = first_contact + options.duration_ratio * exact_duration;
+    spec.analysis.duration = times.duration;
     spec.analysis.relative_tolerance = options.relative_tolerance;
     spec.analysis.integrator = options.integrator;
     if (options.stable_fraction) {

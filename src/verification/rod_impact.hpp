@@ -79,6 +79,13 @@ double exact_separation_velocity(const builder::RodPairSpec& pair, const ExactRo
 // Exact first-contact-to-last-separation duration and first contact time, over a horizon long
 // enough for the whole collision.
 std::pair<double, double> exact_contact_window(const builder::RodPairSpec& pair);
+// The run the options ask for: the exact first contact and contact duration, the time step
+// (dt_ratio or courant; an explicit method's stable fraction replaces it when built) and the
+// run's length, first_contact + duration_ratio * contact_duration.
+struct RodImpactTimes {
+  double first_contact = 0.0, contact_duration = 0.0, time_step = 0.0, duration = 0.0;
+};
+RodImpactTimes rod_impact_times(const RodImpactOptions& options);
 
 RodImpactResult run_rod_impact(const RodImpactOptions& options);
 

@@ -628,6 +628,27 @@ TEST_F(Cli, VerifyExplicitWithoutAStepTakesTheStableOne) {
   EXPECT_TRUE(contains(refused.err, "above the stable limit")) << refused.err;
 }
 
+// A step longer than the whole run computes nothing; its metrics read as a perfect result (the
+// energy kept, the rods' velocities exact), so it is refused, naming the option. Kawashima's
+// case: contact from t = 0 for 0.6325, run 3 x that, 1.897; dt = 3.2 x 0.6325 = 2.02.
+TEST_F(Cli, VerifyRefusesAStepLongerThanTheRun) {
+  for (const std::vector<std::string>& option : {std::vector<std::string>{"--dt-ratio", "3.2"},
+                                                 {"--dt-ratio", "1e308"},
+                                                 {"--courant", "1e308"}}) {
+    std::vector<std::string> arguments{"verify", "rod-impact"};
+    arguments.insert(arguments.end(), option.begin(), option.end());
+    const Outcome refused = pound(arguments);
+    EXPECT_EQ(refused.exit_code, 1) << refused.err;
+    EXPECT_TRUE(contains(refused.err, option[0] + ": the time step")) << refused.err;
+    EXPECT_TRUE(contains(refused.err, "longer than the whole run (1.897")) << refused.err;
+    EXPECT_TRUE(refused.out.empty()) << refused.out;
+  }
+  // Just shorter than the run: one step, computed and reported (as bad as it is).
+  const Outcome coarse = pound({"verify", "rod-impact", "--dt-ratio", "2.9", "--json"});
+  ASSERT_EQ(coarse.exit_code, 0) << coarse.err;
+  EXPECT_GE(json::parse(coarse.out)["steps"].get<int>(), 1) << coarse.out;
+}
+
 }  // namespace
 
 namespace {

@@ -77,6 +77,8 @@ def test_rod_impact_names_bad_arguments_as_python_does():
         pound.verify.rod_impact(k_ratio=-1.0)
     with pytest.raises(pound.InputError, match="unknown rod-impact case"):
         pound.verify.rod_impact(case="nope")
+    with pytest.raises(pound.InputError, match="^dt_ratio: the time step .* longer than the whole run"):
+        pound.verify.rod_impact(dt_ratio=1e308)
     with pytest.raises(TypeError, match="elements"):
         pound.verify.rod_impact(elements=10)
     with pytest.raises(pound.InputError) as raised:
