@@ -32,10 +32,22 @@ const std::map<std::string, Setter>& rod_impact_setters() {
       {"courant", [](auto& r, const py::handle& v) { r.courant = v.cast<double>(); }},
       {"duration_ratio", [](auto& r, const py::handle& v) { r.duration_ratio = v.cast<double>(); }},
       {"law", [](auto& r, const py::handle& v) { r.law = v.cast<std::string>(); }},
-      {"eta", [](auto& r, const py::handle& v) { r.eta = v.cast<double>(); }},
+      {"eta",
+       [](auto& r, const py::handle& v) {
+         r.eta = v.cast<double>();
+         r.eta_given = true;
+       }},
       {"integrator", [](auto& r, const py::handle& v) { r.integrator = v.cast<std::string>(); }},
-      {"alpha", [](auto& r, const py::handle& v) { r.hht_alpha = v.cast<double>(); }},
-      {"rho_inf", [](auto& r, const py::handle& v) { r.rho_infinity = v.cast<double>(); }},
+      {"alpha",
+       [](auto& r, const py::handle& v) {
+         r.hht_alpha = v.cast<double>();
+         r.hht_alpha_given = true;
+       }},
+      {"rho_inf",
+       [](auto& r, const py::handle& v) {
+         r.rho_infinity = v.cast<double>();
+         r.rho_infinity_given = true;
+       }},
       {"tolerance", [](auto& r, const py::handle& v) { r.tolerance = v.cast<double>(); }}};
   return setters;
 }

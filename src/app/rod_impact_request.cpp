@@ -54,18 +54,29 @@ verification::RodImpactOptions rod_impact_options(const RodImpactRequest& reques
   run.duration_ratio = request.duration_ratio;
   run.relative_tolerance = request.tolerance;
   run.integrator = integrators::IntegratorChoice::preset(request.integrator);
+  if (request.eta_given && request.law != "extended_penalty")
+    throw std::invalid_argument(fmt::format(
+        "--eta is the extended penalty's damping factor: the law {} has none (give --law "
+        "extended_penalty)",
+        request.law));
   // The options that set a method's parameters, where the method has them.
-  for (const auto& [option, name, value] :
-       {std::tuple{"--alpha", "alpha", request.hht_alpha},
-        std::tuple{"--rho-inf", "rho_infinity", request.rho_infinity}})
-    if (const integrators::IntegratorParameter* parameter =
-            run.integrator.method().parameter(name)) {
+  for (const auto& [option, name, value, given] :
+       {std::tuple{"--alpha", "alpha", request.hht_alpha, request.hht_alpha_given},
+        std::tuple{"--rho-inf", "rho_infinity", request.rho_infinity,
+                   request.rho_infinity_given}}) {
+    const integrators::IntegratorParameter* parameter = run.integrator.method().parameter(name);
+    if (given && !parameter)
+      throw std::invalid_argument(fmt::format(
+          "{} is not a parameter of {} (give --integrator {})", option, request.integrator,
+          name == std::string("alpha") ? "hht" : "generalized_alpha"));
+    if (parameter) {
       if (!parameter->admits(value))
         throw std::invalid_argument(fmt::format("{} must be in [{:g}, {:g}]", option,
                                                 parameter->minimum,
                                                 parameter->maximum.value_or(INFINITY)));
       run.integrator.set(name, value);
     }
+  }
   // An explicit method without a step takes its stable one, as "time_step": "auto" does.
   if (run.integrator.is_explicit() && !request.courant && !request.dt_ratio_given)
     run.stable_fraction = builder::AnalysisSpec{}.safety_factor;

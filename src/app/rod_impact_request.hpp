@@ -21,8 +21,11 @@ struct RodImpactRequest {
   double eta = 1.0;  // extended_penalty: damping factor of alpha1
   std::string integrator = "newmark_average_acceleration";
   double hht_alpha = -0.1, rho_infinity = 0.8;  // where the integrator has them
-  double tolerance = 1e-10;                     // relative, of the Newton iteration
-  bool profiles = false;                        // keep the rods' profiles at 0, T/4, T/2, 3T/4
+  // Given rather than defaulted: refused where the law or integrator has no such number (a user
+  // who sets --alpha without --integrator hht would otherwise get Newmark's results unawares).
+  bool eta_given = false, hht_alpha_given = false, rho_infinity_given = false;
+  double tolerance = 1e-10;  // relative, of the Newton iteration
+  bool profiles = false;     // keep the rods' profiles at 0, T/4, T/2, 3T/4
 };
 
 // What is wrong with the numbers, named by their `pound verify` options ("--n must be >= 1").

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <optional>
+#include <set>
 
 #include "app/command_line.hpp"
 #include "app/commands.hpp"
@@ -51,6 +53,10 @@ Metrics (docs/design.md section 3.1): force_l2_error over [0, 1.5 T], duration_e
 separation_velocity_error, peak_force_ratio, max_penetration, min_force, run_time_s (solve alone),
 steps, newton_iterations.
 
+Each benchmark reads its own options; one it does not read (or --alpha without hht, --rho-inf
+without generalized_alpha, --eta without extended_penalty, a step longer than the run) is refused
+rather than ignored.
+
 options)";
 
 // Every option of `pound verify`; each benchmark reads its own.
@@ -60,6 +66,7 @@ struct VerifyOptions {
   std::string law = "gap_spring", case_name = "kawashima", csv, profiles_csv, study, integrator;
   double courant = 0.0, eta = 1.0, hht_alpha = -0.1, rho_infinity = 0.8;
   bool courant_given = false, dt_ratio_given = false;
+  bool eta_given = false, hht_alpha_given = false, rho_infinity_given = false;
   std::string block_model = "models/block_on_belt.json", speeds, out_folder;
   double periods = 4.0;
   int elements_across = 4;
@@ -253,9 +260,12 @@ RodImpactRequest rod_impact_request(const VerifyOptions& options) {
   request.duration_ratio = options.duration_ratio;
   request.law = options.law;
   request.eta = options.eta;
+  request.eta_given = options.eta_given;
   request.integrator = options.integrator;
   request.hht_alpha = options.hht_alpha;
+  request.hht_alpha_given = options.hht_alpha_given;
   request.rho_infinity = options.rho_infinity;
+  request.rho_infinity_given = options.rho_infinity_given;
   request.tolerance = options.tolerance;
   request.profiles = !options.profiles_csv.empty();
   return request;
@@ -305,6 +315,32 @@ int unknown_benchmark(const std::string& benchmark) {
   return 1;
 }
 
+// An option given (not defaulted) that the benchmark does not read: it would be ignored, and the
+// results taken for what it asked (`verify two-element --n 50`, `--study` with `--k-ratio`).
+std::optional<std::string> option_of_another_benchmark(const po::variables_map& given,
+                                                       const std::string& benchmark) {
+  static const std::map<std::string, std::set<std::string>> reads{
+      {"rod-impact",
+       {"case", "n", "k-ratio", "dt-ratio", "courant", "duration-ratio", "law", "eta", "integrator",
+        "alpha", "rho-inf", "tolerance", "json", "csv", "profiles-csv", "study"}},
+      {"two-element", {"json"}},
+      {"restitution", {"json"}},
+      {"rod-impact-2d", {"n-across", "csv"}},
+      {"block-belt", {"model", "speeds", "periods", "out", "json"}}};
+  const auto benchmark_reads = reads.find(benchmark);
+  if (benchmark_reads == reads.end()) return std::nullopt;  // unknown_benchmark says so
+  const bool study = given.count("study") > 0;
+  for (const auto& [name, value] : given) {
+    if (name == "benchmark" || value.defaulted()) continue;
+    if (study && name != "study" && name != "json")
+      return fmt::format("--{} does not apply to --study, which runs its own grid of cases", name);
+    if (!benchmark_reads->second.contains(name))
+      return fmt::format("--{} is not an option of the {} benchmark (it would be ignored)", name,
+                         benchmark);
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 int verify_command(const Arguments& arguments) {
@@ -317,6 +353,11 @@ int verify_command(const Arguments& arguments) {
   options.json = parsed->count("json") > 0;
   options.courant_given = parsed->count("courant") > 0;
   options.dt_ratio_given = !(*parsed)["dt-ratio"].defaulted();
+  options.eta_given = !(*parsed)["eta"].defaulted();
+  options.hht_alpha_given = !(*parsed)["alpha"].defaulted();
+  options.rho_infinity_given = !(*parsed)["rho-inf"].defaulted();
+  if (const std::optional<std::string> stray = option_of_another_benchmark(*parsed, benchmark))
+    return usage_error(*stray);
   if (benchmark == "two-element") return verify_two_element(options.json);
   if (benchmark == "restitution") return verify_restitution(options.json);
   if (benchmark == "rod-impact-2d")

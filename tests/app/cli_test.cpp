@@ -643,6 +643,28 @@ TEST_F(Cli, VerifyRefusesAStepLongerThanTheRun) {
     EXPECT_TRUE(contains(refused.err, "longer than the whole run (1.897")) << refused.err;
     EXPECT_TRUE(refused.out.empty()) << refused.out;
   }
+  // An option the benchmark, law or integrator does not read would be ignored, and the results
+  // taken for what it asked: refused, naming it (its default, or its own benchmark, runs).
+  for (const auto& [arguments, words] :
+       std::vector<std::pair<std::vector<std::string>, std::string>>{
+           {{"verify", "rod-impact", "--alpha", "-0.05"},
+            "--alpha is not a parameter of newmark_average_acceleration (give --integrator hht)"},
+           {{"verify", "rod-impact", "--integrator", "hht", "--rho-inf", "0.5"},
+            "--rho-inf is not a parameter of hht (give --integrator generalized_alpha)"},
+           {{"verify", "rod-impact", "--eta", "2"}, "the law gap_spring has none"},
+           {{"verify", "two-element", "--n", "50"},
+            "--n is not an option of the two-element benchmark"},
+           {{"verify", "rod-impact", "--study", "kawashima", "--k-ratio", "2"},
+            "--k-ratio does not apply to --study"}}) {
+    const Outcome refused = pound(arguments);
+    EXPECT_EQ(refused.exit_code, 1) << refused.err;
+    EXPECT_TRUE(contains(refused.err, words)) << refused.err;
+  }
+  const Outcome hht = pound({"verify", "rod-impact", "--integrator", "hht", "--alpha", "-0.05"});
+  EXPECT_EQ(hht.exit_code, 0) << hht.err;
+  const Outcome penalty =
+      pound({"verify", "rod-impact", "--law", "extended_penalty", "--eta", "0.5", "--n", "20"});
+  EXPECT_EQ(penalty.exit_code, 0) << penalty.err;
   // Just shorter than the run: one step, computed and reported (as bad as it is).
   const Outcome coarse = pound({"verify", "rod-impact", "--dt-ratio", "2.9", "--json"});
   ASSERT_EQ(coarse.exit_code, 0) << coarse.err;

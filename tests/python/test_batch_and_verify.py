@@ -79,6 +79,10 @@ def test_rod_impact_names_bad_arguments_as_python_does():
         pound.verify.rod_impact(case="nope")
     with pytest.raises(pound.InputError, match="^dt_ratio: the time step .* longer than the whole run"):
         pound.verify.rod_impact(dt_ratio=1e308)
+    with pytest.raises(pound.InputError, match="^alpha is not a parameter of newmark_average_acceleration"):
+        pound.verify.rod_impact(alpha=-0.05)
+    with pytest.raises(pound.InputError, match="^eta is the extended penalty's damping factor"):
+        pound.verify.rod_impact(eta=2.0)
     with pytest.raises(TypeError, match="elements"):
         pound.verify.rod_impact(elements=10)
     with pytest.raises(pound.InputError) as raised:
