@@ -65,12 +65,23 @@ LoadedModel::SecondComponent read_second_component(const std::string& path, std:
                     ? *pair.record
                     : (std::filesystem::path(path).parent_path() / *pair.record).string();
   format.column = pair.column.value_or(e.column);
-  try {
+  const auto read = [&] {
     second.motion =
         io::read_ground_motion(second.path, format, loaded.spec.units.gravity(), &second.source);
+  };
+  try {
+    read();
   } catch (const io::FileAccessError& error) {
     throw InputError(path, fmt::format("/excitations/{}/pair/record", k),
                      fmt::format("{}: '{}'", error.reason(), error.file()));
+  } catch (const io::ColumnOfAt2Error& error) {
+    if (pair.column)
+      throw InputError(path, fmt::format("/excitations/{}/pair/column", k),
+                       fmt::format("{}: '{}'", error.reason(), error.file()));
+    // Its own .AT2 file beside a columns file: the first's column was not meant for it.
+    format.column = 1;
+    format.time_column = false;
+    read();
   }
   return second;
 }
@@ -111,6 +122,11 @@ void read_records_and_build(const std::string& path, bool first_as_given, Loaded
       // The record cannot be opened: the model's field that names it is what to fix.
       throw InputError(path, fmt::format("/excitations/{}/record", k),
                        fmt::format("{}: '{}'", error.reason(), error.file()));
+    } catch (const io::ColumnOfAt2Error& error) {
+      if (k == 0 && first_as_given) throw;  // the caller's options asked for the column
+      throw InputError(
+          path, fmt::format("/excitations/{}/{}", k, e.time_column ? "time_column" : "column"),
+          fmt::format("{}: '{}'", error.reason(), error.file()));
     }
     loaded.second_components.push_back(
         e.pair ? std::optional(read_second_component(path, k, e, record, format, loaded))

@@ -693,8 +693,18 @@ model::GroundMotion parse_ground_motion(const std::string& text, const std::stri
 
   model::GroundMotion motion;
   motion.name = std::filesystem::path(path).filename().string();
-  motion.acceleration = reads_as_at2(path, format.format, lines)
-                            ? read_at2(path, lines, format, motion.time_step)
+  const bool at2 = reads_as_at2(path, format.format, lines);
+  // An .AT2 file is one component in rows of values: a column asked of it (a pair's second
+  // component as another column of the same file) would read that component again, unawares.
+  if (at2 && (format.column != 1 || format.time_column))
+    throw ColumnOfAt2Error(
+        path, "",
+        fmt::format("a PEER .AT2 file holds one component, its values in rows: {} "
+                    "applies to columns files only (a pair's second component is "
+                    "its own .AT2 file)",
+                    format.time_column ? std::string("a time column")
+                                       : fmt::format("column {}", format.column)));
+  motion.acceleration = at2 ? read_at2(path, lines, format, motion.time_step)
                             : read_columns(path, lines, format, motion.time_step);
   model::scale(motion, to_model_units(format.units, g_in_model_units));
   // A value that overflows in model units (1.7e308 g) would make every result infinite.

@@ -14,9 +14,17 @@
 #include <string_view>
 #include <vector>
 
+#include "core/errors.hpp"
 #include "model/ground_motion.hpp"
 
 namespace pound::io {
+
+// A column (or a time column) asked of a PEER .AT2 file, which holds one component: a model
+// names the field that asked for it.
+class ColumnOfAt2Error : public InputError {
+ public:
+  using InputError::InputError;
+};
 
 enum class AccelerationUnit { g, m_per_s2, cm_per_s2, model };  // "g", "m/s2", "cm/s2", "model"
 

@@ -1424,7 +1424,8 @@ const Fields<ExcitationSpec>& record_format_fields() {
                "auto: AT2 by the extension .AT2 or an NPTS header line, else columns")
           .always_written(),
       optional("column", &ExcitationSpec::column, Number<int>{at_least(1)},
-               "columns: the column to read, from 1"),
+               "columns: the column to read, from 1 (an .AT2 file has one component: none "
+               "other than 1 there)"),
       optional("time_step", &ExcitationSpec::time_step, Number<>{positive},
                "columns: the sampling interval, unless the file gives it [T]"),
       optional("time_column", &ExcitationSpec::time_column, Flag{},
@@ -1452,7 +1453,8 @@ const Fields<builder::PairSpec>& pair_fields() {
       optional("record", &PairSpec::record, Text{true},
                "the second component's file, relative to the model file"),
       optional("column", &PairSpec::column, Number<int>{at_least(1)},
-               "columns: the second component's column"),
+               "columns: the second component's column (not of an .AT2 file, which has one "
+               "component)"),
       optional("angle", &PairSpec::angle, Number<>{Minimum{-360.0, true}, below(360.0)},
                "the pair turned about +z: the first component along (cos a, sin a, 0), the "
                "second along (−sin a, cos a, 0) [degrees]"),

@@ -897,6 +897,17 @@ TEST_F(Cli, SpectrumRefusesPairsOnDifferentGridsAndOptionsThatDoNotFitAPair) {
     EXPECT_EQ(outcome.exit_code, 1) << outcome.err;
     EXPECT_TRUE(contains(outcome.err, message)) << outcome.err;
   }
+  // An .AT2 file has one component: a column of it (the pair's, or the record's) would read that
+  // component again, a pair of a record with itself taken for two.
+  for (const std::vector<std::string>& options :
+       {std::vector<std::string>{"--pair-column", "2"}, {"--column", "2"}, {"--time-column"}}) {
+    std::vector<std::string> arguments = {"spectrum", firm};
+    arguments.insert(arguments.end(), options.begin(), options.end());
+    const Outcome outcome = pound(arguments);
+    EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+    EXPECT_TRUE(contains(outcome.err, "a PEER .AT2 file holds one component")) << outcome.err;
+    EXPECT_TRUE(outcome.out.empty()) << outcome.out;
+  }
   // A record paired with itself: RotD50 is its Sa, RotD100 sqrt(2) times it, at 45 degrees.
   const json self = json::parse(
       pound({"spectrum", firm, "--pair", firm, "--scale", "2", "--periods", "0.5", "--json"}).out);

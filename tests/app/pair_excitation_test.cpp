@@ -35,6 +35,19 @@ void write_pair(const fs::path& file, std::size_t samples = 800) {
   }
 }
 
+// The first component of write_pair as a PEER .AT2 file (NGA-West2 header, five values a row).
+void write_at2(const fs::path& file, std::size_t samples = 800) {
+  std::ofstream out(file);
+  out << "PEER NGA STRONG MOTION DATABASE RECORD\nsynthetic, made by the test\n"
+         "ACCELERATION TIME SERIES IN UNITS OF G\n"
+      << fmt::format("NPTS= {}, DT= .0100 SEC\n", samples);
+  for (std::size_t i = 0; i < samples; ++i) {
+    const double t = 0.01 * static_cast<double>(i);
+    out << fmt::format("{:15.7E}", 0.3 * std::exp(-0.4 * t) * std::sin(2 * M_PI * 1.3 * t))
+        << (i % 5 == 4 ? "\n" : "");
+  }
+}
+
 // A column 5 m tall with a mass on top; `symmetric`: the same bending stiffness about both axes.
 json column(double angle, bool symmetric = true) {
   return {{"dimension", 3},
@@ -182,6 +195,7 @@ TEST_F(PairExcitation, MeaninglessPairsAreRefused) {
     const char* phrase;
   };
   write_pair(path("short.txt"), 500);
+  write_at2(path("one.AT2"));
   const Case cases[] = {
       {"direction",
        [](json& m) {
@@ -197,6 +211,18 @@ TEST_F(PairExcitation, MeaninglessPairsAreRefused) {
        "/excitations/0/pair", "must have as many samples"},
       {"missing", [](json& m) { m["excitations"][0]["pair"]["record"] = "nowhere.txt"; },
        "/excitations/0/pair/record", "nowhere.txt"},
+      // An .AT2 file has one component: a column of it would read that component again.
+      {"at2_pair_column",
+       [](json& m) {
+         m["excitations"][0] = {{"record", "one.AT2"}, {"pair", {{"column", 2}}}};
+       },
+       "/excitations/0/pair/column", "a PEER .AT2 file holds one component"},
+      {"at2_column",
+       [](json& m) {
+         m["excitations"][0] = {
+             {"record", "one.AT2"}, {"column", 2}, {"pair", {{"record", "one.AT2"}}}};
+       },
+       "/excitations/0/column", "a PEER .AT2 file holds one component"},
       {"angle", [](json& m) { m["excitations"][0]["pair"]["angle"] = 400; },
        "/excitations/0/pair/angle", "must be < 360"},
       {"plane",
@@ -219,6 +245,14 @@ TEST_F(PairExcitation, MeaninglessPairsAreRefused) {
     EXPECT_TRUE(testing::contains(outcome.err, c.phrase)) << outcome.err;
     EXPECT_FALSE(fs::exists(path(c.name)));
   }
+  // The first component's column is not the second's when that is its own .AT2 file.
+  json model = column(0.0);
+  model["excitations"][0] = {{"record", "pair.txt"},
+                             {"time_step", 0.01},
+                             {"column", 2},
+                             {"pair", {{"record", "one.AT2"}}}};
+  const testing::Outcome paired = run(model, "columns_and_at2");
+  EXPECT_EQ(paired.exit_code, 0) << paired.err;
 }
 
 // A batch set takes pairs (3-D models only: a 1-D model's cases fail with the reason) and
