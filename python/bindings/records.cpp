@@ -63,9 +63,10 @@ void check_spectrum_request(const std::string& name, const std::vector<double>& 
     throw InputError(name, "damping",
                      fmt::format("a damping ratio in [0, 1), got {:g}", damping_ratio));
   for (std::size_t k = 0; k < periods.size(); ++k)
-    if (!(periods[k] >= 0.0) || !std::isfinite(periods[k]))
+    if (!(periods[k] >= 0.0 && periods[k] <= model::kLongestSpectralPeriod))
       throw InputError(name, fmt::format("periods[{}]", k),
-                       fmt::format("a period >= 0 [s], got {:g}", periods[k]));
+                       fmt::format("a period in [0, {:g}] s, got {:g}",
+                                   model::kLongestSpectralPeriod, periods[k]));
 }
 
 // Pseudo-spectral accelerations S_a = w^2 max|u| at each period (model::spectral_acceleration),

@@ -42,7 +42,8 @@ pair's axes first (the components' Sa change, RotD50 and RotD100 do not).
 options)";
 
 constexpr double kStandardGravity = 9.80665;  // m/s^2
-// "0.1,0.2,1" -> periods >= 0; throws std::invalid_argument naming the bad entry.
+// "0.1,0.2,1" -> periods in [0, model::kLongestSpectralPeriod]; throws std::invalid_argument
+// naming the bad entry.
 std::vector<double> parse_periods(const std::string& text) {
   std::vector<double> periods;
   std::istringstream list(text);
@@ -58,6 +59,10 @@ std::vector<double> parse_periods(const std::string& text) {
         !std::isfinite(period))
       throw std::invalid_argument(
           fmt::format("--periods: '{}' is not a period in seconds (>= 0)", item));
+    if (period > model::kLongestSpectralPeriod)
+      throw std::invalid_argument(
+          fmt::format("--periods: '{}' s is beyond any structure's period (at most {:g} s)", item,
+                      model::kLongestSpectralPeriod));
     periods.push_back(period);
   }
   if (periods.empty()) throw std::invalid_argument("--periods: give at least one period");

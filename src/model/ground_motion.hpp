@@ -37,6 +37,10 @@ class GroundKinematics {
   std::vector<double> velocity_, displacement_;  // at the samples
 };
 
+// The longest period a spectrum is asked at [s]: spectra stop at 10 to 20 s, and far beyond
+// w^2 underflows (S_a 0, S_d = S_a / w^2 undefined).
+inline constexpr double kLongestSpectralPeriod = 1000.0;
+
 // Pseudo-spectral acceleration S_a = w^2 max|u| of a linear SDOF (period, damping ratio) under
 // the record, computed with the exact piecewise-linear recurrence (Nigam & Jennings 1969), so
 // it is exact for the linearly interpolated record. Period 0 gives the peak acceleration.

@@ -806,6 +806,25 @@ TEST_F(Cli, MotionOptionsNeedMotionAndSensibleValues) {
   }
 }
 
+// At the longest period asked (1000 s) every column is finite; beyond, omega^2 underflows (at
+// 1e308 s Sd was 0 / 0 = NaN in a completed result): refused.
+TEST_F(Cli, SpectrumIsFiniteAtItsLongestPeriodAndRefusesLonger) {
+  const std::string record = POUND_SOURCE_DIR "/ground_motions/synthetic_firm_01.AT2";
+  const Outcome longest = pound({"spectrum", record, "--periods", "0,1000", "--json"});
+  ASSERT_EQ(longest.exit_code, 0) << longest.err;
+  const json spectrum = json::parse(longest.out);
+  for (const char* column : {"sa_g", "sv_m_per_s", "sd_m"})
+    for (const json& value : spectrum[column]) EXPECT_TRUE(value.is_number()) << longest.out;
+  std::cout << "Sd at 1000 s: " << spectrum["sd_m"][1] << " m\n";
+  EXPECT_GT(spectrum["sd_m"][1].get<double>(), 0.0);
+  for (const char* periods : {"0,1e308", "1000.5"}) {
+    const Outcome refused = pound({"spectrum", record, "--periods", periods});
+    EXPECT_EQ(refused.exit_code, 1) << refused.err;
+    EXPECT_TRUE(contains(refused.err, "beyond any structure's period (at most 1000 s)"))
+        << refused.err;
+  }
+}
+
 TEST_F(Cli, SpectrumScalesTheRecordAsAskedAndSaysBy) {
   const std::string record = POUND_SOURCE_DIR "/ground_motions/synthetic_firm_01.AT2";
   const Outcome scaled = pound({"spectrum", record, "--pga", "0.25", "--periods", "0,1", "--json"});

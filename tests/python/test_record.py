@@ -93,6 +93,14 @@ def test_bad_samples_raise_input_error_naming_them(times_or_dt, accelerations, p
     assert raised.value.path == path
 
 
+def test_periods_beyond_any_structures_are_refused(repository):
+    record = pound.Record.from_file(repository / "ground_motions" / "synthetic_firm_01.AT2")
+    assert record.spectrum([1000.0])["sa"][0] > 0.0
+    with pytest.raises(pound.InputError) as raised:
+        record.spectrum([1.0, 1e308])
+    assert raised.value.path == "periods[1]" and "in [0, 1000] s" in raised.value.message
+
+
 def test_bad_units_scale_and_files_are_refused(tmp_path):
     with pytest.raises(ValueError, match="unknown acceleration unit"):
         pound.Record(0.01, [0.0, 0.1], "furlongs")
