@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <boost/program_options.hpp>
 #include <cmath>
 #include <filesystem>
@@ -50,6 +51,26 @@ struct PushoverRequest {
   int increments = 100;
   bool json = false;
 };
+
+// A target far below the model's size pushes by round-off: at --to 1e-320 the loads underflowed
+// and the curve read "initial stiffness 0". 1e-9 of the size (0.1 um on a 100 m bridge) still
+// gives forces many digits above round-off.
+void check_target_resolved(const PushoverRequest& r, const model::Model& model) {
+  double size = 0.0;
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    double low = INFINITY, high = -INFINITY;
+    for (const model::Node& node : model.nodes) {
+      low = std::min(low, node.position[axis]);
+      high = std::max(high, node.position[axis]);
+    }
+    if (low <= high) size = std::max(size, high - low);
+  }
+  if (std::abs(r.target) < 1e-9 * size)
+    throw InputError(r.model_path, "--to",
+                     fmt::format("{:g} is below what the model resolves: at least {:g} (1e-9 "
+                                 "of its size, {:g}; a target in other units?)",
+                                 r.target, 1e-9 * size, size));
+}
 
 // What is wrong with the command line, or empty.
 std::string request_error(const PushoverRequest& r) {
@@ -302,6 +323,7 @@ int pushover_command(const Arguments& arguments) {
     throw InputError(request.model_path, "--node",
                      fmt::format("node '{}' is fixed along {}: push a free node", request.node,
                                  request.direction));
+  check_target_resolved(request, loaded.built.model);
   assembly::PushoverControl settings{
       .equation = control, .target = request.target, .increments = request.increments};
   settings.pattern = load_pattern(loaded, system, control, direction, request.pattern);

@@ -136,6 +136,11 @@ TEST_F(PushoverCommand, BadRequestsAreRefusedAndNothingIsWritten) {
   EXPECT_EQ(outcome.exit_code, 1);
   outcome = run({"--node", "bridge.p1.top", "--to", "0.01", "--pattern", "wavy"});
   EXPECT_EQ(outcome.exit_code, 1);
+  // A target the model cannot resolve (its loads underflowed at 1e-320: "initial stiffness 0").
+  outcome = run({"--node", "bridge.p1.top", "--to", "1e-320"});
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_TRUE(contains(outcome.err, "--to: 9.99989e-321 is below what the model resolves"))
+      << outcome.err;
   EXPECT_FALSE(std::filesystem::exists(path("out")));
 }
 
