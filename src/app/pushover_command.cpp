@@ -269,7 +269,8 @@ int pushover_command(const Arguments& arguments) {
   PushoverRequest request;
   options.add_options()("help,h", "show this help")("node", po::value(&request.node),
                                                     "control node id")(
-      "to", po::value(&request.target), "target displacement of the control node [L]")(
+      "to", po::value(&request.target),
+      "target displacement of the control node [L] (at least 1e-9 of the model's size)")(
       "direction", po::value(&request.direction)->default_value("x"), "x or y")(
       "pattern", po::value(&request.pattern)->default_value("point"), "point, mass or triangular")(
       "increments", po::value(&request.increments)->default_value(100), "equal increments")(

@@ -220,7 +220,7 @@ po::options_description spectrum_options(SpectrumRequest& r) {
       "damping", po::value(&r.damping_ratio)->default_value(r.damping_ratio, "0.05"),
       "damping ratio of the oscillators")(
       "periods", po::value(&r.periods_text),
-      "comma-separated periods [s], e.g. 0.1,0.2,0.5,1 (0 gives the PGA)")(
+      "comma-separated periods [s] from 0 to 1000, e.g. 0.1,0.2,0.5,1 (0 gives the PGA)")(
       "pair", po::value(&r.pair),
       "the second horizontal component, 90 degrees from the first (a file read as the first)")(
       "pair-column", po::value<int>(),
