@@ -59,16 +59,16 @@ verification::RodImpactOptions rod_impact_options(const RodImpactRequest& reques
         "--eta is the extended penalty's damping factor: the law {} has none (give --law "
         "extended_penalty)",
         request.law));
-  // The options that set a method's parameters, where the method has them.
-  for (const auto& [option, name, value, given] :
-       {std::tuple{"--alpha", "alpha", request.hht_alpha, request.hht_alpha_given},
-        std::tuple{"--rho-inf", "rho_infinity", request.rho_infinity,
+  // The options that set a method's parameters, where the method has them (`owner`: the one
+  // that does, for the message).
+  for (const auto& [option, name, owner, value, given] :
+       {std::tuple{"--alpha", "alpha", "hht", request.hht_alpha, request.hht_alpha_given},
+        std::tuple{"--rho-inf", "rho_infinity", "generalized_alpha", request.rho_infinity,
                    request.rho_infinity_given}}) {
     const integrators::IntegratorParameter* parameter = run.integrator.method().parameter(name);
     if (given && !parameter)
-      throw std::invalid_argument(fmt::format(
-          "{} is not a parameter of {} (give --integrator {})", option, request.integrator,
-          name == std::string("alpha") ? "hht" : "generalized_alpha"));
+      throw std::invalid_argument(fmt::format("{} is not a parameter of {} (give --integrator {})",
+                                              option, request.integrator, owner));
     if (parameter) {
       if (!parameter->admits(value))
         throw std::invalid_argument(fmt::format("{} must be in [{:g}, {:g}]", option,
