@@ -11,6 +11,7 @@
 #include <numbers>
 
 #include "builder/generators.hpp"
+#include "core/errors.hpp"
 #include "links/law_registry.hpp"
 
 namespace pound::builder {
@@ -117,7 +118,19 @@ Building make_building(const AdjacentBuildingsSpec& pair, int side, bool space) 
                     .heights = floor_heights(spec),
                     .centre = plan_centre(pair, side, space),
                     .space = space};
-  if (spec.damping_ratio > 0.0) building.rayleigh = building_rayleigh(spec);
+  if (spec.damping_ratio > 0.0) {
+    building.rayleigh = building_rayleigh(spec);
+    // Floor masses and storey stiffnesses further apart than double precision holds (a floor of
+    // 1e-300 kg) overflow the modes' frequencies; the damping would make every storey's force NaN.
+    if (!std::isfinite((*building.rayleigh)[0]) || !std::isfinite((*building.rayleigh)[1]))
+      throw InputError(
+          "",
+          fmt::format("/generators/{}/{}/damping_ratio", pair.generator_index, kPairSides[side]),
+          "the building's first two modes, which set its Rayleigh damping, are not "
+          "finite numbers: its floor masses and storey stiffnesses are further apart "
+          "than double precision holds (a floor mass near zero? give each floor its "
+          "real mass)");
+  }
   return building;
 }
 

@@ -946,6 +946,10 @@ double stable_time_step(SecondOrderSystem& system, bool contacts_active) {
   for (Index r = 0; r < links.size(); ++r)
     if (tangents.stiffness[r] > 0.0 || tangents.damping[r] > 0.0)
       limit = std::min(limit, link_mode_stable_step(links, inverse_mass, tangents, r));
+  if (std::isnan(limit))
+    throw std::domain_error(
+        "the stable step is not a number: a mode's damping overflows the number range (a "
+        "stiffness or damping far beyond physical ones, or masses near zero)");
   if (!(limit > 0.0))
     throw std::domain_error(fmt::format(
         "the stable step {:g} is not positive (a stiffness or damping far beyond physical ones, "

@@ -1539,8 +1539,9 @@ const Fields<ExcitationSpec>& excitation_fields() {
 Field<AnalysisSpec> time_step_field() {
   return custom<AnalysisSpec>(
       {"time_step", "number > 0 or `\"auto\"`", "required (implicit), `\"auto\"` (explicit)",
-       "Δt [T]; `\"auto\"` (central difference): safety_factor × the stable step, no more "
-       "than the shortest record step; also when an explicit integrator is given no step"},
+       "Δt [T], no longer than the duration; `\"auto\"` (central difference): safety_factor × "
+       "the stable step, no more than the shortest record step; also when an explicit "
+       "integrator is given no step"},
       [](JsonObject& object, AnalysisSpec& analysis, Context&) {
         // An explicit method has one right step, its stable one: without a number it takes it.
         if (analysis.integrator.is_explicit() && !object.find("time_step")) {
