@@ -19,6 +19,13 @@ mutants are deterministic from --seed; the inputs share the time (--budget-secon
 --keep DIR saves each mutant that breaks the contract, with a .txt saying the mutation, the
 command to replay it (from DIR/root) and the outcome.
 
+With --options it sweeps the command line instead of the files: every option that takes a value
+of every command (read from `pound COMMAND --help`, so a new option is swept without a change
+here) is given each of the values mutation gives numbers (0, -1, +-1e308, NaN, +-inf, 1e-320,
+text, empty, 2^31, hex, a list, ...) beside a valid invocation, in a fresh folder. The contract:
+exit 0 with every number finite (stdout and every file written), exit 1 a usage error naming the
+option, exit 2 or 3 an "error:" line; on exit 1 or 2 nothing written; never a signal or a hang.
+
 Exit status: 0 no contract break, 1 some contract break (0 with --report-only), 2 usage error.
 Python 3 standard library only.
 """
@@ -53,6 +60,7 @@ BREAK_CLASSES = (
     "other_exit",  # an exit code other than 0, 2, 3
     "written_on_refusal",  # exit 2 with something in the output folder or file
     "input_overwritten",  # the input file changed during the run
+    "usage_without_option",  # --options: exit 1 without the option's name in the message
 )
 
 # What main_entry.cpp says of an exception that escaped every check (a gap in them).
@@ -502,6 +510,209 @@ def plan(harness, inputs, seed):
     return queues
 
 
+# ----------------------------------------------------------------------------------- options
+
+OPTION_VALUES = ("0", "-1", "1e308", "-1e308", "nan", "inf", "-inf", "1e-320", "abc", "", "1e",
+                 "5e9", "2147483648", "-0", "0x10", "1,2", "3.5", "0.5")
+RECORD = "ground_motions/synthetic_firm_01.AT2"
+# A valid invocation of each command (paths in the mirror tree), to which one option is added.
+OPTION_BASES = {
+    "run": ["run", "models/two_sdof_girders.json", "--quiet", "--time-limit", "10"],
+    "verify rod-impact": ["verify", "rod-impact"],
+    "verify two-element": ["verify", "two-element"],
+    "modes": ["modes", "models/two_sdof_girders.json"],
+    "pushover": ["pushover", "models/three_span_bridge.json", "--node", "bridge.g1.n2", "--to", "0.1"],
+    "spectrum": ["spectrum", RECORD],
+    "batch": ["batch", "sets/adjacent_buildings_pounding.json", "--quiet", "--out", "batch_out"],
+}
+# What an option needs beside it to be read at all (help texts that start "--motion:" need
+# --motion, which is found from the text).
+OPTION_NEEDS = {
+    ("run", "--perturbation"): ["--ensemble", "3"],
+    ("run", "--robust-spread"): ["--ensemble", "3"],
+    ("run", "--jobs"): ["--ensemble", "3"],
+    ("spectrum", "--rotation"): ["--pair", RECORD],
+    ("verify rod-impact", "--alpha"): ["--integrator", "hht"],
+    ("verify rod-impact", "--rho-inf"): ["--integrator", "generalized_alpha"],
+    ("verify rod-impact", "--eta"): ["--law", "extended_penalty"],
+}
+HELP_OPTION = re.compile(r"^  (?:-\w \[ )?(--[a-z][a-z0-9-]*)(?: \])? arg\b")
+NONFINITE_TEXT = re.compile(r"(?<![\w.])[-+]?(nan|inf|infinity)(?![\w])", re.IGNORECASE)
+
+
+def value_options(binary, base):
+    """(option, needs, names_output) of every option of base's command that takes a value, from its --help."""
+    command = base[:2] if base[0] == "verify" else base[:1]
+    text = subprocess.run([binary] + command + ["--help"], capture_output=True, text=True).stdout
+    found = []
+    for line in text.splitlines():
+        m = HELP_OPTION.match(line)
+        if not m or m.group(1) == "--help":
+            continue
+        described = re.sub(r"^\s*\(=[^)]*\)", "", line[m.end():]).strip()
+        needs = ["--motion", RECORD] if described.startswith("--motion:") else []
+        # An output's name is printed back ("-> inf/"): stdout is no evidence there.
+        names_output = re.search(r"\b(folder|write)", described) is not None
+        found.append((m.group(1), needs, names_output))
+    return found
+
+
+def option_argv(binary, key, base, option, needs, value):
+    """base with option set to value (replacing base's own value of it) and what it needs."""
+    argv = list(base)
+    if option in argv:
+        at = argv.index(option)
+        del argv[at:at + 2]
+    argv += OPTION_NEEDS.get((key, option), needs)
+    return [binary] + argv + [option + "=" + value]
+
+
+def nonfinite_in_outputs(folder, stdout, names_output):
+    """What is not finite in stdout (unless it prints an output's name) or in the files written
+    into folder, or None."""
+    stripped = stdout.strip()
+    if names_output:
+        pass
+    elif stripped.startswith("{"):
+        try:
+            load_json_strict(stripped)
+        except NonFinite as e:
+            return "non-finite %s on stdout" % e
+        except ValueError:
+            return "stdout is not JSON"
+    elif NONFINITE_TEXT.search(stdout):
+        return "stdout: " + NONFINITE_TEXT.search(stdout).group(0)
+    for dirpath, _, files in os.walk(folder):
+        for name in sorted(files):
+            p = os.path.join(dirpath, name)
+            if name.endswith(".csv"):
+                bad = check_csv(p)
+            elif name.endswith(".json"):
+                with open(p, "r", errors="replace") as f:
+                    try:
+                        load_json_strict(f.read())
+                        bad = None
+                    except NonFinite as e:
+                        bad = "non-finite %s in %s" % (e, name)
+                    except ValueError:
+                        bad = name + " is not JSON"
+            else:
+                continue
+            if bad:
+                return bad
+    return None
+
+
+def classify_option_run(option, names_output, status, stdout, stderr, folder):
+    """(outcome, [break classes], detail) of one option's run in its own folder."""
+    if status is None:
+        return "hang", ["hang"], "no answer in the timeout"
+    if status < 0 or status >= 128:
+        return "crash", ["crash"], "signal %d" % (-status if status < 0 else status - 128)
+    lines = [x for x in stderr.splitlines() if x.strip()]
+    written = any(os.scandir(folder))
+    if status in (1, 2):
+        breaks = []
+        if status == 1 and option.lstrip("-") not in stderr:
+            breaks.append("usage_without_option")
+        if status == 2 and not any(line.startswith("error:") for line in lines):
+            breaks.append("refusal_without_path")
+        if written:
+            breaks.append("written_on_refusal")
+        return "refused", breaks, "output written" if written else None
+    if status == 3:
+        if not any(line.startswith("error:") for line in lines):
+            return "failed", ["failure_without_message"], "exit 3 without an error: line"
+        if any(UNEXPECTED in line for line in lines):
+            return "failed", ["unexpected_failure"], "an error no check caught"
+        return "failed", [], None
+    if status == 0:
+        bad = nonfinite_in_outputs(folder, stdout, names_output)
+        return "completed", ["silent_nonfinite"] if bad else [], bad
+    return "other", ["other_exit"], "exit %d" % status
+
+
+def sweep_options(args, repo):
+    """--options: every value option of every command, each value of OPTION_VALUES."""
+    work = tempfile.mkdtemp(prefix="pound_options_")
+    root = make_tree(work, repo)
+    cases = []
+    for key, base in OPTION_BASES.items():
+        base = [os.path.join(root, a) if os.path.exists(os.path.join(root, a)) else a for a in base]
+        for option, needs, names_output in value_options(args.binary, base):
+            needs = [os.path.join(root, a) if os.path.exists(os.path.join(root, a)) else a for a in needs]
+            for value in OPTION_VALUES:
+                cases.append((key, option, names_output, value,
+                              option_argv(args.binary, key, base, option, needs, value)))
+    random.Random("options:%s" % args.seed).shuffle(cases)
+    start = time.monotonic()
+    lock = threading.Lock()
+    pending = list(reversed(cases))
+
+    def worker():
+        out = []
+        while True:
+            with lock:
+                if not pending or time.monotonic() - start >= args.budget_seconds or (
+                        args.limit and len(cases) - len(pending) >= args.limit):
+                    return out
+                key, option, names_output, value, argv = pending.pop()
+            folder = tempfile.mkdtemp(dir=work, prefix="run_")
+            status, stdout, stderr = None, "", ""
+            try:
+                proc = subprocess.run(argv, cwd=folder, capture_output=True, timeout=args.timeout,
+                                      preexec_fn=limit_memory(int(args.memory_gb * 2**30)))
+                status = proc.returncode
+                stdout = proc.stdout.decode("utf-8", "replace")
+                stderr = proc.stderr.decode("utf-8", "replace")
+            except subprocess.TimeoutExpired:
+                pass
+            outcome, breaks, detail = classify_option_run(option, names_output, status, stdout,
+                                                          stderr, folder)
+            lines = [x for x in stderr.strip().splitlines() if x.strip()]
+            result = {"command": key, "option": option, "value": value, "outcome": outcome,
+                      "breaks": breaks, "exit": status, "detail": detail,
+                      "stderr_last": lines[-1] if lines else "",
+                      "replay": " ".join(repr(a) if a == "" or " " in a else a for a in argv)}
+            if args.verbose and breaks:
+                print("BREAK %s %s %s=%r: exit %s: %s" % (",".join(breaks), key, option, value, status,
+                                                          result["stderr_last"] or detail), flush=True)
+            shutil.rmtree(folder, ignore_errors=True)
+            out.append(result)
+
+    try:
+        with ThreadPoolExecutor(max_workers=args.jobs) as pool:
+            parts = [pool.submit(worker) for _ in range(args.jobs)]
+            results = [r for p in parts for r in p.result()]
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+    counts = {"runs": len(results), "of": len(cases)}
+    for outcome in ("refused", "failed", "completed"):
+        counts[outcome] = sum(1 for r in results if r["outcome"] == outcome and not r["breaks"])
+    for c in BREAK_CLASSES:
+        counts[c] = sum(1 for r in results if c in r["breaks"])
+    options = sorted({(r["command"], r["option"]) for r in results})
+    print("pound option sweep: seed %d, %.0f s, %d of %d runs (%d options of %d commands), binary %s" % (
+        args.seed, time.monotonic() - start, len(results), len(cases), len(options),
+        len({c for c, _ in options}), args.binary))
+    print("  refused (exit 1, 2)   %6d" % counts["refused"])
+    print("  failed loudly (3)     %6d" % counts["failed"])
+    print("  completed finite (0)  %6d" % counts["completed"])
+    print("contract breaks:")
+    for c in BREAK_CLASSES:
+        if counts[c] or c in ("crash", "hang", "silent_nonfinite", "usage_without_option"):
+            print("  %-24s%6d" % (c, counts[c]))
+    broken = [r for r in results if r["breaks"]]
+    for r in broken[:40]:
+        print("  %s: %s (%s)\n      %s" % (",".join(r["breaks"]), r["stderr_last"] or "(no stderr)",
+                                          r["detail"] or "exit %s" % r["exit"], r["replay"]))
+    if args.report:
+        with open(args.report, "w") as f:
+            json.dump({"seed": args.seed, "binary": args.binary, "counts": counts,
+                       "results": results}, f, indent=1)
+    return 1 if broken and not args.report_only else 0
+
+
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
     repo = os.path.dirname(here)
@@ -522,11 +733,15 @@ def main():
     ap.add_argument("--keep", help="save each mutant that breaks the contract into this folder")
     ap.add_argument("--report-only", action="store_true", help="exit 0 even when the contract breaks")
     ap.add_argument("--verbose", action="store_true", help="print every contract break as found")
+    ap.add_argument("--options", action="store_true",
+                    help="sweep every command's options with extreme values instead of the files")
     args = ap.parse_args()
     args.binary = os.path.abspath(args.binary)
     if not os.access(args.binary, os.X_OK):
         print("mutate.py: %s is not an executable (--binary)" % args.binary, file=sys.stderr)
         return 2
+    if args.options:
+        return sweep_options(args, repo)
 
     harness = Harness(args, repo)
     try:

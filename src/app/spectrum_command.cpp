@@ -276,8 +276,22 @@ io::RecordFormat record_format(const SpectrumRequest& r, const po::variables_map
     if (!(*format.time_step > 0.0) || !std::isfinite(*format.time_step))
       throw std::invalid_argument("--dt must be a positive number of seconds");
   }
-  format.units = io::parse_acceleration_unit(r.units);
+  try {
+    format.units = io::parse_acceleration_unit(r.units);
+  } catch (const std::invalid_argument& unknown) {
+    throw std::invalid_argument(std::string("--units: ") + unknown.what());
+  }
   return format;
+}
+
+// A record scaled past the number range (--scale 1e308): a usage error naming the option, which
+// is where the factor came from (the readers refuse records that overflow by themselves).
+int overflow_error(const SpectrumRequest& request, double factor, const std::string& what) {
+  std::cerr << fmt::format(
+      "pound spectrum: {} scaled by {:.3g}: {} (the factor of {} is far "
+      "beyond any ground motion's)\n",
+      request.record, factor, what, request.pga ? "--pga" : "--scale");
+  return 1;
 }
 
 // The pair's spectra: both components read alike (the second from its own file or column),
@@ -306,7 +320,14 @@ int pair_spectrum_command(const SpectrumRequest& request, io::RecordFormat forma
   const double factor = request.scale.value_or(1.0);
   model::scale(pair.first, factor);
   model::scale(pair.second, factor);
-  const PairSpectrum spectrum = pair_spectrum(pair, periods, request.damping_ratio);
+  if (!std::isfinite(pair.first.peak()) || !std::isfinite(pair.second.peak()))
+    return overflow_error(request, factor, "the pair overflows the number range");
+  PairSpectrum spectrum;
+  try {
+    spectrum = pair_spectrum(pair, periods, request.damping_ratio);
+  } catch (const std::invalid_argument& overflow) {
+    return overflow_error(request, factor, overflow.what());
+  }
   if (!request.csv.empty())
     io::write_csv_atomic(request.csv, Table{{"period", "sa1_g", "sa2_g", "geometric_mean_g",
                                              "rotd50_g", "rotd100_g", "rotd100_angle_deg"},
@@ -357,7 +378,14 @@ int spectrum_command(const Arguments& arguments) {
   model::GroundMotion motion = io::read_ground_motion(request.record, format, kStandardGravity);
   const double factor = scale_factor(request, motion);
   model::scale(motion, factor);
-  const Spectrum spectrum = response_spectrum(motion, periods, request.damping_ratio);
+  if (!std::isfinite(factor) || !std::isfinite(motion.peak()))
+    return overflow_error(request, factor, "the record overflows the number range");
+  Spectrum spectrum;
+  try {
+    spectrum = response_spectrum(motion, periods, request.damping_ratio);
+  } catch (const std::invalid_argument& overflow) {
+    return overflow_error(request, factor, overflow.what());
+  }
   if (!request.csv.empty())
     io::write_csv_atomic(request.csv,
                          Table{{"period", "sa_g", "sv_m_per_s", "sd_m"},

@@ -58,6 +58,15 @@ double pair_factor(const ExcitationPlace& place, const model::GroundMotionPair& 
   return target / rot_d50;
 }
 
+// A factor that makes a record overflow (a PGA of 1e308 g) leaves no motion to analyse: the run
+// would only fail at its first step with a state that is not finite.
+void check_scaled(const ExcitationPlace& place, const model::GroundMotion& motion, double factor) {
+  if (!std::isfinite(factor) || !std::isfinite(motion.peak()))
+    place.fail("/scale", fmt::format("record '{}' scaled by {:.3g} overflows the number range (a "
+                                     "factor far beyond any ground motion)",
+                                     motion.name, factor));
+}
+
 // Adds a record (already scaled) along `direction`: uniform, or moving the supports the
 // excitation names, each after its wave-passage delay.
 void add_component(const ExcitationPlace& place, model::GroundMotion motion,
@@ -122,6 +131,7 @@ std::vector<double> resolve_excitations(
       const double factor = record_factor(place, motions[k], gravity) * e.extra_factor;
       model::GroundMotion motion = motions[k];
       model::scale(motion, factor);
+      check_scaled(place, motion, factor);
       factors.push_back(factor);
       add_component(place, std::move(motion), model::to_coordinates(e.direction), model);
       continue;
@@ -135,6 +145,8 @@ std::vector<double> resolve_excitations(
     const double factor = pair_factor(place, pair, gravity) * e.extra_factor;
     model::scale(pair.first, factor);
     model::scale(pair.second, factor);
+    check_scaled(place, pair.first, factor);
+    check_scaled(place, pair.second, factor);
     factors.push_back(factor);
     add_component(place, std::move(pair.first), pair_direction(*e.pair, 0), model);
     add_component(place, std::move(pair.second), pair_direction(*e.pair, 1), model);

@@ -843,6 +843,29 @@ TEST_F(Cli, SpectrumScalesTheRecordAsAskedAndSaysBy) {
   EXPECT_TRUE(contains(both.err, "give --scale or --pga, not both")) << both.err;
 }
 
+// A factor that makes the record, or its spectral accelerations, overflow is a usage error naming
+// the option, not "an unexpected failure" or inf in a completed spectrum (tools/mutate.py
+// --options found both).
+TEST_F(Cli, SpectrumRefusesAFactorThatOverflowsTheRecord) {
+  const std::string record = POUND_SOURCE_DIR "/ground_motions/synthetic_firm_01.AT2";
+  for (const std::vector<std::string>& factor : std::vector<std::vector<std::string>>{
+           {"--pga", "1e308"}, {"--scale", "1e308"}, {"--scale", "3e307"}}) {
+    std::vector<std::string> arguments = {"spectrum", record};
+    arguments.insert(arguments.end(), factor.begin(), factor.end());
+    const Outcome refused = pound(arguments);
+    EXPECT_EQ(refused.exit_code, 1) << factor[0] << " " << factor[1] << ": " << refused.err;
+    EXPECT_TRUE(contains(refused.err, "overflows the number range")) << refused.err;
+    EXPECT_TRUE(contains(refused.err, "the factor of " + factor[0])) << refused.err;
+    EXPECT_TRUE(refused.out.empty()) << refused.out;
+  }
+  const Outcome pair = pound({"spectrum", record, "--pair", record, "--scale", "1e308"});
+  EXPECT_EQ(pair.exit_code, 1) << pair.err;
+  EXPECT_TRUE(contains(pair.err, "the pair overflows the number range")) << pair.err;
+  const Outcome units = pound({"spectrum", record, "--units", "0.5"});
+  EXPECT_EQ(units.exit_code, 1);
+  EXPECT_TRUE(contains(units.err, "--units: unknown acceleration unit '0.5'")) << units.err;
+}
+
 // ---- Issue 18 item 3: the intensity measures of a record's two horizontal components ----
 
 TEST_F(Cli, SpectrumOfAPairGivesRotD50AndRotD100AsAnIndependentSolutionDoes) {
