@@ -63,15 +63,19 @@ bool newton_correction(const StaticHardContacts& hard, const StructuralSystem& s
       residual, correction);
 }
 
+// What a model with friction links is told when its loads find no equilibrium.
+std::string friction_hint(const integrators::LinkSet& links) {
+  for (Index k = 0; k < links.count(); ++k)
+    if (links.has_friction(k))
+      return "; friction holds no more than mu R_n, and a load past it slides the structure away";
+  return "";
+}
+
 SolveError mechanism(double time, const integrators::LinkSet& links) {
-  bool friction = false;
-  for (Index k = 0; k < links.count(); ++k) friction = friction || links.has_friction(k);
   return SolveError(time, fmt::format("static equilibrium: the structure is not held under the "
                                       "initial loads (a mechanism: add supports, or links in "
                                       "contact{})",
-                                      friction ? "; friction holds no more than mu R_n, and a "
-                                                 "load past it slides the structure away"
-                                               : ""));
+                                      friction_hint(links)));
 }
 
 }  // namespace
@@ -143,9 +147,10 @@ StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
       if (iteration == max_iterations)
         throw SolveError(time, fmt::format("static equilibrium under the initial loads did not "
                                            "converge in {} iterations at {} % of the loads "
-                                           "(unbalanced force {:.3g} of {:.3g})",
+                                           "(unbalanced force {:.3g} of {:.3g}{})",
                                            max_iterations, 100 * increment / increments,
-                                           std::max(result.unbalanced_force, violation), scale));
+                                           std::max(result.unbalanced_force, violation), scale,
+                                           friction_hint(links)));
       if (!newton_correction(hard, system, tangent, residual, delta, correction, multipliers))
         throw mechanism(time, links);
       const Vector start_multipliers = hard.multipliers();

@@ -478,6 +478,10 @@ TEST_F(Batch, ACaseFailingBeforeItsFirstStepFailsAlone) {
       EXPECT_NE(cell(rows, row, "reason").find("analysis failed at t = 0: static equilibrium"),
                 std::string::npos)
           << csv;
+      // Newton finds no equilibrium, and the reason names the likely cause.
+      EXPECT_NE(cell(rows, row, "reason").find("friction holds no more than mu R_n"),
+                std::string::npos)
+          << csv;
     }
   }
 }
