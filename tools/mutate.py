@@ -524,7 +524,14 @@ OPTION_BASES = {
     "pushover": ["pushover", "models/three_span_bridge.json", "--node", "bridge.g1.n2", "--to", "0.1"],
     "spectrum": ["spectrum", RECORD],
     "batch": ["batch", "sets/adjacent_buildings_pounding.json", "--quiet", "--out", "batch_out"],
+    "study rod-impact": ["study", "rod-impact", "--quick", "--repeats", "1"],
+    "study stability": ["study", "stability", "--quick"],
+    # Options whose help starts "rod-impact-2d:" or "block-belt:" are swept on that benchmark only.
+    "verify rod-impact-2d": ["verify", "rod-impact-2d"],
+    "verify block-belt": ["verify", "block-belt", "--model", "models/block_on_belt.json",
+                          "--speeds", "1", "--periods", "0.5"],
 }
+BENCHMARK_PREFIX = re.compile(r"^(rod-impact-2d|block-belt):")
 # What an option needs beside it to be read at all (help texts that start "--motion:" need
 # --motion, which is found from the text).
 OPTION_NEEDS = {
@@ -537,12 +544,14 @@ OPTION_NEEDS = {
     ("verify rod-impact", "--eta"): ["--law", "extended_penalty"],
 }
 HELP_OPTION = re.compile(r"^  (?:-\w \[ )?(--[a-z][a-z0-9-]*)(?: \])? arg\b")
-NONFINITE_TEXT = re.compile(r"(?<![\w.])[-+]?(nan|inf|infinity)(?![\w])", re.IGNORECASE)
+# A value printed as one: a word of its own (a legend's "(NaN/Inf or ...)" is not).
+NONFINITE_TEXT = re.compile(r"(?:^|(?<=[\s=,:]))[-+]?(nan|inf|infinity)(?=[\s,]|$)",
+                            re.IGNORECASE | re.MULTILINE)
 
 
 def value_options(binary, base):
     """(option, needs, names_output) of every option of base's command that takes a value, from its --help."""
-    command = base[:2] if base[0] == "verify" else base[:1]
+    command = base[:2] if base[0] in ("verify", "study") else base[:1]
     text = subprocess.run([binary] + command + ["--help"], capture_output=True, text=True).stdout
     found = []
     for line in text.splitlines():
@@ -553,6 +562,10 @@ def value_options(binary, base):
         needs = ["--motion", RECORD] if described.startswith("--motion:") else []
         # An output's name is printed back ("-> inf/"): stdout is no evidence there.
         names_output = re.search(r"\b(folder|write)", described) is not None
+        benchmark = BENCHMARK_PREFIX.match(described)
+        if base[0] == "verify" and (benchmark.group(1) if benchmark else None) != (
+                base[1] if BENCHMARK_PREFIX.match(base[1] + ":") else None):
+            continue  # another benchmark's option (verify refuses it: its base sweeps that)
         found.append((m.group(1), needs, names_output))
     return found
 

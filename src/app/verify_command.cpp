@@ -129,7 +129,7 @@ void add_verify_options(po::options_description& description, VerifyOptions& opt
       "speeds", po::value(&options.speeds),
       "block-belt: comma-separated values of Pi (default: 1e-3 ... 1e8)")(
       "periods", po::value(&options.periods)->default_value(options.periods),
-      "block-belt: run length in spring periods 2 pi sqrt(m / k_s)")(
+      "block-belt: run length in spring periods 2 pi sqrt(m / k_s), at most 1000")(
       "out", po::value(&options.out_folder), "block-belt: folder for the sweep and history CSVs")(
       "study", po::value(&options.study),
       "kawashima: Kawashima's tables over k_I, n and dt; penalty: Suzuki & Toi's alpha0-only and "
@@ -210,8 +210,11 @@ int verify_block_belt(const VerifyOptions& options) {
     if (!given) return 1;
     speeds = *given;
   }
-  if (!(options.periods > 0.0) || !std::isfinite(options.periods))
-    return usage_error("--periods must be > 0");
+  if (!(options.periods > 0.0 && options.periods <= verification::kMostBlockBeltPeriods))
+    return usage_error(fmt::format(
+        "--periods must be in (0, {:g}]: the steady state settles within the default 4, and a "
+        "spring period of the bundled block is about 10^4 steps",
+        verification::kMostBlockBeltPeriods));
   const builder::ModelSpec spec = io::read_model_file(options.block_model);
   const verification::BlockBeltScene scene = verification::block_belt_scene(spec);
   verification::BlockBeltOptions run;

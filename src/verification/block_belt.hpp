@@ -35,6 +35,11 @@ struct BlockBeltScene {
 // Throws InputError naming what the model lacks.
 BlockBeltScene block_belt_scene(const builder::ModelSpec& spec);
 
+// The longest run the study takes, in spring periods: its steady state settles within the default
+// 4, and each period is about 10^4 steps, so 1,000 are some 10^7 steps per speed (minutes), where
+// 5e9 would run for years.
+inline constexpr double kMostBlockBeltPeriods = 1000.0;
+
 struct BlockBeltOptions {
   double periods = 4.0;  // run for this many spring periods 2 pi sqrt(m / k_s)
   // The steady part: the last whole spring periods in this fraction of the run (at least one).

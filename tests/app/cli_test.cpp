@@ -466,6 +466,18 @@ TEST_F(Cli, VerifyTwoElementAndRestitutionPass) {
   EXPECT_TRUE(contains(restitution.out, "bilinear_impact"));
 }
 
+// --periods 5e9 would run the block on its belt for years (tools/mutate.py --options found it as a
+// hang): the run length is bounded, and the bound named.
+TEST_F(Cli, VerifyBlockBeltRefusesARunOfYears) {
+  for (const std::string periods : {"5e9", "1001", "0", "-1"}) {
+    const Outcome refused =
+        pound({"verify", "block-belt", "--model", POUND_SOURCE_DIR "/models/block_on_belt.json",
+               "--speeds", "1", "--periods", periods});
+    EXPECT_EQ(refused.exit_code, 1) << periods << ": " << refused.err;
+    EXPECT_TRUE(contains(refused.err, "--periods must be in (0, 1000]")) << refused.err;
+  }
+}
+
 }  // namespace
 
 namespace {

@@ -4,7 +4,7 @@
 # invocation: a usage error naming the option (exit 1), a refusal or loud failure with an "error:"
 # line (2, 3; nothing written on 1 or 2) or finite results (0). A crash, a hang, a NaN in a
 # completed result, "an unexpected failure" or another exit code fails the test. The whole sweep
-# takes about 25 s on two cores; the budget bounds it on a slower machine.
+# takes about 40 s on two cores; the budget bounds it on a slower machine.
 # usage: mutate_options_test.sh POUND_BINARY REPO_ROOT [BUDGET_SECONDS]
 set -euo pipefail
 if [ $# -lt 2 ]; then
