@@ -32,6 +32,14 @@ def _plain(value, name, path):
                                  f"dict), got {type(value).__name__}")
 
 
+def integer(value, where):
+    """An integer argument (Python or NumPy) as int; a float is refused, not cut (max_steps=3.5
+    would run 3 steps), as the program refuses --max-steps 3.5; so is a bool."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise InputError("", where, f"expected an integer, got {value!r}")
+    return int(value)
+
+
 def to_json(document, name):
     """JSON text of a dict for the readers of model and set files; `name` names it in errors."""
     if not isinstance(document, dict):

@@ -3,7 +3,7 @@
 import os
 
 from pound import _core
-from pound._documents import to_json
+from pound._documents import integer, to_json
 from pound.errors import AnalysisError, InputError
 from pound.model import Model
 from pound.record import Record
@@ -41,7 +41,7 @@ def run(model, record=None, out=None, *, max_steps=0, time_limit=0.0, histories=
         raise InputError("", "record", f"expected a pound.Record, got {type(record).__name__}")
     text, path = model._arguments()
     core = _core.run(text, path, None if record is None else record._motion(),
-                     None if out is None else os.fspath(out), int(max_steps), float(time_limit),
+                     None if out is None else os.fspath(out), integer(max_steps, "max_steps"), float(time_limit),
                      bool(histories))
     result = Result(core)
     if check and not result.completed:
@@ -61,7 +61,7 @@ def batch(set, out, *, jobs=0, resume=False):
         text, path = to_json(set, "<dict>"), "<dict>"
     else:
         text, path = None, os.fspath(set)
-    report = _core.batch(text, path, out, int(jobs), bool(resume))
+    report = _core.batch(text, path, out, integer(jobs, "jobs"), bool(resume))
     report["summary"] = os.path.join(out, "batch_summary.csv")
     report["statistics"] = os.path.join(out, "batch_stats.json")
     return report

@@ -140,6 +140,23 @@ def test_wrong_arguments_are_input_errors_naming_them(models):
     assert raised.value.path == "record" and "pound.Record" in raised.value.message
 
 
+def test_a_count_given_as_a_fraction_is_refused_not_cut(models, repository, tmp_path):
+    # max_steps=3.5 ran 3 steps; the program refuses --max-steps 3.5.
+    model = pound.Model.from_file(models / "two_sdof_girders.json")
+    record = repository / "ground_motions" / "synthetic_firm_01.AT2"
+    calls = {"max_steps": lambda v: pound.run(model, max_steps=v, histories=False),
+             "count": lambda v: model.modes(count=v),
+             "column": lambda v: pound.Record.from_file(record, column=v),
+             "jobs": lambda v: pound.batch({"models": [], "records": []}, tmp_path / "b", jobs=v)}
+    for where, call in calls.items():
+        for value in (3.5, True, float("nan"), "2"):
+            with pytest.raises(pound.InputError) as raised:
+                call(value)
+            print(raised.value)
+            assert raised.value.path == where and "expected an integer" in raised.value.message
+    assert pound.run(model, max_steps=np.int64(3), histories=False, check=False).summary["steps"] == 3
+
+
 def test_results_hold_tables_units_and_a_data_frame(models):
     result = pound.run(models / "adjacent_buildings_outputs.json")
     assert result.completed and result.warnings == result.summary.get("warnings", [])
