@@ -88,6 +88,7 @@ PreparedRun prepare(const RunRequest& request) {
   run.observers = std::make_unique<results::RunObservers>(built, *run.system, request.histories);
   results::check_histories_fit(run.observers->recorders(), built.analysis,
                                io::available_memory_bytes(), model_path);
+  results::reserve_histories(run.observers->recorders(), built.analysis);
   run.verification =
       verification::RodImpactObserver::attach(built, run.system->dofs(), run.system->links());
   if (run.verification) run.observers->add(*run.verification);
@@ -340,7 +341,7 @@ RunOutcome summarise(const RunRequest& request, const PreparedRun& run, const So
   outcome.failure_time = summary.status.end_time;
   for (std::size_t k = 0; k < run.observers->recorders().size(); ++k) {
     const auto& recorder = run.observers->recorders()[k];
-    outcome.histories.emplace_back(recorder->file(), recorder->table());
+    outcome.histories.emplace_back(recorder->file(), recorder->take_table());
     const builder::ResolvedRecorder& spec = built.recorders.at(k);
     outcome.recorded.push_back({spec.kind, spec.envelope});
   }

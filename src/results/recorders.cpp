@@ -151,11 +151,24 @@ void HistoryRecorder::record(const integrators::State& state) {
   for (std::size_t c = 0; c < row_.size(); ++c) table_.values[c + 1].push_back(row_[c]);
 }
 
+// The rows kept after `steps` steps over `duration`.
+double HistoryRecorder::rows_after(double steps, double duration) const {
+  return sampling_.interval > 0.0 ? std::min(steps, std::floor(duration / sampling_.interval) + 1.0)
+                                  : std::ceil(steps / sampling_.every);
+}
+
 double HistoryRecorder::held_values(double steps, double duration) const {
-  const double rows = sampling_.interval > 0.0
-                          ? std::min(steps, std::floor(duration / sampling_.interval) + 1.0)
-                          : std::ceil(steps / sampling_.every);
-  return rows * static_cast<double>(table_.columns.size());
+  return rows_after(steps, duration) * static_cast<double>(table_.columns.size());
+}
+
+// At most 2^26 values (512 MiB) ahead: the memory check has passed the whole, but a run may stop
+// early, and an adaptive step may take fewer steps than the first step's size says.
+void HistoryRecorder::reserve(double steps, double duration) {
+  constexpr double kMostReserved = 67108864.0;
+  const double columns = static_cast<double>(table_.columns.size());
+  const double rows = std::min(rows_after(steps, duration), kMostReserved / columns);
+  if (!(rows > 0.0)) return;
+  for (std::vector<double>& column : table_.values) column.reserve(static_cast<std::size_t>(rows));
 }
 
 EnvelopeRecorder::EnvelopeRecorder(std::string file, std::unique_ptr<Quantities> quantities,

@@ -22,10 +22,15 @@ class Recorder : public Observer {
  public:
   virtual ~Recorder() = default;
   virtual Table table() const = 0;  // what is written
+  // The table, moved out once the run is over (no copy of a history for its writer).
+  virtual Table take_table() { return table(); }
   virtual const std::string& file() const = 0;
   // The values it holds after `steps` steps over `duration` [T], for the memory check; 0 for a
   // recorder of constant size.
   virtual double held_values(double steps, double duration) const = 0;
+  // Room for the values it will hold after `steps` steps over `duration` [T], before the run:
+  // a history that grows by doubling copies itself and faults in fresh pages as it goes.
+  virtual void reserve(double /*steps*/, double /*duration*/) {}
 };
 
 // The quantities a recorder takes from each state, with their column names and what each
@@ -120,12 +125,15 @@ class HistoryRecorder final : public Recorder {
                   builder::OutputSampling sampling = {}, const UnitNames& units = {});
   void record(const integrators::State& state) override;
   Table table() const override { return table_; }
+  Table take_table() override { return std::move(table_); }
   const Table& history() const { return table_; }
   const std::string& file() const override { return file_; }
   double held_values(double steps, double duration) const override;
+  void reserve(double steps, double duration) override;
 
  private:
   bool due(double time);
+  double rows_after(double steps, double duration) const;
 
   std::string file_;
   std::unique_ptr<Quantities> quantities_;

@@ -451,15 +451,28 @@ std::optional<double> RunObservers::base_moment(std::size_t monitor) const {
   return rows->peak_moment;
 }
 
+namespace {
+// The states a fixed-step run records: the start and each step.
+double recorded_states(const builder::AnalysisSpec& analysis) {
+  return std::ceil(analysis.duration / analysis.time_step) + 1.0;
+}
+}  // namespace
+
+void reserve_histories(const std::vector<std::unique_ptr<Recorder>>& recorders,
+                       const builder::AnalysisSpec& analysis) {
+  const double steps = recorded_states(analysis);
+  for (const auto& recorder : recorders) recorder->reserve(steps, analysis.duration);
+}
+
 void check_histories_fit(const std::vector<std::unique_ptr<Recorder>>& recorders,
                          const builder::AnalysisSpec& analysis,
                          std::optional<std::size_t> available, const std::string& model_path) {
-  const double steps = std::ceil(analysis.duration / analysis.time_step) + 1.0;
+  const double steps = recorded_states(analysis);
   double values = 0.0;
   for (const auto& recorder : recorders) values += recorder->held_values(steps, analysis.duration);
   if (values == 0.0) return;
-  // 8 bytes per value held, 8 in the table handed to the writer, up to 24 of decimal text (every
-  // table's text is formatted before any is written).
+  // 8 bytes per value held, up to 24 of decimal text (every table's text is formatted before any
+  // is written), and a margin of 8 (a history that outgrows its reserved room doubles).
   const double needed = 40.0 * values;
   constexpr double gib = 1024.0 * 1024.0 * 1024.0;
   if (available && needed > static_cast<double>(*available))

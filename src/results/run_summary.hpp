@@ -72,12 +72,15 @@ class RunObservers {
   std::vector<Observer*> extra_;
 };
 
-// The histories of `recorders` held until the run ends need about 3 x 8 bytes per value (tables
-// grow by doubling and are copied once for writing): refuse a run whose histories would not fit
-// in `available` bytes, before it starts.
+// The histories of `recorders` held until the run ends need 8 bytes per value and their text up to
+// 24 more (every table is formatted before any is written), counted with a margin as 40: refuse
+// a run whose histories would not fit in `available` bytes, before it starts.
 void check_histories_fit(const std::vector<std::unique_ptr<Recorder>>& recorders,
                          const builder::AnalysisSpec& analysis,
                          std::optional<std::size_t> available, const std::string& model_path);
+// Room in each history for the whole run (Recorder::reserve), once it fits.
+void reserve_histories(const std::vector<std::unique_ptr<Recorder>>& recorders,
+                       const builder::AnalysisSpec& analysis);
 
 // How the run ended.
 struct RunStatus {
