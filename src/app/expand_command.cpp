@@ -7,6 +7,7 @@
 #include "app/command_line.hpp"
 #include "app/commands.hpp"
 #include "builder/generators.hpp"
+#include "core/errors.hpp"
 #include "io/model_reader.hpp"
 #include "io/model_writer.hpp"
 #include "io/output.hpp"
@@ -58,7 +59,12 @@ int expand_command(const Arguments& arguments) {
     std::cerr << "pound expand: name a model file (see `pound expand --help`)\n";
     return 1;
   }
-  builder::ModelSpec expanded = builder::expand(io::read_model_file(model_path));
+  builder::ModelSpec expanded;
+  try {
+    expanded = builder::expand(io::read_model_file(model_path));
+  } catch (const InputError& error) {  // a generator's error names its path; the file is ours
+    throw error.file().empty() ? error.in_file(model_path) : error;
+  }
   if (out.empty()) {
     std::cout << io::model_to_json(expanded);
     return 0;

@@ -107,7 +107,8 @@ std::array<double, 2> plan_centre(const AdjacentBuildingsSpec& pair, int side, b
   return {pair.separation + 0.5 * pair.right.plan[0], pair.offset};
 }
 
-Building make_building(const AdjacentBuildingsSpec& pair, int side, bool space) {
+Building make_building(const AdjacentBuildingsSpec& pair, int side, bool space,
+                       const std::string& source) {
   const BuildingSpec& spec = side == 0 ? pair.left : pair.right;
   const std::string name = fmt::format("{}.{}", pair.id, kPairSides[side]);
   Building building{.pair = pair,
@@ -124,7 +125,7 @@ Building make_building(const AdjacentBuildingsSpec& pair, int side, bool space) 
     // 1e-300 kg) overflow the modes' frequencies; the damping would make every storey's force NaN.
     if (!std::isfinite((*building.rayleigh)[0]) || !std::isfinite((*building.rayleigh)[1]))
       throw InputError(
-          "",
+          source,
           fmt::format("/generators/{}/{}/damping_ratio", pair.generator_index, kPairSides[side]),
           "the building's first two modes, which set its Rayleigh damping, are not "
           "finite numbers: its floor masses and storey stiffnesses are further apart "
@@ -458,8 +459,8 @@ std::string building_node_id(const AdjacentBuildingsSpec& pair, int side, int fl
 
 void add_adjacent_buildings(const AdjacentBuildingsSpec& pair, ModelSpec& out) {
   const bool space = out.dimension == 3;
-  const std::array<Building, 2> buildings{make_building(pair, 0, space),
-                                          make_building(pair, 1, space)};
+  const std::array<Building, 2> buildings{make_building(pair, 0, space, out.source),
+                                          make_building(pair, 1, space, out.source)};
   const std::vector<double> contacts = contact_heights(buildings);
   for (const Building& building : buildings) add_building(building, contacts, out);
   add_pounding_links(pair, buildings, contacts, out);

@@ -466,6 +466,23 @@ TEST_F(Cli, VerifyTwoElementAndRestitutionPass) {
   EXPECT_TRUE(contains(restitution.out, "bilinear_impact"));
 }
 
+// A generator's refusal names the file in every command: `pound expand` printed the JSON path
+// alone for a building whose floor masses overflow its modes (tools/mutate.py found it).
+TEST_F(Cli, AGeneratorsRefusalNamesTheFileInEveryCommand) {
+  const std::string model = POUND_SOURCE_DIR
+      "/tests/corpus/bad_inputs/155_floor_mass_beyond_double_precision_with_damping.json";
+  const fs::path never = path("never");
+  for (const std::string command : {"expand", "run", "check", "modes"}) {
+    const Outcome refused = command == "expand" || command == "run"
+                                ? pound({command, model, "--out", never.string()})
+                                : pound({command, model});
+    EXPECT_EQ(refused.exit_code, 2) << command << ": " << refused.err;
+    EXPECT_TRUE(contains(refused.err, "error: " + model + ": /generators/0/right/damping_ratio: "))
+        << command << ": " << refused.err;
+  }
+  EXPECT_FALSE(fs::exists(never));
+}
+
 // --periods 5e9 would run the block on its belt for years (tools/mutate.py --options found it as a
 // hang): the run length is bounded, and the bound named.
 TEST_F(Cli, VerifyBlockBeltRefusesARunOfYears) {
