@@ -550,21 +550,26 @@ NONFINITE_TEXT = re.compile(r"(?:^|(?<=[\s=,:]))[-+]?(nan|inf|infinity)(?=[\s,]|
 
 
 def value_options(binary, base):
-    """(option, needs, names_output) of every option of base's command that takes a value, from its --help."""
+    """(option, needs, names_output) of every option of base's command that takes a value, from
+    its --help."""
     command = base[:2] if base[0] in ("verify", "study") else base[:1]
     text = subprocess.run([binary] + command + ["--help"], capture_output=True, text=True).stdout
+    # The benchmark whose own options this base sweeps (None: rod-impact's and the shared ones).
+    own = base[1] if base[0] == "verify" and BENCHMARK_PREFIX.match(base[1] + ":") else None
+    lines = text.splitlines()
     found = []
-    for line in text.splitlines():
+    for k, line in enumerate(lines):
         m = HELP_OPTION.match(line)
         if not m or m.group(1) == "--help":
             continue
         described = re.sub(r"^\s*\(=[^)]*\)", "", line[m.end():]).strip()
+        if not described and k + 1 < len(lines):  # a long default pushes it to the next line
+            described = lines[k + 1].strip()
         needs = ["--motion", RECORD] if described.startswith("--motion:") else []
         # An output's name is printed back ("-> inf/"): stdout is no evidence there.
         names_output = re.search(r"\b(folder|write)", described) is not None
         benchmark = BENCHMARK_PREFIX.match(described)
-        if base[0] == "verify" and (benchmark.group(1) if benchmark else None) != (
-                base[1] if BENCHMARK_PREFIX.match(base[1] + ":") else None):
+        if base[0] == "verify" and (benchmark.group(1) if benchmark else None) != own:
             continue  # another benchmark's option (verify refuses it: its base sweeps that)
         found.append((m.group(1), needs, names_output))
     return found
