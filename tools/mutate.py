@@ -325,6 +325,32 @@ def sha(path):
         return None
 
 
+def run_bounded(argv, cwd, timeout, memory_gb):
+    """(exit status or None on a timeout, stdout, stderr) of argv under the timeout and memory cap."""
+    try:
+        proc = subprocess.run(argv, cwd=cwd, capture_output=True, timeout=timeout,
+                              preexec_fn=limit_memory(int(memory_gb * 2**30)))
+    except subprocess.TimeoutExpired as e:
+        return None, "", (e.stderr or b"").decode("utf-8", "replace")
+    return proc.returncode, proc.stdout.decode("utf-8", "replace"), proc.stderr.decode("utf-8", "replace")
+
+
+def classify_abnormal(status, lines):
+    """(outcome, [break classes], detail) of a hang, a crash or an exit 3; None for the others."""
+    if status is None:
+        return "hang", ["hang"], "no answer in the timeout"
+    if status < 0 or status >= 128:
+        sig = -status if status < 0 else status - 128
+        return "crash", ["crash"], "signal %d" % sig
+    if status == 3:
+        if not any(line.startswith("error:") for line in lines):
+            return "failed", ["failure_without_message"], "exit 3 without an error: line"
+        if any(UNEXPECTED in line for line in lines):
+            return "failed", ["unexpected_failure"], "an error no check caught"
+        return "failed", [], None
+    return None
+
+
 def make_tree(dest, repo):
     """dest/root/{models,sets} (copies), dest/root/ground_motions and dest/shared (links), so
     that a mutant in dest/root/models or dest/root/sets finds its records as the original does."""
@@ -407,15 +433,7 @@ class Harness:
         else:
             timeout = max(self.args.timeout, 3 * self.baseline_time.get((input_name, command), 0) + 5)
         t0 = time.monotonic()
-        status, stdout, stderr = None, "", ""
-        try:
-            proc = subprocess.run(argv, cwd=self.root, capture_output=True, timeout=timeout,
-                                  preexec_fn=limit_memory(int(self.args.memory_gb * 2**30)))
-            status = proc.returncode
-            stdout = proc.stdout.decode("utf-8", "replace")
-            stderr = proc.stderr.decode("utf-8", "replace")
-        except subprocess.TimeoutExpired as e:
-            stderr = (e.stderr or b"").decode("utf-8", "replace")
+        status, stdout, stderr = run_bounded(argv, self.root, timeout, self.args.memory_gb)
         elapsed = time.monotonic() - t0
         outcome, breaks, detail = self.classify(command, status, stdout, stderr, out, scratch, baseline)
         if sha(path) != before:
@@ -444,12 +462,10 @@ class Harness:
 
     def classify(self, command, status, stdout, stderr, out, scratch, baseline):
         """(outcome, [break classes], detail)."""
-        if status is None:
-            return "hang", ["hang"], "no answer in the timeout"
-        if status < 0 or status >= 128:
-            sig = -status if status < 0 else status - 128
-            return "crash", ["crash"], "signal %d" % sig
         lines = [x for x in stderr.splitlines() if x.strip()]
+        abnormal = classify_abnormal(status, lines)
+        if abnormal:
+            return abnormal
         if status == 2:
             breaks, detail = [], None
             named = False
@@ -465,12 +481,6 @@ class Harness:
                 breaks.append("written_on_refusal")
                 detail = detail or "output written"
             return "refused", breaks, detail
-        if status == 3:
-            if not any(line.startswith("error:") for line in lines):
-                return "failed", ["failure_without_message"], "exit 3 without an error: line"
-            if any(UNEXPECTED in line for line in lines):
-                return "failed", ["unexpected_failure"], "an error no check caught"
-            return "failed", [], None
         if status == 0:
             learn = baseline
             if command in ("run", "batch"):
@@ -588,46 +598,26 @@ def option_argv(binary, key, base, option, needs, value):
 def nonfinite_in_outputs(folder, stdout, names_output):
     """What is not finite in stdout (unless it prints an output's name) or in the files written
     into folder, or None."""
+    # No unmutated run to learn the outputs' shapes from: finite numbers only (learn=True checks
+    # that alone).
+    shapes = Shapes()
     stripped = stdout.strip()
-    if names_output:
-        pass
-    elif stripped.startswith("{"):
-        try:
-            load_json_strict(stripped)
-        except NonFinite as e:
-            return "non-finite %s on stdout" % e
-        except ValueError:
-            return "stdout is not JSON"
-    elif NONFINITE_TEXT.search(stdout):
-        return "stdout: " + NONFINITE_TEXT.search(stdout).group(0)
-    for dirpath, _, files in os.walk(folder):
-        for name in sorted(files):
-            p = os.path.join(dirpath, name)
-            if name.endswith(".csv"):
-                bad = check_csv(p)
-            elif name.endswith(".json"):
-                with open(p, "r", errors="replace") as f:
-                    try:
-                        load_json_strict(f.read())
-                        bad = None
-                    except NonFinite as e:
-                        bad = "non-finite %s in %s" % (e, name)
-                    except ValueError:
-                        bad = name + " is not JSON"
-            else:
-                continue
+    if not names_output:
+        if stripped.startswith("{"):
+            bad = check_json_text(stripped, "stdout", shapes, True)
             if bad:
                 return bad
-    return None
+        elif NONFINITE_TEXT.search(stdout):
+            return "stdout: " + NONFINITE_TEXT.search(stdout).group(0)
+    return check_folder(folder, shapes, True, False)
 
 
 def classify_option_run(option, names_output, status, stdout, stderr, folder):
     """(outcome, [break classes], detail) of one option's run in its own folder."""
-    if status is None:
-        return "hang", ["hang"], "no answer in the timeout"
-    if status < 0 or status >= 128:
-        return "crash", ["crash"], "signal %d" % (-status if status < 0 else status - 128)
     lines = [x for x in stderr.splitlines() if x.strip()]
+    abnormal = classify_abnormal(status, lines)
+    if abnormal:
+        return abnormal
     written = any(os.scandir(folder))
     if status in (1, 2):
         breaks = []
@@ -638,12 +628,6 @@ def classify_option_run(option, names_output, status, stdout, stderr, folder):
         if written:
             breaks.append("written_on_refusal")
         return "refused", breaks, "output written" if written else None
-    if status == 3:
-        if not any(line.startswith("error:") for line in lines):
-            return "failed", ["failure_without_message"], "exit 3 without an error: line"
-        if any(UNEXPECTED in line for line in lines):
-            return "failed", ["unexpected_failure"], "an error no check caught"
-        return "failed", [], None
     if status == 0:
         bad = nonfinite_in_outputs(folder, stdout, names_output)
         return "completed", ["silent_nonfinite"] if bad else [], bad
@@ -654,11 +638,14 @@ def sweep_options(args, repo):
     """--options: every value option of every command, each value of OPTION_VALUES."""
     work = tempfile.mkdtemp(prefix="pound_options_")
     root = make_tree(work, repo)
+    def in_tree(words):  # paths of the repository as the mirror tree's
+        return [os.path.join(root, w) if os.path.exists(os.path.join(root, w)) else w for w in words]
+
     cases = []
     for key, base in OPTION_BASES.items():
-        base = [os.path.join(root, a) if os.path.exists(os.path.join(root, a)) else a for a in base]
+        base = in_tree(base)
         for option, needs, names_output in value_options(args.binary, base):
-            needs = [os.path.join(root, a) if os.path.exists(os.path.join(root, a)) else a for a in needs]
+            needs = in_tree(needs)
             for value in OPTION_VALUES:
                 cases.append((key, option, names_output, value,
                               option_argv(args.binary, key, base, option, needs, value)))
@@ -676,15 +663,7 @@ def sweep_options(args, repo):
                     return out
                 key, option, names_output, value, argv = pending.pop()
             folder = tempfile.mkdtemp(dir=work, prefix="run_")
-            status, stdout, stderr = None, "", ""
-            try:
-                proc = subprocess.run(argv, cwd=folder, capture_output=True, timeout=args.timeout,
-                                      preexec_fn=limit_memory(int(args.memory_gb * 2**30)))
-                status = proc.returncode
-                stdout = proc.stdout.decode("utf-8", "replace")
-                stderr = proc.stderr.decode("utf-8", "replace")
-            except subprocess.TimeoutExpired:
-                pass
+            status, stdout, stderr = run_bounded(argv, folder, args.timeout, args.memory_gb)
             outcome, breaks, detail = classify_option_run(option, names_output, status, stdout,
                                                           stderr, folder)
             lines = [x for x in stderr.strip().splitlines() if x.strip()]

@@ -63,7 +63,8 @@ class Model:
         """The first ``count`` modes (``pound modes --json``): a dict with "modes" (period,
         frequency, effective mass ratios), "shapes" (an array, a row per free DOF, a column per
         mode, largest component +1) and "dofs" (each row's label, e.g. "girder_1.u_x")."""
-        document, shapes, labels = _core.model_modes(self._text, self._path, integer(count, "count"))
+        document, shapes, labels = _core.model_modes(self._text, self._path,
+                                                     integer(count, "count"))
         modes = json.loads(document)
         modes["shapes"] = np.asarray(shapes)
         modes["dofs"] = list(labels)

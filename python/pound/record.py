@@ -64,7 +64,8 @@ class Record:
         path = os.fspath(path)
         column = column if column is not None else (2 if time_column else 1)
         record = cls.__new__(cls)
-        name, step, values, sha1, read_as = _core.read_record(path, format, units, integer(column, "column"), dt,
+        name, step, values, sha1, read_as = _core.read_record(path, format, units,
+                                                              integer(column, "column"), dt,
                                                               bool(time_column))
         record.name, record.units, record.path = name, units, path
         record.scale = _scale(scale, path)

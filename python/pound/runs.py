@@ -41,8 +41,8 @@ def run(model, record=None, out=None, *, max_steps=0, time_limit=0.0, histories=
         raise InputError("", "record", f"expected a pound.Record, got {type(record).__name__}")
     text, path = model._arguments()
     core = _core.run(text, path, None if record is None else record._motion(),
-                     None if out is None else os.fspath(out), integer(max_steps, "max_steps"), float(time_limit),
-                     bool(histories))
+                     None if out is None else os.fspath(out), integer(max_steps, "max_steps"),
+                     float(time_limit), bool(histories))
     result = Result(core)
     if check and not result.completed:
         raise AnalysisError(result.failure_time, result.failure, result)

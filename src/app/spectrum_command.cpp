@@ -2,6 +2,7 @@
 
 #include <boost/program_options.hpp>
 #include <cmath>
+#include <initializer_list>
 #include <iostream>
 #include <numbers>
 #include <optional>
@@ -284,14 +285,28 @@ io::RecordFormat record_format(const SpectrumRequest& r, const po::variables_map
   return format;
 }
 
-// A record scaled past the number range (--scale 1e308): a usage error naming the option, which
-// is where the factor came from (the readers refuse records that overflow by themselves).
-int overflow_error(const SpectrumRequest& request, double factor, const std::string& what) {
+// What `compute` gives for `scaled` (the record or a pair's components, scaled by `factor`), or
+// nothing after a usage error naming the option the factor came from, where it made them or their
+// spectral accelerations overflow (--scale 1e308; the readers refuse records that overflow by
+// themselves). `what`: the record or the pair, for the message.
+template <typename Compute>
+auto spectrum_unless_overflow(const SpectrumRequest& request, double factor, const char* what,
+                              std::initializer_list<const model::GroundMotion*> scaled,
+                              Compute compute) -> std::optional<decltype(compute())> {
+  std::string overflow;
+  for (const model::GroundMotion* motion : scaled)
+    if (!std::isfinite(factor) || !std::isfinite(motion->peak()))
+      overflow = fmt::format("{} overflows the number range", what);
+  if (overflow.empty()) try {
+      return compute();
+    } catch (const std::invalid_argument& error) {
+      overflow = error.what();
+    }
   std::cerr << fmt::format(
-      "pound spectrum: {} scaled by {:.3g}: {} (the factor of {} is far "
-      "beyond any ground motion's)\n",
-      request.record, factor, what, request.pga ? "--pga" : "--scale");
-  return 1;
+      "pound spectrum: {} scaled by {:.3g}: {} (the factor of {} is far beyond any ground "
+      "motion's)\n",
+      request.record, factor, overflow, request.pga ? "--pga" : "--scale");
+  return std::nullopt;
 }
 
 // The pair's spectra: both components read alike (the second from its own file or column),
@@ -320,14 +335,11 @@ int pair_spectrum_command(const SpectrumRequest& request, io::RecordFormat forma
   const double factor = request.scale.value_or(1.0);
   model::scale(pair.first, factor);
   model::scale(pair.second, factor);
-  if (!std::isfinite(pair.first.peak()) || !std::isfinite(pair.second.peak()))
-    return overflow_error(request, factor, "the pair overflows the number range");
-  PairSpectrum spectrum;
-  try {
-    spectrum = pair_spectrum(pair, periods, request.damping_ratio);
-  } catch (const std::invalid_argument& overflow) {
-    return overflow_error(request, factor, overflow.what());
-  }
+  const std::optional<PairSpectrum> computed =
+      spectrum_unless_overflow(request, factor, "the pair", {&pair.first, &pair.second},
+                               [&] { return pair_spectrum(pair, periods, request.damping_ratio); });
+  if (!computed) return 1;
+  const PairSpectrum& spectrum = *computed;
   if (!request.csv.empty())
     io::write_csv_atomic(request.csv, Table{{"period", "sa1_g", "sa2_g", "geometric_mean_g",
                                              "rotd50_g", "rotd100_g", "rotd100_angle_deg"},
@@ -378,14 +390,11 @@ int spectrum_command(const Arguments& arguments) {
   model::GroundMotion motion = io::read_ground_motion(request.record, format, kStandardGravity);
   const double factor = scale_factor(request, motion);
   model::scale(motion, factor);
-  if (!std::isfinite(factor) || !std::isfinite(motion.peak()))
-    return overflow_error(request, factor, "the record overflows the number range");
-  Spectrum spectrum;
-  try {
-    spectrum = response_spectrum(motion, periods, request.damping_ratio);
-  } catch (const std::invalid_argument& overflow) {
-    return overflow_error(request, factor, overflow.what());
-  }
+  const std::optional<Spectrum> computed = spectrum_unless_overflow(
+      request, factor, "the record", {&motion},
+      [&] { return response_spectrum(motion, periods, request.damping_ratio); });
+  if (!computed) return 1;
+  const Spectrum& spectrum = *computed;
   if (!request.csv.empty())
     io::write_csv_atomic(request.csv,
                          Table{{"period", "sa_g", "sv_m_per_s", "sd_m"},
