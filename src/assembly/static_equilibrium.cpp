@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "assembly/static_hard_contacts.hpp"
@@ -71,11 +72,47 @@ std::string friction_hint(const integrators::LinkSet& links) {
   return "";
 }
 
-SolveError mechanism(double time, const integrators::LinkSet& links) {
-  return SolveError(time, fmt::format("static equilibrium: the structure is not held under the "
-                                      "initial loads (a mechanism: add supports, or links in "
-                                      "contact{})",
-                                      friction_hint(links)));
+// Friction that slips is friction_overload's: here it holds (or there is none), except under a
+// moving surface (`sliding`), where it slips by design and must be held.
+SolveError mechanism(double time, bool sliding) {
+  return SolveError(
+      time, fmt::format("static equilibrium: the structure is not held under the initial loads (a "
+                        "mechanism: add supports, or links in contact{})",
+                        sliding ? "; a moving surface drags what rests on it at mu R_n, which "
+                                  "supports, springs or links must hold"
+                                : ""));
+}
+
+// The links whose friction slips at mu R_n in the links' last trial state (a hard contact's: in
+// the state the active set chose), quoted and joined.
+std::string slipping_links(const StructuralSystem& system, const StaticHardContacts& hard) {
+  const integrators::LinkSet& links = system.links();
+  std::string names;
+  for (Index k = 0; k < links.count(); ++k) {
+    const links::CoulombFriction* friction = links.friction(k);
+    if (!friction) continue;
+    bool slips = friction->trial_slipping();
+    for (Index row = links.row(k) + 1; row < links.row(k) + links.rows(k); ++row)
+      slips = slips || (hard.constrains(row) && hard.slips(row));
+    if (slips) names += fmt::format("{}'{}'", names.empty() ? "" : ", ", system.link_id(k));
+  }
+  return names;
+}
+
+// Loads that no static state holds because friction slips at its limit where they push (a block
+// pushed harder than mu W): under loads applied in proportion, the limit is passed at the first
+// increment as at the last, so Newton's failure there is not one of convergence. Named with the
+// links that slip; none slip: not this failure.
+std::optional<SolveError> friction_overload(double time, const StructuralSystem& system,
+                                            const StaticHardContacts& hard) {
+  const std::string names = slipping_links(system, hard);
+  if (names.empty()) return std::nullopt;
+  return SolveError(
+      time, fmt::format("static equilibrium: the initial loads ask more of friction than it "
+                        "holds: it slips at its limit mu R_n at link(s) {} and no static state "
+                        "is found, so the structure would slide away (lower the loads, or hold "
+                        "it with supports, springs or links)",
+                        names));
 }
 
 }  // namespace
@@ -144,15 +181,23 @@ StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
       if (settled && result.unbalanced_force <= relative_tolerance * scale &&
           violation <= relative_tolerance * scale)
         break;
-      if (iteration == max_iterations)
+      if (iteration == max_iterations) {
+        if (!sliding)
+          if (std::optional<SolveError> overload = friction_overload(time, system, hard))
+            throw *overload;
         throw SolveError(time, fmt::format("static equilibrium under the initial loads did not "
                                            "converge in {} iterations at {} % of the loads "
                                            "(unbalanced force {:.3g} of {:.3g}{})",
                                            max_iterations, 100 * increment / increments,
                                            std::max(result.unbalanced_force, violation), scale,
                                            friction_hint(links)));
-      if (!newton_correction(hard, system, tangent, residual, delta, correction, multipliers))
-        throw mechanism(time, links);
+      }
+      if (!newton_correction(hard, system, tangent, residual, delta, correction, multipliers)) {
+        if (!sliding)
+          if (std::optional<SolveError> overload = friction_overload(time, system, hard))
+            throw *overload;
+        throw mechanism(time, sliding);
+      }
       const Vector start_multipliers = hard.multipliers();
       const double merit = result.unbalanced_force + violation;
       double step = 1.0;

@@ -35,6 +35,8 @@ class StaticHardContacts {
 
   bool any() const { return any_; }
   bool constrains(Index row) const;
+  // Whether friction row `row` slips (at mu lambda_n) in the state the last choose() set.
+  bool slips(Index row) const { return state_[static_cast<std::size_t>(row)] == Row::kSlip; }
   const Vector& multipliers() const { return multiplier_; }
   void set_multipliers(const Vector& multipliers) { multiplier_ = multipliers; }
   // Zeroes the hard rows of a LinkSet::set_trial force: a hard law returns what was last imposed.

@@ -714,8 +714,10 @@ StructuralSystem::StructuralSystem(const model::Model& model) : dofs_(model) {
   }
 
   std::vector<integrators::LinkSet::Link> links;
-  for (const model::Link& link : model.links)
+  for (const model::Link& link : model.links) {
     links.push_back(link_entry(dofs_, link, link.make_law(link_context(link))));
+    link_ids_.push_back(link.id);
+  }
   links_ = integrators::LinkSet(n, std::move(links));
   const std::vector<LinkRowGeometry> rows = link_row_geometry(model);
   surface_rate_ = surface_rates(rows);

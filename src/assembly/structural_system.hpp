@@ -5,6 +5,8 @@
 // -M iota a_g(t), and the links as a LinkSet. Only the free DOFs of the scene are numbered.
 #include <Eigen/SparseCore>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include "integrators/second_order_system.hpp"
 #include "model/model.hpp"
@@ -42,6 +44,8 @@ class StructuralSystem final : public integrators::SecondOrderSystem {
       double c_m, double c_c, double c_k, const Vector& link_stiffness) const override;
   integrators::LinkSet& links() override { return links_; }
   const integrators::LinkSet& links() const { return links_; }
+  // The model's id of link k (LinkSet's order), for messages.
+  const std::string& link_id(Index link) const { return link_ids_[static_cast<std::size_t>(link)]; }
 
   const model::DofMap& dofs() const { return dofs_; }
   const Vector* lumped_mass() const override;
@@ -135,6 +139,7 @@ class StructuralSystem final : public integrators::SecondOrderSystem {
   static std::unique_ptr<integrators::LinearSolver> factor_matrix(
       Eigen::SparseMatrix<double> effective);
   integrators::LinkSet links_;
+  std::vector<std::string> link_ids_;
 };
 
 }  // namespace pound::assembly

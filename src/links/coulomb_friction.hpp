@@ -102,6 +102,8 @@ class CoulombFriction {
   }
   double coefficient() const { return coefficient_; }
   bool slipping() const { return committed_slip_; }
+  // Whether the trial state slips (at mu R_n).
+  bool trial_slipping() const { return trial_slip_; }
 
  private:
   // F_c and its tangents (the flat slider), with one tangent.

@@ -95,12 +95,17 @@ TEST(StaticEquilibrium, AHardContactStopsTheMassAtTheWallAndCarriesTheRestOfTheL
 
 // A 10 kg block (weight 98.1) on a floor through a hard contact with mu = 0.5, pushed sideways
 // by P: below mu W it sticks where it stands, friction carrying P; above, nothing holds it.
-StructuralSystem block_on_floor(double push, const std::string& belt_velocity = "") {
+// `normal_law`: the floor's law (a hard contact, or a penalty); `extra`: more nodes, masses and
+// loads (a loose mass beside the block).
+constexpr const char* kHardFloor = R"({"type": "hard_contact", "restitution": 0})";
+StructuralSystem block_on_floor(double push, const std::string& belt_velocity = "",
+                                const std::string& normal_law = kHardFloor,
+                                const std::string& extra = "") {
   const std::string floor =
       belt_velocity.empty()
-          ? R"("links": [{"id": "floor", "nodes": ["block", "ground"], "axis": [0, -1],
-                          "law": {"type": "hard_contact", "restitution": 0},
-                          "friction": {"coefficient": 0.5}}],)"
+          ? fmt::format(R"("links": [{{"id": "floor", "nodes": ["block", "ground"], "axis": [0, -1],
+                          "law": {}, "friction": {{"coefficient": 0.5}}}}],)",
+                        normal_law)
           : fmt::format(R"("surfaces": [{{"id": "belt", "point": [0, 0], "normal": [0, 1],
                             "velocity": [{}, 0], "nodes": ["block"],
                             "law": {{"type": "hard_contact", "restitution": 0}},
@@ -109,22 +114,26 @@ StructuralSystem block_on_floor(double push, const std::string& belt_velocity = 
                                       "axis": [1, 0],
                                       "law": {{"type": "elastic_spring", "stiffness": 1000}}}}],)",
                         belt_velocity);
-  return StructuralSystem(builder::build(io::parse_model(fmt::format(R"({{
+  return StructuralSystem(
+      builder::build(
+          io::parse_model(fmt::format(R"({{
     "dimension": 2,
     "nodes": [{{"id": "block", "x": 0, "y": 0}}, {{"id": "ground", "x": 0, "y": 0}},
-              {{"id": "anchor", "x": -1, "y": 0}}],
-    "masses": [{{"node": "block", "mass": 10}}],
+              {{"id": "anchor", "x": -1, "y": 0}}{}],
+    "masses": [{{"node": "block", "mass": 10}}{}],
     "supports": [{{"node": "ground", "fix": ["x", "y"]}}, {{"node": "anchor", "fix": ["x", "y"]}}],
-    "loads": [{{"node": "block", "x": {}, "y": -98.1}}],
+    "loads": [{{"node": "block", "x": {}, "y": -98.1}}{}],
     {}
     "analysis": {{"time_step": 0.001, "duration": 1}}
   }})",
-                                                                     push, floor),
-                                                         "block.json"))
-                              .model);
+                                      extra.empty() ? "" : R"(, {"id": "loose", "x": 2, "y": 0})",
+                                      extra.empty() ? "" : R"(, {"node": "loose", "mass": 1})",
+                                      push, extra, floor),
+                          "block.json"))
+          .model);
 }
 
-TEST(StaticEquilibrium, ABlockOnARoughFloorSticksBelowMuWAndIsAMechanismAbove) {
+TEST(StaticEquilibrium, ABlockOnARoughFloorSticksBelowMuWAndSlidesAwayAbove) {
   StructuralSystem system = block_on_floor(30.0);
   const StaticEquilibrium solution = static_equilibrium(system, 0.0);
   const double normal = hard_force(system, 0);
@@ -137,13 +146,39 @@ TEST(StaticEquilibrium, ABlockOnARoughFloorSticksBelowMuWAndIsAMechanismAbove) {
   EXPECT_NEAR(normal, 98.1, 1e-12);
   EXPECT_NEAR(std::abs(tangential), 30.0, 1e-12);
 
-  StructuralSystem pushed_off = block_on_floor(60.0);
+  // Past mu W no static state exists: with the loads applied in proportion, friction is passed
+  // at their first tenth as at the whole, so the error names the cause and the link, whether the
+  // floor is a hard contact (the active set finds a mechanism) or a penalty (Newton cannot
+  // converge).
+  for (const std::string& law :
+       {std::string(kHardFloor),
+        std::string(R"({"type": "kelvin_voigt", "stiffness": 1e7, "damping": 2e4})")}) {
+    StructuralSystem pushed_off = block_on_floor(60.0, "", law);
+    try {
+      static_equilibrium(pushed_off, 0.0);
+      ADD_FAILURE() << "a block pushed past mu W found a static state";
+    } catch (const SolveError& error) {
+      const std::string what = error.what();
+      std::cout << "pushed by 60 > mu W on " << law << ": " << what << "\n";
+      EXPECT_NE(what.find("ask more of friction than it holds"), std::string::npos) << what;
+      EXPECT_NE(what.find("at link(s) 'floor'"), std::string::npos) << what;
+      EXPECT_EQ(what.find("did not converge"), std::string::npos) << what;
+    }
+  }
+}
+
+// A block held by friction (pushed by 30 < mu W) beside a loaded mass that nothing holds: the
+// mechanism is the loose mass's, and friction, which holds, is not blamed.
+TEST(StaticEquilibrium, AMechanismBesideAHeldBlockIsNotBlamedOnFriction) {
+  StructuralSystem system = block_on_floor(30.0, "", kHardFloor, R"(, {"node": "loose", "x": 1})");
   try {
-    static_equilibrium(pushed_off, 0.0);
-    ADD_FAILURE() << "a block pushed past mu W found a static state";
+    static_equilibrium(system, 0.0);
+    ADD_FAILURE() << "a loose mass under a load found a static state";
   } catch (const SolveError& error) {
-    std::cout << "pushed by 60 > mu W: " << error.what() << "\n";
-    EXPECT_NE(std::string(error.what()).find("mechanism"), std::string::npos);
+    const std::string what = error.what();
+    std::cout << "a loose loaded mass beside the block: " << what << "\n";
+    EXPECT_NE(what.find("a mechanism"), std::string::npos) << what;
+    EXPECT_EQ(what.find("ask more of friction"), std::string::npos) << what;
   }
 }
 
