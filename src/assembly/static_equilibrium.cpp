@@ -168,6 +168,11 @@ StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
   // wherever they touch: one increment, in which every such link slips.
   const bool sliding = rate.size() > 0 && rate.any();
   const int increments = sliding ? 1 : 10;
+  // Where friction slips at the failure (not by design under a belt), the loads passed it.
+  const auto throw_if_friction_overloaded = [&] {
+    if (sliding) return;
+    if (std::optional<SolveError> overload = friction_overload(time, system, hard)) throw *overload;
+  };
   Vector residual(n), trial_residual(n), trial(n), correction(n), multipliers;
   for (int increment = 1; increment <= increments; ++increment) {
     const Vector applied = (static_cast<double>(increment) / increments) * load;
@@ -182,9 +187,7 @@ StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
           violation <= relative_tolerance * scale)
         break;
       if (iteration == max_iterations) {
-        if (!sliding)
-          if (std::optional<SolveError> overload = friction_overload(time, system, hard))
-            throw *overload;
+        throw_if_friction_overloaded();
         throw SolveError(time, fmt::format("static equilibrium under the initial loads did not "
                                            "converge in {} iterations at {} % of the loads "
                                            "(unbalanced force {:.3g} of {:.3g}{})",
@@ -193,9 +196,7 @@ StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
                                            friction_hint(links)));
       }
       if (!newton_correction(hard, system, tangent, residual, delta, correction, multipliers)) {
-        if (!sliding)
-          if (std::optional<SolveError> overload = friction_overload(time, system, hard))
-            throw *overload;
+        throw_if_friction_overloaded();
         throw mechanism(time, sliding);
       }
       const Vector start_multipliers = hard.multipliers();
