@@ -93,7 +93,7 @@ std::string slipping_links(const StructuralSystem& system, const StaticHardConta
     if (!friction) continue;
     bool slips = friction->trial_slipping();
     for (Index row = links.row(k) + 1; row < links.row(k) + links.rows(k); ++row)
-      slips = slips || (hard.constrains(row) && hard.slips(row));
+      slips = slips || hard.slips(row);  // a row no hard contact holds stays free
     if (slips) names += fmt::format("{}'{}'", names.empty() ? "" : ", ", system.link_id(k));
   }
   return names;

@@ -35,7 +35,8 @@ class StaticHardContacts {
 
   bool any() const { return any_; }
   bool constrains(Index row) const;
-  // Whether friction row `row` slips (at mu lambda_n) in the state the last choose() set.
+  // Whether row `row` is a friction row that slips (at mu lambda_n) in the state the last
+  // choose() set; false for any other row.
   bool slips(Index row) const { return state_[static_cast<std::size_t>(row)] == Row::kSlip; }
   const Vector& multipliers() const { return multiplier_; }
   void set_multipliers(const Vector& multipliers) { multiplier_ = multipliers; }
