@@ -58,7 +58,7 @@ json with_diaphragm(json model) {
     model["supports"].push_back({{"node", top}, {"fix", {"z", "rx", "ry"}}});
     constraint["slaves"].push_back(top);
   }
-  model["constraints"] = {constraint};
+  model["constraints"] = json::array({constraint});
   return model;
 }
 

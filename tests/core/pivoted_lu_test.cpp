@@ -170,7 +170,10 @@ bool eigen_fuses() {
   a << 1.0, u, l, d;
   PivotedLu eigen;
   eigen.compute(a, PivotedLu::Path::eigen);
-  const double fused = multiply_add(-l, u, d), separate = d - l * u;
+  // The product is stored through a volatile: clang contracts d - l * u into a fused
+  // multiply-add by itself (GCC's -O1 does not), which would leave no unfused value to compare.
+  const volatile double product = l * u;
+  const double fused = multiply_add(-l, u, d), separate = d - product;
   EXPECT_NE(fused, separate) << "the probe must round differently fused";
   return eigen.factors()(1, 1) == fused;
 }

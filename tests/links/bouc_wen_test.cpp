@@ -24,7 +24,6 @@ namespace pound::links {
 namespace {
 
 using Shape = testing::BoucWenShape;
-constexpr double kStiffness = testing::kBoucWenStiffness;
 constexpr double kZmax = testing::kBoucWenZmax;
 constexpr auto shapes = testing::bouc_wen_shapes;
 
