@@ -14,7 +14,7 @@
 namespace pound::testing {
 namespace {
 
-// GCC says __SANITIZE_ADDRESS__, clang (CI's sanitizer build) __has_feature(address_sanitizer).
+// GCC says __SANITIZE_ADDRESS__, clang __has_feature(address_sanitizer).
 #if defined(__SANITIZE_ADDRESS__)
 #define POUND_UNDER_ASAN 1
 #elif defined(__has_feature)
