@@ -10,23 +10,14 @@
 #include <fstream>
 
 #include "support/process.hpp"
+#include "support/sanitizers.hpp"
 
 namespace pound::testing {
 namespace {
 
-// GCC says __SANITIZE_ADDRESS__, clang __has_feature(address_sanitizer).
-#if defined(__SANITIZE_ADDRESS__)
-#define POUND_UNDER_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define POUND_UNDER_ASAN 1
-#endif
-#endif
-#if defined(POUND_UNDER_ASAN)
-#define POUND_SKIP_UNDER_ASAN() GTEST_SKIP() << "ulimit -v cannot be used under AddressSanitizer"
-#else
-#define POUND_SKIP_UNDER_ASAN() (void)0
-#endif
+// A macro: GTEST_SKIP returns from the test itself.
+#define POUND_SKIP_UNDER_ASAN() \
+  if (kUnderAddressSanitizer) GTEST_SKIP() << "ulimit -v cannot be used under AddressSanitizer"
 
 class Resources : public PoundProcess {
  protected:
