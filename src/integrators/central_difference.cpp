@@ -707,7 +707,7 @@ bool CentralDifference::update_hard_active_set(const std::vector<Index>& rows, d
     // A row that was no candidate is bound only by not penetrating.
     const double bound = candidate_[static_cast<std::size_t>(i)] ? bound_[i] : 0.0;
     const double excess =
-        next_hard_value(rows, i, scale) - bound - kHardContactRoundOff * magnitudes_[r];
+        next_hard_value(rows, i, scale) - bound - hard_value_round_off(rows, i, scale);
     if (excess > worst_excess) {
       worst = i;
       worst_excess = excess;
@@ -744,7 +744,7 @@ bool CentralDifference::update_hard_friction(const std::vector<Index>& rows, dou
     } else {
       // Slipping at F_t = sign mu F_n resists a slide of that sign; one the other way sticks.
       const double slide = next_hard_value(rows, i, scale) - bound_[i];
-      excess = -slip_[static_cast<std::size_t>(i)] * slide - kHardContactRoundOff * magnitudes_[r];
+      excess = -slip_[static_cast<std::size_t>(i)] * slide - hard_value_round_off(rows, i, scale);
       excess /= std::max(magnitudes_[r], 1e-300);
     }
     if (excess > worst_excess) {
@@ -763,6 +763,19 @@ bool CentralDifference::update_hard_friction(const std::vector<Index>& rows, dou
     start_slip_in_plane(row, group_force_.segment<2>(worst));
   }
   return true;
+}
+
+// What round-off leaves in a row's next value delta~ - scale G F - bound: of its terms' size, or
+// of the row's own (its displacement), whichever is larger. At rest, as at the start, the
+// displacement is zero and only the terms count: a corner whose partner sticks slides by round-off
+// alone.
+double CentralDifference::hard_value_round_off(const std::vector<Index>& rows, Index i,
+                                               double scale) const {
+  const Index r = rows[static_cast<std::size_t>(i)];
+  double terms = std::abs(free_next_[i]) + std::abs(bound_[i]);
+  for (const Index j : active_rows_)
+    terms += std::abs(scale * coupling_(r, rows[static_cast<std::size_t>(j)]) * group_force_[j]);
+  return 1e-12 * terms + kHardContactRoundOff * magnitudes_[r];
 }
 
 // A contact plane's friction (local rows i, i + 1) asking to change, relative: sticking, by how

@@ -87,6 +87,7 @@ class CentralDifference final : public Integrator {
   Eigen::Vector2d free_slide(Index i) const;
   double in_plane_friction_excess(const std::vector<Index>& rows, Index i, double scale) const;
   double slide_round_off(const std::vector<Index>& rows, Index i, double length) const;
+  double hard_value_round_off(const std::vector<Index>& rows, Index i, double scale) const;
   bool turn_slip_directions(const std::vector<Index>& rows, double scale);
   // The active rows' forces for the current active set, into group_force_.
   void solve_active_hard_rows(const std::vector<Index>& rows, double scale);
