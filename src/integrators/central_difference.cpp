@@ -765,10 +765,10 @@ bool CentralDifference::update_hard_friction(const std::vector<Index>& rows, dou
   return true;
 }
 
-// What round-off leaves in a row's next value delta~ - scale G F - bound: of its terms' size, or
-// of the row's own (its displacement), whichever is larger. At rest, as at the start, the
-// displacement is zero and only the terms count: a corner whose partner sticks slides by round-off
-// alone.
+// What round-off leaves in a row's next value delta~ - scale G F - bound: a share of its terms'
+// size plus the margin of the row's own (its displacement's terms, kHardContactRoundOff). At rest,
+// as at the start, the displacement is zero and only the terms count: there a corner whose partner
+// sticks slides by round-off alone, and without them stick and slip would be round-off's choice.
 double CentralDifference::hard_value_round_off(const std::vector<Index>& rows, Index i,
                                                double scale) const {
   const Index r = rows[static_cast<std::size_t>(i)];
