@@ -174,7 +174,13 @@ bool eigen_fuses() {
   // multiply-add by itself (GCC's -O1 does not), which would leave no unfused value to compare.
   const volatile double product = l * u;
   const double fused = multiply_add(-l, u, d), separate = d - product;
+#ifdef __FMA__
   EXPECT_NE(fused, separate) << "the probe must round differently fused";
+#else
+  // No fused multiply-add on this target (a portable build): multiply_add rounds twice, as
+  // Eigen's code then does, and the loops are compared to the bit all the same.
+  EXPECT_EQ(fused, separate);
+#endif
   return eigen.factors()(1, 1) == fused;
 }
 
