@@ -456,7 +456,9 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
   check_constraint_supports(resolver, model);
   model.links = resolve_links(resolver, model);
   built.analysis = spec.analysis;
-  built.excitation_factors = resolve_excitations(resolver, motions, second_motions, model);
+  ExcitationScaling scaling = resolve_excitations(resolver, motions, second_motions, model);
+  built.excitation_factors = std::move(scaling.factors);
+  built.excitation_peaks = std::move(scaling.peaks);
   built.units = spec.units.names();
   fit_analysis_to_records(built.analysis, model);
   if (!built.analysis.time_step_auto) {

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "assembly/structural_system.hpp"
+#include "builder/excitations.hpp"
 #include "builder/outputs.hpp"
 #include "builder/spec.hpp"
 #include "integrators/integrator.hpp"
@@ -33,7 +34,8 @@ struct BuiltModel {
   std::optional<RodPairSpec> sole_rod_pair;
   // The factor each record of spec.excitations was multiplied by (its scale times extra_factor).
   std::vector<double> excitation_factors;
-  UnitNames units;  // of spec.units, for the outputs' headers
+  std::vector<ScaledPeak> excitation_peaks;  // per excitation, in g
+  UnitNames units;                           // of spec.units, for the outputs' headers
 };
 
 // The size of the model a spec makes, generators included, known before anything is built (a

@@ -110,11 +110,11 @@ model::Coordinates pair_direction(const PairSpec& pair, int component) {
 }
 
 // The records, scaled as the spec says (targets in g), along their directions.
-std::vector<double> resolve_excitations(
+ExcitationScaling resolve_excitations(
     const Resolver& resolver, const std::vector<model::GroundMotion>& motions,
     const std::vector<std::optional<model::GroundMotion>>& second_motions, model::Model& model) {
   const ModelSpec& spec = resolver.spec();
-  std::vector<double> factors;
+  ExcitationScaling scaling;
   if (motions.size() != spec.excitations.size())
     throw std::invalid_argument("build: one ground motion per excitation is needed");
   const double gravity = spec.units.gravity();
@@ -132,7 +132,8 @@ std::vector<double> resolve_excitations(
       model::GroundMotion motion = motions[k];
       model::scale(motion, factor);
       check_scaled(place, motion, factor);
-      factors.push_back(factor);
+      scaling.factors.push_back(factor);
+      scaling.peaks.push_back({motion.name, motion.peak() / gravity});
       add_component(place, std::move(motion), model::to_coordinates(e.direction), model);
       continue;
     }
@@ -147,11 +148,14 @@ std::vector<double> resolve_excitations(
     model::scale(pair.second, factor);
     check_scaled(place, pair.first, factor);
     check_scaled(place, pair.second, factor);
-    factors.push_back(factor);
+    scaling.factors.push_back(factor);
+    const model::GroundMotion& stronger =
+        pair.first.peak() >= pair.second.peak() ? pair.first : pair.second;
+    scaling.peaks.push_back({stronger.name, stronger.peak() / gravity});
     add_component(place, std::move(pair.first), pair_direction(*e.pair, 0), model);
     add_component(place, std::move(pair.second), pair_direction(*e.pair, 1), model);
   }
-  return factors;
+  return scaling;
 }
 
 void fit_analysis_to_records(AnalysisSpec& analysis, const model::Model& model) {

@@ -4,6 +4,7 @@
 // batch's IDA factor), uniform along its direction or moving the supports it names, each after
 // its wave-passage delay.
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "builder/resolver.hpp"
@@ -11,11 +12,23 @@
 
 namespace pound::builder {
 
-// Adds the excitations to `model` (its supports already there); returns the factor each record
-// was multiplied by (a pair's two components by the same one). A support that does not hold the
-// record's direction is an InputError; so are a pair's components on different time grids.
+// The largest |a| of an excitation's scaled record (a pair's stronger component), in g.
+struct ScaledPeak {
+  std::string record;  // its name (a pair's stronger component's)
+  double in_g = 0.0;
+};
+
+// Per excitation of the spec: the factor its record was multiplied by (a pair's two components by
+// the same one), and its scaled peak.
+struct ExcitationScaling {
+  std::vector<double> factors;
+  std::vector<ScaledPeak> peaks;
+};
+
+// Adds the excitations to `model` (its supports already there). A support that does not hold
+// the record's direction is an InputError; so are a pair's components on different time grids.
 // `second_motions`: per excitation, a pair's second component (may be empty: none).
-std::vector<double> resolve_excitations(
+ExcitationScaling resolve_excitations(
     const Resolver& resolver, const std::vector<model::GroundMotion>& motions,
     const std::vector<std::optional<model::GroundMotion>>& second_motions, model::Model& model);
 

@@ -215,6 +215,24 @@ void check_step_against_duration(const builder::BuiltModel& built,
   for (const model::SupportExcitation& e : built.model.support_excitations) check_record(e.motion);
 }
 
+// A record scaled past any earthquake's peak is more often a slip of its units (cm/s2 read as
+// m/s2 is 100 times too strong) or of its scale than an intent; the strongest records (Iwate-
+// Miyagi 2008) peak at about 4 g. A warning, not a refusal: an incremental dynamic analysis may
+// scale a record this far on purpose.
+void check_record_peaks(const builder::BuiltModel& built, std::vector<std::string>& warnings) {
+  constexpr double kStrongest = 5.0;  // g
+  for (std::size_t k = 0; k < built.excitation_peaks.size(); ++k) {
+    const builder::ScaledPeak& peak = built.excitation_peaks[k];
+    if (peak.in_g > kStrongest)
+      warnings.push_back(fmt::format(
+          "/excitations/{}: record '{}' peaks at {:.3g} g as scaled, beyond any earthquake "
+          "recorded (the strongest about 4 g): check its \"units\" (a record in cm/s2 read as "
+          "m/s2 is 100 times too strong) and its scale; an incremental dynamic analysis scaled "
+          "this far on purpose may ignore this",
+          k, peak.record, peak.in_g));
+  }
+}
+
 }  // namespace
 
 ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSystem& system,
@@ -238,6 +256,7 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
   }
   check_explicit_steps(analysis, system, check);
   check_step_against_duration(built, check.warnings);
+  check_record_peaks(built, check.warnings);
   const double ground_velocity = peak_ground_velocity(built.model);
   Vector closing;
   links.project(system.initial_velocity(built.model), closing);

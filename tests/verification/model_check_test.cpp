@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "assembly/structural_system.hpp"
 #include "builder/build.hpp"
 #include "io/model_reader.hpp"
+#include "model/ground_motion.hpp"
 #include "verification/contact_energy_probe.hpp"
 
 namespace pound::verification {
@@ -69,6 +71,47 @@ TEST(ModelCheck, ContactsOfOneSpecAndContextAreProbedOnceAndWarnedEach) {
   }
   EXPECT_EQ(warning_of(check.warnings, "c1").substr(8), warning_of(check.warnings, "c2").substr(8));
   EXPECT_NE(warning_of(check.warnings, "c1").substr(8), warning_of(check.warnings, "c3").substr(8));
+}
+
+// A mass on a spring in millimetres, shaken by a half-sine pulse of 0.4 g given in model units
+// (mm/s2), scaled by `scale` (JSON, or none).
+std::vector<std::string> pulse_warnings(const std::string& scale) {
+  constexpr double kGravityMm = 9806.65;
+  std::vector<double> pulse;
+  for (int k = 0; k <= 100; ++k) pulse.push_back(0.4 * kGravityMm * std::sin(M_PI * k / 100.0));
+  const std::string text = fmt::format(R"({{
+    "dimension": 1, "units": {{"length": "mm", "time": "s", "mass": "t"}},
+    "nodes": [{{"id": "ground", "x": 0}}, {{"id": "top", "x": 0}}],
+    "supports": [{{"node": "ground", "fix": ["x"]}}],
+    "masses": [{{"node": "top", "mass": 1}}],
+    "links": [{{"id": "spring", "nodes": ["ground", "top"], "axis": [1],
+               "law": {{"type": "elastic_spring", "stiffness": 400}}}}],
+    "excitations": [{{"record": "pulse.txt", "units": "model"{}}}],
+    "analysis": {{"time_step": 0.01, "duration": 1}}}})",
+                                       scale.empty() ? "" : ", \"scale\": " + scale);
+  const builder::BuiltModel built = builder::build(
+      io::parse_model(text, "pulse.json"),
+      {model::GroundMotion{.name = "pulse", .time_step = 0.01, .acceleration = pulse}});
+  assembly::StructuralSystem system(built.model);
+  std::vector<std::string> peaks;
+  for (const std::string& w : check_model(built, system, false).warnings)
+    if (w.find("beyond any earthquake") != std::string::npos) peaks.push_back(w);
+  std::printf("scale %s: %zu warning(s) %s\n", scale.empty() ? "none" : scale.c_str(), peaks.size(),
+              peaks.empty() ? "" : peaks[0].c_str());
+  return peaks;
+}
+
+// A record scaled past 5 g (about any earthquake's peak) warns, named with its excitation; the
+// peak is taken in g whatever the model's units (0.4 g in mm/s2 is 3,923, not 400 g).
+TEST(ModelCheck, ARecordScaledPastAnyEarthquakesPeakWarns) {
+  EXPECT_TRUE(pulse_warnings("").empty());
+  EXPECT_TRUE(pulse_warnings(R"({"pga": 4.9})").empty());
+  EXPECT_TRUE(pulse_warnings(R"({"factor": 12})").empty());                     // 4.8 g
+  const std::vector<std::string> strong = pulse_warnings(R"({"factor": 13})");  // 5.2 g
+  ASSERT_EQ(strong.size(), 1u);
+  EXPECT_TRUE(strong[0].starts_with("/excitations/0: record 'pulse' peaks at 5.2 g")) << strong[0];
+  EXPECT_NE(strong[0].find("\"units\""), std::string::npos);
+  ASSERT_EQ(pulse_warnings(R"({"pga": 100})").size(), 1u);
 }
 
 }  // namespace
