@@ -215,6 +215,36 @@ void check_step_against_duration(const builder::BuiltModel& built,
   for (const model::SupportExcitation& e : built.model.support_excitations) check_record(e.motion);
 }
 
+// When a record's largest |a| comes (a moving support's: at the first support it reaches).
+double time_of_peak(const model::GroundMotion& motion) {
+  const auto& a = motion.acceleration;
+  const auto largest = std::max_element(
+      a.begin(), a.end(), [](double x, double y) { return std::abs(x) < std::abs(y); });
+  return largest == a.end() ? 0.0 : static_cast<double>(largest - a.begin()) * motion.time_step;
+}
+
+// An analysis that stops before a record's strongest shaking reports peaks of its start only (a
+// duration cut short for a trial run, then kept).
+void check_duration_reaches_peaks(const builder::BuiltModel& built,
+                                  std::vector<std::string>& warnings) {
+  const double duration = built.analysis.duration;
+  const auto check = [&](const model::GroundMotion& motion, double delay) {
+    const double peak_time = time_of_peak(motion) + delay;
+    if (duration > 0.0 && duration < peak_time)
+      warnings.push_back(fmt::format(
+          "the analysis stops at {:.4g}, before record '{}' reaches its largest acceleration "
+          "(at {:.4g}): its strongest shaking is not analysed (is /analysis/duration what you "
+          "meant?)",
+          duration, motion.name, peak_time));
+  };
+  for (const model::UniformExcitation& e : built.model.excitations) check(e.motion, 0.0);
+  for (const model::SupportExcitation& e : built.model.support_excitations) {
+    double first = INFINITY;
+    for (const auto& [node, delay] : e.supports) first = std::min(first, delay);
+    check(e.motion, std::isfinite(first) ? first : 0.0);
+  }
+}
+
 // A record scaled past any earthquake's peak is more often a slip of its units (cm/s2 read as
 // m/s2 is 100 times too strong) or of its scale than an intent; the strongest records (Iwate-
 // Miyagi 2008) peak at about 4 g. A warning, not a refusal: an incremental dynamic analysis may
@@ -257,6 +287,7 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
   check_explicit_steps(analysis, system, check);
   check_step_against_duration(built, check.warnings);
   check_record_peaks(built, check.warnings);
+  check_duration_reaches_peaks(built, check.warnings);
   const double ground_velocity = peak_ground_velocity(built.model);
   Vector closing;
   links.project(system.initial_velocity(built.model), closing);

@@ -74,8 +74,11 @@ TEST(ModelCheck, ContactsOfOneSpecAndContextAreProbedOnceAndWarnedEach) {
 }
 
 // A mass on a spring in millimetres, shaken by a half-sine pulse of 0.4 g given in model units
-// (mm/s2), scaled by `scale` (JSON, or none).
-std::vector<std::string> pulse_warnings(const std::string& scale) {
+// (mm/s2) that peaks at 0.5 s, scaled by `scale` (JSON, or none), analysed for `duration`: the
+// check's warnings that contain `about`.
+std::vector<std::string> pulse_warnings(const std::string& scale,
+                                        const std::string& about = "beyond any earthquake",
+                                        double duration = 1.0) {
   constexpr double kGravityMm = 9806.65;
   std::vector<double> pulse;
   for (int k = 0; k <= 100; ++k) pulse.push_back(0.4 * kGravityMm * std::sin(M_PI * k / 100.0));
@@ -87,15 +90,15 @@ std::vector<std::string> pulse_warnings(const std::string& scale) {
     "links": [{{"id": "spring", "nodes": ["ground", "top"], "axis": [1],
                "law": {{"type": "elastic_spring", "stiffness": 400}}}}],
     "excitations": [{{"record": "pulse.txt", "units": "model"{}}}],
-    "analysis": {{"time_step": 0.01, "duration": 1}}}})",
-                                       scale.empty() ? "" : ", \"scale\": " + scale);
+    "analysis": {{"time_step": 0.01, "duration": {}}}}})",
+                                       scale.empty() ? "" : ", \"scale\": " + scale, duration);
   const builder::BuiltModel built = builder::build(
       io::parse_model(text, "pulse.json"),
       {model::GroundMotion{.name = "pulse", .time_step = 0.01, .acceleration = pulse}});
   assembly::StructuralSystem system(built.model);
   std::vector<std::string> peaks;
   for (const std::string& w : check_model(built, system, false).warnings)
-    if (w.find("beyond any earthquake") != std::string::npos) peaks.push_back(w);
+    if (w.find(about) != std::string::npos) peaks.push_back(w);
   std::printf("scale %s: %zu warning(s) %s\n", scale.empty() ? "none" : scale.c_str(), peaks.size(),
               peaks.empty() ? "" : peaks[0].c_str());
   return peaks;
@@ -112,6 +115,18 @@ TEST(ModelCheck, ARecordScaledPastAnyEarthquakesPeakWarns) {
   EXPECT_TRUE(strong[0].starts_with("/excitations/0: record 'pulse' peaks at 5.2 g")) << strong[0];
   EXPECT_NE(strong[0].find("\"units\""), std::string::npos);
   ASSERT_EQ(pulse_warnings(R"({"pga": 100})").size(), 1u);
+}
+
+// An analysis stopped before the record's largest acceleration warns; one that reaches it does
+// not.
+TEST(ModelCheck, AnAnalysisThatStopsBeforeTheRecordsPeakWarns) {
+  EXPECT_TRUE(pulse_warnings("", "before record", 1.0).empty());
+  EXPECT_TRUE(pulse_warnings("", "before record", 0.5).empty());
+  const std::vector<std::string> short_run = pulse_warnings("", "before record", 0.3);
+  ASSERT_EQ(short_run.size(), 1u);
+  EXPECT_EQ(short_run[0],
+            "the analysis stops at 0.3, before record 'pulse' reaches its largest acceleration (at "
+            "0.5): its strongest shaking is not analysed (is /analysis/duration what you meant?)");
 }
 
 }  // namespace
