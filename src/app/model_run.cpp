@@ -334,8 +334,8 @@ RunOutcome summarise(const RunRequest& request, const PreparedRun& run, const So
     outcome.summary = summary_document(summary, request, run, metrics);
   }
   outcome.headline = run_headline(request.model_path, summary);
-  outcome.report = excitation_lines(run.loaded) + run_report(summary) +
-                   (metrics ? verification_line(*metrics) : "") + energy_line(summary);
+  outcome.report = excitation_lines(run.loaded) + run_report(summary, built.units) +
+                   (metrics ? verification_line(*metrics) : "") + energy_line(summary, built.units);
   outcome.warnings = summary.warnings;
   outcome.failure = summary.status.failure;
   outcome.failure_time = summary.status.end_time;

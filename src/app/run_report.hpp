@@ -4,15 +4,17 @@
 // drift monitor, and the energy balance.
 #include <string>
 
+#include "core/units.hpp"
 #include "results/run_summary.hpp"
 
 namespace pound::app {
 
 std::string run_headline(const std::string& model_path, const results::RunSummary& run);
-// The lines of links, joints and drifts.
-std::string run_report(const results::RunSummary& run);
+// The lines of links, joints and drifts, each number with its unit in the model's `units` (forces,
+// moments and energies only where the model names a mass unit).
+std::string run_report(const results::RunSummary& run, const UnitNames& units);
 // How an automatic explicit step was chosen (the stable step and the fraction); empty otherwise.
-std::string step_line(const results::RunSummary& run);
-std::string energy_line(const results::RunSummary& run);
+std::string step_line(const results::RunSummary& run, const UnitNames& units);
+std::string energy_line(const results::RunSummary& run, const UnitNames& units);
 
 }  // namespace pound::app
