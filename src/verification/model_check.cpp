@@ -215,7 +215,7 @@ void check_step_against_duration(const builder::BuiltModel& built,
   for (const model::SupportExcitation& e : built.model.support_excitations) check_record(e.motion);
 }
 
-// When a record's largest |a| comes (a moving support's: at the first support it reaches).
+// When a record's largest |a| comes, from its start.
 double time_of_peak(const model::GroundMotion& motion) {
   const auto& a = motion.acceleration;
   const auto largest = std::max_element(
@@ -228,6 +228,7 @@ double time_of_peak(const model::GroundMotion& motion) {
 void check_duration_reaches_peaks(const builder::BuiltModel& built,
                                   std::vector<std::string>& warnings) {
   const double duration = built.analysis.duration;
+  // A moving support's record: at the first support it reaches.
   const auto check = [&](const model::GroundMotion& motion, double delay) {
     const double peak_time = time_of_peak(motion) + delay;
     if (duration > 0.0 && duration < peak_time)
