@@ -44,6 +44,28 @@ class OutputError(PlotError):
     exit_code = EXIT_OUTPUT
 
 
+MODEL_UNITS = "model units"
+
+
+def units_of(summary):
+    """The units summary.json names (its "units"), typeset; "model units" where it names none
+    (forces, moments and energies of a model without a mass unit)."""
+    given = summary.get("units") if isinstance(summary.get("units"), dict) else {}
+
+    def named(key):
+        value = given.get(key)
+        if not isinstance(value, str) or not value or "own" in value:
+            return MODEL_UNITS
+        return value.replace("^2", "²").replace("*", "·")  # pound's ASCII, typeset
+
+    units = {key: named(key) for key in ("length", "time", "force", "acceleration", "moment")}
+    force, length, time = units["force"], units["length"], units["time"]
+    units["energy"] = (f"{force}·{length}" if MODEL_UNITS not in (force, length) else MODEL_UNITS)
+    units["impulse"] = (f"{force}·{time}" if MODEL_UNITS not in (force, time) else MODEL_UNITS)
+    units["angle"] = "rad"
+    return units
+
+
 def report(prog, error):
     """Writes a PlotError as `prog: message` to stderr and returns its exit code."""
     sys.stderr.write(f"{prog}: {error}\n")

@@ -43,7 +43,7 @@ from array import array
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from plot_common import (InputError, check_column_names, check_folder, check_width,  # noqa: E402
                          csv_reader, folder_parser, import_matplotlib, not_a_number, read_json,
-                         run_plots, save_png, strip_header)
+                         run_plots, save_png, strip_header, units_of)
 from run_report_html import write_report  # noqa: E402
 
 PROG = "plot_run.py"
@@ -51,24 +51,6 @@ REEXEC_MARK = "POUND_PLOT_RUN_REEXEC"
 
 PER_PAGE = 8          # subplots (rows of plan_motion.png) per page of the per-item figures
 NODES_PER_AXES = 10   # node histories overlaid in one subplot of displacements.png
-MODEL_UNITS = "model units"
-
-
-def units_of(summary):
-    """The units summary.json names (its "units"), "model units" where it names none."""
-    given = summary.get("units") if isinstance(summary.get("units"), dict) else {}
-
-    def named(key):
-        value = given.get(key)
-        if not isinstance(value, str) or not value or "own" in value:
-            return MODEL_UNITS
-        return value.replace("^2", "²").replace("*", "·")  # pound's ASCII, typeset
-
-    units = {key: named(key) for key in ("length", "time", "force", "acceleration", "moment")}
-    force, length = units["force"], units["length"]
-    units["energy"] = (f"{force}·{length}" if MODEL_UNITS not in (force, length) else MODEL_UNITS)
-    return units
-
 LINK_QUANTITIES = ("force", "penetration", "tangential_force", "slide")
 NODE_QUANTITIES = ("u_x", "a_abs_x", "u_y", "u_rz")   # the node columns a figure reads
 SPACE_ONLY_QUANTITIES = ("u_z", "u_rx", "u_ry")      # node directions only a 3-D scene has

@@ -77,6 +77,8 @@ Document link_document(const results::LinkResult& link) {
   const results::LinkSummary& s = link.summary;
   Document doc;
   doc.set("id", link.id).set("role", role_name(link.role));
+  // A hinge: its forces are moments, its deformations rotations.
+  if (link.rotational) doc.set("rotational", true);
   if (link.role == links::LinkRole::spring)
     add_spring(link, doc);
   else

@@ -79,7 +79,8 @@ TEST(RunReport, HingeMomentsAreNotSpringForces) {
   int hinges = 0, springs = 0;
   for (const nlohmann::json& link : summary["links"]) {
     if (link["role"] != "spring") continue;
-    const bool hinge = link["id"].get<std::string>().ends_with(".hinge");
+    const bool hinge = link.value("rotational", false);  // summary.json marks hinges
+    EXPECT_EQ(hinge, link["id"].get<std::string>().ends_with(".hinge")) << link["id"];
     double& largest = hinge ? moment : force;
     (hinge ? hinges : springs) += 1;
     largest = std::max(largest, link["peak_force"].get<double>());

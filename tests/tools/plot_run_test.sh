@@ -32,6 +32,10 @@ figures=$(grep -o 'src="data:image/png;base64,' "$report" | wc -l)
 ! grep -qiE '(src|href)="(https?:|//|[a-z_]+\.png)' "$report" || fail "$report refers to outside files"
 grep -q '<td>joint</td>' "$report" || fail "$report has no row for the link joint"
 grep -q 'Energy balance' "$report" || fail "$report has no energy balance"
+# Its headings name their units: lengths and times in m and s; forces none (no mass unit).
+for heading in 'peak penetration \[m\]' 'time step \[s\]' '<th>peak force</th>'; do
+  grep -q "$heading" "$report" || fail "$report has no heading $heading"
+done
 
 # 2. The python3 on PATH works too (it starts /usr/bin/python3 if it has no matplotlib).
 if command -v python3 >/dev/null 2>&1; then
@@ -141,6 +145,11 @@ grep -q '\.u_y.*\.u_rz' "$plane/pier_tops.csv" || fail "the 2-D run recorded no 
 "$python" "$script" "$plane" --dpi 60 >/dev/null 2>"$tmp/stderr" ||
   fail "plot_run.py failed on a 2-D run: $(cat "$tmp/stderr")"
 is_png "$plane/displacements.png"
+# kg, m, s: forces, moments, impulses and energies in N, N·m, N·s.
+for heading in 'peak force \[N\]' 'impulse \[N·s\]' 'peak base moment \[N·m\]' \
+               'kinetic \[N·m\]' 'peak acceleration (absolute) \[m/s²\]'; do
+  grep -q "$heading" "$plane/report.html" || fail "the bridge's report.html has no heading $heading"
+done
 [ -z "$(find "$plane" -maxdepth 1 -name 'plan_motion*')" ] || fail "plan_motion.png written for a 2-D run"
 mkdir "$tmp/columns_3d"
 cp "$plane/summary.json" "$tmp/columns_3d/"
