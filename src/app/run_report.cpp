@@ -26,9 +26,8 @@ struct ReportUnits {
         impulse(force.empty() ? "" : force + "*" + time) {}
   std::string time, length, acceleration, force, moment, angle, impulse;
   const std::string& energy() const { return moment; }
-  // A link's deformation, and its force: a hinge's are a rotation and a moment.
+  // A link's deformation: a hinge's is a rotation.
   const std::string& deformation(bool rotational) const { return rotational ? angle : length; }
-  const std::string& action(bool rotational) const { return rotational ? moment : force; }
 };
 
 // A spring or hinge that yielded: its peak and residual deformation, and what it dissipated.
