@@ -218,6 +218,15 @@ double GroundMotion::peak() const {
   return largest;
 }
 
+double GroundMotion::time_of_peak() const {
+  const auto largest =
+      std::max_element(acceleration.begin(), acceleration.end(),
+                       [](double x, double y) { return std::abs(x) < std::abs(y); });
+  return largest == acceleration.end()
+             ? 0.0
+             : static_cast<double>(largest - acceleration.begin()) * time_step;
+}
+
 SdofResponse sdof_response(const GroundMotion& motion, double period, double damping_ratio) {
   SdofResponse response;
   const std::size_t n = motion.acceleration.size();

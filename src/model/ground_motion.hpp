@@ -15,7 +15,8 @@ struct GroundMotion {
   // Linear interpolation between samples; 0 before 0 and after the last sample (the ground is
   // at rest once the record ends).
   double at(double time) const;
-  double peak() const;  // max |a|
+  double peak() const;          // max |a|
+  double time_of_peak() const;  // when max |a| comes first, from the record's start [T]
 };
 
 // Ground acceleration, velocity and displacement of a record, possibly delayed (a support that

@@ -215,14 +215,6 @@ void check_step_against_duration(const builder::BuiltModel& built,
   for (const model::SupportExcitation& e : built.model.support_excitations) check_record(e.motion);
 }
 
-// When a record's largest |a| comes, from its start.
-double time_of_peak(const model::GroundMotion& motion) {
-  const auto& a = motion.acceleration;
-  const auto largest = std::max_element(
-      a.begin(), a.end(), [](double x, double y) { return std::abs(x) < std::abs(y); });
-  return largest == a.end() ? 0.0 : static_cast<double>(largest - a.begin()) * motion.time_step;
-}
-
 // An analysis that stops before a record's strongest shaking reports peaks of its start only (a
 // duration cut short for a trial run, then kept).
 void check_duration_reaches_peaks(const builder::BuiltModel& built,
@@ -230,7 +222,7 @@ void check_duration_reaches_peaks(const builder::BuiltModel& built,
   const double duration = built.analysis.duration;
   // A moving support's record: at the first support it reaches.
   const auto check = [&](const model::GroundMotion& motion, double delay) {
-    const double peak_time = time_of_peak(motion) + delay;
+    const double peak_time = motion.time_of_peak() + delay;
     if (duration > 0.0 && duration < peak_time)
       warnings.push_back(fmt::format(
           "the analysis stops at {:.4g}, before record '{}' reaches its largest acceleration "

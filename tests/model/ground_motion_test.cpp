@@ -159,6 +159,14 @@ GroundMotion wiggly_record() {
       0.01, 2001);
 }
 
+// The time of the largest |a|: a negative peak counts, and of equal peaks the first.
+TEST(GroundMotion, TimeOfPeakIsTheFirstLargestMagnitude) {
+  const GroundMotion motion{
+      .name = "r", .time_step = 0.02, .acceleration = {0.0, 1.0, -3.0, 2.0, 3.0, -1.0}};
+  EXPECT_DOUBLE_EQ(motion.time_of_peak(), 0.04);
+  EXPECT_EQ(GroundMotion{}.time_of_peak(), 0.0);
+}
+
 TEST(GroundMotion, ScaleToPeakHitsTheTarget) {
   GroundMotion motion = wiggly_record();
   const double target = 0.35 * 9.80665;
