@@ -3,6 +3,7 @@
 set -euo pipefail
 # libboost-program-options-dev brings Boost's headers too (Graph: reverse Cuthill-McKee ordering).
 packages=(g++ cmake ninja-build libeigen3-dev libboost-program-options-dev libfmt-dev
+          libspectra-dev  # the lowest modes of large models (shift-invert Lanczos, on Eigen)
           nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev python3-matplotlib
           libboost-mpi-dev openmpi-bin libopenmpi-dev  # pound batch under mpirun
           clang libclang-rt-dev  # clang and its libFuzzer runtime, for tools/fuzz.sh

@@ -73,22 +73,18 @@ std::array<Vector, 2> influence_vectors(const assembly::StructuralSystem& system
 // The first `count` modes that are not rigid-body motion.
 ListedModes list_modes(const assembly::StructuralSystem& system, std::size_t node_count,
                        int count) {
-  const assembly::Modes modes = assembly::modal_analysis(system);
+  const assembly::Modes modes = assembly::vibration_modes(system, count);
   // Effective modal mass along x and y: (phi^T M iota)^2 with mass-normalised phi.
   const std::array<Vector, 2> influence = influence_vectors(system, node_count);
   const auto mass = system.mass_matrix();
   double total[2];
   for (int d = 0; d < 2; ++d) total[d] = influence[d].dot(mass * influence[d]);
 
-  const double largest = modes.omega_squared.size() ? modes.omega_squared.maxCoeff() : 0.0;
   ListedModes result;
   result.directions = total[1] > 0.0 ? 2 : 1;
-  std::vector<ListedMode>& listed = result.modes;
-  for (Index k = 0; k < modes.omega_squared.size() && static_cast<int>(listed.size()) < count;
-       ++k) {
-    if (!(modes.omega_squared[k] > 1e-10 * largest)) continue;  // rigid-body motion
+  for (Index k = 0; k < modes.omega_squared.size(); ++k) {
     ListedMode mode;
-    mode.number = static_cast<int>(listed.size()) + 1;
+    mode.number = static_cast<int>(k) + 1;
     mode.period = 2.0 * std::numbers::pi / std::sqrt(modes.omega_squared[k]);
     for (int d = 0; d < 2; ++d) {
       const double participation = modes.shapes.col(k).dot(mass * influence[d]);
@@ -98,7 +94,7 @@ ListedModes list_modes(const assembly::StructuralSystem& system, std::size_t nod
     Index at = 0;
     mode.shape.cwiseAbs().maxCoeff(&at);
     if (mode.shape[at] != 0.0) mode.shape /= mode.shape[at];
-    listed.push_back(mode);
+    result.modes.push_back(mode);
   }
   return result;
 }

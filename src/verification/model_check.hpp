@@ -40,7 +40,7 @@ struct ModelCheck {
   // has x and, at its column cuts, rotation, but no y).
   std::array<Index, 6> dofs_by_direction{};
   Index tied_dofs = 0;  // DOFs a constraint ties to their master (no equations of their own)
-  std::vector<double> periods;  // the first six; none above 4000 DOFs or when not asked
+  std::vector<double> periods;  // the first six; none when not asked
   // Central difference's stable step; none without a lumped mass on every DOF.
   std::optional<double> explicit_step_open, explicit_step_contact;
   // Why there are no explicit steps: no lumped mass on some DOF, or no stable step at all.
@@ -52,7 +52,7 @@ struct ModelCheck {
   std::vector<std::string> warnings;
 };
 
-// `with_periods`: the natural periods (a dense eigen-solution, up to 4000 DOFs) and the warning
+// `with_periods`: the natural periods (assembly::natural_periods) and the warning
 // on the step against the sixth; `run` leaves them out.
 ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSystem& system,
                        bool with_periods);

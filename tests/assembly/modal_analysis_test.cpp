@@ -1,14 +1,17 @@
 // Modes of small spring-mass chains against their closed forms: eigenvalues, mass-normalised
-// shapes, links at their initial tangent, rigid-body modes left out of the periods.
+// shapes, links at their initial tangent, rigid-body modes left out of the periods; and the
+// Lanczos path of larger models against the dense one.
 #include "assembly/modal_analysis.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 #include <numbers>
 #include <stdexcept>
 
+#include "assembly/not_positive_definite.hpp"
 #include "builder/build.hpp"
 #include "io/model_reader.hpp"
 
@@ -108,6 +111,194 @@ TEST(ModalAnalysis, AnOverflowingStiffnessToMassRatioIsRefusedAtOnce) {
   const Vector diagonal = stiffness_diagonal_with_links(system);
   EXPECT_EQ(diagonal[1], 100.0 + 1e300);
   EXPECT_EQ(diagonal[0], 200.0);
+}
+
+// --- Past 300 DOFs vibration_modes takes shift-invert Lanczos (Spectra) on the sparse matrices.
+
+// A plane steel frame of `bays` x `storeys` bays of 4 m by 3 m storeys, fixed at its base (3 DOFs
+// a node: with lumped masses its rotations are massless, with consistent ones every DOF has
+// mass).
+std::string frame(int bays, int storeys, const std::string& mass) {
+  std::string nodes, members;
+  const auto add_member = [&](const std::string& a, const std::string& b) {
+    members += fmt::format(
+        "{}{{\"id\": \"{}-{}\", \"type\": \"beam\", \"nodes\": [\"{}\", \"{}\"], \"material\": "
+        "\"steel\", \"area\": 0.01, \"inertia\": 1e-4, \"mass\": \"{}\"}}",
+        members.empty() ? "" : ", ", a, b, a, b, mass);
+  };
+  std::string supports;
+  for (int j = 0; j <= storeys; ++j)
+    for (int i = 0; i <= bays; ++i) {
+      const std::string id = fmt::format("n{}_{}", i, j);
+      nodes += fmt::format("{}{{\"id\": \"{}\", \"x\": {}, \"y\": {}}}", nodes.empty() ? "" : ", ",
+                           id, 4 * i, 3 * j);
+      if (j == 0)
+        supports += fmt::format("{}{{\"node\": \"{}\", \"fix\": [\"x\", \"y\", \"rz\"]}}",
+                                supports.empty() ? "" : ", ", id);
+      else
+        add_member(fmt::format("n{}_{}", i, j - 1), id);
+      if (j > 0 && i > 0) add_member(fmt::format("n{}_{}", i - 1, j), id);
+    }
+  return fmt::format(R"({{"dimension": 2, "nodes": [{}],
+    "materials": [{{"id": "steel", "youngs_modulus": 2e11, "density": 7850}}],
+    "elements": [{}], "supports": [{}], "analysis": {{"time_step": 0.001, "duration": 1}}}})",
+                     nodes, members, supports);
+}
+
+// The first `count` vibration modes against the dense solve: the largest relative difference of
+// w^2, and checks of the Lanczos shapes (mass-orthonormal, K phi = w^2 M phi, and where a mode is
+// apart from its neighbours the dense shape up to its sign).
+void compare_with_dense(const StructuralSystem& system, int count, const std::string& name) {
+  const Modes lanczos = vibration_modes(system, count);
+  const Modes dense = modal_analysis(system);
+  ASSERT_EQ(lanczos.omega_squared.size(), count) << name;
+  const Matrix mass = Matrix(system.mass_matrix());
+  const Eigen::SparseMatrix<double>& stiffness = system.stiffness();
+  double worst = 0.0, worst_residual = 0.0, worst_shape = 0.0;
+  for (Index k = 0; k < count; ++k) {
+    const double exact = dense.omega_squared[k];
+    worst = std::max(worst, std::abs(lanczos.omega_squared[k] / exact - 1.0));
+    const Vector shape = lanczos.shapes.col(k);
+    const Vector force = stiffness * shape;
+    worst_residual = std::max(
+        worst_residual, (force - lanczos.omega_squared[k] * mass * shape).norm() / force.norm());
+    const bool apart = (k == 0 || dense.omega_squared[k - 1] < 0.999 * exact) &&
+                       dense.omega_squared[k + 1] > 1.001 * exact;
+    if (apart)  // 1 - |cos| of the angle between the two shapes in M's inner product
+      worst_shape =
+          std::max(worst_shape, std::abs(std::abs(shape.dot(mass * dense.shapes.col(k))) - 1.0));
+  }
+  const double orthonormal_error =
+      (lanczos.shapes.transpose() * mass * lanczos.shapes - Matrix::Identity(count, count))
+          .cwiseAbs()
+          .maxCoeff();
+  std::cout << name << ": " << system.size() << " DOFs, w^2 against the dense solve " << worst
+            << ", residual |K phi - w^2 M phi| / |K phi| " << worst_residual
+            << ", 1 - |cos| against the dense shape " << worst_shape << ", |Phi^T M Phi - I| "
+            << orthonormal_error << "\n";
+  EXPECT_LT(worst, 1e-10) << name;
+  EXPECT_LT(worst_residual, 1e-8) << name;
+  EXPECT_LT(worst_shape, 1e-12) << name;
+  EXPECT_LT(orthonormal_error, 1e-10) << name;
+}
+
+// 12 bays by 10 storeys: 390 DOFs, the largest w^2 about 1e6 times the first (so both solves are
+// good to about 1e-10 of w^2). With lumped masses the 130 rotations are massless (a mass of
+// 1e-12 of the largest in the Lanczos pencil, recovered statically; condensed in the dense
+// one).
+TEST(ModalAnalysis, LanczosGivesTheDenseModesOfALargeFrame) {
+  for (const std::string mass : {"lumped", "consistent"}) {
+    const StructuralSystem system = system_of(frame(12, 10, mass));
+    ASSERT_GT(system.size(), 300);
+    compare_with_dense(system, 10, "frame, " + mass + " masses");
+  }
+}
+
+// A cantilever of n steel beams along x, 10 m, fixed at its base.
+std::string cantilever(int elements, const std::string& mass) {
+  std::string nodes, beams;
+  for (int i = 0; i <= elements; ++i)
+    nodes += fmt::format("{}{{\"id\": \"n{}\", \"x\": {}, \"y\": 0}}", i ? ", " : "", i,
+                         10.0 * i / elements);
+  for (int e = 0; e < elements; ++e)
+    beams += fmt::format(
+        "{}{{\"id\": \"b{}\", \"type\": \"beam\", \"nodes\": [\"n{}\", \"n{}\"], \"material\": "
+        "\"steel\", \"area\": 0.01, \"inertia\": 1e-4, \"mass\": \"{}\"}}",
+        e ? ", " : "", e, e, e + 1, mass);
+  return fmt::format(R"({{"dimension": 2, "nodes": [{}],
+    "materials": [{{"id": "steel", "youngs_modulus": 2e11, "density": 7850}}],
+    "elements": [{}], "supports": [{{"node": "n0", "fix": ["x", "y", "rz"]}}],
+    "analysis": {{"time_step": 0.001, "duration": 1}}}})",
+                     nodes, beams);
+}
+
+// A finely meshed cantilever with consistent masses: its highest w^2 (the rotations' tiny
+// rotary inertia) is 5e-11 of the first at 90 beams and 7e-12 at 150, and the former test of
+// rigid-body modes (w^2 below 1e-10 of the highest) dropped its first mode: `pound modes` listed
+// the second (0.0565 s) as the first. Both paths now give the Euler-Bernoulli period, 2 pi /
+// (1.875104^2 sqrt(EI / (m L^4))), within the mesh's error and the round-off of a w^2 range of
+// 1e11 (1e-6).
+TEST(ModalAnalysis, AFineConsistentMassCantileverKeepsItsFirstMode) {
+  const double exact =
+      2.0 * std::numbers::pi /
+      (1.875104068711961 * 1.875104068711961 * std::sqrt(2e11 * 1e-4 / (7850 * 0.01 * 1e4)));
+  for (const int elements : {90, 150}) {  // 270 DOFs: dense; 450: Lanczos
+    const std::vector<double> periods =
+        natural_periods(system_of(cantilever(elements, "consistent")), 2);
+    ASSERT_EQ(periods.size(), 2u);
+    std::cout << elements << " beams: first period " << periods[0] << ", Euler-Bernoulli " << exact
+              << ", relative error " << periods[0] / exact - 1.0 << "\n";
+    EXPECT_NEAR(periods[0] / exact, 1.0, 1e-6) << elements << " beams";
+  }
+}
+
+// 310 masses on a line, the first 270 in a chain of springs from the ground and 40 free: 40
+// rigid-body modes come out of the Lanczos solve first, so it asks for more until the chain's
+// modes are found.
+TEST(ModalAnalysis, LanczosLooksPastRigidBodyModes) {
+  constexpr int kChain = 270;
+  std::string nodes = R"({"id": "ground", "x": 0})", elements, masses;
+  for (int i = 1; i <= 310; ++i) {
+    nodes += fmt::format(R"(, {{"id": "m{}", "x": {}}})", i, i);
+    masses += fmt::format(R"({}{{"node": "m{}", "mass": 1}})", i > 1 ? ", " : "", i);
+    if (i <= kChain)
+      elements += fmt::format(
+          R"({}{{"id": "k{}", "type": "truss", "nodes": ["{}", "m{}"], "material": "k", "area": 1}})",
+          i > 1 ? ", " : "", i, i == 1 ? std::string("ground") : fmt::format("m{}", i - 1), i);
+  }
+  const StructuralSystem system = system_of(fmt::format(R"({{"dimension": 1, "nodes": [{}],
+    "materials": [{{"id": "k", "youngs_modulus": 100, "density": 0}}], "elements": [{}],
+    "masses": [{}], "supports": [{{"node": "ground", "fix": ["x"]}}],
+    "analysis": {{"time_step": 0.001, "duration": 1}}}})",
+                                                        nodes, elements, masses));
+  // A fixed-free chain of N equal springs k and masses m: w_j = 2 sqrt(k/m) sin((2j-1) pi /
+  // (2 (2N + 1))).
+  const std::vector<double> periods = natural_periods(system, 3);
+  ASSERT_EQ(periods.size(), 3u);
+  for (int j = 1; j <= 3; ++j) {
+    const double exact =
+        2.0 * std::numbers::pi /
+        (2.0 * 10.0 * std::sin((2 * j - 1) * std::numbers::pi / (2.0 * (2 * kChain + 1))));
+    std::cout << "mode " << j << ": period " << periods[j - 1] << ", relative error "
+              << periods[j - 1] / exact - 1.0 << "\n";
+    EXPECT_NEAR(periods[j - 1] / exact, 1.0, 1e-9) << "mode " << j;
+  }
+  // Asking for more modes than the chain has gives all of its 270 (the free masses have none).
+  EXPECT_EQ(vibration_modes(system, 400).omega_squared.size(), kChain);
+}
+
+// Two massless pads tied to each other vertically and to nothing else that holds them
+// vertically: K_00 is singular though no diagonal is 0. The Lanczos path refuses it as the dense
+// condensation does, naming one of the two DOFs.
+TEST(ModalAnalysis, LanczosRefusesAMasslessMechanism) {
+  std::string nodes = R"({"id": "ground", "x": 0, "y": 0})", elements, masses, supports;
+  for (int i = 1; i <= 320; ++i) {
+    nodes += fmt::format(R"(, {{"id": "m{}", "x": {}, "y": 0}})", i, i);
+    masses += fmt::format(R"({}{{"node": "m{}", "mass": 1}})", i > 1 ? ", " : "", i);
+    supports += fmt::format(R"(, {{"node": "m{}", "fix": ["y"]}})", i);
+    elements += fmt::format(
+        R"({}{{"id": "k{}", "type": "truss", "nodes": ["{}", "m{}"], "material": "k", "area": 1}})",
+        i > 1 ? ", " : "", i, i == 1 ? std::string("ground") : fmt::format("m{}", i - 1), i);
+  }
+  nodes += R"(, {"id": "pad", "x": 321, "y": 0}, {"id": "top", "x": 321, "y": 1})";
+  elements +=
+      R"(, {"id": "arm", "type": "truss", "nodes": ["m320", "pad"], "material": "k", "area": 1},
+      {"id": "post", "type": "truss", "nodes": ["pad", "top"], "material": "k", "area": 1})";
+  supports += R"(, {"node": "top", "fix": ["x"]})";
+  const StructuralSystem system = system_of(fmt::format(R"({{"dimension": 2, "nodes": [{}],
+    "materials": [{{"id": "k", "youngs_modulus": 100, "density": 0}}], "elements": [{}],
+    "masses": [{}], "supports": [{{"node": "ground", "fix": ["x", "y"]}}{}],
+    "analysis": {{"time_step": 0.001, "duration": 1}}}})",
+                                                        nodes, elements, masses, supports));
+  ASSERT_GT(system.size(), 300);
+  EXPECT_THROW(modal_analysis(system), NotPositiveDefinite);
+  try {
+    vibration_modes(system, 3);
+    ADD_FAILURE() << "a massless mechanism gave modes";
+  } catch (const NotPositiveDefinite& error) {
+    const Index pad = system.dofs().own_equation(321, 1), top = system.dofs().own_equation(322, 1);
+    EXPECT_TRUE(error.equation() == pad || error.equation() == top) << error.what();
+  }
 }
 
 }  // namespace
