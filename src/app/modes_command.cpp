@@ -31,7 +31,8 @@ that moves along y) as a fraction of the total: the periods Rayleigh damping is 
 the ones a time step must resolve. --shapes writes the mode shapes (.csv, or .npy): a row per
 free DOF (label column "dof": <node>.u_x, <node>.u_y, <node>.r_z) and a column per mode,
 mode_1, mode_2, ..., each scaled so that its largest component is +1; a DOF a constraint ties
-has its row too, its master's motion there (a rigid floor's corner may pass 1).
+has its row too, its master's motion there (a rigid floor's corner may pass 1). Past 4,000 DOFs
+at most the first 500 modes are listed.
 
 options)";
 

@@ -242,9 +242,12 @@ class MasslessCondensation {
 };
 
 // Models up to this many DOFs take the dense solve (every mode, in well under a second); so do
-// models up to modal_analysis's 4,000 when a quarter of their modes or more is asked for.
+// models up to modal_analysis's 4,000 when a quarter of their modes or more, or more than the
+// Lanczos solve's most, is asked for. Past 4,000 DOFs at most 500 modes are found (a few seconds
+// at 5,000 DOFs; all of them would take the Lanczos basis to the model's size, and minutes).
 constexpr Index kDenseModalDofs = 300;
 constexpr Index kLargestDenseModalDofs = 4000;
+constexpr int kMostLanczosModes = 500;
 
 // The pencil (K, M) of the sparse path: M with a mass 1e-12 of the largest on each massless
 // DOF, so that it is positive definite as the Lanczos inner product needs (their modes go past
@@ -348,9 +351,10 @@ Modes dense_vibration_modes(const StructuralSystem& system, int count) {
 
 Modes vibration_modes(const StructuralSystem& system, int count) {
   const Index n = system.size();
-  if (n <= kDenseModalDofs || (n <= kLargestDenseModalDofs && 4 * (Index{count} + 6) >= n))
+  const bool many = 4 * (Index{count} + 6) >= n || count > kMostLanczosModes;
+  if (n <= kDenseModalDofs || (n <= kLargestDenseModalDofs && many))
     return dense_vibration_modes(system, count);
-  std::optional<Modes> modes = sparse_vibration_modes(system, count);
+  std::optional<Modes> modes = sparse_vibration_modes(system, std::min(count, kMostLanczosModes));
   return modes ? *modes : dense_vibration_modes(system, count);
 }
 

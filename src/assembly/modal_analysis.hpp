@@ -33,9 +33,9 @@ Vector stiffness_diagonal_with_links(const StructuralSystem& system);
 Modes modal_analysis(const StructuralSystem& system, Index max_dofs = 4000);
 // The lowest `count` vibration modes (fewer if the model has fewer), ascending, rigid-body modes
 // (w^2 below 1e-10 of the highest modes' scale) left out, shapes mass-normalised over all DOFs.
-// Up to 300 DOFs (and up to 4,000 when a quarter of the modes or more is asked for) they are
-// modal_analysis's; otherwise shift-invert Lanczos finds them (Spectra), to a relative 1e-11 in
-// w^2. Throws as modal_analysis does, but never std::length_error.
+// Up to 300 DOFs (and up to 4,000 when a quarter of the modes or more, or more than 500, is asked
+// for) they are modal_analysis's; otherwise shift-invert Lanczos finds them (Spectra), at most
+// 500. Throws as modal_analysis does, but never std::length_error.
 Modes vibration_modes(const StructuralSystem& system, int count);
 // The first `count` periods 2 pi / w of the vibration modes (rigid-body modes left out).
 std::vector<double> natural_periods(const StructuralSystem& system, int count);
