@@ -332,7 +332,9 @@ std::optional<Modes> sparse_vibration_modes(const StructuralSystem& system, int 
   for (const Index i : massless) mass.coeffRef(i, i) = 1e-12 * row_mass.maxCoeff();
   const Pencil pencil{stiffness, std::move(mass), condensation};
   // Lanczos finds at most n - 1 modes; nearly all of them take the dense solve, where it can.
-  const Index available = std::min(static_cast<Index>(with_mass.size()), n - 1);
+  // Past it the basis stops at 2,000 modes (more rigid-body modes than that leave fewer listed).
+  Index available = std::min(static_cast<Index>(with_mass.size()), n - 1);
+  if (n > kLargestDenseModalDofs) available = std::min<Index>(available, 4 * kMostLanczosModes);
   for (Index extra = 6;; extra *= 4) {
     if (count + extra >= available && n <= kLargestDenseModalDofs) return {};
     const Index wanted = std::min<Index>(count + extra, available);
