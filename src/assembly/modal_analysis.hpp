@@ -31,8 +31,10 @@ Vector stiffness_diagonal_with_links(const StructuralSystem& system);
 // (matrices not finite, or masses and stiffnesses too far apart in scale) or would (a
 // stiffness-to-mass ratio past 1e150).
 Modes modal_analysis(const StructuralSystem& system, Index max_dofs = 4000);
-// The lowest `count` vibration modes (fewer if the model has fewer), ascending, rigid-body modes
-// (w^2 below 1e-10 of the highest modes' scale) left out, shapes mass-normalised over all DOFs.
+// The lowest `count` vibration modes (fewer if the model has fewer), ascending, shapes
+// mass-normalised over all DOFs; rigid-body and mechanism modes, which store no strain energy
+// (u^T K u round-off of its terms, or w^2 at most 1e-14 of the smallest positive K_ii / M_ii),
+// left out.
 // Up to 300 DOFs (and up to 4,000 when a quarter of the modes or more, or more than 500, is asked
 // for) they are modal_analysis's; otherwise shift-invert Lanczos finds them (Spectra), at most
 // 500. Throws as modal_analysis does, but never std::length_error.
