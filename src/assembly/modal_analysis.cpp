@@ -21,6 +21,12 @@ namespace pound::assembly {
 
 namespace {
 
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+constexpr const char* kNotConverged =
+    "the eigen-solver did not converge (are masses or stiffnesses many orders of magnitude apart, "
+    "or extreme?)";
+
 // K with every link row at its initial tangent (penetration -gap, at rest).
 Matrix stiffness_with_links(const StructuralSystem& system) {
   Matrix stiffness = Matrix(system.stiffness());
@@ -40,17 +46,25 @@ Matrix submatrix(const Matrix& a, const std::vector<Index>& rows, const std::vec
   return out;
 }
 
-// K_00^-1 rhs for the massless DOFs, which must be held by stiffness alone: a pivot at round-off
-// level (a massless mechanism) is refused, naming its DOF (row k of P K_00 P^T is (P i)_k).
+// The massless DOFs must be held by stiffness alone: the first pivot of K_00 = L D L^T at
+// round-off level of K_00's largest diagonal (a massless mechanism), or the first of a failed
+// factorisation, is refused, naming its DOF (row k of P K_00 P^T is massless[(P i)_k]).
+template <typename Permutation>
+void refuse_massless_mechanism(const Vector& pivots, const Permutation& permutation, bool factored,
+                               double scale, const std::vector<Index>& massless) {
+  const Vector order =
+      permutation * Vector::LinSpaced(pivots.size(), 0.0, static_cast<double>(pivots.size() - 1));
+  for (Index k = 0; k < pivots.size(); ++k)
+    if (!factored || !(pivots[k] > 1e-13 * scale))
+      throw NotPositiveDefinite(massless[static_cast<std::size_t>(order[k])], pivots[k]);
+}
+
+// K_00^-1 rhs for the massless DOFs.
 Matrix condensed_solve(const Matrix& k00, const std::vector<Index>& massless, const Matrix& rhs) {
   const Eigen::LDLT<Matrix> factor(k00);
-  const Vector& pivots = factor.vectorD();
-  const double scale = k00.diagonal().cwiseAbs().maxCoeff();
-  Vector order = Vector::LinSpaced(k00.rows(), 0.0, static_cast<double>(k00.rows() - 1));
-  order = factor.transpositionsP() * order;
-  for (Index k = 0; k < pivots.size(); ++k)
-    if (factor.info() != Eigen::Success || !(pivots[k] > 1e-13 * scale))
-      throw NotPositiveDefinite(massless[static_cast<std::size_t>(order[k])], pivots[k]);
+  refuse_massless_mechanism(factor.vectorD(), factor.transpositionsP(),
+                            factor.info() == Eigen::Success, k00.diagonal().cwiseAbs().maxCoeff(),
+                            massless);
   return factor.solve(rhs);
 }
 
@@ -75,6 +89,24 @@ Condensed condense(const Matrix& stiffness, const std::vector<Index>& with_mass,
 void refuse_non_finite(bool finite) {
   if (!finite)
     throw ModalAnalysisError("the stiffness or mass matrix holds values that are not finite");
+}
+
+// The DOFs with mass (a nonzero in their row of M) and those without, and the largest |M_ij|.
+struct MassSplit {
+  std::vector<Index> with_mass, massless;
+  double largest = 0.0;
+};
+
+MassSplit split_by_mass(const SparseMatrix& mass) {
+  Vector row_mass = Vector::Zero(mass.rows());  // the largest |M_ij| of each row
+  for (Index col = 0; col < mass.outerSize(); ++col)
+    for (SparseMatrix::InnerIterator term(mass, col); term; ++term)
+      row_mass[term.row()] = std::max(row_mass[term.row()], std::abs(term.value()));
+  MassSplit split;
+  for (Index i = 0; i < mass.rows(); ++i)
+    (row_mass[i] > 0.0 ? split.with_mass : split.massless).push_back(i);
+  split.largest = row_mass.size() ? row_mass.maxCoeff() : 0.0;
+  return split;
 }
 
 // K_ii / M_ii past 1e150 (w > 1e75 rad/s) over the DOFs with mass is no structure's, and the
@@ -111,21 +143,18 @@ Modes modal_analysis(const StructuralSystem& system, Index max_dofs) {
                     "limited to {} DOFs",
                     n, max_dofs));
   const Matrix stiffness = stiffness_with_links(system);
-  const Matrix mass = Matrix(system.mass_matrix());
+  const SparseMatrix sparse_mass = system.mass_matrix();
+  const Matrix mass = Matrix(sparse_mass);
   refuse_non_finite(stiffness.allFinite() && mass.allFinite());
   // Split DOFs with and without mass; condense the massless ones statically.
-  std::vector<Index> with_mass, massless;
-  for (Index i = 0; i < n; ++i)
-    (mass.row(i).cwiseAbs().maxCoeff() > 0.0 ? with_mass : massless).push_back(i);
+  const auto [with_mass, massless, largest_mass] = split_by_mass(sparse_mass);
   if (with_mass.empty()) return Modes{Vector(0), Matrix::Zero(n, 0)};
   refuse_overflowing_ratios(stiffness.diagonal(), mass.diagonal(), with_mass);
   const Condensed condensed = condense(stiffness, with_mass, massless);
   const Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> solver(
       condensed.reduced, submatrix(mass, with_mass, with_mass));
   if (solver.info() != Eigen::Success || !solver.eigenvalues().allFinite())
-    throw ModalAnalysisError(
-        "the eigen-solver did not converge (are masses or stiffnesses many orders of magnitude "
-        "apart, or extreme?)");
+    throw ModalAnalysisError(kNotConverged);
   Modes modes;
   modes.omega_squared = solver.eigenvalues();
   modes.shapes = Matrix::Zero(n, static_cast<Index>(with_mass.size()));
@@ -140,8 +169,6 @@ Modes modal_analysis(const StructuralSystem& system, Index max_dofs) {
 }
 
 namespace {
-
-using SparseMatrix = Eigen::SparseMatrix<double>;
 
 // K + B^T diag(k_rest) B: the linear elements and every link at its initial tangent, sparse.
 SparseMatrix sparse_stiffness_with_links(const StructuralSystem& system) {
@@ -178,10 +205,11 @@ struct RigidTest {
 
 // 1e-14 of the smallest positive K_ii / M_ii over the DOFs with mass (0 if none).
 double least_omega_squared(const SparseMatrix& stiffness, const SparseMatrix& mass) {
+  const Vector stiffness_diagonal = stiffness.diagonal(), mass_diagonal = mass.diagonal();
   double smallest = 0.0;
   for (Index i = 0; i < stiffness.rows(); ++i) {
-    const double ratio = stiffness.coeff(i, i) / mass.coeff(i, i);
-    if (mass.coeff(i, i) > 0.0 && ratio > 0.0 && (smallest == 0.0 || ratio < smallest))
+    const double ratio = stiffness_diagonal[i] / mass_diagonal[i];
+    if (mass_diagonal[i] > 0.0 && ratio > 0.0 && (smallest == 0.0 || ratio < smallest))
       smallest = ratio;
   }
   return 1e-14 * smallest;
@@ -201,9 +229,8 @@ Modes vibrating(const Modes& modes, const RigidTest& rigid, int count) {
   return result;
 }
 
-// The massless DOFs' static equations K_00 x_0 = -K_0m x_m, factored once (sparse LDL^T). They
-// must be held by stiffness alone, as the dense path's condensation asks (condensed_solve): the
-// first pivot at round-off level is refused, naming its DOF.
+// The massless DOFs' static equations K_00 x_0 = -K_0m x_m, factored once (sparse LDL^T), which
+// must hold them as the dense path's condensation asks.
 class MasslessCondensation {
  public:
   MasslessCondensation(const SparseMatrix& stiffness, std::vector<Index> massless)
@@ -214,13 +241,10 @@ class MasslessCondensation {
     for (Index r = 0; r < m; ++r) select_.insert(r, massless_[static_cast<std::size_t>(r)]) = 1.0;
     const SparseMatrix k00 = select_ * stiffness * SparseMatrix(select_.transpose());
     factor_.compute(k00);
-    const double scale = k00.diagonal().cwiseAbs().maxCoeff();
-    const Vector order =
-        factor_.permutationP() * Vector::LinSpaced(m, 0.0, static_cast<double>(m - 1));
-    const Vector& pivots = factor_.vectorD();
-    for (Index k = 0; k < m; ++k)  // a failed factorisation stops at a pivot that fails here
-      if (!(pivots[k] > 1e-13 * scale))
-        throw NotPositiveDefinite(massless_[static_cast<std::size_t>(order[k])], pivots[k]);
+    // A failed factorisation stops at a zero pivot, which the scan refuses (the pivots after it
+    // are never read).
+    refuse_massless_mechanism(factor_.vectorD(), factor_.permutationP(), true,
+                              k00.diagonal().cwiseAbs().maxCoeff(), massless_);
   }
 
   // The massless entries of `shape` from the others, as the dense path recovers them (the
@@ -277,9 +301,7 @@ Modes refined(const Pencil& pencil, const ShiftInvert& inverse, const Matrix& sh
   const Matrix projected_mass = iterated.transpose() * (pencil.mass * iterated);
   const Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> ritz(projected_stiffness, projected_mass);
   if (ritz.info() != Eigen::Success || !ritz.eigenvalues().allFinite())
-    throw ModalAnalysisError(
-        "the eigen-solver did not converge (are masses or stiffnesses many orders of magnitude "
-        "apart, or extreme?)");
+    throw ModalAnalysisError(kNotConverged);
   return Modes{ritz.eigenvalues(), iterated * ritz.eigenvectors()};
 }
 
@@ -301,9 +323,7 @@ Modes lanczos_modes(const Pencil& pencil, double shift, Index wanted) {
       throw ModalAnalysisError("");
     shapes = solver.eigenvectors();
   } catch (const std::exception&) {  // Spectra's failed shift factorisation, or no convergence
-    throw ModalAnalysisError(
-        "the eigen-solver did not converge (are masses or stiffnesses many orders of magnitude "
-        "apart, or extreme?)");
+    throw ModalAnalysisError(kNotConverged);
   }
   return refined(pencil, inverse, shapes);
 }
@@ -315,12 +335,7 @@ std::optional<Modes> sparse_vibration_modes(const StructuralSystem& system, int 
   SparseMatrix mass = system.mass_matrix();
   refuse_non_finite(all_finite(stiffness) && all_finite(mass));
   const Index n = stiffness.rows();
-  std::vector<Index> with_mass, massless;
-  Vector row_mass = Vector::Zero(n);  // the largest |M_ij| of each row
-  for (Index col = 0; col < mass.outerSize(); ++col)
-    for (SparseMatrix::InnerIterator term(mass, col); term; ++term)
-      row_mass[term.row()] = std::max(row_mass[term.row()], std::abs(term.value()));
-  for (Index i = 0; i < n; ++i) (row_mass[i] > 0.0 ? with_mass : massless).push_back(i);
+  const auto [with_mass, massless, largest_mass] = split_by_mass(mass);
   if (with_mass.empty()) return Modes{Vector(0), Matrix::Zero(n, 0)};
   refuse_overflowing_ratios(stiffness.diagonal(), mass.diagonal(), with_mass);
   const MasslessCondensation condensation(stiffness, massless);
@@ -329,7 +344,7 @@ std::optional<Modes> sparse_vibration_modes(const StructuralSystem& system, int 
   // modes, and the shift far below the first vibration mode (the diagonal ratios exceed its w^2
   // by about the square of the elements per wavelength).
   const double shift = rigid.least_omega_squared > 0.0 ? -100.0 * rigid.least_omega_squared : -1.0;
-  for (const Index i : massless) mass.coeffRef(i, i) = 1e-12 * row_mass.maxCoeff();
+  for (const Index i : massless) mass.coeffRef(i, i) = 1e-12 * largest_mass;
   const Pencil pencil{stiffness, std::move(mass), condensation};
   // Lanczos finds at most n - 1 modes; nearly all of them take the dense solve, where it can.
   // Past it the basis stops at 2,000 modes (more rigid-body modes than that leave fewer listed).

@@ -194,44 +194,6 @@ TEST(ModalAnalysis, LanczosGivesTheDenseModesOfALargeFrame) {
   }
 }
 
-// A cantilever of n steel beams along x, 10 m, fixed at its base.
-std::string cantilever(int elements, const std::string& mass) {
-  std::string nodes, beams;
-  for (int i = 0; i <= elements; ++i)
-    nodes += fmt::format("{}{{\"id\": \"n{}\", \"x\": {}, \"y\": 0}}", i ? ", " : "", i,
-                         10.0 * i / elements);
-  for (int e = 0; e < elements; ++e)
-    beams += fmt::format(
-        "{}{{\"id\": \"b{}\", \"type\": \"beam\", \"nodes\": [\"n{}\", \"n{}\"], \"material\": "
-        "\"steel\", \"area\": 0.01, \"inertia\": 1e-4, \"mass\": \"{}\"}}",
-        e ? ", " : "", e, e, e + 1, mass);
-  return fmt::format(R"({{"dimension": 2, "nodes": [{}],
-    "materials": [{{"id": "steel", "youngs_modulus": 2e11, "density": 7850}}],
-    "elements": [{}], "supports": [{{"node": "n0", "fix": ["x", "y", "rz"]}}],
-    "analysis": {{"time_step": 0.001, "duration": 1}}}})",
-                     nodes, beams);
-}
-
-// A finely meshed cantilever with consistent masses: its highest w^2 (the rotations' tiny
-// rotary inertia) is 5e-11 of the first at 90 beams and 7e-12 at 150, and the former test of
-// rigid-body modes (w^2 below 1e-10 of the highest) dropped its first mode: `pound modes` listed
-// the second (0.0565 s) as the first. Both paths now give the Euler-Bernoulli period, 2 pi /
-// (1.875104^2 sqrt(EI / (m L^4))), within the mesh's error and the round-off of a w^2 range of
-// 1e11 (1e-6).
-TEST(ModalAnalysis, AFineConsistentMassCantileverKeepsItsFirstMode) {
-  const double exact =
-      2.0 * std::numbers::pi /
-      (1.875104068711961 * 1.875104068711961 * std::sqrt(2e11 * 1e-4 / (7850 * 0.01 * 1e4)));
-  for (const int elements : {90, 150}) {  // 270 DOFs: dense; 450: Lanczos
-    const std::vector<double> periods =
-        natural_periods(system_of(cantilever(elements, "consistent")), 2);
-    ASSERT_EQ(periods.size(), 2u);
-    std::cout << elements << " beams: first period " << periods[0] << ", Euler-Bernoulli " << exact
-              << ", relative error " << periods[0] / exact - 1.0 << "\n";
-    EXPECT_NEAR(periods[0] / exact, 1.0, 1e-6) << elements << " beams";
-  }
-}
-
 // 310 masses on a line, the first 270 in a chain of springs from the ground and 40 free: 40
 // rigid-body modes come out of the Lanczos solve first, so it asks for more until the chain's
 // modes are found.
