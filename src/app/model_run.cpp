@@ -355,6 +355,7 @@ RunOutcome summarise(const RunRequest& request, const PreparedRun& run, const So
 
 RunOutcome run_model(const RunRequest& request) {
   PreparedRun run = prepare(request);
+  if (request.before_solve) request.before_solve(run.warnings);
   const Solved solved = solve(run);
   return summarise(request, run, solved);
 }

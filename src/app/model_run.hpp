@@ -33,6 +33,9 @@ struct RunRequest {
   // Called once the model and its records are read, before the run: where the caller checks
   // that its outputs will not overwrite them (throwing InputError).
   std::function<void(const LoadedModel&)> before_run;
+  // Called with the warnings found before the run (RunOutcome::warnings starts with them) just
+  // before the solve: where `pound run` shows them, to a user who may wait long for the rest.
+  std::function<void(const std::vector<std::string>&)> before_solve;
 };
 
 struct RunOutcome {

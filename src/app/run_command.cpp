@@ -1,9 +1,13 @@
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <boost/program_options.hpp>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <span>
+#include <string>
+#include <vector>
 
 #include "app/command_line.hpp"
 #include "app/commands.hpp"
@@ -80,11 +84,16 @@ std::string request_error(const RunRequest& request) {
   return {};
 }
 
-// Prints the run's report and warnings; the exit code: 3 when the analysis failed.
+void print_warnings(std::span<const std::string> warnings) {
+  for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+}
+
+// Prints the run's report and its warnings but the first `printed` (shown before the solve); the
+// exit code: 3 when the analysis failed.
 int report_outcome(const RunOutcome& outcome, const std::string& model_path, const std::string& out,
-                   bool quiet) {
+                   bool quiet, std::size_t printed = 0) {
   if (!quiet) std::cout << outcome.headline << " -> " << out << "/\n" << outcome.report;
-  for (const std::string& w : outcome.warnings) std::cerr << "warning: " << w << "\n";
+  print_warnings(std::span(outcome.warnings).subspan(std::min(printed, outcome.warnings.size())));
   if (!outcome.failure.empty()) {
     std::cerr << fmt::format(
         "error: {}: analysis failed at t = {:.6g}: {} (results up to then are in {}/)\n",
@@ -160,9 +169,15 @@ int run_command(const Arguments& arguments) {
   // Everything that can be wrong with the input is found before any output exists.
   const bool quiet = parsed->count("quiet") > 0;
   if (!with_ensemble) {
+    // The warnings found before the run are shown at once: one of a run of days says so then.
+    std::size_t printed = 0;
+    request.before_solve = [&](const std::vector<std::string>& warnings) {
+      print_warnings(warnings);
+      printed = warnings.size();
+    };
     const RunOutcome outcome = run_model(request);
     write_run_outputs(out, outcome);
-    return report_outcome(outcome, request.model_path, out, quiet);
+    return report_outcome(outcome, request.model_path, out, quiet, printed);
   }
   const EnsembleResult result = run_ensemble(request, ensemble);
   write_run_outputs(out, result.unperturbed,

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <string>
 
 #include "assembly/modal_analysis.hpp"
 #include "integrators/central_difference.hpp"
@@ -215,6 +216,33 @@ void check_step_against_duration(const builder::BuiltModel& built,
   for (const model::SupportExcitation& e : built.model.support_excitations) check_record(e.motion);
 }
 
+// A run of more steps than this is a thousand times the bundled models' longest: most often a
+// time step or a duration mistyped by powers of ten, and a run that would say nothing for hours.
+// A warning, not a refusal: a fine mesh under a long record may need it.
+constexpr double kLongRunSteps = 1e9;
+
+// "25 minutes", "3 hours", "12 days", "3 years": a wall time to the unit a reader thinks in.
+std::string rough_duration(double seconds) {
+  constexpr double kMinute = 60.0, kHour = 3600.0, kDay = 86400.0, kYear = 365.25 * kDay;
+  if (seconds < 2.0 * kHour) return fmt::format("{:.0f} minutes", seconds / kMinute);
+  if (seconds < 2.0 * kDay) return fmt::format("{:.0f} hours", seconds / kHour);
+  if (seconds < 2.0 * kYear) return fmt::format("{:.0f} days", seconds / kDay);
+  return fmt::format("{:.3g} years", seconds / kYear);
+}
+
+void check_step_count(const builder::AnalysisSpec& analysis, std::vector<std::string>& warnings) {
+  if (!(analysis.time_step > 0.0) || !(analysis.duration > 0.0)) return;
+  const double steps = std::ceil(analysis.duration / analysis.time_step);
+  if (!(steps > kLongRunSteps)) return;
+  constexpr double kBridgeStep = 1e-6;  // [s] of wall time a step of a 60-DOF plane bridge
+  warnings.push_back(fmt::format(
+      "the analysis takes {:.3g} steps (a duration of {:.4g} over a time step of {:.4g}): at a "
+      "microsecond a step, a plane bridge of 60 DOFs, that is about {}, and larger models take "
+      "longer (is /analysis/time_step or /analysis/duration what you meant? --time-limit or "
+      "\"max_steps\" bound a run)",
+      steps, analysis.duration, analysis.time_step, rough_duration(steps * kBridgeStep)));
+}
+
 // An analysis that stops before a record's strongest shaking reports peaks of its start only (a
 // duration cut short for a trial run, then kept).
 void check_duration_reaches_peaks(const builder::BuiltModel& built,
@@ -279,6 +307,7 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
   }
   check_explicit_steps(analysis, system, check);
   check_step_against_duration(built, check.warnings);
+  check_step_count(analysis, check.warnings);
   check_record_peaks(built, check.warnings);
   check_duration_reaches_peaks(built, check.warnings);
   const double ground_velocity = peak_ground_velocity(built.model);

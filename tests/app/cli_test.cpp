@@ -397,6 +397,30 @@ TEST_F(Cli, StepLimitFailsAndKeepsTheHistorySoFar) {
   EXPECT_EQ(lines.size(), 1u + 11u);  // header, the initial state, 10 steps
 }
 
+// A run of more than a billion steps (here 2e9: a duration mistyped by powers of ten) says so,
+// with the time that means, before it starts (once, not again after the run), and check says it.
+TEST_F(Cli, ARunOfBillionsOfStepsIsWarnedOfBeforeItStarts) {
+  const std::string model =
+      write_model("long.json", R"([{"op": "replace", "path": "/analysis/duration", "value": 2e6},
+                       {"op": "add", "path": "/recorders", "value": []}])");
+  const Outcome run =
+      pound({"run", model, "--out", path("out").string(), "--max-steps", "5", "--quiet"});
+  EXPECT_EQ(run.exit_code, 3) << run.err;
+  const std::string warning =
+      "warning: the analysis takes 2e+09 steps (a duration of 2e+06 over a time step of 0.001): at "
+      "a microsecond a step, a plane bridge of 60 DOFs, that is about 33 minutes";
+  const std::size_t at = run.err.find(warning);
+  ASSERT_NE(at, std::string::npos) << run.err;
+  EXPECT_EQ(run.err.find(warning, at + 1), std::string::npos) << "printed twice:\n" << run.err;
+  const std::size_t stop = run.err.find("step limit of 5 steps");
+  ASSERT_NE(stop, std::string::npos) << run.err;
+  EXPECT_LT(at, stop) << run.err;
+  const Outcome check = pound({"check", model});
+  EXPECT_EQ(check.exit_code, 0) << check.err;
+  EXPECT_TRUE(contains(check.out + check.err, "2e+09 steps")) << check.out << check.err;
+  std::cout << "stderr: " << run.err;
+}
+
 TEST_F(Cli, TimeLimitFailsAndKeepsTheHistorySoFar) {
   const fs::path out = path("out");
   // A 1 ms budget cannot finish the bridge's 16,667 steps (0.15 s here) on any machine.

@@ -72,6 +72,35 @@ TEST(RunReport, TheBridgesNumbersCarryTheirUnits) {
 
 // The Takeda bridge's pier hinges: their moments apart from the bearings' forces (a moment of
 // 6.6e6 was once the "largest force" of the springs). The model names no mass unit.
+// The warnings found before a run are handed to before_solve once, as RunOutcome::warnings starts
+// with them (`pound run` prints them then, and the rest after the run).
+TEST(RunReport, WarningsFoundBeforeTheRunAreHandedOverBeforeTheSolve) {
+  RunRequest request;
+  request.model_path = "coarse_step.json";
+  request.model_text = R"({
+    "dimension": 1,
+    "nodes": [{"id": "ground", "x": 0}, {"id": "mass", "x": 1}],
+    "supports": [{"node": "ground", "fix": ["x"]}],
+    "masses": [{"node": "mass", "mass": 1}],
+    "initial_velocities": [{"node": "mass", "x": 1}],
+    "links": [{"id": "spring", "nodes": ["ground", "mass"], "axis": [1],
+               "law": {"type": "elastic_spring", "stiffness": 100}}],
+    "analysis": {"time_step": 0.02, "duration": 0.1}})";
+  request.histories = false;
+  std::vector<std::string> handed;
+  int calls = 0;
+  request.before_solve = [&](const std::vector<std::string>& warnings) {
+    handed = warnings;
+    ++calls;
+  };
+  const RunOutcome outcome = run_model(request);
+  EXPECT_EQ(calls, 1);
+  ASSERT_FALSE(handed.empty());
+  EXPECT_TRUE(has(handed[0], "more than a tenth of the duration")) << handed[0];
+  ASSERT_GE(outcome.warnings.size(), handed.size());
+  EXPECT_TRUE(std::equal(handed.begin(), handed.end(), outcome.warnings.begin()));
+}
+
 TEST(RunReport, HingeMomentsAreNotSpringForces) {
   const RunOutcome outcome = run_bundled("three_span_bridge_takeda.json");
   const nlohmann::json summary = nlohmann::json::parse(outcome.summary.dump());

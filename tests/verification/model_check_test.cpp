@@ -74,15 +74,16 @@ TEST(ModelCheck, ContactsOfOneSpecAndContextAreProbedOnceAndWarnedEach) {
 }
 
 // A mass on a spring in millimetres, shaken by a half-sine pulse of 0.4 g given in model units
-// (mm/s2) that peaks at 0.5 s, scaled by `scale` (JSON, or none), analysed for `duration`: the
-// check's warnings that contain `about`.
+// (mm/s2) that peaks at 0.5 s, scaled by `scale` (JSON, or none), analysed for `duration` at
+// `time_step`: the check's warnings that contain `about`.
 std::vector<std::string> pulse_warnings(const std::string& scale,
                                         const std::string& about = "beyond any earthquake",
-                                        double duration = 1.0) {
+                                        double duration = 1.0, double time_step = 0.01) {
   constexpr double kGravityMm = 9806.65;
   std::vector<double> pulse;
   for (int k = 0; k <= 100; ++k) pulse.push_back(0.4 * kGravityMm * std::sin(M_PI * k / 100.0));
-  const std::string text = fmt::format(R"({{
+  const std::string text =
+      fmt::format(R"({{
     "dimension": 1, "units": {{"length": "mm", "time": "s", "mass": "t"}},
     "nodes": [{{"id": "ground", "x": 0}}, {{"id": "top", "x": 0}}],
     "supports": [{{"node": "ground", "fix": ["x"]}}],
@@ -90,8 +91,8 @@ std::vector<std::string> pulse_warnings(const std::string& scale,
     "links": [{{"id": "spring", "nodes": ["ground", "top"], "axis": [1],
                "law": {{"type": "elastic_spring", "stiffness": 400}}}}],
     "excitations": [{{"record": "pulse.txt", "units": "model"{}}}],
-    "analysis": {{"time_step": 0.01, "duration": {}}}}})",
-                                       scale.empty() ? "" : ", \"scale\": " + scale, duration);
+    "analysis": {{"time_step": {}, "duration": {}}}}})",
+                  scale.empty() ? "" : ", \"scale\": " + scale, time_step, duration);
   const builder::BuiltModel built = builder::build(
       io::parse_model(text, "pulse.json"),
       {model::GroundMotion{.name = "pulse", .time_step = 0.01, .acceleration = pulse}});
@@ -127,6 +128,23 @@ TEST(ModelCheck, AnAnalysisThatStopsBeforeTheRecordsPeakWarns) {
   EXPECT_EQ(short_run[0],
             "the analysis stops at 0.3, before record 'pulse' reaches its largest acceleration (at "
             "0.5): its strongest shaking is not analysed (is /analysis/duration what you meant?)");
+}
+
+// More than a billion steps (a time step or duration mistyped by powers of ten) warns with the run
+// time that means; a billion does not.
+TEST(ModelCheck, AnAnalysisOfMoreThanABillionStepsWarns) {
+  EXPECT_TRUE(pulse_warnings("", "steps (a duration", 1.0, 1e-9).empty());
+  const std::vector<std::string> long_run = pulse_warnings("", "steps (a duration", 1.5, 1e-9);
+  ASSERT_EQ(long_run.size(), 1u);
+  EXPECT_TRUE(
+      long_run[0].starts_with("the analysis takes 1.5e+09 steps (a duration of 1.5 over a "
+                              "time step of 1e-09): at a microsecond a step, a plane "
+                              "bridge of 60 DOFs, that is about 25 minutes"))
+      << long_run[0];
+  const std::vector<std::string> years = pulse_warnings("", "steps (a duration", 1e7, 1e-6);
+  ASSERT_EQ(years.size(), 1u);
+  EXPECT_NE(years[0].find("1e+13 steps"), std::string::npos) << years[0];
+  EXPECT_NE(years[0].find("about 116 days"), std::string::npos) << years[0];
 }
 
 }  // namespace
