@@ -147,7 +147,8 @@ EnsembleResult run_ensemble(const RunRequest& request, const EnsembleOptions& op
       for (std::size_t k = next++; k < copies.size(); k = next++) {
         RunRequest copy = request;
         copy.histories = false;
-        copy.before_run = nullptr;  // writes nothing
+        copy.before_run = nullptr;    // writes nothing
+        copy.before_solve = nullptr;  // the unperturbed run's warnings are the copies'
         copy.record_factor = result.factors[k];
         copies[k] = run_model(copy);
       }

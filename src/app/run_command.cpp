@@ -168,13 +168,13 @@ int run_command(const Arguments& arguments) {
 
   // Everything that can be wrong with the input is found before any output exists.
   const bool quiet = parsed->count("quiet") > 0;
+  // The warnings found before the run are shown at once: one of a run of days says so then.
+  std::size_t printed = 0;
+  request.before_solve = [&](const std::vector<std::string>& warnings) {
+    print_warnings(warnings);
+    printed = warnings.size();
+  };
   if (!with_ensemble) {
-    // The warnings found before the run are shown at once: one of a run of days says so then.
-    std::size_t printed = 0;
-    request.before_solve = [&](const std::vector<std::string>& warnings) {
-      print_warnings(warnings);
-      printed = warnings.size();
-    };
     const RunOutcome outcome = run_model(request);
     write_run_outputs(out, outcome);
     return report_outcome(outcome, request.model_path, out, quiet, printed);
@@ -182,7 +182,7 @@ int run_command(const Arguments& arguments) {
   const EnsembleResult result = run_ensemble(request, ensemble);
   write_run_outputs(out, result.unperturbed,
                     {{"ensemble.json", ensemble_document(result, ensemble)}});
-  const int code = report_outcome(result.unperturbed, request.model_path, out, quiet);
+  const int code = report_outcome(result.unperturbed, request.model_path, out, quiet, printed);
   if (!quiet) std::cout << ensemble_report(result, ensemble);
   return code;
 }

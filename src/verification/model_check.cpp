@@ -216,8 +216,9 @@ void check_step_against_duration(const builder::BuiltModel& built,
   for (const model::SupportExcitation& e : built.model.support_excitations) check_record(e.motion);
 }
 
-// A run of more steps than this is a thousand times the bundled models' longest: most often a
-// time step or a duration mistyped by powers of ten, and a run that would say nothing for hours.
+// A run of more steps than this is over 20,000 times the bundled models' longest (43,364): most
+// often a time step or a duration mistyped by powers of ten, and a run that would say nothing for
+// hours.
 // A warning, not a refusal: a fine mesh under a long record may need it.
 constexpr double kLongRunSteps = 1e9;
 

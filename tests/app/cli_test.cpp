@@ -415,6 +415,13 @@ TEST_F(Cli, ARunOfBillionsOfStepsIsWarnedOfBeforeItStarts) {
   const std::size_t stop = run.err.find("step limit of 5 steps");
   ASSERT_NE(stop, std::string::npos) << run.err;
   EXPECT_LT(at, stop) << run.err;
+  // With copies, once too: the copies' warnings are the unperturbed run's.
+  const Outcome copies = pound({"run", model, "--out", path("copies").string(), "--max-steps", "5",
+                                "--ensemble", "2", "--quiet"});
+  EXPECT_EQ(copies.exit_code, 3) << copies.err;
+  const std::size_t first = copies.err.find(warning);
+  ASSERT_NE(first, std::string::npos) << copies.err;
+  EXPECT_EQ(copies.err.find(warning, first + 1), std::string::npos) << copies.err;
   const Outcome check = pound({"check", model});
   EXPECT_EQ(check.exit_code, 0) << check.err;
   EXPECT_TRUE(contains(check.out + check.err, "2e+09 steps")) << check.out << check.err;
