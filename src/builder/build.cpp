@@ -38,7 +38,7 @@ constexpr double kMostSteps = 1e15;
 
 // A time step of 1e-300 or a duration of 1e300 would otherwise "complete" with no step taken.
 void check_step_count(const AnalysisSpec& analysis, const std::string& source) {
-  const double steps = analysis.duration / analysis.time_step;
+  const double steps = analysis.step_count();
   if (!(steps <= kMostSteps))
     throw InputError(source, "/analysis/time_step",
                      fmt::format("{:g} over a duration of {:g} is {:.3g} steps, more than the "

@@ -7,6 +7,7 @@
 // "/links/k"; the builder names errors that way.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <string>
@@ -494,6 +495,8 @@ struct AnalysisSpec {
   // "initial_state": "static": the run starts from static equilibrium under the loads at t = 0
   // (with the links), then moves with the initial velocities; default "unloaded" (u = 0).
   bool static_initial_state = false;
+  // The steps of a fixed-step run, the last one perhaps shorter (time_step set).
+  double step_count() const { return std::ceil(duration / time_step); }
 };
 
 // What a run writes of its steps: "link" records force and penetration of the named links (all

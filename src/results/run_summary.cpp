@@ -454,7 +454,7 @@ std::optional<double> RunObservers::base_moment(std::size_t monitor) const {
 namespace {
 // The states a fixed-step run records: the start and each step.
 double recorded_states(const builder::AnalysisSpec& analysis) {
-  return std::ceil(analysis.duration / analysis.time_step) + 1.0;
+  return analysis.step_count() + 1.0;
 }
 }  // namespace
 
