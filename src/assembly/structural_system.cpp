@@ -1018,6 +1018,10 @@ std::vector<Vector> StructuralSystem::frame_shapes() const {
 }
 
 void StructuralSystem::frame_scales(double time, std::vector<double>& scales) const {
+  if (time == last_external_time_) {  // formed with the external force at this time
+    scales = last_scales_;
+    return;
+  }
   scales.clear();
   for (const Excitation& excitation : excitations_) scales.push_back(excitation.motion.at(time));
   for (const MovingSupport& support : moving_supports_)
@@ -1050,15 +1054,22 @@ void StructuralSystem::external_force(double time, Vector& force) const {
 }
 
 void StructuralSystem::compute_external_force(double time, Vector& force) const {
-  // -M iota a_g(t) of each excitation; the first one's with the loads in one pass.
-  if (excitations_.empty())
+  // -M iota a_g(t) of each excitation; the first one's with the loads in one pass. The ground's
+  // accelerations are kept as the frame's scales at this time (frame_scales).
+  last_scales_.clear();
+  if (excitations_.empty()) {
     force = loads_;
-  else
-    force = loads_ - excitations_[0].motion.at(time) * excitations_[0].inertia;
-  for (std::size_t k = 1; k < excitations_.size(); ++k)
-    force -= excitations_[k].motion.at(time) * excitations_[k].inertia;
+  } else {
+    last_scales_.push_back(excitations_[0].motion.at(time));
+    force = loads_ - last_scales_[0] * excitations_[0].inertia;
+  }
+  for (std::size_t k = 1; k < excitations_.size(); ++k) {
+    last_scales_.push_back(excitations_[k].motion.at(time));
+    force -= last_scales_[k] * excitations_[k].inertia;
+  }
   for (const MovingSupport& support : moving_supports_) {
     const model::GroundState ground = support.kinematics.at(time);
+    last_scales_.push_back(ground.acceleration);
     force -= ground.acceleration * support.inertia;      // -M r a_s(t)
     force += ground.displacement * support.static_load;  // -(K_ff r + K_fs) u_s(t)
   }

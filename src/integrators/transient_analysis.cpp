@@ -105,7 +105,7 @@ void TransientAnalysis::check_limits(const State& state, bool cutting) {
 void TransientAnalysis::accept(State& state, const StepResult& result) {
   TransientStatistics& stats = statistics_;
   system_.links().commit();
-  std::swap(state, next_);
+  swap(state, next_);
   ++stats.steps;
   stats.newton_iterations += result.iterations;
   stats.max_unbalanced_force = std::max(stats.max_unbalanced_force, result.unbalanced_force);

@@ -166,12 +166,14 @@ double GroundMotion::duration() const {
 double GroundMotion::at(double time) const {
   if (acceleration.empty() || !(time_step > 0.0)) return 0.0;
   const double position = time / time_step;
-  const double last = static_cast<double>(acceleration.size() - 1);
+  const std::size_t count = acceleration.size();
+  const double last = static_cast<double>(count - 1);
   if (!(position >= -kSampleTolerance && position <= last + kSampleTolerance)) return 0.0;
-  const double clamped = std::clamp(position, 0.0, last);
-  const auto k = std::min(static_cast<std::size_t>(clamped), acceleration.size() - 1);
-  if (k + 1 == acceleration.size()) return acceleration[k];
-  const double fraction = clamped - static_cast<double>(k);
+  // Within the tolerance of either end: that end's sample. Inside, k < count - 1.
+  if (position <= 0.0) return acceleration[0];
+  if (position >= last) return acceleration[count - 1];
+  const auto k = static_cast<std::size_t>(position);
+  const double fraction = position - static_cast<double>(k);
   return acceleration[k] + fraction * (acceleration[k + 1] - acceleration[k]);
 }
 
