@@ -12,6 +12,7 @@
 #include "app/cluster.hpp"
 #include "app/command_line.hpp"
 #include "app/commands.hpp"
+#include "app/progress_line.hpp"
 
 namespace pound::app {
 namespace po = boost::program_options;
@@ -41,12 +42,6 @@ failed, 2 for a bad set or model (nothing written) or an input edited since the 
 began, 4 when results cannot be written or another batch is working in DIR.
 
 options)";
-
-std::string clock_text(double seconds) {
-  const long s = std::lround(seconds);
-  return s >= 3600 ? fmt::format("{}:{:02}:{:02}", s / 3600, s / 60 % 60, s % 60)
-                   : fmt::format("{:02}:{:02}", s / 60, s % 60);
-}
 
 // A bar redrawn in place on a terminal; one line per case otherwise (logs, CI).
 void show_progress(const BatchProgress& p, bool terminal, int rank, int ranks) {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <exception>
 #include <map>
+#include <mutex>
 #include <thread>
 
 #include "builder/batch_spec.hpp"
@@ -132,13 +133,16 @@ std::string ensemble_options_error(const EnsembleOptions& options) {
   return {};
 }
 
-EnsembleResult run_ensemble(const RunRequest& request, const EnsembleOptions& options) {
+EnsembleResult run_ensemble(const RunRequest& request, const EnsembleOptions& options,
+                            const std::function<void(std::size_t, std::size_t)>& copy_done) {
   EnsembleResult result{run_model(request), record_factors(options)};
   std::vector<RunOutcome> copies(result.factors.size());
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   const std::size_t jobs = std::min<std::size_t>(
       options.jobs > 0 ? static_cast<std::size_t>(options.jobs) : cores, copies.size());
   std::atomic<std::size_t> next{0};
+  std::mutex reporting;  // copy_done's calls, one at a time
+  std::size_t done = 0;
   // What a copy threw (Ctrl-C's Interrupted, say): the others stop taking copies, and it is
   // thrown again here, after every thread has ended.
   std::vector<std::exception_ptr> thrown(jobs);
@@ -149,14 +153,20 @@ EnsembleResult run_ensemble(const RunRequest& request, const EnsembleOptions& op
         copy.histories = false;
         copy.before_run = nullptr;    // writes nothing
         copy.before_solve = nullptr;  // the unperturbed run's warnings are the copies'
+        copy.progress = nullptr;
         copy.record_factor = result.factors[k];
         copies[k] = run_model(copy);
+        if (copy_done) {
+          const std::lock_guard lock(reporting);
+          copy_done(++done, copies.size());
+        }
       }
     } catch (...) {
       thrown[job] = std::current_exception();
       next = copies.size();
     }
   };
+  if (copy_done) copy_done(0, copies.size());
   std::vector<std::thread> threads;
   for (std::size_t j = 1; j < jobs; ++j) threads.emplace_back(work, j);
   work(0);

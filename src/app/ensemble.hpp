@@ -8,6 +8,7 @@
 // and calls it robust when its 16-84 % spread is within `robust_spread` of its size (the
 // largest |value| over the runs). In a linear model every response scales with the record, so
 // its spread is the perturbations' own (2 k_max eps), far inside any threshold.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -51,7 +52,12 @@ std::string ensemble_options_error(const EnsembleOptions& options);
 
 // Runs the model as `request` asks (its histories included) and the copies (histories off) on
 // `jobs` threads; the numbers do not depend on the thread count. InputErrors throw as run_model's.
-EnsembleResult run_ensemble(const RunRequest& request, const EnsembleOptions& options);
+// `copy_done` (if any) is called with 0 as the copies start and after each copy with the copies
+// done, and their number, one call at a time; the copies report no progress of their own
+// (request.progress is the unperturbed run's).
+EnsembleResult run_ensemble(
+    const RunRequest& request, const EnsembleOptions& options,
+    const std::function<void(std::size_t done, std::size_t total)>& copy_done = {});
 
 // The lines `pound run` prints: the perturbations, and the quantities that are not robust.
 std::string ensemble_report(const EnsembleResult& result, const EnsembleOptions& options);

@@ -101,10 +101,10 @@ PreparedRun prepare(const RunRequest& request) {
 }
 
 // Integrates to the end or to a failure; a failed analysis keeps what it reached.
-Solved solve(PreparedRun& run) {
+Solved solve(PreparedRun& run, const RunRequest& request) {
   const builder::BuiltModel& built = run.loaded.built;
-  integrators::TransientAnalysis analysis(*run.system, *run.integrator,
-                                          builder::make_transient_settings(built.analysis));
+  const integrators::TransientSettings settings = builder::make_transient_settings(built.analysis);
+  integrators::TransientAnalysis analysis(*run.system, *run.integrator, settings);
   Solved solved;
   solved.state.velocity = run.system->initial_velocity(built.model);
   const Stopwatch stopwatch;
@@ -112,10 +112,21 @@ Solved solve(PreparedRun& run) {
     if (built.analysis.static_initial_state)
       solved.state.displacement =
           assembly::static_equilibrium(*run.system, solved.state.time).displacement;
-    solved.statistics = analysis.run(
-        solved.state, [&](const integrators::State& s, const integrators::StepResult&) {
-          run.observers->record(s);
-        });
+    const auto record = [&](const integrators::State& s, const integrators::StepResult&) {
+      run.observers->record(s);
+    };
+    if (request.progress) {
+      const double start = solved.state.time, end = settings.end_time;
+      request.progress(start, start, end);
+      long steps = 0;
+      solved.statistics = analysis.run(
+          solved.state, [&](const integrators::State& s, const integrators::StepResult& result) {
+            record(s, result);
+            if (++steps % kProgressStride == 0) request.progress(s.time, start, end);
+          });
+    } else {
+      solved.statistics = analysis.run(solved.state, record);  // no branch for a progress line
+    }
     solved.status.end_time = solved.state.time;
   } catch (const SolveError& error) {
     solved.status = {error.reason(), error.time()};
@@ -356,7 +367,7 @@ RunOutcome summarise(const RunRequest& request, const PreparedRun& run, const So
 RunOutcome run_model(const RunRequest& request) {
   PreparedRun run = prepare(request);
   if (request.before_solve) request.before_solve(run.warnings);
-  const Solved solved = solve(run);
+  const Solved solved = solve(run, request);
   return summarise(request, run, solved);
 }
 

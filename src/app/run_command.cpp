@@ -1,10 +1,12 @@
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <boost/program_options.hpp>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -13,6 +15,7 @@
 #include "app/commands.hpp"
 #include "app/ensemble.hpp"
 #include "app/model_run.hpp"
+#include "app/progress_line.hpp"
 #include "io/ground_motion_reader.hpp"
 #include "io/output_paths.hpp"
 
@@ -103,6 +106,20 @@ int report_outcome(const RunOutcome& outcome, const std::string& model_path, con
   return 0;
 }
 
+// RunRequest::progress for `line`: its clock restarts as the solve starts.
+std::function<void(double, double, double)> solve_progress(ProgressLine& line, std::string what) {
+  return [&line, what, started = false](double time, double start, double end) mutable {
+    if (!started) {  // the solve starts: its time counts from here
+      line.restart();
+      started = true;
+      return;
+    }
+    line.update([&](double elapsed) {
+      return "progress: " + what + solve_progress_text(time, start, end, elapsed);
+    });
+  };
+}
+
 }  // namespace
 
 int run_command(const Arguments& arguments) {
@@ -110,6 +127,7 @@ int run_command(const Arguments& arguments) {
   RunRequest request;
   EnsembleOptions ensemble;
   std::string out, motion;
+  double progress_interval = 0.0;
   options.add_options()("help,h", "show this help")("out,o", po::value(&out),
                                                     "output folder (default out/<model name>)")(
       "motion", po::value(&motion),
@@ -138,12 +156,19 @@ int run_command(const Arguments& arguments) {
       "robust-spread", po::value(&ensemble.robust_spread)->default_value(0.05, "0.05"),
       "a result whose 16-84 % spread over the copies is within this share of its size is robust")(
       "jobs,j", po::value(&ensemble.jobs)->default_value(0, "every core"),
-      "threads for the copies")("quiet,q", "print nothing but errors");
+      "threads for the copies")(
+      "progress", po::value(&progress_interval),
+      "print how far the run has come every SECONDS, for logs (without it: on a terminal a line "
+      "kept up to date once a run takes over 2 s, elsewhere nothing)")("quiet,q",
+                                                                       "print nothing but errors");
   const auto parsed = parse_command_line(arguments, options, "model", request.model_path);
   if (!parsed) return 0;
   const bool with_ensemble = parsed->count("ensemble") > 0;
   std::string error = request_error(request);
   if (error.empty() && with_ensemble) error = ensemble_options_error(ensemble);
+  if (error.empty() && parsed->count("progress") &&
+      !(progress_interval > 0.0 && std::isfinite(progress_interval)))
+    error = "--progress must be a positive number of seconds";
   for (const char* option : {"perturbation", "robust-spread", "jobs"})
     if (error.empty() && !with_ensemble && !(*parsed)[option].defaulted())
       error =
@@ -174,12 +199,29 @@ int run_command(const Arguments& arguments) {
     print_warnings(warnings);
     printed = warnings.size();
   };
+  std::optional<ProgressLine> line;
+  if (ProgressSettings settings;
+      progress_settings(!quiet, progress_interval, ::isatty(STDERR_FILENO), settings))
+    line.emplace(std::cerr, settings);
+  if (line) request.progress = solve_progress(*line, with_ensemble ? "unperturbed run, " : "");
   if (!with_ensemble) {
     const RunOutcome outcome = run_model(request);
+    if (line) line->finish();
     write_run_outputs(out, outcome);
     return report_outcome(outcome, request.model_path, out, quiet, printed);
   }
-  const EnsembleResult result = run_ensemble(request, ensemble);
+  const EnsembleResult result =
+      run_ensemble(request, ensemble, [&](std::size_t done, std::size_t total) {
+        if (!line) return;
+        if (done == 0) {  // the copies start: their own time and rate
+          line->finish();
+          line->restart();
+        }
+        line->update([&](double elapsed) {
+          return "progress: " + copies_progress_text(done, total, elapsed);
+        });
+      });
+  if (line) line->finish();
   write_run_outputs(out, result.unperturbed,
                     {{"ensemble.json", ensemble_document(result, ensemble)}});
   const int code = report_outcome(result.unperturbed, request.model_path, out, quiet, printed);

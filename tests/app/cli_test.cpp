@@ -428,6 +428,72 @@ TEST_F(Cli, ARunOfBillionsOfStepsIsWarnedOfBeforeItStarts) {
   std::cout << "stderr: " << run.err;
 }
 
+// The lines of `text` that start with `prefix`.
+std::vector<std::string> lines_starting(const std::string& text, const std::string& prefix) {
+  std::vector<std::string> found;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(prefix, 0) == 0) found.push_back(line);
+  return found;
+}
+
+// "t = T of ..." in a progress line: T.
+double progress_time(const std::string& line) {
+  const std::size_t at = line.find("t = ");
+  return at == std::string::npos ? NAN : std::stod(line.substr(at + 4));
+}
+
+TEST_F(Cli, ProgressForALogComesEverySoManySecondsAndLeavesTheResultsAlone) {
+  // --progress 1e-9: a line every kProgressStride (64) steps of the girders' 15,000.
+  const std::string model = POUND_SOURCE_DIR "/models/two_sdof_girders.json";
+  const Outcome plain = pound({"run", model, "--out", path("plain").string()});
+  const Outcome logged =
+      pound({"run", model, "--out", path("logged").string(), "--progress", "1e-9"});
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  ASSERT_EQ(logged.exit_code, 0) << logged.err;
+  const std::vector<std::string> lines = lines_starting(logged.err, "progress: t = ");
+  ASSERT_GE(lines.size(), 200u) << logged.err.substr(0, 500);
+  EXPECT_LE(lines.size(), 15000u / 64);
+  EXPECT_TRUE(lines_starting(plain.err, "progress").empty()) << "not a terminal: " << plain.err;
+  double previous = 0.0;
+  for (const std::string& line : lines) {
+    EXPECT_GT(progress_time(line), previous) << line;
+    previous = progress_time(line);
+    EXPECT_TRUE(contains(line, " of 30 s (")) << line;
+    EXPECT_TRUE(contains(line, "elapsed")) << line;
+  }
+  EXPECT_EQ(read_text(path("plain") / "joint.csv"), read_text(path("logged") / "joint.csv"));
+  EXPECT_EQ(plain.out.substr(plain.out.find('\n')), logged.out.substr(logged.out.find('\n')))
+      << "the report after the headline (whose run time and folder differ)";
+  std::cout << "first and last: " << lines.front() << "\n  " << lines.back() << "\n";
+
+  // The copies of an ensemble report as each is done, after the unperturbed run's lines.
+  const Outcome copies = pound(
+      {"run", model, "--out", path("copies").string(), "--ensemble", "3", "--progress", "1e-9"});
+  ASSERT_EQ(copies.exit_code, 0) << copies.err;
+  EXPECT_GE(lines_starting(copies.err, "progress: unperturbed run, t = ").size(), 200u);
+  const std::vector<std::string> done = lines_starting(copies.err, "progress: ");
+  EXPECT_TRUE(contains(done.back(), "3 of 3 copies done")) << done.back();
+  std::cout << "ensemble's last: " << done.back() << "\n";
+
+  // --quiet: nothing but errors.
+  const Outcome quiet =
+      pound({"run", model, "--out", path("quiet").string(), "--progress", "1e-9", "--quiet"});
+  EXPECT_EQ(quiet.exit_code, 0) << quiet.err;
+  EXPECT_EQ(quiet.out + quiet.err, "");
+}
+
+TEST_F(Cli, ProgressIntervalMustBeAPositiveNumberOfSeconds) {
+  for (const char* bad : {"0", "-1", "nan", "inf", "soon"}) {
+    const Outcome outcome =
+        pound({"run", kGirderModel, "--out", path("out").string(), "--progress", bad});
+    EXPECT_EQ(outcome.exit_code, 1) << bad << ": " << outcome.err;
+    EXPECT_TRUE(contains(outcome.err, "--progress")) << bad << ": " << outcome.err;
+    EXPECT_FALSE(fs::exists(path("out"))) << bad;
+    std::cout << bad << ": " << outcome.err;
+  }
+}
+
 TEST_F(Cli, TimeLimitFailsAndKeepsTheHistorySoFar) {
   const fs::path out = path("out");
   // A 1 ms budget cannot finish the bridge's 16,667 steps (0.15 s here) on any machine.
