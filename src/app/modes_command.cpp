@@ -31,8 +31,9 @@ that moves along y) as a fraction of the total: the periods Rayleigh damping is 
 the ones a time step must resolve. --shapes writes the mode shapes (.csv, or .npy): a row per
 free DOF (label column "dof": <node>.u_x, <node>.u_y, <node>.r_z) and a column per mode,
 mode_1, mode_2, ..., each scaled so that its largest component is +1; a DOF a constraint ties
-has its row too, its master's motion there (a rigid floor's corner may pass 1). Past 4,000 DOFs
-at most the first 500 modes are listed.
+has its row too, its master's motion there (a rigid floor's corner may pass 1). Rigid-body and
+mechanism modes (no strain energy) are left out, and past 4,000 DOFs at most the first 500 modes
+are listed: fewer modes than --count come with a line saying why ("fewer" in --json).
 
 options)";
 
@@ -49,6 +50,8 @@ struct ListedMode {
 struct ListedModes {
   std::vector<ListedMode> modes;
   int directions = 1;
+  int asked = 0;
+  std::string fewer;  // why fewer modes than asked are listed (assembly::fewer_modes_reason)
 };
 
 std::unique_ptr<assembly::StructuralSystem> assemble(const LoadedModel& loaded,
@@ -83,6 +86,10 @@ ListedModes list_modes(const assembly::StructuralSystem& system, std::size_t nod
 
   ListedModes result;
   result.directions = total[1] > 0.0 ? 2 : 1;
+  result.asked = count;
+  const auto dofs_with_mass = static_cast<Index>((mass.diagonal().array() > 0.0).count());
+  result.fewer = assembly::fewer_modes_reason(system.size(), dofs_with_mass, count,
+                                              modes.omega_squared.size());
   for (Index k = 0; k < modes.omega_squared.size(); ++k) {
     ListedMode mode;
     mode.number = static_cast<int>(k) + 1;
@@ -131,6 +138,9 @@ std::string modes_table(const std::string& model_path, Index dofs, const ListedM
     table += fmt::format("{:>5} {:>12.5g} {:>12.5g} {:>10.4f}{}\n", mode.number, mode.period,
                          1.0 / mode.period, mode.mass_ratio[0],
                          y ? fmt::format(" {:>10.4f}", mode.mass_ratio[1]) : "");
+  if (!listed.fewer.empty())
+    table += fmt::format("{} of the {} modes asked for: {}\n", listed.modes.size(), listed.asked,
+                         listed.fewer);
   return table;
 }
 
@@ -146,7 +156,9 @@ io::Document modes_document(const std::string& model_path, Index dofs, const Lis
     rows.push_back(row);
   }
   io::Document doc;
-  doc.set("model", model_path).set("dofs", static_cast<long>(dofs)).set("modes", rows);
+  doc.set("model", model_path).set("dofs", static_cast<long>(dofs)).set("asked", listed.asked);
+  if (!listed.fewer.empty()) doc.set("fewer", listed.fewer);
+  doc.set("modes", rows);
   return doc;
 }
 

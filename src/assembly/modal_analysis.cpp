@@ -270,8 +270,6 @@ class MasslessCondensation {
 // Lanczos solve's most, is asked for. Past 4,000 DOFs at most 500 modes are found (a few seconds
 // at 5,000 DOFs; all of them would take the Lanczos basis to the model's size, and minutes).
 constexpr Index kDenseModalDofs = 300;
-constexpr Index kLargestDenseModalDofs = 4000;
-constexpr int kMostLanczosModes = 500;
 
 // The pencil (K, M) of the sparse path: M with a mass 1e-12 of the largest on each massless
 // DOF, so that it is positive definite as the Lanczos inner product needs (their modes go past
@@ -349,7 +347,7 @@ std::optional<Modes> sparse_vibration_modes(const StructuralSystem& system, int 
   // Lanczos finds at most n - 1 modes; nearly all of them take the dense solve, where it can.
   // Past it the basis stops at 2,000 modes (more rigid-body modes than that leave fewer listed).
   Index available = std::min(static_cast<Index>(with_mass.size()), n - 1);
-  if (n > kLargestDenseModalDofs) available = std::min<Index>(available, 4 * kMostLanczosModes);
+  if (n > kLargestDenseModalDofs) available = std::min<Index>(available, kLanczosBasis);
   for (Index extra = 6;; extra *= 4) {
     if (count + extra >= available && n <= kLargestDenseModalDofs) return {};
     const Index wanted = std::min<Index>(count + extra, available);
@@ -373,6 +371,27 @@ Modes vibration_modes(const StructuralSystem& system, int count) {
     return dense_vibration_modes(system, count);
   std::optional<Modes> modes = sparse_vibration_modes(system, std::min(count, kMostLanczosModes));
   return modes ? *modes : dense_vibration_modes(system, count);
+}
+
+std::string fewer_modes_reason(Index dofs, Index dofs_with_mass, int asked, Index found) {
+  if (found >= asked) return {};
+  if (dofs > kLargestDenseModalDofs && asked > kMostLanczosModes && found == kMostLanczosModes)
+    return fmt::format("past {} DOFs at most the first {} modes are found", kLargestDenseModalDofs,
+                       kMostLanczosModes);
+  if (found == dofs_with_mass)
+    return fmt::format("the model has {} DOF{} with mass, hence {} mode{}", dofs_with_mass,
+                       dofs_with_mass == 1 ? "" : "s", dofs_with_mass,
+                       dofs_with_mass == 1 ? "" : "s");
+  if (dofs > kLargestDenseModalDofs && dofs_with_mass > kLanczosBasis)
+    return fmt::format(
+        "past {} DOFs the search stops at {} modes, and the others among them are rigid-body or "
+        "mechanism modes (no strain energy), which are not listed",
+        kLargestDenseModalDofs, kLanczosBasis);
+  const Index rigid = dofs_with_mass - found;
+  return fmt::format(
+      "{} of the model's {} modes (one per DOF with mass) {} no strain energy (a part free to "
+      "move as a whole, or a mechanism) and {} not listed",
+      rigid, dofs_with_mass, rigid == 1 ? "stores" : "store", rigid == 1 ? "is" : "are");
 }
 
 std::vector<double> natural_periods(const StructuralSystem& system, int count) {

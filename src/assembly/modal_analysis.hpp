@@ -7,6 +7,7 @@
 // vibration_modes gives the lowest few, past a few hundred DOFs by shift-invert Lanczos on the
 // sparse matrices (Spectra), in milliseconds at thousands of DOFs.
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "assembly/structural_system.hpp"
@@ -39,6 +40,15 @@ Modes modal_analysis(const StructuralSystem& system, Index max_dofs = 4000);
 // for) they are modal_analysis's; otherwise shift-invert Lanczos finds them (Spectra), at most
 // 500. Throws as modal_analysis does, but never std::length_error.
 Modes vibration_modes(const StructuralSystem& system, int count);
+// Past this many DOFs vibration_modes finds at most kMostLanczosModes modes, from a Lanczos basis
+// of at most kLanczosBasis modes, rigid-body ones included.
+inline constexpr Index kLargestDenseModalDofs = 4000;
+inline constexpr int kMostLanczosModes = 500;
+inline constexpr Index kLanczosBasis = 4 * kMostLanczosModes;
+// Why vibration_modes found `found` modes of the `asked` of a model of `dofs` DOFs,
+// `dofs_with_mass` of them with mass: empty when it found them all, else a clause for a user ("the
+// model has 2 DOFs with mass, hence 2 modes").
+std::string fewer_modes_reason(Index dofs, Index dofs_with_mass, int asked, Index found);
 // The first `count` periods 2 pi / w of the vibration modes (rigid-body modes left out).
 std::vector<double> natural_periods(const StructuralSystem& system, int count);
 

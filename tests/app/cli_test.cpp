@@ -1128,6 +1128,48 @@ TEST_F(Cli, ModesListOnlyTheDirectionsTheSceneMovesInAndWriteTheShapes) {
   EXPECT_NE(over.exit_code, 0);
 }
 
+// `pound modes --count 12` on two girders lists their 2 modes and says why not 12; a free body's
+// rigid-body mode is left out and said so; as many modes as asked: no such line.
+TEST_F(Cli, ModesFewerThanAskedSayWhy) {
+  const std::string girders = POUND_SOURCE_DIR "/models/two_sdof_girders.json";
+  const Outcome listed = pound({"modes", girders, "--count", "12"});
+  ASSERT_EQ(listed.exit_code, 0) << listed.err;
+  EXPECT_TRUE(contains(listed.out,
+                       "\n2 of the 12 modes asked for: the model has 2 DOFs with "
+                       "mass, hence 2 modes\n"))
+      << listed.out;
+  const json document = json::parse(pound({"modes", girders, "--count", "12", "--json"}).out);
+  EXPECT_EQ(document["asked"], 12);
+  EXPECT_EQ(document["modes"].size(), 2u);
+  EXPECT_EQ(document["fewer"], "the model has 2 DOFs with mass, hence 2 modes");
+  const json enough = json::parse(pound({"modes", girders, "--count", "2", "--json"}).out);
+  EXPECT_FALSE(enough.contains("fewer"));
+  EXPECT_FALSE(contains(pound({"modes", girders, "--count", "2"}).out, "asked for"));
+
+  // Three masses joined by two trusses, free, beside a mass on a spring from the ground.
+  const std::string free_body = path("free.json").string();
+  std::ofstream(free_body) << R"({"dimension": 1,
+    "nodes": [{"id": "a", "x": 0}, {"id": "b", "x": 1}, {"id": "c", "x": 2},
+              {"id": "ground", "x": 5}, {"id": "d", "x": 6}],
+    "materials": [{"id": "steel", "youngs_modulus": 2e11, "density": 0}],
+    "elements": [
+      {"id": "ab", "type": "truss", "nodes": ["a", "b"], "material": "steel", "area": 0.01},
+      {"id": "bc", "type": "truss", "nodes": ["b", "c"], "material": "steel", "area": 0.01},
+      {"id": "gd", "type": "truss", "nodes": ["ground", "d"], "material": "steel", "area": 0.01}],
+    "masses": [{"node": "a", "mass": 1000}, {"node": "b", "mass": 1000},
+               {"node": "c", "mass": 1000}, {"node": "d", "mass": 1000}],
+    "supports": [{"node": "ground", "fix": ["x"]}],
+    "initial_velocities": [{"node": "a", "x": 1}],
+    "analysis": {"time_step": 0.0001, "duration": 0.01}})";
+  const Outcome rigid = pound({"modes", free_body, "--count", "5"});
+  ASSERT_EQ(rigid.exit_code, 0) << rigid.err;
+  EXPECT_TRUE(contains(rigid.out,
+                       "3 of the 5 modes asked for: 1 of the model's 4 modes (one per "
+                       "DOF with mass) stores no strain energy"))
+      << rigid.out;
+  std::cout << listed.out << rigid.out;
+}
+
 // A floor tied by a rigid diaphragm: its corners have shape rows too, the floor node's motion
 // there (top3 stands at (6, 4) from it: u_x - 4 theta, u_y + 6 theta); `check` counts them.
 TEST_F(Cli, ModesOfATiedFloorGiveItsCornersShapesAndCheckCountsTheTiedDofs) {

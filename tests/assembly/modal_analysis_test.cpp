@@ -90,6 +90,29 @@ TEST(ModalAnalysis, PeriodsLeaveRigidBodyModesOut) {
   EXPECT_NEAR(periods[0], 2 * std::numbers::pi / std::sqrt(200.0), 1e-12);
 }
 
+// Fewer modes than asked come with the reason: the DOFs with mass, the rigid-body modes left out,
+// or the caps past 4,000 DOFs.
+TEST(ModalAnalysis, FewerModesThanAskedSayWhy) {
+  EXPECT_EQ(fewer_modes_reason(2, 2, 2, 2), "");
+  EXPECT_EQ(fewer_modes_reason(2, 2, 12, 2), "the model has 2 DOFs with mass, hence 2 modes");
+  EXPECT_EQ(fewer_modes_reason(3, 1, 12, 1), "the model has 1 DOF with mass, hence 1 mode");
+  EXPECT_EQ(fewer_modes_reason(4, 4, 5, 3),
+            "1 of the model's 4 modes (one per DOF with mass) stores no strain energy (a part "
+            "free to move as a whole, or a mechanism) and is not listed");
+  EXPECT_EQ(fewer_modes_reason(310, 310, 400, 270),
+            "40 of the model's 310 modes (one per DOF with mass) store no strain energy (a part "
+            "free to move as a whole, or a mechanism) and are not listed");
+  EXPECT_EQ(fewer_modes_reason(6000, 6000, 800, 500),
+            "past 4000 DOFs at most the first 500 modes are found");
+  EXPECT_EQ(fewer_modes_reason(6000, 6000, 400, 300),
+            "past 4000 DOFs the search stops at 2000 modes, and the others among them are "
+            "rigid-body or mechanism modes (no strain energy), which are not listed");
+  // Up to 4,000 DOFs every mode is found: a model of 3,000 DOFs lists all of its vibration modes.
+  EXPECT_EQ(fewer_modes_reason(3000, 3000, 800, 500),
+            "2500 of the model's 3000 modes (one per DOF with mass) store no strain energy (a "
+            "part free to move as a whole, or a mechanism) and are not listed");
+}
+
 TEST(ModalAnalysis, RefusesMoreDofsThanTheDenseSolveIsFor) {
   const StructuralSystem system = system_of(chain(""));
   EXPECT_THROW(modal_analysis(system, 1), std::length_error);
