@@ -156,6 +156,7 @@ ModelFindings check_findings(const LoadedModel& loaded, const std::string& model
   // After the diagnostics: the first step leaves the laws committed at the start, as a run does.
   builder::AnalysisSpec analysis = loaded.built.analysis;
   builder::settle_time_step(analysis, loaded.built.model, *system, model_path);
+  if (loaded.built.analysis.time_step_auto) verification::warn_long_run(analysis, check.warnings);
   builder::check_first_step(loaded.built, analysis, *system, model_path);
   io::Document document = check_document(model_path, check);
   if (!document.non_finite().empty())

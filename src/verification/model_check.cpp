@@ -231,6 +231,8 @@ std::string rough_duration(double seconds) {
   return fmt::format("{:.3g} years", seconds / kYear);
 }
 
+}  // namespace
+
 void warn_long_run(const builder::AnalysisSpec& analysis, std::vector<std::string>& warnings) {
   if (!(analysis.time_step > 0.0) || !(analysis.duration > 0.0)) return;
   const double steps = analysis.step_count();
@@ -243,6 +245,8 @@ void warn_long_run(const builder::AnalysisSpec& analysis, std::vector<std::strin
       "\"max_steps\" bound a run)",
       steps, analysis.duration, analysis.time_step, rough_duration(steps * kBridgeStep)));
 }
+
+namespace {
 
 // An analysis that stops before a record's strongest shaking reports peaks of its start only (a
 // duration cut short for a trial run, then kept).

@@ -52,6 +52,11 @@ struct ModelCheck {
   std::vector<std::string> warnings;
 };
 
+// A warning when `analysis` takes more than a billion steps, with the wall time that means:
+// check_model gives it for a step given as a number; for "auto", whoever settles the step
+// (builder::settle_time_step) asks after it (`pound check`; `pound run` checks after settling).
+void warn_long_run(const builder::AnalysisSpec& analysis, std::vector<std::string>& warnings);
+
 // `with_periods`: the natural periods (assembly::natural_periods) and the warning
 // on the step against the sixth; `run` leaves them out.
 ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSystem& system,

@@ -494,6 +494,31 @@ TEST_F(Cli, ProgressIntervalMustBeAPositiveNumberOfSeconds) {
   }
 }
 
+// With "time_step": "auto" the step is settled after the model's check: `pound check` warns of
+// the step count once it has settled it, as `pound run` does.
+TEST_F(Cli, CheckWarnsOfBillionsOfAutomaticSteps) {
+  const std::string long_run = write_model("auto.json", R"([{"op": "replace", "path": "/analysis",
+                        "value": {"integrator": "central_difference", "time_step": "auto",
+                                  "duration": 1e8}},
+                       {"op": "add", "path": "/recorders", "value": []}])");
+  const Outcome check = pound({"check", long_run});
+  EXPECT_EQ(check.exit_code, 0) << check.err;
+  const std::string warning = "steps (a duration of 1e+08 over a time step of ";
+  const std::size_t at = check.out.find(warning);
+  ASSERT_NE(at, std::string::npos) << check.out;
+  EXPECT_EQ(check.out.find(warning, at + 1), std::string::npos) << "twice:\n" << check.out;
+  const Outcome run =
+      pound({"run", long_run, "--out", path("out").string(), "--max-steps", "3", "--quiet"});
+  EXPECT_EQ(run.exit_code, 3) << run.err;
+  EXPECT_TRUE(contains(run.err, warning)) << run.err;
+  const std::string short_run = write_model("short.json", R"([{"op": "replace", "path": "/analysis",
+                         "value": {"integrator": "central_difference", "time_step": "auto",
+                                   "duration": 0.1}}])");
+  const Outcome quiet = pound({"check", short_run});
+  EXPECT_FALSE(contains(quiet.out, "steps (a duration")) << quiet.out;
+  std::cout << check.out;
+}
+
 TEST_F(Cli, TimeLimitFailsAndKeepsTheHistorySoFar) {
   const fs::path out = path("out");
   // A 1 ms budget cannot finish the bridge's 16,667 steps (0.15 s here) on any machine.
