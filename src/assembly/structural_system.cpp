@@ -1018,14 +1018,10 @@ std::vector<Vector> StructuralSystem::frame_shapes() const {
 }
 
 void StructuralSystem::frame_scales(double time, std::vector<double>& scales) const {
-  if (time == last_external_time_) {  // formed with the external force at this time
-    scales = last_scales_;
-    return;
-  }
-  scales.clear();
-  for (const Excitation& excitation : excitations_) scales.push_back(excitation.motion.at(time));
-  for (const MovingSupport& support : moving_supports_)
-    scales.push_back(support.kinematics.at(time).acceleration);
+  // Formed with the external force (compute_external_force): a step's observers ask at the time
+  // its integrator formed the force for, so the force is formed here only on a miss.
+  if (!(time == last_external_time_)) external_force(time, frame_force_);
+  scales = last_scales_;
 }
 
 double StructuralSystem::support_acceleration(Index node, int direction, double time) const {

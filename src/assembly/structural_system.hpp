@@ -132,6 +132,7 @@ class StructuralSystem final : public integrators::SecondOrderSystem {
   mutable Vector last_external_force_;
   mutable double last_external_time_ = std::numeric_limits<double>::quiet_NaN();
   mutable std::vector<double> last_scales_;  // frame_scales at last_external_time_
+  mutable Vector frame_force_;               // frame_scales' external force, on a cache miss
   Eigen::SparseMatrix<double, Eigen::RowMajor> stiffness_rows_;
   // Keeps stiffness_ for K x: by diagonals or by rows, as above.
   void store_stiffness_for_products();
