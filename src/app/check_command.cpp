@@ -10,6 +10,7 @@
 #include "app/commands.hpp"
 #include "app/model_loading.hpp"
 #include "app/model_queries.hpp"
+#include "app/run_report.hpp"
 #include "builder/start_check.hpp"
 #include "core/errors.hpp"
 #include "io/document.hpp"
@@ -25,7 +26,9 @@ namespace {
 constexpr const char* kCheckUsage = R"(usage: pound check MODEL.json [--json]
 
 Before a run: the model's DOFs and first periods, the stable step of explicit central difference
-with the contacts open and in contact, and for every contact link its stiffness against the
+with the contacts open and in contact, how the run will step (its integrator, the time step and
+the rule that chose it, the duration and the number of steps), and for every contact link its
+stiffness against the
 adjacent elements (Kawashima's k-ratio), Suzuki & Toi's automatic penalty numbers, the expected
 contact duration and whether the time step resolves it (Kawashima: dt <= T_contact / 20). Every
 setting the benchmarks show to be meaningless is a warning. Exit code 0 (1 with --strict when
@@ -33,8 +36,70 @@ there are warnings).
 
 options)";
 
-// The findings as text: the model, its periods and stable steps, a line per contact link.
-std::string check_text(const std::string& model_path, const verification::ModelCheck& check) {
+// The integrator as a model file names it: a preset's name, else the method with its parameters.
+std::string integrator_words(const integrators::IntegratorChoice& integrator) {
+  const std::string label = integrator.label();
+  std::string parameters;
+  if (label == integrator.method().name)
+    for (const auto& [name, value] : integrator.values())
+      parameters += fmt::format("{}{} {:g}", parameters.empty() ? "" : ", ", name, value);
+  return parameters.empty() ? label : fmt::format("{} ({})", label, parameters);
+}
+
+// Which rule set the run's step: "given", "auto" (the safety factor times the stable step),
+// "auto_record_step" (the shortest record step, below that) or "adaptive".
+std::string step_rule(const builder::AnalysisSpec& analysis) {
+  if (analysis.adaptive) return "adaptive";
+  if (!analysis.time_step_auto) return "given";
+  return analysis.time_step_is_record_step ? "auto_record_step" : "auto";
+}
+
+// The fewest and most steps the run takes: a fixed step's count; an adaptive run's at its
+// longest and shortest step.
+std::pair<double, double> step_range(const builder::AnalysisSpec& analysis) {
+  if (!analysis.adaptive) return {analysis.step_count(), analysis.step_count()};
+  const integrators::AdaptiveStepping& adaptive = *analysis.adaptive;
+  return {integrators::fixed_step_count(analysis.duration, adaptive.longest(analysis.time_step)),
+          integrators::fixed_step_count(analysis.duration, adaptive.shortest(analysis.time_step))};
+}
+
+// How the run will step: its integrator, the step and the rule that chose it, the duration and
+// the number of steps, so that a run's length is known before it starts.
+std::string analysis_text(const builder::AnalysisSpec& analysis, const UnitNames& units) {
+  const std::string& time = units.of(Dimension::time);
+  const std::string step = with_unit(analysis.time_step, time);
+  const std::string rule = step_rule(analysis);
+  std::string how;
+  if (rule == "adaptive")
+    how = fmt::format("adaptive time steps from {} at first, between {} and {} (tolerance {:g})",
+                      step, with_unit(analysis.adaptive->shortest(analysis.time_step), time),
+                      with_unit(analysis.adaptive->longest(analysis.time_step), time),
+                      analysis.adaptive->tolerance);
+  else if (rule == "given")
+    how = "time step " + step;
+  else {
+    const std::string chosen = analysis.time_step_defaulted ? "no \"time_step\" given, so \"auto\""
+                                                            : "\"time_step\": \"auto\"";
+    if (!analysis.stable_time_step)  // nothing vibrates: the record's step alone
+      how = fmt::format("time step {}, the record's step, with no stable limit ({})", step, chosen);
+    else
+      how =
+          fmt::format("time step {}{}{:g} x the stable step {} ({})", step,
+                      rule == "auto_record_step" ? ", the record's step, below " : ", ",
+                      analysis.safety_factor, with_unit(*analysis.stable_time_step, time), chosen);
+  }
+  const auto [fewest, most] = step_range(analysis);
+  return fmt::format("  analysis: {}, {}, over {}{}: {}\n", integrator_words(analysis.integrator),
+                     how, with_unit(analysis.duration, time),
+                     analysis.duration_from_records ? " (the records' length)" : "",
+                     fewest == most ? fmt::format("{:.15g} steps", fewest)
+                                    : fmt::format("{:.15g} to {:.15g} steps", fewest, most));
+}
+
+// The findings as text: the model, its periods and stable steps, how the run will step, a line
+// per contact link.
+std::string check_text(const std::string& model_path, const verification::ModelCheck& check,
+                       const builder::AnalysisSpec& analysis, const UnitNames& units) {
   std::string directions;
   for (int d = 0; d < model::direction_count(check.dimension); ++d)
     if (const Index count = check.dofs_by_direction[static_cast<std::size_t>(d)]; count > 0)
@@ -55,6 +120,7 @@ std::string check_text(const std::string& model_path, const verification::ModelC
         *check.explicit_step_open, *check.explicit_step_contact);
   else
     text += fmt::format("  central difference: not available ({})\n", check.explicit_unavailable);
+  text += analysis_text(analysis, units);
   for (const verification::LinkCheck& c : check.contacts) {
     text += c.constraint ? fmt::format("  link {} ({}): a constraint, no stiffness", c.id, c.law)
             : c.stiff_at_first_touch
@@ -78,7 +144,45 @@ std::string check_text(const std::string& model_path, const verification::ModelC
   return text;
 }
 
-io::Document check_document(const std::string& model_path, const verification::ModelCheck& check) {
+// The analysis_text's facts: "time_step_rule" is step_rule's; "steps" a fixed step's count, or
+// "steps_at_least" and "steps_at_most" of an adaptive run; what does not apply is left out.
+io::Document analysis_document(const builder::AnalysisSpec& analysis) {
+  io::Document doc;
+  doc.set("integrator", analysis.integrator.label());
+  io::Document parameters;
+  for (const auto& [name, value] : analysis.integrator.values()) parameters.set(name, value);
+  doc.set("integrator_parameters", parameters)
+      .set("time_step", analysis.time_step)
+      .set("time_step_rule", step_rule(analysis));
+  if (analysis.time_step_auto) doc.set("safety_factor", analysis.safety_factor);
+  if (analysis.time_step_auto && analysis.stable_time_step)
+    doc.set("stable_time_step", *analysis.stable_time_step);
+  if (analysis.adaptive)
+    doc.set("adaptive_tolerance", analysis.adaptive->tolerance)
+        .set("adaptive_min_time_step", analysis.adaptive->shortest(analysis.time_step))
+        .set("adaptive_max_time_step", analysis.adaptive->longest(analysis.time_step));
+  doc.set("duration", analysis.duration)
+      .set("duration_from_records", analysis.duration_from_records);
+  // Whole numbers as such, up to where a double holds every one.
+  const auto set_count = [&doc](const char* key, double count) {
+    if (count <= 1e15)
+      doc.set(key, static_cast<long>(count));
+    else
+      doc.set(key, count);
+  };
+  const auto [fewest, most] = step_range(analysis);
+  if (analysis.adaptive) {
+    set_count("steps_at_least", fewest);
+    set_count("steps_at_most", most);
+  } else {
+    set_count("steps", fewest);
+  }
+  if (analysis.max_steps > 0) doc.set("max_steps", analysis.max_steps);
+  return doc;
+}
+
+io::Document check_document(const std::string& model_path, const verification::ModelCheck& check,
+                            const builder::AnalysisSpec& analysis) {
   io::Document doc;
   doc.set("model", model_path)
       .set("dofs", static_cast<long>(check.dofs))
@@ -126,6 +230,7 @@ io::Document check_document(const std::string& model_path, const verification::M
     set_positive(link, "automatic_alpha2", extended ? c.automatic->alpha2 : 0.0);
     link_documents.push_back(std::move(link));
   }
+  doc.set("analysis", analysis_document(analysis));
   doc.set("links", link_documents);
   doc.set("warnings", io::warning_documents(check.warnings));
   return doc;
@@ -156,15 +261,15 @@ ModelFindings check_findings(const LoadedModel& loaded, const std::string& model
   // After the diagnostics: the first step leaves the laws committed at the start, as a run does.
   builder::AnalysisSpec analysis = loaded.built.analysis;
   builder::settle_time_step(analysis, loaded.built.model, *system, model_path);
-  if (loaded.built.analysis.time_step_auto) verification::warn_long_run(analysis, check.warnings);
+  if (loaded.built.analysis.time_step_auto) verification::warn_step_count(analysis, check.warnings);
   builder::check_first_step(loaded.built, analysis, *system, model_path);
-  io::Document document = check_document(model_path, check);
+  io::Document document = check_document(model_path, check, analysis);
   if (!document.non_finite().empty())
     throw InputError(model_path, model_path_of(document.non_finite().front(), check, loaded.built),
                      fmt::format("the model's numbers overflow: its check finds {} not finite (a "
                                  "mass, stiffness or load far beyond physical ones?)",
                                  document.non_finite().front()));
-  return {std::move(check), std::move(document)};
+  return {std::move(check), std::move(document), analysis, loaded.built.units};
 }
 
 int check_command(const Arguments& arguments) {
@@ -180,8 +285,9 @@ int check_command(const Arguments& arguments) {
     return 1;
   }
   const ModelFindings findings = check_findings(load_model(model_path), model_path);
-  std::cout << (vm.count("json") ? findings.document.dump() + "\n"
-                                 : check_text(model_path, findings.check));
+  std::cout << (vm.count("json")
+                    ? findings.document.dump() + "\n"
+                    : check_text(model_path, findings.check, findings.analysis, findings.units));
   return vm.count("strict") && !findings.check.warnings.empty() ? 1 : 0;
 }
 

@@ -15,6 +15,8 @@ namespace pound::app {
 struct ModelFindings {
   verification::ModelCheck check;
   io::Document document;
+  builder::AnalysisSpec analysis;  // with its step settled, as the run will take it
+  UnitNames units;
 };
 ModelFindings check_findings(const LoadedModel& loaded, const std::string& model_path);
 

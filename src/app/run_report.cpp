@@ -5,13 +5,12 @@
 #include <algorithm>
 
 namespace pound::app {
-namespace {
 
-// A value with its unit in the model's units; alone where the model names none (forces, moments
-// and energies without a mass unit).
-std::string with_unit(double value, const std::string& unit, int digits = 4) {
+std::string with_unit(double value, const std::string& unit, int digits) {
   return fmt::format("{:.{}g}{}{}", value, digits, unit.empty() ? "" : " ", unit);
 }
+
+namespace {
 
 // The units of what the report prints: energies in force x length (the moment's unit) and
 // impulses in force x time.

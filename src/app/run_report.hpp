@@ -9,6 +9,10 @@
 
 namespace pound::app {
 
+// A value with its unit in the model's units; alone where the model names none (forces, moments
+// and energies without a mass unit).
+std::string with_unit(double value, const std::string& unit, int digits = 4);
+
 std::string run_headline(const std::string& model_path, const results::RunSummary& run);
 // The lines of links, joints and drifts, each number with its unit in the model's `units` (forces,
 // moments and energies only where the model names a mass unit).

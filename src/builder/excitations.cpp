@@ -159,6 +159,7 @@ ExcitationScaling resolve_excitations(
 }
 
 void fit_analysis_to_records(AnalysisSpec& analysis, const model::Model& model) {
+  analysis.duration_from_records = analysis.duration == 0.0;
   if (analysis.duration == 0.0)
     for (const model::UniformExcitation& excitation : model.excitations)
       analysis.duration = std::max(analysis.duration, excitation.motion.duration());

@@ -484,7 +484,8 @@ struct AnalysisSpec {
   // Central difference's stable step with the links in contact (settle_time_step); none for
   // implicit integrators.
   std::optional<double> stable_time_step;
-  double duration = 0.0;  // > 0; 0 in a file without it: the longest record's duration
+  double duration = 0.0;               // > 0; 0 in a file without it: the longest record's duration
+  bool duration_from_records = false;  // none given: the records' (fit_analysis_to_records)
   double relative_tolerance = 1e-10;
   double absolute_tolerance = 0.0;
   int max_iterations = 25;
@@ -496,7 +497,7 @@ struct AnalysisSpec {
   // (with the links), then moves with the initial velocities; default "unloaded" (u = 0).
   bool static_initial_state = false;
   // The steps of a fixed-step run, the last one perhaps shorter (time_step set).
-  double step_count() const { return std::ceil(duration / time_step); }
+  double step_count() const { return integrators::fixed_step_count(duration, time_step); }
 };
 
 // What a run writes of its steps: "link" records force and penetration of the named links (all

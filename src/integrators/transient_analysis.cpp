@@ -68,7 +68,7 @@ TransientStatistics TransientAnalysis::run(State& state, const StepObserver& obs
   const double start = state.time;
   // Steps are counted, not accumulated, so the end time has no round-off drift.
   const double span = settings_.end_time - start;
-  const long nominal_steps = static_cast<long>(std::ceil(span / settings_.time_step - 1e-9));
+  const long nominal_steps = static_cast<long>(fixed_step_count(span, settings_.time_step));
   // Every step is the nominal dt exactly (the last one may be shorter), with the time set to
   // the step's end: differences of targets vary in their last bits, and each distinct dt would
   // cost a factorisation of the implicit integrators.
@@ -186,8 +186,8 @@ TransientAnalysis::AdaptiveRun::AdaptiveRun(TransientAnalysis& analysis, State& 
       state_(state),
       observer_(observer),
       base_(analysis.settings_.time_step),
-      floor_(adaptive_.min_time_step > 0.0 ? adaptive_.min_time_step : base_ / 256.0),
-      ceiling_(adaptive_.max_time_step > 0.0 ? adaptive_.max_time_step : 16.0 * base_),
+      floor_(adaptive_.shortest(base_)),
+      ceiling_(adaptive_.longest(base_)),
       dt_(on_grid(base_)),
       mask_(mass_mask(analysis.system_)),
       displacement_scale_(masked_magnitude(state.displacement, mask_)) {}

@@ -3,6 +3,7 @@
 // converge in halves down to a floor, and stopping with a SolveError (time and reason) when even
 // the floor fails. An unconverged step is never accepted.
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <optional>
 
@@ -22,7 +23,22 @@ struct AdaptiveStepping {
   double tolerance = 1e-5;     // e / max |u|
   double min_time_step = 0.0;  // floor; a step that fails there stops the run
   double max_time_step = 0.0;  // ceiling (e.g. the record's sample interval x a few)
+
+  // The floor and ceiling a run with this nominal step takes (0 above: nominal / 256, x 16).
+  double shortest(double nominal) const {
+    return min_time_step > 0.0 ? min_time_step : nominal / 256.0;
+  }
+  double longest(double nominal) const {
+    return max_time_step > 0.0 ? max_time_step : 16.0 * nominal;
+  }
 };
+
+// The steps of a fixed-step run over `span`: the nominal step's count, the last one perhaps
+// shorter, and none added for a quotient a few ulps above a whole number (0.004 / 1e-6 is
+// 4000.0000000000005: 4000 steps).
+inline double fixed_step_count(double span, double time_step) {
+  return std::ceil(span / time_step - 1e-9);
+}
 
 struct TransientSettings {
   double time_step = 0.0;  // nominal dt (with adaptive stepping: the first, and the grid)

@@ -231,10 +231,7 @@ std::string rough_duration(double seconds) {
   return fmt::format("{:.3g} years", seconds / kYear);
 }
 
-}  // namespace
-
 void warn_long_run(const builder::AnalysisSpec& analysis, std::vector<std::string>& warnings) {
-  if (!(analysis.time_step > 0.0) || !(analysis.duration > 0.0)) return;
   const double steps = analysis.step_count();
   if (!(steps > kLongRunSteps)) return;
   constexpr double kBridgeStep = 1e-6;  // [s] of wall time a step of a 60-DOF plane bridge
@@ -244,6 +241,30 @@ void warn_long_run(const builder::AnalysisSpec& analysis, std::vector<std::strin
       "longer (is /analysis/time_step or /analysis/duration what you meant? --time-limit or "
       "\"max_steps\" bound a run)",
       steps, analysis.duration, analysis.time_step, rough_duration(steps * kBridgeStep)));
+}
+
+// A step limit below the steps the analysis takes stops the run as failed part way: said before
+// it starts. An adaptive run takes at least the duration over its longest step.
+void warn_step_limit(const builder::AnalysisSpec& analysis, std::vector<std::string>& warnings) {
+  if (analysis.max_steps <= 0) return;
+  const double longest =
+      analysis.adaptive ? analysis.adaptive->longest(analysis.time_step) : analysis.time_step;
+  const double steps = integrators::fixed_step_count(analysis.duration, longest);
+  if (!(steps > static_cast<double>(analysis.max_steps))) return;
+  warnings.push_back(fmt::format(
+      "the analysis takes {}{:.15g} steps and the step limit (\"max_steps\" or --max-steps) is "
+      "{}: the run stops as failed at {}t = {:.4g} of {:.4g}{} (is the limit what you meant?)",
+      analysis.adaptive ? "at least " : "", steps, analysis.max_steps,
+      analysis.adaptive ? "" : "about ", static_cast<double>(analysis.max_steps) * longest,
+      analysis.duration, analysis.adaptive ? " at the latest" : ""));
+}
+
+}  // namespace
+
+void warn_step_count(const builder::AnalysisSpec& analysis, std::vector<std::string>& warnings) {
+  if (!(analysis.time_step > 0.0) || !(analysis.duration > 0.0)) return;
+  warn_long_run(analysis, warnings);
+  warn_step_limit(analysis, warnings);
 }
 
 namespace {
@@ -312,7 +333,7 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
   }
   check_explicit_steps(analysis, system, check);
   check_step_against_duration(built, check.warnings);
-  warn_long_run(analysis, check.warnings);
+  warn_step_count(analysis, check.warnings);
   check_record_peaks(built, check.warnings);
   check_duration_reaches_peaks(built, check.warnings);
   const double ground_velocity = peak_ground_velocity(built.model);

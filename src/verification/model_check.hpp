@@ -52,10 +52,11 @@ struct ModelCheck {
   std::vector<std::string> warnings;
 };
 
-// A warning when `analysis` takes more than a billion steps, with the wall time that means:
-// check_model gives it for a step given as a number; for "auto", whoever settles the step
-// (builder::settle_time_step) asks after it (`pound check`; `pound run` checks after settling).
-void warn_long_run(const builder::AnalysisSpec& analysis, std::vector<std::string>& warnings);
+// Warnings when `analysis` takes more than a billion steps (with the wall time that means) or
+// more than its step limit allows (the run would stop as failed part way): check_model gives them
+// for a step given as a number; for "auto", whoever settles the step (builder::settle_time_step)
+// asks after it (`pound check`; `pound run` checks after settling).
+void warn_step_count(const builder::AnalysisSpec& analysis, std::vector<std::string>& warnings);
 
 // `with_periods`: the natural periods (assembly::natural_periods) and the warning
 // on the step against the sixth; `run` leaves them out.

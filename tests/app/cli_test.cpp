@@ -496,6 +496,74 @@ TEST_F(Cli, ProgressIntervalMustBeAPositiveNumberOfSeconds) {
 
 // With "time_step": "auto" the step is settled after the model's check: `pound check` warns of
 // the step count once it has settled it, as `pound run` does.
+// `pound check` says how the run will step (the integrator, the step and the rule that chose it,
+// the duration, the steps), and the run takes the steps it said: a step given, one set by
+// "auto", a duration that is the record's, and a quotient a few ulps above a whole number
+// (0.004 / 1e-6).
+TEST_F(Cli, CheckSaysHowTheRunWillStepAndTheRunTakesThoseSteps) {
+  const std::string bridge = POUND_SOURCE_DIR "/models/three_span_bridge.json";
+  const Outcome text = pound({"check", bridge});
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_TRUE(contains(text.out,
+                       "  analysis: newmark_average_acceleration, time step 0.0015 s, "
+                       "over 25 s (the records' length): 16667 steps\n"))
+      << text.out;
+  for (const char* name : {"three_span_bridge", "block_on_belt_hard_contact", "rod_impact_2d",
+                           "girder_abutment_sdof", "bar_rigid_wall"}) {
+    const std::string model = POUND_SOURCE_DIR "/models/" + std::string(name) + ".json";
+    const Outcome check = pound({"check", model, "--json"});
+    ASSERT_EQ(check.exit_code, 0) << check.err;
+    const json analysis = json::parse(check.out)["analysis"];
+    const fs::path out = path(name);
+    const Outcome run = pound({"run", model, "--out", out.string(), "--quiet"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const json summary = json::parse(read_text(out / "summary.json"));
+    EXPECT_EQ(summary["step_cuts"], 0) << name;
+    EXPECT_EQ(analysis["steps"], summary["steps"]) << name << ": " << analysis.dump();
+    EXPECT_EQ(analysis["time_step"], summary["time_step"]) << name;
+    EXPECT_EQ(analysis["duration"], summary["duration"]) << name;
+    std::cout << name << ": " << analysis.dump() << "\n";
+  }
+  const json automatic = json::parse(
+      pound({"check", POUND_SOURCE_DIR "/models/rod_impact_2d.json", "--json"}).out)["analysis"];
+  EXPECT_EQ(automatic["time_step_rule"], "auto");
+  EXPECT_EQ(automatic["time_step"].get<double>(),
+            automatic["safety_factor"].get<double>() * automatic["stable_time_step"].get<double>());
+}
+
+// An adaptive run's steps as a range (its longest and shortest step), the method's parameters
+// where it is no preset, and a step limit the run would reach is warned of, by check and run.
+TEST_F(Cli, CheckGivesAnAdaptiveRunsStepsAndWarnsOfAStepLimitItWouldReach) {
+  const std::string adaptive =
+      write_model("adaptive.json", R"([{"op": "replace", "path": "/analysis",
+      "value": {"integrator": {"type": "hht", "alpha": -0.1}, "time_step": 0.001, "duration": 0.1,
+                "adaptive": {"min_time_step": 1e-5, "max_time_step": 0.004}, "max_steps": 20}}])");
+  const Outcome check = pound({"check", adaptive});
+  ASSERT_EQ(check.exit_code, 0) << check.err;
+  EXPECT_TRUE(contains(check.out,
+                       "  analysis: hht (alpha -0.1), adaptive time steps from 0.001 s at "
+                       "first, between 1e-05 s and 0.004 s (tolerance 1e-05), over "
+                       "0.1 s: 25 to 10000 steps\n"))
+      << check.out;
+  const std::string limit = "the analysis takes at least 25 steps and the step limit";
+  EXPECT_TRUE(contains(check.out, limit + " (\"max_steps\" or --max-steps) is 20: the run stops "
+                                          "as failed at t = 0.08 of 0.1 at the latest"))
+      << check.out;
+  const json analysis = json::parse(pound({"check", adaptive, "--json"}).out)["analysis"];
+  EXPECT_EQ(analysis["time_step_rule"], "adaptive");
+  EXPECT_EQ(analysis["steps_at_least"], 25);
+  EXPECT_EQ(analysis["steps_at_most"], 10000);
+  EXPECT_EQ(analysis["max_steps"], 20);
+  EXPECT_FALSE(analysis.contains("steps"));
+  EXPECT_EQ(analysis["integrator_parameters"]["alpha"], -0.1);
+  const Outcome run = pound({"run", adaptive, "--out", path("out").string(), "--quiet"});
+  EXPECT_EQ(run.exit_code, 3) << run.err;
+  EXPECT_TRUE(contains(run.err, limit)) << run.err;
+  const Outcome fixed = pound({"check", kGirderModel, "--json"});
+  EXPECT_FALSE(contains(fixed.out, "step limit")) << fixed.out;
+  std::cout << check.out;
+}
+
 TEST_F(Cli, CheckWarnsOfBillionsOfAutomaticSteps) {
   const std::string long_run = write_model("auto.json", R"([{"op": "replace", "path": "/analysis",
                         "value": {"integrator": "central_difference", "time_step": "auto",

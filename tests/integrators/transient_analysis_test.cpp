@@ -231,6 +231,30 @@ TEST(TransientAnalysis, EndTimeIsReachedExactlyWithoutDrift) {
   EXPECT_EQ(state.time, 1.05);
 }
 
+// `pound check` and the memory check count a run's steps before it starts with
+// fixed_step_count; the run must take exactly that many. A quotient a few ulps above a whole
+// number (0.004 / 1e-6 = 4000.0000000000005) was counted one step too many.
+TEST(TransientAnalysis, FixedStepCountIsTheStepsARunTakes) {
+  struct Span {
+    double time_step, end_time;
+  };
+  for (const Span span : {Span{1e-6, 0.004}, Span{0.1, 1.05}, Span{0.1, 0.3}, Span{0.0015, 25.0},
+                          Span{0.01, 0.07}, Span{1e-3, 1.0}, Span{0.3, 0.9}, Span{0.002, 30.0}}) {
+    testing::Oscillator system(1.0, 0.0, 1.0);
+    integrators::Newmark newmark = integrators::Newmark::average_acceleration();
+    integrators::TransientAnalysis analysis(
+        system, newmark, {.time_step = span.time_step, .end_time = span.end_time});
+    integrators::State state;
+    const long counted =
+        static_cast<long>(integrators::fixed_step_count(span.end_time, span.time_step));
+    EXPECT_EQ(analysis.run(state).steps, counted)
+        << span.end_time << " / " << span.time_step << " = " << span.end_time / span.time_step;
+    EXPECT_EQ(state.time, span.end_time);
+  }
+  EXPECT_EQ(integrators::fixed_step_count(0.004, 1e-6), 4000.0);  // 4001 by std::ceil alone
+  EXPECT_EQ(integrators::fixed_step_count(1.05, 0.1), 11.0);      // ten of 0.1, one of 0.05
+}
+
 // Issue 20: the steps were the differences of their end times, which vary in their last bits
 // (16 distinct values over the bundled bridge's 16,667 steps), and the implicit integrators
 // made a factorisation for each. Every step is now the nominal dt exactly, cut steps its exact
