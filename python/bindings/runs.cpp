@@ -1,6 +1,8 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <chrono>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -84,10 +86,46 @@ app::MotionOverride motion_from(const py::dict& record) {
   return motion;
 }
 
+// Seconds of solving between calls of pound.run's `progress`: often enough for a progress bar to
+// move smoothly, seldom enough that taking the GIL costs nothing measurable.
+constexpr double kProgressInterval = 0.2;
+
+// pound.run(progress=...): `callback(time, end)` as the solve starts, then at most every
+// kProgressInterval seconds (the clock read every kProgressStride steps), and (time == end) once
+// the run has completed (RunProgress::finish). What the callback raises stops the run and reaches
+// the caller.
+class RunProgress {
+ public:
+  explicit RunProgress(py::object callback) : callback_(std::move(callback)) {}
+
+  std::function<void(double, double, double)> observer() {
+    return [this](double time, double start, double end) {
+      end_ = end;
+      const auto now = std::chrono::steady_clock::now();
+      if (time != start &&
+          std::chrono::duration<double>(now - last_call_).count() < kProgressInterval)
+        return;
+      last_call_ = now;
+      const py::gil_scoped_acquire locked;
+      callback_(time, end);
+    };
+  }
+  // With the GIL held, after a completed run.
+  void finish() const {
+    if (end_) callback_(*end_, *end_);
+  }
+
+ private:
+  py::object callback_;
+  std::chrono::steady_clock::time_point last_call_;
+  std::optional<double> end_;
+};
+
 std::shared_ptr<RunResult> run(const std::optional<std::string>& text, const std::string& path,
                                const std::optional<py::dict>& record,
                                const std::optional<std::string>& out, long max_steps,
-                               double time_limit, bool histories) {
+                               double time_limit, bool histories,
+                               const std::optional<py::object>& progress_callback) {
   app::RunRequest request;
   request.model_path = path;
   request.model_text = text;
@@ -99,13 +137,18 @@ std::shared_ptr<RunResult> run(const std::optional<std::string>& text, const std
     request.before_run = [&](const app::LoadedModel& loaded) {
       app::check_run_outputs(*out, request, loaded, false);
     };
+  std::optional<RunProgress> progress;
+  if (progress_callback) request.progress = progress.emplace(*progress_callback).observer();
   auto result = std::make_shared<RunResult>();
-  const InterruptGuard guard;
-  const py::gil_scoped_release unlocked;
-  const Stopwatch stopwatch;
-  result->outcome = app::run_model(request);
-  if (out) app::write_run_outputs(*out, result->outcome);
-  result->core_s = stopwatch.seconds();
+  {
+    const InterruptGuard guard;
+    const py::gil_scoped_release unlocked;
+    const Stopwatch stopwatch;
+    result->outcome = app::run_model(request);
+    if (out) app::write_run_outputs(*out, result->outcome);
+    result->core_s = stopwatch.seconds();
+  }
+  if (progress && result->outcome.failure.empty()) progress->finish();
   return result;
 }
 
@@ -153,7 +196,7 @@ void bind_runs(py::module_& module) {
       .def_property_readonly("core_s", [](const RunResult& r) { return r.core_s; })
       .def("tables", &tables, "Every recorder's table, its columns as read-only NumPy views.");
   module.def("run", &run, py::arg("text"), py::arg("path"), py::arg("record"), py::arg("out"),
-             py::arg("max_steps"), py::arg("time_limit"), py::arg("histories"),
+             py::arg("max_steps"), py::arg("time_limit"), py::arg("histories"), py::arg("progress"),
              "Runs a model as `pound run` does (the GIL released); writes to `out` when given.");
   module.def("batch", &batch, py::arg("text"), py::arg("path"), py::arg("out"), py::arg("jobs"),
              py::arg("resume"), "Runs a batch set as `pound batch` does; returns its report.");

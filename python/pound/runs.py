@@ -22,7 +22,7 @@ def _model(model):
 
 
 def run(model, record=None, out=None, *, max_steps=0, time_limit=0.0, histories=True,
-        check=True):
+        check=True, progress=None):
     """Runs the time-history analysis of ``model`` (a :class:`pound.Model`, a dict or a path),
     as ``pound run`` does, and returns a :class:`pound.Result`.
 
@@ -35,14 +35,22 @@ def run(model, record=None, out=None, *, max_steps=0, time_limit=0.0, histories=
     the run (KeyboardInterrupt). A failed analysis raises :class:`pound.AnalysisError` with the
     result up to the failure as ``error.result`` (and, with ``out``, its files written), unless
     ``check=False``, which returns that result instead.
+
+    ``progress``: a callable ``progress(time, end)`` [the model's time unit], called as the
+    solve starts, then at most every 0.2 s of solving, and with ``time == end`` once the run has
+    completed (not after a failure): for a progress bar. What it raises stops the run and is
+    raised here.
     """
     model = _model(model)
     if record is not None and not isinstance(record, Record):
         raise InputError("", "record", f"expected a pound.Record, got {type(record).__name__}")
+    if progress is not None and not callable(progress):
+        raise InputError("", "progress",
+                         f"expected a callable progress(time, end), got {type(progress).__name__}")
     text, path = model._arguments()
     core = _core.run(text, path, None if record is None else record._motion(),
                      None if out is None else os.fspath(out), integer(max_steps, "max_steps"),
-                     float(time_limit), bool(histories))
+                     float(time_limit), bool(histories), progress)
     result = Result(core)
     if check and not result.completed:
         raise AnalysisError(result.failure_time, result.failure, result)

@@ -268,3 +268,57 @@ def test_the_energy_terms_balance(models):
     print(f"balance error {error:.2e}, reported {energy['balance_error']:.2e}")
     assert energy["input"] > 0.0 and energy["links"] > 0.0
     assert error == pytest.approx(energy["balance_error"], abs=1e-12) and error < 1e-10
+
+
+def block_on_belt(models, duration):
+    """The block on a belt (central difference, 9e-8 s steps) for `duration` [s]: 0.0015 s is
+    about 16,000 steps, some 0.8 s of solving."""
+    model = json.loads((models / "block_on_belt.json").read_text())
+    model["analysis"]["duration"] = duration
+    return pound.Model.from_dict(model, name="block_on_belt", folder=models)
+
+
+def test_progress_follows_the_solve_from_its_start_to_its_end(models):
+    model = block_on_belt(models, 0.0015)
+    calls = []
+    result = pound.run(model, histories=False, progress=lambda t, end: calls.append((t, end)))
+    print(len(calls), "calls:", calls[:3], "...", calls[-2:])
+    assert calls[0] == (0.0, 0.0015)
+    assert calls[-1] == (0.0015, 0.0015)
+    times = [t for t, _ in calls]
+    assert times == sorted(times) and len(set(times)) == len(times)
+    assert all(end == 0.0015 for _, end in calls)
+    assert len(calls) >= 3  # the start, at least one 0.2 s later, the end
+    quiet = pound.run(model, histories=False)
+    summary, quiet_summary = dict(result.summary), dict(quiet.summary)
+    summary.pop("run_time_s")
+    quiet_summary.pop("run_time_s")
+    assert summary == quiet_summary
+
+
+def test_what_progress_raises_stops_the_run_and_reaches_the_caller(models):
+    class Enough(Exception):
+        pass
+
+    def stop_after_the_start(t, end):
+        if t > 0.0:
+            raise Enough(f"stopped at {t}")
+
+    with pytest.raises(Enough, match="stopped at"):
+        pound.run(block_on_belt(models, 0.004), histories=False, progress=stop_after_the_start)
+    calls = []
+    pound.run(models / "rod_impact.json", progress=lambda t, end: calls.append(t))
+    assert calls[0] == 0.0 and calls[-1] > 0.0  # the next run starts afresh
+
+
+def test_a_failed_run_gets_no_last_progress_call(models):
+    calls = []
+    result = pound.run(models / "rod_impact.json", max_steps=10, check=False,
+                       progress=lambda t, end: calls.append((t, end)))
+    assert not result.completed
+    assert calls and all(t < end for t, end in calls)
+
+
+def test_progress_must_be_callable(models):
+    with pytest.raises(pound.InputError, match="progress"):
+        pound.run(models / "rod_impact.json", progress=0.5)
