@@ -109,15 +109,16 @@ std::string check_text(const std::string& model_path, const verification::ModelC
     directions += fmt::format("; {} more tied by constraints", check.tied_dofs);
   std::string text = fmt::format("{}: {} DOFs ({}), {} links\n", model_path, check.dofs,
                                  directions.empty() ? "none free" : directions, check.links);
+  const std::string& time = units.of(Dimension::time);
   if (!check.periods.empty()) {
     text += "  periods:";
     for (double t : check.periods) text += fmt::format(" {:.4g}", t);
-    text += "\n";
+    text += time.empty() ? "\n" : " " + time + "\n";
   }
   if (check.explicit_step_contact)
-    text += fmt::format(
-        "  central difference stable step: {:.4g} with contacts open, {:.4g} in contact\n",
-        *check.explicit_step_open, *check.explicit_step_contact);
+    text += fmt::format("  central difference stable step: {} with contacts open, {} in contact\n",
+                        with_unit(*check.explicit_step_open, time),
+                        with_unit(*check.explicit_step_contact, time));
   else
     text += fmt::format("  central difference: not available ({})\n", check.explicit_unavailable);
   text += analysis_text(analysis, units);
@@ -134,9 +135,10 @@ std::string check_text(const std::string& model_path, const verification::ModelC
           fmt::format("; automatic extended penalty alpha0 {:.4g}, alpha1 {:.4g}, alpha2 {:.4g}",
                       c.automatic->alpha0, c.automatic->alpha1, c.automatic->alpha2);
     if (c.contact_duration > 0.0)
-      text += fmt::format("; contact lasts ~{:.4g}", c.contact_duration);
+      text += fmt::format("; contact lasts ~{}", with_unit(c.contact_duration, time));
     if (c.approach_velocity > 0.0)
-      text += fmt::format(" at an approach velocity of {:.3g}", c.approach_velocity);
+      text += fmt::format(" at an approach velocity of {}",
+                          with_unit(c.approach_velocity, units.of(Dimension::velocity), 3));
     text += "\n";
   }
   for (const std::string& w : check.warnings) text += "warning: " + w + "\n";
