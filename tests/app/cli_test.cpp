@@ -508,6 +508,10 @@ TEST_F(Cli, CheckSaysHowTheRunWillStepAndTheRunTakesThoseSteps) {
                        "  analysis: newmark_average_acceleration, time step 0.0015 s, "
                        "over 25 s (the records' length): 16667 steps\n"))
       << text.out;
+  // Times and velocities in the model's units, as `pound run` gives them.
+  EXPECT_TRUE(contains(text.out, "  periods: 1.067 0.8857 0.8784 0.5906 0.3333 0.3333 s\n"))
+      << text.out;
+  EXPECT_TRUE(contains(text.out, "stiffness 5e+08; contact lasts ~0.03142 s\n")) << text.out;
   for (const char* name : {"three_span_bridge", "block_on_belt_hard_contact", "rod_impact_2d",
                            "girder_abutment_sdof", "bar_rigid_wall"}) {
     const std::string model = POUND_SOURCE_DIR "/models/" + std::string(name) + ".json";
