@@ -114,7 +114,8 @@ struct CaseResult {
   std::string row;
   results::CaseSummary summary;
   double worker_s = 0.0;  // the whole case
-  double setup_s = 0.0;   // reading and building
+  double setup_s = 0.0;   // reading and building (an ensemble's copies too)
+  double solve_s = 0.0;   // solving (an ensemble's copies too)
   double write_s = 0.0;   // writing its folder
 };
 
@@ -123,16 +124,33 @@ struct CaseResult {
 struct CaseRun {
   RunOutcome outcome;
   std::vector<std::pair<std::string, io::Document>> extra;  // ensemble.json
+  double copies_setup_s = 0.0, copies_solve_s = 0.0;        // the ensemble's copies'
 };
 
-CaseRun run_case_model(const RunRequest& request, const std::optional<builder::SetEnsemble>& set) {
-  if (!set) return {run_model(request), {}};
+// `case_progress` (if any) is told the fraction of the case done: of its run, and with an
+// ensemble of its run and copies, each an equal share.
+CaseRun run_case_model(RunRequest request, const std::optional<builder::SetEnsemble>& set,
+                       const std::function<void(double)>& case_progress) {
+  const double shares = set ? 1.0 + static_cast<double>(set->copies) : 1.0;
+  if (case_progress)
+    request.progress = [&case_progress, shares](double time, double start, double end) {
+      case_progress(end > start ? (time - start) / (end - start) / shares : 0.0);
+    };
+  if (!set) return {run_model(request), {}, 0.0, 0.0};
   const EnsembleOptions options{.copies = set->copies,
                                 .perturbation = set->perturbation,
                                 .robust_spread = set->robust_spread,
                                 .jobs = 1};
-  EnsembleResult result = run_ensemble(request, options);
-  CaseRun run{result.unperturbed, {{"ensemble.json", ensemble_document(result, options)}}};
+  const auto copy_done = [&case_progress, shares](std::size_t done, std::size_t) {
+    case_progress((1.0 + static_cast<double>(done)) / shares);
+  };
+  EnsembleResult result =
+      run_ensemble(request, options,
+                   case_progress ? copy_done : std::function<void(std::size_t, std::size_t)>());
+  CaseRun run{result.unperturbed,
+              {{"ensemble.json", ensemble_document(result, options)}},
+              result.copies_setup_s,
+              result.copies_solve_s};
   if (set->medians && result.unperturbed.failure.empty())
     run.outcome.case_summary = result.median_summary();
   return run;
@@ -142,7 +160,8 @@ CaseRun run_case_model(const RunRequest& request, const std::optional<builder::S
 // whose analysis fails before its first step (its static equilibrium under gravity not found):
 // a failed case, as one that fails during its run, not a stop of the batch.
 CaseRun run_or_report_input_error(const RunRequest& request,
-                                  const std::optional<builder::SetEnsemble>& ensemble) {
+                                  const std::optional<builder::SetEnsemble>& ensemble,
+                                  const std::function<void(double)>& case_progress) {
   const auto stopped = [&](results::CaseStatus status, const std::string& reason) {
     RunOutcome outcome;
     outcome.case_summary.status = status;
@@ -150,10 +169,10 @@ CaseRun run_or_report_input_error(const RunRequest& request,
     outcome.summary.set("model", request.model_path)
         .set("status", results::status_name(status))
         .set("failure", outcome.case_summary.reason);
-    return CaseRun{outcome, {}};
+    return CaseRun{outcome, {}, 0.0, 0.0};
   };
   try {
-    return run_case_model(request, ensemble);
+    return run_case_model(request, ensemble, case_progress);
   } catch (const InputError& error) {
     return stopped(results::CaseStatus::input_error, error.what());
   } catch (const SolveError& error) {
@@ -167,7 +186,8 @@ CaseRun run_or_report_input_error(const RunRequest& request,
 
 // Runs one case into <out>/.partial, then moves it into place.
 CaseResult run_case(const builder::SetSpec& set, const builder::BatchCase& c,
-                    const std::string& out, int rank) {
+                    const std::string& out, int rank,
+                    const std::function<void(double)>& case_progress) {
   const Stopwatch case_clock;
   RunRequest request;
   request.model_path = set.models[c.model].path;
@@ -175,7 +195,7 @@ CaseResult run_case(const builder::SetSpec& set, const builder::BatchCase& c,
   request.record->extra_factor = c.scale;
   request.intensity = set.intensity;
   request.histories = set.histories;
-  CaseRun run = run_or_report_input_error(request, set.ensemble);
+  CaseRun run = run_or_report_input_error(request, set.ensemble, case_progress);
   RunOutcome& outcome = run.outcome;
   results::CaseSummary& summary = outcome.case_summary;
   summary.name = c.name;
@@ -204,7 +224,8 @@ CaseResult run_case(const builder::SetSpec& set, const builder::BatchCase& c,
   result.summary = io::parse_case_row(result.row, c.name);
   result.worker_s = case_clock.seconds();
   result.write_s = write_clock.seconds();
-  result.setup_s = outcome.setup_s;
+  result.setup_s = outcome.setup_s + run.copies_setup_s;
+  result.solve_s = outcome.case_summary.run_time_s.value_or(0.0) + run.copies_solve_s;
   return result;
 }
 
@@ -328,7 +349,8 @@ struct RankRun {
   double wall_s = 0.0;
 };
 
-// Runs `mine` on `workers` threads, reporting each case to `progress`.
+// Runs `mine` on `workers` threads, reporting each case to `progress`, and the cases in flight
+// as they go.
 RankRun run_cases(const builder::SetSpec& set, const std::vector<const builder::BatchCase*>& mine,
                   const BatchOptions& options, int rank, int workers) {
   RankRun run;
@@ -337,21 +359,44 @@ RankRun run_cases(const builder::SetSpec& set, const std::vector<const builder::
   std::mutex mutex;  // guards what follows
   BatchProgress progress;
   progress.total = mine.size();
+  // Each worker's case in flight: the fraction done, < 0 when it has none.
+  std::vector<std::atomic<double>> in_flight(static_cast<std::size_t>(workers));
+  for (std::atomic<double>& fraction : in_flight) fraction = -1.0;
   const Stopwatch wall_clock;
-  auto work = [&] {
+  const auto report = [&](const results::CaseSummary* last) {  // with `mutex` held
+    progress.running = 0;
+    progress.running_done = 0.0;
+    for (const std::atomic<double>& fraction : in_flight)
+      if (const double f = fraction.load(std::memory_order_relaxed); f >= 0.0) {
+        ++progress.running;
+        progress.running_done += f;
+      }
+    progress.elapsed_s = wall_clock.seconds();
+    progress.last = last;
+    options.progress(progress);
+  };
+  auto work = [&](std::size_t worker) {
+    // While a case runs: its fraction, and a report unless another thread is reporting.
+    const auto case_progress = [&, worker](double fraction) {
+      in_flight[worker].store(fraction, std::memory_order_relaxed);
+      if (const std::unique_lock lock(mutex, std::try_to_lock); lock) report(nullptr);
+    };
     while (!stop) {
       const std::size_t k = next++;
       if (k >= mine.size()) return;
       try {
-        CaseResult result = run_case(set, *mine[k], options.out, rank);
+        in_flight[worker] = 0.0;
+        CaseResult result =
+            run_case(set, *mine[k], options.out, rank,
+                     options.progress ? case_progress : std::function<void(double)>());
         const std::lock_guard lock(mutex);
+        in_flight[worker] = -1.0;  // with `done`: a report sees the case running or done
         run.results.push_back(std::move(result));
         ++progress.done;
         progress.failed += run.results.back().summary.status != results::CaseStatus::completed;
-        progress.elapsed_s = wall_clock.seconds();
-        progress.last = &run.results.back().summary;
-        if (options.progress) options.progress(progress);
+        if (options.progress) report(&run.results.back().summary);
       } catch (const std::exception& error) {
+        in_flight[worker] = -1.0;
         // Results cannot be written (disk full, permissions): stop taking cases.
         const std::lock_guard lock(mutex);
         if (run.fatal.empty()) run.fatal = fmt::format("case {}: {}", mine[k]->name, error.what());
@@ -361,8 +406,8 @@ RankRun run_cases(const builder::SetSpec& set, const std::vector<const builder::
   };
   {
     std::vector<std::jthread> pool;
-    for (int w = 1; w < workers; ++w) pool.emplace_back(work);
-    work();
+    for (int w = 1; w < workers; ++w) pool.emplace_back(work, static_cast<std::size_t>(w));
+    work(0);
   }
   run.wall_s = wall_clock.seconds();
   return run;
@@ -376,7 +421,7 @@ std::vector<std::string> rank_messages(const RankRun& run) {
   for (const CaseResult& r : run.results) {
     messages.push_back(fmt::format("R{}\t{}", r.index, r.row));
     worker_s += r.worker_s;
-    solve_s += r.summary.run_time_s.value_or(0.0);
+    solve_s += r.solve_s;
     setup_s += r.setup_s;
     write_s += r.write_s;
   }

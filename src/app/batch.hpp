@@ -22,8 +22,10 @@ namespace pound::app {
 
 struct BatchProgress {
   std::size_t done = 0, total = 0, failed = 0;  // of this rank's cases still to run
+  std::size_t running = 0;                      // cases in flight
+  double running_done = 0.0;  // their fractions done (time of the record solved), summed
   double elapsed_s = 0.0;
-  const results::CaseSummary* last = nullptr;  // the case just finished
+  const results::CaseSummary* last = nullptr;  // the case just finished; none: cases in flight
 };
 
 struct BatchOptions {
@@ -34,7 +36,8 @@ struct BatchOptions {
   std::string out;
   int jobs = 0;         // worker threads per rank; 0: every core, or 1 per rank under MPI
   bool resume = false;  // keep the complete cases of an earlier run of the same set
-  // Called after each case this rank runs, one call at a time.
+  // Called after each case this rank runs, and while cases run (`last` null) every so many
+  // steps of any of them, one call at a time.
   std::function<void(const BatchProgress&)> progress;
 };
 

@@ -43,27 +43,41 @@ began, 4 when results cannot be written or another batch is working in DIR.
 
 options)";
 
-// A bar redrawn in place on a terminal; one line per case otherwise (logs, CI).
-void show_progress(const BatchProgress& p, bool terminal, int rank, int ranks) {
-  const double eta =
-      p.done ? p.elapsed_s / static_cast<double>(p.done) * static_cast<double>(p.total - p.done)
-             : 0.0;
-  const std::string who = ranks > 1 ? fmt::format("rank {}/{}: ", rank, ranks) : std::string();
-  if (terminal) {
-    constexpr int width = 30;
-    const int filled = p.total ? static_cast<int>(width * p.done / p.total) : width;
-    std::cerr << fmt::format("\r{}[{}{}] {}/{} cases, {} failed, {} elapsed, ETA {}  ", who,
-                             std::string(static_cast<std::size_t>(filled), '#'),
-                             std::string(static_cast<std::size_t>(width - filled), ' '), p.done,
-                             p.total, p.failed, clock_text(p.elapsed_s), clock_text(eta));
-    if (p.done == p.total) std::cerr << "\n";
-  } else {
-    std::cerr << fmt::format("{}[{}/{}] {} {}{} ({} elapsed, ETA {})\n", who, p.done, p.total,
+// On a terminal a bar redrawn in place, also while cases run, left on screen at the end; one
+// line per finished case otherwise (logs, CI).
+class BatchDisplay {
+ public:
+  BatchDisplay(bool terminal, int rank, int ranks)
+      : terminal_(terminal),
+        who_(ranks > 1 ? fmt::format("rank {}/{}: ", rank, ranks) : std::string()),
+        line_(std::cerr, {.in_place = true, .first_after = 0.0, .interval = 0.25}) {}
+
+  void show(const BatchProgress& p) {
+    const BatchCounts counts{p.done, p.total, p.failed, p.running, p.running_done};
+    if (terminal_) {
+      if (p.done == p.total) {  // the last case: the final bar stays
+        line_.finish();
+        std::cerr << batch_progress_text(counts, p.elapsed_s) << "\n";
+        return;
+      }
+      line_.update([&](double) { return batch_progress_text(counts, p.elapsed_s); });
+      return;
+    }
+    if (!p.last) return;
+    const double eta =
+        p.done ? p.elapsed_s / static_cast<double>(p.done) * static_cast<double>(p.total - p.done)
+               : 0.0;
+    std::cerr << fmt::format("{}[{}/{}] {} {}{} ({} elapsed, ETA {})\n", who_, p.done, p.total,
                              p.last->name, results::status_name(p.last->status),
                              p.last->reason.empty() ? "" : ": " + p.last->reason,
                              clock_text(p.elapsed_s), clock_text(eta));
   }
-}
+
+ private:
+  bool terminal_;
+  std::string who_;
+  ProgressLine line_;
+};
 
 std::string fragility_line(const results::FragilityFit& f) {
   if (!f.fitted)
@@ -132,10 +146,9 @@ int batch_command(const Arguments& arguments) {
   const Cluster& cluster = *started;
   const bool terminal = ::isatty(STDERR_FILENO) && cluster.size() == 1;
   // Under MPI only rank 0 reports, for its own share of the cases.
+  BatchDisplay display(terminal, cluster.rank(), cluster.size());
   if (!quiet && cluster.is_root())
-    batch.progress = [&](const BatchProgress& p) {
-      show_progress(p, terminal, cluster.rank(), cluster.size());
-    };
+    batch.progress = [&](const BatchProgress& p) { display.show(p); };
   BatchReport report;
   try {
     report = run_batch(batch, cluster);

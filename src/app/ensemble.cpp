@@ -176,6 +176,8 @@ EnsembleResult run_ensemble(const RunRequest& request, const EnsembleOptions& op
   for (const RunOutcome& copy : copies) {
     result.failures.push_back(copy.failure);
     result.copies.push_back(copy.case_summary);
+    result.copies_setup_s += copy.setup_s;
+    result.copies_solve_s += copy.case_summary.run_time_s.value_or(0.0);
   }
   result.quantities = spreads(result.unperturbed, copies, options.robust_spread);
   return result;

@@ -39,7 +39,8 @@ struct EnsembleResult {
   std::vector<double> factors;        // the copies' record factors, in order
   std::vector<std::string> failures;  // per copy: empty when it completed
   std::vector<QuantitySpread> quantities;
-  std::vector<results::CaseSummary> copies;  // each copy's case summary, in order
+  std::vector<results::CaseSummary> copies;           // each copy's case summary, in order
+  double copies_setup_s = 0.0, copies_solve_s = 0.0;  // summed over the copies (RunOutcome's)
   int failed() const;
   // The unperturbed case summary with each response (results/batch_quantities.hpp) replaced by
   // its median over the completed copies (left as it is where a copy lacks it, or none

@@ -88,4 +88,23 @@ std::string copies_progress_text(std::size_t done, std::size_t total, double ela
   return text;
 }
 
+std::string batch_progress_text(const BatchCounts& counts, double elapsed) {
+  constexpr double kBarWidth = 12.0;
+  const double total = static_cast<double>(counts.total);
+  const double fraction =
+      total > 0.0
+          ? std::clamp((static_cast<double>(counts.done) + counts.running_done) / total, 0.0, 1.0)
+          : 1.0;
+  const auto filled = static_cast<std::size_t>(std::floor(kBarWidth * fraction));
+  std::string text = fmt::format("[{}{}] {}/{} cases", std::string(filled, '#'),
+                                 std::string(static_cast<std::size_t>(kBarWidth) - filled, ' '),
+                                 counts.done, counts.total);
+  if (counts.failed > 0) text += fmt::format(", {} failed", counts.failed);
+  if (counts.running > 0) text += fmt::format(", {} running", counts.running);
+  text += fmt::format(", {} elapsed", clock_text(elapsed));
+  if (fraction > 0.0 && fraction < 1.0)
+    text += fmt::format(", ETA {}", clock_text(elapsed / fraction * (1.0 - fraction)));
+  return text;
+}
+
 }  // namespace pound::app

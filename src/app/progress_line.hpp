@@ -57,4 +57,13 @@ std::string solve_progress_text(double time, double start, double end, double el
 // "3 of 20 copies done, 00:12 elapsed, about 01:08 left".
 std::string copies_progress_text(std::size_t done, std::size_t total, double elapsed);
 
+// A batch's cases: finished (of them failed) and in flight, with the fractions of those done.
+struct BatchCounts {
+  std::size_t done = 0, total = 0, failed = 0, running = 0;
+  double running_done = 0.0;
+};
+// "[####        ] 7/20 cases, 1 failed, 2 running, 00:40 elapsed, ETA 01:10": the bar and the
+// ETA count the cases in flight by their fractions done; no failures, no "failed".
+std::string batch_progress_text(const BatchCounts& counts, double elapsed);
+
 }  // namespace pound::app

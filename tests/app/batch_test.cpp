@@ -1,5 +1,7 @@
 // `pound batch` end to end: real records read in place from ../shared, the project's records, a
 // deliberately broken record, determinism over --jobs and MPI ranks, kill and --resume.
+#include "app/batch.hpp"
+
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -15,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "app/cluster.hpp"
 #include "io/folder_lock.hpp"
 #include "support/process.hpp"
 #include "support/shared_records.hpp"
@@ -440,6 +443,51 @@ TEST_F(Batch, AnEnsembleSetRowsTheCopiesMedians) {
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("/ensemble/copies"), std::string::npos) << bad.err;
   EXPECT_FALSE(fs::exists(path("bad")));
+}
+
+// While cases run the batch reports them in flight (the bar of `pound batch` on a terminal
+// moves before a case ends): how many and the fractions of them done, an ensemble case's run and
+// copies each an equal share, so that cases done and in flight only grow. Its solving time counts
+// the copies' solves (they were "the rest" of the workers' time).
+TEST_F(Batch, ReportsTheCasesInFlightAndCountsAnEnsemblesCopiesAsSolving) {
+  std::ofstream(path("set.json")) << fmt::format(
+      R"({{"models": ["{0}/models/three_span_bridge.json"],
+           "records": [{{"folder": "{0}/ground_motions", "pattern": "*soft*.AT2",
+                         "scale": {{"pga": 0.4}}}}],
+           "ensemble": {{"copies": 2}}}})",
+      kSource);
+  app::BatchOptions options;
+  options.set_path = path("set.json").string();
+  options.out = path("out").string();
+  options.jobs = 2;
+  std::vector<app::BatchProgress> reports;
+  options.progress = [&](const app::BatchProgress& p) { reports.push_back(p); };
+  const app::Cluster cluster;
+  const app::BatchReport report = app::run_batch(options, cluster);
+  ASSERT_EQ(report.completed, 2u);
+  std::size_t in_flight = 0;
+  double reached = 0.0;
+  for (const app::BatchProgress& p : reports) {
+    in_flight += p.last == nullptr;
+    EXPECT_LE(p.running, 2u);
+    EXPECT_GE(p.running_done, 0.0);
+    EXPECT_LE(p.running_done, static_cast<double>(p.running));
+    const double now = static_cast<double>(p.done) + p.running_done;
+    EXPECT_GE(now, reached) << "done " << p.done << ", running " << p.running;
+    reached = now;
+  }
+  std::cout << reports.size() << " reports, " << in_flight << " of cases in flight\n";
+  EXPECT_GT(in_flight, 10u);  // 3 x 16,667 steps a case, a report every 64 steps (or fewer)
+  EXPECT_EQ(reports.back().done, 2u);
+  EXPECT_EQ(reports.back().running, 0u);
+  const auto rows = rows_of(read_text(path("out/batch_summary.csv")));
+  double unperturbed_s = 0.0;
+  for (std::size_t row = 1; row < rows.size(); ++row)
+    unperturbed_s += std::stod(cell(rows, row, "run_time_s"));
+  std::cout << "solving " << report.solve_s << " s, of which the unperturbed runs " << unperturbed_s
+            << " s\n";
+  // Three solves a case, the copies' without histories: about 3x the unperturbed ones.
+  EXPECT_GT(report.solve_s, 1.5 * unperturbed_s);
 }
 
 // A case whose analysis fails before its first step (a block on a floor whose static equilibrium

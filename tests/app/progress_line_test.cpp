@@ -113,6 +113,23 @@ TEST(ProgressText, SaysWhereTheAnalysisIsAndHowLongItTakesStill) {
   EXPECT_EQ(copies_progress_text(20, 20, 120.0), "20 of 20 copies done, 02:00 elapsed");
 }
 
+// `pound batch`'s bar: the cases in flight count by their fractions done, in the bar and the
+// ETA; no ETA before anything is done; within the 79 columns of a line redrawn in place.
+TEST(ProgressText, ABatchsBarCountsTheCasesInFlight) {
+  EXPECT_EQ(batch_progress_text({.done = 0, .total = 8, .running = 2}, 0.3),
+            "[            ] 0/8 cases, 2 running, 00:00 elapsed");
+  EXPECT_EQ(batch_progress_text(
+                {.done = 3, .total = 8, .failed = 1, .running = 2, .running_done = 1.0}, 20.0),
+            "[######      ] 3/8 cases, 1 failed, 2 running, 00:20 elapsed, ETA 00:20");
+  EXPECT_EQ(batch_progress_text({.done = 8, .total = 8}, 40.0),
+            "[############] 8/8 cases, 00:40 elapsed");
+  // An IDA of hours on a workstation; longer lines are cut at 79 columns in place.
+  const std::string wide = batch_progress_text(
+      {.done = 99, .total = 200, .failed = 10, .running = 16, .running_done = 3.5}, 3600.0);
+  std::cout << wide << "\n";
+  EXPECT_LE(wide.size(), ProgressLine::kInPlaceWidth);
+}
+
 TEST(ProgressText, ClockTextRoundsToSecondsAndShowsHoursPastOne) {
   EXPECT_EQ(clock_text(0.4), "00:00");
   EXPECT_EQ(clock_text(59.6), "01:00");
