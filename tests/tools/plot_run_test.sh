@@ -92,16 +92,6 @@ expect_input_error "$tmp/bad_ensemble" "$tmp/bad_ensemble/ensemble.json"
 
 # 6. Envelopes and floor spectra (models/adjacent_buildings_outputs.json, 6 s of it): the
 # spectra figure, no note about the envelope and spectrum tables, which are no histories.
-outputs="$tmp/outputs"
-sed 's/"analysis": {"time_step": 0.002}/"analysis": {"time_step": 0.002, "duration": 6}/' \
-  "$root/models/adjacent_buildings_outputs.json" >"$tmp/outputs_model.json"
-sed -i "s|\.\./ground_motions/|$(cd "$root" && pwd)/ground_motions/|" "$tmp/outputs_model.json"
-"$pound" run "$tmp/outputs_model.json" --out "$outputs" --quiet || fail "pound run of the outputs model failed"
-"$python" "$script" "$outputs" --dpi 60 >/dev/null 2>"$tmp/stderr" ||
-  fail "plot_run.py failed on envelopes and spectra: $(cat "$tmp/stderr")"
-is_png "$outputs/floor_spectra.png"
-[ ! -s "$tmp/stderr" ] || fail "plot_run.py noted: $(cat "$tmp/stderr")"
-
 # pound run of a shortened copy: the warning a cut duration brings (the analysis stops before a
 # record's largest acceleration) is expected and dropped; any other warning fails the test.
 run_copy() {  # model, out, what
@@ -111,6 +101,16 @@ run_copy() {  # model, out, what
     fail "pound run of $3 warned: $(cat "$tmp/run_stderr")"
   fi
 }
+
+outputs="$tmp/outputs"
+sed 's/"analysis": {"time_step": 0.002}/"analysis": {"time_step": 0.002, "duration": 6}/' \
+  "$root/models/adjacent_buildings_outputs.json" >"$tmp/outputs_model.json"
+sed -i "s|\.\./ground_motions/|$(cd "$root" && pwd)/ground_motions/|" "$tmp/outputs_model.json"
+run_copy "$tmp/outputs_model.json" "$outputs" "the outputs model"
+"$python" "$script" "$outputs" --dpi 60 >/dev/null 2>"$tmp/stderr" ||
+  fail "plot_run.py failed on envelopes and spectra: $(cat "$tmp/stderr")"
+is_png "$outputs/floor_spectra.png"
+[ ! -s "$tmp/stderr" ] || fail "plot_run.py noted: $(cat "$tmp/stderr")"
 
 # A model's copy for sections 7 and 8: 3 s of its analysis, its node recorders only (the links'
 # many pages are sections 1-6's), its records' paths absolute (the copy lives in $tmp).
