@@ -28,11 +28,10 @@ constexpr const char* kCheckUsage = R"(usage: pound check MODEL.json [--json]
 Before a run: the model's DOFs and first periods, the stable step of explicit central difference
 with the contacts open and in contact, how the run will step (its integrator, the time step and
 the rule that chose it, the duration and the number of steps), and for every contact link its
-stiffness against the
-adjacent elements (Kawashima's k-ratio), Suzuki & Toi's automatic penalty numbers, the expected
-contact duration and whether the time step resolves it (Kawashima: dt <= T_contact / 20). Every
-setting the benchmarks show to be meaningless is a warning. Exit code 0 (1 with --strict when
-there are warnings).
+stiffness against the adjacent elements (Kawashima's k-ratio), Suzuki & Toi's automatic penalty
+numbers, the expected contact duration and whether the time step resolves it (Kawashima: dt <=
+T_contact / 20). Every setting the benchmarks show to be meaningless is a warning. Exit code 0 (1
+with --strict when there are warnings).
 
 options)";
 
