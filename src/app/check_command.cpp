@@ -23,7 +23,7 @@ namespace po = boost::program_options;
 
 namespace {
 
-constexpr const char* kCheckUsage = R"(usage: pound check MODEL.json [--json]
+constexpr const char* kCheckUsage = R"(usage: pound check MODEL.json [--json] [--strict]
 
 Before a run: the model's DOFs and first periods, the stable step of explicit central difference
 with the contacts open and in contact, how the run will step (its integrator, the time step and
