@@ -91,9 +91,9 @@ app::MotionOverride motion_from(const py::dict& record) {
 constexpr double kProgressInterval = 0.2;
 
 // pound.run(progress=...): `callback(time, end)` as the solve starts, then at most every
-// kProgressInterval seconds (the clock read every kProgressStride steps), and (time == end) once
-// the run has completed (RunProgress::finish). What the callback raises stops the run and reaches
-// the caller.
+// kProgressInterval seconds (the clock read every kProgressStride steps), and once more as the run
+// ends (RunProgress::finish): time == end when it completed, the failure's time when it failed.
+// What the callback raises stops the run and reaches the caller.
 class RunProgress {
  public:
   explicit RunProgress(py::object callback) : callback_(std::move(callback)) {}
@@ -110,9 +110,9 @@ class RunProgress {
       callback_(time, end);
     };
   }
-  // With the GIL held, after a completed run.
-  void finish() const {
-    if (end_) callback_(*end_, *end_);
+  // With the GIL held, after the run; nothing if the solve never started (bad input).
+  void finish(const app::RunOutcome& outcome) const {
+    if (end_) callback_(outcome.failure.empty() ? *end_ : outcome.failure_time, *end_);
   }
 
  private:
@@ -123,7 +123,7 @@ class RunProgress {
 
 std::shared_ptr<RunResult> run(const std::optional<std::string>& text, const std::string& path,
                                const std::optional<py::dict>& record,
-                               const std::optional<std::string>& out, long max_steps,
+                               const std::optional<std::string>& out, std::optional<long> max_steps,
                                double time_limit, bool histories,
                                const std::optional<py::object>& progress_callback) {
   app::RunRequest request;
@@ -148,7 +148,7 @@ std::shared_ptr<RunResult> run(const std::optional<std::string>& text, const std
     if (out) app::write_run_outputs(*out, result->outcome);
     result->core_s = stopwatch.seconds();
   }
-  if (progress && result->outcome.failure.empty()) progress->finish();
+  if (progress) progress->finish(result->outcome);
   return result;
 }
 

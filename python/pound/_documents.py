@@ -32,12 +32,23 @@ def _plain(value, name, path):
                                  f"dict), got {type(value).__name__}")
 
 
-def integer(value, where):
+def integer(value, where, minimum=None):
     """An integer argument (Python or NumPy) as int; a float is refused, not cut (max_steps=3.5
-    would run 3 steps), as the program refuses --max-steps 3.5; so is a bool."""
+    would run 3 steps), as the program refuses --max-steps 3.5; so is a bool, and with `minimum`
+    one below it."""
     if isinstance(value, bool) or not isinstance(value, numbers.Integral):
         raise InputError("", where, f"expected an integer, got {value!r}")
+    if minimum is not None and value < minimum:
+        raise InputError("", where, f"expected an integer >= {minimum}, got {value!r}")
     return int(value)
+
+
+def seconds(value, where):
+    """A number of seconds >= 0 (0: no limit), as the program refuses --time-limit -1 or nan."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not value >= 0.0 \
+            or not math.isfinite(value):
+        raise InputError("", where, f"expected a number of seconds >= 0, got {value!r}")
+    return float(value)
 
 
 def to_json(document, name):

@@ -64,7 +64,7 @@ class Model:
         frequency, effective mass ratios), "shapes" (an array, a row per free DOF, a column per
         mode, largest component +1) and "dofs" (each row's label, e.g. "girder_1.u_x")."""
         document, shapes, labels = _core.model_modes(self._text, self._path,
-                                                     integer(count, "count"))
+                                                     integer(count, "count", 1))
         modes = json.loads(document)
         modes["shapes"] = np.asarray(shapes)
         modes["dofs"] = list(labels)

@@ -3,7 +3,7 @@
 import os
 
 from pound import _core
-from pound._documents import integer, to_json
+from pound._documents import integer, seconds, to_json
 from pound.errors import AnalysisError, InputError
 from pound.model import Model
 from pound.record import Record
@@ -21,7 +21,7 @@ def _model(model):
                                   f"{type(model).__name__}")
 
 
-def run(model, record=None, out=None, *, max_steps=0, time_limit=0.0, histories=True,
+def run(model, record=None, out=None, *, max_steps=None, time_limit=0.0, histories=True,
         check=True, progress=None):
     """Runs the time-history analysis of ``model`` (a :class:`pound.Model`, a dict or a path),
     as ``pound run`` does, and returns a :class:`pound.Result`.
@@ -29,7 +29,8 @@ def run(model, record=None, out=None, *, max_steps=0, time_limit=0.0, histories=
     ``record``: a :class:`pound.Record` replacing the model's first excitation's record.
     ``out``: a folder to write the files ``pound run --out`` writes (summary.json, the recorders'
     CSVs); none is written when None. ``max_steps``, ``time_limit`` [s of solving]: stop with
-    an AnalysisError past them (0: no limit). ``histories=False`` skips the recorders.
+    an AnalysisError past them (0: no limit; ``max_steps=None``: the model's "max_steps").
+    ``histories=False`` skips the recorders.
 
     The GIL is released while it solves: runs on several threads go in parallel. Ctrl-C stops
     the run (KeyboardInterrupt). A failed analysis raises :class:`pound.AnalysisError` with the
@@ -37,9 +38,9 @@ def run(model, record=None, out=None, *, max_steps=0, time_limit=0.0, histories=
     ``check=False``, which returns that result instead.
 
     ``progress``: a callable ``progress(time, end)`` [the model's time unit], called as the
-    solve starts, then at most every 0.2 s of solving, and with ``time == end`` once the run has
-    completed (not after a failure): for a progress bar. What it raises stops the run and is
-    raised here.
+    solve starts, then at most every 0.2 s of solving, and once more as the run ends: with
+    ``time == end`` when it completed, at the failure's time when it failed. For a progress bar;
+    what it raises stops the run and is raised here.
     """
     model = _model(model)
     if record is not None and not isinstance(record, Record):
@@ -49,8 +50,9 @@ def run(model, record=None, out=None, *, max_steps=0, time_limit=0.0, histories=
                          f"expected a callable progress(time, end), got {type(progress).__name__}")
     text, path = model._arguments()
     core = _core.run(text, path, None if record is None else record._motion(),
-                     None if out is None else os.fspath(out), integer(max_steps, "max_steps"),
-                     float(time_limit), bool(histories), progress)
+                     None if out is None else os.fspath(out),
+                     None if max_steps is None else integer(max_steps, "max_steps", 0),
+                     seconds(time_limit, "time_limit"), bool(histories), progress)
     result = Result(core)
     if check and not result.completed:
         raise AnalysisError(result.failure_time, result.failure, result)
@@ -69,7 +71,7 @@ def batch(set, out, *, jobs=0, resume=False):
         text, path = to_json(set, "<dict>"), "<dict>"
     else:
         text, path = None, os.fspath(set)
-    report = _core.batch(text, path, out, integer(jobs, "jobs"), bool(resume))
+    report = _core.batch(text, path, out, integer(jobs, "jobs", 0), bool(resume))
     report["summary"] = os.path.join(out, "batch_summary.csv")
     report["statistics"] = os.path.join(out, "batch_stats.json")
     return report

@@ -155,6 +155,7 @@ io::Document analysis_document(const builder::AnalysisSpec& analysis) {
   doc.set("integrator_parameters", parameters)
       .set("time_step", analysis.time_step)
       .set("time_step_rule", step_rule(analysis));
+  if (analysis.time_step_defaulted) doc.set("time_step_defaulted", true);
   if (analysis.time_step_auto) doc.set("safety_factor", analysis.safety_factor);
   if (analysis.time_step_auto && analysis.stable_time_step)
     doc.set("stable_time_step", *analysis.stable_time_step);

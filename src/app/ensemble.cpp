@@ -188,14 +188,23 @@ std::string ensemble_report(const EnsembleResult& result, const EnsembleOptions&
   std::size_t other = 0;
   for (const QuantitySpread& q : result.quantities)
     if (!q.robust) (q.headline ? loose.push_back(&q) : void(++other));
-  std::sort(loose.begin(), loose.end(),
-            [](const auto* a, const auto* b) { return a->spread > b->spread; });
+  // Peaks and counts before the states left at the end of the record (residual openings and
+  // drifts), which end near zero and so spread most relative to their size: a reader looks for
+  // the peak forces first. Within each, the least robust first.
+  const auto residual = [](const QuantitySpread* q) {
+    return q->path.find("/residual_") != std::string::npos;
+  };
+  std::stable_sort(loose.begin(), loose.end(), [&](const auto* a, const auto* b) {
+    if (residual(a) != residual(b)) return residual(b);
+    return a->spread > b->spread;
+  });
   std::string text = fmt::format(
-      "ensemble: {} copies with the records scaled by 1 +- k {:g} (k up to {}), {} failed: {} of "
+      "ensemble: {} cop{} with the records scaled by 1 +- k {:g} (k up to {}), {} failed: {} of "
       "{} numbers are not robust (16-84 % spread above {:g} of their size)\n",
-      result.factors.size(), options.perturbation, (options.copies + 1) / 2, result.failed(),
-      loose.size() + other, result.quantities.size(), options.robust_spread);
-  constexpr std::size_t kShown = 12;
+      result.factors.size(), result.factors.size() == 1 ? "y" : "ies", options.perturbation,
+      (options.copies + 1) / 2, result.failed(), loose.size() + other, result.quantities.size(),
+      options.robust_spread);
+  constexpr std::size_t kShown = 16;
   for (std::size_t k = 0; k < std::min(kShown, loose.size()); ++k) {
     const QuantitySpread& q = *loose[k];
     text += fmt::format(
@@ -203,12 +212,12 @@ std::string ensemble_report(const EnsembleResult& result, const EnsembleOptions&
         "{:.4g} (spread {:.0f} %)\n",
         q.path, q.unperturbed, q.median, q.p16, q.p84, q.min, q.max, 100.0 * q.spread);
   }
-  const std::size_t more = loose.size() - std::min(kShown, loose.size()) + other;
-  if (more > 0)
+  const std::size_t more_headline = loose.size() - std::min(kShown, loose.size());
+  if (more_headline + other > 0)
     text += fmt::format(
-        "  ... and {} more (energies, impulses, contact times...) in "
-        "ensemble.json\n",
-        more);
+        "  ... and {} more in ensemble.json ({} of them headline, {} others: energies, "
+        "impulses, contact times...)\n",
+        more_headline + other, more_headline, other);
   return text;
 }
 

@@ -70,7 +70,7 @@ PreparedRun prepare(const RunRequest& request) {
                       : load_model(model_path, request.motion)};
   if (request.before_run) request.before_run(run.loaded);
   builder::BuiltModel& built = run.loaded.built;
-  if (request.max_steps > 0) built.analysis.max_steps = request.max_steps;
+  if (request.max_steps) built.analysis.max_steps = *request.max_steps;
   if (request.record_factor != 1.0) {
     for (model::UniformExcitation& e : built.model.excitations)
       for (double& a : e.motion.acceleration) a *= request.record_factor;

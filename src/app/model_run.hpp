@@ -23,7 +23,7 @@ struct RunRequest {
   std::optional<std::string> model_text;
   std::optional<MotionOverride> motion;           // `pound run --motion` and its options
   std::optional<builder::ExcitationSpec> record;  // a batch case's record (replaces `motion`)
-  long max_steps = 0;                             // 0: the model's
+  std::optional<long> max_steps;                  // none: the model's "max_steps"; 0: no limit
   double time_limit = 0.0;                        // [s] of solving, 0: none
   builder::IntensityMeasure intensity;            // for the case summary
   bool histories = true;                          // record and write the model's recorders

@@ -81,7 +81,7 @@ MotionOverride motion_override(const std::string& path, const po::variables_map&
 // What is wrong with the command line, or empty.
 std::string request_error(const RunRequest& request) {
   if (request.model_path.empty()) return "name a model file (see `pound run --help`)";
-  if (request.max_steps < 0) return "--max-steps must be >= 0";
+  if (request.max_steps && *request.max_steps < 0) return "--max-steps must be >= 0";
   if (!(request.time_limit >= 0.0) || !std::isfinite(request.time_limit))
     return "--time-limit must be a number of seconds >= 0";
   return {};
@@ -144,8 +144,9 @@ int run_command(const Arguments& arguments) {
       "time-column", "--motion: the first column of a columns file is time")(
       "scale", po::value<double>(), "--motion: multiply the record by this factor")(
       "pga", po::value<double>(), "--motion: scale the record to this peak acceleration [g]")(
-      "max-steps", po::value(&request.max_steps),
-      "stop with an error after this many steps (0: no limit)")(
+      "max-steps", po::value<long>(),
+      "stop with an error after this many steps (0: no limit, whatever the model's \"max_steps\"; "
+      "default: the model's)")(
       "time-limit", po::value(&request.time_limit),
       "stop with an error after this many seconds of solving (0: no limit); the histories so far "
       "are kept")("ensemble", po::value(&ensemble.copies),
@@ -163,6 +164,7 @@ int run_command(const Arguments& arguments) {
                                                                        "print nothing but errors");
   const auto parsed = parse_command_line(arguments, options, "model", request.model_path);
   if (!parsed) return 0;
+  if (parsed->count("max-steps")) request.max_steps = (*parsed)["max-steps"].as<long>();
   const bool with_ensemble = parsed->count("ensemble") > 0;
   std::string error = request_error(request);
   if (error.empty() && with_ensemble) error = ensemble_options_error(ensemble);

@@ -110,9 +110,13 @@ void add_verify_options(po::options_description& description, VerifyOptions& opt
       "extended_penalty: damping factor of alpha1")(
       "integrator", po::value(&options.integrator)->default_value("newmark_average_acceleration"),
       integrator_option_help().c_str())(
-      "alpha", po::value(&options.hht_alpha)->default_value(options.hht_alpha),
+      "alpha",
+      po::value(&options.hht_alpha)
+          ->default_value(options.hht_alpha, fmt::format("{:g}", options.hht_alpha)),
       "hht: alpha in [-1/3, 0]")(
-      "rho-inf", po::value(&options.rho_infinity)->default_value(options.rho_infinity),
+      "rho-inf",
+      po::value(&options.rho_infinity)
+          ->default_value(options.rho_infinity, fmt::format("{:g}", options.rho_infinity)),
       "generalized_alpha: spectral radius at infinite frequency, in [0, 1]")(
       "tolerance", po::value(&options.tolerance)->default_value(options.tolerance),
       "relative unbalanced-force tolerance of the Newton iteration")(

@@ -58,6 +58,28 @@ void check_step_within_duration(const AnalysisSpec& analysis, const std::string&
                                  analysis.time_step, analysis.duration));
 }
 
+// Adaptive steps are time_step x 2^k between min_time_step and max_time_step: the first step
+// must not be below the shortest, and some step of that grid must lie between the two (a
+// min_time_step of 0.003 over a time_step of 0.002 left the run cutting a step of 0.004 for ever).
+void check_adaptive_steps(const AnalysisSpec& analysis, const std::string& source) {
+  if (!analysis.adaptive) return;
+  const integrators::AdaptiveStepping& adaptive = *analysis.adaptive;
+  if (adaptive.min_time_step > analysis.time_step)
+    throw InputError(source, "/analysis/adaptive/min_time_step",
+                     fmt::format("{:g} is above the time step {:g}, the first step an adaptive run "
+                                 "takes: give a shortest step at most the time step",
+                                 adaptive.min_time_step, analysis.time_step));
+  const double shortest = adaptive.shortest(analysis.time_step),
+               longest = adaptive.longest(analysis.time_step);
+  if (shortest > longest)
+    throw InputError(
+        source, "/analysis/adaptive",
+        fmt::format("no step of the time step {:g} times a power of 2 lies between "
+                    "min_time_step {:g} and max_time_step {:g} (the steps an adaptive "
+                    "run takes): widen the range",
+                    analysis.time_step, adaptive.min_time_step, adaptive.max_time_step));
+}
+
 // The shortest sampling step of the model's records (infinite without records).
 double shortest_record_step(const model::Model& model) {
   double shortest = std::numeric_limits<double>::infinity();
@@ -463,6 +485,7 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
   if (!built.analysis.time_step_auto) {
     check_step_count(built.analysis, spec.source);
     check_step_within_duration(built.analysis, spec.source);
+    check_adaptive_steps(built.analysis, spec.source);
   }
   if (spec.damping) {
     try {

@@ -24,12 +24,18 @@ struct AdaptiveStepping {
   double min_time_step = 0.0;  // floor; a step that fails there stops the run
   double max_time_step = 0.0;  // ceiling (e.g. the record's sample interval x a few)
 
-  // The floor and ceiling a run with this nominal step takes (0 above: nominal / 256, x 16).
+  // The shortest and longest step a run with this nominal step takes. Steps are nominal x 2^k,
+  // so these are the grid's steps nearest inside min_time_step and max_time_step (0 above:
+  // nominal / 256 and 16 x nominal): a bound between two grid steps is never reached, and a run
+  // that cut or rejected steps until it got there would never stop. None inside both bounds
+  // (a grid step between them): the shortest comes out above the longest.
   double shortest(double nominal) const {
-    return min_time_step > 0.0 ? min_time_step : nominal / 256.0;
+    const double floor = min_time_step > 0.0 ? min_time_step : nominal / 256.0;
+    return nominal * std::exp2(std::ceil(std::log2(floor / nominal) - 1e-9));
   }
   double longest(double nominal) const {
-    return max_time_step > 0.0 ? max_time_step : 16.0 * nominal;
+    const double ceiling = max_time_step > 0.0 ? max_time_step : 16.0 * nominal;
+    return nominal * std::exp2(std::floor(std::log2(ceiling / nominal) + 1e-9));
   }
 };
 

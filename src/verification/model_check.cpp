@@ -252,8 +252,9 @@ void warn_step_limit(const builder::AnalysisSpec& analysis, std::vector<std::str
   const double steps = integrators::fixed_step_count(analysis.duration, longest);
   if (!(steps > static_cast<double>(analysis.max_steps))) return;
   warnings.push_back(fmt::format(
-      "the analysis takes {}{:.15g} steps and the step limit (\"max_steps\" or --max-steps) is "
-      "{}: the run stops as failed at {}t = {:.4g} of {:.4g}{} (is the limit what you meant?)",
+      "the analysis takes {}{:.15g} steps and the step limit is {} (\"max_steps\", or pound "
+      "run --max-steps): the run stops as failed at {}t = {:.6g} of {:.6g}{} (is the limit what "
+      "you meant?)",
       analysis.adaptive ? "at least " : "", steps, analysis.max_steps,
       analysis.adaptive ? "" : "about ", static_cast<double>(analysis.max_steps) * longest,
       analysis.duration, analysis.adaptive ? " at the latest" : ""));

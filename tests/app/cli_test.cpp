@@ -546,17 +546,19 @@ TEST_F(Cli, CheckGivesAnAdaptiveRunsStepsAndWarnsOfAStepLimitItWouldReach) {
   ASSERT_EQ(check.exit_code, 0) << check.err;
   EXPECT_TRUE(contains(check.out,
                        "  analysis: hht (alpha -0.1), adaptive time steps from 0.001 s at "
-                       "first, between 1e-05 s and 0.004 s (tolerance 1e-05), over "
-                       "0.1 s: 25 to 10000 steps\n"))
+                       "first, between 1.563e-05 s and 0.004 s (tolerance 1e-05), over "
+                       "0.1 s: 25 to 6400 steps\n"))
       << check.out;
-  const std::string limit = "the analysis takes at least 25 steps and the step limit";
-  EXPECT_TRUE(contains(check.out, limit + " (\"max_steps\" or --max-steps) is 20: the run stops "
-                                          "as failed at t = 0.08 of 0.1 at the latest"))
+  const std::string limit = "the analysis takes at least 25 steps and the step limit is 20";
+  EXPECT_TRUE(contains(check.out, limit + " (\"max_steps\", or pound run --max-steps): the run "
+                                          "stops as failed at t = 0.08 of 0.1 at the latest"))
       << check.out;
   const json analysis = json::parse(pound({"check", adaptive, "--json"}).out)["analysis"];
   EXPECT_EQ(analysis["time_step_rule"], "adaptive");
   EXPECT_EQ(analysis["steps_at_least"], 25);
-  EXPECT_EQ(analysis["steps_at_most"], 10000);
+  // Steps are 0.001 x 2^k: the shortest not below 1e-5 is 0.001 / 64.
+  EXPECT_EQ(analysis["adaptive_min_time_step"], 0.001 / 64.0);
+  EXPECT_EQ(analysis["steps_at_most"], 6400);
   EXPECT_EQ(analysis["max_steps"], 20);
   EXPECT_FALSE(analysis.contains("steps"));
   EXPECT_EQ(analysis["integrator_parameters"]["alpha"], -0.1);
@@ -566,6 +568,29 @@ TEST_F(Cli, CheckGivesAnAdaptiveRunsStepsAndWarnsOfAStepLimitItWouldReach) {
   const Outcome fixed = pound({"check", kGirderModel, "--json"});
   EXPECT_FALSE(contains(fixed.out, "step limit")) << fixed.out;
   std::cout << check.out;
+}
+
+// An adaptive run steps on time_step x 2^k: a shortest step above the first one, or bounds with no
+// such step between them, are refused (a min_time_step of 0.003 over a step of 0.002 left check
+// and run cutting a step of 0.004 for ever, snapped back to it each time).
+TEST_F(Cli, AdaptiveBoundsWithoutAStepOfTheGridBetweenThemAreRefused) {
+  const auto refused = [&](const std::string& adaptive, const std::string& where) {
+    const std::string model = write_model("bounds.json", R"([{"op": "replace", "path": "/analysis",
+        "value": {"time_step": 0.002, "duration": 0.1, "adaptive": )" +
+                                                             adaptive + "}}]");
+    for (const Outcome& outcome :
+         {pound({"check", model}), pound({"run", model, "--out", path("out").string()})}) {
+      EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+      EXPECT_TRUE(contains(outcome.err, model + ": " + where)) << outcome.err;
+      std::cout << outcome.err;
+    }
+    EXPECT_FALSE(fs::exists(path("out")));
+  };
+  refused(R"({"min_time_step": 0.003})", "/analysis/adaptive/min_time_step");
+  refused(R"({"min_time_step": 0.0011, "max_time_step": 0.0015})", "/analysis/adaptive");
+  const std::string fine = write_model("fine.json", R"([{"op": "replace", "path": "/analysis",
+      "value": {"time_step": 0.002, "duration": 0.1, "adaptive": {"min_time_step": 0.0011}}}])");
+  EXPECT_EQ(pound({"check", fine}).exit_code, 0);
 }
 
 TEST_F(Cli, CheckWarnsOfBillionsOfAutomaticSteps) {
@@ -763,7 +788,13 @@ TEST_F(Cli, ExplicitMethodWithoutAStepTakesTheStableOneAndSaysSo) {
   std::printf("time step %.6g = %.6g x stable step %.6g\n", summary["time_step"].get<double>(),
               summary["time_step"].get<double>() / stable, stable);
   EXPECT_NEAR(summary["time_step"].get<double>(), 0.8 * stable, 1e-15 * stable);
-  EXPECT_EQ(summary["time_step_rule"], "auto (no time_step given)");
+  EXPECT_EQ(summary["time_step_rule"], "auto");
+  EXPECT_EQ(summary["time_step_defaulted"], true);
+  // pound check's "analysis" in the same words.
+  const json check = json::parse(pound({"check", file.string(), "--json"}).out)["analysis"];
+  EXPECT_EQ(check["time_step_rule"], "auto");
+  EXPECT_EQ(check["time_step_defaulted"], true);
+  EXPECT_EQ(check["time_step"], summary["time_step"]);
   EXPECT_LT(summary["verification"]["duration_error"].get<double>(), 0.05);
 }
 
@@ -785,6 +816,11 @@ TEST_F(Cli, AutomaticExplicitStepStaysWithinTheRecordStep) {
               0.8 * summary["stable_time_step"].get<double>(), summary["time_step"].get<double>());
   EXPECT_GT(0.8 * summary["stable_time_step"].get<double>(), 0.01);
   EXPECT_EQ(summary["time_step"].get<double>(), 0.01);
+  EXPECT_EQ(summary["time_step_rule"], "auto_record_step");
+  const json check = json::parse(pound({"check", file.string(), "--json"}).out)["analysis"];
+  EXPECT_EQ(check["time_step_rule"], "auto_record_step");
+  EXPECT_EQ(check["time_step"], summary["time_step"]);
+  EXPECT_EQ(check["steps"], summary["steps"]);
 }
 
 // The energy a contact creates: two free masses closing through an elastic gap spring whose

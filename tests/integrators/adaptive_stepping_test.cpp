@@ -6,6 +6,7 @@
 #include <iostream>
 #include <numbers>
 
+#include "core/errors.hpp"
 #include "integrators/newmark.hpp"
 #include "integrators/transient_analysis.hpp"
 #include "links/gap_spring.hpp"
@@ -114,6 +115,49 @@ TEST(AdaptiveStepping, KeepsAFreeVibrationAccurateAndGrowsTheStep) {
   EXPECT_LT(stats.steps, 5000);         // fewer than the fixed 1e-3
   EXPECT_LT(worst, 0.02);
   EXPECT_NEAR(state.time, 5.0, 1e-12);
+}
+
+// Steps are the nominal step x 2^k, so a shortest step between two of them (1e-5 over 0.002:
+// 0.002 / 128 = 1.56e-5 is the nearest above) was never reached: a step failing at every size
+// was cut back to 1.56e-5 for ever, and a step whose error stays above the tolerance rejected for
+// ever. The floor is the grid's step now: the first stops with the time, the second is accepted.
+class NeverConverges final : public integrators::Integrator {
+ public:
+  std::string name() const override { return "never_converges"; }
+  void initialize(integrators::SecondOrderSystem&, integrators::State&, double) override {}
+  integrators::StepResult advance(integrators::SecondOrderSystem&, const integrators::State&,
+                                  double dt, double, integrators::State&) override {
+    smallest = std::min(smallest, dt);
+    return {.failure = "no equilibrium"};
+  }
+  double smallest = INFINITY;
+};
+
+TEST(AdaptiveStepping, AShortestStepBetweenGridStepsIsReachedAndEndsTheCuts) {
+  Oscillator system(1.0, 0.0, 1.0);
+  NeverConverges failing;
+  const integrators::AdaptiveStepping bounds{.min_time_step = 1e-5};
+  integrators::TransientAnalysis cut(system, failing,
+                                     {.time_step = 0.002, .end_time = 1.0, .adaptive = bounds});
+  integrators::State state;
+  EXPECT_THROW(cut.run(state), SolveError);
+  EXPECT_EQ(failing.smallest, 0.002 / 128.0);
+  EXPECT_EQ(bounds.shortest(0.002), 0.002 / 128.0);
+  EXPECT_EQ(bounds.longest(0.002), 0.002 * 16.0);
+
+  // A tolerance no step meets: every step rejected down to the floor, and accepted there.
+  integrators::Newmark newmark = integrators::Newmark::average_acceleration();
+  const integrators::AdaptiveStepping strict{.tolerance = 1e-300, .min_time_step = 1e-5};
+  integrators::TransientAnalysis rejected(
+      system, newmark, {.time_step = 0.002, .end_time = 0.01, .adaptive = strict});
+  integrators::State moving;
+  moving.displacement = Vector::Constant(1, 1.0);
+  const integrators::TransientStatistics stats = rejected.run(moving);
+  std::cout << stats.steps << " steps, " << stats.rejected_steps << " rejected, smallest "
+            << stats.smallest_step << "\n";
+  EXPECT_NEAR(stats.smallest_step, 0.002 / 128.0, 1e-12 * 0.002);  // the last one ends at 0.01
+  EXPECT_GT(stats.rejected_steps, 0);
+  EXPECT_NEAR(moving.time, 0.01, 1e-12);
 }
 
 }  // namespace

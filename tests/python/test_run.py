@@ -311,12 +311,35 @@ def test_what_progress_raises_stops_the_run_and_reaches_the_caller(models):
     assert calls[0] == 0.0 and calls[-1] > 0.0  # the next run starts afresh
 
 
-def test_a_failed_run_gets_no_last_progress_call(models):
+def test_a_failed_runs_last_progress_call_is_at_its_failure(models):
     calls = []
     result = pound.run(models / "rod_impact.json", max_steps=10, check=False,
                        progress=lambda t, end: calls.append((t, end)))
     assert not result.completed
-    assert calls and all(t < end for t, end in calls)
+    assert calls[0][0] == 0.0 and calls[-1][0] == result.failure_time > 0.0
+    assert all(t < end for t, end in calls)
+
+
+def test_max_steps_zero_lifts_the_models_limit_and_none_keeps_it(models):
+    model = json.loads((models / "two_sdof_girders.json").read_text())
+    model["analysis"]["max_steps"] = 100
+    limited = pound.Model.from_dict(model, folder=models)
+    assert not pound.run(limited, histories=False, check=False).completed
+    assert pound.run(limited, histories=False, max_steps=0).completed
+
+
+def test_counts_and_seconds_out_of_range_are_input_errors_naming_them(models, tmp_path):
+    for call, name in [(lambda: pound.run(models / "rod_impact.json", max_steps=-1), "max_steps"),
+                       (lambda: pound.run(models / "rod_impact.json", time_limit=-1), "time_limit"),
+                       (lambda: pound.run(models / "rod_impact.json", time_limit=float("nan")),
+                        "time_limit"),
+                       (lambda: pound.Model.from_file(models / "rod_impact.json").modes(count=0),
+                        "count"),
+                       (lambda: pound.batch(models / "../sets/three_span_bridge_ida.json",
+                                            tmp_path / "b", jobs=-1), "jobs")]:
+        with pytest.raises(pound.InputError, match=name):
+            call()
+    assert not (tmp_path / "b").exists()
 
 
 def test_progress_must_be_callable(models):
