@@ -125,7 +125,7 @@ int batch_command(const Arguments& arguments) {
   BatchOptions batch;
   options.add_options()("help,h", "show this help")("out,o", po::value(&batch.out),
                                                     "output folder (required)")(
-      "jobs,j", po::value(&batch.jobs), "worker threads per process (default: every core)")(
+      "jobs,j", po::value(&batch.jobs), "worker threads per process (default, or 0: every core)")(
       "resume", "keep the complete cases of an earlier run into --out and run the rest")(
       "quiet,q", "print nothing but errors");
   const auto parsed = parse_command_line(arguments, options, "set", batch.set_path);
@@ -135,8 +135,8 @@ int batch_command(const Arguments& arguments) {
     std::cerr << "pound batch: name a set file and --out DIR (see `pound batch --help`)\n";
     return 1;
   }
-  if (vm.count("jobs") && batch.jobs < 1) {
-    std::cerr << "pound batch: --jobs must be >= 1\n";
+  if (vm.count("jobs") && batch.jobs < 0) {
+    std::cerr << "pound batch: --jobs must be >= 0 (0: every core)\n";
     return 1;
   }
   batch.resume = vm.count("resume") > 0;

@@ -171,6 +171,8 @@ int run_command(const Arguments& arguments) {
   if (error.empty() && parsed->count("progress") &&
       !(progress_interval > 0.0 && std::isfinite(progress_interval)))
     error = "--progress must be a positive number of seconds";
+  if (error.empty() && parsed->count("progress") && parsed->count("quiet"))
+    error = "--progress asks for a line every so many seconds and --quiet for nothing: give one";
   for (const char* option : {"perturbation", "robust-spread", "jobs"})
     if (error.empty() && !with_ensemble && !(*parsed)[option].defaulted())
       error =

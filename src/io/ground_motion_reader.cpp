@@ -724,7 +724,7 @@ AccelerationUnit parse_acceleration_unit(const std::string& text) {
   if (name == "cm/s2" || name == "cm/s^2" || name == "gal") return AccelerationUnit::cm_per_s2;
   if (name == "model") return AccelerationUnit::model;
   throw std::invalid_argument(
-      fmt::format("unknown acceleration unit '{}' (known: g, m/s2, cm/s2, model)", text));
+      fmt::format("unknown acceleration unit '{}' (known: g, m/s2, cm/s2 or gal, model)", text));
 }
 
 namespace {

@@ -179,6 +179,12 @@ builder::SetSpec read_set(JsonObject& top) {
   const fs::path folder = fs::path(set.source).parent_path();
   set.title = top.optional<std::string>("title", std::string());
 
+  // A model file given where a set belongs: say so, not just that "models" is missing.
+  if (!top.find("models") && (top.find("nodes") || top.find("generators") || top.find("links")))
+    throw InputError(set.source, "",
+                     "this is a model file (it has nodes, generators or links), and pound batch "
+                     "takes a set file: its \"models\", \"records\" and \"scales\" "
+                     "(docs/batch_format.md); to run one model, use pound run");
   UniqueNames model_ids("model id");
   const JsonValue models = top.at("models");
   for (const JsonValue& entry : models.elements(1)) {

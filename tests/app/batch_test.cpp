@@ -550,6 +550,28 @@ TEST_F(Batch, ABadSetWritesNothing) {
   EXPECT_EQ(model.exit_code, 2);
   EXPECT_NE(model.err.find("model.json: /analysis/time_step"), std::string::npos) << model.err;
   EXPECT_FALSE(fs::exists(path("out")));
+  // A model file given for the set: said to be one, not only that "models" is missing.
+  const std::string bridge = kSource + "/models/three_span_bridge.json";
+  const Outcome mistaken = pound({"batch", bridge, "--out", path("out").string()});
+  EXPECT_EQ(mistaken.exit_code, 2);
+  EXPECT_NE(mistaken.err.find(bridge + ": this is a model file"), std::string::npos)
+      << mistaken.err;
+  EXPECT_NE(mistaken.err.find("pound run"), std::string::npos) << mistaken.err;
+  EXPECT_FALSE(fs::exists(path("out")));
+}
+
+// --jobs 0 is every core, as for `pound run --ensemble` and Python's pound.batch; below 0 a
+// usage error.
+TEST_F(Batch, JobsZeroIsEveryCore) {
+  const std::string set = write_bundled_set("[1]");
+  const Outcome every = pound({"batch", set, "--out", path("every").string(), "--jobs", "0", "-q"});
+  EXPECT_EQ(every.exit_code, 0) << every.err;
+  const Outcome one = pound({"batch", set, "--out", path("one").string(), "--jobs", "1", "-q"});
+  EXPECT_EQ(without_run_time(read_text(path("every/batch_summary.csv"))),
+            without_run_time(read_text(path("one/batch_summary.csv"))));
+  const Outcome negative = pound({"batch", set, "--out", path("bad").string(), "--jobs", "-1"});
+  EXPECT_EQ(negative.exit_code, 1) << negative.err;
+  EXPECT_FALSE(fs::exists(path("bad")));
 }
 
 }  // namespace

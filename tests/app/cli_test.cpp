@@ -477,8 +477,7 @@ TEST_F(Cli, ProgressForALogComesEverySoManySecondsAndLeavesTheResultsAlone) {
   std::cout << "ensemble's last: " << done.back() << "\n";
 
   // --quiet: nothing but errors.
-  const Outcome quiet =
-      pound({"run", model, "--out", path("quiet").string(), "--progress", "1e-9", "--quiet"});
+  const Outcome quiet = pound({"run", model, "--out", path("quiet").string(), "--quiet"});
   EXPECT_EQ(quiet.exit_code, 0) << quiet.err;
   EXPECT_EQ(quiet.out + quiet.err, "");
 }
@@ -492,10 +491,13 @@ TEST_F(Cli, ProgressIntervalMustBeAPositiveNumberOfSeconds) {
     EXPECT_FALSE(fs::exists(path("out"))) << bad;
     std::cout << bad << ": " << outcome.err;
   }
+  const Outcome both =
+      pound({"run", kGirderModel, "--out", path("out").string(), "--progress", "1", "--quiet"});
+  EXPECT_EQ(both.exit_code, 1) << both.err;
+  EXPECT_TRUE(contains(both.err, "--quiet")) << both.err;
+  EXPECT_FALSE(fs::exists(path("out")));
 }
 
-// With "time_step": "auto" the step is settled after the model's check: `pound check` warns of
-// the step count once it has settled it, as `pound run` does.
 // `pound check` says how the run will step (the integrator, the step and the rule that chose it,
 // the duration, the steps), and the run takes the steps it said: a step given, one set by
 // "auto", a duration that is the record's, and a quotient a few ulps above a whole number
@@ -593,6 +595,8 @@ TEST_F(Cli, AdaptiveBoundsWithoutAStepOfTheGridBetweenThemAreRefused) {
   EXPECT_EQ(pound({"check", fine}).exit_code, 0);
 }
 
+// With "time_step": "auto" the step is settled after the model's check: `pound check` warns of
+// the step count once it has settled it, as `pound run` does.
 TEST_F(Cli, CheckWarnsOfBillionsOfAutomaticSteps) {
   const std::string long_run = write_model("auto.json", R"([{"op": "replace", "path": "/analysis",
                         "value": {"integrator": "central_difference", "time_step": "auto",
