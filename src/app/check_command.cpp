@@ -135,6 +135,8 @@ std::string check_text(const std::string& model_path, const verification::ModelC
                       c.automatic->alpha0, c.automatic->alpha1, c.automatic->alpha2);
     if (c.contact_duration > 0.0)
       text += fmt::format("; contact lasts ~{}", with_unit(c.contact_duration, time));
+    else if (!c.no_duration.empty())
+      text += "; no contact duration claimed: " + c.no_duration;
     if (c.approach_velocity > 0.0)
       text += fmt::format(" at an approach velocity of {}",
                           with_unit(c.approach_velocity, units.of(Dimension::velocity), 3));

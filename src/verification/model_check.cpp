@@ -90,6 +90,10 @@ LinkCheck check_contact(const model::Link& link, const links::LinkLaw& law,
   const bool link_governs = c.adjacent == 0.0 || c.stiffness >= 10.0 * c.adjacent;
   if (c.stiffness > 0.0 && m_eff > 0.0 && link_governs)
     c.contact_duration = std::numbers::pi * std::sqrt(m_eff / c.stiffness);
+  else if (c.stiffness > 0.0 && m_eff > 0.0)
+    c.no_duration =
+        "it is not 10 x stiffer than the adjacent elements: the structure, not the link, sets how "
+        "long a contact lasts";
   // A Hertz-type contact: its elastic impact's closed form, where the link at its peak
   // penetration is stiff against its neighbours.
   const std::optional<double> k_h = c.stiff_at_first_touch ? std::nullopt : hertz_stiffness(law);
@@ -99,8 +103,20 @@ LinkCheck check_contact(const model::Link& link, const links::LinkLaw& law,
     if (c.adjacent == 0.0 || peak_stiffness >= 10.0 * c.adjacent) {
       c.contact_duration = impact.duration;
       c.approach_velocity = approach_velocity;
+    } else {
+      c.no_duration = fmt::format(
+          "its peak stiffness at an approach velocity of {:.3g} ({:.4g}) is not 10 x the adjacent "
+          "elements' ({:.4g}): the structure, not the link, sets how long a contact lasts",
+          approach_velocity, peak_stiffness, c.adjacent);
     }
+  } else if (k_h && m_eff > 0.0) {
+    c.no_duration =
+        "no approach velocity to estimate it at (no record, no initial closing velocity)";
   }
+  if (c.contact_duration == 0.0 && c.no_duration.empty() && !c.constraint && !(m_eff > 0.0))
+    c.no_duration =
+        "an end carries no lumped mass of its own (a point along a member, the structure's mass "
+        "at other nodes), so there are no two masses to estimate it from";
   return c;
 }
 

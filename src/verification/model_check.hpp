@@ -24,6 +24,7 @@ struct LinkCheck {
   double stiffness = 0.0;            // at first touch
   double adjacent = 0.0;             // of the softer element next to it; 0: bare masses
   double contact_duration = 0.0;     // when the link governs it; 0: not claimed
+  std::string no_duration;           // why none is claimed, where a reader would look for one
   // For a Hertz-type law (F = k_h delta^1.5), whose contact shortens as v0^(-1/5): the approach
   // velocity its duration is estimated at, twice the largest peak ground velocity of the
   // excitations or the link's initial closing velocity, whichever is larger; 0: none.
