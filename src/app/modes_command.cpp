@@ -129,11 +129,18 @@ Table shapes_table(const LoadedModel& loaded, const assembly::StructuralSystem& 
   return table;
 }
 
-std::string modes_table(const std::string& model_path, Index dofs, const ListedModes& listed) {
+// The modes with their units in the header (period in the model's time unit, frequency in Hz
+// where that is seconds); the mass columns are ratios of the total.
+std::string modes_table(const std::string& model_path, Index dofs, const ListedModes& listed,
+                        const std::string& time) {
   const bool y = listed.directions > 1;
+  const std::string period = time.empty() ? "period" : fmt::format("period [{}]", time);
+  const std::string frequency = time.empty()  ? "frequency"
+                                : time == "s" ? "freq. [Hz]"
+                                              : fmt::format("freq. [1/{}]", time);
   std::string table =
-      fmt::format("{}: {} DOFs\n{:>5} {:>12} {:>12} {:>10}{}\n", model_path, dofs, "mode", "period",
-                  "frequency", "mass x", y ? fmt::format(" {:>10}", "mass y") : "");
+      fmt::format("{}: {} DOFs\n{:>5} {:>12} {:>12} {:>10}{}\n", model_path, dofs, "mode", period,
+                  frequency, "mass x", y ? fmt::format(" {:>10}", "mass y") : "");
   for (const ListedMode& mode : listed.modes)
     table += fmt::format("{:>5} {:>12.5g} {:>12.5g} {:>10.4f}{}\n", mode.number, mode.period,
                          1.0 / mode.period, mode.mass_ratio[0],
@@ -177,7 +184,7 @@ ModalFindings modal_findings(const LoadedModel& loaded, const std::string& model
   }
   return {modes_document(model_path, system->size(), modes),
           shapes_table(loaded, *system, modes.modes),
-          modes_table(model_path, system->size(), modes)};
+          modes_table(model_path, system->size(), modes, loaded.built.units.of(Dimension::time))};
 }
 
 int modes_command(const Arguments& arguments) {

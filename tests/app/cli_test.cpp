@@ -1283,6 +1283,8 @@ TEST_F(Cli, ModesFewerThanAskedSayWhy) {
   const std::string girders = POUND_SOURCE_DIR "/models/two_sdof_girders.json";
   const Outcome listed = pound({"modes", girders, "--count", "12"});
   ASSERT_EQ(listed.exit_code, 0) << listed.err;
+  // The header gives the units: the model's time unit, Hz where it is seconds.
+  EXPECT_TRUE(contains(listed.out, " mode   period [s]   freq. [Hz]     mass x\n")) << listed.out;
   EXPECT_TRUE(contains(listed.out,
                        "\n2 of the 12 modes asked for: the model has 2 DOFs with "
                        "mass, hence 2 modes\n"))
