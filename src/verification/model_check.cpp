@@ -35,29 +35,31 @@ void warn_k_ratio(const LinkCheck& c, std::vector<std::string>& warnings) {
                     c.id, ratio));
 }
 
-// Whether the time step resolves the contact: Kawashima asks for 20 steps per contact.
+// Whether the time step resolves the contact: Kawashima asks for 20 steps per contact. An
+// adaptive run shortens its steps where a contact needs them, down to its shortest step.
 void warn_contact_steps(const LinkCheck& c, const builder::AnalysisSpec& analysis,
                         std::vector<std::string>& warnings) {
   if (c.contact_duration == 0.0 || analysis.time_step_auto) return;
   const std::string assumed =
       c.approach_velocity > 0.0
           ? fmt::format(
-                " (a Hertz-type contact at an approach velocity of {:.3g}, twice the "
-                "peak ground velocity or the initial closing velocity; faster impacts "
-                "are shorter)",
+                " (a Hertz-type contact at an approach velocity of {:.3g}: twice the peak "
+                "ground velocity or the initial closing velocity; faster impacts are shorter)",
                 c.approach_velocity)
           : "";
-  if (analysis.time_step > 0.5 * c.contact_duration)
+  const double step =
+      analysis.adaptive ? analysis.adaptive->shortest(analysis.time_step) : analysis.time_step;
+  const char* which = analysis.adaptive ? "the shortest adaptive step" : "the time step";
+  if (step > 0.5 * c.contact_duration)
     warnings.push_back(
-        fmt::format("link {}: the time step {:.4g} is more than half the contact "
-                    "duration {:.4g}{}: the impact is not resolved and the result is "
-                    "meaningless",
-                    c.id, analysis.time_step, c.contact_duration, assumed));
-  else if (analysis.time_step > c.contact_duration / 20.0)
+        fmt::format("link {}: {} {:.4g} is more than half the contact duration {:.4g}{}: the "
+                    "impact is not resolved and the result is meaningless",
+                    c.id, which, step, c.contact_duration, assumed));
+  else if (step > c.contact_duration / 20.0)
     warnings.push_back(
-        fmt::format("link {}: the time step {:.4g} gives fewer than 20 steps per "
-                    "contact ({:.4g}{}); Kawashima asks dt <= T_contact / 20",
-                    c.id, analysis.time_step, c.contact_duration, assumed));
+        fmt::format("link {}: {} {:.4g} gives fewer than 20 steps per contact of {:.4g}{}; "
+                    "Kawashima asks dt <= T_contact / 20",
+                    c.id, which, step, c.contact_duration, assumed));
 }
 
 // k_h of a law that is F = k_h delta^1.5 at rest (Hertz, Hertz-damp, Jankowski), probed on a

@@ -584,6 +584,27 @@ TEST_F(Cli, CheckGivesAnAdaptiveRunsStepsAndWarnsOfAStepLimitItWouldReach) {
   std::cout << check.out;
 }
 
+// An adaptive run shortens its steps where a contact needs them: the 20-steps-per-contact rule is
+// asked of its shortest step, not its first (the bundled adaptive girders start at 2 ms against a
+// 30 ms contact, and take 0.5 ms steps in it).
+TEST_F(Cli, AnAdaptiveRunsContactsAreCheckedAgainstItsShortestStep) {
+  const std::string adaptive = POUND_SOURCE_DIR "/models/two_girders_joint_adaptive.json";
+  const Outcome check = pound({"check", adaptive});
+  ASSERT_EQ(check.exit_code, 0) << check.err;
+  EXPECT_TRUE(contains(check.out, "no warnings")) << check.out;
+  json fixed = json::parse(read_text(adaptive));
+  fixed["analysis"].erase("adaptive");
+  std::ofstream(path("fixed.json")) << fixed.dump();
+  const Outcome coarse = pound({"check", path("fixed.json").string()});
+  EXPECT_TRUE(contains(coarse.out, "link joint: the time step 0.002 gives fewer than 20 steps"))
+      << coarse.out;
+  fixed["analysis"]["adaptive"] = {{"min_time_step", 0.002}};
+  std::ofstream(path("fixed.json")) << fixed.dump();
+  const Outcome floor = pound({"check", path("fixed.json").string()});
+  EXPECT_TRUE(contains(floor.out, "link joint: the shortest adaptive step 0.002 gives fewer"))
+      << floor.out;
+}
+
 // An adaptive run steps on time_step x 2^k: a shortest step above the first one, or bounds with no
 // such step between them, are refused (a min_time_step of 0.003 over a step of 0.002 left check
 // and run cutting a step of 0.004 for ever, snapped back to it each time).
