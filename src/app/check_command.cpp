@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <boost/program_options.hpp>
 #include <cmath>
 #include <cstdio>
@@ -58,8 +59,11 @@ std::string step_rule(const builder::AnalysisSpec& analysis) {
 std::pair<double, double> step_range(const builder::AnalysisSpec& analysis) {
   if (!analysis.adaptive) return {analysis.step_count(), analysis.step_count()};
   const integrators::AdaptiveStepping& adaptive = *analysis.adaptive;
-  return {integrators::fixed_step_count(analysis.duration, adaptive.longest(analysis.time_step)),
-          integrators::fixed_step_count(analysis.duration, adaptive.shortest(analysis.time_step))};
+  // At least one: a longest step beyond the duration still takes one step.
+  return {std::max(1.0, integrators::fixed_step_count(analysis.duration,
+                                                      adaptive.longest(analysis.time_step))),
+          std::max(1.0, integrators::fixed_step_count(analysis.duration,
+                                                      adaptive.shortest(analysis.time_step)))};
 }
 
 // How the run will step: its integrator, the step and the rule that chose it, the duration and
@@ -244,6 +248,7 @@ io::Document check_document(const std::string& model_path, const verification::M
 // generator's) for "/links/N/...".
 std::string model_path_of(const std::string& pointer, const verification::ModelCheck& check,
                           const builder::BuiltModel& built) {
+  if (pointer.starts_with("/analysis/")) return "/analysis";
   unsigned index = 0;
   if (std::sscanf(pointer.c_str(), "/links/%u", &index) == 1 && index < check.contacts.size())
     if (auto found = built.link_index.find(check.contacts[index].id);

@@ -21,7 +21,11 @@ class TransientAnalysis::AdaptiveRun {
  private:
   // Steps on the grid base x 2^k keep the integrator's factorisations few.
   double on_grid(double dt) const;
+  // The step tried next: dt_, or what is left of the run when that is at most a sliver more.
   double next_step() const;
+  static constexpr double kSliver = 0.01;  // of a step
+  // A step that cannot be shortened: the floor, or the floor with the run's last sliver.
+  bool at_floor(double step) const;
   // The step failed: half of it next, unless it is at the floor already.
   void cut(double step, const StepResult& result);
   // A link closing well inside the accepted trial: redo the step to end where it closes. Returns
@@ -207,7 +211,7 @@ void TransientAnalysis::AdaptiveRun::run() {
     }
     if (redo_to_contact(step)) continue;
     const double error = local_error(step);
-    if (error > 2.0 * adaptive_.tolerance && step > floor_ * (1.0 + 1e-12)) {
+    if (error > 2.0 * adaptive_.tolerance && !at_floor(step)) {
       reject(step, error);
       continue;
     }
@@ -230,13 +234,19 @@ double TransientAnalysis::AdaptiveRun::next_step() const {
   const double end = analysis_.settings_.end_time;
   double step = std::min(dt_, end - state_.time);
   // A sliver left before the end is taken with this step.
-  if (end - state_.time - step < 0.01 * step) step = end - state_.time;
+  if (end - state_.time - step < kSliver * step) step = end - state_.time;
   return step;
+}
+
+bool TransientAnalysis::AdaptiveRun::at_floor(double step) const {
+  // The last step may be the floor with a sliver: it cannot be cut or shortened either (it was
+  // rejected and retried for ever, 4e-11 s above the floor, at the end of a run).
+  return step <= floor_ * (1.0 + kSliver) * (1.0 + 1e-12);
 }
 
 void TransientAnalysis::AdaptiveRun::cut(double step, const StepResult& result) {
   analysis_.system_.links().revert();
-  if (step <= floor_ * (1.0 + 1e-12))
+  if (at_floor(step))
     throw SolveError(state_.time,
                      fmt::format("{} at the smallest step dt = {:.3e}", result.failure, step));
   ++analysis_.statistics_.step_cuts;

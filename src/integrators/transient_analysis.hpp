@@ -29,13 +29,17 @@ struct AdaptiveStepping {
   // nominal / 256 and 16 x nominal): a bound between two grid steps is never reached, and a run
   // that cut or rejected steps until it got there would never stop. None inside both bounds
   // (a grid step between them): the shortest comes out above the longest.
+  // (The powers from differences of logarithms and ldexp: a bound of 1e308 over a step of 0.002
+  // overflows as a quotient, not as the step 0.002 x 2^1032 it gives.)
   double shortest(double nominal) const {
     const double floor = min_time_step > 0.0 ? min_time_step : nominal / 256.0;
-    return nominal * std::exp2(std::ceil(std::log2(floor / nominal) - 1e-9));
+    return std::ldexp(nominal,
+                      static_cast<int>(std::ceil(std::log2(floor) - std::log2(nominal) - 1e-9)));
   }
   double longest(double nominal) const {
     const double ceiling = max_time_step > 0.0 ? max_time_step : 16.0 * nominal;
-    return nominal * std::exp2(std::floor(std::log2(ceiling / nominal) + 1e-9));
+    return std::ldexp(nominal,
+                      static_cast<int>(std::floor(std::log2(ceiling) - std::log2(nominal) + 1e-9)));
   }
 };
 

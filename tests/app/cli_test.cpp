@@ -626,6 +626,17 @@ TEST_F(Cli, AdaptiveBoundsWithoutAStepOfTheGridBetweenThemAreRefused) {
   const std::string fine = write_model("fine.json", R"([{"op": "replace", "path": "/analysis",
       "value": {"time_step": 0.002, "duration": 0.1, "adaptive": {"min_time_step": 0.0011}}}])");
   EXPECT_EQ(pound({"check", fine}).exit_code, 0);
+  // Extreme bounds are steps of the grid too: 0.002 x 2^1032 is finite where 1e308 / 0.002 is
+  // not, and a longest step past the duration still takes a step.
+  const std::string wide = write_model("wide.json", R"([{"op": "replace", "path": "/analysis",
+      "value": {"time_step": 0.002, "duration": 0.1,
+                "adaptive": {"min_time_step": 1e-300, "max_time_step": 1e308}}}])");
+  const Outcome extreme = pound({"check", wide, "--json"});
+  ASSERT_EQ(extreme.exit_code, 0) << extreme.err;
+  const json analysis = json::parse(extreme.out)["analysis"];
+  EXPECT_EQ(analysis["adaptive_max_time_step"], std::ldexp(0.002, 1032));
+  EXPECT_EQ(analysis["steps_at_least"], 1);
+  EXPECT_EQ(pound({"run", wide, "--out", path("wide").string(), "--quiet"}).exit_code, 0);
 }
 
 // With "time_step": "auto" the step is settled after the model's check: `pound check` warns of

@@ -145,19 +145,23 @@ TEST(AdaptiveStepping, AShortestStepBetweenGridStepsIsReachedAndEndsTheCuts) {
   EXPECT_EQ(bounds.shortest(0.002), 0.002 / 128.0);
   EXPECT_EQ(bounds.longest(0.002), 0.002 * 16.0);
 
-  // A tolerance no step meets: every step rejected down to the floor, and accepted there.
+  // A tolerance no step meets: every step rejected down to the floor, and accepted there. Also
+  // when the run ends a sliver past a whole number of floor steps: its last step, the floor and
+  // the sliver, cannot be shortened either (it was rejected and retried for ever).
   integrators::Newmark newmark = integrators::Newmark::average_acceleration();
   const integrators::AdaptiveStepping strict{.tolerance = 1e-300, .min_time_step = 1e-5};
-  integrators::TransientAnalysis rejected(
-      system, newmark, {.time_step = 0.002, .end_time = 0.01, .adaptive = strict});
-  integrators::State moving;
-  moving.displacement = Vector::Constant(1, 1.0);
-  const integrators::TransientStatistics stats = rejected.run(moving);
-  std::cout << stats.steps << " steps, " << stats.rejected_steps << " rejected, smallest "
-            << stats.smallest_step << "\n";
-  EXPECT_NEAR(stats.smallest_step, 0.002 / 128.0, 1e-12 * 0.002);  // the last one ends at 0.01
-  EXPECT_GT(stats.rejected_steps, 0);
-  EXPECT_NEAR(moving.time, 0.01, 1e-12);
+  for (const double end : {0.01, 0.01 + 1e-8}) {
+    integrators::TransientAnalysis rejected(
+        system, newmark, {.time_step = 0.002, .end_time = end, .adaptive = strict});
+    integrators::State moving;
+    moving.displacement = Vector::Constant(1, 1.0);
+    const integrators::TransientStatistics stats = rejected.run(moving);
+    std::cout << stats.steps << " steps, " << stats.rejected_steps << " rejected, smallest "
+              << stats.smallest_step << ", largest " << stats.largest_step << "\n";
+    EXPECT_NEAR(stats.smallest_step, 0.002 / 128.0, 1e-12 * 0.002);
+    EXPECT_GT(stats.rejected_steps, 0);
+    EXPECT_NEAR(moving.time, end, 1e-12);
+  }
 }
 
 }  // namespace
