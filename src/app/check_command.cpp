@@ -46,43 +46,21 @@ std::string integrator_words(const integrators::IntegratorChoice& integrator) {
   return parameters.empty() ? label : fmt::format("{} ({})", label, parameters);
 }
 
-// Which rule set the run's step: "given", "auto" (the safety factor times the stable step),
-// "auto_record_step" (the shortest record step, below that) or "adaptive".
-std::string step_rule(const builder::AnalysisSpec& analysis) {
-  if (analysis.adaptive) return "adaptive";
-  if (!analysis.time_step_auto) return "given";
-  return analysis.time_step_is_record_step ? "auto_record_step" : "auto";
-}
-
-// The fewest and most steps the run takes: a fixed step's count; an adaptive run's at its
-// longest and shortest step.
-std::pair<double, double> step_range(const builder::AnalysisSpec& analysis) {
-  if (!analysis.adaptive) return {analysis.step_count(), analysis.step_count()};
-  const integrators::AdaptiveStepping& adaptive = *analysis.adaptive;
-  // At least one: a longest step beyond the duration still takes one step.
-  return {std::max(1.0, integrators::fixed_step_count(analysis.duration,
-                                                      adaptive.longest(analysis.time_step))),
-          std::max(1.0, integrators::fixed_step_count(analysis.duration,
-                                                      adaptive.shortest(analysis.time_step)))};
-}
-
 // How the run will step: its integrator, the step and the rule that chose it, the duration and
 // the number of steps, so that a run's length is known before it starts.
 std::string analysis_text(const builder::AnalysisSpec& analysis, const UnitNames& units) {
   const std::string& time = units.of(Dimension::time);
   const std::string step = with_unit(analysis.time_step, time);
-  const std::string rule = step_rule(analysis);
+  const std::string rule = analysis.time_step_rule();
   std::string how;
   if (rule == "adaptive")
     how = fmt::format("adaptive time steps from {} at first, between {} and {} (tolerance {:g})",
-                      step, with_unit(analysis.adaptive->shortest(analysis.time_step), time),
-                      with_unit(analysis.adaptive->longest(analysis.time_step), time),
-                      analysis.adaptive->tolerance);
+                      step, with_unit(analysis.shortest_step(), time),
+                      with_unit(analysis.longest_step(), time), analysis.adaptive->tolerance);
   else if (rule == "given")
     how = "time step " + step;
   else {
-    const std::string chosen = analysis.time_step_defaulted ? "no \"time_step\" given, so \"auto\""
-                                                            : "\"time_step\": \"auto\"";
+    const std::string chosen = automatic_step_words(analysis.time_step_defaulted);
     if (!analysis.stable_time_step)  // nothing vibrates: the record's step alone
       how = fmt::format("time step {}, the record's step, with no stable limit ({})", step, chosen);
     else
@@ -91,7 +69,7 @@ std::string analysis_text(const builder::AnalysisSpec& analysis, const UnitNames
                       rule == "auto_record_step" ? ", the record's step, below " : ", ",
                       analysis.safety_factor, with_unit(*analysis.stable_time_step, time), chosen);
   }
-  const auto [fewest, most] = step_range(analysis);
+  const double fewest = analysis.fewest_steps(), most = analysis.most_steps();
   return fmt::format("  analysis: {}, {}, over {}{}: {}\n", integrator_words(analysis.integrator),
                      how, with_unit(analysis.duration, time),
                      analysis.duration_from_records ? " (the records' length)" : "",
@@ -151,8 +129,8 @@ std::string check_text(const std::string& model_path, const verification::ModelC
   return text;
 }
 
-// The analysis_text's facts: "time_step_rule" is step_rule's; "steps" a fixed step's count, or
-// "steps_at_least" and "steps_at_most" of an adaptive run; what does not apply is left out.
+// The analysis_text's facts: "time_step_rule" as summary.json has it; "steps" a fixed step's count,
+// or "steps_at_least" and "steps_at_most" of an adaptive run; what does not apply is left out.
 io::Document analysis_document(const builder::AnalysisSpec& analysis) {
   io::Document doc;
   doc.set("integrator", analysis.integrator.label());
@@ -160,15 +138,15 @@ io::Document analysis_document(const builder::AnalysisSpec& analysis) {
   for (const auto& [name, value] : analysis.integrator.values()) parameters.set(name, value);
   doc.set("integrator_parameters", parameters)
       .set("time_step", analysis.time_step)
-      .set("time_step_rule", step_rule(analysis));
+      .set("time_step_rule", analysis.time_step_rule());
   if (analysis.time_step_defaulted) doc.set("time_step_defaulted", true);
   if (analysis.time_step_auto) doc.set("safety_factor", analysis.safety_factor);
   if (analysis.time_step_auto && analysis.stable_time_step)
     doc.set("stable_time_step", *analysis.stable_time_step);
   if (analysis.adaptive)
     doc.set("adaptive_tolerance", analysis.adaptive->tolerance)
-        .set("adaptive_min_time_step", analysis.adaptive->shortest(analysis.time_step))
-        .set("adaptive_max_time_step", analysis.adaptive->longest(analysis.time_step));
+        .set("adaptive_min_time_step", analysis.shortest_step())
+        .set("adaptive_max_time_step", analysis.longest_step());
   doc.set("duration", analysis.duration)
       .set("duration_from_records", analysis.duration_from_records);
   // Whole numbers as such, up to where a double holds every one.
@@ -178,12 +156,11 @@ io::Document analysis_document(const builder::AnalysisSpec& analysis) {
     else
       doc.set(key, count);
   };
-  const auto [fewest, most] = step_range(analysis);
   if (analysis.adaptive) {
-    set_count("steps_at_least", fewest);
-    set_count("steps_at_most", most);
+    set_count("steps_at_least", analysis.fewest_steps());
+    set_count("steps_at_most", analysis.most_steps());
   } else {
-    set_count("steps", fewest);
+    set_count("steps", analysis.step_count());
   }
   if (analysis.max_steps > 0) doc.set("max_steps", analysis.max_steps);
   return doc;

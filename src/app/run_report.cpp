@@ -190,12 +190,15 @@ std::string run_report(const results::RunSummary& run, const UnitNames& names) {
   return step_line(run, names) + link_lines(run, units) + monitor_lines(run, units);
 }
 
+std::string automatic_step_words(bool defaulted) {
+  return defaulted ? "no \"time_step\" given, so \"auto\"" : "\"time_step\": \"auto\"";
+}
+
 std::string step_line(const results::RunSummary& run, const UnitNames& names) {
   const std::string& time = names.of(Dimension::time);
   const results::StepChoice& step = run.step_choice;
   if (!step.automatic || !step.stable_time_step) return {};
-  const std::string rule =
-      step.defaulted ? "no \"time_step\" given, so \"auto\"" : "\"time_step\": \"auto\"";
+  const std::string rule = automatic_step_words(step.defaulted);
   if (step.record_step)
     return fmt::format(
         "  time step {}: the record's step, below {:g} x the stable step {} of {} ({})\n",

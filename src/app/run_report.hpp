@@ -17,6 +17,8 @@ std::string run_headline(const std::string& model_path, const results::RunSummar
 // The lines of links, joints and drifts, each number with its unit in the model's `units` (forces,
 // moments and energies only where the model names a mass unit).
 std::string run_report(const results::RunSummary& run, const UnitNames& units);
+// Why a step is automatic: "time_step": "auto", or none given to an explicit integrator.
+std::string automatic_step_words(bool defaulted);
 // How an automatic explicit step was chosen (the stable step and the fraction); empty otherwise.
 std::string step_line(const results::RunSummary& run, const UnitNames& units);
 std::string energy_line(const results::RunSummary& run, const UnitNames& units);

@@ -498,6 +498,24 @@ struct AnalysisSpec {
   bool static_initial_state = false;
   // The steps of a fixed-step run, the last one perhaps shorter (time_step set).
   double step_count() const { return integrators::fixed_step_count(duration, time_step); }
+  // The shortest and longest step the run takes (an adaptive run's bounds on its grid), and so
+  // the fewest and most steps, at least one.
+  double shortest_step() const { return adaptive ? adaptive->shortest(time_step) : time_step; }
+  double longest_step() const { return adaptive ? adaptive->longest(time_step) : time_step; }
+  double fewest_steps() const {
+    return std::max(1.0, integrators::fixed_step_count(duration, longest_step()));
+  }
+  double most_steps() const {
+    return std::max(1.0, integrators::fixed_step_count(duration, shortest_step()));
+  }
+  // What set the step, in the words of summary.json and `pound check --json`: "given", "auto"
+  // (safety_factor x the stable step), "auto_record_step" (the shortest record step, shorter
+  // than that) or "adaptive".
+  const char* time_step_rule() const {
+    if (adaptive) return "adaptive";
+    if (!time_step_auto) return "given";
+    return time_step_is_record_step ? "auto_record_step" : "auto";
+  }
 };
 
 // What a run writes of its steps: "link" records force and penetration of the named links (all

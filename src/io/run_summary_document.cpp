@@ -185,12 +185,8 @@ void set_status(const results::RunSummary& run, Document& summary) {
       .set("step_cuts", stats.step_cuts)
       .set("max_unbalanced_force", stats.max_unbalanced_force)
       .set("run_time_s", run.run_time_s);
-  // The words of `pound check --json`'s "analysis".
   if (const results::StepChoice& step = run.step_choice; step.stable_time_step) {
-    summary.set("stable_time_step", *step.stable_time_step)
-        .set("time_step_rule", !step.automatic    ? "given"
-                               : step.record_step ? "auto_record_step"
-                                                  : "auto");
+    summary.set("stable_time_step", *step.stable_time_step).set("time_step_rule", step.rule);
     if (step.defaulted) summary.set("time_step_defaulted", true);
   }
   if (run.adaptive)

@@ -590,17 +590,18 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
                          const integrators::TransientStatistics& statistics,
                          const std::string& integrator, double run_time) {
   const builder::AnalysisSpec& analysis = built.analysis;
-  RunSummary run{std::move(status),
-                 integrator,
-                 analysis.integrator.dissipates(),
-                 analysis.time_step,
-                 analysis.duration,
-                 run_time,
-                 {analysis.stable_time_step, analysis.time_step_auto, analysis.time_step_defaulted,
-                  analysis.safety_factor, analysis.time_step_is_record_step},
-                 system.size(),
-                 statistics,
-                 analysis.adaptive};
+  RunSummary run{
+      std::move(status),
+      integrator,
+      analysis.integrator.dissipates(),
+      analysis.time_step,
+      analysis.duration,
+      run_time,
+      {analysis.stable_time_step, analysis.time_step_auto, analysis.time_step_defaulted,
+       analysis.safety_factor, analysis.time_step_is_record_step, analysis.time_step_rule()},
+      system.size(),
+      statistics,
+      analysis.adaptive};
   const std::vector<results::LinkSummary>& link_summaries = observers.links().summaries();
   for (std::size_t k = 0; k < built.model.links.size(); ++k) {
     const model::Link& link = built.model.links[k];

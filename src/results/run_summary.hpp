@@ -170,7 +170,8 @@ struct StepChoice {
   bool automatic = false;                  // safety_factor x stable_time_step
   bool defaulted = false;                  // automatic because the model gave no step
   double safety_factor = 0.0;
-  bool record_step = false;  // automatic, and the shortest record step was the shorter
+  bool record_step = false;    // automatic, and the shortest record step was the shorter
+  const char* rule = "given";  // builder::AnalysisSpec::time_step_rule
 };
 
 struct RunSummary {

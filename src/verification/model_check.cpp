@@ -47,8 +47,7 @@ void warn_contact_steps(const LinkCheck& c, const builder::AnalysisSpec& analysi
                 "ground velocity or the initial closing velocity; faster impacts are shorter)",
                 c.approach_velocity)
           : "";
-  const double step =
-      analysis.adaptive ? analysis.adaptive->shortest(analysis.time_step) : analysis.time_step;
+  const double step = analysis.shortest_step();
   const char* which = analysis.adaptive ? "the shortest adaptive step" : "the time step";
   if (step > 0.5 * c.contact_duration)
     warnings.push_back(
@@ -265,9 +264,7 @@ void warn_long_run(const builder::AnalysisSpec& analysis, std::vector<std::strin
 // it starts. An adaptive run takes at least the duration over its longest step.
 void warn_step_limit(const builder::AnalysisSpec& analysis, std::vector<std::string>& warnings) {
   if (analysis.max_steps <= 0) return;
-  const double longest =
-      analysis.adaptive ? analysis.adaptive->longest(analysis.time_step) : analysis.time_step;
-  const double steps = integrators::fixed_step_count(analysis.duration, longest);
+  const double longest = analysis.longest_step(), steps = analysis.fewest_steps();
   if (!(steps > static_cast<double>(analysis.max_steps))) return;
   warnings.push_back(fmt::format(
       "the analysis takes {}{:.15g} steps and the step limit is {} (\"max_steps\", or pound "
