@@ -135,7 +135,7 @@ std::shared_ptr<RunResult> run(const std::optional<std::string>& text, const std
   request.histories = histories;
   if (out)
     request.before_run = [&](const app::LoadedModel& loaded) {
-      app::check_run_outputs(*out, request, loaded, false);
+      app::check_run_outputs(*out, request, loaded, false, "out");
     };
   std::optional<RunProgress> progress;
   if (progress_callback) request.progress = progress.emplace(*progress_callback).observer();
@@ -152,9 +152,44 @@ std::shared_ptr<RunResult> run(const std::optional<std::string>& text, const std
   return result;
 }
 
+// pound.batch(progress=...): `callback(done, total)` as the cases run, at most every
+// kProgressInterval seconds (done counts the cases finished and the share solved of those in
+// flight), and once more with done == total when the batch has ended. What the callback raises
+// stops the batch and reaches the caller.
+class BatchProgressCallback {
+ public:
+  explicit BatchProgressCallback(py::object callback) : callback_(std::move(callback)) {}
+
+  // Called by the batch one call at a time, from its worker threads, the GIL released.
+  std::function<void(const app::BatchProgress&)> observer() {
+    return [this](const app::BatchProgress& progress) {
+      total_ = progress.total;
+      const auto now = std::chrono::steady_clock::now();
+      if (called_ && std::chrono::duration<double>(now - last_call_).count() < kProgressInterval)
+        return;
+      called_ = true;
+      last_call_ = now;
+      const double done = static_cast<double>(progress.done) + progress.running_done;
+      const py::gil_scoped_acquire locked;
+      callback_(done, static_cast<double>(progress.total));
+    };
+  }
+  // With the GIL held, after a batch that ended: nothing if no case ran.
+  void finish() const {
+    if (called_) callback_(static_cast<double>(total_), static_cast<double>(total_));
+  }
+
+ private:
+  py::object callback_;
+  bool called_ = false;
+  std::chrono::steady_clock::time_point last_call_;
+  std::size_t total_ = 0;
+};
+
 // The batch's report as a dict (its statistics are in <out>/batch_stats.json).
 py::dict batch(const std::optional<std::string>& text, const std::string& path,
-               const std::string& out, int jobs, bool resume) {
+               const std::string& out, int jobs, bool resume,
+               const std::optional<py::object>& progress_callback) {
   static const app::Cluster cluster;  // this process, or the ranks of mpirun
   app::BatchOptions options;
   options.set_path = path;
@@ -162,12 +197,17 @@ py::dict batch(const std::optional<std::string>& text, const std::string& path,
   options.out = out;
   options.jobs = jobs;
   options.resume = resume;
+  options.out_name = "out";
+  options.resume_name = "resume=True";
+  std::optional<BatchProgressCallback> progress;
+  if (progress_callback) options.progress = progress.emplace(*progress_callback).observer();
   app::BatchReport report;
   {
     const InterruptGuard guard;
     const py::gil_scoped_release unlocked;
     report = app::run_batch(options, cluster);
   }
+  if (progress) progress->finish();
   py::dict result;
   result["cases"] = report.cases;
   result["resumed"] = report.resumed;
@@ -199,7 +239,8 @@ void bind_runs(py::module_& module) {
              py::arg("max_steps"), py::arg("time_limit"), py::arg("histories"), py::arg("progress"),
              "Runs a model as `pound run` does (the GIL released); writes to `out` when given.");
   module.def("batch", &batch, py::arg("text"), py::arg("path"), py::arg("out"), py::arg("jobs"),
-             py::arg("resume"), "Runs a batch set as `pound batch` does; returns its report.");
+             py::arg("resume"), py::arg("progress"),
+             "Runs a batch set as `pound batch` does; returns its report.");
 }
 
 }  // namespace pound::python

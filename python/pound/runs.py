@@ -59,19 +59,32 @@ def run(model, record=None, out=None, *, max_steps=None, time_limit=0.0, histori
     return result
 
 
-def batch(set, out, *, jobs=0, resume=False):
+def batch(set, out, *, jobs=0, resume=False, progress=None):
     """Runs a batch set (docs/batch_format.md; a path or a dict, whose relative paths start from
     the working directory) as ``pound batch`` does, writing every case's folder, batch_summary.csv
     and batch_stats.json into ``out``. ``jobs``: worker threads (0: every core). ``resume``:
     keep the complete cases of an earlier run of the same set in ``out``. Returns the report
     (cases, resumed, ran, completed, failed, wall_s, ...) with "summary" and "statistics", the
-    paths of batch_summary.csv and batch_stats.json."""
+    paths of batch_summary.csv and batch_stats.json.
+
+    The GIL is released while the cases run. Ctrl-C stops the batch (KeyboardInterrupt); the
+    cases that ended are kept, and ``resume=True`` runs the rest.
+
+    ``progress``: a callable ``progress(done, total)``, ``total`` the cases this call runs (a
+    resumed batch's complete cases not counted) and ``done`` those ended plus the share solved
+    of those running; called from the batch's threads, one call at a time, at most every 0.2 s,
+    and once more with ``done == total`` when the batch has ended. For a progress bar; what it
+    raises stops the batch (the cases running are not kept) and is raised here.
+    """
     out = os.fspath(out)
+    if progress is not None and not callable(progress):
+        raise InputError("", "progress",
+                         f"expected a callable progress(done, total), got {type(progress).__name__}")
     if isinstance(set, dict):
         text, path = to_json(set, "<dict>"), "<dict>"
     else:
         text, path = None, os.fspath(set)
-    report = _core.batch(text, path, out, integer(jobs, "jobs", 0), bool(resume))
+    report = _core.batch(text, path, out, integer(jobs, "jobs", 0), bool(resume), progress)
     report["summary"] = os.path.join(out, "batch_summary.csv")
     report["statistics"] = os.path.join(out, "batch_stats.json")
     return report

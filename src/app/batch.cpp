@@ -10,6 +10,7 @@
 #include <map>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 #include <thread>
 
 #include "app/ensemble.hpp"
@@ -251,23 +252,26 @@ void check_out_folder(const BatchOptions& options, const std::string& plan,
   const std::string plan_file = plan_path(out);
   if (io::is_file(plan_file)) {
     if (!options.resume)
-      throw InputError(out, "",
-                       "holds a batch already: add --resume to finish it, or choose another --out");
+      throw InputError(
+          out, "",
+          fmt::format("holds a batch already: add {} to finish it, or choose another {}",
+                      options.resume_name, options.out_name));
     // Resuming after an edit would mix rows of the old and the new file in one summary.
     if (const std::string changed = changed_inputs(plan_file, inputs); !changed.empty())
       throw InputError(plan_file, "",
                        fmt::format("changed since the batch in {} began: {}; its results would "
-                                   "mix with the new ones: choose another --out, or remove {} "
+                                   "mix with the new ones: choose another {}, or remove {} "
                                    "to start again",
-                                   out, changed, out));
+                                   out, changed, options.out_name, out));
     if (io::read_text_file(plan_file) != plan)
       throw InputError(plan_file, "",
                        fmt::format("the cases of {} are not those of the batch in {} (the set, a "
-                                   "record or a path changed): choose another --out, or remove {} "
+                                   "record or a path changed): choose another {}, or remove {} "
                                    "to start again",
-                                   options.set_path, out, out));
+                                   options.set_path, out, options.out_name, out));
   } else if (!io::is_empty_but_for_lock(out)) {
-    throw InputError(out, "", "exists and is not a batch folder: choose another --out");
+    throw InputError(out, "",
+                     "exists and is not a batch folder: choose another " + options.out_name);
   }
 }
 
@@ -277,7 +281,8 @@ io::FolderLock lock_out_folder(const BatchOptions& options, const builder::SetSp
   const std::string& out = options.out;
   // Nothing, not even the lock file, goes into a folder that is not a batch's.
   if (!io::is_file(plan_path(out)) && !io::is_empty_but_for_lock(out))
-    throw InputError(out, "", "exists and is not a batch folder: choose another --out");
+    throw InputError(out, "",
+                     "exists and is not a batch folder: choose another " + options.out_name);
   io::create_output_folder(out);
   io::FolderLock lock(out);
   // Checked again under the lock: another batch may have started in the folder meanwhile.
@@ -342,10 +347,17 @@ std::vector<const builder::BatchCase*> rank_share(
   return mine;
 }
 
+// Thrown into the cases in flight once one case has stopped the batch.
+class BatchStopped : public std::runtime_error {
+ public:
+  BatchStopped() : std::runtime_error("stopped with the batch") {}
+};
+
 // What this rank's workers did.
 struct RankRun {
   std::vector<CaseResult> results;
-  std::string fatal;  // why the workers stopped taking cases, if they did
+  std::string fatal;           // why the workers stopped taking cases, if they did
+  std::exception_ptr stopped;  // what stopped them: thrown again as it was, but an output error
   double wall_s = 0.0;
 };
 
@@ -379,7 +391,10 @@ RankRun run_cases(const builder::SetSpec& set, const std::vector<const builder::
     // While a case runs: its fraction, and a report unless another thread is reporting.
     const auto case_progress = [&, worker](double fraction) {
       in_flight[worker].store(fraction, std::memory_order_relaxed);
-      if (const std::unique_lock lock(mutex, std::try_to_lock); lock) report(nullptr);
+      if (const std::unique_lock lock(mutex, std::try_to_lock); lock) {
+        if (stop) throw BatchStopped();  // another worker's case stopped the batch
+        report(nullptr);
+      }
     };
     while (!stop) {
       const std::size_t k = next++;
@@ -397,9 +412,13 @@ RankRun run_cases(const builder::SetSpec& set, const std::vector<const builder::
         if (options.progress) report(&run.results.back().summary);
       } catch (const std::exception& error) {
         in_flight[worker] = -1.0;
-        // Results cannot be written (disk full, permissions): stop taking cases.
+        // Results cannot be written (disk full, permissions), Ctrl-C, or the progress callback
+        // threw: stop taking cases (those in flight stop at their next progress report).
         const std::lock_guard lock(mutex);
-        if (run.fatal.empty()) run.fatal = fmt::format("case {}: {}", mine[k]->name, error.what());
+        if (run.fatal.empty()) {
+          run.fatal = fmt::format("case {}: {}", mine[k]->name, error.what());
+          run.stopped = std::current_exception();
+        }
         stop = true;
       }
     }
@@ -432,10 +451,19 @@ std::vector<std::string> rank_messages(const RankRun& run) {
 }
 
 // On every rank: throws the first failure of any rank (rank 0 names it, the others may not know
-// it).
-void throw_if_a_rank_failed(const Cluster& cluster, const std::string& fatal,
+// it). A rank's own failure is thrown as it was (Interrupted, what the progress callback threw, out
+// of memory), but an output error, which is named with its case.
+void throw_if_a_rank_failed(const Cluster& cluster, const RankRun& run,
                             const std::vector<std::string>& gathered) {
+  const std::string& fatal = run.fatal;
   if (!cluster.any(!fatal.empty())) return;
+  if (run.stopped) {
+    try {
+      std::rethrow_exception(run.stopped);
+    } catch (const io::OutputError&) {
+      throw io::OutputError(fatal);
+    }
+  }
   if (!cluster.is_root()) throw io::OutputError(fatal.empty() ? "another rank failed" : fatal);
   for (const std::string& m : gathered)
     if (m.front() == 'F') throw io::OutputError(m.substr(1));
@@ -519,7 +547,7 @@ BatchReport run_batch(const BatchOptions& options, const Cluster& cluster) {
 
   // Rank 0 gathers every rank's rows and timings.
   const std::vector<std::string> gathered = cluster.gather(rank_messages(run));
-  throw_if_a_rank_failed(cluster, run.fatal, gathered);
+  throw_if_a_rank_failed(cluster, run, gathered);
   if (!cluster.is_root()) return report;
   read_messages(gathered, rows, report);
   write_batch_results(set, cases, rows, options.out, report);

@@ -37,8 +37,11 @@ struct BatchOptions {
   int jobs = 0;         // worker threads per rank; 0: every core, or 1 per rank under MPI
   bool resume = false;  // keep the complete cases of an earlier run of the same set
   // Called after each case this rank runs, and while cases run (`last` null) every so many
-  // steps of any of them, one call at a time.
+  // steps of any of them, one call at a time. What it throws stops the batch (the cases in
+  // flight at their next report, none of them written) and is thrown by run_batch.
   std::function<void(const BatchProgress&)> progress;
+  // How the caller names `out` and `resume` in messages (the Python module's arguments).
+  std::string out_name = "--out", resume_name = "--resume";
 };
 
 struct BatchReport {
@@ -55,8 +58,8 @@ struct BatchReport {
 
 // Throws InputError (bad set, model or --out, or an input edited since the batch in --out began)
 // before any case runs; io::OutputError if results cannot be written, io::FolderInUse (an
-// OutputError) if another batch holds --out. A case that fails (bad record, analysis failure) does
-// not stop the others.
+// OutputError) if another batch holds --out; Interrupted on Ctrl-C. A case that fails (bad record,
+// analysis failure) does not stop the others.
 BatchReport run_batch(const BatchOptions& options, const Cluster& cluster);
 
 }  // namespace pound::app

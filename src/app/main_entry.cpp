@@ -43,8 +43,11 @@ int report_failure(const std::string& command, const std::exception_ptr& failure
   try {
     std::rethrow_exception(failure);
   } catch (const Interrupted& error) {
-    std::cerr << fmt::format("pound {}: {}: no result of this run was put in place\n", command,
-                             error.what());
+    // A batch keeps its complete cases, each put in place as it ended.
+    std::cerr << fmt::format("pound {}: {}: {}\n", command, error.what(),
+                             command == "batch"
+                                 ? "the cases that ended are kept; add --resume to run the rest"
+                                 : "no result of this run was put in place");
     return error.exit_code();
   } catch (const InputError& error) {
     std::cerr << "error: " << error.what() << "\n";
@@ -53,7 +56,7 @@ int report_failure(const std::string& command, const std::exception_ptr& failure
     std::cerr << "error: " << error.what() << "\n";
     return 3;
   } catch (const io::OutputError& error) {
-    // A batch reports a case its workers stopped at as an output error.
+    // Under MPI, the ranks a signal did not stop first report the one it did as an output error.
     if (const int signal = interrupt_signal()) {
       std::cerr << fmt::format("pound {}: {}\n", command, Interrupted(signal).what());
       return Interrupted(signal).exit_code();

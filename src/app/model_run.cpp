@@ -374,7 +374,7 @@ RunOutcome run_model(const RunRequest& request) {
 // summary.json, ensemble.json and the recorders' CSVs in `out`: none may be the model, a record or
 // another output (a record named like a recorder's file in the folder given as --out).
 void check_run_outputs(const std::string& out, const RunRequest& request, const LoadedModel& loaded,
-                       bool ensemble) {
+                       bool ensemble, const std::string& out_name) {
   namespace fs = std::filesystem;
   std::vector<io::NamedPath> inputs{{request.model_path, "the model"}};
   for (std::size_t k = 0; k < loaded.record_paths.size(); ++k)
@@ -386,15 +386,15 @@ void check_run_outputs(const std::string& out, const RunRequest& request, const 
     if (const auto& second = loaded.second_components[k])
       inputs.push_back(
           {second->path, fmt::format("{}: /excitations/{}/pair/record", request.model_path, k)});
-  std::vector<io::NamedPath> outputs{{(fs::path(out) / "summary.json").string(), "--out"}};
-  if (ensemble) outputs.push_back({(fs::path(out) / "ensemble.json").string(), "--out"});
+  std::vector<io::NamedPath> outputs{{(fs::path(out) / "summary.json").string(), out_name}};
+  if (ensemble) outputs.push_back({(fs::path(out) / "ensemble.json").string(), out_name});
   const auto& recorders = loaded.built.recorders;
   const bool named_in_model =
       loaded.spec.recorders_given && loaded.spec.recorders.size() == recorders.size();
   for (std::size_t k = 0; k < recorders.size(); ++k)
     outputs.push_back(
         {(fs::path(out) / recorders[k].file).string(),
-         named_in_model ? fmt::format("{}: /recorders/{}/file", request.model_path, k) : "--out"});
+         named_in_model ? fmt::format("{}: /recorders/{}/file", request.model_path, k) : out_name});
   io::check_outputs_apart(inputs, outputs);
 }
 

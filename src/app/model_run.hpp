@@ -70,8 +70,9 @@ RunOutcome run_model(const RunRequest& request);
 
 // Throws InputError when one of a run's outputs in `out` (summary.json, ensemble.json with
 // `ensemble`, the recorders' files) would overwrite the model, a record or another output.
+// `out_name`: how the caller names `out` in messages.
 void check_run_outputs(const std::string& out, const RunRequest& request, const LoadedModel& loaded,
-                       bool ensemble);
+                       bool ensemble, const std::string& out_name = "--out");
 
 // summary.json and the history CSVs into `folder` (created if needed): written under temporary
 // names, then renamed into place together, summary.json last.

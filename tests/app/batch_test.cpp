@@ -2,6 +2,7 @@
 // deliberately broken record, determinism over --jobs and MPI ranks, kill and --resume.
 #include "app/batch.hpp"
 
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -258,6 +259,46 @@ TEST_F(Batch, SurvivesBeingKilledAndResumesToTheSameResults) {
   ASSERT_EQ(nothing.exit_code, 0) << nothing.err;
   EXPECT_NE(nothing.out.find("12 cases (12 resumed, 0 run"), std::string::npos) << nothing.out;
   EXPECT_EQ(read_text(path("whole/batch_stats.json")), read_text(path("killed/batch_stats.json")));
+}
+
+TEST_F(Batch, StoppedBySigtermSaysSoKeepsTheEndedCasesAndResumes) {
+  std::ofstream(path("set.json")) << fmt::format(
+      R"({{"models": ["{0}/models/three_span_bridge.json"],
+           "records": [{{"folder": "{0}/ground_motions", "pattern": "*.AT2", "scale": {{"pga": 0.3}}}}],
+           "scales": [0.5, 1, 1.5]}})",
+      kSource);
+  const std::string set = path("set.json").string();
+  const std::string out = path("stopped").string(), messages = path("stderr.txt").string();
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    const int file = ::open(messages.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(file, STDERR_FILENO);
+    ::execl(POUND_BINARY, POUND_BINARY, "batch", set.c_str(), "--out", out.c_str(), "--jobs", "2",
+            "-q", static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!fs::exists(path("stopped/three_span_bridge")) &&
+         std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ::kill(child, SIGTERM);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status)) << "ended by the signal, not by pound";
+  EXPECT_EQ(WEXITSTATUS(status), 143);
+  const std::string err = read_text(path("stderr.txt"));
+  EXPECT_NE(err.find("pound batch: interrupted by SIGTERM: the cases that ended are kept; add "
+                     "--resume to run the rest"),
+            std::string::npos)
+      << err;
+  EXPECT_FALSE(fs::exists(path("stopped/batch_summary.csv")));
+  const Outcome resumed = pound({"batch", set, "--out", out, "--resume", "-q"});
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  const Outcome whole = pound({"batch", set, "--out", path("whole").string(), "-q"});
+  ASSERT_EQ(whole.exit_code, 0) << whole.err;
+  EXPECT_EQ(without_run_time(read_text(path("whole/batch_summary.csv"))),
+            without_run_time(read_text(path("stopped/batch_summary.csv"))));
 }
 
 TEST_F(Batch, RefusesAChangedSetOnResume) {

@@ -2,7 +2,9 @@
 
 import csv
 import json
+import pathlib
 import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -103,3 +105,74 @@ def test_two_element_eigenvalues_match_the_closed_forms():
     worst = max(r["relative_error"] for r in results)
     print(f"worst relative error {worst:.2e}")
     assert worst <= 1e-10
+
+
+def test_batch_progress_goes_from_the_first_case_to_the_last(repository, tmp_path):
+    calls = []
+    report = pound.batch(girders_set(repository), tmp_path / "out", jobs=2,
+                         progress=lambda done, total: calls.append((done, total)))
+    print(len(calls), calls[:3], calls[-3:])
+    assert report["completed"] == 8
+    assert calls[-1] == (8, 8) and all(total == 8 for _, total in calls)
+    done = [d for d, _ in calls]
+    assert all(0 <= d <= 8 for d in done) and done == sorted(done)
+    calls.clear()
+    again = pound.batch(girders_set(repository), tmp_path / "out", resume=True,
+                        progress=lambda done, total: calls.append((done, total)))
+    assert again["ran"] == 0 and calls == []  # nothing ran: no call
+
+
+def test_what_batch_progress_raises_stops_the_batch_and_reaches_the_caller(repository, tmp_path):
+    def stop(done, total):
+        raise RuntimeError(f"stopped at {done} of {total}")
+
+    with pytest.raises(RuntimeError, match="^stopped at .* of 8.0$"):
+        pound.batch(girders_set(repository), tmp_path / "out", jobs=2, progress=stop)
+    assert not (tmp_path / "out" / "batch_summary.csv").exists()
+    rest = pound.batch(girders_set(repository), tmp_path / "out", resume=True)
+    print(rest)
+    assert rest["completed"] == 8 and rest["resumed"] + rest["ran"] == 8
+    whole = pound.batch(girders_set(repository), tmp_path / "whole")
+    assert rows(rest["summary"]) == rows(whole["summary"])
+
+
+def test_batch_progress_must_be_callable(repository, tmp_path):
+    with pytest.raises(pound.InputError, match="progress"):
+        pound.batch(girders_set(repository), tmp_path / "out", progress=1)
+
+
+def test_a_batch_names_out_and_resume_as_python_arguments(repository, tmp_path):
+    pound.batch(girders_set(repository), tmp_path / "out")
+    with pytest.raises(pound.InputError) as raised:
+        pound.batch(girders_set(repository), tmp_path / "out")
+    print(raised.value)
+    assert "add resume=True to finish it, or choose another out" in str(raised.value)
+    assert "--" not in str(raised.value)
+
+
+INTERRUPTED_BATCH = """
+import json, os, signal, sys, threading, time
+sys.path.insert(0, {path!r})
+import pound
+threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
+start = time.monotonic()
+try:
+    pound.batch(json.loads({set!r}), {out!r}, jobs=2)
+except KeyboardInterrupt:
+    print("interrupted after", round(time.monotonic() - start, 2))
+"""
+
+
+def test_ctrl_c_stops_a_batch_with_keyboard_interrupt(repository, tmp_path):
+    model = json.loads((repository / "models" / "two_sdof_girders.json").read_text())
+    model["analysis"]["duration"] = 2.0e4  # about 2 s a case past its record, 8 cases
+    (tmp_path / "long.json").write_text(json.dumps(model))
+    set_dict = girders_set(repository)
+    set_dict["models"] = [str(tmp_path / "long.json")]
+    script = INTERRUPTED_BATCH.format(path=str(pathlib.Path(pound.__file__).parents[1]),
+                                      set=json.dumps(set_dict), out=str(tmp_path / "out"))
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                          timeout=120)
+    print(done.stdout, done.stderr)
+    assert "interrupted after" in done.stdout
+    assert float(done.stdout.split("interrupted after")[1].split()[0]) < 2.0

@@ -128,6 +128,14 @@ def test_outputs_never_overwrite_an_input(tmp_path, models):
                   out=tmp_path)
     print(raised.value)
     assert record.read_bytes() == before and not (tmp_path / "summary.json").exists()
+    # Named as this function's argument, not as the program's option --out.
+    named_summary = tmp_path / "summary.json"
+    named_summary.write_bytes(before)
+    with pytest.raises(pound.InputError) as raised:
+        pound.run(models / "two_sdof_girders.json", pound.Record.from_file(named_summary, dt=0.01),
+                  out=tmp_path)
+    print(raised.value)
+    assert raised.value.path == "out" and named_summary.read_bytes() == before
 
 
 def test_wrong_arguments_are_input_errors_naming_them(models):
