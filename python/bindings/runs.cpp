@@ -1,3 +1,4 @@
+#include <fmt/format.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -9,8 +10,11 @@
 
 #include "app/batch.hpp"
 #include "app/cluster.hpp"
+#include "app/ensemble.hpp"
 #include "app/model_run.hpp"
 #include "bindings/bindings.hpp"
+#include "builder/batch_spec.hpp"
+#include "core/errors.hpp"
 #include "core/stopwatch.hpp"
 
 namespace py = pybind11;
@@ -20,8 +24,29 @@ namespace {
 
 // The outcome of pound.run: its tables stay here, and the arrays NumPy sees are views of them.
 struct RunResult {
-  app::RunOutcome outcome;
-  double core_s = 0.0;  // in app::run_model and writing: what `pound run` spends too
+  app::RunOutcome outcome;  // with an ensemble, the unperturbed run's
+  double core_s = 0.0;      // in app::run_model and writing: what `pound run` spends too
+  std::optional<std::string> ensemble_json;  // ensemble.json's text, with an ensemble
+  std::string ensemble_report;               // the lines `pound run --ensemble` prints
+};
+
+// pound.run(ensemble=...): the copies and how they are read, checked as `pound run` checks its
+// options, each named as the function's argument.
+struct EnsembleArguments {
+  std::optional<int> copies;
+  double perturbation = 1e-4, robust_spread = 0.05;
+  int jobs = 0;
+
+  app::EnsembleOptions options() const {
+    if (const auto error = builder::ensemble_error(*copies, perturbation, robust_spread))
+      throw InputError("",
+                       error->number == builder::EnsembleNumber::copies         ? "ensemble"
+                       : error->number == builder::EnsembleNumber::perturbation ? "perturbation"
+                                                                                : "robust_spread",
+                       error->why);
+    if (jobs < 0) throw InputError("", "jobs", fmt::format("expected >= 0, got {}", jobs));
+    return {*copies, perturbation, robust_spread, jobs};
+  }
 };
 
 const char* kind_name(builder::RecorderKind kind) {
@@ -93,30 +118,51 @@ constexpr double kProgressInterval = 0.2;
 // pound.run(progress=...): `callback(time, end)` as the solve starts, then at most every
 // kProgressInterval seconds (the clock read every kProgressStride steps), and once more as the run
 // ends (RunProgress::finish): time == end when it completed, the failure's time when it failed.
-// What the callback raises stops the run and reaches the caller.
+// With an ensemble of `copies`, `callback(done, runs)` counts runs (the unperturbed one by the
+// share of its record solved, then the copies as they end), and ends with done == runs. What the
+// callback raises stops the run and reaches the caller.
 class RunProgress {
  public:
-  explicit RunProgress(py::object callback) : callback_(std::move(callback)) {}
+  RunProgress(py::object callback, std::optional<int> copies)
+      : callback_(std::move(callback)),
+        runs_(copies ? std::optional<double>(*copies + 1.0) : std::nullopt) {}
 
   std::function<void(double, double, double)> observer() {
     return [this](double time, double start, double end) {
       end_ = end;
-      const auto now = std::chrono::steady_clock::now();
-      if (time != start &&
-          std::chrono::duration<double>(now - last_call_).count() < kProgressInterval)
-        return;
-      last_call_ = now;
-      const py::gil_scoped_acquire locked;
-      callback_(time, end);
+      if (runs_)
+        call(end > start ? (time - start) / (end - start) : 1.0, *runs_, time == start);
+      else
+        call(time, end, time == start);
+    };
+  }
+  // The copies of an ensemble: `done` of `total` ended.
+  std::function<void(std::size_t, std::size_t)> copy_observer() {
+    return [this](std::size_t done, std::size_t /*copies*/) {
+      call(1.0 + static_cast<double>(done), *runs_, done == 0);
     };
   }
   // With the GIL held, after the run; nothing if the solve never started (bad input).
   void finish(const app::RunOutcome& outcome) const {
-    if (end_) callback_(outcome.failure.empty() ? *end_ : outcome.failure_time, *end_);
+    if (!end_) return;
+    if (runs_)
+      callback_(*runs_, *runs_);
+    else
+      callback_(outcome.failure.empty() ? *end_ : outcome.failure_time, *end_);
   }
 
  private:
+  void call(double done, double total, bool always) {
+    const auto now = std::chrono::steady_clock::now();
+    if (!always && std::chrono::duration<double>(now - last_call_).count() < kProgressInterval)
+      return;
+    last_call_ = now;
+    const py::gil_scoped_acquire locked;
+    callback_(done, total);
+  }
+
   py::object callback_;
+  std::optional<double> runs_;  // with an ensemble: the copies and the unperturbed run
   std::chrono::steady_clock::time_point last_call_;
   std::optional<double> end_;
 };
@@ -125,7 +171,10 @@ std::shared_ptr<RunResult> run(const std::optional<std::string>& text, const std
                                const std::optional<py::dict>& record,
                                const std::optional<std::string>& out, std::optional<long> max_steps,
                                double time_limit, bool histories,
-                               const std::optional<py::object>& progress_callback) {
+                               const std::optional<py::object>& progress_callback,
+                               const EnsembleArguments& ensemble) {
+  const std::optional<app::EnsembleOptions> ensemble_options =
+      ensemble.copies ? std::optional(ensemble.options()) : std::nullopt;
   app::RunRequest request;
   request.model_path = path;
   request.model_text = text;
@@ -135,17 +184,29 @@ std::shared_ptr<RunResult> run(const std::optional<std::string>& text, const std
   request.histories = histories;
   if (out)
     request.before_run = [&](const app::LoadedModel& loaded) {
-      app::check_run_outputs(*out, request, loaded, false, "out");
+      app::check_run_outputs(*out, request, loaded, ensemble_options.has_value(), "out");
     };
   std::optional<RunProgress> progress;
-  if (progress_callback) request.progress = progress.emplace(*progress_callback).observer();
+  if (progress_callback)
+    request.progress = progress.emplace(*progress_callback, ensemble.copies).observer();
   auto result = std::make_shared<RunResult>();
   {
     const InterruptGuard guard;
     const py::gil_scoped_release unlocked;
     const Stopwatch stopwatch;
-    result->outcome = app::run_model(request);
-    if (out) app::write_run_outputs(*out, result->outcome);
+    if (ensemble_options) {
+      const app::EnsembleResult spreads = app::run_ensemble(
+          request, *ensemble_options,
+          progress ? progress->copy_observer() : std::function<void(std::size_t, std::size_t)>());
+      result->outcome = spreads.unperturbed;
+      const io::Document document = app::ensemble_document(spreads, *ensemble_options);
+      result->ensemble_json = document.dump();
+      result->ensemble_report = app::ensemble_report(spreads, *ensemble_options);
+      if (out) app::write_run_outputs(*out, result->outcome, {{"ensemble.json", document}});
+    } else {
+      result->outcome = app::run_model(request);
+      if (out) app::write_run_outputs(*out, result->outcome);
+    }
     result->core_s = stopwatch.seconds();
   }
   if (progress) progress->finish(result->outcome);
@@ -234,10 +295,24 @@ void bind_runs(py::module_& module) {
       .def_property_readonly("headline", [](const RunResult& r) { return r.outcome.headline; })
       .def_property_readonly("report", [](const RunResult& r) { return r.outcome.report; })
       .def_property_readonly("core_s", [](const RunResult& r) { return r.core_s; })
+      .def_property_readonly("ensemble_json", [](const RunResult& r) { return r.ensemble_json; })
+      .def_property_readonly("ensemble_report",
+                             [](const RunResult& r) { return r.ensemble_report; })
       .def("tables", &tables, "Every recorder's table, its columns as read-only NumPy views.");
-  module.def("run", &run, py::arg("text"), py::arg("path"), py::arg("record"), py::arg("out"),
-             py::arg("max_steps"), py::arg("time_limit"), py::arg("histories"), py::arg("progress"),
-             "Runs a model as `pound run` does (the GIL released); writes to `out` when given.");
+  module.def(
+      "run",
+      [](const std::optional<std::string>& text, const std::string& path,
+         const std::optional<py::dict>& record, const std::optional<std::string>& out,
+         std::optional<long> max_steps, double time_limit, bool histories,
+         const std::optional<py::object>& progress, std::optional<int> ensemble,
+         double perturbation, double robust_spread, int jobs) {
+        return run(text, path, record, out, max_steps, time_limit, histories, progress,
+                   {ensemble, perturbation, robust_spread, jobs});
+      },
+      py::arg("text"), py::arg("path"), py::arg("record"), py::arg("out"), py::arg("max_steps"),
+      py::arg("time_limit"), py::arg("histories"), py::arg("progress"), py::arg("ensemble"),
+      py::arg("perturbation"), py::arg("robust_spread"), py::arg("jobs"),
+      "Runs a model as `pound run` does (the GIL released); writes to `out` when given.");
   module.def("batch", &batch, py::arg("text"), py::arg("path"), py::arg("out"), py::arg("jobs"),
              py::arg("resume"), py::arg("progress"),
              "Runs a batch set as `pound batch` does; returns its report.");

@@ -32,15 +32,29 @@ def _plain(value, name, path):
                                  f"dict), got {type(value).__name__}")
 
 
-def integer(value, where, minimum=None):
+def integer(value, where, minimum=None, maximum=None):
     """An integer argument (Python or NumPy) as int; a float is refused, not cut (max_steps=3.5
     would run 3 steps), as the program refuses --max-steps 3.5; so is a bool, and with `minimum`
-    one below it."""
+    or `maximum` one outside them (the C++ type's range: pybind11 would raise a TypeError)."""
     if isinstance(value, bool) or not isinstance(value, numbers.Integral):
         raise InputError("", where, f"expected an integer, got {value!r}")
     if minimum is not None and value < minimum:
         raise InputError("", where, f"expected an integer >= {minimum}, got {value!r}")
+    if maximum is not None and value > maximum:
+        raise InputError("", where, f"expected an integer <= {maximum}, got {value!r}")
     return int(value)
+
+
+def real(value, where):
+    """A real number argument (Python or NumPy) as float; a bool or a string is refused. Its
+    range is checked where it is used, as the program checks the option."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise InputError("", where, f"expected a number, got {value!r}")
+    return float(value)
+
+
+INT_MAX = 2**31 - 1  # a C++ int's
+LONG_MAX = 2**63 - 1  # a C++ long's
 
 
 def seconds(value, where):

@@ -6,7 +6,7 @@ import os
 import numpy as np
 
 from pound import _core
-from pound._documents import integer, to_json
+from pound._documents import INT_MAX, integer, to_json
 
 
 class Model:
@@ -64,7 +64,7 @@ class Model:
         frequency, effective mass ratios), "shapes" (an array, a row per free DOF, a column per
         mode, largest component +1) and "dofs" (each row's label, e.g. "girder_1.u_x")."""
         document, shapes, labels = _core.model_modes(self._text, self._path,
-                                                     integer(count, "count", 1))
+                                                     integer(count, "count", 1, INT_MAX))
         modes = json.loads(document)
         modes["shapes"] = np.asarray(shapes)
         modes["dofs"] = list(labels)

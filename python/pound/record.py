@@ -7,7 +7,7 @@ import os
 import numpy as np
 
 from pound import _core
-from pound._documents import integer
+from pound._documents import INT_MAX, integer
 from pound.errors import InputError
 
 
@@ -64,8 +64,8 @@ class Record:
         path = os.fspath(path)
         column = column if column is not None else (2 if time_column else 1)
         record = cls.__new__(cls)
-        name, step, values, sha1, read_as = _core.read_record(path, format, units,
-                                                              integer(column, "column"), dt,
+        column = integer(column, "column", -INT_MAX, INT_MAX)
+        name, step, values, sha1, read_as = _core.read_record(path, format, units, column, dt,
                                                               bool(time_column))
         record.name, record.units, record.path = name, units, path
         record.scale = _scale(scale, path)

@@ -28,7 +28,11 @@ class Result:
     - ``tables[file]``: every recorder's table (histories, envelopes, spectra) as
       column -> array, named as its CSV file;
     - ``time``: the first history table's times; ``energy``: the energy terms;
-      ``warnings``, ``completed``, ``failure``, ``failure_time``.
+      ``warnings``, ``completed``, ``failure``, ``failure_time``; ``report``: the lines
+      ``pound run`` prints;
+    - ``ensemble`` (with ``pound.run(ensemble=N)``, else None): ensemble.json as a dict, its
+      "quantities" a list of dicts (path, unperturbed, median, p16, p84, min, max, spread,
+      robust, headline); ``pandas.DataFrame(result.ensemble["quantities"])`` is a table of them.
 
     The arrays are read-only views of the results held by C++ (no copy).
     """
@@ -40,7 +44,8 @@ class Result:
         self.failure = core.failure or None
         self.failure_time = core.failure_time if self.failure else None
         self.headline = core.headline
-        self.report = core.report
+        self.report = core.report + core.ensemble_report
+        self.ensemble = None if core.ensemble_json is None else json.loads(core.ensemble_json)
         self._tables = core.tables()
         self.tables = {t["file"]: self._columns(t) for t in self._tables}
         self.links, self.nodes, self.elements = {}, {}, {}

@@ -3,7 +3,7 @@
 import os
 
 from pound import _core
-from pound._documents import integer, seconds, to_json
+from pound._documents import INT_MAX, LONG_MAX, integer, real, seconds, to_json
 from pound.errors import AnalysisError, InputError
 from pound.model import Model
 from pound.record import Record
@@ -22,7 +22,7 @@ def _model(model):
 
 
 def run(model, record=None, out=None, *, max_steps=None, time_limit=0.0, histories=True,
-        check=True, progress=None):
+        check=True, progress=None, ensemble=None, perturbation=None, robust_spread=None, jobs=None):
     """Runs the time-history analysis of ``model`` (a :class:`pound.Model`, a dict or a path),
     as ``pound run`` does, and returns a :class:`pound.Result`.
 
@@ -41,6 +41,14 @@ def run(model, record=None, out=None, *, max_steps=None, time_limit=0.0, histori
     solve starts, then at most every 0.2 s of solving, and once more as the run ends: with
     ``time == end`` when it completed, at the failure's time when it failed. For a progress bar;
     what it raises stops the run and is raised here.
+
+    ``ensemble=N``: as ``pound run --ensemble N``, also runs N copies with every record scaled
+    by 1 + eps, 1 - eps, 1 + 2 eps, ... (eps = ``perturbation``) on ``jobs`` threads (0: every
+    core), and gives ``result.ensemble`` (ensemble.json: for every number of the summary the
+    unperturbed value, the median, 16 and 84 % and range of the copies, and whether its 16-84 %
+    spread is within ``robust_spread`` of its size; defaults 1e-4 and 0.05, as the program's).
+    The result is the unperturbed run's; with ``out`` ensemble.json is written too.
+    ``progress`` then counts runs: ``progress(done, runs)`` with ``runs = N + 1``.
     """
     model = _model(model)
     if record is not None and not isinstance(record, Record):
@@ -48,11 +56,20 @@ def run(model, record=None, out=None, *, max_steps=None, time_limit=0.0, histori
     if progress is not None and not callable(progress):
         raise InputError("", "progress",
                          f"expected a callable progress(time, end), got {type(progress).__name__}")
+    copies_only = {"perturbation": perturbation, "robust_spread": robust_spread, "jobs": jobs}
+    for name, value in copies_only.items():
+        if ensemble is None and value is not None:
+            raise InputError("", name, "applies to the copies of an ensemble only: add ensemble=N")
     text, path = model._arguments()
     core = _core.run(text, path, None if record is None else record._motion(),
                      None if out is None else os.fspath(out),
-                     None if max_steps is None else integer(max_steps, "max_steps", 0),
-                     seconds(time_limit, "time_limit"), bool(histories), progress)
+                     None if max_steps is None
+                     else integer(max_steps, "max_steps", 0, LONG_MAX),
+                     seconds(time_limit, "time_limit"), bool(histories), progress,
+                     None if ensemble is None else integer(ensemble, "ensemble", 1, INT_MAX),
+                     1e-4 if perturbation is None else real(perturbation, "perturbation"),
+                     0.05 if robust_spread is None else real(robust_spread, "robust_spread"),
+                     0 if jobs is None else integer(jobs, "jobs", 0, INT_MAX))
     result = Result(core)
     if check and not result.completed:
         raise AnalysisError(result.failure_time, result.failure, result)
@@ -78,13 +95,14 @@ def batch(set, out, *, jobs=0, resume=False, progress=None):
     """
     out = os.fspath(out)
     if progress is not None and not callable(progress):
-        raise InputError("", "progress",
-                         f"expected a callable progress(done, total), got {type(progress).__name__}")
+        raise InputError("", "progress", "expected a callable progress(done, total), got "
+                                         f"{type(progress).__name__}")
     if isinstance(set, dict):
         text, path = to_json(set, "<dict>"), "<dict>"
     else:
         text, path = None, os.fspath(set)
-    report = _core.batch(text, path, out, integer(jobs, "jobs", 0), bool(resume), progress)
+    report = _core.batch(text, path, out, integer(jobs, "jobs", 0, INT_MAX), bool(resume),
+                         progress)
     report["summary"] = os.path.join(out, "batch_summary.csv")
     report["statistics"] = os.path.join(out, "batch_stats.json")
     return report

@@ -353,3 +353,50 @@ def test_counts_and_seconds_out_of_range_are_input_errors_naming_them(models, tm
 def test_progress_must_be_callable(models):
     with pytest.raises(pound.InputError, match="progress"):
         pound.run(models / "rod_impact.json", progress=0.5)
+
+
+def test_an_ensemble_gives_every_numbers_spread_and_writes_ensemble_json(models, tmp_path):
+    # The bundled bridge: chaotic after its first abutment impacts, so some numbers spread.
+    calls = []
+    result = pound.run(models / "three_span_bridge.json", out=tmp_path / "python", ensemble=4,
+                       jobs=2, progress=lambda done, runs: calls.append((done, runs)))
+    print(result.report)
+    print(calls)
+    assert calls[0] == (0.0, 5.0) and calls[-1] == (5.0, 5.0)
+    assert [done for done, _ in calls] == sorted(done for done, _ in calls)
+    ensemble = result.ensemble
+    assert ensemble["copies"] == 4 and ensemble["failed"] == 0
+    assert ensemble["record_factors"] == [1.0001, 0.9999, 1.0002, 0.9998]
+    assert "ensemble: 4 copies" in result.report
+    assert json.loads((tmp_path / "python" / "ensemble.json").read_text()) == ensemble
+    single = pound.run(models / "three_span_bridge.json", histories=False)
+    assert result.summary["links"] == single.summary["links"]  # the unperturbed run's
+    loose = [q for q in ensemble["quantities"] if not q["robust"]]
+    print(f"{len(loose)} of {len(ensemble['quantities'])} numbers not robust")
+    assert loose and all(q["spread"] > 0.05 for q in loose)
+    assert pound.run(models / "rod_impact.json").ensemble is None
+
+
+def test_an_ensemble_gives_what_pound_run_ensemble_writes(models, pound_program, tmp_path):
+    result = pound.run(models / "three_span_bridge.json", ensemble=3, histories=False)
+    subprocess.run([pound_program, "run", str(models / "three_span_bridge.json"), "--ensemble",
+                    "3", "--out", str(tmp_path / "cli"), "-q"], check=True)
+    assert json.loads((tmp_path / "cli" / "ensemble.json").read_text()) == result.ensemble
+
+
+def test_ensemble_arguments_are_checked_as_the_program_checks_its_options(models):
+    model = models / "two_sdof_girders.json"
+    bad = {"ensemble": [dict(ensemble=0), dict(ensemble=1001), dict(ensemble=2.0),
+                        dict(ensemble=10**30)],
+           "perturbation": [dict(ensemble=2, perturbation=0.5), dict(ensemble=2, perturbation=0),
+                            dict(ensemble=2, perturbation="1e-4"), dict(perturbation=1e-3)],
+           "robust_spread": [dict(ensemble=2, robust_spread=1.0), dict(robust_spread=0.1)],
+           "jobs": [dict(ensemble=2, jobs=-1), dict(jobs=2)]}
+    for where, arguments in bad.items():
+        for given in arguments:
+            with pytest.raises(pound.InputError) as raised:
+                pound.run(model, histories=False, **given)
+            print(given, "->", raised.value)
+            assert raised.value.path == where
+    with pytest.raises(pound.InputError, match="ensemble only: add ensemble=N"):
+        pound.run(model, jobs=2)
