@@ -7,6 +7,7 @@
 
 #include "app/model_loading.hpp"
 #include "app/model_queries.hpp"
+#include "app/pushover.hpp"
 #include "bindings/bindings.hpp"
 #include "builder/generators.hpp"
 #include "io/model_reader.hpp"
@@ -60,6 +61,27 @@ std::tuple<std::string, py::array_t<double>, std::vector<std::string>> modes(
           shapes.text_columns.empty() ? std::vector<std::string>() : shapes.text_columns[0].values};
 }
 
+// pound.Model.pushover: the curve's columns and their arrays, pushover.json's text, the summary's
+// lines and why it stopped short (empty when it reached the target).
+std::tuple<std::vector<std::string>, std::vector<py::array_t<double>>, std::string, std::string,
+           std::string>
+pushover(const std::optional<std::string>& text, const std::string& path, const std::string& node,
+         double target, const std::string& direction, const std::string& pattern, int increments,
+         const std::optional<std::string>& out) {
+  app::PushoverRequest request{node, direction, pattern, target, increments, ""};
+  app::PushoverFindings push;
+  {
+    const py::gil_scoped_release unlocked;
+    if (out) app::check_pushover_outputs(*out, path, "out");
+    push = app::pushover_findings(load(text, path), path, request);
+    if (out) app::write_pushover_outputs(*out, push);
+  }
+  std::vector<py::array_t<double>> arrays;
+  for (const std::vector<double>& column : push.curve.values)
+    arrays.emplace_back(static_cast<py::ssize_t>(column.size()), column.data());
+  return {push.curve.columns, arrays, push.document.dump(), push.text, push.stopped};
+}
+
 }  // namespace
 
 void bind_models(py::module_& module) {
@@ -69,6 +91,11 @@ void bind_models(py::module_& module) {
              "The model with its generators expanded, as JSON text (`pound expand`).");
   module.def("check_model", &check, py::arg("text"), py::arg("path"),
              "The checks before a run as JSON text (`pound check --json`).");
+  module.def("model_pushover", &pushover, py::arg("text"), py::arg("path"), py::arg("node"),
+             py::arg("target"), py::arg("direction"), py::arg("pattern"), py::arg("increments"),
+             py::arg("out"),
+             "A static pushover (`pound pushover`): the curve, pushover.json, the summary text and "
+             "why it stopped short.");
   module.def("model_modes", &modes, py::arg("text"), py::arg("path"), py::arg("count"),
              "The first modes as JSON text, their shapes and the DOF labels (`pound modes`).");
 }

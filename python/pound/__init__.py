@@ -12,11 +12,12 @@ See docs/python.md for the whole interface.
 
 from pound.errors import AnalysisError, InputError, OutputError
 from pound.model import Model
+from pound.pushover import Pushover
 from pound.record import Record
 from pound.result import Result
 from pound.runs import batch, run
 from pound import verify
 
-__all__ = ["AnalysisError", "InputError", "OutputError", "Model", "Record", "Result", "batch",
-           "run", "verify"]
+__all__ = ["AnalysisError", "InputError", "OutputError", "Model", "Pushover", "Record", "Result",
+           "batch", "run", "verify"]
 __version__ = "0.1.0"

@@ -20,15 +20,17 @@ class InputError(ValueError):
 class AnalysisError(RuntimeError):
     """The analysis could not go on (Newton failed at the smallest step, the state diverged).
 
-    ``time`` is when it stopped, ``reason`` why, and ``result`` the :class:`pound.Result` up to
-    then (None where no run was under way, e.g. a modal analysis).
+    ``time`` is when it stopped (None for a static pushover), ``reason`` why, and ``result`` the
+    :class:`pound.Result` (or :class:`pound.Pushover`) up to then (None where no run was under
+    way, e.g. a modal analysis).
     """
 
     def __init__(self, time, reason, result=None):
         self.time = time
         self.reason = reason
         self.result = result
-        super().__init__(f"analysis failed at t = {time:.6g}: {reason}")
+        super().__init__(f"analysis failed at t = {time:.6g}: {reason}" if time is not None
+                         else f"analysis failed: {reason}")
 
 
 class OutputError(OSError):

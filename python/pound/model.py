@@ -6,7 +6,9 @@ import os
 import numpy as np
 
 from pound import _core
-from pound._documents import INT_MAX, integer, to_json
+from pound._documents import INT_MAX, integer, real, to_json
+from pound.errors import AnalysisError, InputError
+from pound.pushover import Pushover
 
 
 class Model:
@@ -69,6 +71,30 @@ class Model:
         modes["shapes"] = np.asarray(shapes)
         modes["dofs"] = list(labels)
         return modes
+
+    def pushover(self, node, to, *, direction="x", pattern="point", increments=100, out=None,
+                 check=True):
+        """A static pushover (``pound pushover``): the model's constant loads first (its
+        records left out), then a lateral load pattern grown until ``node`` has moved ``to``
+        along ``direction`` (x or y), in ``increments`` equal steps (halved where Newton does
+        not converge). ``pattern``: a point load at the node ("point"), the masses times a
+        uniform acceleration ("mass") or times their height above the lowest node
+        ("triangular"), scaled so that the load factor is the base shear. With ``out``,
+        pushover.csv and pushover.json are written there. Returns a :class:`pound.Pushover`;
+        a push that cannot reach ``to`` (a mechanism) raises :class:`pound.AnalysisError` with
+        the curve up to there as ``error.result``, unless ``check=False``, which returns it."""
+        if not isinstance(node, str):
+            raise InputError(self._path, "node", f"expected a node id, got {node!r}")
+        for name, value in (("direction", direction), ("pattern", pattern)):
+            if not isinstance(value, str):
+                raise InputError(self._path, name, f"expected a string, got {value!r}")
+        push = Pushover(*_core.model_pushover(
+            self._text, self._path, node, real(to, "to"), direction, pattern,
+            integer(increments, "increments", 1, INT_MAX),
+            None if out is None else os.fspath(out)))
+        if check and not push.completed:
+            raise AnalysisError(None, push.stopped, push)
+        return push
 
     def _arguments(self):
         return self._text, self._path

@@ -26,6 +26,7 @@ class BorderedNewton {
     for (iterations = 0; iterations <= control_.max_iterations; ++iterations) {
       const double scale = unbalanced(u, lambda, residual);
       const double offset = target - u[control_.equation];
+      if (iterations == 0) start_tangent_ = tangent_;
       if (!residual.allFinite()) return false;
       if (residual.norm() <= control_.relative_tolerance * scale &&
           std::abs(offset) <= 1e-12 * std::max(std::abs(target), 1e-300))
@@ -40,6 +41,14 @@ class BorderedNewton {
       lambda += correction[u.size()];
     }
     return false;
+  }
+
+  // The DOFs the pattern loads that nothing held at the start of the last increment tried.
+  std::vector<Index> unheld_loaded() const {
+    std::vector<Index> loaded;
+    for (const Index i : unheld_dofs(system_, start_tangent_))
+      if (control_.pattern[i] != 0.0) loaded.push_back(i);
+    return loaded;
   }
 
  private:
@@ -81,7 +90,7 @@ class BorderedNewton {
   const PushoverControl& control_;
   Eigen::SparseMatrix<double> b_;
   Vector constant_;
-  Matrix tangent_;
+  Matrix tangent_, start_tangent_;  // the links' at the last trial, and at the increment's start
 };
 
 }  // namespace
@@ -120,6 +129,7 @@ PushoverResult pushover(StructuralSystem& system, const Vector& start,
           "not converge after {} halvings): a mechanism, or a target past what the model can "
           "carry",
           reached, next, cuts);
+      result.unheld_loaded = newton.unheld_loaded();
       break;
     }
     ++cuts;

@@ -42,6 +42,10 @@ struct PushoverResult {
   std::vector<PushoverPoint> curve;  // from the start state (lambda = 0)
   Vector displacement;               // u at the last converged point
   std::string stopped;               // why the push ended before the target; empty when reached
+  // When it stopped: the DOFs the pattern loads that nothing held as the last increment started
+  // (no element, their links open or pulled apart), the likely cause: Newton moves such a DOF
+  // by the load over a 1e-12 stiffness (hold_unheld_dofs) before its contact can hold it.
+  std::vector<Index> unheld_loaded;
 };
 
 // Called after each converged point with the state, before the next increment.

@@ -21,6 +21,17 @@ void hold_unheld_dofs(Eigen::SparseMatrix<double>& tangent) {
     if (tangent.coeff(i, i) == 0.0) tangent.coeffRef(i, i) = 1e-12 * largest;
 }
 
+std::vector<Index> unheld_dofs(const StructuralSystem& system, const Matrix& link_tangent) {
+  const Eigen::SparseMatrix<double>& b = system.links().connectivity();
+  const Eigen::SparseMatrix<double> tangent =
+      system.stiffness() +
+      Eigen::SparseMatrix<double>(b.transpose() * link_tangent.sparseView() * b);
+  std::vector<Index> unheld;
+  for (Index i = 0; i < tangent.rows(); ++i)
+    if (tangent.coeff(i, i) == 0.0) unheld.push_back(i);
+  return unheld;
+}
+
 Eigen::SparseMatrix<double> static_tangent(const StructuralSystem& system,
                                            const Matrix& link_tangent, bool hold_link_held) {
   const Eigen::SparseMatrix<double>& b = system.links().connectivity();

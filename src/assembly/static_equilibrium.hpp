@@ -9,6 +9,7 @@
 // same Newton iteration: static_equilibrium.cpp). Throws SolveError when Newton does not converge
 // or the structure is a mechanism under the loads.
 #include <functional>
+#include <vector>
 
 #include "assembly/structural_system.hpp"
 
@@ -24,6 +25,10 @@ struct StaticEquilibrium {
 // closes) has a zero diagonal: 1e-12 of the largest one there keeps the tangent regular, and
 // the DOF stays where it is unless a load acts on it (then the contact it moves into holds it).
 void hold_unheld_dofs(Eigen::SparseMatrix<double>& tangent);
+
+// The DOFs hold_unheld_dofs would hold in K + B^T (dF/d delta) B at the links' trial state:
+// no element stiffness, and no link with a tangent there (open, pulled apart, or none).
+std::vector<Index> unheld_dofs(const StructuralSystem& system, const Matrix& link_tangent);
 
 // K + B^T (dF/d delta) B with its unheld DOFs held: the static tangent at the links' trial state
 // (`link_tangent` as LinkSet::set_trial gives it). `hold_link_held`: also every DOF that only

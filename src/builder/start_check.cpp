@@ -47,6 +47,11 @@ std::string not_positive_words(const model::Model& model) {
 
 }  // namespace
 
+std::string equation_words(const BuiltModel& built, const model::DofMap& dofs, Index equation) {
+  const NodeDirection place = node_of(built.model, dofs, equation);
+  return place.node < 0 ? fmt::format("equation {}", equation) : node_words(built, place);
+}
+
 InputError not_held_error(const BuiltModel& built, const model::DofMap& dofs,
                           const assembly::NotPositiveDefinite& failure, const std::string& during,
                           const std::string& source) {

@@ -16,6 +16,9 @@ namespace pound::builder {
 void check_first_step(const BuiltModel& built, const AnalysisSpec& analysis,
                       assembly::StructuralSystem& system, const std::string& source);
 
+// "node 'id', direction x" for an equation of `built`'s model ("equation N" for a tied one).
+std::string equation_words(const BuiltModel& built, const model::DofMap& dofs, Index equation);
+
 // The error for a factorization that failed at a DOF of `built`'s model: the node, its direction
 // and what to do, at the node's JSON path (its generator's, for a generated node). `during`
 // says what was being factored.

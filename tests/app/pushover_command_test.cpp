@@ -159,5 +159,27 @@ TEST_F(PushoverCommand, AModelWithHardContactsIsRefusedNamingTheLink) {
   EXPECT_FALSE(std::filesystem::exists(path("out")));
 }
 
+// The bundled bridge's abutment walls hang on compression-only backfill and open joints: a mass
+// pattern loads them, nothing holds them as the push starts, and Newton, which holds such a DOF
+// by a 1e-12 spring, throws them off before a contact can hold them. The push stops at once,
+// exit 3 with the curve up to there, naming both walls and what to do.
+TEST_F(PushoverCommand, AMassThatNothingHoldsIsNamedWhenThePushStops) {
+  const Outcome outcome = pound({"pushover", kModel, "--node", "bridge.p1.top", "--to", "0.04",
+                                 "--pattern", "mass", "--out", path("out").string()});
+  EXPECT_EQ(outcome.exit_code, 3);
+  std::cout << outcome.err;
+  EXPECT_TRUE(
+      contains(outcome.err,
+               "The pattern loads node 'bridge.a0.wall', direction x; node "
+               "'bridge.a1.wall', direction x, which nothing held as the increment started"))
+      << outcome.err;
+  EXPECT_TRUE(contains(outcome.err, "Push with the point pattern, or restrain them"));
+  EXPECT_TRUE(std::filesystem::exists(path("out") / "pushover.csv"));
+  // The point pattern loads neither wall: the same push reaches its target.
+  const Outcome point = pound({"pushover", kModel, "--node", "bridge.p1.top", "--to", "0.04",
+                               "--out", path("point").string()});
+  EXPECT_EQ(point.exit_code, 0) << point.err;
+}
+
 }  // namespace
 }  // namespace pound::testing

@@ -1,6 +1,8 @@
-"""pound.Model: reading, the expanded model, the checks, modes, and bad input."""
+"""pound.Model: reading, the expanded model, the checks, modes, pushovers, and bad input."""
 
+import csv
 import json
+import subprocess
 
 import numpy as np
 import pytest
@@ -99,3 +101,82 @@ def test_records_of_a_dict_are_found_from_its_folder(models):
     with pytest.raises(pound.InputError):
         pound.Model.from_dict(model, folder="/")
     assert pound.Model.from_dict(model, folder=models).check()["dofs"] == 2
+
+
+def cantilever(length=8.0, inertia=0.8, youngs_modulus=3.0e10):
+    """A column of two beams fixed at its base, a mass at its top: K = 3 E I / L^3 at the top."""
+    return {
+        "title": "cantilever",
+        "dimension": 2,
+        "nodes": [{"id": "base", "x": 0.0, "y": 0.0}, {"id": "mid", "x": 0.0, "y": length / 2},
+                  {"id": "top", "x": 0.0, "y": length}],
+        "materials": [{"id": "concrete", "youngs_modulus": youngs_modulus, "density": 0.0}],
+        "elements": [{"id": "lower", "type": "beam", "nodes": ["base", "mid"],
+                      "material": "concrete", "area": 3.0, "inertia": inertia},
+                     {"id": "upper", "type": "beam", "nodes": ["mid", "top"],
+                      "material": "concrete", "area": 3.0, "inertia": inertia}],
+        "masses": [{"node": "top", "mass": 1.0e5}],
+        "supports": [{"node": "base", "fix": ["x", "y", "rz"]}],
+        "analysis": {"time_step": 0.01, "duration": 1.0},
+    }
+
+
+def test_a_pushover_of_a_cantilever_has_its_closed_form_stiffness(tmp_path):
+    model = pound.Model.from_dict(cantilever())
+    push = model.pushover("top", 0.01, increments=4, out=tmp_path)
+    exact = 3 * 3.0e10 * 0.8 / 8.0**3
+    error = abs(push.summary["initial_stiffness"] / exact - 1)
+    print(push)
+    print(f"initial stiffness {push.summary['initial_stiffness']:.6g} against 3EI/L^3 "
+          f"{exact:.6g}: relative error {error:.1e}")
+    assert error < 1e-9  # cubic beams are exact under a tip load: round-off only
+    assert push.completed and push.summary["reached"] == pytest.approx(0.01)
+    assert list(push.curve["displacement"]) == pytest.approx([0, 0.0025, 0.005, 0.0075, 0.01])
+    assert push.curve["base_shear"] == pytest.approx(exact * push.curve["displacement"])
+    assert (tmp_path / "pushover.csv").exists() and (tmp_path / "pushover.json").exists()
+    assert push.to_pandas().shape == (5, 3)
+
+
+def test_a_pushover_gives_what_pound_pushover_writes(models, pound_program, tmp_path):
+    model_path = models / "three_span_bridge_takeda.json"
+    push = pound.Model.from_file(model_path).pushover("bridge.p1.top", 0.04)
+    subprocess.run([pound_program, "pushover", str(model_path), "--node", "bridge.p1.top",
+                    "--to", "0.04", "--out", str(tmp_path)], check=True, capture_output=True)
+    written = json.loads((tmp_path / "pushover.json").read_text())
+    assert written == push.summary
+    assert push.summary["first_yield"]["link"] == "bridge.p1.hinge"
+    with open(tmp_path / "pushover.csv", newline="") as file:
+        rows = list(csv.DictReader(file))
+    assert list(rows[0]) == list(push.curve)
+    for column, values in push.curve.items():
+        assert [float(row[column]) for row in rows] == list(values), column
+
+
+def test_a_pushover_that_cannot_reach_its_target_is_an_analysis_error(models):
+    # The bundled bridge's abutment walls hang on compression-only backfill: a mass pattern
+    # pushes the left one away from its backfill, and nothing holds it.
+    model = pound.Model.from_file(models / "three_span_bridge.json")
+    with pytest.raises(pound.AnalysisError) as raised:
+        model.pushover("bridge.p1.top", 0.04, pattern="mass")
+    print(raised.value)
+    assert raised.value.time is None and not raised.value.result.completed
+    assert "The pattern loads node 'bridge.a0.wall', direction x" in raised.value.reason
+    push = model.pushover("bridge.p1.top", 0.04, pattern="mass", check=False)
+    assert push.stopped == raised.value.reason
+
+
+def test_pushover_arguments_are_input_errors_naming_them(models):
+    model = pound.Model.from_file(models / "three_span_bridge_takeda.json")
+    bad = {"node": [dict(node="nope", to=0.04), dict(node=3, to=0.04)],
+           "to": [dict(node="bridge.p1.top", to=0), dict(node="bridge.p1.top", to=float("nan")),
+                  dict(node="bridge.p1.top", to="0.04"), dict(node="bridge.p1.top", to=1e-12)],
+           "direction": [dict(node="bridge.p1.top", to=0.04, direction="z")],
+           "pattern": [dict(node="bridge.p1.top", to=0.04, pattern="uniform")],
+           "increments": [dict(node="bridge.p1.top", to=0.04, increments=0),
+                          dict(node="bridge.p1.top", to=0.04, increments=2.0)]}
+    for where, arguments in bad.items():
+        for given in arguments:
+            with pytest.raises(pound.InputError) as raised:
+                model.pushover(**given)
+            print(given, "->", raised.value)
+            assert raised.value.path == where
