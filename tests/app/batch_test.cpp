@@ -95,6 +95,17 @@ class Batch : public PoundProcess {
     return path("set.json").string();
   }
 
+  // The bridge model under the four bundled records at three scales: 12 cases, each long enough
+  // to stop the batch between them.
+  std::string write_bridge_set() {
+    std::ofstream(path("set.json")) << fmt::format(
+        R"({{"models": ["{0}/models/three_span_bridge.json"],
+           "records": [{{"folder": "{0}/ground_motions", "pattern": "*.AT2", "scale": {{"pga": 0.3}}}}],
+           "scales": [0.5, 1, 1.5]}})",
+        kSource);
+    return path("set.json").string();
+  }
+
   // A set of the two-girder model under the bundled records, with the model and one record copied
   // into the test's folder so that a test can edit them.
   std::string write_bundled_set(const std::string& scales) {
@@ -199,13 +210,7 @@ TEST_F(Batch, UnderMpirunWithTwoRanksGivesTheThreadedResults) {
 // Kill a batch part-way, then --resume it: the complete cases are kept, the rest run, and the
 // summary is the one an uninterrupted run gives.
 TEST_F(Batch, SurvivesBeingKilledAndResumesToTheSameResults) {
-  // The bridge model, so cases take long enough to kill the batch between them.
-  std::ofstream(path("set.json")) << fmt::format(
-      R"({{"models": ["{0}/models/three_span_bridge.json"],
-           "records": [{{"folder": "{0}/ground_motions", "pattern": "*.AT2", "scale": {{"pga": 0.3}}}}],
-           "scales": [0.5, 1, 1.5]}})",
-      kSource);
-  const std::string set = path("set.json").string();
+  const std::string set = write_bridge_set();
   const Outcome whole = pound({"batch", set, "--out", path("whole").string(), "-q"});
   ASSERT_EQ(whole.exit_code, 0) << whole.err;
 
@@ -262,12 +267,7 @@ TEST_F(Batch, SurvivesBeingKilledAndResumesToTheSameResults) {
 }
 
 TEST_F(Batch, StoppedBySigtermSaysSoKeepsTheEndedCasesAndResumes) {
-  std::ofstream(path("set.json")) << fmt::format(
-      R"({{"models": ["{0}/models/three_span_bridge.json"],
-           "records": [{{"folder": "{0}/ground_motions", "pattern": "*.AT2", "scale": {{"pga": 0.3}}}}],
-           "scales": [0.5, 1, 1.5]}})",
-      kSource);
-  const std::string set = path("set.json").string();
+  const std::string set = write_bridge_set();
   const std::string out = path("stopped").string(), messages = path("stderr.txt").string();
   const pid_t child = ::fork();
   ASSERT_GE(child, 0);
