@@ -1,5 +1,6 @@
 #include <Python.h>
 
+#include <csignal>
 #include <exception>
 #include <mutex>
 
@@ -28,8 +29,13 @@ InterruptGuard::~InterruptGuard() {
   if (--g_guards > 0) return;
   restore_interrupt_handlers(g_previous);
   // A signal that no poll saw (the run ended first) still reaches Python: as if it came now.
-  // One that stopped a run is already on its way as KeyboardInterrupt (module.cpp).
-  if (interrupt_signal() != 0 && std::uncaught_exceptions() == 0) PyErr_SetInterrupt();
+  // One that stopped a run is on its way as an exception (module.cpp raises it again there).
+  if (const int signal = interrupt_signal(); signal != 0 && std::uncaught_exceptions() == 0) {
+    if (signal == SIGTERM)
+      ::raise(SIGTERM);  // Python's own disposition: by default the process ends
+    else
+      PyErr_SetInterrupt();
+  }
   clear_interrupt();
 }
 

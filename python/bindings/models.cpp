@@ -71,6 +71,7 @@ pushover(const std::optional<std::string>& text, const std::string& path, const 
   app::PushoverRequest request{node, direction, pattern, target, increments, ""};
   app::PushoverFindings push;
   {
+    const InterruptGuard guard;
     const py::gil_scoped_release unlocked;
     if (out) app::check_pushover_outputs(*out, path, "out");
     push = app::pushover_findings(load(text, path), path, request);

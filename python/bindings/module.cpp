@@ -4,6 +4,7 @@
 // the package's exceptions (pound.errors), which carry the file, JSON path and message.
 #include <pybind11/pybind11.h>
 
+#include <csignal>
 #include <exception>
 
 #include "bindings/bindings.hpp"
@@ -31,7 +32,13 @@ void translate_errors(std::exception_ptr failure) {
     raise_package_error("AnalysisError", py::make_tuple(error.time(), error.reason()));
   } catch (const pound::io::OutputError& error) {
     raise_package_error("OutputError", py::make_tuple(std::string(error.what())));
-  } catch (const pound::Interrupted&) {
+  } catch (const pound::Interrupted& stopped) {
+    // SIGTERM as Python would have taken it without pound's handler (restored by now): by
+    // default the process ends; a handler of the script's own runs, and what it raises is raised.
+    if (stopped.signal() == SIGTERM) {
+      ::raise(SIGTERM);
+      if (PyErr_CheckSignals() != 0) return;
+    }
     PyErr_SetNone(PyExc_KeyboardInterrupt);
   }
 }

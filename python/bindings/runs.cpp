@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "app/batch.hpp"
 #include "app/cluster.hpp"
@@ -16,6 +17,7 @@
 #include "builder/batch_spec.hpp"
 #include "core/errors.hpp"
 #include "core/stopwatch.hpp"
+#include "io/output.hpp"
 
 namespace py = pybind11;
 
@@ -142,13 +144,14 @@ class RunProgress {
       call(1.0 + static_cast<double>(done), *runs_, done == 0);
     };
   }
-  // With the GIL held, after the run; nothing if the solve never started (bad input).
-  void finish(const app::RunOutcome& outcome) const {
+  // With the GIL held, after the run; nothing if the solve never started (bad input), nor when
+  // the last call already said so.
+  void finish(const app::RunOutcome& outcome) {
     if (!end_) return;
-    if (runs_)
-      callback_(*runs_, *runs_);
-    else
-      callback_(outcome.failure.empty() ? *end_ : outcome.failure_time, *end_);
+    const double total = runs_ ? *runs_ : *end_;
+    const double done = runs_ || outcome.failure.empty() ? total : outcome.failure_time;
+    if (last_ == std::pair(done, total)) return;
+    callback_(done, total);
   }
 
  private:
@@ -157,6 +160,7 @@ class RunProgress {
     if (!always && std::chrono::duration<double>(now - last_call_).count() < kProgressInterval)
       return;
     last_call_ = now;
+    last_ = {done, total};
     const py::gil_scoped_acquire locked;
     callback_(done, total);
   }
@@ -165,6 +169,7 @@ class RunProgress {
   std::optional<double> runs_;  // with an ensemble: the copies and the unperturbed run
   std::chrono::steady_clock::time_point last_call_;
   std::optional<double> end_;
+  std::optional<std::pair<double, double>> last_;  // the last call's (done, total)
 };
 
 std::shared_ptr<RunResult> run(const std::optional<std::string>& text, const std::string& path,
@@ -182,10 +187,13 @@ std::shared_ptr<RunResult> run(const std::optional<std::string>& text, const std
   request.max_steps = max_steps;
   request.time_limit = time_limit;
   request.histories = histories;
-  if (out)
+  if (out) {
     request.before_run = [&](const app::LoadedModel& loaded) {
       app::check_run_outputs(*out, request, loaded, ensemble_options.has_value(), "out");
     };
+    // The input is good: a folder that cannot be made is said now, not after a long solve.
+    request.before_solve = [&](const std::vector<std::string>&) { io::create_output_folder(*out); };
+  }
   std::optional<RunProgress> progress;
   if (progress_callback)
     request.progress = progress.emplace(*progress_callback, ensemble.copies).observer();
@@ -224,27 +232,27 @@ class BatchProgressCallback {
   // Called by the batch one call at a time, from its worker threads, the GIL released.
   std::function<void(const app::BatchProgress&)> observer() {
     return [this](const app::BatchProgress& progress) {
-      total_ = progress.total;
+      total_ = static_cast<double>(progress.total);
       const auto now = std::chrono::steady_clock::now();
-      if (called_ && std::chrono::duration<double>(now - last_call_).count() < kProgressInterval)
+      if (last_ && std::chrono::duration<double>(now - last_call_).count() < kProgressInterval)
         return;
-      called_ = true;
       last_call_ = now;
-      const double done = static_cast<double>(progress.done) + progress.running_done;
+      last_ = {static_cast<double>(progress.done) + progress.running_done, total_};
       const py::gil_scoped_acquire locked;
-      callback_(done, static_cast<double>(progress.total));
+      callback_(last_->first, last_->second);
     };
   }
-  // With the GIL held, after a batch that ended: nothing if no case ran.
+  // With the GIL held, after a batch that ended: nothing if no case ran, nor when the last call
+  // already said so.
   void finish() const {
-    if (called_) callback_(static_cast<double>(total_), static_cast<double>(total_));
+    if (last_ && last_ != std::pair(total_, total_)) callback_(total_, total_);
   }
 
  private:
   py::object callback_;
-  bool called_ = false;
   std::chrono::steady_clock::time_point last_call_;
-  std::size_t total_ = 0;
+  double total_ = 0.0;
+  std::optional<std::pair<double, double>> last_;  // the last call's (done, total)
 };
 
 // The batch's report as a dict (its statistics are in <out>/batch_stats.json).

@@ -3,6 +3,9 @@
 import json
 import math
 import numbers
+import os
+
+import numpy as np
 
 from pound.errors import InputError
 
@@ -22,6 +25,8 @@ def _plain(value, name, path):
         return [_plain(item, name, f"{path}/{k}") for k, item in enumerate(value)]
     if isinstance(value, bool) or value is None or isinstance(value, str):
         return value
+    if isinstance(value, os.PathLike):  # a pathlib.Path in "models" or a record's "file"
+        return os.fspath(value)
     if isinstance(value, numbers.Integral):
         return int(value)
     if isinstance(value, numbers.Real):
@@ -38,19 +43,42 @@ def integer(value, where, minimum=None, maximum=None):
     or `maximum` one outside them (the C++ type's range: pybind11 would raise a TypeError)."""
     if isinstance(value, bool) or not isinstance(value, numbers.Integral):
         raise InputError("", where, f"expected an integer, got {value!r}")
-    if minimum is not None and value < minimum:
+    whole = int(value)  # NumPy compares np.uint64(2**63) with 2**63 - 1 as float64: equal
+    if minimum is not None and whole < minimum:
         raise InputError("", where, f"expected an integer >= {minimum}, got {value!r}")
-    if maximum is not None and value > maximum:
+    if maximum is not None and whole > maximum:
         raise InputError("", where, f"expected an integer <= {maximum}, got {value!r}")
-    return int(value)
+    return whole
 
 
 def real(value, where):
-    """A real number argument (Python or NumPy) as float; a bool or a string is refused. Its
-    range is checked where it is used, as the program checks the option."""
+    """A real number argument (Python or NumPy) as float; a bool, a string or an integer past a
+    double's range is refused. Its range is checked where it is used, as the program checks the
+    option."""
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
         raise InputError("", where, f"expected a number, got {value!r}")
-    return float(value)
+    try:
+        return float(value)
+    except OverflowError:
+        raise InputError("", where, f"expected a number, got one past a double's range: {value}")
+
+
+def flag(value, where):
+    """A True/False argument (Python or NumPy): resume="no" would resume."""
+    if not isinstance(value, (bool, np.bool_)):
+        raise InputError("", where, f"expected True or False, got {value!r}")
+    return bool(value)
+
+
+def path_argument(value, where, what="a path"):
+    """A path argument (str or os.PathLike) as str, never empty."""
+    if not isinstance(value, (str, os.PathLike)):
+        raise InputError("", where, f"expected {what} (a str or a pathlib.Path), got "
+                                    f"{type(value).__name__}")
+    path = os.fspath(value)
+    if not isinstance(path, str) or path == "":
+        raise InputError("", where, f"expected {what}, got {value!r}")
+    return path
 
 
 INT_MAX = 2**31 - 1  # a C++ int's
@@ -59,10 +87,10 @@ LONG_MAX = 2**63 - 1  # a C++ long's
 
 def seconds(value, where):
     """A number of seconds >= 0 (0: no limit), as the program refuses --time-limit -1 or nan."""
-    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not value >= 0.0 \
-            or not math.isfinite(value):
+    number = real(value, where)
+    if not number >= 0.0 or not math.isfinite(number):
         raise InputError("", where, f"expected a number of seconds >= 0, got {value!r}")
-    return float(value)
+    return number
 
 
 def to_json(document, name):

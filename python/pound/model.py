@@ -6,7 +6,7 @@ import os
 import numpy as np
 
 from pound import _core
-from pound._documents import INT_MAX, integer, real, to_json
+from pound._documents import INT_MAX, flag, integer, path_argument, real, to_json
 from pound.errors import AnalysisError, InputError
 from pound.pushover import Pushover
 
@@ -27,7 +27,7 @@ class Model:
     @classmethod
     def from_file(cls, path):
         """Reads the model file at ``path``; its records are found relative to its folder."""
-        path = os.fspath(path)
+        path = path_argument(path, "path", "a model file's path")
         _core.validate_model(None, path)
         return cls(None, path)
 
@@ -35,7 +35,9 @@ class Model:
     def from_dict(cls, model, *, name="<dict>", folder=None):
         """A model given as a dict of the model format. Errors name it ``name``; its records are
         found relative to ``folder`` (default: the working directory)."""
-        path = name if folder is None else os.path.join(os.fspath(folder), name)
+        if not isinstance(name, str):
+            raise InputError("", "name", f"expected a str, got {type(name).__name__}")
+        path = name if folder is None else os.path.join(path_argument(folder, "folder"), name)
         text = to_json(model, path)
         _core.validate_model(text, path)
         return cls(text, path)
@@ -91,8 +93,8 @@ class Model:
         push = Pushover(*_core.model_pushover(
             self._text, self._path, node, real(to, "to"), direction, pattern,
             integer(increments, "increments", 1, INT_MAX),
-            None if out is None else os.fspath(out)))
-        if check and not push.completed:
+            None if out is None else path_argument(out, "out", "a folder")))
+        if flag(check, "check") and not push.completed:
             raise AnalysisError(None, push.stopped, push)
         return push
 

@@ -2,12 +2,11 @@
 
 import math
 import numbers
-import os
 
 import numpy as np
 
 from pound import _core
-from pound._documents import INT_MAX, integer
+from pound._documents import INT_MAX, flag, integer, path_argument
 from pound.errors import InputError
 
 
@@ -61,16 +60,17 @@ class Record:
         """Reads a PEER .AT2 file or a columns file, as ``pound run --motion`` does: ``column``
         (from 1; default 1, or 2 with ``time_column``), ``dt`` for a columns file that does not
         state it, ``format`` "auto", "at2" or "columns"."""
-        path = os.fspath(path)
+        path = path_argument(path, "path", "a record file's path")
+        time_column = flag(time_column, "time_column")
         column = column if column is not None else (2 if time_column else 1)
         record = cls.__new__(cls)
         column = integer(column, "column", -INT_MAX, INT_MAX)
         name, step, values, sha1, read_as = _core.read_record(path, format, units, column, dt,
-                                                              bool(time_column))
+                                                              time_column)
         record.name, record.units, record.path = name, units, path
         record.scale = _scale(scale, path)
         record.time_step, record.sha1, record.format = step, sha1, read_as
-        record._column, record._dt, record._time_column = column, dt, bool(time_column)
+        record._column, record._dt, record._time_column = column, dt, time_column
         record._values = np.asarray(values)
         record._values.flags.writeable = False
         return record

@@ -86,7 +86,9 @@ class Result:
 
     def units(self, file):
         """{column: unit} of a table, as its CSV header names them."""
-        table = next(t for t in self._tables if t["file"] == file)
+        table = next((t for t in self._tables if t["file"] == file), None)
+        if table is None:
+            raise KeyError(f"no table {file!r}: the tables are {sorted(self.tables)}")
         return dict(zip(table["columns"], table["units"] or [""] * len(table["columns"])))
 
     def to_pandas(self, file=None):

@@ -3,7 +3,8 @@
 import os
 
 from pound import _core
-from pound._documents import INT_MAX, LONG_MAX, integer, real, seconds, to_json
+from pound._documents import (INT_MAX, LONG_MAX, flag, integer, path_argument, real, seconds,
+                              to_json)
 from pound.errors import AnalysisError, InputError
 from pound.model import Model
 from pound.record import Record
@@ -62,16 +63,16 @@ def run(model, record=None, out=None, *, max_steps=None, time_limit=0.0, histori
             raise InputError("", name, "applies to the copies of an ensemble only: add ensemble=N")
     text, path = model._arguments()
     core = _core.run(text, path, None if record is None else record._motion(),
-                     None if out is None else os.fspath(out),
+                     None if out is None else path_argument(out, "out", "a folder"),
                      None if max_steps is None
                      else integer(max_steps, "max_steps", 0, LONG_MAX),
-                     seconds(time_limit, "time_limit"), bool(histories), progress,
+                     seconds(time_limit, "time_limit"), flag(histories, "histories"), progress,
                      None if ensemble is None else integer(ensemble, "ensemble", 1, INT_MAX),
                      1e-4 if perturbation is None else real(perturbation, "perturbation"),
                      0.05 if robust_spread is None else real(robust_spread, "robust_spread"),
                      0 if jobs is None else integer(jobs, "jobs", 0, INT_MAX))
     result = Result(core)
-    if check and not result.completed:
+    if flag(check, "check") and not result.completed:
         raise AnalysisError(result.failure_time, result.failure, result)
     return result
 
@@ -93,15 +94,15 @@ def batch(set, out, *, jobs=0, resume=False, progress=None):
     and once more with ``done == total`` when the batch has ended. For a progress bar; what it
     raises stops the batch (the cases running are not kept) and is raised here.
     """
-    out = os.fspath(out)
+    out = path_argument(out, "out", "a folder")
     if progress is not None and not callable(progress):
         raise InputError("", "progress", "expected a callable progress(done, total), got "
                                          f"{type(progress).__name__}")
     if isinstance(set, dict):
         text, path = to_json(set, "<dict>"), "<dict>"
     else:
-        text, path = None, os.fspath(set)
-    report = _core.batch(text, path, out, integer(jobs, "jobs", 0, INT_MAX), bool(resume),
+        text, path = None, path_argument(set, "set", "a set file's path or a dict")
+    report = _core.batch(text, path, out, integer(jobs, "jobs", 0, INT_MAX), flag(resume, "resume"),
                          progress)
     report["summary"] = os.path.join(out, "batch_summary.csv")
     report["statistics"] = os.path.join(out, "batch_stats.json")

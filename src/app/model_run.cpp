@@ -392,9 +392,10 @@ void check_run_outputs(const std::string& out, const RunRequest& request, const 
   const bool named_in_model =
       loaded.spec.recorders_given && loaded.spec.recorders.size() == recorders.size();
   for (std::size_t k = 0; k < recorders.size(); ++k)
-    outputs.push_back(
-        {(fs::path(out) / recorders[k].file).string(),
-         named_in_model ? fmt::format("{}: /recorders/{}/file", request.model_path, k) : out_name});
+    outputs.push_back(named_in_model
+                          ? io::NamedPath{(fs::path(out) / recorders[k].file).string(),
+                                          fmt::format("/recorders/{}/file", k), request.model_path}
+                          : io::NamedPath{(fs::path(out) / recorders[k].file).string(), out_name});
   io::check_outputs_apart(inputs, outputs);
 }
 

@@ -280,6 +280,11 @@ PushoverFindings pushover_findings(LoadedModel loaded, const std::string& model_
                                    "gap_spring) for the pushover",
                                    loaded.built.model.links.at(static_cast<std::size_t>(k)).id));
   const int direction = request.direction == "x" ? 0 : 1;
+  // A 1-D (axial) model's nodes move along x only: y would read the next node's x.
+  if (direction >= system.dofs().dofs_per_node())
+    throw InputError(model_path, request.name("direction"),
+                     fmt::format("the model is {}-D: its nodes move along x only",
+                                 loaded.built.model.dimension));
   const Index control = system.dofs().own_equation(node->second, direction);
   if (system.dofs().tied(node->second, direction))
     throw InputError(model_path, request.name("node"),

@@ -17,6 +17,7 @@
 #include "app/model_run.hpp"
 #include "app/progress_line.hpp"
 #include "io/ground_motion_reader.hpp"
+#include "io/output.hpp"
 #include "io/output_paths.hpp"
 
 namespace pound::app {
@@ -200,6 +201,8 @@ int run_command(const Arguments& arguments) {
   // The warnings found before the run are shown at once: one of a run of days says so then.
   std::size_t printed = 0;
   request.before_solve = [&](const std::vector<std::string>& warnings) {
+    // The input is good: a folder that cannot be made is said now, not after a long solve.
+    io::create_output_folder(out);
     print_warnings(warnings);
     printed = warnings.size();
   };

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "assembly/static_equilibrium.hpp"
+#include "core/interrupt.hpp"
 
 namespace pound::assembly {
 namespace {
@@ -107,6 +108,7 @@ PushoverResult pushover(StructuralSystem& system, const Vector& start,
   double step = nominal;
   int cuts = 0;
   while (std::abs(control.target - reached) > 1e-12 * std::abs(nominal) * control.increments) {
+    throw_if_interrupted();  // Ctrl-C or SIGTERM: a push of a million increments stops here
     const double next =
         std::abs(control.target - reached) < std::abs(step) ? control.target : reached + step;
     Vector u = result.displacement;

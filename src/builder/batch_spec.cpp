@@ -21,6 +21,12 @@ std::optional<EnsembleError> ensemble_error(int copies, double perturbation, dou
                          fmt::format("a relative change of the records at the level of numerical "
                                      "noise is in (0, 0.01), got {}",
                                      perturbation)};
+  // Below about 1.1e-16, 1 + eps rounds to 1: every copy would be the unperturbed run.
+  if (!(1.0 + perturbation > 1.0 && 1.0 - perturbation < 1.0))
+    return EnsembleError{EnsembleNumber::perturbation,
+                         fmt::format("{} leaves the records unchanged: 1 + it is 1 in double "
+                                     "precision (it must be at least 1.2e-16)",
+                                     perturbation)};
   // The copies' factors reach 1 +- (copies / 2 + 1) eps at most.
   if (!(perturbation * (copies / 2 + 1) < 0.5))
     return EnsembleError{EnsembleNumber::perturbation,

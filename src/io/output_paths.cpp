@@ -36,13 +36,13 @@ void check_outputs_apart(const std::vector<NamedPath>& inputs,
     const NamedPath& output = outputs[k];
     for (const NamedPath& input : inputs)
       if (same_file(output.path, input.path))
-        throw InputError("", output.named_by,
+        throw InputError(output.in_file, output.named_by,
                          fmt::format("the output '{}' would overwrite the input '{}' ({}): "
                                      "choose another name",
                                      output.path, input.path, input.named_by));
     for (std::size_t j = 0; j < k; ++j)
       if (same_file(output.path, outputs[j].path))
-        throw InputError("", output.named_by,
+        throw InputError(output.in_file, output.named_by,
                          fmt::format("the output '{}' is also the output of {}: choose another "
                                      "name",
                                      output.path, outputs[j].named_by));

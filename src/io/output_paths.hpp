@@ -8,10 +8,12 @@
 
 namespace pound::io {
 
-// A file and what chose its name, for messages: "--out", "/recorders/0/file", "the model".
+// A file and what chose its name, for messages: "--out", "/recorders/0/file", "the model"; for
+// a field of a file, that file (an error about the output names it as its file).
 struct NamedPath {
   std::string path;
   std::string named_by;
+  std::string in_file = "";
 };
 
 // Throws InputError when an output is the same file as an input or as an earlier output: the

@@ -181,5 +181,19 @@ TEST_F(PushoverCommand, AMassThatNothingHoldsIsNamedWhenThePushStops) {
   EXPECT_EQ(point.exit_code, 0) << point.err;
 }
 
+// A 1-D model's DOF map has x only: --direction y read the next node's x (wrong numbers) or, at
+// the last node, past the map's end (a crash).
+TEST_F(PushoverCommand, AOneDimensionalModelIsPushedAlongXOnly) {
+  const std::string model = std::string(POUND_SOURCE_DIR) + "/models/two_sdof_girders.json";
+  for (const char* node : {"girder_1", "ground_2"}) {
+    const Outcome outcome = pound({"pushover", model, "--node", node, "--to", "0.05", "--direction",
+                                   "y", "--out", path("out").string()});
+    EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+    EXPECT_TRUE(contains(outcome.err, "--direction: the model is 1-D: its nodes move along x only"))
+        << outcome.err;
+  }
+  EXPECT_FALSE(std::filesystem::exists(path("out")));
+}
+
 }  // namespace
 }  // namespace pound::testing

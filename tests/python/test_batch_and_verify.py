@@ -176,3 +176,11 @@ def test_ctrl_c_stops_a_batch_with_keyboard_interrupt(repository, tmp_path):
     print(done.stdout, done.stderr)
     assert "interrupted after" in done.stdout
     assert float(done.stdout.split("interrupted after")[1].split()[0]) < 2.0
+
+
+def test_a_set_dict_may_name_its_files_with_pathlib(repository, tmp_path):
+    set_dict = girders_set(repository)
+    set_dict["models"] = [repository / "models" / "two_sdof_girders.json"]
+    set_dict["records"][0]["folder"] = repository / "ground_motions"
+    report = pound.batch(set_dict, tmp_path / "out")
+    assert report["completed"] == 8

@@ -2,7 +2,9 @@
 
 import csv
 import json
+import pathlib
 import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -180,3 +182,37 @@ def test_pushover_arguments_are_input_errors_naming_them(models):
                 model.pushover(**given)
             print(given, "->", raised.value)
             assert raised.value.path == where
+
+
+def test_a_1d_model_is_pushed_along_x_only(models):
+    # y of a node of a 1-D model would be the next node's x (it read past the last node).
+    model = pound.Model.from_file(models / "two_sdof_girders.json")
+    for node in ("girder_1", "ground_2"):
+        with pytest.raises(pound.InputError, match="1-D: its nodes move along x only") as raised:
+            model.pushover(node, 0.05, direction="y")
+        assert raised.value.path == "direction"
+
+
+PUSHED = """
+import sys
+sys.path.insert(0, {path!r})
+import os, signal, threading, time
+import pound
+model = pound.Model.from_file({model!r})
+threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
+start = time.monotonic()
+try:
+    model.pushover("bridge.p1.top", 0.04, increments=1000000)
+except KeyboardInterrupt:
+    print("interrupted after", round(time.monotonic() - start, 2))
+"""
+
+
+def test_ctrl_c_stops_a_pushover(models):
+    script = PUSHED.format(path=str(pathlib.Path(pound.__file__).parents[1]),
+                           model=str(models / "three_span_bridge_takeda.json"))
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                          timeout=120)
+    print(done.stdout, done.stderr)
+    assert "interrupted after" in done.stdout
+    assert float(done.stdout.split("interrupted after")[1].split()[0]) < 2.0

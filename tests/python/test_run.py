@@ -2,6 +2,7 @@
 
 import json
 import pathlib
+import signal
 import subprocess
 import sys
 import threading
@@ -400,3 +401,77 @@ def test_ensemble_arguments_are_checked_as_the_program_checks_its_options(models
             assert raised.value.path == where
     with pytest.raises(pound.InputError, match="ensemble only: add ensemble=N"):
         pound.run(model, jobs=2)
+
+
+def test_an_output_folder_that_cannot_be_made_is_said_before_the_solve(models, tmp_path):
+    (tmp_path / "a_file").write_text("not a folder")
+    calls = []
+    with pytest.raises(pound.OutputError) as raised:
+        pound.run(block_on_belt(models, 0.0015), out=tmp_path / "a_file" / "out",
+                  progress=lambda t, end: calls.append(t))
+    print(raised.value)
+    assert calls == []  # the solve never started
+    with pytest.raises(pound.InputError) as raised:
+        pound.run(models / "rod_impact.json", out="")
+    assert raised.value.path == "out"
+
+
+def test_arguments_of_the_wrong_type_are_input_errors_naming_them(models, tmp_path):
+    girders = models / "two_sdof_girders.json"
+    calls = {"out": lambda: pound.run(girders, out=3),
+             "histories": lambda: pound.run(girders, histories="no"),
+             "check": lambda: pound.run(girders, check=None),
+             "perturbation": lambda: pound.run(girders, ensemble=2, perturbation=10**400),
+             "time_limit": lambda: pound.run(girders, time_limit=10**400),
+             "max_steps": lambda: pound.run(girders, max_steps=np.uint64(2**63)),
+             "path": lambda: pound.Model.from_file(None),
+             "set": lambda: pound.batch([str(girders)], tmp_path / "b"),
+             "resume": lambda: pound.batch({"models": [], "records": []}, tmp_path / "c",
+                                           resume="no")}
+    for where, call in calls.items():
+        with pytest.raises(pound.InputError) as raised:
+            call()
+        print(raised.value)
+        assert raised.value.path == where
+
+
+def test_ensemble_progress_ends_with_one_call_at_its_end(models):
+    calls = []
+    pound.run(models / "two_sdof_girders.json", ensemble=6, histories=False,
+              progress=lambda done, runs: calls.append((done, runs)))
+    print(calls)
+    assert calls[-1] == (7, 7) and calls.count((7, 7)) == 1
+
+
+def test_a_perturbation_that_leaves_the_records_unchanged_is_refused(models):
+    with pytest.raises(pound.InputError, match="leaves the records unchanged") as raised:
+        pound.run(models / "two_sdof_girders.json", ensemble=2, perturbation=1e-300)
+    assert raised.value.path == "perturbation"
+
+
+def test_a_missing_table_is_a_key_error_naming_the_tables(models):
+    result = pound.run(models / "two_sdof_girders.json")
+    with pytest.raises(KeyError, match="no table 'nope'"):
+        result.units("nope")
+
+
+SIGTERMED = """
+import sys
+sys.path.insert(0, {path!r})
+import os, signal, threading
+import pound
+threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGTERM)).start()
+try:
+    pound.run(pound.Model.from_file({model!r}), max_steps=0)
+except KeyboardInterrupt:
+    print("survived SIGTERM as a KeyboardInterrupt")
+"""
+
+
+def test_sigterm_ends_python_as_it_would_without_pound(models):
+    script = SIGTERMED.format(path=str(pathlib.Path(pound.__file__).parents[1]),
+                              model=str(models / "block_on_belt.json"))
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                          timeout=60)
+    print(done.returncode, done.stdout, done.stderr)
+    assert done.returncode == -signal.SIGTERM and "survived" not in done.stdout
