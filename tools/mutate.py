@@ -523,7 +523,7 @@ def plan(harness, inputs, seed):
 # ----------------------------------------------------------------------------------- options
 
 OPTION_VALUES = ("0", "-1", "1e308", "-1e308", "nan", "inf", "-inf", "1e-320", "abc", "", "1e",
-                 "5e9", "2147483648", "-0", "0x10", "1,2", "3.5", "0.5")
+                 "5e9", "2147483648", "-0", "0x10", "1,2", "3.5", "0.5", "y")
 RECORD = "ground_motions/synthetic_firm_01.AT2"
 # A valid invocation of each command (paths in the mirror tree), to which one option is added.
 OPTION_BASES = {
@@ -532,6 +532,9 @@ OPTION_BASES = {
     "verify two-element": ["verify", "two-element"],
     "modes": ["modes", "models/two_sdof_girders.json"],
     "pushover": ["pushover", "models/three_span_bridge.json", "--node", "bridge.g1.n2", "--to", "0.1"],
+    # A 1-D model: --direction y read past its DOF map (the value "y" above).
+    "pushover 1-D": ["pushover", "models/two_sdof_girders.json", "--node", "ground_2", "--to",
+                     "0.05"],
     "spectrum": ["spectrum", RECORD],
     "batch": ["batch", "sets/adjacent_buildings_pounding.json", "--quiet", "--out", "batch_out"],
     "study rod-impact": ["study", "rod-impact", "--quick", "--repeats", "1"],
