@@ -218,6 +218,41 @@ std::string capacity_text(const CapacitySummary& summary) {
   return text;
 }
 
+// The push's Newton takes each link's force law; a hard contact has none, so it would let the
+// structure pass through it (the hard-contact bridge pushed 0.3 m through its joints).
+void refuse_hard_contacts(const builder::BuiltModel& built,
+                          const assembly::StructuralSystem& system, const std::string& model_path) {
+  for (Index k = 0; k < system.links().count(); ++k)
+    if (system.links().law(k).is_hard_contact())
+      throw InputError(model_path, built.link_origins.at(static_cast<std::size_t>(k)),
+                       fmt::format("link '{}' is a hard_contact, which a pushover does not take "
+                                   "yet (it would push through it); give it a penalty law (e.g. "
+                                   "gap_spring) for the pushover",
+                                   built.model.links.at(static_cast<std::size_t>(k)).id));
+}
+
+// The control node's equation along the push, which must be its own (free, not tied).
+Index control_equation(const builder::BuiltModel& built, const assembly::StructuralSystem& system,
+                       Index node, int direction, const std::string& model_path,
+                       const PushoverRequest& request) {
+  // A 1-D (axial) model's nodes move along x only: y would read the next node's x.
+  if (direction >= system.dofs().dofs_per_node())
+    throw InputError(
+        model_path, request.name("direction"),
+        fmt::format("the model is {}-D: its nodes move along x only", built.model.dimension));
+  if (system.dofs().tied(node, direction))
+    throw InputError(model_path, request.name("node"),
+                     fmt::format("node '{}' is tied to its master along {} by a constraint: push "
+                                 "the master",
+                                 request.node, request.direction));
+  const Index control = system.dofs().own_equation(node, direction);
+  if (control < 0)
+    throw InputError(model_path, request.name("node"),
+                     fmt::format("node '{}' is fixed along {}: push a free node", request.node,
+                                 request.direction));
+  return control;
+}
+
 // Why the push stopped, with the DOFs the pattern loads that nothing held (the likely mechanism:
 // a mass the pattern pushes away from the links that would hold it).
 std::string stopped_words(const builder::BuiltModel& built,
@@ -270,31 +305,10 @@ PushoverFindings pushover_findings(LoadedModel loaded, const std::string& model_
       throw error.file().empty() ? error.in_file(model_path) : error;
     }
   }();
-  // The push's Newton takes each link's force law; a hard contact has none, so it would let the
-  // structure pass through it (the hard-contact bridge pushed 0.3 m through its joints).
-  for (Index k = 0; k < system.links().count(); ++k)
-    if (system.links().law(k).is_hard_contact())
-      throw InputError(model_path, loaded.built.link_origins.at(static_cast<std::size_t>(k)),
-                       fmt::format("link '{}' is a hard_contact, which a pushover does not take "
-                                   "yet (it would push through it); give it a penalty law (e.g. "
-                                   "gap_spring) for the pushover",
-                                   loaded.built.model.links.at(static_cast<std::size_t>(k)).id));
+  refuse_hard_contacts(loaded.built, system, model_path);
   const int direction = request.direction == "x" ? 0 : 1;
-  // A 1-D (axial) model's nodes move along x only: y would read the next node's x.
-  if (direction >= system.dofs().dofs_per_node())
-    throw InputError(model_path, request.name("direction"),
-                     fmt::format("the model is {}-D: its nodes move along x only",
-                                 loaded.built.model.dimension));
-  const Index control = system.dofs().own_equation(node->second, direction);
-  if (system.dofs().tied(node->second, direction))
-    throw InputError(model_path, request.name("node"),
-                     fmt::format("node '{}' is tied to its master along {} by a constraint: push "
-                                 "the master",
-                                 request.node, request.direction));
-  if (control < 0)
-    throw InputError(model_path, request.name("node"),
-                     fmt::format("node '{}' is fixed along {}: push a free node", request.node,
-                                 request.direction));
+  const Index control =
+      control_equation(loaded.built, system, node->second, direction, model_path, request);
   check_target_resolved(model_path, request, loaded.built.model);
   assembly::PushoverControl settings{
       .equation = control, .target = request.target, .increments = request.increments};
