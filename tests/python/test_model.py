@@ -169,7 +169,8 @@ def test_a_pushover_that_cannot_reach_its_target_is_an_analysis_error(models):
 
 def test_pushover_arguments_are_input_errors_naming_them(models):
     model = pound.Model.from_file(models / "three_span_bridge_takeda.json")
-    bad = {"node": [dict(node="nope", to=0.04), dict(node=3, to=0.04)],
+    bad = {"node": [dict(node="nope", to=0.04), dict(node=3, to=0.04),
+                    dict(node="bridge.p1.base", to=0.04)],  # fixed
            "to": [dict(node="bridge.p1.top", to=0), dict(node="bridge.p1.top", to=float("nan")),
                   dict(node="bridge.p1.top", to="0.04"), dict(node="bridge.p1.top", to=1e-12)],
            "direction": [dict(node="bridge.p1.top", to=0.04, direction="z")],
@@ -182,6 +183,9 @@ def test_pushover_arguments_are_input_errors_naming_them(models):
                 model.pushover(**given)
             print(given, "->", raised.value)
             assert raised.value.path == where
+    with pytest.raises(pound.InputError, match="tied to its master along x") as raised:
+        pound.Model.from_file(models / "diaphragm_storey_3d.json").pushover("top1", 0.01)
+    assert raised.value.path == "node"
 
 
 def test_a_1d_model_is_pushed_along_x_only(models):
