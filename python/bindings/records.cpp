@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -20,8 +21,12 @@ namespace py = pybind11;
 namespace pound::python {
 namespace {
 
-io::AccelerationUnit unit_named(const std::string& units) {
-  return io::parse_acceleration_unit(units);  // std::invalid_argument: ValueError
+io::AccelerationUnit unit_named(const std::string& record, const std::string& units) {
+  try {
+    return io::parse_acceleration_unit(units);
+  } catch (const std::invalid_argument& unknown) {
+    throw InputError(record, "units", unknown.what());
+  }
 }
 
 // g in units in which the values in `unit` stay as they are: the records are kept as given.
@@ -37,7 +42,7 @@ std::tuple<std::string, double, py::array_t<double>, std::string, std::string> r
   record_format.column = column;
   record_format.time_step = time_step;
   record_format.time_column = time_column;
-  record_format.units = unit_named(units);
+  record_format.units = unit_named(path, units);
   io::RecordSource source;
   model::GroundMotion motion;
   {
@@ -51,7 +56,7 @@ std::tuple<std::string, double, py::array_t<double>, std::string, std::string> r
 double check_samples(const std::string& name, const std::vector<double>& accelerations,
                      std::optional<double> time_step, const std::vector<double>& times,
                      const std::string& units) {
-  const io::AccelerationUnit unit = unit_named(units);
+  const io::AccelerationUnit unit = unit_named(name, units);
   return io::ground_motion_from_samples(name, accelerations, time_step, times, unit,
                                         gravity_in(unit))
       .time_step;

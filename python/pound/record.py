@@ -6,7 +6,7 @@ import numbers
 import numpy as np
 
 from pound import _core
-from pound._documents import INT_MAX, flag, integer, path_argument
+from pound._documents import INT_MAX, flag, integer, path_argument, real
 from pound.errors import InputError
 
 
@@ -14,7 +14,7 @@ def _samples(values, name, what):
     """A 1-D float64 array of `values`, or InputError naming `what`."""
     try:
         array = np.asarray(values, dtype=np.float64)
-    except (TypeError, ValueError) as error:
+    except (TypeError, ValueError, OverflowError) as error:
         raise InputError(name, what, f"expected numbers: {error}") from None
     if array.ndim != 1:
         raise InputError(name, what, f"expected a 1-D array, got shape {array.shape}")
@@ -24,9 +24,17 @@ def _samples(values, name, what):
 def _scale(scale, name):
     if scale is None:
         return None
-    if not isinstance(scale, numbers.Real) or not math.isfinite(scale) or not scale > 0:
+    if isinstance(scale, bool) or not isinstance(scale, numbers.Real) or \
+            not math.isfinite(real(scale, "scale")) or not scale > 0:
         raise InputError(name, "scale", f"expected a positive number, got {scale!r}")
     return float(scale)
+
+
+def _word(value, name, where):
+    """A str argument (a unit, a format, a name)."""
+    if not isinstance(value, str):
+        raise InputError(name, where, f"expected a str, got {value!r}")
+    return value
 
 
 class Record:
@@ -41,13 +49,16 @@ class Record:
     """
 
     def __init__(self, times_or_dt, accelerations, units="g", *, name="<array>", scale=None):
-        self.name = name
-        self.units = units
+        self.name = _word(name, "", "name")
+        self.units = _word(units, name, "units")
         self.scale = _scale(scale, name)
         self.path = None
         self._values = _samples(accelerations, name, "accelerations")
+        if isinstance(times_or_dt, bool):
+            raise InputError(name, "times_or_dt",
+                             f"expected a time step or times, got {times_or_dt}")
         if isinstance(times_or_dt, numbers.Real):
-            self._given_step, self._times = float(times_or_dt), np.empty(0)
+            self._given_step, self._times = real(times_or_dt, "times_or_dt"), np.empty(0)
         else:
             self._given_step, self._times = None, _samples(times_or_dt, name, "times")
         self.time_step = _core.check_samples(name, self._values, self._given_step, self._times,
@@ -62,6 +73,10 @@ class Record:
         state it, ``format`` "auto", "at2" or "columns"."""
         path = path_argument(path, "path", "a record file's path")
         time_column = flag(time_column, "time_column")
+        units, format = _word(units, path, "units"), _word(format, path, "format")
+        dt = None if dt is None else real(dt, "dt")
+        if dt is not None and not (math.isfinite(dt) and dt > 0.0):
+            raise InputError(path, "dt", f"expected a time step > 0, got {dt}")
         column = column if column is not None else (2 if time_column else 1)
         record = cls.__new__(cls)
         column = integer(column, "column", -INT_MAX, INT_MAX)
@@ -101,7 +116,7 @@ class Record:
         periods = (np.asarray(_core.default_spectrum_periods()) if periods is None
                    else _samples(np.atleast_1d(periods), self.name, "periods"))
         sa = _core.spectrum(self.name, self.time_step, self.accelerations, periods,
-                            float(damping))
+                            real(damping, "damping"))
         return {"periods": periods, "sa": np.asarray(sa)}
 
     def pair_spectrum(self, second, periods=None, damping=0.05, rotation=0.0):
@@ -119,13 +134,14 @@ class Record:
             raise InputError(second.name, "units",
                              f"the pair's components must be in one unit, got {self.units!r} "
                              f"and {second.units!r}")
-        if not isinstance(rotation, numbers.Real):
+        if isinstance(rotation, bool) or not isinstance(rotation, numbers.Real):
             raise InputError(second.name, "rotation", f"expected an angle, got {rotation!r}")
+        rotation, damping = real(rotation, "rotation"), real(damping, "damping")
         periods = (np.asarray(_core.default_spectrum_periods()) if periods is None
                    else _samples(np.atleast_1d(periods), self.name, "periods"))
         result = _core.pair_spectrum(self.name, self.time_step, self.accelerations, second.name,
                                      second.time_step, second.accelerations, periods,
-                                     float(damping), float(rotation))
+                                     damping, rotation)
         return {"periods": periods, **{key: np.asarray(value) for key, value in result.items()}}
 
     def _motion(self):

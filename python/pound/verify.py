@@ -7,6 +7,7 @@ import re
 import numpy as np
 
 from pound import _core
+from pound._documents import INT_MAX, integer, real
 from pound.errors import InputError
 
 
@@ -34,6 +35,10 @@ def _check_keywords(options):
             kind = "a string" if expected is str else (
                 "an integer" if expected is numbers.Integral else "a number")
             raise InputError("", name, f"expected {kind}, got {value!r}")
+        if expected is numbers.Integral:
+            options[name] = integer(value, name, -INT_MAX, INT_MAX)
+        elif expected is numbers.Real:
+            options[name] = real(value, name)
 
 
 def rod_impact(**options):
