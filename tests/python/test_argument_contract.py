@@ -6,7 +6,6 @@ typo or a NumPy pipeline gives."""
 import math
 
 import numpy as np
-import pytest
 
 import pound
 
