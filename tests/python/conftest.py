@@ -3,6 +3,8 @@
 import os
 import pathlib
 import shutil
+import subprocess
+import sys
 
 import pytest
 
@@ -34,3 +36,21 @@ def shared_records():
     if not folder.is_dir():
         pytest.skip("../shared/ground_motions is absent (a clone on its own)")
     return folder
+
+
+@pytest.fixture
+def signalled():
+    """Runs `script` (code using `pound`, `start` its start time) in a fresh interpreter that sends
+    itself `signal_name` after 0.5 s; returns the finished process. The module is this build's."""
+    module = pathlib.Path(__import__("pound").__file__).parents[1]
+
+    def run(script, signal_name="SIGINT"):
+        prelude = (f"import json, os, signal, sys, threading, time\n"
+                   f"sys.path.insert(0, {str(module)!r})\nimport pound\nthreading.Timer(0.5, lambda: os.kill(os.getpid(), "
+                   f"signal.{signal_name})).start()\nstart = time.monotonic()\n")
+        done = subprocess.run([sys.executable, "-c", prelude + script], capture_output=True,
+                              text=True, timeout=120)
+        print(done.returncode, done.stdout, done.stderr)
+        return done
+
+    return run

@@ -2,9 +2,7 @@
 
 import csv
 import json
-import pathlib
 import subprocess
-import sys
 
 import numpy as np
 import pytest
@@ -150,30 +148,18 @@ def test_a_batch_names_out_and_resume_as_python_arguments(repository, tmp_path):
     assert "--" not in str(raised.value)
 
 
-INTERRUPTED_BATCH = """
-import json, os, signal, sys, threading, time
-sys.path.insert(0, {path!r})
-import pound
-threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
-start = time.monotonic()
-try:
-    pound.batch(json.loads({set!r}), {out!r}, jobs=2)
-except KeyboardInterrupt:
-    print("interrupted after", round(time.monotonic() - start, 2))
-"""
-
-
-def test_ctrl_c_stops_a_batch_with_keyboard_interrupt(repository, tmp_path):
+def test_ctrl_c_stops_a_batch_with_keyboard_interrupt(repository, tmp_path, signalled):
     model = json.loads((repository / "models" / "two_sdof_girders.json").read_text())
     model["analysis"]["duration"] = 2.0e4  # about 2 s a case past its record, 8 cases
     (tmp_path / "long.json").write_text(json.dumps(model))
     set_dict = girders_set(repository)
     set_dict["models"] = [str(tmp_path / "long.json")]
-    script = INTERRUPTED_BATCH.format(path=str(pathlib.Path(pound.__file__).parents[1]),
-                                      set=json.dumps(set_dict), out=str(tmp_path / "out"))
-    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
-                          timeout=120)
-    print(done.stdout, done.stderr)
+    done = signalled(f"""
+try:
+    pound.batch(json.loads({json.dumps(set_dict)!r}), {str(tmp_path / "out")!r}, jobs=2)
+except KeyboardInterrupt:
+    print("interrupted after", round(time.monotonic() - start, 2))
+""")
     assert "interrupted after" in done.stdout
     assert float(done.stdout.split("interrupted after")[1].split()[0]) < 2.0
 

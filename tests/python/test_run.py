@@ -4,7 +4,6 @@ import json
 import pathlib
 import signal
 import subprocess
-import sys
 import threading
 
 import numpy as np
@@ -240,29 +239,17 @@ def test_the_gil_is_released_while_a_run_solves(models):
     assert loops > 100000
 
 
-INTERRUPTED = """
-import sys, time, threading, os, signal
-sys.path.insert(0, {path!r})
-import pound
-model = pound.Model.from_file({model!r})
-threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
-start = time.monotonic()
+def test_ctrl_c_stops_a_run_with_keyboard_interrupt(models, signalled):
+    long_model = models / "block_on_belt.json"  # about 3 s
+    done = signalled(f"""
+model = pound.Model.from_file({str(long_model)!r})
 try:
     pound.run(model, max_steps=0)
 except KeyboardInterrupt:
     print("interrupted after", round(time.monotonic() - start, 2))
-    pound.run({short!r})  # the next run starts afresh
+    pound.run({str(models / "rod_impact.json")!r})  # the next run starts afresh
     print("next run completed")
-"""
-
-
-def test_ctrl_c_stops_a_run_with_keyboard_interrupt(models):
-    long_model = models / "block_on_belt.json"  # about 3 s
-    script = INTERRUPTED.format(path=str(pathlib.Path(pound.__file__).parents[1]),
-                                model=str(long_model), short=str(models / "rod_impact.json"))
-    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
-                          timeout=60)
-    print(done.stdout, done.stderr)
+""")
     assert "interrupted after" in done.stdout
     assert float(done.stdout.split("interrupted after")[1].split()[0]) < 2.0
     assert "next run completed" in done.stdout
@@ -455,23 +442,11 @@ def test_a_missing_table_is_a_key_error_naming_the_tables(models):
         result.units("nope")
 
 
-SIGTERMED = """
-import sys
-sys.path.insert(0, {path!r})
-import os, signal, threading
-import pound
-threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGTERM)).start()
+def test_sigterm_ends_python_as_it_would_without_pound(models, signalled):
+    done = signalled(f"""
 try:
-    pound.run(pound.Model.from_file({model!r}), max_steps=0)
+    pound.run(pound.Model.from_file({str(models / "block_on_belt.json")!r}), max_steps=0)
 except KeyboardInterrupt:
     print("survived SIGTERM as a KeyboardInterrupt")
-"""
-
-
-def test_sigterm_ends_python_as_it_would_without_pound(models):
-    script = SIGTERMED.format(path=str(pathlib.Path(pound.__file__).parents[1]),
-                              model=str(models / "block_on_belt.json"))
-    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
-                          timeout=60)
-    print(done.returncode, done.stdout, done.stderr)
+""", "SIGTERM")
     assert done.returncode == -signal.SIGTERM and "survived" not in done.stdout
