@@ -33,13 +33,21 @@ void translate_errors(std::exception_ptr failure) {
   } catch (const pound::io::OutputError& error) {
     raise_package_error("OutputError", py::make_tuple(std::string(error.what())));
   } catch (const pound::Interrupted& stopped) {
-    // SIGTERM as Python would have taken it without pound's handler (restored by now): by
-    // default the process ends; a handler of the script's own runs, and what it raises is raised.
-    if (stopped.signal() == SIGTERM) {
+    // The signal as Python would have taken it without pound's handlers (restored by now):
+    // Python's handler for SIGINT raises KeyboardInterrupt, SIGTERM's default ends the process,
+    // and a handler of the script's own runs instead, what it raises being raised. One that
+    // returns leaves the call interrupted, as a system call is, with InterruptedError: the run
+    // cannot go on from where it stopped.
+    if (stopped.signal() == SIGTERM)
       ::raise(SIGTERM);
-      if (PyErr_CheckSignals() != 0) return;
-    }
-    PyErr_SetNone(PyExc_KeyboardInterrupt);
+    else
+      PyErr_SetInterrupt();
+    if (PyErr_CheckSignals() != 0) return;
+    const char* name = stopped.signal() == SIGTERM ? "SIGTERM" : "SIGINT";
+    PyErr_Format(PyExc_InterruptedError,
+                 "stopped by %s: the script's handler returned, and what was under way cannot go "
+                 "on from where it stopped",
+                 name);
   }
 }
 

@@ -40,14 +40,10 @@ struct EnsembleArguments {
   int jobs = 0;
 
   app::EnsembleOptions options() const {
-    if (const auto error = builder::ensemble_error(*copies, perturbation, robust_spread))
-      throw InputError("",
-                       error->number == builder::EnsembleNumber::copies         ? "ensemble"
-                       : error->number == builder::EnsembleNumber::perturbation ? "perturbation"
-                                                                                : "robust_spread",
-                       error->why);
-    if (jobs < 0) throw InputError("", "jobs", fmt::format("expected >= 0, got {}", jobs));
-    return {*copies, perturbation, robust_spread, jobs};
+    const app::EnsembleOptions options{*copies, perturbation, robust_spread, jobs};
+    if (const auto error = app::ensemble_options_error(options))
+      throw InputError("", error->argument, error->why);
+    return options;
   }
 };
 

@@ -120,17 +120,24 @@ results::CaseSummary EnsembleResult::median_summary() const {
   return summary;
 }
 
-std::string ensemble_options_error(const EnsembleOptions& options) {
+std::string EnsembleOptionsError::option() const {
+  std::string name = "--" + argument;
+  std::replace(name.begin(), name.end(), '_', '-');
+  return name;
+}
+
+std::optional<EnsembleOptionsError> ensemble_options_error(const EnsembleOptions& options) {
   if (const auto error =
           builder::ensemble_error(options.copies, options.perturbation, options.robust_spread)) {
-    const char* option = error->number == builder::EnsembleNumber::copies ? "--ensemble"
-                         : error->number == builder::EnsembleNumber::perturbation
-                             ? "--perturbation"
-                             : "--robust-spread";
-    return fmt::format("{}: {}", option, error->why);
+    const char* argument = error->number == builder::EnsembleNumber::copies ? "ensemble"
+                           : error->number == builder::EnsembleNumber::perturbation
+                               ? "perturbation"
+                               : "robust_spread";
+    return EnsembleOptionsError{argument, error->why};
   }
-  if (options.jobs < 0) return "--jobs must be >= 0";
-  return {};
+  if (options.jobs < 0)
+    return EnsembleOptionsError{"jobs", fmt::format("must be >= 0, got {}", options.jobs)};
+  return std::nullopt;
 }
 
 EnsembleResult run_ensemble(const RunRequest& request, const EnsembleOptions& options,

@@ -9,6 +9,7 @@
 // largest |value| over the runs). In a linear model every response scales with the record, so
 // its spread is the perturbations' own (2 k_max eps), far inside any threshold.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,8 +49,14 @@ struct EnsembleResult {
   results::CaseSummary median_summary() const;
 };
 
-// What is wrong with the options, or empty (named as the command-line options).
-std::string ensemble_options_error(const EnsembleOptions& options);
+// What is wrong with the options: the number as Python's pound.run names it ("ensemble",
+// "perturbation", "robust_spread", "jobs") and why; option() is the command line's name for it.
+struct EnsembleOptionsError {
+  std::string argument;
+  std::string why;
+  std::string option() const;  // "--robust-spread"
+};
+std::optional<EnsembleOptionsError> ensemble_options_error(const EnsembleOptions& options);
 
 // Runs the model as `request` asks (its histories included) and the copies (histories off) on
 // `jobs` threads; the numbers do not depend on the thread count. InputErrors throw as run_model's.

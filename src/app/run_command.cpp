@@ -168,7 +168,9 @@ int run_command(const Arguments& arguments) {
   if (parsed->count("max-steps")) request.max_steps = (*parsed)["max-steps"].as<long>();
   const bool with_ensemble = parsed->count("ensemble") > 0;
   std::string error = request_error(request);
-  if (error.empty() && with_ensemble) error = ensemble_options_error(ensemble);
+  if (error.empty() && with_ensemble)
+    if (const auto wrong = ensemble_options_error(ensemble))
+      error = fmt::format("{}: {}", wrong->option(), wrong->why);
   if (error.empty() && parsed->count("progress") &&
       !(progress_interval > 0.0 && std::isfinite(progress_interval)))
     error = "--progress must be a positive number of seconds";

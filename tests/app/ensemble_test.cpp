@@ -166,7 +166,8 @@ TEST_F(Ensemble, BadOptionsAreRefusedByNameAndNothingIsWritten) {
        std::vector<std::pair<std::string, std::string>>{{"--ensemble", "0"},
                                                         {"--perturbation", "0"},
                                                         {"--perturbation", "0.02"},
-                                                        {"--robust-spread", "1.5"}}) {
+                                                        {"--robust-spread", "1.5"},
+                                                        {"--jobs", "-1"}}) {
     std::vector<std::string> arguments{"run", model, "--out", path("bad").string()};
     if (option != "--ensemble") arguments.insert(arguments.end(), {"--ensemble", "4"});
     arguments.insert(arguments.end(), {option, value});

@@ -450,3 +450,37 @@ except KeyboardInterrupt:
     print("survived SIGTERM as a KeyboardInterrupt")
 """, "SIGTERM")
     assert done.returncode == -signal.SIGTERM and "survived" not in done.stdout
+
+
+def test_a_handler_of_the_script_runs_and_what_it_raises_is_raised(models, signalled):
+    # SIGINT and SIGTERM reach the script's own handlers, as they would without pound.
+    for name in ("SIGINT", "SIGTERM"):
+        done = signalled(f"""
+class Stop(Exception):
+    pass
+def stop(number, frame):
+    raise Stop(signal.Signals(number).name)
+signal.signal(signal.{name}, stop)
+try:
+    pound.run(pound.Model.from_file({str(models / "block_on_belt.json")!r}), max_steps=0)
+except Stop as raised:
+    print("raised", raised, "after", round(time.monotonic() - start, 2))
+""", name)
+        assert done.returncode == 0 and f"raised {name} after" in done.stdout
+        assert float(done.stdout.split("after")[1].split()[0]) < 2.0
+
+
+def test_a_handler_that_returns_leaves_the_run_interrupted(models, signalled):
+    # A handler that only takes note (a graceful shutdown's flag): the run cannot go on from
+    # where it stopped, and says so as an interrupted system call does.
+    for name in ("SIGINT", "SIGTERM"):
+        done = signalled(f"""
+noted = []
+signal.signal(signal.{name}, lambda number, frame: noted.append(number))
+try:
+    pound.run(pound.Model.from_file({str(models / "block_on_belt.json")!r}), max_steps=0)
+except InterruptedError as stopped:
+    print("noted", len(noted), "|", stopped)
+""", name)
+        assert done.returncode == 0 and "noted 1 |" in done.stdout
+        assert f"stopped by {name}: the script's handler returned" in done.stdout
