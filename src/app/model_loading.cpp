@@ -105,6 +105,7 @@ void read_records_and_build(const std::string& path, bool first_as_given, Loaded
     format.time_step = e.time_step;
     format.time_column = e.time_column;
     format.units = io::parse_acceleration_unit(e.units);
+    format.second = spec.units.second();
     loaded.record_paths.push_back(record);
     if (k == 0 && given_samples) {
       loaded.records.push_back(io::ground_motion_from_samples(

@@ -140,8 +140,10 @@ int run_command(const Arguments& arguments) {
                  "model's excitation's, else g)")(
       "column", po::value<int>(),
       "--motion: the column to read in a columns file, from 1 (default 1, or 2 with "
-      "--time-column)")("dt", po::value<double>(),
-                        "--motion: time step [s] of a columns file that does not state it")(
+      "--time-column)")(
+      "dt", po::value<double>(),
+      "--motion: time step of a columns file that does not state it, in the model's "
+      "time unit (s unless its units say ms)")(
       "time-column", "--motion: the first column of a columns file is time")(
       "scale", po::value<double>(), "--motion: multiply the record by this factor")(
       "pga", po::value<double>(), "--motion: scale the record to this peak acceleration [g]")(

@@ -377,12 +377,18 @@ std::optional<StatedTimeStep> stated_time_step(const std::string& path,
   return std::nullopt;
 }
 
+// `in_file` and `given` in the model's time unit, of which `second` is one second.
 void require_same_time_step(const std::string& path, int line, double in_file,
-                            const std::optional<double>& given) {
+                            const std::optional<double>& given, double second) {
   if (!given) return;
   if (std::abs(*given - in_file) > kTimeStepAgreement * std::abs(in_file))
     fail(path, line,
-         fmt::format("the file gives dt = {:g} but the time step given is {:g}", in_file, *given));
+         second == 1.0
+             ? fmt::format("the file gives dt = {:g} but the time step given is {:g}", in_file,
+                           *given)
+             : fmt::format("the file gives dt = {:g} s, {:g} in the model's time unit, but the "
+                           "time step given is {:g}",
+                           in_file / second, in_file, *given));
 }
 
 // ---- units ---------------------------------------------------------------------------------
@@ -513,9 +519,9 @@ std::vector<double> read_at2(const std::string& path, const std::vector<Line>& l
                                  lines.begin() + static_cast<std::ptrdiff_t>(size_index) + 1);
   require_acceleration(path, header);
   const RecordSize size = read_size_line(path, size_line);
-  require_same_time_step(path, size_line.number, size.time_step, format.time_step);
+  time_step = size.time_step * format.second;
+  require_same_time_step(path, size_line.number, time_step, format.time_step, format.second);
   require_stated_units(path, header, format.units);
-  time_step = size.time_step;
 
   // NPTS is only the file's claim: a corrupt one (10^18) must end as "the file ends after n of
   // the values", not exhaust memory. Each value takes at least one character of the file.
@@ -575,17 +581,19 @@ double time_column_step(const std::string& path, const std::vector<double>& time
 double columns_time_step(const std::string& path, const std::vector<Line>& header,
                          const RecordFormat& format, const std::vector<double>& times,
                          const std::vector<int>& rows) {
-  const auto stated = stated_time_step(path, header);
+  auto stated = stated_time_step(path, header);
+  if (stated) stated->value *= format.second;
   if (format.time_column) {
-    const double time_step = time_column_step(path, times, rows);
-    require_same_time_step(path, rows.front(), time_step, format.time_step);
-    if (stated) require_same_time_step(path, stated->line, stated->value, time_step);
+    const double time_step = time_column_step(path, times, rows) * format.second;
+    require_same_time_step(path, rows.front(), time_step, format.time_step, format.second);
+    if (stated) require_same_time_step(path, stated->line, stated->value, time_step, format.second);
     return time_step;
   }
   if (format.time_step) {
     if (!(*format.time_step > 0.0) || !std::isfinite(*format.time_step))
       fail(path, 0, fmt::format("the time step must be positive; got {:g}", *format.time_step));
-    if (stated) require_same_time_step(path, stated->line, stated->value, format.time_step);
+    if (stated)
+      require_same_time_step(path, stated->line, stated->value, format.time_step, format.second);
     return *format.time_step;
   }
   if (stated) return stated->value;

@@ -38,6 +38,10 @@ struct RecordFormat {
   std::optional<double> time_step;
   bool time_column = false;  // the first column is time (uniform; dt is derived from it)
   AccelerationUnit units = AccelerationUnit::g;  // of the values in the file; AT2 files are in g
+  // One second in the model's time unit (1000 for ms). The times a file states (an .AT2's DT, a
+  // columns header's dt, a time column) are in seconds, as records are distributed; `time_step`,
+  // given beside the file, and the record returned are in the model's unit.
+  double second = 1.0;
 };
 
 // What a record was read from, for a run to be traced to it: the format read ("at2" or

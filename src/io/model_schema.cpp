@@ -1425,11 +1425,17 @@ const Fields<ExcitationSpec>& record_format_fields() {
           .always_written(),
       optional("column", &ExcitationSpec::column, Number<int>{at_least(1)},
                "columns: the column to read, from 1 (an .AT2 file has one component: none "
-               "other than 1 there)"),
+               "other than 1 there)")
+          .default_text("1, or 2 with time_column"),
       optional("time_step", &ExcitationSpec::time_step, Number<>{positive},
                "columns: the sampling interval, unless the file gives it [T]"),
       optional("time_column", &ExcitationSpec::time_column, Flag{},
-               "columns: the first column is time"),
+               "columns: the first column is time [s]"),
+      // As `pound run --time-column` and `pound spectrum --time-column`: the values follow the
+      // time column unless the column is given.
+      rule<ExcitationSpec>([](JsonObject& object, ExcitationSpec& excitation, Context&) {
+        if (excitation.time_column && !object.has("column")) excitation.column = 2;
+      }),
       optional("units", &ExcitationSpec::units, names_choice({"g", "m/s2", "cm/s2", "model"}),
                "of the file's values (AT2 files are in g)")
           .always_written(),

@@ -473,6 +473,40 @@ TEST(GroundMotionReader, ParsesTextAsTheFileReaderReadsTheFile) {
   EXPECT_EQ(from_text.acceleration, from_file.acceleration);
 }
 
+// A file's times are seconds (an .AT2's DT, a header's dt, a time column): in a model whose time
+// unit is the millisecond they are 1000 times as many units; a time step given beside the file
+// is in the model's unit already. (An .AT2's DT was read as 0.01 ms: a 25 s record in 25 ms.)
+TEST(GroundMotionReader, AFilesSecondsBecomeTheModelsTimeUnit) {
+  RecordFormat in_ms;
+  in_ms.second = 1000.0;
+  const std::string at2 =
+      "PEER\nRECORD\nACCELERATION TIME SERIES IN UNITS OF G\n"
+      "NPTS=    4, DT=   .0100 SEC\n  .1 .2 .3 .4\n";
+  EXPECT_DOUBLE_EQ(parse_ground_motion(at2, "r.AT2", RecordFormat{}, 1.0).time_step, 0.01);
+  EXPECT_DOUBLE_EQ(parse_ground_motion(at2, "r.AT2", in_ms, 1.0).time_step, 10.0);
+  RecordFormat times = in_ms;
+  times.time_column = true;
+  times.column = 2;
+  EXPECT_DOUBLE_EQ(
+      parse_ground_motion("0 0.1\n0.005 0.2\n0.01 0.3\n", "t.txt", times, 1.0).time_step, 5.0);
+  RecordFormat stated = in_ms;
+  EXPECT_DOUBLE_EQ(
+      parse_ground_motion("# dt = 0.02 sec\n0.1\n0.2\n", "h.txt", stated, 1.0).time_step, 20.0);
+  stated.time_step = 20.0;  // given in ms: agrees with the header's 0.02 s
+  EXPECT_DOUBLE_EQ(
+      parse_ground_motion("# dt = 0.02 sec\n0.1\n0.2\n", "h.txt", stated, 1.0).time_step, 20.0);
+  stated.time_step = 0.02;  // the header's number, but in ms: 1000 times too short
+  try {
+    parse_ground_motion("# dt = 0.02 sec\n0.1\n0.2\n", "h.txt", stated, 1.0);
+    ADD_FAILURE() << "0.02 ms accepted against a header's 0.02 s";
+  } catch (const InputError& error) {
+    EXPECT_NE(error.reason().find("the file gives dt = 0.02 s, 20 in the model's time unit, but "
+                                  "the time step given is 0.02"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
 TEST(GroundMotionReader, ParsedTextWithoutATimeStepIsAnInputErrorNamingItsSource) {
   try {
     parse_ground_motion("0.1\n0.2\n", "memory.txt", RecordFormat{}, 1.0);

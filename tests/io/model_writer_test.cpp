@@ -122,7 +122,7 @@ constexpr const char* kRichModel = R"({
     {"record": "records/a.AT2", "format": "auto", "units": "g", "scale": {"factor": 1.25}},
     {"record": "b.txt", "format": "columns", "column": 3, "time_step": 0.005,
      "units": "cm/s2", "direction": [0.0, 1.0], "scale": {"pga": 0.4}},
-    {"record": "c.txt", "format": "columns", "time_column": true, "units": "m/s2",
+    {"record": "c.txt", "format": "columns", "time_column": true, "column": 2, "units": "m/s2",
      "direction": [-1.0, 0.0], "scale": {"sa": 0.8, "period": 1.2, "damping": 0.02}},
     {"record": "d.at2", "format": "at2", "units": "model"}
   ],
