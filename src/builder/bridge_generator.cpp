@@ -235,6 +235,19 @@ struct PierHinge {
   std::string link;  // its id
   std::optional<double> yield_curvature;
 };
+// The hinge's hardening ratio that gives the pier `pier_ratio` (see pier_hinge).
+double hinge_hardening(double pier_ratio, double n, double hinge_stiffness, const LawSpec& law) {
+  const auto deformation = law.parameters.find("yield_deformation");
+  // Bilinear: closed form, the same bits about either axis of a 3-D pier (a coupled hinge
+  // needs one ratio).
+  if (deformation == law.parameters.end()) return pier_ratio / (1.0 + n * (1.0 - pier_ratio));
+  const double elastic_part = hinge_stiffness / n;  // (n + 1) / n 3 E I / h
+  const double hinge_secant = law.parameters.at("yield_force") / deformation->second;
+  const double pier_secant = 1.0 / (1.0 / elastic_part + 1.0 / hinge_secant);
+  const double slope = 1.0 / (1.0 / (pier_ratio * pier_secant) - 1.0 / elastic_part);
+  return slope / hinge_secant;
+}
+
 PierHinge pier_hinge(const GirderBridgeSpec& spec, int pier, bool across) {
   const PierHingeSpec& hinge = *spec.pier_hinge;
   const double ei =
@@ -250,8 +263,17 @@ PierHinge pier_hinge(const GirderBridgeSpec& spec, int pier, bool across) {
   const double yield_moment = moment.value_or(ei * curvature.value_or(0.0));
   PierHinge made{hinge.law, yield_moment * h * h / (3.0 * ei),
                  fmt::format("{}.p{}.hinge{}", spec.id, pier, across ? ".across" : ""), curvature};
-  made.law.parameters["stiffness"] = (hinge.stiffness_factor + 1.0) * 3.0 * ei / h;
+  const double n = hinge.stiffness_factor, stiffness = (n + 1.0) * 3.0 * ei / h;
+  made.law.parameters["stiffness"] = stiffness;
   made.law.parameters["yield_force"] = yield_moment;
+  // The law's hardening ratio r is the pier's: in series with the stiffened elastic pier
+  // ((n + 1) / n of 3 E I / h), the hinge's post-yield slope s gives the pier r times its yield
+  // secant, 1 / (n / ((n + 1) k) + 1 / s) = r k_ym, with k_ym the pier's secant to yield (series
+  // of the pier and the hinge's F_y / delta_y). For a bilinear hinge, r / (1 + n (1 - r))
+  // (Ibarra & Krawinkler 2005, appendix B; Zareian & Medina 2010).
+  const auto ratio = made.law.parameters.find("hardening_ratio");
+  if (ratio != made.law.parameters.end() && ratio->second > 0.0)
+    ratio->second = hinge_hardening(ratio->second, n, stiffness, made.law);
   return made;
 }
 
