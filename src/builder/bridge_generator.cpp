@@ -516,6 +516,15 @@ void add_shear_keys(const Bridge& bridge, const std::string& abutment, const std
                                   across(bridge, sign, station), keys.gap, keys.law));
 }
 
+// The backfill law with the abutment's stem holding the wall toward the span (links/backfill.hpp),
+// as stiffly as the soil's initial stiffness unless the law says: without it the wall's mass hung
+// free on the span's side and drifted across the gap under shaking alone.
+LawSpec backfill_with_stem(LawSpec law) {
+  if (law.type == "backfill" && !law.number("stem_stiffness"))
+    law.parameters["stem_stiffness"] = law.parameters.at("initial_stiffness");
+  return law;
+}
+
 // An abutment (side 0 at the start, 1 at the end): the girder end sits on the seat and may
 // pound on the backwall, which the backfill holds (or which is fixed without backfill).
 void add_abutment(const Bridge& bridge, int side, const std::string& girder, ModelSpec& out) {
@@ -544,7 +553,7 @@ void add_abutment(const Bridge& bridge, int side, const std::string& girder, Mod
     }
     out.masses.push_back({wall, spec.backwall_mass, {}, std::nullopt});
     out.links.push_back(make_link(name + ".backfill", wall, ground, along(bridge, outward, at), 0.0,
-                                  *spec.backfill));
+                                  backfill_with_stem(*spec.backfill)));
   } else {
     out.supports.push_back(fixed(bridge, wall));
   }

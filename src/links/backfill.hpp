@@ -20,6 +20,16 @@
 // so unloading opens a gap of p: on reloading the wall meets the soil again at delta = p and
 // rejoins the backbone at delta_max. Consistent tangent K, F_env' or 0 (plateau, open).
 //
+// With a stem stiffness k_s the wall is held toward the span too, where the girder last pushed
+// it: F = k_s (delta - p) (negative) for delta < p, p = 0 until the soil yields. A backwall is
+// cast on the abutment's stem and moves with it until the girder pushes it into the soil, and a
+// wall pushed in stays there (wedged in the yielded soil, on its seat); without the stem it hangs
+// free on the span's side, and under shaking alone a backwall's mass drifts across the joint's
+// gap before any girder reaches it (relative coordinates: nothing carries it with the ground),
+// or rattles in the gap p the soil left. A backwall's own flexural stiffness, 3 E I / h^3 of a 1.7
+// m high, 0.3 m thick wall per metre of width, is 4e7 N/m/m, of the order of K (Caltrans: 28.7
+// MN/m/m).
+//
 // Units: K [F/L], F_ult [F], delta_ult and delta [L]. Typical numbers (per metre of backwall
 // width): Caltrans SDC v1.7 (2013, sec. 7.8.1) K_i = 28.7 kN/mm/m (50 kip/in/ft) and an
 // ultimate passive pressure of 239 kPa (5.0 ksf), both for a 1.7 m (5.5 ft) backwall and scaled
@@ -32,8 +42,10 @@ namespace pound::links {
 
 class Backfill final : public LinkLaw {
  public:
-  // Throws std::invalid_argument unless all are positive and hyperbola_curvature(...) > 0.
-  Backfill(double initial_stiffness, double ultimate_force, double ultimate_deformation);
+  // Throws std::invalid_argument unless all are positive (the stem's >= 0, 0: no stem) and
+  // hyperbola_curvature(...) > 0.
+  Backfill(double initial_stiffness, double ultimate_force, double ultimate_deformation,
+           double stem_stiffness = 0.0);
 
   // D = K / F_ult - 1 / delta_ult; the backbone exists only for D > 0.
   static double hyperbola_curvature(double initial_stiffness, double ultimate_force,
@@ -55,7 +67,7 @@ class Backfill final : public LinkLaw {
   double permanent_deformation() const { return committed_permanent_; }
 
  private:
-  double stiffness_, ultimate_force_, ultimate_deformation_, curvature_;
+  double stiffness_, ultimate_force_, ultimate_deformation_, curvature_, stem_stiffness_;
   double committed_permanent_ = 0.0, trial_permanent_ = 0.0;
   bool committed_contact_ = false, trial_contact_ = false;
 };

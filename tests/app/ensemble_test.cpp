@@ -1,6 +1,7 @@
 // `pound run --ensemble N`: in a linear model every number moves only as much as the records
-// were perturbed (responses scale with the record), on the bundled bridge the abutment pounding
-// peaks spread far beyond that while the pier drifts do not (the chaos issue 20 found), the
+// were perturbed (responses scale with the record); a block rattling in a slot (an impact
+// oscillator, chaotic) spreads its impact counts far beyond that while its spring's peak does
+// not; the bundled bridge, its backwalls held by the abutments, keeps every headline number; the
 // spread does not depend on the thread count, and bad options are refused by name.
 #include "app/ensemble.hpp"
 
@@ -78,14 +79,39 @@ TEST_F(Ensemble, ALinearModelSpreadsOnlyAsMuchAsTheRecordsWerePerturbed) {
   EXPECT_NEAR(drift.min / drift.unperturbed, 1 - 3e-4, 1e-9);
 }
 
-// The bundled bridge: the right abutment's peak pounding force moves by far more than the 1e-4
-// records, the pier drifts (reached before the chaos sets in) do not; threads change nothing.
-TEST_F(Ensemble, TheBridgesLateAbutmentPeaksAreNotRobustItsPierDriftsAre) {
+// A 1 t block on a soft spring (T = 0.3 s) rattling between two stops 5 mm away (Kelvin-Voigt,
+// e = 0.8), undamped, under the bundled firm-ground record at 0.4 g: an impact oscillator, whose
+// response after a few impacts depends on the 1e-4 change of the record as on a coin.
+std::string rattling_block(const std::filesystem::path& folder) {
+  const std::filesystem::path file = folder / "rattling_block.json";
+  std::ofstream(file) << R"({"dimension": 1,
+    "nodes": [{"id": "left", "x": 0}, {"id": "block", "x": 1}, {"id": "right", "x": 2}],
+    "supports": [{"node": "left", "fix": ["x"]}, {"node": "right", "fix": ["x"]}],
+    "masses": [{"node": "block", "mass": 1000}],
+    "links": [
+      {"id": "spring", "nodes": ["left", "block"], "axis": [1],
+       "law": {"type": "elastic_spring", "stiffness": 4e5}},
+      {"id": "left_stop", "nodes": ["block", "left"], "axis": [-1], "gap": 0.005,
+       "law": {"type": "kelvin_voigt", "stiffness": 1e8, "restitution": 0.8}},
+      {"id": "right_stop", "nodes": ["block", "right"], "axis": [1], "gap": 0.005,
+       "law": {"type": "kelvin_voigt", "stiffness": 1e8, "restitution": 0.8}}],
+    "excitations": [{"record": ")" +
+                             std::string(POUND_SOURCE_DIR) +
+                             R"(/ground_motions/synthetic_firm_01.AT2", "units": "g",
+                     "scale": {"pga": 0.4}}],
+    "analysis": {"time_step": 0.0004}})";
+  return file.string();
+}
+
+// The rattling block's impact counts move by far more than the 1e-4 records, its spring's peak
+// force (the block's excursion, bounded by the stops) does not; threads change nothing.
+TEST_F(Ensemble, ARattlingBlocksImpactsAreNotRobustItsSpringsPeakIs) {
   RunRequest request;
-  request.model_path = kModels + "three_span_bridge.json";
+  request.model_path = rattling_block(path("."));
   request.histories = false;
   EnsembleOptions options{.copies = 8, .jobs = 1};
   const EnsembleResult serial = run_ensemble(request, options);
+  ASSERT_EQ(serial.failed(), 0);
   options.jobs = 2;
   const EnsembleResult parallel = run_ensemble(request, options);
   ASSERT_EQ(serial.quantities.size(), parallel.quantities.size());
@@ -94,35 +120,45 @@ TEST_F(Ensemble, TheBridgesLateAbutmentPeaksAreNotRobustItsPierDriftsAre) {
     EXPECT_EQ(serial.quantities[k].spread, parallel.quantities[k].spread);
   }
   const auto quantities = by_path(serial);
-  const QuantitySpread& abutment = quantities.at("/links/bridge.a1.joint/peak_force");
-  std::cout << "bridge, right abutment peak force: " << abutment.unperturbed << ", range "
-            << abutment.min << " to " << abutment.max << " (spread " << abutment.spread << ")\n";
-  EXPECT_FALSE(abutment.robust);
-  EXPECT_GT(abutment.spread, 10 * 2 * 4 * options.perturbation);
-  for (const char* pier : {"/piers/bridge.p1/peak_drift", "/piers/bridge.p2/peak_drift"}) {
-    const QuantitySpread& drift = quantities.at(pier);
-    std::cout << pier << ": spread " << drift.spread << "\n";
-    EXPECT_TRUE(drift.robust) << pier;
+  for (const char* stop : {"/links/left_stop/impacts", "/links/right_stop/impacts"}) {
+    const QuantitySpread& impacts = quantities.at(stop);
+    std::cout << stop << ": " << impacts.unperturbed << ", range " << impacts.min << " to "
+              << impacts.max << " (spread " << impacts.spread << ")\n";
+    EXPECT_FALSE(impacts.robust) << stop;
+    EXPECT_GT(impacts.spread, 10 * 2 * 4 * options.perturbation) << stop;
   }
+  const QuantitySpread& spring = quantities.at("/links/spring/peak_force");
+  std::cout << "spring peak force: spread " << spring.spread << "\n";
+  EXPECT_TRUE(spring.robust);
   // The report lists the least robust headline peaks and counts first (which ones depends on the
-  // chaos), the states at the record's end (residual openings and drifts) after them.
+  // chaos), the states at the record's end after them.
   const QuantitySpread* loosest = nullptr;
-  const QuantitySpread* loosest_residual = nullptr;
-  for (const QuantitySpread& q : serial.quantities) {
-    if (!q.headline || q.robust) continue;
-    const QuantitySpread*& worst =
-        q.path.find("/residual_") == std::string::npos ? loosest : loosest_residual;
-    if (!worst || q.spread > worst->spread) worst = &q;
-  }
+  for (const QuantitySpread& q : serial.quantities)
+    if (q.headline && !q.robust && (!loosest || q.spread > loosest->spread)) loosest = &q;
   ASSERT_NE(loosest, nullptr);
   const std::string report = ensemble_report(serial, options);
   const std::size_t first_line = report.find('\n') + 1;
   EXPECT_EQ(report.find("  " + loosest->path + ": ", first_line), first_line) << report;
-  if (loosest_residual) {
-    const std::size_t at = report.find("\n  " + loosest_residual->path + ": ");
-    EXPECT_TRUE(at == std::string::npos || at > first_line) << report;
+}
+
+// The bundled bridge with its backwalls held by the abutments: one or two impacts at each
+// abutment, and every headline number robust to the 1e-4 records. (With the backwalls hanging
+// free toward the span they rattled between girder and soil, 34 impacts at each abutment, and
+// the abutments' peaks spread 10-30 %: the chaos issue 20 found was largely that wall's.)
+TEST_F(Ensemble, TheBundledBridgesHeadlineNumbersAreRobust) {
+  RunRequest request;
+  request.model_path = kModels + "three_span_bridge.json";
+  request.histories = false;
+  const EnsembleResult result = run_ensemble(request, {.copies = 8});
+  ASSERT_EQ(result.failed(), 0);
+  double worst = 0.0;
+  std::string worst_path;
+  for (const QuantitySpread& q : result.quantities) {
+    if (!q.headline) continue;
+    EXPECT_TRUE(q.robust) << q.path << ": spread " << q.spread;
+    if (q.spread > worst) worst = q.spread, worst_path = q.path;
   }
-  EXPECT_NE(report.find("/links/bridge.a1.joint/peak_force: "), std::string::npos) << report;
+  std::cout << "bridge: largest headline spread " << worst << " (" << worst_path << ")\n";
 }
 
 // A batch row of an ensemble case: each response the median of the copies' (type 7), the rest

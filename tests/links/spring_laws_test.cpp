@@ -67,6 +67,11 @@ std::unique_ptr<LinkLaw> bilinear() {
 std::unique_ptr<LinkLaw> backfill() {
   return std::make_unique<Backfill>(kBackfillStiffness, kUltimateForce, kUltimate);
 }
+// With the abutment's stem as stiff as the soil (what girder_bridge gives it).
+std::unique_ptr<LinkLaw> backfill_with_stem() {
+  return std::make_unique<Backfill>(kBackfillStiffness, kUltimateForce, kUltimate,
+                                    kBackfillStiffness);
+}
 
 std::vector<Case> cases() {
   const auto elastic = [] { return std::make_unique<ElasticSpring>(kStiffness); };
@@ -93,6 +98,8 @@ std::vector<Case> cases() {
       {"backfill unloading from the plateau", backfill, {1.5 * du}, at(1.45 * du)},
       {"backfill reloading inside the gap line", backfill, {0.6 * du, 0.0}, at(0.59 * du)},
       {"backfill reloading past the largest deformation", backfill, {0.6 * du, 0.0}, at(0.7 * du)},
+      {"backfill's stem holding the wall", backfill_with_stem, {}, at(-0.01, -0.3)},
+      {"backfill's stem where the wall was pushed", backfill_with_stem, {0.6 * du}, at(0.1 * du)},
   };
 }
 
@@ -127,6 +134,30 @@ TEST(SpringLaws, BackfillOpenAndGapCarryNothing) {
   EXPECT_FALSE(law->in_contact());
   // Unloading into the gap does not change the permanent deformation.
   EXPECT_EQ(static_cast<const Backfill&>(*law).permanent_deformation(), permanent);
+}
+
+// The stem holds the wall where the girder last pushed it: at rest with the soil's stiffness both
+// ways (a wall that hung free toward the span drifted across the joint's gap under shaking), and
+// after the soil yielded at its permanent deformation p, F = k_s (delta - p) below it: no gap
+// for the wall to rattle in.
+TEST(SpringLaws, BackfillsStemHoldsTheWallWhereItWasPushed) {
+  auto law = backfill_with_stem();
+  const LawResponse toward_span = law->set_trial(at(-0.01));
+  EXPECT_EQ(toward_span.force, -kBackfillStiffness * 0.01);
+  EXPECT_EQ(toward_span.stiffness, kBackfillStiffness);
+  EXPECT_EQ(law->set_trial(at(0.0)).stiffness, kBackfillStiffness);  // linear through rest
+  law->set_trial(at(0.6 * kUltimate));
+  law->commit();
+  const double permanent = static_cast<const Backfill&>(*law).permanent_deformation();
+  ASSERT_GT(permanent, 0.0);
+  for (double delta : {0.999 * permanent, 0.5 * permanent, 0.0, -0.05}) {
+    const LawResponse held = law->set_trial(at(delta, -0.2));
+    EXPECT_DOUBLE_EQ(held.force, kBackfillStiffness * (delta - permanent)) << delta;
+    EXPECT_EQ(held.stiffness, kBackfillStiffness) << delta;
+  }
+  law->commit();
+  EXPECT_EQ(static_cast<const Backfill&>(*law).permanent_deformation(), permanent);
+  EXPECT_FALSE(law->in_contact());  // not pushing the soil
 }
 
 TEST(SpringLaws, ElasticSpringIsLinearBothWays) {
