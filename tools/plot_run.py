@@ -438,7 +438,10 @@ class Plotter:
                 ax.axhline(0.0, color="0.6", lw=0.5)
                 ax.set_title(self.link_title(link_id, summaries.get(link_id, {})), fontsize="medium")
                 ax.set_xlabel(self.time_label)
-                ax.set_ylabel(f"force (compression +)\n[{self.units['force']}]")
+                if summaries.get(link_id, {}).get("rotational"):
+                    ax.set_ylabel(f"moment\n[{self.units['moment']}]")
+                else:
+                    ax.set_ylabel(f"force (compression +)\n[{self.units['force']}]")
                 ax.grid(alpha=0.3)
             self.save(fig, self.page_name("link_forces", page), "Link force histories")
 
@@ -476,7 +479,11 @@ class Plotter:
                 window = self.contact_window(x, force)
                 if window:
                     ax.set_xlim(*window)
-                if kind == "normal":
+                if kind == "normal" and summaries.get(link_id, {}).get("rotational"):
+                    title = self.link_title(link_id, summaries.get(link_id, {}))
+                    ax.set_xlabel(f"rotation [{self.units['angle']}]")
+                    ax.set_ylabel(f"moment [{self.units['moment']}]")
+                elif kind == "normal":
                     title = self.link_title(link_id, summaries.get(link_id, {}))
                     ax.set_xlabel(f"penetration (closing +) [{self.units['length']}]")
                     ax.set_ylabel(f"force (compression +) [{self.units['force']}]")

@@ -21,8 +21,9 @@ std::vector<std::string> unit_names(const UnitNames& units,
 LinkQuantities::LinkQuantities(std::vector<LinkRows> links, const std::vector<std::string>& ids)
     : links_(std::move(links)) {
   for (std::size_t k = 0; k < ids.size(); ++k) {
-    add(ids[k] + ".force", Dimension::force);
-    add(ids[k] + ".penetration", Dimension::length);
+    const bool rotational = links_[k].rotational;
+    add(ids[k] + ".force", rotational ? Dimension::moment : Dimension::force);
+    add(ids[k] + ".penetration", rotational ? Dimension::angle : Dimension::length);
     const Index tangents = links_[k].tangents;
     for (Index t = 1; t <= tangents; ++t) {
       const std::string along = tangents == 1 ? "" : fmt::format("_{}", t);

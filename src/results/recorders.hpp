@@ -63,9 +63,11 @@ std::vector<std::string> unit_names(const UnitNames& units,
 struct LinkRows {
   Index row = 0;
   Index tangents = 0;
+  bool rotational = false;  // a hinge: a moment and a rotation
 };
 
-// <id>.force, <id>.penetration per link, and <id>.tangential_force, <id>.slide for a link with
+// <id>.force, <id>.penetration per link (a moment and a rotation, in their units, for a
+// rotational link), and <id>.tangential_force, <id>.slide for a link with
 // friction in a plane (<id>.tangential_force_1, <id>.slide_1, <id>.tangential_force_2,
 // <id>.slide_2 along t_1 and t_2 in 3-D).
 class LinkQuantities final : public Quantities {

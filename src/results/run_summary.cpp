@@ -31,8 +31,9 @@ std::unique_ptr<Quantities> link_quantities(const builder::BuiltModel& built,
   std::vector<std::string> ids;
   std::vector<LinkRows> rows;
   for (Index link : items) {
-    ids.push_back(built.model.links[static_cast<std::size_t>(link)].id);
-    rows.push_back({links.row(link), links.rows(link) - 1});
+    const model::Link& spec = built.model.links[static_cast<std::size_t>(link)];
+    ids.push_back(spec.id);
+    rows.push_back({links.row(link), links.rows(link) - 1, spec.rotational});
   }
   return std::make_unique<LinkQuantities>(rows, ids);
 }

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -127,6 +128,34 @@ TEST(RunReport, HingeMomentsAreNotSpringForces) {
   EXPECT_TRUE(has(line_of(outcome.report, "takeda bridge.p1.hinge yielded:"), "peak rotation "))
       << outcome.report;
   EXPECT_TRUE(has(line_of(outcome.report, "takeda bridge.p1.hinge yielded:"), " rad (plastic "));
+}
+
+// A hinge's history is a moment and a rotation, in their units (its CSV columns said N and m).
+TEST(RunReport, AHingesHistoryIsInMomentAndRotationUnits) {
+  const std::string path = std::string(POUND_SOURCE_DIR) + "/models/three_span_bridge_takeda.json";
+  nlohmann::json model = nlohmann::json::parse(std::ifstream(path));
+  model["units"]["mass"] = "kg";
+  RunRequest request;
+  request.model_path = path;
+  request.model_text = model.dump();
+  request.max_steps = 10;
+  const RunOutcome outcome = run_model(request);
+  bool found = false;
+  for (const auto& [file, table] : outcome.histories) {
+    for (std::size_t c = 0; c < table.columns.size(); ++c) {
+      if (table.columns[c] == "bridge.p1.hinge.force") {
+        EXPECT_EQ(table.units[c], "N*m");
+        found = true;
+      }
+      if (table.columns[c] == "bridge.p1.hinge.penetration") {
+        EXPECT_EQ(table.units[c], "rad");
+      }
+      if (table.columns[c] == "bridge.joint1.force") {
+        EXPECT_EQ(table.units[c], "N");
+      }
+    }
+  }
+  EXPECT_TRUE(found);
 }
 
 // Without a mass unit forces, moments and energies have none, but lengths and accelerations do.
