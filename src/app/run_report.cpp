@@ -91,9 +91,13 @@ std::string link_lines(const results::RunSummary& run, const ReportUnits& units)
         break;
       }
       case links::LinkRole::tension:
-        text += fmt::format("  {} {}: taut {} time(s), peak tension {}, peak opening {}\n",
+        text += fmt::format("  {} {}: taut {} time(s), peak tension {}, peak opening {}{}\n",
                             link.law, link.id, s.impacts, with_unit(s.peak_tension, units.force, 6),
-                            with_unit(s.peak_opening, units.length));
+                            with_unit(s.peak_opening, units.length),
+                            link.permanent_deformation > 0.0
+                                ? fmt::format(", yielded: permanent elongation {}",
+                                              with_unit(link.permanent_deformation, units.length))
+                                : std::string());
         break;
       case links::LinkRole::contact:
         text += fmt::format(
@@ -104,7 +108,10 @@ std::string link_lines(const results::RunSummary& run, const ReportUnits& units)
             link.law == "hard_contact"
                 ? " (hard contact: an impact of lumped masses lasts about a step, so its peak "
                   "force is that impact's impulse / dt)"
-                : "");
+            : link.permanent_deformation > 0.0
+                ? fmt::format(", permanent deformation {}",
+                              with_unit(link.permanent_deformation, units.length))
+                : std::string());
         break;
     }
   }

@@ -84,6 +84,9 @@ Document link_document(const results::LinkResult& link) {
   else
     add_pounding(s, doc);
   if (link.passive_engagements) doc.set("created_energy", s.created_energy());
+  // A yielded restrainer's plastic elongation, the backfill soil's permanent deformation.
+  if (link.permanent_deformation > 0.0)
+    doc.set("permanent_deformation", link.permanent_deformation);
   if (link.yield_deformation) {  // a yielding law: its demand and what it dissipated
     doc.set("yield_deformation", *link.yield_deformation)
         .set("peak_deformation", link.peak_deformation())

@@ -64,7 +64,7 @@ class Backfill final : public LinkLaw {
 
   // The backbone F_env and its slope at delta (0 for delta <= 0).
   LawResponse envelope(double penetration) const;
-  double permanent_deformation() const { return committed_permanent_; }
+  double permanent_deformation() const override { return committed_permanent_; }
 
  private:
   double stiffness_, ultimate_force_, ultimate_deformation_, curvature_, stem_stiffness_;

@@ -56,6 +56,9 @@ class LinkLaw {
   // The deformation at first yield of a law that yields (a hysteretic spring or hinge), the
   // reference of its ductility demand peak |delta| / delta_y; none for a law that does not yield.
   virtual std::optional<double> yield_deformation() const { return std::nullopt; }
+  // The deformation the law keeps at zero force in its committed state: a yielded restrainer's
+  // plastic elongation, the backfill soil's permanent deformation; 0 for the others.
+  virtual double permanent_deformation() const { return 0.0; }
   // Zero for every law but one with added stiffness-proportional damping.
   virtual ViscousPart viscous_part() const { return {}; }
   // A hard contact is a constraint whose force the integrator finds; none for a force law.

@@ -609,6 +609,7 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
     const links::LinkLaw& law = system.links().law(static_cast<Index>(k));
     LinkResult result{link.id, law.name(), link.role(), link_summaries[k], link.rotational};
     result.viscous = law.viscous_part();
+    result.permanent_deformation = law.permanent_deformation();
     result.passive_engagements =
         link.role() != links::LinkRole::spring && !(link.law && link.law->traits.inertia);
     if ((result.yield_deformation = law.yield_deformation()))

@@ -99,6 +99,9 @@ struct LinkResult {
   bool passive_engagements = false;
   // A yielding law's delta_y and its stiffness at rest (LinkLaw::yield_deformation).
   std::optional<double> yield_deformation, initial_stiffness;
+  // What the law keeps at zero force at the end (LinkLaw::permanent_deformation): a yielded
+  // restrainer's plastic elongation, the backfill soil's permanent deformation.
+  double permanent_deformation = 0.0;
   double peak_deformation() const {
     return std::max(summary.peak_penetration, summary.peak_opening);
   }

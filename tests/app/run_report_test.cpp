@@ -57,7 +57,14 @@ TEST(RunReport, TheBridgesNumbersCarryTheirUnits) {
     EXPECT_TRUE(has(line, fmt::format("peak force {:.6g} N, peak penetration ",
                                       link["peak_force"].get<double>())))
         << line;
-    EXPECT_TRUE(has(line, " m, impulse ") && line.ends_with(" N*s")) << line;
+    EXPECT_TRUE(has(line, " m, impulse ") && has(line, " N*s")) << line;
+    // The backfill's soil keeps a permanent deformation once pushed past its elastic range.
+    if (link.contains("permanent_deformation"))
+      EXPECT_TRUE(line.ends_with(fmt::format(" N*s, permanent deformation {:.4g} m",
+                                             link["permanent_deformation"].get<double>())))
+          << line;
+    else
+      EXPECT_TRUE(line.ends_with(" N*s")) << line;
   }
   EXPECT_EQ(contacts, 6);
   const std::string joint = line_of(outcome.report, "joint bridge.joint1.left_end:");
@@ -156,6 +163,35 @@ TEST(RunReport, AHingesHistoryIsInMomentAndRotationUnits) {
     }
   }
   EXPECT_TRUE(found);
+}
+
+// A restrainer that yields says so, with its permanent elongation (its line said only how often
+// it went taut): a 1 t mass at 1 m/s pulls a cable (k = 1e6 N/m, 10 mm slack, T_y = 10 kN, no
+// hardening) that stores T_y^2 / 2k = 50 J and dissipates the rest of the 500 J by stretching
+// p = 450 J / T_y = 45 mm.
+TEST(RunReport, AYieldedRestrainerGivesItsPermanentElongation) {
+  RunRequest request;
+  request.model_path = "cable.json";
+  request.model_text = R"({
+    "dimension": 1, "units": {"length": "m", "time": "s", "mass": "kg"},
+    "nodes": [{"id": "ground", "x": 0}, {"id": "mass", "x": 1}],
+    "supports": [{"node": "ground", "fix": ["x"]}],
+    "masses": [{"node": "mass", "mass": 1000}],
+    "initial_velocities": [{"node": "mass", "x": 1}],
+    "links": [{"id": "cable", "nodes": ["ground", "mass"], "axis": [1],
+               "law": {"type": "restrainer", "stiffness": 1e6, "slack": 0.01,
+                       "yield_force": 1e4}}],
+    "analysis": {"time_step": 1e-4, "duration": 0.2}})";
+  request.histories = false;
+  const RunOutcome outcome = run_model(request);
+  ASSERT_TRUE(outcome.failure.empty()) << outcome.failure;
+  const std::string line = line_of(outcome.report, "restrainer cable:");
+  EXPECT_TRUE(has(line, ", yielded: permanent elongation 0.045")) << line;
+  const nlohmann::json summary = nlohmann::json::parse(outcome.summary.dump());
+  const double elongation = summary["links"][0]["permanent_deformation"].get<double>();
+  std::cout << line << "\npermanent elongation " << elongation << " m against 0.045, error "
+            << std::abs(elongation - 0.045) << "\n";
+  EXPECT_NEAR(elongation, 0.045, 1e-5);
 }
 
 // Without a mass unit forces, moments and energies have none, but lengths and accelerations do.
