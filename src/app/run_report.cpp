@@ -119,8 +119,9 @@ std::string link_lines(const results::RunSummary& run, const ReportUnits& units)
     text += fmt::format("  {} spring link(s) (bearings, springs, dampers): largest force {}\n",
                         springs - hinges, with_unit(spring_force, units.force, 6));
   if (hinges > 0)
-    text += fmt::format("  {} hinge(s): largest moment {}\n", hinges,
-                        with_unit(hinge_moment, units.moment, 6));
+    text +=
+        fmt::format("  {} rotational spring(s) (hinges, bearings in twist): largest moment {}\n",
+                    hinges, with_unit(hinge_moment, units.moment, 6));
   return text;
 }
 

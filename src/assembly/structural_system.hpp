@@ -67,6 +67,9 @@ class StructuralSystem final : public integrators::SecondOrderSystem {
   // free DOF, sum iota a_g(t) + sum r a_s(t), so that a + frame is the absolute acceleration:
   // a sum of shapes (iota, r) times scales (a_g, a_s), the scales at `time` in the shapes' order.
   std::vector<Vector> frame_shapes() const;
+  // Whether uniform excitation k loads any DOF (M iota not all zero): along a direction in which
+  // every DOF with mass is held it loads none, and the structure does not respond to it.
+  bool excitation_loads(std::size_t k) const { return excitations_.at(k).inertia.any(); }
   void frame_scales(double time, std::vector<double>& scales) const;
   // The absolute acceleration of a supported DOF (node, direction 0 = x, 1 = y): the ground's
   // along the excitations' directions, and a moving support's own record.

@@ -1,6 +1,7 @@
 #include "verification/model_check.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -293,12 +294,13 @@ void check_duration_reaches_peaks(const builder::BuiltModel& built,
   // A moving support's record: at the first support it reaches.
   const auto check = [&](const model::GroundMotion& motion, double delay) {
     const double peak_time = motion.time_of_peak() + delay;
+    const std::string& time = built.units.of(Dimension::time);
     if (duration > 0.0 && duration < peak_time)
       warnings.push_back(fmt::format(
-          "the analysis stops at {:.4g}, before record '{}' reaches its largest acceleration "
-          "(at {:.4g}): its strongest shaking is not analysed (is /analysis/duration what you "
+          "the analysis stops at {:.4g} {}, before record '{}' reaches its largest acceleration "
+          "(at {:.4g} {}): its strongest shaking is not analysed (is /analysis/duration what you "
           "meant?)",
-          duration, motion.name, peak_time));
+          duration, time, motion.name, peak_time, time));
   };
   for (const model::UniformExcitation& e : built.model.excitations) check(e.motion, 0.0);
   for (const model::SupportExcitation& e : built.model.support_excitations) {
@@ -323,6 +325,22 @@ void check_record_peaks(const builder::BuiltModel& built, std::vector<std::strin
           "m/s2 is 100 times too strong) and its scale; an incremental dynamic analysis scaled "
           "this far on purpose may ignore this",
           k, peak.record, peak.in_g));
+  }
+}
+
+// A record along a direction in which every DOF with mass is held (the vertical of a floor whose
+// z is fixed) loads nothing: every response is 0, which would pass for a result.
+void check_excitations_load(const builder::BuiltModel& built,
+                            const assembly::StructuralSystem& system,
+                            std::vector<std::string>& warnings) {
+  for (std::size_t k = 0; k < built.model.excitations.size(); ++k) {
+    if (system.excitation_loads(k)) continue;
+    const model::UniformExcitation& e = built.model.excitations[k];
+    warnings.push_back(fmt::format(
+        "/excitations/{}: record '{}' acts along [{:.4g}], in which every DOF with mass is held: "
+        "it loads nothing and every response to it is 0 (is its \"direction\" what you meant?)",
+        k, e.motion.name,
+        fmt::join(e.direction.begin(), e.direction.begin() + built.model.dimension, ", ")));
   }
 }
 
@@ -352,6 +370,7 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
   warn_step_count(analysis, check.warnings);
   check_record_peaks(built, check.warnings);
   check_duration_reaches_peaks(built, check.warnings);
+  check_excitations_load(built, system, check.warnings);
   const double ground_velocity = peak_ground_velocity(built.model);
   Vector closing;
   links.project(system.initial_velocity(built.model), closing);

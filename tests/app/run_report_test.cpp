@@ -126,7 +126,8 @@ TEST(RunReport, HingeMomentsAreNotSpringForces) {
   }
   const std::string spring_line =
       line_of(outcome.report, fmt::format("{} spring link(s)", springs));
-  const std::string hinge_line = line_of(outcome.report, fmt::format("{} hinge(s)", hinges));
+  const std::string hinge_line =
+      line_of(outcome.report, fmt::format("{} rotational spring(s) (hinges, bearings", hinges));
   std::cout << spring_line << "\n" << hinge_line << "\n";
   EXPECT_EQ(hinges, 2);
   EXPECT_GT(moment, force);

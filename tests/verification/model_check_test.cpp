@@ -126,8 +126,42 @@ TEST(ModelCheck, AnAnalysisThatStopsBeforeTheRecordsPeakWarns) {
   const std::vector<std::string> short_run = pulse_warnings("", "before record", 0.3);
   ASSERT_EQ(short_run.size(), 1u);
   EXPECT_EQ(short_run[0],
-            "the analysis stops at 0.3, before record 'pulse' reaches its largest acceleration (at "
-            "0.5): its strongest shaking is not analysed (is /analysis/duration what you meant?)");
+            "the analysis stops at 0.3 s, before record 'pulse' reaches its largest acceleration "
+            "(at 0.5 s): its strongest shaking is not analysed (is /analysis/duration what you "
+            "meant?)");
+}
+
+// A record along a direction in which every DOF with mass is held loads nothing: every response
+// is 0, which would pass for a result. A 2-D mass held vertically, shaken vertically, warns;
+// shaken horizontally, not.
+TEST(ModelCheck, ARecordThatLoadsNothingWarns) {
+  const auto warnings = [](const std::string& direction) {
+    const std::string text = fmt::format(R"({{
+      "dimension": 2,
+      "nodes": [{{"id": "ground", "x": 0, "y": 0}}, {{"id": "top", "x": 1, "y": 0}}],
+      "supports": [{{"node": "ground", "fix": ["x", "y"]}}, {{"node": "top", "fix": ["y"]}}],
+      "masses": [{{"node": "top", "mass": 1}}],
+      "links": [{{"id": "spring", "nodes": ["ground", "top"], "axis": [1, 0],
+                 "law": {{"type": "elastic_spring", "stiffness": 400}}}}],
+      "excitations": [{{"record": "pulse.txt", "direction": {}}}],
+      "analysis": {{"time_step": 0.01, "duration": 1}}}})",
+                                         direction);
+    const builder::BuiltModel built = builder::build(
+        io::parse_model(text, "vertical.json"),
+        {model::GroundMotion{.name = "pulse", .time_step = 0.01, .acceleration = {0.0, 0.1, 0.0}}});
+    assembly::StructuralSystem system(built.model);
+    std::vector<std::string> found;
+    for (const std::string& w : check_model(built, system, false).warnings)
+      if (w.find("loads nothing") != std::string::npos) found.push_back(w);
+    return found;
+  };
+  EXPECT_TRUE(warnings("[1, 0]").empty());
+  const std::vector<std::string> vertical = warnings("[0, 1]");
+  ASSERT_EQ(vertical.size(), 1u);
+  EXPECT_EQ(vertical[0],
+            "/excitations/0: record 'pulse' acts along [0, 1], in which every DOF with mass is "
+            "held: it loads nothing and every response to it is 0 (is its \"direction\" what you "
+            "meant?)");
 }
 
 // More than a billion steps (a time step or duration mistyped by powers of ten) warns with the run
