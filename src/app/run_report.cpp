@@ -14,6 +14,15 @@ namespace {
 
 // The units of what the report prints: energies in force x length (the moment's unit) and
 // impulses in force x time.
+// Force x time: "N*s", and "kg*cm/s" for a force written out as "kg*cm/s^2" (not "kg*cm/s^2*s").
+std::string impulse_unit(const std::string& force, const std::string& time) {
+  if (force.empty()) return "";
+  const std::string per_time_squared = "/" + time + "^2";
+  if (force.ends_with(per_time_squared))
+    return force.substr(0, force.size() - per_time_squared.size()) + "/" + time;
+  return force + "*" + time;
+}
+
 struct ReportUnits {
   explicit ReportUnits(const UnitNames& names)
       : time(names.of(Dimension::time)),
@@ -22,7 +31,7 @@ struct ReportUnits {
         force(names.of(Dimension::force)),
         moment(names.of(Dimension::moment)),
         angle(names.of(Dimension::angle)),
-        impulse(force.empty() ? "" : force + "*" + time) {}
+        impulse(impulse_unit(force, time)) {}
   std::string time, length, acceleration, force, moment, angle, impulse;
   const std::string& energy() const { return moment; }
   // A link's deformation: a hinge's is a rotation.
@@ -188,8 +197,8 @@ std::string monitor_lines(const results::RunSummary& run, const ReportUnits& uni
 }  // namespace
 
 std::string run_headline(const std::string& model_path, const results::RunSummary& run) {
-  return fmt::format("pound run {}: {} DOFs, {} steps, {} Newton iterations, {:.3f} s", model_path,
-                     run.dofs, run.statistics.steps, run.statistics.newton_iterations,
+  return fmt::format("pound run {}: {} DOFs, {} steps, {} Newton iterations, solved in {:.3f} s",
+                     model_path, run.dofs, run.statistics.steps, run.statistics.newton_iterations,
                      run.run_time_s);
 }
 

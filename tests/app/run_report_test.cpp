@@ -195,6 +195,27 @@ TEST(RunReport, AYieldedRestrainerGivesItsPermanentElongation) {
   EXPECT_NEAR(elongation, 0.045, 1e-5);
 }
 
+// An impulse is force x time: in kg and cm the force is written out, kg*cm/s^2, and the impulse
+// kg*cm/s (it said kg*cm/s^2*s).
+TEST(RunReport, AnImpulseOfAWrittenOutForceIsMassLengthOverTime) {
+  RunRequest request;
+  request.model_path = "wall.json";
+  request.model_text = R"({
+    "dimension": 1, "units": {"length": "cm", "time": "s", "mass": "kg"},
+    "nodes": [{"id": "mass", "x": 0}, {"id": "wall", "x": 1}],
+    "supports": [{"node": "wall", "fix": ["x"]}],
+    "masses": [{"node": "mass", "mass": 1}],
+    "initial_velocities": [{"node": "mass", "x": 10}],
+    "links": [{"id": "contact", "nodes": ["mass", "wall"], "axis": [1], "gap": 1,
+               "law": {"type": "gap_spring", "stiffness": 1e4}}],
+    "analysis": {"time_step": 1e-3, "duration": 0.3}})";
+  request.histories = false;
+  const RunOutcome outcome = run_model(request);
+  const std::string line = line_of(outcome.report, "contact contact:");
+  EXPECT_TRUE(has(line, "peak force ") && has(line, " kg*cm/s^2, ")) << line;
+  EXPECT_TRUE(line.ends_with(" kg*cm/s")) << line;  // 2 m v = 20 kg cm/s
+}
+
 // Without a mass unit forces, moments and energies have none, but lengths and accelerations do.
 TEST(RunReport, WithoutAMassUnitForcesAreBareNumbers) {
   const RunOutcome outcome = run_bundled("adjacent_buildings_yielding.json");
