@@ -239,8 +239,13 @@ std::vector<io::Document> excitation_documents(const LoadedModel& loaded) {
     item.set("record", loaded.record_paths[k])
         .set("sha1", loaded.record_sources[k].sha1)
         .set("format", loaded.record_sources[k].format)
-        .set("units", loaded.spec.excitations[k].units)
-        .set("points", static_cast<long>(loaded.records[k].acceleration.size()))
+        .set("units", loaded.spec.excitations[k].units);
+    // Which component of a columns file (a time column before it, if any).
+    if (loaded.record_sources[k].format == "columns") {
+      item.set("column", static_cast<long>(loaded.spec.excitations[k].column));
+      if (loaded.spec.excitations[k].time_column) item.set("time_column", true);
+    }
+    item.set("points", static_cast<long>(loaded.records[k].acceleration.size()))
         .set("dt", loaded.records[k].time_step)
         .set("scaling", scaling_document(loaded.spec.excitations[k]))
         .set("factor", applied.factor)

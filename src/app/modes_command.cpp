@@ -29,7 +29,7 @@ Natural periods of a model as it starts (linear elements, structural springs at 
 stiffness, contact links open), with each mode's effective modal mass in x (and y, in a scene
 that moves along y) as a fraction of the total: the periods Rayleigh damping is chosen from and
 the ones a time step must resolve. --shapes writes the mode shapes (.csv, or .npy): a row per
-free DOF (label column "dof": <node>.u_x, <node>.u_y, <node>.r_z) and a column per mode,
+free DOF (label column "dof": <node>.u_x, <node>.u_y, <node>.u_rz, as node recorders name them) and a column per mode,
 mode_1, mode_2, ..., each scaled so that its largest component is +1; a DOF a constraint ties
 has its row too, its master's motion there (a rigid floor's corner may pass 1). Rigid-body and
 mechanism modes (no strain energy) are left out, and past 4,000 DOFs at most the first 500 modes
@@ -120,9 +120,10 @@ Table shapes_table(const LoadedModel& loaded, const assembly::StructuralSystem& 
       const std::span<const model::DofTerm> terms = dofs.terms(node, d);
       if (terms.empty()) continue;
       const model::Direction along = model::direction(d, dofs.dimension());
-      labels.push_back(fmt::format("{}.{}_{}",
+      // As the node recorders name them: u_x, u_y, u_rz.
+      labels.push_back(fmt::format("{}.u_{}{}",
                                    loaded.built.model.nodes[static_cast<std::size_t>(node)].id,
-                                   along.rotation ? "r" : "u", "xyz"[along.axis]));
+                                   along.rotation ? "r" : "", "xyz"[along.axis]));
       for (std::size_t m = 0; m < modes.size(); ++m)
         table.values[m].push_back(model::value_of(terms, modes[m].shape) + 0.0);  // no -0
     }

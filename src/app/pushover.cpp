@@ -111,16 +111,25 @@ class CapacityRecorder {
   CapacityRecorder(const LoadedModel& loaded, const assembly::StructuralSystem& system)
       : system_(system), links_(yielding_links(system)) {
     std::vector<std::string> columns{"displacement", "base_shear", "iterations"};
+    const UnitNames& names = loaded.built.units;
+    std::vector<std::string> units{names.of(Dimension::length), names.of(Dimension::force), ""};
     for (const auto& [id, index] : loaded.built.link_index) ids_[index] = id;
     for (const YieldingLink& link : links_) {
+      const bool rotational =
+          loaded.built.model.links[static_cast<std::size_t>(link.link)].rotational;
+      const std::string& unit = names.of(rotational ? Dimension::angle : Dimension::length);
       if (link.rows.size() == 1 && link.rows.front() == system.links().row(link.link)) {
         columns.push_back(ids_[link.link] + ".deformation");
+        units.push_back(unit);
         continue;
       }
-      for (std::size_t a = 0; a < link.rows.size(); ++a)  // a coupled shear, along each tangent
+      for (std::size_t a = 0; a < link.rows.size(); ++a) {  // a coupled shear, along each tangent
         columns.push_back(fmt::format("{}.deformation_{}", ids_[link.link], a + 1));
+        units.push_back(unit);
+      }
     }
     table_ = table_with_columns(columns);
+    table_.units = units;
   }
 
   void record(const assembly::PushoverPoint& point, const Vector& u) {

@@ -1370,10 +1370,10 @@ TEST_F(Cli, ModesOfATiedFloorGiveItsCornersShapesAndCheckCountsTheTiedDofs) {
   EXPECT_EQ(rows.size(), 15u);  // the floor's 3, and x, y, rz of each of the four tops
   double worst = 0.0;
   for (std::size_t m = 0; m < 3; ++m) {
-    const double x = rows["floor.u_x"][m], y = rows["floor.u_y"][m], turn = rows["floor.r_z"][m];
+    const double x = rows["floor.u_x"][m], y = rows["floor.u_y"][m], turn = rows["floor.u_rz"][m];
     worst = std::max({worst, std::abs(rows["top3.u_x"][m] - (x - 4.0 * turn)),
                       std::abs(rows["top3.u_y"][m] - (y + 6.0 * turn)),
-                      std::abs(rows["top3.r_z"][m] - turn)});
+                      std::abs(rows["top3.u_rz"][m] - turn)});
   }
   std::printf("  tied corner's shape against the floor's rigid motion: %.1e\n", worst);
   EXPECT_LT(worst, 1e-14);

@@ -27,7 +27,11 @@ TEST_F(PushoverCommand, WritesTheCapacityCurveAndFindsTheFirstYield) {
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   std::cout << outcome.out;
   const std::string csv = read_text(path("out") / "pushover.csv");
-  EXPECT_TRUE(contains(csv, "displacement,base_shear,iterations,bridge.p1.hinge.deformation"));
+  // Each column with its unit, as every run CSV has (the bundled bridge names no mass unit).
+  EXPECT_TRUE(contains(csv,
+                       "displacement [m],base_shear,iterations,bridge.p1.hinge.deformation "
+                       "[rad],"))
+      << csv.substr(0, 200);
   const std::string summary = read_text(path("out") / "pushover.json");
   EXPECT_TRUE(contains(summary, "\"status\": \"completed\""));
   // The pier yields at its top displacement M_y h^2 / (3 E I) = 3.56 mm: the first point past it.
@@ -60,7 +64,8 @@ TEST_F(PushoverCommand, FindsTheFirstYieldOfABiaxialHinge) {
              "--increments", "200", "--out", path("out").string(), "--json"});
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   const std::string csv = read_text(path("out") / "pushover.csv");
-  EXPECT_TRUE(contains(csv, "hinge.deformation_1,hinge.deformation_2")) << csv.substr(0, 200);
+  EXPECT_TRUE(contains(csv, "hinge.deformation_1 [rad],hinge.deformation_2 [rad]"))
+      << csv.substr(0, 200);
   const nlohmann::json summary = nlohmann::json::parse(read_text(path("out") / "pushover.json"));
   const nlohmann::json& first = summary["first_yield"];
   const double shear = yield / height;
