@@ -12,8 +12,6 @@ std::string with_unit(double value, const std::string& unit, int digits) {
 
 namespace {
 
-// The units of what the report prints: energies in force x length (the moment's unit) and
-// impulses in force x time.
 // Force x time: "N*s", and "kg*cm/s" for a force written out as "kg*cm/s^2" (not "kg*cm/s^2*s").
 std::string impulse_unit(const std::string& force, const std::string& time) {
   if (force.empty()) return "";
@@ -23,6 +21,8 @@ std::string impulse_unit(const std::string& force, const std::string& time) {
   return force + "*" + time;
 }
 
+// The units of what the report prints: energies in force x length (the moment's unit) and
+// impulses in force x time.
 struct ReportUnits {
   explicit ReportUnits(const UnitNames& names)
       : time(names.of(Dimension::time)),

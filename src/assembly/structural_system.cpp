@@ -529,8 +529,9 @@ std::vector<integrators::LinkSet::Term> link_row(const model::DofMap& dofs, cons
   return row;
 }
 
-// Whether a constraint ties the node (a point of a rigid floor): its DOFs are its master's.
-bool tied(const model::DofMap& dofs, Index node) {
+// Whether a constraint ties the node through lever arms (a point of a rigid floor): a DOF of it
+// is a combination of its master's, not one of them as it is (an equal-DOF tie).
+bool tied_with_lever_arms(const model::DofMap& dofs, Index node) {
   for (int d = 0; d < dofs.dofs_per_node(); ++d) {
     const DofTerms terms = dofs.terms(node, d);
     if (terms.size() > 1 || (terms.size() == 1 && terms[0].coefficient != 1.0)) return true;
@@ -880,7 +881,8 @@ links::LinkContext StructuralSystem::link_context(const model::Link& link) const
   };
   end(link.node_i, context.mass_i, context.stiffness_i, context.fixed_i);
   end(link.node_j, context.mass_j, context.stiffness_j, context.fixed_j);
-  if (link.has_offsets() || tied(dofs_, link.node_i) || tied(dofs_, link.node_j)) {
+  if (link.has_offsets() || tied_with_lever_arms(dofs_, link.node_i) ||
+      tied_with_lever_arms(dofs_, link.node_j)) {
     // A point off its node (rigid offsets) or of a rigid floor moves with the body's rotation
     // too: its mass along the row is 1 / (b^T M^-1 b) of the end's part b of the row (lever
     // arms and ties included), the body's rotary inertia with its mass. Taken as the node's

@@ -235,7 +235,11 @@ struct PierHinge {
   std::string link;  // its id
   std::optional<double> yield_curvature;
 };
-// The hinge's hardening ratio that gives the pier `pier_ratio` (see pier_hinge).
+// The hinge's hardening ratio that gives the pier `pier_ratio`: in series with the stiffened
+// elastic pier ((n + 1) / n of 3 E I / h), the hinge's post-yield slope s gives the pier r times
+// its yield secant, 1 / (n / ((n + 1) k) + 1 / s) = r k_ym, with k_ym the pier's secant to yield
+// (series of the pier and the hinge's F_y / delta_y). For a bilinear hinge, r / (1 + n (1 - r))
+// (Ibarra & Krawinkler 2005, appendix B; Zareian & Medina 2010).
 double hinge_hardening(double pier_ratio, double n, double hinge_stiffness, const LawSpec& law) {
   const auto deformation = law.parameters.find("yield_deformation");
   // Bilinear: closed form, the same bits about either axis of a 3-D pier (a coupled hinge
@@ -266,11 +270,7 @@ PierHinge pier_hinge(const GirderBridgeSpec& spec, int pier, bool across) {
   const double n = hinge.stiffness_factor, stiffness = (n + 1.0) * 3.0 * ei / h;
   made.law.parameters["stiffness"] = stiffness;
   made.law.parameters["yield_force"] = yield_moment;
-  // The law's hardening ratio r is the pier's: in series with the stiffened elastic pier
-  // ((n + 1) / n of 3 E I / h), the hinge's post-yield slope s gives the pier r times its yield
-  // secant, 1 / (n / ((n + 1) k) + 1 / s) = r k_ym, with k_ym the pier's secant to yield (series
-  // of the pier and the hinge's F_y / delta_y). For a bilinear hinge, r / (1 + n (1 - r))
-  // (Ibarra & Krawinkler 2005, appendix B; Zareian & Medina 2010).
+  // The law's hardening ratio is the pier's, not the hinge's.
   const auto ratio = made.law.parameters.find("hardening_ratio");
   if (ratio != made.law.parameters.end() && ratio->second > 0.0)
     ratio->second = hinge_hardening(ratio->second, n, stiffness, made.law);

@@ -31,8 +31,9 @@ class Restrainer final : public LinkLaw {
   void commit() override;
   void revert() override;
   bool in_contact() const override { return committed_taut_; }  // taut
-  double plastic_elongation() const { return committed_plastic_; }
-  double permanent_deformation() const override { return committed_plastic_; }
+  double permanent_deformation() const override {
+    return committed_plastic_;
+  }  // plastic elongation
 
  private:
   std::string name_;

@@ -29,6 +29,15 @@ RunOutcome run_bundled(const std::string& name) {
   return outcome;
 }
 
+// A model given as text (`name` for its messages), histories off.
+RunOutcome run_text(const std::string& name, const std::string& text) {
+  RunRequest request;
+  request.model_path = name;
+  request.model_text = text;
+  request.histories = false;
+  return run_model(request);
+}
+
 // The report's line that starts with `start` (after its indent), or "".
 std::string line_of(const std::string& report, const std::string& start) {
   std::istringstream lines(report);
@@ -171,9 +180,7 @@ TEST(RunReport, AHingesHistoryIsInMomentAndRotationUnits) {
 // hardening) that stores T_y^2 / 2k = 50 J and dissipates the rest of the 500 J by stretching
 // p = 450 J / T_y = 45 mm.
 TEST(RunReport, AYieldedRestrainerGivesItsPermanentElongation) {
-  RunRequest request;
-  request.model_path = "cable.json";
-  request.model_text = R"({
+  const RunOutcome outcome = run_text("cable.json", R"({
     "dimension": 1, "units": {"length": "m", "time": "s", "mass": "kg"},
     "nodes": [{"id": "ground", "x": 0}, {"id": "mass", "x": 1}],
     "supports": [{"node": "ground", "fix": ["x"]}],
@@ -182,9 +189,7 @@ TEST(RunReport, AYieldedRestrainerGivesItsPermanentElongation) {
     "links": [{"id": "cable", "nodes": ["ground", "mass"], "axis": [1],
                "law": {"type": "restrainer", "stiffness": 1e6, "slack": 0.01,
                        "yield_force": 1e4}}],
-    "analysis": {"time_step": 1e-4, "duration": 0.2}})";
-  request.histories = false;
-  const RunOutcome outcome = run_model(request);
+    "analysis": {"time_step": 1e-4, "duration": 0.2}})");
   ASSERT_TRUE(outcome.failure.empty()) << outcome.failure;
   const std::string line = line_of(outcome.report, "restrainer cable:");
   EXPECT_TRUE(has(line, ", yielded: permanent elongation 0.045")) << line;
@@ -198,9 +203,7 @@ TEST(RunReport, AYieldedRestrainerGivesItsPermanentElongation) {
 // An impulse is force x time: in kg and cm the force is written out, kg*cm/s^2, and the impulse
 // kg*cm/s (it said kg*cm/s^2*s).
 TEST(RunReport, AnImpulseOfAWrittenOutForceIsMassLengthOverTime) {
-  RunRequest request;
-  request.model_path = "wall.json";
-  request.model_text = R"({
+  const RunOutcome outcome = run_text("wall.json", R"({
     "dimension": 1, "units": {"length": "cm", "time": "s", "mass": "kg"},
     "nodes": [{"id": "mass", "x": 0}, {"id": "wall", "x": 1}],
     "supports": [{"node": "wall", "fix": ["x"]}],
@@ -208,9 +211,7 @@ TEST(RunReport, AnImpulseOfAWrittenOutForceIsMassLengthOverTime) {
     "initial_velocities": [{"node": "mass", "x": 10}],
     "links": [{"id": "contact", "nodes": ["mass", "wall"], "axis": [1], "gap": 1,
                "law": {"type": "gap_spring", "stiffness": 1e4}}],
-    "analysis": {"time_step": 1e-3, "duration": 0.3}})";
-  request.histories = false;
-  const RunOutcome outcome = run_model(request);
+    "analysis": {"time_step": 1e-3, "duration": 0.3}})");
   const std::string line = line_of(outcome.report, "contact contact:");
   EXPECT_TRUE(has(line, "peak force ") && has(line, " kg*cm/s^2, ")) << line;
   EXPECT_TRUE(line.ends_with(" kg*cm/s")) << line;  // 2 m v = 20 kg cm/s

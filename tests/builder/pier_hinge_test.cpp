@@ -8,8 +8,6 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "assembly/pushover.hpp"
-#include "assembly/structural_system.hpp"
 #include "builder/build.hpp"
 #include "core/errors.hpp"
 #include "io/model_reader.hpp"
@@ -90,15 +88,8 @@ double pier_post_yield_slope(const Json& law) {
     generator["pier_hinge"]["law"] = law;
     generator["bearing"] = {{"type", "elastic_spring"}, {"stiffness", 1.0}};
   }));
-  assembly::StructuralSystem system(model.model);
-  assembly::PushoverControl control{
-      .equation = system.dofs().own_equation(model.node_index.at("bridge.p1.top"), 0),
-      .target = 0.03,  // 8 times the pier's yield displacement, 3.56 mm
-      .increments = 30};
-  control.pattern = Vector::Zero(system.size());
-  control.pattern[control.equation] = 1.0;
-  const auto result = assembly::pushover(system, Vector::Zero(system.size()), control);
-  EXPECT_TRUE(result.stopped.empty()) << result.stopped;
+  // To 8 times the pier's yield displacement, 3.56 mm.
+  const auto result = testing::push(model, "bridge.p1.top", 0, 0.03, 30);
   const auto& last = result.curve.back();
   const auto& before = result.curve[result.curve.size() - 2];
   return (last.load_factor - before.load_factor) / (last.displacement - before.displacement);

@@ -185,7 +185,7 @@ TEST(ContactLaws, YieldedRestrainerComesBackWithMoreSlack) {
   const LawResponse yielding = cable.set_trial(at(-0.02));
   EXPECT_NEAR(-yielding.force, 500.0, 1e-9);
   cable.commit();
-  EXPECT_NEAR(cable.plastic_elongation(), 0.01 - 500.0 / 1e5, 1e-12);
+  EXPECT_NEAR(cable.permanent_deformation(), 0.01 - 500.0 / 1e5, 1e-12);
   EXPECT_EQ(cable.set_trial(at(-0.012)).force, 0.0);  // was taut at 0.012 before yielding
 }
 
