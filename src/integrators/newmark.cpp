@@ -590,6 +590,7 @@ void Newmark::predict_links(SecondOrderSystem& system, const State& to, bool sol
 bool Newmark::solve_link_forces(SecondOrderSystem& system, const Factorization& f, double c_m,
                                 double c_c, double external_norm, StepResult& result) {
   LinkSet& links = system.links();
+  Backtrack backtrack;
   for (int iteration = 0;; ++iteration) {
     evaluate_links(links, f, c_m, c_c);
     const ResidualKind kind = residual_kind();
@@ -614,6 +615,7 @@ bool Newmark::solve_link_forces(SecondOrderSystem& system, const Factorization& 
           test_.max_iterations, result.unbalanced_force, reference);
       return false;
     }
+    if (backtracked(backtrack, iteration, result.unbalanced_force)) continue;
     solve_correction(f);
     assumed_force_ -= correction_;
     mark_changed_rows();
@@ -625,6 +627,25 @@ bool Newmark::solve_link_forces(SecondOrderSystem& system, const Factorization& 
       return true;
     }
   }
+}
+
+// Newton's full steps, kept while they converge (every run that converges in kBacktrackAfter
+// iterations is untouched). Past them, a correction that left the residual no smaller is halved
+// back from the forces it started at, up to kHalvings times: a row whose force rises from zero
+// with an unbounded slope (Jankowski's damping ~ delta^(1/4) delta_dot at a contact's onset)
+// otherwise has Newton jump between open (tangent zero) and closed (tangent huge) for ever, at
+// any step size. Not with hard contacts, whose semismooth rows keep their active-set logic.
+bool Newmark::backtracked(Backtrack& backtrack, int iteration, double unbalanced) {
+  constexpr int kBacktrackAfter = 8, kHalvings = 30;
+  if (has_hard_contacts_ || iteration < kBacktrackAfter) return false;
+  if (backtrack.started && unbalanced >= backtrack.unbalanced && backtrack.halvings < kHalvings) {
+    ++backtrack.halvings;
+    backtrack.scale *= 0.5;
+    assumed_force_ = backtrack.force - backtrack.scale * correction_;
+    return true;
+  }
+  backtrack = {true, unbalanced, assumed_force_, 1.0, 0};
+  return false;
 }
 
 // More hard constraints than the DOFs they hold (a rigid deck's two corners sticking: four rows on

@@ -233,6 +233,18 @@ class Newmark final : public Integrator {
   std::vector<Index> changed_rows_;
   std::vector<char> changed_mark_;
   void mark_changed_rows();  // after a correction
+  // Where a late Newton step stands: the forces it started from, with their unbalanced force, and
+  // how far its correction is cut back.
+  struct Backtrack {
+    bool started = false;
+    double unbalanced = 0.0;
+    Vector force;
+    double scale = 1.0;
+    int halvings = 0;
+  };
+  // Cuts a late correction that did not lower the unbalanced force back by half (true: the
+  // forces changed, evaluate again).
+  bool backtracked(Backtrack& backtrack, int iteration, double unbalanced);
   double force_change(Index row) const {
     return started_loaded_ ? assumed_force_[row] - start_force_[row] : assumed_force_[row];
   }

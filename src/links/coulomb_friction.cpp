@@ -42,6 +42,8 @@ CoulombFriction::CoulombFriction(const CoulombFriction& other)
       trial_anchor_(other.committed_anchor_),
       committed_slip_(other.committed_slip_),
       trial_slip_(other.committed_slip_),
+      committed_slip_direction_(other.committed_slip_direction_),
+      trial_slip_direction_(other.committed_slip_direction_),
       committed_slide_(other.committed_slide_),
       trial_slide_(other.committed_slide_),
       committed_normal_force_(other.committed_normal_force_),
@@ -91,6 +93,7 @@ FrictionResponse CoulombFriction::coulomb(const LinkKinematics& normal,
   out.normal = normal_->set_trial(normal);
   trial_slide_[0] = tangential.penetration;
   trial_slip_ = false;
+  trial_slip_direction_ = {};
   if (!(out.normal.force > 0.0)) {
     trial_anchor_[0] = tangential.penetration;  // a new contact sticks where it lands
     return out;
@@ -105,10 +108,14 @@ FrictionResponse CoulombFriction::coulomb(const LinkKinematics& normal,
     out.tangential_on_slip[0][0] = {0.0, stick_.stiffness, stick_.damping, stick_.mass};
     return out;
   }
-  // Slip against the relative tangential velocity (at rest: against the stick force).
-  const double direction = tangential.penetration_rate != 0.0
+  // Slip against the relative tangential velocity; at rest along the stick force, and turning
+  // back along its held part (see turning_back).
+  const double held = stick - stick_.mass * tangential.penetration_acceleration;
+  const double direction = turning_back(Tangential{held, 0.0}) ? std::copysign(1.0, held)
+                           : tangential.penetration_rate != 0.0
                                ? std::copysign(1.0, tangential.penetration_rate)
                                : std::copysign(1.0, stick);
+  trial_slip_direction_[0] = direction;
   trial_slip_ = true;
   out.slipping = true;
   out.tangential_force[0] = direction * limit;
@@ -127,6 +134,7 @@ FrictionResponse CoulombFriction::coulomb_in_plane(const LinkKinematics& normal,
   out.normal = normal_->set_trial(normal);
   for (std::size_t a = 0; a < kMaxTangents; ++a) trial_slide_[a] = tangential[a].penetration;
   trial_slip_ = false;
+  trial_slip_direction_ = {};
   if (!(out.normal.force > 0.0)) {
     trial_anchor_ = trial_slide_;  // a new contact sticks where it lands
     return out;
@@ -146,31 +154,38 @@ FrictionResponse CoulombFriction::coulomb_in_plane(const LinkKinematics& normal,
   return out;
 }
 
-// F_c = mu R_n e, e the unit slide velocity (at rest: the unit stick force). Its tangent: e mu
-// dR_n along the normal quantities, and mu R_n (I - e e^T) / |w| dw along the slide's, w being
-// the slide rate (dw = d s_dot) or the stick force (dw = k_t ds + c_t ds_dot + m_t ds_ddot).
+// F_c = mu R_n e along w / |w|: w the slide rate, or turning back the stick force's held part,
+// or at rest the stick force. Its tangent: e mu dR_n along the normal quantities, and
+// mu R_n (I - e e^T) / |w| dw along the slide's: dw = d s_dot, k_t ds + c_t ds_dot, or
+// k_t ds + c_t ds_dot + m_t ds_ddot.
 void CoulombFriction::slip_in_plane(std::span<const LinkKinematics> tangential,
                                     const Tangential& stick_force, FrictionResponse& out) {
   const Tangential rate{tangential[0].penetration_rate, tangential[1].penetration_rate};
-  const double speed = std::hypot(rate[0], rate[1]);
-  const bool moving = speed > 0.0;
-  const Tangential& along = moving ? rate : stick_force;
-  const double length = moving ? speed : std::hypot(stick_force[0], stick_force[1]);
+  Tangential held;
+  for (std::size_t a = 0; a < kMaxTangents; ++a)
+    held[a] = stick_force[a] - stick_.mass * tangential[a].penetration_acceleration;
+  const bool turning = turning_back(held);
+  const bool moving = !turning && (rate[0] != 0.0 || rate[1] != 0.0);
+  const Tangential& along = turning ? held : moving ? rate : stick_force;
+  const double length = std::hypot(along[0], along[1]);
   const Tangential direction{along[0] / length, along[1] / length};
+  // dw per unit turn: (k_t, c_t, m_t) of the stick force, its held part's, or the rate's.
+  const LawResponse dw = moving ? LawResponse{0.0, 0.0, 1.0, 0.0}
+                         : turning
+                             ? LawResponse{0.0, stick_.stiffness, stick_.damping, 0.0}
+                             : LawResponse{0.0, stick_.stiffness, stick_.damping, stick_.mass};
   const double limit = coefficient_ * out.normal.force;
   trial_slip_ = true;
   out.slipping = true;
   const LawResponse& n = out.normal;
   for (std::size_t a = 0; a < kMaxTangents; ++a) {
     out.tangential_force[a] = direction[a] * limit;
+    trial_slip_direction_[a] = direction[a];
     const double scale = direction[a] * coefficient_;
     out.tangential_on_normal[a] = {0.0, scale * n.stiffness, scale * n.damping, scale * n.mass};
     for (std::size_t b = 0; b < kMaxTangents; ++b) {
       const double turn = limit * ((a == b ? 1.0 : 0.0) - direction[a] * direction[b]) / length;
-      out.tangential_on_slip[a][b] = moving
-                                         ? LawResponse{0.0, 0.0, turn, 0.0}
-                                         : LawResponse{0.0, turn * stick_.stiffness,
-                                                       turn * stick_.damping, turn * stick_.mass};
+      out.tangential_on_slip[a][b] = {0.0, turn * dw.stiffness, turn * dw.damping, turn * dw.mass};
     }
     // Move the anchor so that the stick force would equal the slip force: no jump on sticking.
     if (stick_.stiffness > 0.0)
@@ -178,10 +193,23 @@ void CoulombFriction::slip_in_plane(std::span<const LinkKinematics> tangential,
   }
 }
 
+// Whether a contact that slipped at the last commit still has its stick force's held part (the
+// spring and dashpot, k_t (s - s_0) + c_t s_dot) that way. Where its velocity has turned within
+// the step it then slips on along that part until the stick branch takes over, so the force
+// passes from +mu R_n to -mu R_n continuously instead of jumping with the velocity's sign (a jump
+// at which Newton's iteration cycles without end). The held part leaves out m_t s_ddot: an
+// explicit step finds s_ddot from the link forces themselves, and a direction that turned with
+// them would flip at every iteration where m_t outweighs the contact's mass.
+bool CoulombFriction::turning_back(const Tangential& held) const {
+  return normal_->in_contact() &&
+         held[0] * committed_slip_direction_[0] + held[1] * committed_slip_direction_[1] > 0.0;
+}
+
 void CoulombFriction::commit() {
   normal_->commit();
   committed_anchor_ = trial_anchor_;
   committed_slip_ = trial_slip_;
+  committed_slip_direction_ = trial_slip_direction_;
   committed_slide_ = trial_slide_;
   committed_normal_force_ = trial_normal_force_;
   committed_tangential_force_ = trial_tangential_force_;
@@ -204,6 +232,7 @@ void CoulombFriction::revert() {
   normal_->revert();
   trial_anchor_ = committed_anchor_;
   trial_slip_ = committed_slip_;
+  trial_slip_direction_ = committed_slip_direction_;
   trial_slide_ = committed_slide_;
   trial_normal_force_ = committed_normal_force_;
   trial_tangential_force_ = committed_tangential_force_;

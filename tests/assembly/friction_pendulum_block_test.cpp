@@ -98,25 +98,29 @@ TEST(FrictionPendulumBlock, WithoutFrictionSwingsWithThePendulumPeriod) {
   EXPECT_LT(std::abs(amplitude / expected_amplitude - 1.0), 1e-3);
 }
 
-// While the block slides, R_t - R_n s / R is the friction force mu R_n against the motion.
+// While the block slides, R_t - R_n s / R is the friction force mu R_n against the step's slide:
+// the velocity's direction, except in a step in which the velocity turned while the block still
+// slipped the old way (it then slips on until its stick spring unloads, coulomb_friction.hpp).
 struct SlideForces {
   double mean_friction = 0.0;  // mean |R_t - R_n s / R| over sliding steps
-  double worst_error = 0.0;    // max |R_t - (W s / R + mu W sign(s_dot))| / (mu W) over them
+  double worst_error = 0.0;    // max |R_t - (W s / R + mu W sign(ds))| / (mu W) over them
   double normal_force = 0.0;   // R_n at the end
   int sliding_steps = 0;
+  int turning_steps = 0;  // slipping steps whose velocity opposes their slide
 };
 
 SlideForces slide_forces(const Swing& swing, double mu, double weight) {
   SlideForces out;
-  for (std::size_t k = 0; k < swing.time.size(); ++k) {
+  for (std::size_t k = 1; k < swing.time.size(); ++k) {
     if (!swing.slipping[k]) continue;
     const double friction =
         swing.tangential_force[k] - swing.normal_force[k] * swing.slide[k] / kRadius;
-    const double expected =
-        weight * swing.slide[k] / kRadius + std::copysign(mu * weight, swing.slide_rate[k]);
+    const double expected = weight * swing.slide[k] / kRadius +
+                            std::copysign(mu * weight, swing.slide[k] - swing.slide[k - 1]);
     out.worst_error =
         std::max(out.worst_error, std::abs(swing.tangential_force[k] - expected) / (mu * weight));
     out.mean_friction += std::abs(friction);
+    if ((swing.slide[k] - swing.slide[k - 1]) * swing.slide_rate[k] < 0.0) ++out.turning_steps;
     ++out.sliding_steps;
   }
   out.mean_friction /= out.sliding_steps;
@@ -132,10 +136,12 @@ TEST(FrictionPendulumBlock, TheFrictionForceFollowsTheVerticalLoad) {
       slide_forces(run(block_model(mu, 2 * weight, 0.0, 0.5, 1.5)), mu, 2 * weight);
   const double ratio = doubled.mean_friction / single.mean_friction;
   std::cout << fmt::format(
-      "sliding block: |R_t - (W s/R + mu W sign)| <= {:.2e} mu W ({} steps) under W, {:.2e} "
-      "under 2 W ({} steps); friction force ratio {:.9f}; R_n {:.6f} W and {:.6f} W\n",
-      single.worst_error, single.sliding_steps, doubled.worst_error, doubled.sliding_steps, ratio,
-      single.normal_force / weight, doubled.normal_force / weight);
+      "sliding block: |R_t - (W s/R + mu W sign)| <= {:.2e} mu W ({} steps, {} turning) under W, "
+      "{:.2e} under 2 W ({} steps, {} turning); friction force ratio {:.9f}; R_n {:.6f} W and "
+      "{:.6f} W\n",
+      single.worst_error, single.sliding_steps, single.turning_steps, doubled.worst_error,
+      doubled.sliding_steps, doubled.turning_steps, ratio, single.normal_force / weight,
+      doubled.normal_force / weight);
   EXPECT_GT(single.sliding_steps, 100);
   EXPECT_GT(doubled.sliding_steps, 100);
   EXPECT_LT(single.worst_error, 1e-6);

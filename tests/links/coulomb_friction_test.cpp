@@ -1,12 +1,15 @@
 // Coulomb friction: stick and slip forces, and the consistent (non-symmetric) tangent against
 // finite differences in both regimes, with one tangent (plane scenes) and two (3-D: the limit is
-// a circle, slip is against the slide velocity, and its direction's turn enters the tangent).
+// a circle, slip is against the slide velocity, and its direction's turn enters the tangent); a
+// slip turning back passes through the stick branch, continuous in the slide.
 #include "links/coulomb_friction.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <initializer_list>
 #include <iostream>
 
 #include "links/gap_spring.hpp"
@@ -65,6 +68,32 @@ TEST(CoulombFriction, SticksBelowTheLimitAndSlipsAtMuTimesTheNormalForce) {
   EXPECT_EQ(apart.tangential_force[0], 0.0);
 }
 
+// A block slipping forwards (R_n = 100 N, limit 40 N, k_t = 2e5 N/m) whose velocity turns within a
+// step: the force follows the stick force k_t (s - s_0) down from +40 N to -40 N over
+// 2 mu R_n / k_t = 0.4 mm of slide, continuous at every slide. A slip force against the velocity
+// would jump by 2 mu R_n = 80 N where the stick force passes the limit, a jump at which Newton's
+// iteration cycles (a friction pendulum's runs failed so).
+TEST(CoulombFriction, ASlipTurningBackPassesThroughTheStickBranch) {
+  CoulombFriction friction(std::make_unique<KelvinVoigt>(1e6, 0.0, true), 0.4, {2e5, 0.0, 0.0});
+  friction.set_trial({-1e-4, 0.1, 0.0}, {0.0, 0.0, 0.0});
+  friction.commit();
+  EXPECT_TRUE(friction.set_trial({1e-4, 0.0, 0.0}, {1e-3, 0.1, 0.0}).slipping);
+  friction.commit();  // slipping forwards at +40 N, its anchor at 1e-3 - 40 / 2e5 = 0.8 mm
+  double worst_jump = 0.0, previous = 0.0;
+  const double step = 1e-6;
+  for (int i = 0; i <= 700; ++i) {
+    const double slide = 1.1e-3 - step * i;  // from beyond the last slip back past the reversal
+    const FrictionResponse r = friction.set_trial({1e-4, 0.0, 0.0}, {slide, -0.1, 0.0});
+    const double expected = std::clamp(2e5 * (slide - 0.8e-3), -40.0, 40.0);
+    EXPECT_NEAR(r.tangential_force[0], expected, 1e-9) << "slide " << slide;
+    if (i > 0) worst_jump = std::max(worst_jump, std::abs(r.tangential_force[0] - previous));
+    previous = r.tangential_force[0];
+  }
+  std::cout << "largest force change over a 1e-6 m slide through the turn: " << worst_jump
+            << " N (stick slope: 0.2 N)\n";
+  EXPECT_LE(worst_jump, 2e5 * step * (1 + 1e-9));
+}
+
 TEST(CoulombFriction, TangentMatchesFiniteDifferencesInStickAndSlip) {
   const double stick = tangent_error({1e-4, 0.01, 0.0}, {1e-6, 0.001, 0.0});
   const double slip = tangent_error({1e-4, 0.01, 0.0}, {1e-2, 0.3, 0.0});
@@ -90,10 +119,16 @@ CoulombFriction in_plane_law() {
                          std::nullopt, 2);
 }
 
-double plane_tangent_error(const PlaneTrial& at, bool expect_slip, int columns) {
+// `before`: committed states the trial starts from (after the contact's first touch).
+double plane_tangent_error(const PlaneTrial& at, bool expect_slip, int columns,
+                           std::initializer_list<PlaneTrial> before = {}) {
   CoulombFriction friction = in_plane_law();
   in_plane(friction, {-1e-4, 0.1, 0, 0, 0, 0, 0});
   friction.commit();
+  for (const PlaneTrial& state : before) {
+    in_plane(friction, state);
+    friction.commit();
+  }
   const FrictionResponse r = in_plane(friction, at);
   EXPECT_EQ(r.slipping, expect_slip);
   const auto analytic = [&](int row, int v) {
@@ -154,8 +189,13 @@ TEST(CoulombFriction, InAContactPlaneTheTangentMatchesFiniteDifferences) {
   const double slip = plane_tangent_error({1e-4, 0.01, 1e-2, -3e-3, 0.3, -0.4, 2.0}, true, 7);
   // At rest and slipping: the direction is the stick force's (rate columns left out).
   const double rest = plane_tangent_error({1e-4, 0.0, 2e-4, -1.5e-4, 0.0, 0.0, 0.0}, true, 4);
+  // Slipping along +t1, then turning back (velocity (-0.1, 0.2)) with the stick force still
+  // forwards: along the stick force, every column.
+  const double turning = plane_tangent_error({1e-4, 0.01, 1.5e-3, 1e-4, -0.1, 0.2, 0.0}, true, 7,
+                                             {{1e-4, 0.0, 1e-3, 0.0, 0.1, 0.0, 0.0}});
   std::cout << "in-plane tangent errors: stick " << stick << ", slip " << slip << ", slip at rest "
-            << rest << "\n";
+            << rest << ", turning back " << turning << "\n";
+  EXPECT_LT(turning, 1e-6);
   EXPECT_LT(stick, 1e-6);
   EXPECT_LT(slip, 1e-6);
   EXPECT_LT(rest, 1e-6);
