@@ -19,7 +19,24 @@
 namespace pound::verification {
 namespace {
 
-// Kawashima's advice on a penalty spring's stiffness against the elements next to it.
+// Whether an element that carries mass meets the node: the node is a point of a meshed body
+// (a rod, a continuum), not a lumped mass on massless piers or storeys.
+bool meshed_at(const model::Model& model, Index node) {
+  for (const auto& element : model.elements) {
+    const auto& nodes = element->nodes();
+    if (std::find(nodes.begin(), nodes.end(), node) == nodes.end()) continue;
+    const model::ElementMass mass = element->mass();
+    if ((mass.is_consistent() ? mass.consistent.cwiseAbs().maxCoeff() : mass.lumped.maxCoeff()) >
+        0.0)
+      return true;
+  }
+  return false;
+}
+
+// Kawashima's advice on a penalty spring's stiffness against the elements next to it, for
+// meshed bodies: a spring far stiffer than the elements of the bodies it joins rings inside
+// their contact. Between lumped masses held by massless piers or storeys the ratio is that of a
+// contact to the structure, large by design (the contact is the two masses on the link).
 void warn_k_ratio(const LinkCheck& c, std::vector<std::string>& warnings) {
   const double ratio = c.stiffness / c.adjacent;
   if (ratio > 100.0)
@@ -383,7 +400,8 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
     // A penalty spring without the extended penalty's mass: Kawashima's advice.
     const bool plain_penalty = link.law && link.law->traits.penalty &&
                                links.law(k).clone()->set_trial({1e-9, 1e-9, 0.0}).mass == 0.0;
-    if (c.adjacent > 0.0 && c.stiff_at_first_touch && plain_penalty)
+    const bool meshed = meshed_at(built.model, link.node_i) || meshed_at(built.model, link.node_j);
+    if (c.adjacent > 0.0 && c.stiff_at_first_touch && plain_penalty && meshed)
       warn_k_ratio(c, check.warnings);
     warn_contact_steps(c, analysis, check.warnings);
     warn_created_energy(link, links.law(k), system, analysis, approach, memo, check.warnings);
