@@ -152,17 +152,27 @@ std::string joint_line(const results::JointResult& joint, const ReportUnits& uni
       with_unit(joint.peak.peak_girder_acceleration, units.acceleration));
 }
 
+// A residual read while the storey still swings (by more than a tenth of the residual and a
+// thousandth of the peak) is one point of that swing, not where it settles: say so.
+std::string still_swinging(const results::DriftPeak& peak, const ReportUnits& units) {
+  if (!(peak.end_swing > 0.1 * std::abs(peak.residual_drift) &&
+        peak.end_swing > 1e-3 * peak.peak_drift))
+    return {};
+  return fmt::format(" (still swinging +-{} at the end: run past the record to let it settle)",
+                     with_unit(peak.end_swing, units.length));
+}
+
 std::string drift_line(const results::DriftResult& drift, const ReportUnits& units) {
   const builder::DriftMonitor& m = drift.monitor;
   const bool pier = m.kind == builder::DriftKind::pier;
   const std::optional<double> ductility = drift.ductility();
   const std::optional<double> demand = drift.elastic_demand_ratio();
   std::string text = fmt::format(
-      "  {} {}: peak drift {} ({:.3f} % of {}), residual {}{}{}, {} acceleration {} "
+      "  {} {}: peak drift {} ({:.3f} % of {}), residual {}{}{}{}, {} acceleration {} "
       "(absolute){}{}\n",
       pier ? "pier" : "storey", m.id, with_unit(drift.peak.peak_drift, units.length),
       100.0 * drift.peak.peak_drift / m.height, with_unit(m.height, units.length),
-      with_unit(drift.peak.residual_drift, units.length),
+      with_unit(drift.peak.residual_drift, units.length), still_swinging(drift.peak, units),
       ductility ? fmt::format(", ductility {:.2f}", *ductility)
       : demand  ? fmt::format(", elastic, {:.2f} x its yield drift", *demand)
                 : std::string(),

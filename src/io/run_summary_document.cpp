@@ -118,6 +118,7 @@ Document drift_document(const results::DriftResult& drift) {
       .set("time", drift.peak.time);
   doc.set("residual_drift", drift.peak.residual_drift)
       .set("residual_drift_ratio", drift.residual_ratio())
+      .set("end_swing", drift.peak.end_swing)
       .set("peak_absolute_acceleration", drift.peak.peak_acceleration)
       .set("acceleration_time", drift.peak.acceleration_time);
   if (const std::optional<double> ductility = drift.ductility()) doc.set("ductility", *ductility);

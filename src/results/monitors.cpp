@@ -17,7 +17,10 @@ double sum_of(const std::vector<Term>& terms, const Vector& v) {
 }  // namespace
 
 DriftMonitors::DriftMonitors(std::vector<Where> storeys, GroundAcceleration& ground)
-    : storeys_(std::move(storeys)), ground_(ground), peaks_(storeys_.size()) {
+    : storeys_(std::move(storeys)),
+      ground_(ground),
+      peaks_(storeys_.size()),
+      turning_(storeys_.size()) {
   for (const Where& w : storeys_) {
     Places& at = places_.emplace_back();
     if (w.drift.empty()) {
@@ -92,6 +95,26 @@ double DriftMonitors::fixed_or_along_axis(const Where& w, const Places& at,
   return std::abs(acceleration);
 }
 
+// A turning point where the drift's change between steps changes sign; the swing is half the
+// range between the last maximum and the last minimum (consecutive, so the maximum is above).
+void DriftMonitors::track_swing(Turning& turning, double drift, DriftPeak& peak) {
+  const double change = drift - turning.previous;
+  const int slope = (change > 0.0) - (change < 0.0);
+  if (slope != 0) {
+    if (turning.slope > 0 && slope < 0) {
+      turning.maximum = turning.previous;
+      turning.has_maximum = true;
+    } else if (turning.slope < 0 && slope > 0) {
+      turning.minimum = turning.previous;
+      turning.has_minimum = true;
+    }
+    turning.slope = slope;
+  }
+  turning.previous = drift;
+  if (turning.has_maximum && turning.has_minimum)
+    peak.end_swing = 0.5 * (turning.maximum - turning.minimum);
+}
+
 void DriftMonitors::record(const integrators::State& state) {
   if (storeys_.empty()) return;
   plan_current_ = false;
@@ -116,6 +139,7 @@ void DriftMonitors::record(const integrators::State& state) {
     const double signed_drift = w.drift.empty() ? displacements_[at.top] - displacements_[at.bottom]
                                                 : plus_zero(displacements_[at.drift]);
     p.residual_drift = signed_drift;
+    track_swing(turning_[k], signed_drift, p);
     if (std::abs(signed_drift) > p.peak_drift) {
       p.peak_drift = std::abs(signed_drift);
       p.time = state.time;

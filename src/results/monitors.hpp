@@ -21,6 +21,10 @@ struct DriftPeak {
   double peak_drift = 0.0;      // max |u_top - u_bottom| along its direction (x unless told) [L]
   double time = 0.0;            // when
   double residual_drift = 0.0;  // u_top - u_bottom at the end of the run [L]
+  // How far the drift still swung over its last cycle: half the range between its last local
+  // maximum and minimum [L]. A storey still vibrating at the end has no settled residual: its
+  // residual_drift is one point of that swing.
+  double end_swing = 0.0;
   // The top node's absolute acceleration along the drift (the floor's, the pier top's) [L/T^2]
   double peak_acceleration = 0.0;
   double acceleration_time = 0.0;
@@ -70,6 +74,14 @@ class DriftMonitors : public Observer {
   mutable std::vector<DriftPeak> peaks_;
   mutable bool plan_current_ = true;
   std::vector<Places> places_;
+  // Each storey's drift at the last step, which way it was going, and its last turning points.
+  struct Turning {
+    double previous = 0.0, maximum = 0.0, minimum = 0.0;
+    int slope = 0;
+    bool has_maximum = false, has_minimum = false;
+  };
+  std::vector<Turning> turning_;
+  static void track_swing(Turning& turning, double drift, DriftPeak& peak);
   TermSums displacement_sums_, acceleration_sums_;
   std::vector<double> displacements_, accelerations_;  // their values at the step
   // The largest |sum| of every displacement sum and when it first was, kept in one pass over

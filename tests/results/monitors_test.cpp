@@ -3,6 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <iostream>
+#include <numbers>
+
 #include "support/dof_readings.hpp"
 #include "support/vectors.hpp"
 
@@ -42,6 +46,28 @@ TEST(DriftMonitors, KeepTheLargestDriftEitherWayAndItsTime) {
   EXPECT_EQ(drifts.peaks()[0].time, 0.2);
   EXPECT_EQ(drifts.peaks()[1].peak_drift, 0.5);
   EXPECT_EQ(drifts.peaks()[1].time, 0.1);
+}
+
+// A storey swinging about 0.2 with a decaying amplitude, d = 0.2 + e^-t cos(2 pi t) to t = 3:
+// its last turning points are the maximum near t = 3 and the minimum near t = 2.5, where
+// tan(2 pi t) = -1 / (2 pi); the swing is half their distance. The residual is the last step's.
+TEST(DriftMonitors, KeepHowFarTheDriftStillSwingsOverItsLastCycle) {
+  GroundAcceleration ground = ramp_ground();
+  DriftMonitors drifts({{dof(-1), dof(0), 10}}, ground);
+  const double pi = std::numbers::pi, dt = 1e-4;
+  const auto drift = [&](double t) { return 0.2 + std::exp(-t) * std::cos(2 * pi * t); };
+  for (int k = 0; k <= 30000; ++k) drifts.record(state(k * dt, entries({drift(k * dt)})));
+  const double shift = std::atan(1.0 / (2 * pi)) / (2 * pi);
+  const double expected = 0.5 * (drift(3.0 - shift) - drift(2.5 - shift));
+  const DriftPeak& peak = drifts.peaks()[0];
+  std::cout << "swing " << peak.end_swing << " against " << expected << " (relative error "
+            << std::abs(peak.end_swing / expected - 1) << ")\n";
+  EXPECT_NEAR(peak.end_swing / expected, 1.0, 1e-6);
+  EXPECT_NEAR(peak.residual_drift, drift(3.0), 1e-12);
+  // A drift that never turned has no swing.
+  DriftMonitors ramp({{dof(-1), dof(0), 10}}, ground);
+  for (int k = 0; k <= 10; ++k) ramp.record(state(k * 0.1, entries({0.01 * k})));
+  EXPECT_EQ(ramp.peaks()[0].end_swing, 0.0);
 }
 
 // The top node's absolute acceleration: relative plus the ground's, largest either way.
