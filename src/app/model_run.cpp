@@ -2,11 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <exception>
 #include <filesystem>
 #include <optional>
 
 #include "app/run_report.hpp"
+#include "assembly/modal_analysis.hpp"
 #include "assembly/static_equilibrium.hpp"
 #include "assembly/structural_system.hpp"
 #include "builder/build.hpp"
@@ -61,6 +63,20 @@ std::vector<std::string> record_warnings(const LoadedModel& loaded) {
   return warnings;
 }
 
+// Drift monitors read how far a storey still swings at the end over twice the structure's first
+// period: a window a higher mode's ripple cannot fill. Without modes (a mechanism) they read the
+// drift's last cycle.
+void set_swing_window(const builder::BuiltModel& built, const assembly::StructuralSystem& system,
+                      results::RunObservers& observers) {
+  if (built.drift_monitors.empty()) return;
+  try {
+    const std::vector<double> periods = assembly::natural_periods(system, 1);
+    if (!periods.empty() && std::isfinite(periods.front()) && periods.front() > 0.0)
+      observers.set_swing_window(2.0 * periods.front());
+  } catch (const std::exception&) {
+  }
+}
+
 PreparedRun prepare(const RunRequest& request) {
   const Stopwatch stopwatch;
   const std::string& model_path = request.model_path;
@@ -93,8 +109,17 @@ PreparedRun prepare(const RunRequest& request) {
       verification::RodImpactObserver::attach(built, run.system->dofs(), run.system->links());
   if (run.verification) run.observers->add(*run.verification);
   run.warnings = verification::check_model(built, *run.system, false).warnings;
-  // After the diagnostics, which see the laws as built; the run's start commits them again.
-  builder::check_first_step(built, built.analysis, *run.system, model_path);
+  set_swing_window(built, *run.system, *run.observers);
+  // After the diagnostics, which see the laws as built; the run's start commits them again. Not
+  // before a static start, which must find them as built: the first step's start commits them
+  // with the initial velocities (a friction anchor moved by its stick dashpot's c_t v0 made the
+  // static solve of a launched block "slide away"), so it is tried on a system of its own.
+  if (built.analysis.static_initial_state) {
+    assembly::StructuralSystem trial(built.model);
+    builder::check_first_step(built, built.analysis, trial, model_path);
+  } else {
+    builder::check_first_step(built, built.analysis, *run.system, model_path);
+  }
   for (std::string& warning : record_warnings(run.loaded)) run.warnings.push_back(warning);
   run.setup_s = stopwatch.seconds();
   return run;

@@ -20,7 +20,8 @@ DriftMonitors::DriftMonitors(std::vector<Where> storeys, GroundAcceleration& gro
     : storeys_(std::move(storeys)),
       ground_(ground),
       peaks_(storeys_.size()),
-      turning_(storeys_.size()) {
+      turning_(storeys_.size()),
+      windows_(storeys_.size()) {
   for (const Where& w : storeys_) {
     Places& at = places_.emplace_back();
     if (w.drift.empty()) {
@@ -115,6 +116,19 @@ void DriftMonitors::track_swing(Turning& turning, double drift, DriftPeak& peak)
     peak.end_swing = 0.5 * (turning.maximum - turning.minimum);
 }
 
+void DriftMonitors::track_window(Window& window, double time, double drift, DriftPeak& peak) const {
+  auto& largest = window.largest;
+  auto& smallest = window.smallest;
+  while (!largest.empty() && largest.back().second <= drift) largest.pop_back();
+  while (!smallest.empty() && smallest.back().second >= drift) smallest.pop_back();
+  largest.emplace_back(time, drift);
+  smallest.emplace_back(time, drift);
+  const double start = time - swing_window_;
+  while (largest.front().first < start) largest.pop_front();
+  while (smallest.front().first < start) smallest.pop_front();
+  peak.end_swing = 0.5 * (largest.front().second - smallest.front().second);
+}
+
 void DriftMonitors::record(const integrators::State& state) {
   if (storeys_.empty()) return;
   plan_current_ = false;
@@ -139,7 +153,10 @@ void DriftMonitors::record(const integrators::State& state) {
     const double signed_drift = w.drift.empty() ? displacements_[at.top] - displacements_[at.bottom]
                                                 : plus_zero(displacements_[at.drift]);
     p.residual_drift = signed_drift;
-    track_swing(turning_[k], signed_drift, p);
+    if (swing_window_ > 0.0)
+      track_window(windows_[k], state.time, signed_drift, p);
+    else
+      track_swing(turning_[k], signed_drift, p);
     if (std::abs(signed_drift) > p.peak_drift) {
       p.peak_drift = std::abs(signed_drift);
       p.time = state.time;

@@ -3,6 +3,7 @@
 // displacement ductility demand where a yield drift is known), and joints (how far the gap
 // opened and closed, how far the girder moved on its seat, and the margin left to unseating).
 #include <array>
+#include <deque>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,9 +22,10 @@ struct DriftPeak {
   double peak_drift = 0.0;      // max |u_top - u_bottom| along its direction (x unless told) [L]
   double time = 0.0;            // when
   double residual_drift = 0.0;  // u_top - u_bottom at the end of the run [L]
-  // How far the drift still swung over its last cycle: half the range between its last local
-  // maximum and minimum [L]. A storey still vibrating at the end has no settled residual: its
-  // residual_drift is one point of that swing.
+  // How far the drift still swings at the end: half its range over the run's last swing window
+  // (DriftMonitors::set_swing_window: twice the structure's first period), or without one over
+  // its last cycle (its last local maximum and minimum) [L]. A storey still vibrating at the end
+  // has no settled residual: its residual_drift is one point of that swing.
   double end_swing = 0.0;
   // The top node's absolute acceleration along the drift (the floor's, the pier top's) [L/T^2]
   double peak_acceleration = 0.0;
@@ -52,6 +54,10 @@ class DriftMonitors : public Observer {
     std::vector<Term> twist = {};
   };
   DriftMonitors(std::vector<Where> storeys, GroundAcceleration& ground);
+  // The end swing is then the drift's half range over the run's last `seconds` (model time), a
+  // window long enough that a higher mode's ripple does not hide the first mode's swing; set
+  // before the run.
+  void set_swing_window(double seconds) { swing_window_ = seconds; }
   void record(const integrators::State& state) override;
   // With each storey's largest corner drift, its corner and time, and its twist, from the peaks
   // of the plan sums.
@@ -82,6 +88,14 @@ class DriftMonitors : public Observer {
   };
   std::vector<Turning> turning_;
   static void track_swing(Turning& turning, double drift, DriftPeak& peak);
+  // With a swing window: each storey's (time, drift) candidates for the window's largest and
+  // smallest drift, oldest first (monotonic queues: each state enters and leaves once).
+  double swing_window_ = 0.0;
+  struct Window {
+    std::deque<std::pair<double, double>> largest, smallest;
+  };
+  std::vector<Window> windows_;
+  void track_window(Window& window, double time, double drift, DriftPeak& peak) const;
   TermSums displacement_sums_, acceleration_sums_;
   std::vector<double> displacements_, accelerations_;  // their values at the step
   // The largest |sum| of every displacement sum and when it first was, kept in one pass over

@@ -36,6 +36,8 @@ class RunObservers {
   const LinkSummaries& links() const { return links_; }
   const EnergyBalance& energy() const { return energy_; }
   const DriftMonitors& drifts() const { return drifts_; }
+  // The drift monitors' end swing over the run's last `seconds` (DriftMonitors::set_swing_window).
+  void set_swing_window(double seconds) { drifts_.set_swing_window(seconds); }
   // The peak |V_i| and |M_i| (none for a truss) of drift monitor k's base element, if it has one
   // (a 3-D beam's: its shear along the drift, its moment about the horizontal axis across it).
   std::optional<double> base_shear(std::size_t monitor) const;

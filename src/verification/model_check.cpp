@@ -33,13 +33,14 @@ bool meshed_at(const model::Model& model, Index node) {
   return false;
 }
 
-// Kawashima's advice on a penalty spring's stiffness against the elements next to it, for
-// meshed bodies: a spring far stiffer than the elements of the bodies it joins rings inside
-// their contact. Between lumped masses held by massless piers or storeys the ratio is that of a
-// contact to the structure, large by design (the contact is the two masses on the link).
-void warn_k_ratio(const LinkCheck& c, std::vector<std::string>& warnings) {
+// Kawashima's advice on a penalty spring's stiffness against the elements next to it. A spring
+// far stiffer than the elements of meshed bodies rings inside their contact; between lumped
+// masses held by massless piers or storeys (`meshed` false) that ratio is the contact's against
+// the structure, large by design (the contact is the two masses on the link). A spring far
+// softer lets the bodies pass through each other either way.
+void warn_k_ratio(const LinkCheck& c, bool meshed, std::vector<std::string>& warnings) {
   const double ratio = c.stiffness / c.adjacent;
-  if (ratio > 100.0)
+  if (ratio > 100.0 && meshed)
     warnings.push_back(
         fmt::format("link {}: k-ratio {:.3g}: a link this stiff against its neighbours "
                     "separates and recontacts inside the true contact with peaks many "
@@ -401,8 +402,8 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
     const bool plain_penalty = link.law && link.law->traits.penalty &&
                                links.law(k).clone()->set_trial({1e-9, 1e-9, 0.0}).mass == 0.0;
     const bool meshed = meshed_at(built.model, link.node_i) || meshed_at(built.model, link.node_j);
-    if (c.adjacent > 0.0 && c.stiff_at_first_touch && plain_penalty && meshed)
-      warn_k_ratio(c, check.warnings);
+    if (c.adjacent > 0.0 && c.stiff_at_first_touch && plain_penalty)
+      warn_k_ratio(c, meshed, check.warnings);
     warn_contact_steps(c, analysis, check.warnings);
     warn_created_energy(link, links.law(k), system, analysis, approach, memo, check.warnings);
     check.contacts.push_back(c);

@@ -1024,6 +1024,14 @@ TEST_F(Cli, CheckWarnsAboutMeaninglessSettingsOnly) {
   const Outcome rung = pound({"check", path("stiff_rods.json").string(), "--strict"});
   EXPECT_EQ(rung.exit_code, 1) << rung.err;
   EXPECT_TRUE(contains(rung.out, "k-ratio 1e+03: a link this stiff")) << rung.out;
+  // A link far softer than the piers (N/m typed for kN/m) lets the lumped girders pass through
+  // each other: warned of, meshed or not.
+  model["links"][0]["law"]["stiffness"] = 5e5;
+  model["analysis"]["time_step"] = 0.002;
+  std::ofstream(path("soft.json")) << model.dump();
+  const Outcome soft = pound({"check", path("soft.json").string(), "--strict"});
+  EXPECT_EQ(soft.exit_code, 1) << soft.err;
+  EXPECT_TRUE(contains(soft.out, "a link this soft")) << soft.out;
 }
 
 // ---- Issue 16 item 6: a run says which records it applied, how scaled ----

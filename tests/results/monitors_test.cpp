@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <numbers>
@@ -68,6 +69,35 @@ TEST(DriftMonitors, KeepHowFarTheDriftStillSwingsOverItsLastCycle) {
   DriftMonitors ramp({{dof(-1), dof(0), 10}}, ground);
   for (int k = 0; k <= 10; ++k) ramp.record(state(k * 0.1, entries({0.01 * k})));
   EXPECT_EQ(ramp.peaks()[0].end_swing, 0.0);
+}
+
+// The same swing with a higher mode's ripple (1 mm at 20 Hz) on top: its turning points come
+// every 25 ms, so the last cycle is the ripple's alone (2 mm across, hiding the 0.07 swing); over
+// a window of two first-mode periods (2 s) the swing is the first mode's, half the distance
+// between the window's extremes (near t = 1 and t = 1.5).
+TEST(DriftMonitors, OverTheirWindowAHigherModesRippleDoesNotHideTheSwing) {
+  GroundAcceleration ground = ramp_ground();
+  const double pi = std::numbers::pi, dt = 1e-4;
+  const auto swing = [&](double t) { return 0.2 + std::exp(-t) * std::cos(2 * pi * t); };
+  const auto drift = [&](double t) { return swing(t) + 1e-3 * std::cos(2 * pi * 20 * t); };
+  DriftMonitors last_cycle({{dof(-1), dof(0), 10}}, ground);
+  DriftMonitors windowed({{dof(-1), dof(0), 10}}, ground);
+  windowed.set_swing_window(2.0);
+  for (int k = 0; k <= 30000; ++k) {
+    last_cycle.record(state(k * dt, entries({drift(k * dt)})));
+    windowed.record(state(k * dt, entries({drift(k * dt)})));
+  }
+  // The reference: the window's extremes searched on a grid 100 times finer than the steps.
+  double largest = -1e300, smallest = 1e300;
+  for (int k = 0; k <= 2000000; ++k) {
+    largest = std::max(largest, drift(1.0 + k * 1e-6));
+    smallest = std::min(smallest, drift(1.0 + k * 1e-6));
+  }
+  const double expected = 0.5 * (largest - smallest);
+  std::cout << "with a ripple: last cycle " << last_cycle.peaks()[0].end_swing << ", window "
+            << windowed.peaks()[0].end_swing << " against " << expected << "\n";
+  EXPECT_LT(last_cycle.peaks()[0].end_swing, 2e-3);
+  EXPECT_NEAR(windowed.peaks()[0].end_swing / expected, 1.0, 1e-6);
 }
 
 // The top node's absolute acceleration: relative plus the ground's, largest either way.
