@@ -121,6 +121,13 @@ std::string link_lines(const results::RunSummary& run, const ReportUnits& units)
                 ? fmt::format(", permanent deformation {}",
                               with_unit(link.permanent_deformation, units.length))
                 : std::string());
+        if (link.friction && s.shear)
+          text += fmt::format(
+              "    friction: peak slide {}, residual slide {}, peak tangential force {}, work {}\n",
+              with_unit(s.shear->peak_deformation, units.length),
+              with_unit(s.shear->final_deformation, units.length),
+              with_unit(s.shear->peak_force, units.force, 6),
+              with_unit(s.shear->work, units.energy(), 6));
         break;
     }
   }

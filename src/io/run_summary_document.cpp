@@ -73,6 +73,21 @@ Document shear_document(const results::LinkResult& link) {
   return doc;
 }
 
+// A friction link's slide: the resultant over its tangents (one in a plane, two in a contact
+// plane), the tangential force's largest, and their work, what friction dissipated with what a
+// pendulum's restoring force holds at the end.
+Document friction_document(const results::ShearSummary& s, bool in_plane) {
+  Document doc;
+  doc.set("peak_slide", s.peak_deformation)
+      .set("residual_slide", s.final_deformation)
+      .set("peak_tangential_force", s.peak_force)
+      .set("work", s.work);
+  if (in_plane)
+    doc.set("peak_slides",
+            std::vector<double>(s.peak_deformations.begin(), s.peak_deformations.end()));
+  return doc;
+}
+
 Document link_document(const results::LinkResult& link) {
   const results::LinkSummary& s = link.summary;
   Document doc;
@@ -99,6 +114,8 @@ Document link_document(const results::LinkResult& link) {
   // stiffness-proportional damping added to the link ("rayleigh"): its part of `work`
   if (link.viscous.work != 0.0) doc.set("damping_energy", link.viscous.work);
   if (link.shear && s.shear) doc.set("shear", shear_document(link));
+  if (link.friction && s.shear)
+    doc.set("friction", friction_document(*s.shear, s.shear->peak_deformations[1] > 0.0));
   return doc;
 }
 

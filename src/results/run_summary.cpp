@@ -144,15 +144,21 @@ std::vector<Index> normal_rows(const integrators::LinkSet& links) {
   return rows;
 }
 
+// A bearing's coupled shear, or a friction link's tangential rows (its slide, which never
+// yields: the summary's ductility stays 0).
 std::vector<ShearRows> shear_rows(const integrators::LinkSet& links) {
   std::vector<ShearRows> rows(static_cast<std::size_t>(links.count()));
-  for (Index k = 0; k < links.count(); ++k)
+  for (Index k = 0; k < links.count(); ++k) {
+    ShearRows& these = rows[static_cast<std::size_t>(k)];
     if (const links::CoupledShear* shear = links.shear(k)) {
-      ShearRows& these = rows[static_cast<std::size_t>(k)];
       these.count = shear->tangents();
       for (std::size_t a = 0; a < these.yield_deformation.size(); ++a)
         these.yield_deformation[a] = shear->numbers()[a].yield_deformation();
+    } else if (links.has_friction(k)) {
+      these.count = links.rows(k) - 1;
+      these.yield_deformation.fill(std::numeric_limits<double>::infinity());
     }
+  }
   return rows;
 }
 
@@ -616,6 +622,7 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
       result.initial_stiffness =  // of a fresh law: this one has yielded
           link.make_law(system.link_context(link))->set_trial({0.0, 0.0, 0.0}).stiffness;
     result.shear = link.shear;
+    result.friction = system.links().has_friction(static_cast<Index>(k));
     if (const links::CoupledShear* shear = system.links().shear(static_cast<Index>(k)))
       result.shear_viscous = shear->viscous_part();
     run.links.push_back(result);

@@ -130,6 +130,9 @@ struct LinkResult {
   std::optional<double> shear_ductility() const;
   std::optional<double> shear_peak_plastic_deformation(std::size_t along) const;
   std::optional<double> shear_hysteretic_energy() const;
+  // Friction on its tangential rows: summary.shear is then its slide (a resultant in a contact
+  // plane), the tangential force and their work (friction's and a pendulum's restoring part).
+  bool friction = false;
 };
 
 struct DriftResult {

@@ -179,6 +179,32 @@ TEST(RunReport, AHingesHistoryIsInMomentAndRotationUnits) {
 // it went taut): a 1 t mass at 1 m/s pulls a cable (k = 1e6 N/m, 10 mm slack, T_y = 10 kN, no
 // hardening) that stores T_y^2 / 2k = 50 J and dissipates the rest of the 500 J by stretching
 // p = 450 J / T_y = 45 mm.
+// A friction link gives its slide: the bundled block launched at 2 m/s on a floor (mu = 0.5)
+// slides v0^2 / (2 mu g) and stays there, its friction taking all its kinetic energy m v0^2 / 2
+// (20 J) at mu R_n (49.05 N sliding; at least that at its peak, when R_n overshoots as it lands); a
+// block on a friction pendulum under the bundled record gives its peak and residual slide.
+TEST(RunReport, AFrictionLinkGivesItsSlideAndWhatItDissipated) {
+  const RunOutcome outcome = run_bundled("block_on_floor.json");
+  const nlohmann::json friction =
+      nlohmann::json::parse(outcome.summary.dump())["links"][0]["friction"];
+  const double distance = 2.0 * 2.0 / (2 * 0.5 * 9.81);
+  std::cout << line_of(outcome.report, "  friction:") << "\n"
+            << "slide against v0^2/(2 mu g): "
+            << friction["peak_slide"].get<double>() / distance - 1
+            << ", work against m v0^2 / 2: " << friction["work"].get<double>() / 20.0 - 1 << "\n";
+  EXPECT_NEAR(friction["peak_slide"].get<double>() / distance, 1.0, 1e-4);
+  EXPECT_NEAR(friction["residual_slide"].get<double>() / distance, 1.0, 1e-4);
+  EXPECT_NEAR(friction["work"].get<double>() / 20.0, 1.0, 1e-4);
+  EXPECT_GE(friction["peak_tangential_force"].get<double>(), 0.5 * 10 * 9.81 * (1 - 1e-9));
+  EXPECT_FALSE(friction.contains("peak_slides"));  // one tangent in a plane
+  EXPECT_TRUE(has(line_of(outcome.report, "  friction:"), "peak slide 0.4078 m")) << outcome.report;
+  const RunOutcome pendulum = run_bundled("sliding_block_pendulum.json");
+  const nlohmann::json bearing =
+      nlohmann::json::parse(pendulum.summary.dump())["links"][0]["friction"];
+  EXPECT_GT(bearing["peak_slide"].get<double>(), bearing["residual_slide"].get<double>());
+  EXPECT_GT(bearing["work"].get<double>(), 0.0);
+}
+
 TEST(RunReport, AYieldedRestrainerGivesItsPermanentElongation) {
   const RunOutcome outcome = run_text("cable.json", R"({
     "dimension": 1, "units": {"length": "m", "time": "s", "mass": "kg"},
