@@ -114,6 +114,8 @@ Document link_document(const results::LinkResult& link) {
   // stiffness-proportional damping added to the link ("rayleigh"): its part of `work`
   if (link.viscous.work != 0.0) doc.set("damping_energy", link.viscous.work);
   if (link.shear && s.shear) doc.set("shear", shear_document(link));
+  // Along each tangent only where the slide left the first: a plane scene written in 3-D gives
+  // the plane's numbers (tests/app/plane_scene_in_space_test.cpp).
   if (link.friction && s.shear)
     doc.set("friction", friction_document(*s.shear, s.shear->peak_deformations[1] > 0.0));
   return doc;

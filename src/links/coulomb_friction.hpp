@@ -17,12 +17,12 @@
 // way h still points keeps slipping that way, though its velocity turned within the step, until
 // the stick branch takes it over (the return mapping of elastic-plastic friction, as in OpenSees'
 // flatSliderBearing; h leaves out m_t s_ddot, which an explicit step finds from the link forces
-// themselves). The force then
-// passes from +mu R_n to -mu R_n through the stick branch, over 2 mu R_n / k_t of slide, instead
-// of jumping by 2 mu R_n with the velocity's sign: at that jump Newton's iteration cycles without
-// end when a step ends near a reversal (a friction pendulum failed so in 2 of 8 copies of a 1e-4
-// ensemble). Elsewhere the slip opposes the velocity, as Suzuki & Toi's does: under a belt or a
-// contact that lands sliding, the velocity is the only direction there is.
+// themselves). The force then passes from +mu R_n to -mu R_n through the stick branch, over
+// 2 mu R_n / k_t of slide, instead of jumping by 2 mu R_n with the velocity's sign: at that jump
+// Newton's iteration cycles without end when a step ends near a reversal (a friction pendulum
+// failed so in 2 of 8 copies of a 1e-4 ensemble). Elsewhere the slip opposes the velocity, as
+// Suzuki & Toi's does: under a belt or a contact that lands sliding, the velocity is the only
+// direction there is.
 //
 // With two tangents (t_1, t_2: links of 3-D scenes) s, F_c and s_0 are vectors of the contact
 // plane and the limit is a circle (isotropic friction):
