@@ -65,10 +65,12 @@ void DriftMonitors::record_plan(const Where& w, const Places& at, DriftPeak& p) 
 }
 
 const std::vector<DriftPeak>& DriftMonitors::peaks() const {
-  if (!plan_current_)
-    for (std::size_t k = 0; k < storeys_.size(); ++k)
+  if (!read_current_)
+    for (std::size_t k = 0; k < storeys_.size(); ++k) {
       if (!storeys_[k].corners.empty()) record_plan(storeys_[k], places_[k], peaks_[k]);
-  plan_current_ = true;
+      if (swing_window_ > 0.0) peaks_[k].end_swing = windows_[k].half_range();
+    }
+  read_current_ = true;
   return peaks_;
 }
 
@@ -116,22 +118,38 @@ void DriftMonitors::track_swing(Turning& turning, double drift, DriftPeak& peak)
     peak.end_swing = 0.5 * (turning.maximum - turning.minimum);
 }
 
-void DriftMonitors::track_window(Window& window, double time, double drift, DriftPeak& peak) const {
-  auto& largest = window.largest;
-  auto& smallest = window.smallest;
-  while (!largest.empty() && largest.back().second <= drift) largest.pop_back();
-  while (!smallest.empty() && smallest.back().second >= drift) smallest.pop_back();
-  largest.emplace_back(time, drift);
-  smallest.emplace_back(time, drift);
-  const double start = time - swing_window_;
-  while (largest.front().first < start) largest.pop_front();
-  while (smallest.front().first < start) smallest.pop_front();
-  peak.end_swing = 0.5 * (largest.front().second - smallest.front().second);
+void DriftMonitors::RecentDrifts::add(double time, double drift, double start) {
+  std::size_t mask = ring_.size() - 1;
+  while (size_ > 0 && ring_[head_].first < start) {
+    head_ = (head_ + 1) & mask;
+    --size_;
+  }
+  if (size_ == ring_.size()) {
+    std::vector<std::pair<double, double>> larger(2 * ring_.size());
+    for (std::size_t k = 0; k < size_; ++k) larger[k] = ring_[(head_ + k) & mask];
+    ring_ = std::move(larger);
+    head_ = 0;
+    mask = ring_.size() - 1;
+  }
+  ring_[(head_ + size_) & mask] = {time, drift};
+  ++size_;
+}
+
+double DriftMonitors::RecentDrifts::half_range() const {
+  if (size_ == 0) return 0.0;
+  const std::size_t mask = ring_.size() - 1;
+  double largest = ring_[head_].second, smallest = largest;
+  for (std::size_t k = 1; k < size_; ++k) {
+    const double drift = ring_[(head_ + k) & mask].second;
+    largest = std::max(largest, drift);
+    smallest = std::min(smallest, drift);
+  }
+  return 0.5 * (largest - smallest);
 }
 
 void DriftMonitors::record(const integrators::State& state) {
   if (storeys_.empty()) return;
-  plan_current_ = false;
+  read_current_ = false;
   displacement_sums_.evaluate(state.displacement, displacements_.data());
   acceleration_sums_.evaluate(state.acceleration, ground_.frame(state.time), accelerations_.data());
   // Every sum's peak, without branches (a tie is no new peak; NaN none).
@@ -154,7 +172,7 @@ void DriftMonitors::record(const integrators::State& state) {
                                                 : plus_zero(displacements_[at.drift]);
     p.residual_drift = signed_drift;
     if (swing_window_ > 0.0)
-      track_window(windows_[k], state.time, signed_drift, p);
+      windows_[k].add(state.time, signed_drift, state.time - swing_window_);
     else
       track_swing(turning_[k], signed_drift, p);
     if (std::abs(signed_drift) > p.peak_drift) {

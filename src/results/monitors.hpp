@@ -3,7 +3,6 @@
 // displacement ductility demand where a yield drift is known), and joints (how far the gap
 // opened and closed, how far the girder moved on its seat, and the margin left to unseating).
 #include <array>
-#include <deque>
 #include <optional>
 #include <string>
 #include <vector>
@@ -76,9 +75,10 @@ class DriftMonitors : public Observer {
 
   std::vector<Where> storeys_;
   GroundAcceleration& ground_;
-  // The plan fields (corner, twist) are folded in from the sums' peaks when read after a record.
+  // The plan fields (corner, twist) and the windowed end swing are folded in when the peaks are
+  // read after a record.
   mutable std::vector<DriftPeak> peaks_;
-  mutable bool plan_current_ = true;
+  mutable bool read_current_ = true;
   std::vector<Places> places_;
   // Each storey's drift at the last step, which way it was going, and its last turning points.
   struct Turning {
@@ -88,14 +88,23 @@ class DriftMonitors : public Observer {
   };
   std::vector<Turning> turning_;
   static void track_swing(Turning& turning, double drift, DriftPeak& peak);
-  // With a swing window: each storey's (time, drift) candidates for the window's largest and
-  // smallest drift, oldest first (monotonic queues: each state enters and leaves once).
+  // With a swing window: each storey's (time, drift) of the steps inside it, oldest first, in a
+  // ring that doubles when full (no allocation once the window has filled); the swing is taken
+  // from them when the peaks are read, so a step only stores its drift (a monotonic queue of the
+  // window's extremes cost the bridge's step 2 %).
   double swing_window_ = 0.0;
-  struct Window {
-    std::deque<std::pair<double, double>> largest, smallest;
+  class RecentDrifts {
+   public:
+    // Adds (time, drift) after dropping the steps older than `start`.
+    void add(double time, double drift, double start);
+    // Half the range of the drifts kept.
+    double half_range() const;
+
+   private:
+    std::vector<std::pair<double, double>> ring_ = std::vector<std::pair<double, double>>(16);
+    std::size_t head_ = 0, size_ = 0;
   };
-  std::vector<Window> windows_;
-  void track_window(Window& window, double time, double drift, DriftPeak& peak) const;
+  std::vector<RecentDrifts> windows_;
   TermSums displacement_sums_, acceleration_sums_;
   std::vector<double> displacements_, accelerations_;  // their values at the step
   // The largest |sum| of every displacement sum and when it first was, kept in one pass over
