@@ -60,15 +60,16 @@ bool is_headline(const std::string& path) {
   return std::find(keys.begin(), keys.end(), key) != keys.end();
 }
 
+// `scale`: a size the spread is measured against where the quantity's own is smaller.
 QuantitySpread spread_of(const std::string& path, double unperturbed,
-                         const std::vector<double>& values, double robust_spread) {
+                         const std::vector<double>& values, double robust_spread, double scale) {
   QuantitySpread q{path, unperturbed};
   q.median = results::quantile(values, 0.5);
   q.p16 = results::quantile(values, 0.16);
   q.p84 = results::quantile(values, 0.84);
   q.min = *std::min_element(values.begin(), values.end());
   q.max = *std::max_element(values.begin(), values.end());
-  const double size = std::max({std::abs(unperturbed), std::abs(q.min), std::abs(q.max)});
+  const double size = std::max({std::abs(unperturbed), std::abs(q.min), std::abs(q.max), scale});
   q.spread = size > 0.0 ? (q.p84 - q.p16) / size : 0.0;
   q.robust = q.spread <= robust_spread;
   q.headline = is_headline(path);
@@ -87,13 +88,21 @@ std::vector<QuantitySpread> spreads(const RunOutcome& unperturbed,
     }
   std::vector<QuantitySpread> result;
   if (numbers.empty()) return result;
+  // The energy terms are judged against the largest of them, as the balance is: the kinetic
+  // energy left at the end of a friction pendulum's run (1e-9 of the input, its stick spring
+  // still ringing) is not a result whose spread matters.
+  double energy_scale = 0.0;
+  for (const auto& [path, value] : unperturbed.summary.numbers())
+    if (path.starts_with("/energy/") && is_response(path))
+      energy_scale = std::max(energy_scale, std::abs(value));
   for (const auto& [path, value] : unperturbed.summary.numbers()) {
     if (!is_response(path)) continue;
     std::vector<double> values;
     for (const auto& copy : numbers)
       if (const auto found = copy.find(path); found != copy.end()) values.push_back(found->second);
     if (values.size() == numbers.size())
-      result.push_back(spread_of(path, value, values, robust_spread));
+      result.push_back(spread_of(path, value, values, robust_spread,
+                                 path.starts_with("/energy/") ? energy_scale : 0.0));
   }
   return result;
 }

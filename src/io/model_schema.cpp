@@ -412,7 +412,9 @@ const Fields<FrictionSpec>& friction_fields() {
       required("coefficient", &FrictionSpec::coefficient, Number<>{non_negative},
                "μ, static = kinetic"),
       optional("stick_stiffness", &FrictionSpec::stick_stiffness, Number<>{positive},
-               "stiffness while sticking; default: the normal law's [F/L]"),
+               "stiffness while sticking; default: the normal law's [F/L]; on a friction "
+               "pendulum at least 1e4·N/R, or its residual displacement may be off by more "
+               "than 2 % of μR (the run warns; laws.md)"),
       optional("stick_damping", &FrictionSpec::stick_damping, Number<>{non_negative},
                "damping while sticking; default: the normal law's [F·T/L]"),
       optional("stick_mass", &FrictionSpec::stick_mass, Number<>{non_negative},

@@ -114,6 +114,9 @@ class CoulombFriction {
     trial_slip_ = slipping;
   }
   double coefficient() const { return coefficient_; }
+  // The pendulum's radius R; none for a flat slider.
+  std::optional<double> radius() const { return radius_; }
+  const StickPenalty& stick() const { return stick_; }
   bool slipping() const { return committed_slip_; }
   // Whether the trial state slips (at mu R_n).
   bool trial_slipping() const { return trial_slip_; }

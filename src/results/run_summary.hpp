@@ -91,11 +91,17 @@ struct RunStatus {
   bool completed() const { return failure.empty(); }
 };
 
+// A friction pendulum's numbers (a friction link with a radius): mu, R and the stick spring k_t.
+struct PendulumNumbers {
+  double coefficient = 0.0, radius = 0.0, stick_stiffness = 0.0;
+};
+
 struct LinkResult {
   std::string id, law;
   links::LinkRole role = links::LinkRole::contact;
   LinkSummary summary;
   bool rotational = false;  // a hinge: deformations are rotations
+  std::optional<PendulumNumbers> pendulum;
   // A contact or restrainer whose engagements' negative work is energy created (not a spring,
   // not a law with an inertia term).
   bool passive_engagements = false;

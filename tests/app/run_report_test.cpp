@@ -205,6 +205,42 @@ TEST(RunReport, AFrictionLinkGivesItsSlideAndWhatItDissipated) {
   EXPECT_GT(bearing["work"].get<double>(), 0.0);
 }
 
+// A friction pendulum (W = 9.81 kN, R = 2 m, mu = 0.06) whose stick spring is soft against its
+// dish is told so with the bound on its residual's error, 2 sqrt(mu R d_y) (d_y = mu W / k_t),
+// and the stick_stiffness that keeps it under 2 % of mu R (1e4 W / R); a stiff one is not.
+TEST(RunReport, ASoftStickSpringOnAFrictionPendulumIsWarnedOf) {
+  const auto pendulum = [](const char* stick_stiffness) {
+    return run_text("pendulum.json", fmt::format(R"({{
+      "dimension": 2, "units": {{"length": "m", "time": "s", "mass": "kg"}},
+      "nodes": [{{"id": "block", "x": 0, "y": 0}}, {{"id": "seat", "x": 0, "y": 0}}],
+      "masses": [{{"node": "block", "mass": 1000}}],
+      "supports": [{{"node": "seat", "fix": ["x", "y"]}}],
+      "loads": [{{"node": "block", "y": -9810}}],
+      "initial_velocities": [{{"node": "block", "x": 0.5}}],
+      "links": [{{"id": "bearing", "nodes": ["block", "seat"], "axis": [0, -1],
+                  "law": {{"type": "gap_spring", "stiffness": 1e9}},
+                  "friction": {{"coefficient": 0.06, "radius": 2,
+                                "stick_stiffness": {}}}}}],
+      "analysis": {{"time_step": 1e-3, "duration": 4, "initial_state": "static"}}}})",
+                                                 stick_stiffness));
+  };
+  const RunOutcome soft = pendulum("1e6");
+  ASSERT_TRUE(soft.failure.empty()) << soft.failure;
+  const auto warning_of = [](const RunOutcome& outcome) {
+    for (const std::string& warning : outcome.warnings)
+      if (warning.starts_with("friction pendulum bearing:")) return warning;
+    return std::string();
+  };
+  const std::string line = warning_of(soft);
+  std::cout << line << "\n";
+  EXPECT_TRUE(has(line, "slides d_y = 0.000589 ")) << line;
+  EXPECT_TRUE(has(line, "2 sqrt(mu R d_y) = 0.0168 (14 % of mu R)")) << line;
+  EXPECT_TRUE(has(line, "at least 1e4 N / R = 4.91e+07")) << line;
+  const RunOutcome stiff = pendulum("1e8");
+  ASSERT_TRUE(stiff.failure.empty()) << stiff.failure;
+  EXPECT_EQ(warning_of(stiff), "");
+}
+
 TEST(RunReport, AYieldedRestrainerGivesItsPermanentElongation) {
   const RunOutcome outcome = run_text("cable.json", R"({
     "dimension": 1, "units": {"length": "m", "time": "s", "mass": "kg"},
