@@ -282,12 +282,33 @@ std::optional<std::string> stick_spring_warning(const LinkResult& link) {
       error, 100.0 * error / band, 1e4 * normal / p.radius);
 }
 
+// A friction pendulum that slid far on its dish. The law is Zayas et al.'s small-displacement
+// form N s / R; on the spherical dish the restoring force is N tan(theta) = N s / sqrt(R^2 - s^2),
+// which the linear form falls short of by 1 - sqrt(1 - (s / R)^2) of it (2 % at s = 0.2 R), and
+// the slider's rise s^2 / (2 R) is left out.
+std::optional<std::string> dish_warning(const LinkResult& link) {
+  if (!link.pendulum || !link.summary.shear) return {};
+  const double slide = link.summary.shear->peak_deformation, radius = link.pendulum->radius;
+  const double ratio = slide / radius;
+  if (!(ratio > 0.2)) return {};
+  const double short_by = ratio < 1.0 ? 1.0 - std::sqrt(1.0 - ratio * ratio) : 1.0;
+  return fmt::format(
+      "friction pendulum {}: it slid {:.4g}, {:.2f} of its radius R = {:.4g}, where the "
+      "small-displacement pendulum's restoring force N s / R falls {:.1f} % short of the "
+      "spherical dish's N s / sqrt(R^2 - s^2) and leaves out the slider's rise s^2 / (2 R) = "
+      "{:.3g}: check that slide against the bearing's displacement capacity",
+      link.id, slide, ratio, radius, 100.0 * short_by, slide * slide / (2.0 * radius));
+}
+
 // Warnings for results an engineer should not trust as they are.
 std::vector<std::string> result_warnings(const RunSummary& run) {
   std::vector<std::string> warnings;
-  for (const LinkResult& link : run.links)
+  for (const LinkResult& link : run.links) {
     if (std::optional<std::string> warning = stick_spring_warning(link))
       warnings.push_back(std::move(*warning));
+    if (std::optional<std::string> warning = dish_warning(link))
+      warnings.push_back(std::move(*warning));
+  }
   for (const JointResult& joint : run.joints)
     if (joint.unseated())
       warnings.push_back(

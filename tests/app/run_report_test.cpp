@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -207,38 +208,57 @@ TEST(RunReport, AFrictionLinkGivesItsSlideAndWhatItDissipated) {
 
 // A friction pendulum (W = 9.81 kN, R = 2 m, mu = 0.06) whose stick spring is soft against its
 // dish is told so with the bound on its residual's error, 2 sqrt(mu R d_y) (d_y = mu W / k_t),
-// and the stick_stiffness that keeps it under 2 % of mu R (1e4 W / R); a stiff one is not.
-TEST(RunReport, ASoftStickSpringOnAFrictionPendulumIsWarnedOf) {
-  const auto pendulum = [](const char* stick_stiffness) {
+// and the stick_stiffness that keeps it under 2 % of mu R (1e4 W / R); a stiff one is not. One
+// launched so fast that it slides past R / 5 is told how far its small-displacement restoring
+// force N s / R falls short of the spherical dish's, 1 - sqrt(1 - (s / R)^2).
+TEST(RunReport, ASoftStickSpringOrALongSlideOnAFrictionPendulumIsWarnedOf) {
+  const auto pendulum = [](const char* stick_stiffness, double launch) {
     return run_text("pendulum.json", fmt::format(R"({{
       "dimension": 2, "units": {{"length": "m", "time": "s", "mass": "kg"}},
       "nodes": [{{"id": "block", "x": 0, "y": 0}}, {{"id": "seat", "x": 0, "y": 0}}],
       "masses": [{{"node": "block", "mass": 1000}}],
       "supports": [{{"node": "seat", "fix": ["x", "y"]}}],
       "loads": [{{"node": "block", "y": -9810}}],
-      "initial_velocities": [{{"node": "block", "x": 0.5}}],
+      "initial_velocities": [{{"node": "block", "x": {}}}],
       "links": [{{"id": "bearing", "nodes": ["block", "seat"], "axis": [0, -1],
                   "law": {{"type": "gap_spring", "stiffness": 1e9}},
                   "friction": {{"coefficient": 0.06, "radius": 2,
                                 "stick_stiffness": {}}}}}],
       "analysis": {{"time_step": 1e-3, "duration": 4, "initial_state": "static"}}}})",
-                                                 stick_stiffness));
+                                                 launch, stick_stiffness));
   };
-  const RunOutcome soft = pendulum("1e6");
-  ASSERT_TRUE(soft.failure.empty()) << soft.failure;
-  const auto warning_of = [](const RunOutcome& outcome) {
+  const auto warnings_of = [](const RunOutcome& outcome) {
+    std::vector<std::string> found;
     for (const std::string& warning : outcome.warnings)
-      if (warning.starts_with("friction pendulum bearing:")) return warning;
-    return std::string();
+      if (warning.starts_with("friction pendulum bearing:")) found.push_back(warning);
+    return found;
   };
-  const std::string line = warning_of(soft);
+  const RunOutcome soft = pendulum("1e6", 0.5);
+  ASSERT_TRUE(soft.failure.empty()) << soft.failure;
+  ASSERT_EQ(warnings_of(soft).size(), 1u);
+  const std::string line = warnings_of(soft)[0];
   std::cout << line << "\n";
   EXPECT_TRUE(has(line, "slides d_y = 0.000589 ")) << line;
   EXPECT_TRUE(has(line, "2 sqrt(mu R d_y) = 0.0168 (14 % of mu R)")) << line;
   EXPECT_TRUE(has(line, "at least 1e4 N / R = 4.91e+07")) << line;
-  const RunOutcome stiff = pendulum("1e8");
+  const RunOutcome stiff = pendulum("1e8", 0.5);
   ASSERT_TRUE(stiff.failure.empty()) << stiff.failure;
-  EXPECT_EQ(warning_of(stiff), "");
+  EXPECT_TRUE(warnings_of(stiff).empty());
+  const RunOutcome fast = pendulum("1e8", 2.0);
+  ASSERT_TRUE(fast.failure.empty()) << fast.failure;
+  ASSERT_EQ(warnings_of(fast).size(), 1u);
+  const std::string far = warnings_of(fast)[0];
+  const double slide =
+      nlohmann::json::parse(fast.summary.dump())["links"][0]["friction"]["peak_slide"]
+          .get<double>();
+  const double ratio = slide / 2.0;
+  std::cout << far << "\n";
+  EXPECT_TRUE(has(far, fmt::format("it slid {:.4g}, {:.2f} of its radius R = 2,", slide, ratio)))
+      << far;
+  EXPECT_TRUE(
+      has(far, fmt::format("falls {:.1f} % short", 100 * (1 - std::sqrt(1 - ratio * ratio)))))
+      << far;
+  EXPECT_GT(ratio, 0.3);
 }
 
 TEST(RunReport, AYieldedRestrainerGivesItsPermanentElongation) {
