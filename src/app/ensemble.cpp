@@ -215,11 +215,13 @@ std::string ensemble_report(const EnsembleResult& result, const EnsembleOptions&
     return a->spread > b->spread;
   });
   std::string text = fmt::format(
-      "ensemble: {} cop{} with the records scaled by 1 +- k {:g} (k up to {}), {} failed: {} of "
+      "ensemble: {} cop{} with {} scaled by 1 +- k {:g} (k up to {}), {} failed: {} of "
       "{} numbers are not robust (16-84 % spread above {:g} of their size)\n",
-      result.factors.size(), result.factors.size() == 1 ? "y" : "ies", options.perturbation,
-      (options.copies + 1) / 2, result.failed(), loose.size() + other, result.quantities.size(),
-      options.robust_spread);
+      result.factors.size(), result.factors.size() == 1 ? "y" : "ies",
+      result.unperturbed.driven_by_records ? "the records"
+                                           : "the initial velocities, loads and gravity",
+      options.perturbation, (options.copies + 1) / 2, result.failed(), loose.size() + other,
+      result.quantities.size(), options.robust_spread);
   constexpr std::size_t kShown = 16;
   for (std::size_t k = 0; k < std::min(kShown, loose.size()); ++k) {
     const QuantitySpread& q = *loose[k];

@@ -77,6 +77,26 @@ void set_swing_window(const builder::BuiltModel& built, const assembly::Structur
   }
 }
 
+bool driven_by_records(const model::Model& model) {
+  return !model.excitations.empty() || !model.support_excitations.empty();
+}
+
+// An ensemble member's perturbation: the records' accelerations times `factor`, or in a model
+// without them (a free vibration) what sets it moving, its initial velocities, nodal loads and
+// gravity.
+void scale_drivers(model::Model& model, double factor) {
+  for (model::UniformExcitation& e : model.excitations)
+    for (double& a : e.motion.acceleration) a *= factor;
+  for (model::SupportExcitation& e : model.support_excitations)
+    for (double& a : e.motion.acceleration) a *= factor;
+  if (driven_by_records(model)) return;
+  for (model::Coordinates& velocity : model.initial_velocity)
+    for (double& v : velocity) v *= factor;
+  for (model::NodalLoad& load : model.loads)
+    for (double& f : load.force) f *= factor;
+  if (model.gravity) model.gravity->acceleration *= factor;
+}
+
 PreparedRun prepare(const RunRequest& request) {
   const Stopwatch stopwatch;
   const std::string& model_path = request.model_path;
@@ -87,12 +107,7 @@ PreparedRun prepare(const RunRequest& request) {
   if (request.before_run) request.before_run(run.loaded);
   builder::BuiltModel& built = run.loaded.built;
   if (request.max_steps) built.analysis.max_steps = *request.max_steps;
-  if (request.record_factor != 1.0) {
-    for (model::UniformExcitation& e : built.model.excitations)
-      for (double& a : e.motion.acceleration) a *= request.record_factor;
-    for (model::SupportExcitation& e : built.model.support_excitations)
-      for (double& a : e.motion.acceleration) a *= request.record_factor;
-  }
+  if (request.record_factor != 1.0) scale_drivers(built.model, request.record_factor);
   built.analysis.time_limit = request.time_limit;
   try {
     run.system = std::make_unique<assembly::StructuralSystem>(built.model);
@@ -368,6 +383,7 @@ RunOutcome summarise(const RunRequest& request, const PreparedRun& run, const So
   std::optional<verification::RodImpactMetrics> metrics =
       verify_rod_pair(run, solved, summary.warnings);
   RunOutcome outcome;
+  outcome.driven_by_records = driven_by_records(built.model);
   outcome.summary = summary_document(summary, request, run, metrics);
   if (summary.status.completed() && !outcome.summary.non_finite().empty()) {
     summary.status.failure = overflow_failure(outcome.summary.non_finite());

@@ -28,7 +28,8 @@ struct RunRequest {
   builder::IntensityMeasure intensity;            // for the case summary
   bool histories = true;                          // record and write the model's recorders
   // Every excitation's acceleration times this: an ensemble member's perturbation
-  // (app/ensemble.hpp); 1 leaves the records as read.
+  // (app/ensemble.hpp); 1 leaves the records as read. A model without records (a free
+  // vibration) has its initial velocities, nodal loads and gravity scaled instead.
   double record_factor = 1.0;
   // Called once the model and its records are read, before the run: where the caller checks
   // that its outputs will not overwrite them (throwing InputError).
@@ -59,6 +60,9 @@ struct RunOutcome {
   std::string report;    // the lines `pound run` prints after the headline
   std::vector<std::string> warnings;
   std::string failure;  // empty when the analysis completed
+  // Whether ground motion drives the run (records or moving supports): what record_factor
+  // scales (RunRequest).
+  bool driven_by_records = false;
   double failure_time = 0.0;
   results::CaseSummary case_summary;  // status and responses; the caller names the case
   double setup_s = 0.0;  // reading the model and records, building, assembling (before the solve)

@@ -138,7 +138,7 @@ void resolve_friction(const LinkPlace& place, model::Link& link) {
   const std::string& type = place.spec.law.type;
   if (place.model.dimension == 1)
     place.fail("/friction",
-               "friction needs a tangential direction: a 2-D scene (\"dimension\": 2)");
+               "friction needs a tangential direction: a 2-D or 3-D scene (\"dimension\": 2 or 3)");
   if (place.model.dimension == 3 && link.rotational)
     place.fail("/friction", "a rotational link of a 3-D scene has no contact plane to slide in");
   if (link.role() == links::LinkRole::tension)

@@ -80,6 +80,42 @@ TEST_F(Ensemble, ALinearModelSpreadsOnlyAsMuchAsTheRecordsWerePerturbed) {
   EXPECT_NEAR(drift.min / drift.unperturbed, 1 - 3e-4, 1e-9);
 }
 
+// Without a record (a free vibration) the copies scale what sets the model moving: the same
+// oscillator launched at 0.3 m/s and pushed by a 1 N load reaches a peak drift that scales
+// exactly with the factor, and the report says what was scaled.
+TEST_F(Ensemble, AFreeVibrationScalesItsInitialVelocityAndLoads) {
+  const std::filesystem::path file = path(".") / "free.json";
+  std::ofstream(file) << R"({"dimension": 1,
+    "nodes": [{"id": "ground", "x": 0}, {"id": "mass", "x": 1}],
+    "masses": [{"node": "mass", "mass": 1}],
+    "supports": [{"node": "ground", "fix": ["x"]}],
+    "loads": [{"node": "mass", "x": 1}],
+    "initial_velocities": [{"node": "mass", "x": 0.3}],
+    "links": [{"id": "spring", "nodes": ["mass", "ground"], "axis": [1],
+               "law": {"type": "elastic_spring", "stiffness": 158}}],
+    "monitors": {"drifts": [{"id": "column", "kind": "storey", "bottom": "ground", "top": "mass",
+                             "height": 1}]},
+    "analysis": {"time_step": 0.005, "duration": 2}})";
+  RunRequest request;
+  request.model_path = file.string();
+  request.histories = false;
+  const EnsembleOptions options{.copies = 6, .perturbation = 1e-4};
+  const EnsembleResult result = run_ensemble(request, options);
+  ASSERT_TRUE(result.unperturbed.failure.empty()) << result.unperturbed.failure;
+  EXPECT_FALSE(result.unperturbed.driven_by_records);
+  const QuantitySpread& drift = by_path(result).at("/storeys/column/peak_drift");
+  std::cout << "free vibration: peak drift " << drift.unperturbed << ", range " << drift.min
+            << " to " << drift.max << "\n";
+  EXPECT_GT(drift.unperturbed, 0.02);
+  EXPECT_NEAR(drift.max / drift.unperturbed, 1 + 3e-4, 1e-9);
+  EXPECT_NEAR(drift.min / drift.unperturbed, 1 - 3e-4, 1e-9);
+  EXPECT_NE(ensemble_report(result, options)
+                .find("with the initial velocities, loads and "
+                      "gravity scaled by 1 +- k 0.0001"),
+            std::string::npos)
+      << ensemble_report(result, options);
+}
+
 // A 1 t block on a soft spring (T = 0.3 s) rattling between two stops 5 mm away (Kelvin-Voigt,
 // e = 0.8), undamped, under the bundled firm-ground record at 0.4 g: an impact oscillator, whose
 // response after a few impacts depends on the 1e-4 change of the record as on a coin.
