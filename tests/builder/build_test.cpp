@@ -327,9 +327,9 @@ TEST(Build, EmptyRecordersRecordNothing) {
 namespace pound::builder {
 namespace {
 
-TEST(BuildLaws, FrictionNeedsATwoDimensionalScene) {
+TEST(BuildLaws, FrictionNeedsATwoOrThreeDimensionalScene) {
   expect_error(R"([{"op": "add", "path": "/links/0/friction", "value": {"coefficient": 0.3}}])",
-               "/links/0/friction", "2-D scene");
+               "/links/0/friction", "a 2-D or 3-D scene");
 }
 
 TEST(BuildLaws, RestrainerTakesSlackNotGap) {
