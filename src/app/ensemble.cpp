@@ -95,14 +95,20 @@ std::vector<QuantitySpread> spreads(const RunOutcome& unperturbed,
   for (const auto& [path, value] : unperturbed.summary.numbers())
     if (path.starts_with("/energy/") && is_response(path))
       energy_scale = std::max(energy_scale, std::abs(value));
+  // So are the links' works and energies (a free vibration's spring that did 3e-18 J).
+  const auto is_energy = [](const std::string& path) {
+    const std::string key = path.substr(path.rfind('/') + 1);
+    return path.starts_with("/energy/") || key == "work" || key == "hysteretic_energy" ||
+           key == "damping_energy" || key == "created_energy";
+  };
   for (const auto& [path, value] : unperturbed.summary.numbers()) {
     if (!is_response(path)) continue;
     std::vector<double> values;
     for (const auto& copy : numbers)
       if (const auto found = copy.find(path); found != copy.end()) values.push_back(found->second);
     if (values.size() == numbers.size())
-      result.push_back(spread_of(path, value, values, robust_spread,
-                                 path.starts_with("/energy/") ? energy_scale : 0.0));
+      result.push_back(
+          spread_of(path, value, values, robust_spread, is_energy(path) ? energy_scale : 0.0));
   }
   return result;
 }
@@ -217,9 +223,7 @@ std::string ensemble_report(const EnsembleResult& result, const EnsembleOptions&
   std::string text = fmt::format(
       "ensemble: {} cop{} with {} scaled by 1 +- k {:g} (k up to {}), {} failed: {} of "
       "{} numbers are not robust (16-84 % spread above {:g} of their size)\n",
-      result.factors.size(), result.factors.size() == 1 ? "y" : "ies",
-      result.unperturbed.driven_by_records ? "the records"
-                                           : "the initial velocities, loads and gravity",
+      result.factors.size(), result.factors.size() == 1 ? "y" : "ies", result.unperturbed.perturbed,
       options.perturbation, (options.copies + 1) / 2, result.failed(), loose.size() + other,
       result.quantities.size(), options.robust_spread);
   constexpr std::size_t kShown = 16;
@@ -244,6 +248,7 @@ io::Document ensemble_document(const EnsembleResult& result, const EnsembleOptio
   doc.set("copies", static_cast<long>(result.factors.size()))
       .set("perturbation", options.perturbation)
       .set("robust_spread", options.robust_spread)
+      .set("perturbed", result.unperturbed.perturbed)
       .set("record_factors", result.factors)
       .set("failed", static_cast<long>(result.failed()));
   std::vector<io::Document> failures;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <filesystem>
@@ -79,6 +80,24 @@ void set_swing_window(const builder::BuiltModel& built, const assembly::Structur
 
 bool driven_by_records(const model::Model& model) {
   return !model.excitations.empty() || !model.support_excitations.empty();
+}
+
+// What scale_drivers scales in `model`, for the ensemble's report.
+std::string drivers_named(const model::Model& model) {
+  if (driven_by_records(model)) return "the records";
+  std::vector<std::string> names;
+  const auto moving = [](const model::Coordinates& v) {
+    return v[0] != 0.0 || v[1] != 0.0 || v[2] != 0.0;
+  };
+  if (std::any_of(model.initial_velocity.begin(), model.initial_velocity.end(), moving))
+    names.emplace_back("initial velocities");
+  if (!model.loads.empty()) names.emplace_back("loads");
+  if (model.gravity && model.gravity->acceleration != 0.0) names.emplace_back("gravity");
+  if (names.empty()) return "nothing (no records, initial velocities, loads or gravity)";
+  std::string text = "the " + names[0];
+  for (std::size_t k = 1; k < names.size(); ++k)
+    text += (k + 1 == names.size() ? " and " : ", ") + names[k];
+  return text;
 }
 
 // An ensemble member's perturbation: the records' accelerations times `factor`, or in a model
@@ -383,7 +402,7 @@ RunOutcome summarise(const RunRequest& request, const PreparedRun& run, const So
   std::optional<verification::RodImpactMetrics> metrics =
       verify_rod_pair(run, solved, summary.warnings);
   RunOutcome outcome;
-  outcome.driven_by_records = driven_by_records(built.model);
+  outcome.perturbed = drivers_named(built.model);
   outcome.summary = summary_document(summary, request, run, metrics);
   if (summary.status.completed() && !outcome.summary.non_finite().empty()) {
     summary.status.failure = overflow_failure(outcome.summary.non_finite());

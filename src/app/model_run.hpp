@@ -60,9 +60,9 @@ struct RunOutcome {
   std::string report;    // the lines `pound run` prints after the headline
   std::vector<std::string> warnings;
   std::string failure;  // empty when the analysis completed
-  // Whether ground motion drives the run (records or moving supports): what record_factor
-  // scales (RunRequest).
-  bool driven_by_records = false;
+  // What RunRequest::record_factor scales in this model: "the records", or without records
+  // what sets it moving ("the initial velocities and loads", ...).
+  std::string perturbed;
   double failure_time = 0.0;
   results::CaseSummary case_summary;  // status and responses; the caller names the case
   double setup_s = 0.0;  // reading the model and records, building, assembling (before the solve)

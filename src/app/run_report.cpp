@@ -109,18 +109,25 @@ std::string link_lines(const results::RunSummary& run, const ReportUnits& units)
                                 : std::string());
         break;
       case links::LinkRole::contact:
-        text += fmt::format(
-            "  contact {}: {} impact(s), peak force {}, peak penetration {}, impulse {}{}\n",
-            link.id, s.impacts, with_unit(s.peak_force, units.force, 6),
-            with_unit(s.peak_penetration, units.length), with_unit(s.impulse, units.impulse, 6),
-            // Between lumped masses a hard contact's impact is an impulse within one step.
-            link.law == "hard_contact"
-                ? " (hard contact: an impact of lumped masses lasts about a step, so its peak "
-                  "force is that impact's impulse / dt)"
-            : link.permanent_deformation > 0.0
-                ? fmt::format(", permanent deformation {}",
-                              with_unit(link.permanent_deformation, units.length))
-                : std::string());
+        if (link.seated)
+          text += fmt::format("  bearing {}: seated under the weight, peak normal force {}, {}\n",
+                              link.id, with_unit(s.peak_force, units.force, 6),
+                              s.impacts > 1
+                                  ? fmt::format("lifted off and landed {} time(s)", s.impacts - 1)
+                                  : std::string("never lifted off"));
+        else
+          text += fmt::format(
+              "  contact {}: {} impact(s), peak force {}, peak penetration {}, impulse {}{}\n",
+              link.id, s.impacts, with_unit(s.peak_force, units.force, 6),
+              with_unit(s.peak_penetration, units.length), with_unit(s.impulse, units.impulse, 6),
+              // Between lumped masses a hard contact's impact is an impulse within one step.
+              link.law == "hard_contact"
+                  ? " (hard contact: an impact of lumped masses lasts about a step, so its peak "
+                    "force is that impact's impulse / dt)"
+              : link.permanent_deformation > 0.0
+                  ? fmt::format(", permanent deformation {}",
+                                with_unit(link.permanent_deformation, units.length))
+                  : std::string());
         if (link.friction && s.shear)
           text += fmt::format(
               "    friction: peak slide {}, residual slide {}, peak tangential force {}, work {}\n",

@@ -543,4 +543,19 @@ ModelSize model_size(const ModelSpec& spec) {
   return size;
 }
 
+bool seated_under_weight(const model::Link& link, const BuiltModel& built) {
+  const auto along_axis = [&](const model::Coordinates& force) {
+    double dot = 0.0;
+    for (std::size_t d = 0; d < force.size(); ++d) dot += force[d] * link.axis[d];
+    return dot != 0.0;
+  };
+  const model::Model& model = built.model;
+  const bool pressed =
+      (model.gravity && model.gravity->acceleration != 0.0 &&
+       along_axis(model.gravity->direction)) ||
+      std::any_of(model.loads.begin(), model.loads.end(),
+                  [&](const model::NodalLoad& load) { return along_axis(load.force); });
+  return link.friction && !(link.gap > 0.0) && built.analysis.static_initial_state && pressed;
+}
+
 }  // namespace pound::builder

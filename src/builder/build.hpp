@@ -55,6 +55,12 @@ ModelSize model_size(const ModelSpec& spec);
 BuiltModel build(const ModelSpec& spec, const std::vector<model::GroundMotion>& motions = {},
                  const std::vector<std::optional<model::GroundMotion>>& second_motions = {});
 
+// A sliding bearing seated under the weight: friction, no gap, a static start under loads or
+// gravity with a part along the link's axis (a horizontal push alone seats nothing). It carries the
+// weight from the start and strikes nothing unless it lifts off, so it is no pounding contact (no
+// impact warnings before the run; not counted in a case's impacts and pounding force).
+bool seated_under_weight(const model::Link& link, const BuiltModel& built);
+
 std::unique_ptr<integrators::Integrator> make_integrator(const AnalysisSpec& analysis);
 integrators::TransientSettings make_transient_settings(const AnalysisSpec& analysis);
 // For central difference: sets an "auto" step from the stable limit (links in contact), or

@@ -94,6 +94,7 @@ Document link_document(const results::LinkResult& link) {
   doc.set("id", link.id).set("role", role_name(link.role));
   // A hinge: its forces are moments, its deformations rotations.
   if (link.rotational) doc.set("rotational", true);
+  if (link.seated) doc.set("seated", true);  // a bearing under the weight, no pounding contact
   if (link.role == links::LinkRole::spring)
     add_spring(link, doc);
   else

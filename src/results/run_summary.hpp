@@ -102,6 +102,9 @@ struct LinkResult {
   LinkSummary summary;
   bool rotational = false;  // a hinge: deformations are rotations
   std::optional<PendulumNumbers> pendulum;
+  // A sliding bearing seated under the weight (builder::seated_under_weight): a contact by its
+  // law, but no pounding one.
+  bool seated = false;
   // A contact or restrainer whose engagements' negative work is energy created (not a spring,
   // not a law with an inertia term).
   bool passive_engagements = false;

@@ -190,15 +190,6 @@ void warn_created_energy(const model::Link& link, const links::LinkLaw& law,
       probe->contact_duration));
 }
 
-// A sliding bearing seated under the weight: friction, no gap, a static start under loads. It
-// strikes nothing unless it lifts off, so an impact at twice the ground velocity is not its (every
-// friction bearing of a bridge was warned of); a lift-off that creates energy is still told after
-// the run, by the contacts' created energy.
-bool seated(const model::Link& link, const builder::BuiltModel& built) {
-  const bool loaded = !built.model.loads.empty() || built.model.gravity.has_value();
-  return link.friction && !(link.gap > 0.0) && built.analysis.static_initial_state && loaded;
-}
-
 // The largest peak ground velocity of the model's excitations, as applied.
 double peak_ground_velocity(const model::Model& model) {
   double peak = 0.0;
@@ -413,7 +404,9 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
     const bool meshed = meshed_at(built.model, link.node_i) || meshed_at(built.model, link.node_j);
     if (c.adjacent > 0.0 && c.stiff_at_first_touch && plain_penalty)
       warn_k_ratio(c, meshed, check.warnings);
-    if (!seated(link, built)) {
+    // A lift-off that creates energy is still told after the run (the contacts' created
+    // energy).
+    if (!builder::seated_under_weight(link, built)) {
       warn_contact_steps(c, analysis, check.warnings);
       warn_created_energy(link, links.law(k), system, analysis, approach, memo, check.warnings);
     }

@@ -239,8 +239,13 @@ TEST(RunReport, ASoftStickSpringOrALongSlideOnAFrictionPendulumIsWarnedOf) {
   const std::string line = warnings_of(soft)[0];
   std::cout << line << "\n";
   EXPECT_TRUE(has(line, "slides d_y = 0.000589 ")) << line;
-  EXPECT_TRUE(has(line, "2 sqrt(mu R d_y) = 0.0168 (14 % of mu R)")) << line;
+  EXPECT_TRUE(has(line, "2 sqrt(mu R d_y) = 0.0168 (14.0 % of mu R)")) << line;
   EXPECT_TRUE(has(line, "at least 1e4 N / R = 4.91e+07")) << line;
+  // Launched so slowly that it never slides past d_y (amplitude v0 / omega = 0.45 mm): it never
+  // slipped, so no reversal to bound.
+  const RunOutcome stuck = pendulum("1e6", 0.001);
+  ASSERT_TRUE(stuck.failure.empty()) << stuck.failure;
+  EXPECT_TRUE(warnings_of(stuck).empty());
   const RunOutcome stiff = pendulum("1e8", 0.5);
   ASSERT_TRUE(stiff.failure.empty()) << stiff.failure;
   EXPECT_TRUE(warnings_of(stiff).empty());
@@ -259,6 +264,53 @@ TEST(RunReport, ASoftStickSpringOrALongSlideOnAFrictionPendulumIsWarnedOf) {
       has(far, fmt::format("falls {:.1f} % short", 100 * (1 - std::sqrt(1 - ratio * ratio)))))
       << far;
   EXPECT_GT(ratio, 0.3);
+}
+
+// A bearing seated under the weight is reported as one, with its normal force, and is not a
+// pounding contact: the case summary (a batch row) counts no impacts and no pounding force.
+TEST(RunReport, ASeatedBearingIsNoPoundingContact) {
+  const RunOutcome outcome = run_bundled("sliding_block_pendulum.json");
+  ASSERT_TRUE(outcome.failure.empty()) << outcome.failure;
+  const std::string line = line_of(outcome.report, "bearing bearing:");
+  std::cout << line << "\n";
+  EXPECT_TRUE(has(line, "seated under the weight, peak normal force ")) << outcome.report;
+  EXPECT_TRUE(has(line, "never lifted off")) << line;
+  EXPECT_EQ(line_of(outcome.report, "contact bearing:"), "");
+  const nlohmann::json summary = nlohmann::json::parse(outcome.summary.dump());
+  EXPECT_EQ(summary["links"][0]["seated"], true);
+  EXPECT_FALSE(outcome.case_summary.impacts.has_value());
+  EXPECT_FALSE(outcome.case_summary.max_pounding_force.has_value());
+}
+
+// Two soft pendulums in one model make one warning: the worse one's numbers, the other named.
+TEST(RunReport, SoftStickSpringsOfSeveralPendulumsMakeOneWarning) {
+  const RunOutcome outcome = run_text("pendulums.json", R"({
+    "dimension": 2, "units": {"length": "m", "time": "s", "mass": "kg"},
+    "nodes": [{"id": "block_1", "x": 0, "y": 0}, {"id": "seat_1", "x": 0, "y": 0},
+              {"id": "block_2", "x": 5, "y": 0}, {"id": "seat_2", "x": 5, "y": 0}],
+    "masses": [{"node": "block_1", "mass": 1000}, {"node": "block_2", "mass": 1000}],
+    "supports": [{"node": "seat_1", "fix": ["x", "y"]}, {"node": "seat_2", "fix": ["x", "y"]}],
+    "loads": [{"node": "block_1", "y": -9810}, {"node": "block_2", "y": -9810}],
+    "initial_velocities": [{"node": "block_1", "x": 0.5}, {"node": "block_2", "x": 0.5}],
+    "links": [
+      {"id": "bearing_1", "nodes": ["block_1", "seat_1"], "axis": [0, -1],
+       "law": {"type": "gap_spring", "stiffness": 1e9},
+       "friction": {"coefficient": 0.06, "radius": 2, "stick_stiffness": 4e6}},
+      {"id": "bearing_2", "nodes": ["block_2", "seat_2"], "axis": [0, -1],
+       "law": {"type": "gap_spring", "stiffness": 1e9},
+       "friction": {"coefficient": 0.06, "radius": 2, "stick_stiffness": 1e6}}],
+    "analysis": {"time_step": 1e-3, "duration": 4, "initial_state": "static"}})");
+  ASSERT_TRUE(outcome.failure.empty()) << outcome.failure;
+  std::vector<std::string> found;
+  for (const std::string& warning : outcome.warnings)
+    if (warning.starts_with("friction pendulum")) found.push_back(warning);
+  ASSERT_EQ(found.size(), 1u);
+  std::cout << found[0] << "\n";
+  EXPECT_TRUE(
+      found[0].starts_with("friction pendulum bearing_2: its stick spring (stick_stiffness "
+                           "1e+06)"))
+      << found[0];
+  EXPECT_TRUE(found[0].ends_with("(the same for bearing_1, less far off)")) << found[0];
 }
 
 TEST(RunReport, AYieldedRestrainerGivesItsPermanentElongation) {

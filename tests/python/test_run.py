@@ -344,7 +344,8 @@ def test_progress_must_be_callable(models):
 
 
 def test_an_ensemble_gives_every_numbers_spread_and_writes_ensemble_json(models, tmp_path):
-    # The bundled bridge: chaotic after its first abutment impacts, so some numbers spread.
+    # The bundled bridge: its numbers spread, none past the threshold since its backwalls are held
+    # (README); the energies are judged against the largest energy term.
     calls = []
     result = pound.run(models / "three_span_bridge.json", out=tmp_path / "python", ensemble=4,
                        jobs=2, progress=lambda done, runs: calls.append((done, runs)))
@@ -361,7 +362,9 @@ def test_an_ensemble_gives_every_numbers_spread_and_writes_ensemble_json(models,
     assert result.summary["links"] == single.summary["links"]  # the unperturbed run's
     loose = [q for q in ensemble["quantities"] if not q["robust"]]
     print(f"{len(loose)} of {len(ensemble['quantities'])} numbers not robust")
-    assert loose and all(q["spread"] > 0.05 for q in loose)
+    assert all(q["spread"] > 0.05 for q in loose)
+    assert not any(q["headline"] for q in loose)
+    assert max(q["spread"] for q in ensemble["quantities"]) > 1e-3  # the copies differ
     assert pound.run(models / "rod_impact.json").ensemble is None
 
 

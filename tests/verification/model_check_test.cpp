@@ -111,6 +111,34 @@ TEST(ModelCheck, BearingsSeatedUnderTheWeightAreNotWarnedOfImpacts) {
   std::printf("bearing impact warnings: static start %d, from rest %d\n", seated, from_rest);
   EXPECT_EQ(seated, 0);
   EXPECT_GT(from_rest, 0);
+  // A block on a flat slider held by a horizontal spring: pressed by a vertical load it is seated;
+  // pushed only sideways nothing presses it, and it is warned as any contact.
+  const auto block_warnings = [](const char* load) {
+    const std::string text = fmt::format(R"({{
+      "dimension": 2,
+      "nodes": [{{"id": "block", "x": 0, "y": 0}}, {{"id": "seat", "x": 0, "y": 0}}],
+      "masses": [{{"node": "block", "mass": 1e5}}],
+      "supports": [{{"node": "seat", "fix": ["x", "y"]}}],
+      "loads": [{{"node": "block", {}}}],
+      "links": [{{"id": "bearing", "nodes": ["block", "seat"], "axis": [0, -1],
+                  "law": {{"type": "gap_spring", "stiffness": 1e11}},
+                  "friction": {{"coefficient": 0.06, "stick_stiffness": 1e10}}}},
+                {{"id": "spring", "nodes": ["block", "seat"], "axis": [1, 0],
+                  "law": {{"type": "elastic_spring", "stiffness": 1e6}}}}],
+      "excitations": [{{"record": "pulse.txt", "units": "g", "direction": [1, 0]}}],
+      "analysis": {{"time_step": 1e-3, "initial_state": "static"}}}})",
+                                         load);
+    std::vector<double> pulse;
+    for (int k = 0; k <= 100; ++k) pulse.push_back(0.3 * std::sin(M_PI * k / 100.0));
+    const builder::BuiltModel built = builder::build(
+        io::parse_model(text, "block.json"),
+        {model::GroundMotion{.name = "pulse", .time_step = 0.01, .acceleration = pulse}});
+    assembly::StructuralSystem system(built.model);
+    return static_cast<int>(
+        !warning_of(check_model(built, system, false).warnings, "bearing").empty());
+  };
+  EXPECT_EQ(block_warnings(R"("y": -9.81e5)"), 0);
+  EXPECT_EQ(block_warnings(R"("x": 1000)"), 1);
 }
 
 // A mass on a spring in millimetres, shaken by a half-sine pulse of 0.4 g given in model units
