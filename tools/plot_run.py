@@ -412,6 +412,11 @@ class Plotter:
         return {str(link.get("id")): link for link in summary_items(self.summary, "links")}
 
     def link_title(self, link_id, info):
+        if info.get("seated"):  # a bearing under the weight: its force is its share of it
+            impacts = number(info, "impacts") or 1
+            lifted = f"lifted off {impacts - 1:g} time(s)" if impacts > 1 else "never lifted off"
+            return (f"{link_id}\nseated bearing, peak normal force "
+                    f"{fmt(number(info, 'peak_force') or 0.0)}, {lifted}")
         parts = []
         peak_force, peak_tension = number(info, "peak_force"), number(info, "peak_tension")
         if peak_force is not None and (peak_force > 0.0 or not peak_tension):
