@@ -40,6 +40,13 @@ bool is_response(const std::string& path) {
   return !path.ends_with("balance_error");
 }
 
+// An energy: the balance's terms, and the links' works and energies.
+bool is_energy(const std::string& path) {
+  const std::string key = path.substr(path.rfind('/') + 1);
+  return path.starts_with("/energy/") || key == "work" || key == "hysteretic_energy" ||
+         key == "damping_energy" || key == "created_energy";
+}
+
 // The numbers damage is judged by, which the report lists; ensemble.json has them all.
 bool is_headline(const std::string& path) {
   static const std::vector<std::string> keys{"peak_force",
@@ -88,19 +95,13 @@ std::vector<QuantitySpread> spreads(const RunOutcome& unperturbed,
     }
   std::vector<QuantitySpread> result;
   if (numbers.empty()) return result;
-  // The energy terms are judged against the largest of them, as the balance is: the kinetic
-  // energy left at the end of a friction pendulum's run (1e-9 of the input, its stick spring
-  // still ringing) is not a result whose spread matters.
+  // Energies are judged against the largest energy term, as the balance is: the kinetic energy
+  // left at the end of a friction pendulum's run (1e-9 of the input, its stick spring still
+  // ringing) or a free vibration's spring work of 3e-18 J is not a result whose spread matters.
   double energy_scale = 0.0;
   for (const auto& [path, value] : unperturbed.summary.numbers())
     if (path.starts_with("/energy/") && is_response(path))
       energy_scale = std::max(energy_scale, std::abs(value));
-  // So are the links' works and energies (a free vibration's spring that did 3e-18 J).
-  const auto is_energy = [](const std::string& path) {
-    const std::string key = path.substr(path.rfind('/') + 1);
-    return path.starts_with("/energy/") || key == "work" || key == "hysteretic_energy" ||
-           key == "damping_energy" || key == "created_energy";
-  };
   for (const auto& [path, value] : unperturbed.summary.numbers()) {
     if (!is_response(path)) continue;
     std::vector<double> values;

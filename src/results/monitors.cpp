@@ -20,8 +20,7 @@ DriftMonitors::DriftMonitors(std::vector<Where> storeys, GroundAcceleration& gro
     : storeys_(std::move(storeys)),
       ground_(ground),
       peaks_(storeys_.size()),
-      turning_(storeys_.size()),
-      windows_(storeys_.size()) {
+      turning_(storeys_.size()) {
   for (const Where& w : storeys_) {
     Places& at = places_.emplace_back();
     if (w.drift.empty()) {

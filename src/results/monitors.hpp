@@ -56,7 +56,10 @@ class DriftMonitors : public Observer {
   // The end swing is then the drift's half range over the run's last `seconds` (model time), a
   // window long enough that a higher mode's ripple does not hide the first mode's swing; set
   // before the run.
-  void set_swing_window(double seconds) { swing_window_ = seconds; }
+  void set_swing_window(double seconds) {
+    swing_window_ = seconds;
+    windows_.assign(storeys_.size(), RecentDrifts{});
+  }
   void record(const integrators::State& state) override;
   // With each storey's largest corner drift, its corner and time, and its twist, from the peaks
   // of the plan sums.

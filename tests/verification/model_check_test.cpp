@@ -73,6 +73,18 @@ TEST(ModelCheck, ContactsOfOneSpecAndContextAreProbedOnceAndWarnedEach) {
   EXPECT_NE(warning_of(check.warnings, "c1").substr(8), warning_of(check.warnings, "c3").substr(8));
 }
 
+// The check's warnings for a model whose one record "pulse.txt" is a half sine of 0.3 g over a
+// second.
+std::vector<std::string> warnings_under_pulse(const std::string& text) {
+  std::vector<double> pulse;
+  for (int k = 0; k <= 100; ++k) pulse.push_back(0.3 * std::sin(M_PI * k / 100.0));
+  const builder::BuiltModel built = builder::build(
+      io::parse_model(text, "model.json"),
+      {model::GroundMotion{.name = "pulse", .time_step = 0.01, .acceleration = pulse}});
+  assembly::StructuralSystem system(built.model);
+  return check_model(built, system, false).warnings;
+}
+
 // A girder on two friction bearings seated under its weight from a static start strikes nothing
 // unless it lifts off: no impact warnings for the bearings, which an unloaded start (no static
 // state) still gets.
@@ -95,15 +107,8 @@ TEST(ModelCheck, BearingsSeatedUnderTheWeightAreNotWarnedOfImpacts) {
       "excitations": [{{"record": "pulse.txt", "units": "g"}}],
       "analysis": {{"time_step": 1e-3, "initial_state": "{}"}}}})",
                                          static_start ? "static" : "unloaded");
-    std::vector<double> pulse;  // a half sine of 0.3 g over a second
-    for (int k = 0; k <= 100; ++k) pulse.push_back(0.3 * std::sin(M_PI * k / 100.0));
-    const builder::BuiltModel built = builder::build(
-        io::parse_model(text, "bridge.json"),
-        {model::GroundMotion{.name = "pulse", .time_step = 0.01, .acceleration = pulse}});
-    assembly::StructuralSystem system(built.model);
-    const ModelCheck check = check_model(built, system, false);
     int count = 0;
-    for (const std::string& w : check.warnings)
+    for (const std::string& w : warnings_under_pulse(text))
       if (w.find("bearing") != std::string::npos && w.find("impact") != std::string::npos) ++count;
     return count;
   };
@@ -128,14 +133,7 @@ TEST(ModelCheck, BearingsSeatedUnderTheWeightAreNotWarnedOfImpacts) {
       "excitations": [{{"record": "pulse.txt", "units": "g", "direction": [1, 0]}}],
       "analysis": {{"time_step": 1e-3, "initial_state": "static"}}}})",
                                          load);
-    std::vector<double> pulse;
-    for (int k = 0; k <= 100; ++k) pulse.push_back(0.3 * std::sin(M_PI * k / 100.0));
-    const builder::BuiltModel built = builder::build(
-        io::parse_model(text, "block.json"),
-        {model::GroundMotion{.name = "pulse", .time_step = 0.01, .acceleration = pulse}});
-    assembly::StructuralSystem system(built.model);
-    return static_cast<int>(
-        !warning_of(check_model(built, system, false).warnings, "bearing").empty());
+    return static_cast<int>(!warning_of(warnings_under_pulse(text), "bearing").empty());
   };
   EXPECT_EQ(block_warnings(R"("y": -9.81e5)"), 0);
   EXPECT_EQ(block_warnings(R"("x": 1000)"), 1);
