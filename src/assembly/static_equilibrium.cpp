@@ -8,6 +8,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "assembly/static_hard_contacts.hpp"
 #include "core/errors.hpp"
@@ -126,6 +127,21 @@ std::optional<SolveError> friction_overload(double time, const StructuralSystem&
                         names));
 }
 
+// `delta` with the links that touch (delta = 0, no hard contact holds them) nudged closed, in
+// `nudged`; false where none touches.
+bool nudge_touching(const integrators::LinkSet& links, const StaticHardContacts& hard,
+                    const Vector& delta, Vector& nudged) {
+  nudged = delta;
+  bool any = false;
+  for (Index k = 0; k < links.count(); ++k) {
+    const Index row = links.row(k);
+    if (delta[row] != 0.0 || hard.constrains(row)) continue;
+    nudged[row] = std::numeric_limits<double>::min();
+    any = true;
+  }
+  return any;
+}
+
 }  // namespace
 
 StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
@@ -146,8 +162,8 @@ StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
   StaticEquilibrium result;
   Vector& u = result.displacement;
   u = Vector::Zero(n);
-  Vector delta(m), force(m), stiffness_force(n);
-  Matrix tangent;
+  Vector delta(m), force(m), stiffness_force(n), nudged;
+  Matrix tangent, nudged_tangent;
   bool first = true;
   StaticHardContacts hard(system, rate, offset - links.gaps());
   // Unbalanced force at u under `applied` without the hard contacts' forces, leaving the links
@@ -155,15 +171,16 @@ StaticEquilibrium static_equilibrium(StructuralSystem& system, double time,
   auto unbalanced = [&](const Vector& at, const Vector& applied, Vector& residual) {
     links.penetration(at, delta);
     delta += offset;
-    // Links touching at the start (delta = 0: a block set on a floor) are taken as closed, so
-    // that the first tangent holds the structure; the force of that nudge is negligible. (A
-    // hard contact holds without one: StaticHardContacts::choose.)
-    if (first)
-      for (Index k = 0; k < links.count(); ++k)
-        if (delta[links.row(k)] == 0.0 && !hard.constrains(links.row(k)))
-          delta[links.row(k)] = std::numeric_limits<double>::min();
-    first = false;
-    links.set_trial(delta, rate, zero, 0.0, 0.0, force, tangent);
+    // Links touching at the start (delta = 0: a block set on a floor) are taken as closed for
+    // the first tangent, so that it holds the structure; their forces are those at delta = 0,
+    // so no round-off of the nudge reaches the displacements (a hinge kept a 1e-316 N m
+    // moment). (A hard contact holds without one: StaticHardContacts::choose.)
+    Matrix* tangent_out = &tangent;
+    if (std::exchange(first, false) && nudge_touching(links, hard, delta, nudged)) {
+      links.set_trial(nudged, rate, zero, 0.0, 0.0, force, tangent);
+      tangent_out = &nudged_tangent;
+    }
+    links.set_trial(delta, rate, zero, 0.0, 0.0, force, *tangent_out);
     hard.leave_out(force);  // what the hard laws return is what was imposed on them last
     system.multiply_stiffness(at, stiffness_force);
     const Vector link_force = b.transpose() * force;

@@ -410,7 +410,8 @@ const Fields<LoadSpec>& load_fields() {
 const Fields<FrictionSpec>& friction_fields() {
   static const Fields<FrictionSpec> fields = {
       required("coefficient", &FrictionSpec::coefficient, Number<>{non_negative},
-               "μ, static = kinetic"),
+               "μ, static = kinetic; above 1 (more than any bearing or pounding surface) the "
+               "check warns"),
       optional("stick_stiffness", &FrictionSpec::stick_stiffness, Number<>{positive},
                "stiffness while sticking; default: the normal law's [F/L]; on a friction "
                "pendulum at least 1e4·N/R, or its residual displacement may be off by more "
@@ -1038,8 +1039,10 @@ const Fields<GirderBridgeSpec>& girder_bridge_fields() {
                "bearing_friction [F/L]"),
       optional("bearing_friction", &GirderBridgeSpec::bearing_friction, friction_object(),
                "sliding bearings: the vertical bearing becomes a compression-only gap_spring "
-               "that carries this friction (with a radius: a friction pendulum); the friction "
-               "follows its normal force, so the girders need their weight (\"gravity\")"),
+               "that carries this friction (with a radius: a friction pendulum, whose "
+               "stick_stiffness defaults to max(bearing_vertical_stiffness, 1e4·W/R), W the "
+               "deck's weight); the friction follows its normal force, so the girders need "
+               "their weight (\"gravity\")"),
       optional("bearing_interaction", &GirderBridgeSpec::bearing_coupled,
                Choice<bool>{{{"circular", true}, {"none", false}}},
                "circular: the bearing law's two horizontal directions coupled, yielding on a "

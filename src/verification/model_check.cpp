@@ -11,6 +11,7 @@
 
 #include "assembly/modal_analysis.hpp"
 #include "integrators/central_difference.hpp"
+#include "links/coulomb_friction.hpp"
 #include "links/restitution.hpp"
 #include "model/ground_motion.hpp"
 #include "results/run_summary.hpp"
@@ -362,6 +363,24 @@ void check_excitations_load(const builder::BuiltModel& built,
   }
 }
 
+// A friction coefficient above 1 holds more than the normal force sideways: no bearing or
+// pounding surface does (sliding bearings 0.01-0.15, steel on steel 0.2-0.5, concrete on concrete
+// 0.6-0.8), so it is most likely a typing slip; a warning, as a rough or keyed interface may be
+// modelled so on purpose.
+void warn_friction_coefficients(const assembly::StructuralSystem& system,
+                                std::vector<std::string>& warnings) {
+  const integrators::LinkSet& links = system.links();
+  for (Index k = 0; k < links.count(); ++k) {
+    const links::CoulombFriction* friction = links.friction(k);
+    if (!friction || !(friction->coefficient() > 1.0)) continue;
+    warnings.push_back(fmt::format(
+        "link '{}': friction coefficient mu = {:.4g} is above 1, more than any bearing or "
+        "pounding surface (sliding bearings 0.01-0.15, steel on steel 0.2-0.5, concrete on "
+        "concrete 0.6-0.8): check the value",
+        system.link_id(k), friction->coefficient()));
+  }
+}
+
 }  // namespace
 
 ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSystem& system,
@@ -389,6 +408,7 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
   check_record_peaks(built, check.warnings);
   check_duration_reaches_peaks(built, check.warnings);
   check_excitations_load(built, system, check.warnings);
+  warn_friction_coefficients(system, check.warnings);
   const double ground_velocity = peak_ground_velocity(built.model);
   Vector closing;
   links.project(system.initial_velocity(built.model), closing);

@@ -139,6 +139,38 @@ TEST(ModelCheck, BearingsSeatedUnderTheWeightAreNotWarnedOfImpacts) {
   EXPECT_EQ(block_warnings(R"("x": 1000)"), 1);
 }
 
+// A friction coefficient above 1 (a block that a sideways force of more than its weight does not
+// move) warns, named with its link; 0.6 (concrete on concrete) and exactly 1 do not.
+TEST(ModelCheck, AFrictionCoefficientAboveOneWarns) {
+  const auto friction_warnings = [](double coefficient) {
+    const std::string text = fmt::format(R"({{
+      "dimension": 2,
+      "nodes": [{{"id": "block", "x": 0, "y": 0}}, {{"id": "seat", "x": 0, "y": 0}}],
+      "masses": [{{"node": "block", "mass": 1e5}}],
+      "supports": [{{"node": "seat", "fix": ["x", "y"]}}],
+      "loads": [{{"node": "block", "y": -9.81e5}}],
+      "links": [{{"id": "bearing", "nodes": ["block", "seat"], "axis": [0, -1],
+                  "law": {{"type": "gap_spring", "stiffness": 1e11}},
+                  "friction": {{"coefficient": {}, "stick_stiffness": 1e10}}}},
+                {{"id": "spring", "nodes": ["block", "seat"], "axis": [1, 0],
+                  "law": {{"type": "elastic_spring", "stiffness": 1e6}}}}],
+      "excitations": [{{"record": "pulse.txt", "units": "g", "direction": [1, 0]}}],
+      "analysis": {{"time_step": 1e-3, "initial_state": "static"}}}})",
+                                         coefficient);
+    std::vector<std::string> found;
+    for (const std::string& w : warnings_under_pulse(text))
+      if (w.find("friction coefficient") != std::string::npos) found.push_back(w);
+    std::printf("mu = %g: %s\n", coefficient, found.empty() ? "no warning" : found[0].c_str());
+    return found;
+  };
+  EXPECT_TRUE(friction_warnings(0.6).empty());
+  EXPECT_TRUE(friction_warnings(1.0).empty());
+  const std::vector<std::string> five = friction_warnings(5.0);
+  ASSERT_EQ(five.size(), 1U);
+  EXPECT_TRUE(five[0].starts_with("link 'bearing': friction coefficient mu = 5 is above 1"))
+      << five[0];
+}
+
 // A mass on a spring in millimetres, shaken by a half-sine pulse of 0.4 g given in model units
 // (mm/s2) that peaks at 0.5 s, scaled by `scale` (JSON, or none), analysed for `duration` at
 // `time_step`: the check's warnings that contain `about`.
