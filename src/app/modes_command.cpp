@@ -26,9 +26,10 @@ constexpr const char* kModesUsage =
     R"(usage: pound modes MODEL.json [--count N] [--json] [--shapes F]
 
 Natural periods of a model as it starts (linear elements, structural springs at their initial
-stiffness, contact links open), with each mode's effective modal mass in x (and y, in a scene
-that moves along y) as a fraction of the total: the periods Rayleigh damping is chosen from and
-the ones a time step must resolve. --shapes writes the mode shapes (.csv, or .npy): a row per
+stiffness, contact links open), with each mode's effective modal mass along x (and y, z where the
+scene moves so) as a fraction of the total, and the listed modes' sum along each (seismic codes
+ask for 90 % along each direction the records shake): the periods Rayleigh damping is chosen
+from and the ones a time step must resolve. --shapes writes the mode shapes (.csv, or .npy): a row per
 free DOF (label column "dof": <node>.u_x, <node>.u_y, <node>.u_rz, as node recorders name them) and a column per mode,
 mode_1, mode_2, ..., each scaled so that its largest component is +1; a DOF a constraint ties
 has its row too, its master's motion there (a rigid floor's corner may pass 1). Rigid-body and
@@ -37,22 +38,30 @@ are listed: fewer modes than --count come with a line saying why ("fewer" in --j
 
 options)";
 
-// A mode as listed: its number in the list, its period and its effective modal mass along x and
-// y as a fraction of the total.
+// A mode as listed: its number in the list, its period and its effective modal mass along x, y
+// and z as a fraction of the total.
 struct ListedMode {
   int number = 0;
   double period = 0.0;
-  std::array<double, 2> mass_ratio{0.0, 0.0};
+  std::array<double, 3> mass_ratio{0.0, 0.0, 0.0};
   Vector shape;  // over the free DOFs, largest component +1
 };
 
-// The modes and the directions along which the scene moves (x always; y when a DOF moves so).
+// The modes and the axes along which the scene's mass moves (x always; y, z when a DOF with mass
+// moves so), with the listed modes' sums of effective mass along each.
 struct ListedModes {
   std::vector<ListedMode> modes;
-  int directions = 1;
+  std::vector<int> axes{0};
+  std::array<double, 3> mass_sum{0.0, 0.0, 0.0};
+  std::array<bool, 3> shaken{false, false, false};  // an excitation acts along the axis
   int asked = 0;
   std::string fewer;  // why fewer modes than asked are listed (assembly::fewer_modes_reason)
 };
+
+constexpr const char* kAxes = "xyz";
+// Eurocode 8 (4.3.3.3.1) and ASCE 7 (12.9.1.1): the modes of a response spectrum analysis are to
+// hold 90 % of the mass along each direction of the excitation.
+constexpr double kCodeMassSum = 0.9;
 
 std::unique_ptr<assembly::StructuralSystem> assemble(const LoadedModel& loaded,
                                                      const std::string& model_path) {
@@ -63,29 +72,47 @@ std::unique_ptr<assembly::StructuralSystem> assemble(const LoadedModel& loaded,
   }
 }
 
-// A unit displacement of every node along x (0) and y (1), at the rows of its free DOFs.
-std::array<Vector, 2> influence_vectors(const assembly::StructuralSystem& system,
+// A unit displacement of every node along x (0), y (1) and z (2), at the rows of its free
+// translations.
+std::array<Vector, 3> influence_vectors(const assembly::StructuralSystem& system,
                                         std::size_t node_count) {
-  const int dpn = system.dofs().dofs_per_node();
-  std::array<Vector, 2> influence{Vector::Zero(system.size()), Vector::Zero(system.size())};
+  const model::DofMap& dofs = system.dofs();
+  std::array<Vector, 3> influence;
+  for (Vector& v : influence) v = Vector::Zero(system.size());
   for (Index node = 0; node < static_cast<Index>(node_count); ++node)
-    for (int d = 0; d < std::min(dpn, 2); ++d)
-      if (const Index row = system.dofs().own_equation(node, d); row >= 0) influence[d][row] = 1.0;
+    for (int d = 0; d < dofs.dofs_per_node(); ++d) {
+      const model::Direction along = model::direction(d, dofs.dimension());
+      if (const Index row = dofs.own_equation(node, d); row >= 0 && !along.rotation)
+        influence[static_cast<std::size_t>(along.axis)][row] = 1.0;
+    }
   return influence;
 }
 
+// The axes an excitation of the model shakes (a component above 1e-9 of its direction).
+std::array<bool, 3> shaken_axes(const model::Model& model) {
+  std::array<bool, 3> shaken{false, false, false};
+  const auto add = [&](const model::Coordinates& direction) {
+    for (std::size_t a = 0; a < 3; ++a) shaken[a] = shaken[a] || std::abs(direction[a]) > 1e-9;
+  };
+  for (const model::UniformExcitation& e : model.excitations) add(e.direction);
+  for (const model::SupportExcitation& e : model.support_excitations) add(e.direction);
+  return shaken;
+}
+
 // The first `count` modes that are not rigid-body motion.
-ListedModes list_modes(const assembly::StructuralSystem& system, std::size_t node_count,
+ListedModes list_modes(const assembly::StructuralSystem& system, const model::Model& model,
                        int count) {
   const assembly::Modes modes = assembly::vibration_modes(system, count);
-  // Effective modal mass along x and y: (phi^T M iota)^2 with mass-normalised phi.
-  const std::array<Vector, 2> influence = influence_vectors(system, node_count);
+  // Effective modal mass along x, y and z: (phi^T M iota)^2 with mass-normalised phi.
+  const std::array<Vector, 3> influence = influence_vectors(system, model.nodes.size());
   const auto mass = system.mass_matrix();
-  double total[2];
-  for (int d = 0; d < 2; ++d) total[d] = influence[d].dot(mass * influence[d]);
+  std::array<double, 3> total{};
+  for (std::size_t d = 0; d < 3; ++d) total[d] = influence[d].dot(mass * influence[d]);
 
   ListedModes result;
-  result.directions = total[1] > 0.0 ? 2 : 1;
+  for (int d = 1; d < 3; ++d)
+    if (total[static_cast<std::size_t>(d)] > 0.0) result.axes.push_back(d);
+  result.shaken = shaken_axes(model);
   result.asked = count;
   const auto dofs_with_mass = static_cast<Index>((mass.diagonal().array() > 0.0).count());
   result.fewer = assembly::fewer_modes_reason(system.size(), dofs_with_mass, count,
@@ -94,9 +121,10 @@ ListedModes list_modes(const assembly::StructuralSystem& system, std::size_t nod
     ListedMode mode;
     mode.number = static_cast<int>(k) + 1;
     mode.period = 2.0 * std::numbers::pi / std::sqrt(modes.omega_squared[k]);
-    for (int d = 0; d < 2; ++d) {
+    for (std::size_t d = 0; d < 3; ++d) {
       const double participation = modes.shapes.col(k).dot(mass * influence[d]);
       mode.mass_ratio[d] = total[d] > 0.0 ? participation * participation / total[d] : 0.0;
+      result.mass_sum[d] += mode.mass_ratio[d];
     }
     mode.shape = modes.shapes.col(k);
     Index at = 0;
@@ -130,22 +158,48 @@ Table shapes_table(const LoadedModel& loaded, const assembly::StructuralSystem& 
   return table;
 }
 
+// Where the listed modes hold less than the codes' 90 % of the mass along an axis a record
+// shakes: say so, and that more modes are needed for a modal (spectrum) analysis along it.
+std::string mass_sum_note(const ListedModes& listed) {
+  std::string short_axes;
+  for (const int axis : listed.axes) {
+    const auto a = static_cast<std::size_t>(axis);
+    if (listed.shaken[a] && listed.mass_sum[a] < kCodeMassSum)
+      short_axes += fmt::format("{}{} ({:.1f} %)", short_axes.empty() ? "" : ", ", kAxes[axis],
+                                100.0 * listed.mass_sum[a]);
+  }
+  if (short_axes.empty()) return "";
+  return fmt::format(
+      "the {} listed hold{} less than 90 % of the mass along {}, which the records shake: a "
+      "response spectrum analysis needs more (Eurocode 8 4.3.3.3.1, ASCE 7 12.9.1.1; --count); "
+      "the time history has every mode\n",
+      listed.modes.size() == 1 ? "one mode" : fmt::format("{} modes", listed.modes.size()),
+      listed.modes.size() == 1 ? "s" : "", short_axes);
+}
+
 // The modes with their units in the header (period in the model's time unit, frequency in Hz
 // where that is seconds); the mass columns are ratios of the total.
 std::string modes_table(const std::string& model_path, Index dofs, const ListedModes& listed,
                         const std::string& time) {
-  const bool y = listed.directions > 1;
   const std::string period = time.empty() ? "period" : fmt::format("period [{}]", time);
   const std::string frequency = time.empty()  ? "frequency"
                                 : time == "s" ? "freq. [Hz]"
                                               : fmt::format("freq. [1/{}]", time);
   std::string table =
-      fmt::format("{}: {} DOFs\n{:>5} {:>12} {:>12} {:>10}{}\n", model_path, dofs, "mode", period,
-                  frequency, "mass x", y ? fmt::format(" {:>10}", "mass y") : "");
-  for (const ListedMode& mode : listed.modes)
-    table += fmt::format("{:>5} {:>12.5g} {:>12.5g} {:>10.4f}{}\n", mode.number, mode.period,
-                         1.0 / mode.period, mode.mass_ratio[0],
-                         y ? fmt::format(" {:>10.4f}", mode.mass_ratio[1]) : "");
+      fmt::format("{}: {} DOFs\n{:>5} {:>12} {:>12}", model_path, dofs, "mode", period, frequency);
+  for (const int axis : listed.axes)
+    table += fmt::format(" {:>10}", fmt::format("mass {}", kAxes[axis]));
+  table += "\n";
+  for (const ListedMode& mode : listed.modes) {
+    table += fmt::format("{:>5} {:>12.5g} {:>12.5g}", mode.number, mode.period, 1.0 / mode.period);
+    for (const int axis : listed.axes)
+      table += fmt::format(" {:>10.4f}", mode.mass_ratio[static_cast<std::size_t>(axis)]);
+    table += "\n";
+  }
+  table += fmt::format("{:>5} {:>25}", "sum", "");
+  for (const int axis : listed.axes)
+    table += fmt::format(" {:>10.4f}", listed.mass_sum[static_cast<std::size_t>(axis)]);
+  table += "\n" + mass_sum_note(listed);
   if (!listed.fewer.empty())
     table += fmt::format("{} of the {} modes asked for: {}\n", listed.modes.size(), listed.asked,
                          listed.fewer);
@@ -160,11 +214,17 @@ io::Document modes_document(const std::string& model_path, Index dofs, const Lis
         .set("period", mode.period)
         .set("frequency", 1.0 / mode.period)
         .set("mass_ratio_x", mode.mass_ratio[0]);
-    if (listed.directions > 1) row.set("mass_ratio_y", mode.mass_ratio[1]);
+    for (const int axis : listed.axes)
+      if (axis > 0)
+        row.set(fmt::format("mass_ratio_{}", kAxes[axis]),
+                mode.mass_ratio[static_cast<std::size_t>(axis)]);
     rows.push_back(row);
   }
-  io::Document doc;
+  io::Document doc, sums;
+  for (const int axis : listed.axes)
+    sums.set(std::string(1, kAxes[axis]), listed.mass_sum[static_cast<std::size_t>(axis)]);
   doc.set("model", model_path).set("dofs", static_cast<long>(dofs)).set("asked", listed.asked);
+  doc.set("mass_ratio_sum", sums);
   if (!listed.fewer.empty()) doc.set("fewer", listed.fewer);
   doc.set("modes", rows);
   return doc;
@@ -176,7 +236,7 @@ ModalFindings modal_findings(const LoadedModel& loaded, const std::string& model
   const std::unique_ptr<assembly::StructuralSystem> system = assemble(loaded, model_path);
   ListedModes modes;
   try {
-    modes = list_modes(*system, loaded.built.model.nodes.size(), count);
+    modes = list_modes(*system, loaded.built.model, count);
   } catch (const assembly::NotPositiveDefinite& failure) {
     throw builder::not_held_error(loaded.built, system->dofs(), failure,
                                   "the condensation of the massless DOFs", model_path);

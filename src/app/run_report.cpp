@@ -38,6 +38,12 @@ struct ReportUnits {
   const std::string& deformation(bool rotational) const { return rotational ? angle : length; }
 };
 
+// A ratio to a yield value, to two decimals; in significant figures past 1e4, where an absurd
+// yield value (a yield moment of 1e-6) made it hundreds of digits.
+std::string ratio(double value) {
+  return std::abs(value) < 1e4 ? fmt::format("{:.2f}", value) : fmt::format("{:.3g}", value);
+}
+
 // A spring or hinge that yielded: its peak and residual deformation, and what it dissipated.
 std::string yielded_line(const results::LinkResult& link, const ReportUnits& units) {
   const std::optional<double> ductility = link.ductility();
@@ -46,7 +52,7 @@ std::string yielded_line(const results::LinkResult& link, const ReportUnits& uni
       "  {} {} yielded: peak {} {}{}, residual {}, hysteretic energy {}{}\n", link.law, link.id,
       link.rotational ? "rotation" : "deformation", with_unit(link.peak_deformation(), deformation),
       ductility
-          ? fmt::format(" ({:.2f} x yield)", *ductility)
+          ? fmt::format(" ({} x yield)", ratio(*ductility))
           : fmt::format(" (plastic {})",
                         with_unit(link.peak_plastic_deformation().value_or(0.0), deformation)),
       with_unit(link.summary.final_deformation, deformation),
@@ -68,9 +74,9 @@ std::string shear_line(const results::LinkResult& link, const ReportUnits& units
                 with_unit(s.peak_deformation, deformation),
                 with_unit(link.shear_peak_plastic_deformation(0).value_or(0.0), deformation),
                 with_unit(link.shear_peak_plastic_deformation(1).value_or(0.0), deformation))
-          : fmt::format("peak deformation {} ({:.2f} x yield)",
+          : fmt::format("peak deformation {} ({} x yield)",
                         with_unit(s.peak_deformation, deformation),
-                        link.shear_ductility().value_or(0.0));
+                        ratio(link.shear_ductility().value_or(0.0)));
   return fmt::format("  {} {} yielded in {}: {}, residual {}, hysteretic energy {}\n",
                      link.shear->law, link.id, link.rotational ? "bending" : "shear", demand,
                      with_unit(s.final_deformation, deformation),
@@ -187,11 +193,11 @@ std::string drift_line(const results::DriftResult& drift, const ReportUnits& uni
       pier ? "pier" : "storey", m.id, with_unit(drift.peak.peak_drift, units.length),
       100.0 * drift.peak.peak_drift / m.height, with_unit(m.height, units.length),
       with_unit(drift.peak.residual_drift, units.length), still_swinging(drift.peak, units),
-      ductility ? fmt::format(", ductility {:.2f}", *ductility)
-      : demand  ? fmt::format(", elastic, {:.2f} x its yield drift", *demand)
+      ductility ? fmt::format(", ductility {}", ratio(*ductility))
+      : demand  ? fmt::format(", elastic, {} x its yield drift", ratio(*demand))
                 : std::string(),
       drift.curvature_ductility
-          ? fmt::format(", curvature ductility {:.2f}", *drift.curvature_ductility)
+          ? fmt::format(", curvature ductility {}", ratio(*drift.curvature_ductility))
           : std::string(),
       pier ? "top" : "floor", with_unit(drift.peak.peak_acceleration, units.acceleration),
       drift.peak_shear ? fmt::format(", {} {}", pier ? "base shear" : "shear",
@@ -201,13 +207,14 @@ std::string drift_line(const results::DriftResult& drift, const ReportUnits& uni
           ? fmt::format(", base moment {}", with_unit(*drift.peak_base_moment, units.moment))
           : std::string());
   if (const std::optional<double> corner_ratio = drift.corner_ratio())
-    text += fmt::format("    at its corners: peak drift {} ({:.3f} %, corner {}{}), twist {}\n",
-                        with_unit(drift.peak.peak_corner_drift, units.length),
-                        100.0 * *corner_ratio, drift.peak.corner,
-                        drift.corner_amplification()
-                            ? fmt::format(", {:.2f} x the centre's", *drift.corner_amplification())
-                            : std::string(),
-                        with_unit(drift.peak.peak_twist, units.angle));
+    text +=
+        fmt::format("    at its corners: peak drift {} ({:.3f} %, corner {}{}), twist {}\n",
+                    with_unit(drift.peak.peak_corner_drift, units.length), 100.0 * *corner_ratio,
+                    drift.peak.corner,
+                    drift.corner_amplification()
+                        ? fmt::format(", {} x the centre's", ratio(*drift.corner_amplification()))
+                        : std::string(),
+                    with_unit(drift.peak.peak_twist, units.angle));
   return text;
 }
 

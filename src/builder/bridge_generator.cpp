@@ -244,8 +244,8 @@ SectionSpec pier_section(const GirderBridgeSpec& spec) {
 }
 
 // A base hinge's law: the user's, with k_h = (n + 1) 3 E I / h and M_y; the pier's yield
-// displacement M_y h^2 / (3 E I); what its drift monitor needs for the curvature ductility. Along
-// the bridge with E I, across it (3-D) with E I_lateral and its own M_y or phi_y.
+// displacement (pier_yield_displacement); what its drift monitor needs for the curvature
+// ductility. Along the bridge with E I, across it (3-D) with E I_lateral and its own M_y or phi_y.
 struct PierHinge {
   LawSpec law;
   double yield_displacement;
@@ -269,6 +269,19 @@ double hinge_hardening(double pier_ratio, double n, double hinge_stiffness, cons
   return slope / hinge_secant;
 }
 
+// Where the pier yields: its hinge at the yield rotation, and the stiffened elastic pier bent by
+// V_y = M_y / h, n / (n + 1) of M_y h^2 / (3 E I). On a bilinear skeleton the rotation is
+// M_y / k_h and the sum is M_y h^2 / (3 E I); a trilinear one (Takeda's cracking point) gives its
+// own, larger yield rotation, past the cracked branch (taking M_y h^2 / (3 E I) there doubled a
+// pier's ductility).
+double pier_yield_displacement(const LawSpec& law, double yield_moment, double ei, double h,
+                               double n) {
+  const double elastic = yield_moment * h * h / (3.0 * ei);
+  const auto rotation = law.parameters.find("yield_deformation");
+  if (rotation == law.parameters.end()) return elastic;
+  return rotation->second * h + n / (n + 1.0) * elastic;
+}
+
 PierHinge pier_hinge(const GirderBridgeSpec& spec, int pier, bool across) {
   const PierHingeSpec& hinge = *spec.pier_hinge;
   const double ei =
@@ -282,9 +295,9 @@ PierHinge pier_hinge(const GirderBridgeSpec& spec, int pier, bool across) {
       across && hinge.yield_moment ? hinge.yield_moment_lateral.value_or(*hinge.yield_moment)
                                    : hinge.yield_moment;
   const double yield_moment = moment.value_or(ei * curvature.value_or(0.0));
-  PierHinge made{hinge.law, yield_moment * h * h / (3.0 * ei),
-                 fmt::format("{}.p{}.hinge{}", spec.id, pier, across ? ".across" : ""), curvature};
   const double n = hinge.stiffness_factor, stiffness = (n + 1.0) * 3.0 * ei / h;
+  PierHinge made{hinge.law, pier_yield_displacement(hinge.law, yield_moment, ei, h, n),
+                 fmt::format("{}.p{}.hinge{}", spec.id, pier, across ? ".across" : ""), curvature};
   made.law.parameters["stiffness"] = stiffness;
   made.law.parameters["yield_force"] = yield_moment;
   // The law's hardening ratio is the pier's, not the hinge's.

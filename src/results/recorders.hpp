@@ -196,7 +196,7 @@ struct LinkSummary {
   double peak_force = 0.0;         // largest compression [F]
   double peak_tension = 0.0;       // largest tension (restrainers, hooks) [F]
   double peak_penetration = 0.0;   // [L]
-  double peak_opening = 0.0;       // largest -delta: how far the joint opened [L]
+  double peak_opening = 0.0;       // largest -delta: a contact's clear distance, gap included [L]
   double impulse = 0.0;            // integral of F dt [F T]
   double work = 0.0;               // integral of F d(delta) [F L]: energy left in or taken by
                                    // the link; after separation, the energy it dissipated

@@ -10,6 +10,7 @@
 
 #include "assembly/beam_3d.hpp"
 #include "core/errors.hpp"
+#include "core/units.hpp"
 #include "results/spectrum_recorder.hpp"
 
 namespace pound::results {
@@ -268,6 +269,18 @@ struct SoftStickSpring {
   double normal = 0.0, stick_slide = 0.0, band = 0.0, error = 0.0;
 };
 
+// The units the result warnings give their numbers in (the model's), each with its leading space,
+// or "" where the model names none (forces without a mass unit).
+struct WarningUnits {
+  explicit WarningUnits(const UnitNames& names)
+      : length(spaced(names.of(Dimension::length))),
+        force(spaced(names.of(Dimension::force))),
+        energy(spaced(names.of(Dimension::moment))),
+        stiffness(force.empty() || length.empty() ? "" : force + "/" + length.substr(1)) {}
+  static std::string spaced(const std::string& unit) { return unit.empty() ? "" : " " + unit; }
+  std::string length, force, energy, stiffness;
+};
+
 std::optional<SoftStickSpring> soft_stick_spring(const LinkResult& link) {
   const double normal = link.summary.final_force;
   if (!link.pendulum || !link.summary.shear || !(normal > 0.0) ||
@@ -284,21 +297,22 @@ std::optional<SoftStickSpring> soft_stick_spring(const LinkResult& link) {
 }
 
 // One warning for the pendulums with soft stick springs: the worst's numbers, the others named.
-std::string stick_spring_warning(std::vector<SoftStickSpring> soft) {
+std::string stick_spring_warning(std::vector<SoftStickSpring> soft, const WarningUnits& u) {
   std::stable_sort(soft.begin(), soft.end(), [](const auto& a, const auto& b) {
     return a.error / a.band > b.error / b.band;
   });
   const SoftStickSpring& worst = soft.front();
   const PendulumNumbers& p = *worst.link->pendulum;
   std::string text = fmt::format(
-      "friction pendulum {}: its stick spring (stick_stiffness {:.4g}) slides d_y = {:.3g} before "
-      "the bearing slips under mu N = {:.4g}, {:.2g} of the friction band mu R = {:.4g}; at each "
-      "reversal the spring gives back energy Coulomb friction would take, so the residual "
-      "displacement may be off by up to 2 sqrt(mu R d_y) = {:.3g} ({:.1f} % of mu R): a "
-      "stick_stiffness of at least 1e4 N / R = {:.3g} keeps that under 2 %",
-      worst.link->id, p.stick_stiffness, worst.stick_slide, p.coefficient * worst.normal,
-      worst.stick_slide / worst.band, worst.band, worst.error, 100.0 * worst.error / worst.band,
-      1e4 * worst.normal / p.radius);
+      "friction pendulum {}: its stick spring (stick_stiffness {:.4g}{}) slides d_y = {:.3g}{} "
+      "before the bearing slips under mu N = {:.4g}{}, {:.2g} of the friction band mu R = {:.4g}"
+      "{}; at each reversal the spring gives back energy Coulomb friction would take, so the "
+      "residual displacement may be off by up to 2 sqrt(mu R d_y) = {:.3g}{} ({:.1f} % of mu R): "
+      "a stick_stiffness of at least 1e4 x N/R = {:.3g}{} keeps that under 2 %",
+      worst.link->id, p.stick_stiffness, u.stiffness, worst.stick_slide, u.length,
+      p.coefficient * worst.normal, u.force, worst.stick_slide / worst.band, worst.band, u.length,
+      worst.error, u.length, 100.0 * worst.error / worst.band, 1e4 * worst.normal / p.radius,
+      u.stiffness);
   if (soft.size() > 1) {
     constexpr std::size_t kNamed = 5;
     std::string others;
@@ -314,45 +328,53 @@ std::string stick_spring_warning(std::vector<SoftStickSpring> soft) {
 // form N s / R; on the spherical dish the restoring force is N tan(theta) = N s / sqrt(R^2 - s^2),
 // which the linear form falls short of by 1 - sqrt(1 - (s / R)^2) of it (2 % at s = 0.2 R), and
 // the slider's rise s^2 / (2 R) is left out.
-std::optional<std::string> dish_warning(const LinkResult& link) {
+std::optional<std::string> dish_warning(const LinkResult& link, const WarningUnits& u) {
   if (!link.pendulum || !link.summary.shear) return {};
   const double slide = link.summary.shear->peak_deformation, radius = link.pendulum->radius;
   const double ratio = slide / radius;
   if (!(ratio > 0.2)) return {};
   const double short_by = ratio < 1.0 ? 1.0 - std::sqrt(1.0 - ratio * ratio) : 1.0;
   return fmt::format(
-      "friction pendulum {}: it slid {:.4g}, {:.2f} of its radius R = {:.4g}, where the "
+      "friction pendulum {}: it slid {:.4g}{}, {:.2f} of its radius R = {:.4g}{}, where the "
       "small-displacement pendulum's restoring force N s / R falls {:.1f} % short of the "
       "spherical dish's N s / sqrt(R^2 - s^2) and leaves out the slider's rise s^2 / (2 R) = "
-      "{:.3g}: check that slide against the bearing's displacement capacity",
-      link.id, slide, ratio, radius, 100.0 * short_by, slide * slide / (2.0 * radius));
+      "{:.3g}{}: check that slide against the bearing's displacement capacity",
+      link.id, slide, u.length, ratio, radius, u.length, 100.0 * short_by,
+      slide * slide / (2.0 * radius), u.length);
 }
 
 // Warnings for results an engineer should not trust as they are.
-std::vector<std::string> result_warnings(const RunSummary& run) {
+std::vector<std::string> result_warnings(const RunSummary& run, const UnitNames& names) {
+  const WarningUnits u(names);
   std::vector<std::string> warnings;
   std::vector<SoftStickSpring> soft;
   for (const LinkResult& link : run.links)
     if (const std::optional<SoftStickSpring> found = soft_stick_spring(link))
       soft.push_back(*found);
-  if (!soft.empty()) warnings.push_back(stick_spring_warning(std::move(soft)));
+  if (!soft.empty()) warnings.push_back(stick_spring_warning(std::move(soft), u));
   for (const LinkResult& link : run.links)
-    if (std::optional<std::string> warning = dish_warning(link))
+    if (std::optional<std::string> warning = dish_warning(link, u))
       warnings.push_back(std::move(*warning));
   for (const JointResult& joint : run.joints)
     if (joint.unseated())
-      warnings.push_back(
-          fmt::format("joint {}: the girder moved {:.4g} on a seat {:.4g} wide: unseated",
-                      joint.monitor.id, joint.peak.peak_seat_movement, joint.monitor.seat_width));
+      warnings.push_back(fmt::format(
+          "joint {}: the girder moved {:.4g}{} on a seat {:.4g}{} wide: unseated", joint.monitor.id,
+          joint.peak.peak_seat_movement, u.length, joint.monitor.seat_width, u.length));
   // Pounding drifts are a few percent; 10 % is far past what a model of small displacements (and
   // elastic storeys) describes, so such a number is not a result (a stiffness far too small?).
+  // With P-Delta a yielded pier or storey whose post-yield stiffness is below P / h runs away
+  // under its weight: that is a collapse, and its drifts (millions of percent) are not a demand.
   for (const DriftResult& drift : run.drifts)
     if (drift.largest_ratio() > 0.10)
       warnings.push_back(fmt::format(
-          "{} {}: drift ratio {:.1f} %, far beyond what this small-displacement model describes: "
-          "the result is meaningless there (a stiffness far too small?)",
+          "{} {}: drift ratio {:.3g} %, far beyond what this small-displacement model describes: "
+          "the result is meaningless there ({})",
           drift.monitor.kind == builder::DriftKind::pier ? "pier" : "storey", drift.monitor.id,
-          100.0 * drift.largest_ratio()));
+          100.0 * drift.largest_ratio(),
+          run.p_delta && drift.ductility().value_or(0.0) > 1.0
+              ? "it yielded, and under gravity's P-Delta a post-yield stiffness below P/h runs "
+                "away: read it as a collapse, not as a drift"
+              : "a stiffness far too small?"));
   for (const DriftResult& drift : run.drifts)
     if (const std::optional<double> demand = drift.elastic_demand_ratio(); demand && *demand > 1.0)
       warnings.push_back(fmt::format(
@@ -366,11 +388,12 @@ std::vector<std::string> result_warnings(const RunSummary& run) {
           (!most || link.summary.created_energy() > most->summary.created_energy()))
         most = &link;
     warnings.push_back(fmt::format(
-        "contact links created {:.4g}, {:.2f} % of the energy put in (link {} {:.4g}): a penalty "
-        "contact that starts or ends inside a step gives back more than it took, so the pounding "
-        "forces and what follows them are not to be trusted; reduce the time step, or use a law "
-        "that resolves the impact (the extended penalty)",
-        run.contact_created_energy(), 100.0 * created, most->id, most->summary.created_energy()));
+        "contact links created {:.4g}{}, {:.2f} % of the energy put in (link {} {:.4g}{}): a "
+        "penalty contact that starts or ends inside a step gives back more than it took, so the "
+        "pounding forces and what follows them are not to be trusted; reduce the time step, or "
+        "use a law that resolves the impact (the extended penalty)",
+        run.contact_created_energy(), u.energy, 100.0 * created, most->id,
+        most->summary.created_energy(), u.energy));
   }
   if (run.worst_balance_error > 0.01) {
     const std::string why =
@@ -737,7 +760,8 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
   }
   run.energy = observers.energy().terms();
   run.worst_balance_error = observers.energy().worst_balance_error();
-  run.warnings = result_warnings(run);
+  run.p_delta = built.model.gravity && built.model.gravity->p_delta.has_value();
+  run.warnings = result_warnings(run, built.units);
   return run;
 }
 

@@ -206,6 +206,7 @@ struct RunSummary {
   EnergyTerms energy;
   double worst_balance_error = 0.0;
   std::vector<std::string> warnings;  // for results an engineer should not trust as they are
+  bool p_delta = false;               // gravity's P-Delta acts (a yielded pier can run away)
   // The part of energy.links that yielding links dissipated (their hysteretic energy); none
   // when no link yields.
   std::optional<double> hysteretic_energy() const;

@@ -1326,6 +1326,36 @@ TEST_F(Cli, ModesListOnlyTheDirectionsTheSceneMovesInAndWriteTheShapes) {
   EXPECT_NE(over.exit_code, 0);
 }
 
+// Effective modal mass along every axis the scene's mass moves: the skewed 3-D bridge lists z too,
+// and all its modes hold the whole mass along x, y and z (sum of (phi^T M iota)^2 over an
+// M-orthonormal basis = iota^T M iota). The listed modes' sums are printed; where they hold less
+// than the codes' 90 % along an axis a record shakes (the plane bridge's first mode alone, x),
+// the listing says so, and not for an axis no record shakes (its y).
+TEST_F(Cli, ModesSumTheirEffectiveMassAlongEachAxisAgainstTheCodes90Percent) {
+  const std::string skewed = POUND_SOURCE_DIR "/models/skewed_bridge_3d.json";
+  const Outcome listed = pound({"modes", skewed});
+  ASSERT_EQ(listed.exit_code, 0) << listed.err;
+  EXPECT_TRUE(contains(listed.out, "mass z")) << listed.out;
+  EXPECT_TRUE(contains(listed.out, "  sum ")) << listed.out;
+  EXPECT_FALSE(contains(listed.out, "less than 90 %")) << listed.out;  // x 0.937, y 0.967
+  const json all = json::parse(pound({"modes", skewed, "--count", "300", "--json"}).out);
+  for (const char* axis : {"x", "y", "z"}) {
+    const double sum = all["mass_ratio_sum"][axis].get<double>();
+    std::cout << "skewed bridge, all " << all["modes"].size() << " modes: mass along " << axis
+              << " " << sum << "\n";
+    EXPECT_NEAR(sum, 1.0, 1e-12) << axis;
+  }
+  EXPECT_TRUE(all["modes"][0].contains("mass_ratio_z"));
+  const Outcome first =
+      pound({"modes", POUND_SOURCE_DIR "/models/three_span_bridge.json", "--count", "1"});
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  EXPECT_TRUE(contains(first.out,
+                       "the one mode listed holds less than 90 % of the mass along x (58.7 %), "
+                       "which the records shake"))
+      << first.out;
+  EXPECT_FALSE(contains(first.out, "along x (58.7 %), y")) << first.out;
+}
+
 // `pound modes --count 12` on two girders lists their 2 modes and says why not 12; a free body's
 // rigid-body mode is left out and said so; as many modes as asked: no such line.
 TEST_F(Cli, ModesFewerThanAskedSayWhy) {

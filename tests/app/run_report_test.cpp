@@ -238,9 +238,9 @@ TEST(RunReport, ASoftStickSpringOrALongSlideOnAFrictionPendulumIsWarnedOf) {
   ASSERT_EQ(warnings_of(soft).size(), 1u);
   const std::string line = warnings_of(soft)[0];
   std::cout << line << "\n";
-  EXPECT_TRUE(has(line, "slides d_y = 0.000589 ")) << line;
-  EXPECT_TRUE(has(line, "2 sqrt(mu R d_y) = 0.0168 (14.0 % of mu R)")) << line;
-  EXPECT_TRUE(has(line, "at least 1e4 N / R = 4.91e+07")) << line;
+  EXPECT_TRUE(has(line, "slides d_y = 0.000589 m ")) << line;
+  EXPECT_TRUE(has(line, "2 sqrt(mu R d_y) = 0.0168 m (14.0 % of mu R)")) << line;
+  EXPECT_TRUE(has(line, "at least 1e4 x N/R = 4.91e+07 N/m")) << line;
   // Launched so slowly that it never slides past d_y (amplitude v0 / omega = 0.45 mm): it never
   // slipped, so no reversal to bound.
   const RunOutcome stuck = pendulum("1e6", 0.001);
@@ -258,7 +258,8 @@ TEST(RunReport, ASoftStickSpringOrALongSlideOnAFrictionPendulumIsWarnedOf) {
           .get<double>();
   const double ratio = slide / 2.0;
   std::cout << far << "\n";
-  EXPECT_TRUE(has(far, fmt::format("it slid {:.4g}, {:.2f} of its radius R = 2,", slide, ratio)))
+  EXPECT_TRUE(
+      has(far, fmt::format("it slid {:.4g} m, {:.2f} of its radius R = 2 m,", slide, ratio)))
       << far;
   EXPECT_TRUE(
       has(far, fmt::format("falls {:.1f} % short", 100 * (1 - std::sqrt(1 - ratio * ratio)))))
@@ -308,7 +309,7 @@ TEST(RunReport, SoftStickSpringsOfSeveralPendulumsMakeOneWarning) {
   std::cout << found[0] << "\n";
   EXPECT_TRUE(
       found[0].starts_with("friction pendulum bearing_2: its stick spring (stick_stiffness "
-                           "1e+06)"))
+                           "1e+06 N/m)"))
       << found[0];
   EXPECT_TRUE(found[0].ends_with("(the same for bearing_1, less far off)")) << found[0];
 }

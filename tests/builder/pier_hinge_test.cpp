@@ -8,6 +8,8 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "assembly/pushover.hpp"
+#include "assembly/structural_system.hpp"
 #include "builder/build.hpp"
 #include "core/errors.hpp"
 #include "io/model_reader.hpp"
@@ -65,6 +67,46 @@ TEST(PierHinge, TheDriftMonitorYieldsWhereTheHingeDoes) {
   const auto& link = hinged.model.links[hinged.link_index.at("bridge.p1.hinge")];
   EXPECT_TRUE(link.rotational);
   EXPECT_NEAR(*link.make_law({})->yield_deformation(), 4.0e6 / (11 * 3 * ei / h), 1e-18);
+}
+
+// A trilinear Takeda hinge (cracking at 1.5 MN m, yield at the given rotation theta_y = 4.848e-4,
+// past M_y / k_h = 5.05e-6 on its cracked branch): the pier yields when the hinge does, at
+// theta_y h + n / (n + 1) M_y h^2 / (3 E I) = 3.879 + 3.232 = 7.111 mm, not at M_y h^2 / (3 E I)
+// = 3.556 mm (which doubled its ductility). A push of the pier top in 2,000 increments to 10 mm
+// finds where the hinge reaches theta_y, interpolated between increments.
+TEST(PierHinge, ATrilinearHingesPierYieldsWhereItsHingeReachesItsYieldRotation) {
+  constexpr double theta_y = 4.848e-4, m_y = 4.0e6, ei = 3.0e10 * 0.8, h = 8.0, n = 10.0;
+  const BuiltModel model = built(bridge([&](Json& generator) {
+    add_hinges(generator);
+    generator["pier_hinge"]["law"] = {{"type", "takeda"},
+                                      {"cracking_force", 1.5e6},
+                                      {"yield_deformation", theta_y},
+                                      {"hardening_ratio", 0.03}};
+  }));
+  const double expected = theta_y * h + n / (n + 1) * m_y * h * h / (3 * ei);
+  const double monitor = *model.drift_monitors[0].yield_drift;
+  assembly::StructuralSystem system(model.model);
+  const Index rotation = system.dofs().own_equation(model.node_index.at("bridge.p1.hinge"), 2);
+  const Index top = system.dofs().own_equation(model.node_index.at("bridge.p1.top"), 0);
+  double previous_rotation = 0.0, previous_top = 0.0, found = NAN;
+  const auto observe = [&](const assembly::PushoverPoint&, const Vector& u) {
+    const double turn = std::abs(u[rotation]);
+    if (std::isnan(found) && turn >= theta_y)
+      found = previous_top +
+              (u[top] - previous_top) * (theta_y - previous_rotation) / (turn - previous_rotation);
+    previous_rotation = turn;
+    previous_top = u[top];
+  };
+  assembly::PushoverControl control{.equation = top, .target = 0.01, .increments = 2000};
+  control.pattern = Vector::Zero(system.size());
+  control.pattern[top] = 1.0;
+  const assembly::PushoverResult pushed =
+      assembly::pushover(system, Vector::Zero(system.size()), control, observe);
+  ASSERT_TRUE(pushed.stopped.empty()) << pushed.stopped;
+  std::cout << "trilinear hinge: pier yields at " << found << " m pushed, monitor " << monitor
+            << " m, formula " << expected << " m\n";
+  EXPECT_NEAR(monitor, expected, 1e-15);
+  EXPECT_NEAR(found, monitor, 1e-4 * monitor);
 }
 
 TEST(PierHinge, AYieldCurvatureGivesTheYieldMoment) {
