@@ -226,7 +226,8 @@ const LawEntry& Takeda::entry() {
       .formula =
           "trilinear skeleton `k0` to `(F_c, F_c/k0)`, to `(F_y, δ_y)`, then `r·F_y/δ_y` "
           "(bilinear without `cracking_force`); unloading `k_y·(δ_y/δ_p)^α` after yield "
-          "(`k_y = F_y/δ_y`, δ_p the peak), toward the opposite cracking point before yield; "
+          "(`k_y = F_y/δ_y`, δ_p the peak on the side it unloads from, each side its own), "
+          "toward the opposite cracking point before yield; "
           "past zero force reloading toward the opposite peak moved back `β·(δ_p − δ_y)` (the "
           "yield point if that side has not yielded), then the skeleton; inner loops return "
           "along the unloading line",
