@@ -25,6 +25,7 @@
 #include "io/json_reader.hpp"
 #include "io/model_reader.hpp"
 #include "io/output.hpp"
+#include "io/output_paths.hpp"
 #include "io/set_reader.hpp"
 #include "io/statistics_document.hpp"
 
@@ -44,7 +45,10 @@ std::string scale_text(const builder::ExcitationSpec& e) {
 std::vector<io::InputFile> input_files(const builder::SetSpec& set,
                                        const std::optional<std::string>& set_text) {
   std::vector<io::InputFile> inputs;
-  auto add = [&](const std::string& path) {
+  // Each under one spelling, however the set or the command line typed it: --resume compares
+  // them with the plan's.
+  auto add = [&](const std::string& typed) {
+    const std::string path = io::resolved_path(typed);
     for (const io::InputFile& known : inputs)
       if (known.path == path) return;
     inputs.push_back({path, io::file_hash(path)});
@@ -71,8 +75,8 @@ std::string plan_text(const builder::SetSpec& set, const std::vector<builder::Ba
     const builder::ExcitationSpec& e = set.records[c.record].excitation;
     io::Document item;
     item.set("case", c.name)
-        .set("model", set.models[c.model].path)
-        .set("record", e.record)
+        .set("model", io::resolved_path(set.models[c.model].path))
+        .set("record", io::resolved_path(e.record))
         .set("format", e.format)
         .set("column", e.column)
         .set("units", e.units)
@@ -80,7 +84,7 @@ std::string plan_text(const builder::SetSpec& set, const std::vector<builder::Ba
         .set("scale", c.scale);
     if (e.pair)  // the pair's second component and angle decide the case too
       item.set("pair", io::Document()
-                           .set("record", e.pair->record.value_or(e.record))
+                           .set("record", io::resolved_path(e.pair->record.value_or(e.record)))
                            .set("column", e.pair->column.value_or(e.column))
                            .set("angle_deg", e.pair->angle));
     items.push_back(item);
@@ -91,7 +95,7 @@ std::string plan_text(const builder::SetSpec& set, const std::vector<builder::Ba
       .set("damping", set.intensity.damping)
       .set("pair", builder::pair_measure_name(set.intensity.pair));
   return io::Document()
-             .set("set", set.source)
+             .set("set", inputs.front().path)  // input_files puts it first, resolved
              .set("intensity_measure", intensity)
              .set("cases", items)
              .set("inputs",

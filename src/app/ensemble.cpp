@@ -137,6 +137,16 @@ results::CaseSummary EnsembleResult::median_summary() const {
     if (!values.empty() && values.size() == completed)
       summary.*quantity.value = results::quantile(values, 0.5);
   }
+  // The least unseating margin is a response as well (not a batch quantity: limits take the
+  // seat movement), and the row's `unseated` follows its median, as the seat movement's does.
+  std::vector<double> margins;
+  for (std::size_t k = 0; k < copies.size(); ++k)
+    if (failures[k].empty() && copies[k].min_unseating_margin)
+      margins.push_back(*copies[k].min_unseating_margin);
+  if (summary.min_unseating_margin && !margins.empty() && margins.size() == completed) {
+    summary.min_unseating_margin = results::quantile(margins, 0.5);
+    summary.unseated = *summary.min_unseating_margin <= 0.0;
+  }
   return summary;
 }
 

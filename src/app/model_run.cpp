@@ -235,7 +235,10 @@ void summarise_record(const LoadedModel& loaded, const builder::IntensityMeasure
   c.pga_g = applied.pga_g;
   const double period = intensity.type == builder::IntensityKind::sa ? intensity.period : 0.0;
   if (const auto& second = loaded.second_components.front()) {
-    // A pair: its RotD50 or the geometric mean of its components' measures (period 0: PGA).
+    // A pair: the larger component's PGA (the first alone read 0.38 g of a pair scaled to RotD50
+    // 0.4 g whose second peaks at 0.55 g), and its RotD50 or the geometric mean of its
+    // components' measures (period 0: PGA).
+    c.pga_g = std::max(applied.pga_g, applied.pair_pga / loaded.spec.units.gravity());
     const model::PairSpectralAcceleration measures = model::pair_spectral_acceleration(
         model::make_component_pair(loaded.records.front(), second->motion), period,
         intensity.damping);

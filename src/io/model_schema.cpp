@@ -1490,7 +1490,10 @@ Field<ExcitationSpec> scale_field() {
           }),
           required("period", &ExcitationSpec::sa_period, Number<>{positive}, "of Sa [T]")
               .when(by_sa, "with sa"),
-          optional("damping", &ExcitationSpec::sa_damping, Number<>{non_negative},
+          optional("damping", &ExcitationSpec::sa_damping,
+                   Number<>{non_negative, Maximum{1.0, true,
+                                                  "must be below 1 (an underdamped "
+                                                  "oscillator), got {}"}},
                    "damping ratio of Sa")
               .always_written()
               .when(by_sa, "with sa"),

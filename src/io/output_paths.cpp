@@ -30,6 +30,8 @@ bool same_file(const std::string& a, const std::string& b) {
 
 }  // namespace
 
+std::string resolved_path(const std::string& path) { return resolved(path).string(); }
+
 void check_outputs_apart(const std::vector<NamedPath>& inputs,
                          const std::vector<NamedPath>& outputs) {
   for (std::size_t k = 0; k < outputs.size(); ++k) {

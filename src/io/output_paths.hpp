@@ -22,6 +22,10 @@ struct NamedPath {
 void check_outputs_apart(const std::vector<NamedPath>& inputs,
                          const std::vector<NamedPath>& outputs);
 
+// `path` absolute, with symlinks of its existing part resolved and "." and ".." folded: one
+// spelling of a file however it was typed ("sets/a.json", "./sets/a.json", "/work/sets/a.json").
+std::string resolved_path(const std::string& path);
+
 // The default output folder of a command run on `input`: <parent>/<input's stem>. Throws
 // InputError naming `option` when the stem cannot name a folder ("...json" has stem "..").
 std::string folder_named_after(const std::string& parent, const std::string& input,

@@ -141,6 +141,9 @@ builder::IntensityMeasure read_intensity(JsonObject& object) {
   if (measure.type == builder::IntensityKind::sa) {
     measure.period = object.required<double>("period", positive);
     measure.damping = object.optional<double>("damping", 0.05, non_negative);
+    if (!(measure.damping < 1.0))  // Sa of an underdamped oscillator (pound spectrum's range)
+      object.at("damping").fail(
+          fmt::format("must be below 1 (an underdamped oscillator), got {}", measure.damping));
   }
   if (object.has("pair"))
     measure.pair = object.one_of("pair", {"rotd50", "geometric_mean"}) == "rotd50"

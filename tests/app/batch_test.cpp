@@ -404,6 +404,22 @@ TEST_F(Batch, ResumeRedoesEveryIncompleteCase) {
   EXPECT_EQ(without_run_time(read_text(path("out/batch_summary.csv"))), without_run_time(summary));
 }
 
+// The same set typed another way ("dir/./set.json" for "dir/set.json": ./sets/a.json for
+// sets/a.json, or an absolute path) is the same batch: --resume finishes it (it was refused as
+// "the cases ... are not those of the batch", the plan keeping paths as typed).
+TEST_F(Batch, ResumesASetTypedAnotherWay) {
+  const std::string set = write_bundled_set("[1]");
+  const std::string out = path("out").string();
+  ASSERT_EQ(pound({"batch", set, "--out", out, "-q", "--jobs", "1"}).exit_code, 0);
+  const std::string summary = read_text(path("out/batch_summary.csv"));
+  fs::remove(path("out/model/record/x1/case_complete.json"));
+  const std::string respelt = (fs::path(set).parent_path() / "." / "set.json").string();
+  const Outcome resumed = pound({"batch", respelt, "--out", out, "--resume"});
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find("(2 resumed, 1 run"), std::string::npos) << resumed.out;
+  EXPECT_EQ(without_run_time(read_text(path("out/batch_summary.csv"))), without_run_time(summary));
+}
+
 // Issue 14: --resume after editing a model (or a record, or the set) mixed rows of the old and
 // the new file, as only paths were compared. batch_plan.json keeps a hash of each input's
 // content, and a resume with any of them changed is refused, naming the file.

@@ -242,23 +242,33 @@ TEST_F(Ensemble, EveryCopyOfTheFrictionPendulumAndTheEccentricBuildingsCompletes
   }
 }
 
-// A batch row of an ensemble case: each response the median of the copies' (type 7), the rest
-// as the unperturbed run has them.
+// A batch row of an ensemble case: each response the median of the copies' (type 7), the least
+// unseating margin too, the rest as the unperturbed run has them.
 TEST_F(Ensemble, TheMedianSummaryTakesEachResponsesMedianOverTheCopies) {
   RunRequest request;
   request.model_path = kModels + "three_span_bridge.json";
   request.histories = false;
   const EnsembleResult result = run_ensemble(request, {.copies = 5});
   const results::CaseSummary median = result.median_summary();
-  std::vector<double> forces, drifts;
+  std::vector<double> forces, drifts, margins;
   for (const results::CaseSummary& copy : result.copies) {
     forces.push_back(*copy.max_pounding_force);
     drifts.push_back(*copy.max_drift_ratio);
+    margins.push_back(*copy.min_unseating_margin);
   }
   std::sort(forces.begin(), forces.end());
   std::sort(drifts.begin(), drifts.end());
+  std::sort(margins.begin(), margins.end());
   EXPECT_EQ(*median.max_pounding_force, forces[2]);
   EXPECT_EQ(*median.max_drift_ratio, drifts[2]);
+  // The unseating margin too (it was the unperturbed run's, beside the median seat movement), and
+  // the unseated flag follows it.
+  std::cout << "least unseating margin: unperturbed "
+            << *result.unperturbed.case_summary.min_unseating_margin << ", copies "
+            << margins.front() << " to " << margins.back() << "\n";
+  EXPECT_EQ(*median.min_unseating_margin, margins[2]);
+  EXPECT_NE(*median.min_unseating_margin, *result.unperturbed.case_summary.min_unseating_margin);
+  EXPECT_EQ(*median.unseated, margins[2] <= 0.0);
   EXPECT_EQ(median.max_pounding_link, result.unperturbed.case_summary.max_pounding_link);
   EXPECT_EQ(median.energy_balance_error, result.unperturbed.case_summary.energy_balance_error);
   std::cout << "bridge: max pounding force " << *result.unperturbed.case_summary.max_pounding_force

@@ -308,4 +308,41 @@ TEST_F(PairExcitation, BatchSetsRunPairsAndReportTheirIntensityMeasure) {
 }
 
 }  // namespace
+// A batch row's pga_g of a pair is the larger component's: the pair with its weaker component
+// first (0.182 g, then 0.278 g) reads 0.278 g, not the first's 0.182 g.
+TEST_F(PairExcitation, ABatchRowsPgaOfAPairIsTheLargerComponents) {
+  std::ofstream(path("column.json")) << column(0.0).dump(1);
+  const json set = {{"models", {path("column.json").string()}},
+                    {"records",
+                     {{{"file", "pair.txt"},
+                       {"format", "columns"},
+                       {"column", 2},
+                       {"time_step", 0.01},
+                       {"pair", {{"column", 1}}}}}},
+                    {"histories", false}};
+  std::ofstream(path("set.json")) << set.dump(1);
+  ASSERT_EQ(
+      pound({"batch", path("set.json").string(), "--out", path("batch").string(), "-q"}).exit_code,
+      0);
+  const json spectrum =
+      json::parse(pound({"spectrum", path("pair.txt").string(), "--format", "columns", "--dt",
+                         "0.01", "--pair-column", "2", "--periods", "0.6", "--json"})
+                      .out);
+  const std::string rows = read_text(path("batch") / "batch_summary.csv");
+  const std::string header = rows.substr(0, rows.find('\n'));
+  const std::string row = rows.substr(rows.find('\n') + 1);
+  std::vector<std::string> names, cells;
+  for (std::istringstream in(header); std::getline(in, names.emplace_back(), ',');) {
+  }
+  for (std::istringstream in(row); std::getline(in, cells.emplace_back(), ',');) {
+  }
+  const auto column_of = std::find(names.begin(), names.end(), "pga_g") - names.begin();
+  const double pga = std::stod(cells.at(static_cast<std::size_t>(column_of)));
+  const double larger =
+      std::max(spectrum["pga1_g"].get<double>(), spectrum["pga2_g"].get<double>());
+  std::printf("pair pga_g %.9g g, components %.9g and %.9g g\n", pga,
+              spectrum["pga2_g"].get<double>(), spectrum["pga1_g"].get<double>());
+  EXPECT_NEAR(pga, larger, 1e-9 * larger);
+}
+
 }  // namespace pound

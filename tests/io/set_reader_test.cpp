@@ -160,6 +160,15 @@ INSTANTIATE_TEST_SUITE_P(
                "/limits/max_ductilty: unknown field (did you mean 'max_ductility'?)"},
         BadSet{"SaWithoutPeriod", R"([{"op": "remove", "path": "/intensity_measure/period"}])",
                "/intensity_measure"},
+        // Sa of an oscillator at or past critical damping: the batch stopped at its first case
+        // with exit 3 ("an unexpected failure"), a lock file left behind.
+        BadSet{"CriticalMeasureDamping",
+               R"([{"op": "add", "path": "/intensity_measure/damping", "value": 1}])",
+               "/intensity_measure/damping: must be below 1 (an underdamped oscillator), got 1"},
+        BadSet{"CriticalScaleDamping",
+               R"([{"op": "replace", "path": "/records/0/scale",
+                    "value": {"sa": 0.5, "period": 1, "damping": 1.5}}])",
+               "/records/0/scale/damping: must be below 1 (an underdamped oscillator), got 1.5"},
         BadSet{"HistoriesNotBool", R"([{"op": "replace", "path": "/histories", "value": "no"}])",
                "/histories: expected true or false"}),
     [](const ::testing::TestParamInfo<BadSet>& param_info) { return param_info.param.name; });
