@@ -506,7 +506,10 @@ void write_batch_results(const builder::SetSpec& set, const std::vector<builder:
   for (const auto& [index, row] : rows) {
     csv += row + "\n";
     summaries.push_back(io::parse_case_row(row, cases[index].name));
-    report.completed += summaries.back().status == results::CaseStatus::completed;
+    const results::CaseSummary& c = summaries.back();
+    report.completed += c.status == results::CaseStatus::completed;
+    if (c.status == results::CaseStatus::completed && c.warnings.value_or(0.0) > 0.0)
+      report.warned.push_back(c.name);
   }
   report.failed = cases.size() - report.completed;
   report.statistics = results::batch_statistics(set, summaries);

@@ -13,6 +13,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/cluster.hpp"
 #include "results/batch_statistics.hpp"
@@ -47,6 +48,7 @@ struct BatchOptions {
 struct BatchReport {
   std::size_t cases = 0, resumed = 0, ran = 0;
   std::size_t completed = 0, failed = 0;  // over every case, resumed or not (root only)
+  std::vector<std::string> warned;        // the completed cases whose results gave warnings
   int ranks = 1, jobs = 1;
   double wall_s = 0.0;    // of running the cases, on the slowest rank
   double worker_s = 0.0;  // summed over every case run (all ranks): reading, solving, writing

@@ -104,6 +104,21 @@ void print_report(const BatchOptions& batch, const BatchReport& report) {
         100.0 * report.setup_s / report.worker_s, 100.0 * report.write_s / report.worker_s,
         100.0 * (report.worker_s - report.solve_s - report.setup_s - report.write_s) /
             report.worker_s);
+  if (!report.warned.empty()) {
+    // A completed case whose drifts went past 10 % (a collapse) is in the statistics as any
+    // other: say which, so that they are read before the medians.
+    constexpr std::size_t kNamed = 5;
+    std::string names;
+    for (std::size_t k = 0; k < std::min(kNamed, report.warned.size()); ++k)
+      names += (k == 0 ? "" : ", ") + report.warned[k];
+    if (report.warned.size() > kNamed)
+      names += fmt::format(" and {} more", report.warned.size() - kNamed);
+    std::cout << fmt::format(
+        "  {} completed case(s) with warnings on their results (a drift past 10 % or a "
+        "collapse, a girder off its seat, energy created by contacts...; column 'warnings', "
+        "each case's summary.json says which), in the statistics as the others: {}\n",
+        report.warned.size(), names);
+  }
   for (const results::FragilityFit& f : report.statistics.fragilities)
     std::cout << fragility_line(f);
 }

@@ -102,7 +102,7 @@ std::vector<Column> qualifiers(const results::BatchQuantity& quantity) {
 }
 
 // The case, its record and how far it went; each response quantity in the table's order with
-// its qualifiers; the run time last.
+// its qualifiers; the count of result warnings, and the run time last.
 std::vector<Column> make_columns() {
   std::vector<Column> all = {text_column("name", &CaseSummary::name),
                              text_column("model", &CaseSummary::model),
@@ -118,6 +118,7 @@ std::vector<Column> make_columns() {
     all.push_back(number_column(std::string(quantity.name), quantity.value));
     for (Column& qualifier : qualifiers(quantity)) all.push_back(std::move(qualifier));
   }
+  all.push_back(number_column("warnings", &CaseSummary::warnings));
   all.push_back(number_column("run_time_s", &CaseSummary::run_time_s));
   return all;
 }

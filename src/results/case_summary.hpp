@@ -50,6 +50,10 @@ struct CaseSummary {
   // monitor's top (floors, pier tops) and at a joint monitor's girder end (the deck) [L/T^2].
   std::optional<double> max_top_acceleration;
   std::optional<double> max_deck_acceleration;
+  // How many warnings the run's results gave (summary.json's "warnings": a drift past 10 % or a
+  // collapse, a girder off its seat, energy created by contacts...): a completed case with some is
+  // not a plain result.
+  std::optional<double> warnings;
   std::optional<double> run_time_s;  // of the solve; the one column that varies run to run
 };
 

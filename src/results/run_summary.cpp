@@ -772,6 +772,7 @@ void summarise_case(const RunSummary& run, CaseSummary& c) {
                                                   run.status.end_time, run.status.failure);
   c.end_time = run.status.end_time;
   c.steps = static_cast<double>(run.statistics.steps);
+  c.warnings = static_cast<double>(run.warnings.size());
   for (const LinkResult& link : run.links) {
     const LinkSummary& s = link.summary;
     // A seated bearing's normal force is its share of the weight, not a pounding force.

@@ -420,6 +420,49 @@ TEST_F(Batch, ResumesASetTypedAnotherWay) {
   EXPECT_EQ(without_run_time(read_text(path("out/batch_summary.csv"))), without_run_time(summary));
 }
 
+// A case that completes with warnings on its results (here a column that collapses under
+// P-Delta once its hinge yields: drifts of hundreds of percent) is named on the console and
+// counted in the row's `warnings` column, which is 0 for a plain result (the column barely
+// shaken stays elastic); it stays in the statistics as any completed case.
+TEST_F(Batch, CompletedCasesWithWarningsAreNamedAndCounted) {
+  std::ofstream(path("column.json")) << fmt::format(R"({{
+    "dimension": 2,
+    "nodes": [{{"id": "base", "x": 0, "y": 0}}, {{"id": "hn", "x": 0, "y": 0}},
+              {{"id": "top", "x": 0, "y": 8}}],
+    "materials": [{{"id": "c", "youngs_modulus": 3e10, "density": 0}}],
+    "elements": [{{"id": "e1", "type": "beam", "nodes": ["hn", "top"], "material": "c",
+                   "area": 3, "inertia": 0.88}}],
+    "masses": [{{"node": "top", "mass": 3e6}}],
+    "supports": [{{"node": "base", "fix": ["x", "y", "rz"]}}, {{"node": "hn", "fix": ["x", "y"]}}],
+    "links": [{{"id": "hinge", "nodes": ["hn", "base"], "dof": "rotation",
+                "law": {{"type": "takeda", "stiffness": 9.9e10, "yield_force": 4e6,
+                        "hardening_ratio": 0}}}}],
+    "monitors": {{"drifts": [{{"id": "pier", "kind": "pier", "bottom": "base", "top": "top",
+                              "height": 8, "yield_displacement": 0.01, "base_element": "e1"}}]}},
+    "gravity": {{"p_delta": "chord"}},
+    "excitations": [{{"record": "{}/ground_motions/synthetic_firm_01.AT2", "units": "g"}}],
+    "analysis": {{"time_step": 0.005, "duration": 10}}}})",
+                                                    kSource);
+  std::ofstream(path("set.json")) << fmt::format(
+      R"({{"models": ["column.json"],
+           "records": [{{"file": "{}/ground_motions/synthetic_firm_01.AT2", "id": "firm",
+                         "scale": {{"pga": 0.6}}}}],
+           "scales": [0.01, 1], "histories": false}})",
+      kSource);
+  const Outcome outcome =
+      pound({"batch", path("set.json").string(), "--out", path("out").string(), "--jobs", "1"});
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  std::cout << outcome.out;
+  EXPECT_NE(outcome.out.find("1 completed case(s) with warnings on their results"),
+            std::string::npos)
+      << outcome.out;
+  EXPECT_NE(outcome.out.find("as the others: column/firm/x1\n"), std::string::npos) << outcome.out;
+  const auto rows = rows_of(read_text(path("out/batch_summary.csv")));
+  EXPECT_EQ(cell(rows, 1, "name"), "column/firm/x0.01");
+  EXPECT_EQ(cell(rows, 1, "warnings"), "0");
+  EXPECT_GE(std::stod(cell(rows, 2, "warnings")), 1.0);
+}
+
 // Issue 14: --resume after editing a model (or a record, or the set) mixed rows of the old and
 // the new file, as only paths were compared. batch_plan.json keeps a hash of each input's
 // content, and a resume with any of them changed is refused, naming the file.

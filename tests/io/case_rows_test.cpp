@@ -63,7 +63,7 @@ TEST(CaseRows, HeaderKeepsItsColumnsAndTheirOrder) {
             "max_pounding_force,max_pounding_link,max_restrainer_force,max_restrainer_link,"
             "max_joint_opening,max_seat_movement,min_unseating_margin,unseated,max_drift_ratio,"
             "max_ductility,max_residual_drift_ratio,energy_balance_error,max_top_acceleration,"
-            "max_deck_acceleration,run_time_s");
+            "max_deck_acceleration,warnings,run_time_s");
 }
 
 // Every quantity of the table is a column, and reads back into its own member.

@@ -40,8 +40,8 @@ mkdir "$only"
 cp "$batch/batch_stats.json" "$only/"
 {
   cat "$batch/batch_summary.csv"
-  echo 'extra/failed/x1,three_span_bridge,synthetic_firm_01,1,failed,"stopped: ""diverged"", at t = 3",0.3,0.3,3,,,,,,,,,,,,,,,,,'
-  echo 'extra/missing/x1,three_span_bridge,missing,1,input_error,"cannot read record, no such file",,,,,,,,,,,,,,,,,,,,'
+  echo 'extra/failed/x1,three_span_bridge,synthetic_firm_01,1,failed,"stopped: ""diverged"", at t = 3",0.3,0.3,3,,,,,,,,,,,,,,,,,,'
+  echo 'extra/missing/x1,three_span_bridge,missing,1,input_error,"cannot read record, no such file",,,,,,,,,,,,,,,,,,,,,'
 } >"$only/batch_summary.csv"
 interpreter=$python
 command -v python3 >/dev/null 2>&1 && interpreter=python3
