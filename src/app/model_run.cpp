@@ -285,16 +285,23 @@ std::string verification_line(const verification::RodImpactMetrics& metrics) {
       metrics.peak_force_ratio);
 }
 
-// How excitation k was scaled: "as recorded", or its factor or target.
+// How excitation k was scaled: "as recorded", or its factor or target, then a batch's IDA scale
+// (`ida_scale`, where not 1: `factor` beside it holds both, so a record scaled to Sa 0.5 g at
+// x2 has Sa 1 g).
 io::Document scaling_document(const builder::ExcitationSpec& e) {
   io::Document scaling;
-  if (e.target_pga) return scaling.set("target_pga_g", *e.target_pga);
-  if (e.target_sa)
-    return scaling.set("target_sa_g", *e.target_sa)
+  if (e.target_pga)
+    scaling.set("target_pga_g", *e.target_pga);
+  else if (e.target_sa)
+    scaling.set("target_sa_g", *e.target_sa)
         .set("period", e.sa_period)
         .set("damping_ratio", e.sa_damping);
-  if (e.scale_factor) return scaling.set("factor", *e.scale_factor);
-  return scaling.set("as_recorded", true);
+  else if (e.scale_factor)
+    scaling.set("factor", *e.scale_factor);
+  else
+    scaling.set("as_recorded", true);
+  if (e.extra_factor != 1.0) scaling.set("ida_scale", e.extra_factor);
+  return scaling;
 }
 
 // Each excitation as applied, so that a run can be traced to its records: the file (as opened)

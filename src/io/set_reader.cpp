@@ -140,6 +140,9 @@ builder::IntensityMeasure read_intensity(JsonObject& object) {
                                                               : builder::IntensityKind::pga;
   if (measure.type == builder::IntensityKind::sa) {
     measure.period = object.required<double>("period", positive);
+    if (!(measure.period <= 1000.0))  // pound spectrum's range: no structure's period is longer
+      object.at("period").fail(
+          fmt::format("must be <= 1000 (pound spectrum's range), got {}", measure.period));
     measure.damping = object.optional<double>("damping", 0.05, non_negative);
     if (!(measure.damping < 1.0))  // Sa of an underdamped oscillator (pound spectrum's range)
       object.at("damping").fail(

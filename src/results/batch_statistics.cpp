@@ -89,12 +89,14 @@ std::string unidentifiable_reason(const IntensitySpread& spread, std::size_t obs
   if (spread.highest_safe <= spread.lowest_exceeding) {
     const std::string where =
         spread.highest_safe < spread.lowest_exceeding
-            ? fmt::format("between intensities {:.4g} and {:.4g}", spread.highest_safe,
+            ? fmt::format("completely between intensities {:.4g} and {:.4g}", spread.highest_safe,
                           spread.lowest_exceeding)
-            : fmt::format("at intensity {:.4g} (none exceeds below it, all do above it)",
-                          spread.highest_safe);
+            : fmt::format(
+                  "at intensity {:.4g} (none exceeds below it, all do above it, some "
+                  "at it: the median is there)",
+                  spread.highest_safe);
     return fmt::format(
-        "the cases separate completely {}: the dispersion is not identifiable (it tends to 0); "
+        "the cases separate {}: the dispersion is not identifiable (it tends to 0); "
         "run more records or scales around there",
         where);
   }

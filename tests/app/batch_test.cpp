@@ -463,6 +463,22 @@ TEST_F(Batch, CompletedCasesWithWarningsAreNamedAndCounted) {
   EXPECT_GE(std::stod(cell(rows, 2, "warnings")), 1.0);
 }
 
+// A case's summary.json says how its record was scaled, the set's scaling and then the IDA
+// scale: at x2 its factor is twice the x1 case's, and `ida_scale` says why (it showed the set's
+// scaling alone beside the doubled factor).
+TEST_F(Batch, ACaseSummaryNamesItsIdaScale) {
+  const std::string set = write_bundled_set("[1, 2]");
+  ASSERT_EQ(pound({"batch", set, "--out", path("out").string(), "-q"}).exit_code, 0);
+  const auto excitation = [&](const char* scale) {
+    return nlohmann::json::parse(
+        read_text(path("out/model/record") / scale / "summary.json"))["excitations"][0];
+  };
+  const nlohmann::json once = excitation("x1"), twice = excitation("x2");
+  EXPECT_FALSE(once["scaling"].contains("ida_scale")) << once["scaling"];
+  EXPECT_EQ(twice["scaling"]["ida_scale"], 2.0) << twice["scaling"];
+  EXPECT_DOUBLE_EQ(twice["factor"].get<double>(), 2.0 * once["factor"].get<double>());
+}
+
 // Issue 14: --resume after editing a model (or a record, or the set) mixed rows of the old and
 // the new file, as only paths were compared. batch_plan.json keeps a hash of each input's
 // content, and a resume with any of them changed is refused, naming the file.

@@ -162,6 +162,13 @@ INSTANTIATE_TEST_SUITE_P(
                "/intensity_measure"},
         // Sa of an oscillator at or past critical damping: the batch stopped at its first case
         // with exit 3 ("an unexpected failure"), a lock file left behind.
+        BadSet{"AbsurdMeasurePeriod",
+               R"([{"op": "replace", "path": "/intensity_measure/period", "value": 1e6}])",
+               "/intensity_measure/period: must be <= 1000 (pound spectrum's range), got 1000000"},
+        BadSet{"AbsurdScalePeriod",
+               R"([{"op": "replace", "path": "/records/0/scale",
+                    "value": {"sa": 0.5, "period": 1e6}}])",
+               "/records/0/scale/period: must be <= 1000 (pound spectrum's range), got 1000000"},
         BadSet{"CriticalMeasureDamping",
                R"([{"op": "add", "path": "/intensity_measure/damping", "value": 1}])",
                "/intensity_measure/damping: must be below 1 (an underdamped oscillator), got 1"},

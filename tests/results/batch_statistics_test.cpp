@@ -90,6 +90,15 @@ TEST(Fragility, SaysWhyThereIsNoFit) {
   EXPECT_NE(separated.reason.find("separate completely between intensities 0.2 and 0.3"),
             std::string::npos)
       << separated.reason;
+  // Both outcomes at 0.3 and none other on the wrong side: not complete (the median is 0.3),
+  // and not said to be.
+  const FragilityFit at_one =
+      fit_lognormal_fragility({{0.1, false}, {0.3, false}, {0.3, true}, {0.4, true}});
+  EXPECT_FALSE(at_one.fitted);
+  EXPECT_NE(at_one.reason.find("separate at intensity 0.3 (none exceeds below it, all do above "
+                               "it, some at it: the median is there)"),
+            std::string::npos)
+      << at_one.reason;
 }
 
 results::CaseSummary row(const std::string& record, double scale, double ductility,
