@@ -161,12 +161,26 @@ CaseRun run_case_model(RunRequest request, const std::optional<builder::SetEnsem
   return run;
 }
 
+// A case's record replaces the model's first excitation, so what is wrong with its scaling or
+// pair (an all-zero record under a target, a pair column of a one-column file) is the set's
+// record entry's, not the model's "/excitations/0".
+InputError in_the_set(const InputError& error, const std::string& model_path,
+                      const std::string& set_file, const std::string& record_path) {
+  constexpr std::string_view kFirst = "/excitations/0";
+  const std::string& where = error.where();
+  if (error.file() != model_path || record_path.empty() || !where.starts_with(kFirst) ||
+      (where.size() > kFirst.size() && where[kFirst.size()] != '/'))
+    return error;
+  return InputError(set_file, record_path + where.substr(kFirst.size()), error.reason());
+}
+
 // A case whose model or record cannot be read fails alone: an outcome saying why. So does one
 // whose analysis fails before its first step (its static equilibrium under gravity not found):
 // a failed case, as one that fails during its run, not a stop of the batch.
 CaseRun run_or_report_input_error(const RunRequest& request,
                                   const std::optional<builder::SetEnsemble>& ensemble,
-                                  const std::function<void(double)>& case_progress) {
+                                  const std::function<void(double)>& case_progress,
+                                  const std::string& set_file, const std::string& record_path) {
   const auto stopped = [&](results::CaseStatus status, const std::string& reason) {
     RunOutcome outcome;
     outcome.case_summary.status = status;
@@ -179,7 +193,8 @@ CaseRun run_or_report_input_error(const RunRequest& request,
   try {
     return run_case_model(request, ensemble, case_progress);
   } catch (const InputError& error) {
-    return stopped(results::CaseStatus::input_error, error.what());
+    return stopped(results::CaseStatus::input_error,
+                   in_the_set(error, request.model_path, set_file, record_path).what());
   } catch (const SolveError& error) {
     CaseRun run = stopped(results::CaseStatus::failed, error.what());
     run.outcome.failure = error.reason();
@@ -200,7 +215,8 @@ CaseResult run_case(const builder::SetSpec& set, const builder::BatchCase& c,
   request.record->extra_factor = c.scale;
   request.intensity = set.intensity;
   request.histories = set.histories;
-  CaseRun run = run_or_report_input_error(request, set.ensemble, case_progress);
+  CaseRun run = run_or_report_input_error(request, set.ensemble, case_progress, set.source,
+                                          set.records[c.record].path);
   RunOutcome& outcome = run.outcome;
   results::CaseSummary& summary = outcome.case_summary;
   summary.name = c.name;

@@ -23,6 +23,7 @@ struct BatchModel {
 struct BatchRecord {
   std::string id;
   ExcitationSpec excitation;  // `record` is a path the program can open
+  std::string path;           // its entry in the set, "/records/2" (a folder's matches share it)
 };
 
 // The intensity measure the fragility is fitted against, of the record as scaled for a case.

@@ -598,7 +598,8 @@ double columns_time_step(const std::string& path, const std::vector<Line>& heade
   }
   if (stated) return stated->value;
   fail(path, 0,
-       "the file does not give its time step: give it (dt), or read the first column as time");
+       "the file does not give its time step: give it (\"time_step\" in a model or a set, --dt "
+       "on the command line, dt= in Python), or read the first column as time");
 }
 
 std::vector<double> read_columns(const std::string& path, const std::vector<Line>& lines,

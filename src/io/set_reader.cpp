@@ -203,9 +203,10 @@ builder::SetSpec read_set(JsonObject& top) {
   for (const JsonValue& entry : records.elements(1)) {
     const std::vector<builder::BatchRecord> expanded =
         read_object(entry, [&](JsonObject& object) { return read_record_entry(object, folder); });
-    for (const builder::BatchRecord& record : expanded) {
+    for (builder::BatchRecord record : expanded) {
       record_ids.add(record.id, entry);
-      set.records.push_back(record);
+      record.path = entry.path();
+      set.records.push_back(std::move(record));
     }
   }
 

@@ -308,6 +308,28 @@ TEST_F(PairExcitation, BatchSetsRunPairsAndReportTheirIntensityMeasure) {
 }
 
 }  // namespace
+// A case whose record entry cannot be applied (a pair column of a one-component .AT2 file) fails
+// alone, its reason naming the set file and the record's entry, not the model's
+// "/excitations/0", which the case's record replaced.
+TEST_F(PairExcitation, ABatchCasesRecordErrorNamesTheSetsEntry) {
+  std::ofstream(path("column.json")) << column(0.0).dump(1);
+  write_at2(path("first.AT2"));
+  const json set = {{"models", {path("column.json").string()}},
+                    {"records", {{{"file", "first.AT2"}, {"pair", {{"column", 2}}}}}},
+                    {"histories", false}};
+  std::ofstream(path("set.json")) << set.dump(1);
+  EXPECT_EQ(
+      pound({"batch", path("set.json").string(), "--out", path("batch").string(), "-q"}).exit_code,
+      3);
+  const std::string rows = read_text(path("batch") / "batch_summary.csv");
+  std::cout << rows;
+  EXPECT_TRUE(testing::contains(rows, path("set.json").string() +
+                                          ": /records/0/pair/column: a "
+                                          "PEER .AT2 file holds one component"))
+      << rows;
+  EXPECT_FALSE(testing::contains(rows, "/excitations/0")) << rows;
+}
+
 // A batch row's pga_g of a pair is the larger component's: the pair with its weaker component
 // first (0.182 g, then 0.278 g) reads 0.278 g, not the first's 0.182 g.
 TEST_F(PairExcitation, ABatchRowsPgaOfAPairIsTheLargerComponents) {
