@@ -33,7 +33,7 @@ const std::array<BatchQuantity, 11> kQuantities = {{
     {"max_residual_drift_ratio", &CaseSummary::max_residual_drift_ratio,
      "largest |residual drift| over height at the end of the record, over the storey and pier "
      "monitors [-]",
-     "residual drift ratio [-]"},
+     "residual drift ratio [-]", true, false},
     {"energy_balance_error", &CaseSummary::energy_balance_error,
      "worst energy balance error over the run, as a fraction of the largest energy term [-]",
      "energy balance error [-]", false},

@@ -19,6 +19,9 @@ struct BatchQuantity {
   // false for a check of the analysis rather than a response of the structure (not plotted
   // unless asked for).
   bool response = true;
+  // A running peak (largest so far): a run that stopped early has at least the value it
+  // reached, so past a limit it exceeded it. Not so a value at the record's end (residual drift).
+  bool running_peak = true;
 };
 
 // In the order of their columns.

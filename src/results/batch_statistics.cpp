@@ -156,6 +156,16 @@ FragilityFit fit_lognormal_fragility(const std::vector<FragilityObservation>& ob
   return fit;
 }
 
+// A failed case whose running peak passed the limit before it stopped: its whole run's peak is
+// at least that, so it exceeded the limit (left out, it made a fragility non-conservative where
+// the failures were collapses). One below the limit says nothing and stays out.
+bool exceeded_before_stopping(const CaseSummary& c, const builder::ResponseLimit& limit) {
+  const BatchQuantity& quantity = limited_quantity(limit);
+  if (c.status != CaseStatus::failed || !quantity.running_peak) return false;
+  const std::optional<double> value = c.*quantity.value;
+  return value && *value > limit.value;
+}
+
 BatchStatistics batch_statistics(const builder::SetSpec& set,
                                  const std::vector<results::CaseSummary>& cases) {
   BatchStatistics stats;
@@ -170,11 +180,12 @@ BatchStatistics batch_statistics(const builder::SetSpec& set,
       ScaleGroup group;
       group.model = model.id;
       group.scale = scale;
-      std::vector<const results::CaseSummary*> completed;
+      std::vector<const results::CaseSummary*> completed, stopped;
       for (const results::CaseSummary& c : cases)
         if (c.model == model.id && c.scale == scale) {
           ++group.cases;
           if (c.status == CaseStatus::completed) completed.push_back(&c);
+          if (c.status == CaseStatus::failed) stopped.push_back(&c);
         }
       group.completed = completed.size();
       for (const BatchQuantity& quantity : batch_quantities()) {
@@ -194,6 +205,11 @@ BatchStatistics batch_statistics(const builder::SetSpec& set,
             ++e.count;
             e.exceeded += *value > limit.value;
           }
+        for (const results::CaseSummary* c : stopped)
+          if (exceeded_before_stopping(*c, limit)) {
+            ++e.count;
+            ++e.exceeded;
+          }
         e.fraction = e.count ? static_cast<double>(e.exceeded) / static_cast<double>(e.count) : 0.0;
         group.exceedances.push_back(e);
       }
@@ -202,11 +218,15 @@ BatchStatistics batch_statistics(const builder::SetSpec& set,
     for (const builder::ResponseLimit& limit : set.limits) {
       std::vector<FragilityObservation> observations;
       const auto value_of = limited_quantity(limit).value;
-      for (const results::CaseSummary& c : cases)
-        if (c.model == model.id && c.status == CaseStatus::completed && c.intensity &&
-            *c.intensity > 0.0)
+      for (const results::CaseSummary& c : cases) {
+        if (c.model != model.id || !c.intensity || !(*c.intensity > 0.0)) continue;
+        if (c.status == CaseStatus::completed) {
           if (const std::optional<double> value = c.*value_of)
             observations.push_back({*c.intensity, *value > limit.value});
+        } else if (exceeded_before_stopping(c, limit)) {
+          observations.push_back({*c.intensity, true});
+        }
+      }
       FragilityFit fit;
       if (observations.empty())
         fit.reason = fmt::format("no completed case reports {}", limit.quantity);

@@ -113,37 +113,51 @@ results::CaseSummary row(const std::string& record, double scale, double ductili
   return c;
 }
 
+// The responses' statistics are over completed cases only. A failed case whose running peak had
+// passed a limit before it stopped exceeded it (its whole run's peak is at least that): it counts
+// among the exceedances and the fragility's observations; one below the limit says nothing and
+// stays out, as does a residual drift (a value at the end, not a peak).
 TEST(BatchStatistics, GroupsByModelAndScaleOverCompletedCasesOnly) {
   builder::SetSpec set;
   set.models = {{"bridge", "bridge.json"}};
   set.scales = {1.0, 2.0};
-  set.limits = {{"max_ductility", 1.0}};
-  const std::vector<results::CaseSummary> cases = {
-      row("a", 1, 0.5), row("b", 1, 0.9),
-      row("c", 1, 1.3), row("d", 1, 99.0, CaseStatus::failed),
-      row("a", 2, 1.1), row("b", 2, 0.8),
-      row("c", 2, 2.0), row("d", 2, 0.0, CaseStatus::input_error)};
+  set.limits = {{"max_ductility", 1.0}, {"max_residual_drift_ratio", 0.01}};
+  std::vector<results::CaseSummary> cases = {row("a", 1, 0.5),
+                                             row("b", 1, 0.9),
+                                             row("c", 1, 1.3),
+                                             row("d", 1, 99.0, CaseStatus::failed),
+                                             row("e", 1, 0.2, CaseStatus::failed),
+                                             row("a", 2, 1.1),
+                                             row("b", 2, 0.8),
+                                             row("c", 2, 2.0),
+                                             row("d", 2, 0.0, CaseStatus::input_error)};
+  for (results::CaseSummary& c : cases) c.max_residual_drift_ratio = c.max_ductility.value() / 50;
   const BatchStatistics stats = batch_statistics(set, cases);
-  EXPECT_EQ(stats.cases, 8u);
+  EXPECT_EQ(stats.cases, 9u);
   EXPECT_EQ(stats.completed, 6u);
-  EXPECT_EQ(stats.failed, 1u);
+  EXPECT_EQ(stats.failed, 2u);
   EXPECT_EQ(stats.input_errors, 1u);
   ASSERT_EQ(stats.groups.size(), 2u);
   const ScaleGroup& first = stats.groups[0];
-  EXPECT_EQ(first.cases, 4u);
+  EXPECT_EQ(first.cases, 5u);
   EXPECT_EQ(first.completed, 3u);
-  ASSERT_EQ(first.responses.size(), 1u);  // only ductility is present
+  ASSERT_EQ(first.responses.size(), 2u);  // ductility and residual drift are present
   EXPECT_EQ(first.responses[0].count, 3u);
   EXPECT_DOUBLE_EQ(first.responses[0].median, 0.9);
   EXPECT_NEAR(first.responses[0].p84, 0.9 + 0.68 * 0.4, 1e-12);  // position 0.84 * 2 = 1.68
   EXPECT_DOUBLE_EQ(first.responses[0].max, 1.3);                 // not the failed 99
-  ASSERT_EQ(first.exceedances.size(), 1u);
-  EXPECT_EQ(first.exceedances[0].exceeded, 1u);
-  EXPECT_NEAR(first.exceedances[0].fraction, 1.0 / 3.0, 1e-15);
+  ASSERT_EQ(first.exceedances.size(), 2u);
+  EXPECT_EQ(first.exceedances[0].count, 4u);  // the three completed, and d past the limit
+  EXPECT_EQ(first.exceedances[0].exceeded, 2u);
+  EXPECT_NEAR(first.exceedances[0].fraction, 0.5, 1e-15);
+  EXPECT_EQ(first.exceedances[1].count, 3u);     // a residual is not a peak: d stays out
+  EXPECT_EQ(first.exceedances[1].exceeded, 2u);  // b 0.018 and c 0.026
   EXPECT_NEAR(stats.groups[1].exceedances[0].fraction, 2.0 / 3.0, 1e-15);
-  ASSERT_EQ(stats.fragilities.size(), 1u);
-  EXPECT_EQ(stats.fragilities[0].observations, 6u);
+  ASSERT_EQ(stats.fragilities.size(), 2u);
+  EXPECT_EQ(stats.fragilities[0].observations, 7u);
+  EXPECT_EQ(stats.fragilities[0].exceeded, 4u);
   EXPECT_TRUE(stats.fragilities[0].fitted) << stats.fragilities[0].reason;
+  EXPECT_EQ(stats.fragilities[1].observations, 6u);
 }
 
 }  // namespace
