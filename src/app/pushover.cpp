@@ -142,6 +142,7 @@ class CapacityRecorder {
     append_row(table_, {point.displacement, point.load_factor, double(point.iterations)});
     std::size_t column = 3;
     ratios_.resize(links_.size(), 0.0);
+    earlier_ratios_.resize(links_.size(), 0.0);
     for (std::size_t k = 0; k < links_.size(); ++k) {
       const YieldingLink& link = links_[k];
       double ratio = 0.0;  // |(delta_a / delta_ya)|: past 1, the link has yielded
@@ -153,7 +154,6 @@ class CapacityRecorder {
       }
       ratio = std::sqrt(ratio);
       if (!first_yield_ && ratio >= 1 - 1e-9) first_yield_ = first_yield_within(k, point, ratio);
-      earlier_ratios_.resize(links_.size(), 0.0);
       earlier_ratios_[k] = ratios_[k];
       ratios_[k] = ratio;
     }
@@ -199,8 +199,8 @@ class CapacityRecorder {
   std::map<Index, std::string> ids_;
   Table table_;
   std::optional<FirstYield> first_yield_;
-  std::vector<double> ratios_,
-      earlier_ratios_;  // each link's at the previous point, the one before
+  // Each link's ratio at the previous point and at the one before, and those points.
+  std::vector<double> ratios_, earlier_ratios_;
   assembly::PushoverPoint previous_, earlier_;
   std::size_t points_ = 0;
 };
