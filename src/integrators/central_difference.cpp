@@ -231,8 +231,13 @@ double damping_ratio(SecondOrderSystem& system, Vector shape, const Vector& link
 }
 
 // The stable step of a mode of frequency w and damping ratio z.
+// (2 / w)(sqrt(1 + z^2) - z). Past z = 1 as (2 / w) / (sqrt(1 + z^2) + z), the same number
+// without the cancellation that made it 0 for z past 1e8 (a friction pendulum of R = 1e6 m: its
+// tangent N / R is 1 N/m beside its stick damping, and central difference was refused as if its
+// step had to be 0; the limit there is the dashpot's 2 m / c).
 double damped_stable_step(double omega, double zeta) {
-  return 2.0 / omega * (std::sqrt(1.0 + zeta * zeta) - zeta);
+  const double root = std::sqrt(1.0 + zeta * zeta);
+  return zeta > 1.0 ? 2.0 / omega / (root + zeta) : 2.0 / omega * (root - zeta);
 }
 
 // The stable step of link row r's own relative mode: its two end masses,

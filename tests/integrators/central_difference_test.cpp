@@ -31,6 +31,18 @@ TEST(CentralDifference, StableStepOfAnOscillatorIsTwoOverOmega) {
   EXPECT_NEAR(integrators::stable_time_step(damped, true), 0.1 * (std::sqrt(1.04) - 0.2), 1e-10);
 }
 
+// An oscillator damped far past critical (z = 1e9: a friction pendulum of R = 1e6 m has a
+// tangent N / R of about 1 N/m beside its stick damping): the limit is the dashpot's 2 m / c.
+// Taken as (2 / w)(sqrt(1 + z^2) - z) it cancelled to 0, and central difference was refused.
+TEST(CentralDifference, AStepLimitFarPastCriticalDampingIsTheDashpots) {
+  const double mass = 2.0, stiffness = 1e-6, zeta = 1e9;
+  const double damping = 2.0 * zeta * std::sqrt(stiffness * mass);
+  Oscillator system(mass, damping, stiffness);
+  const double limit = integrators::stable_time_step(system, true);
+  std::cout << "z = 1e9: stable step " << limit << ", 2 m / c " << 2.0 * mass / damping << "\n";
+  EXPECT_NEAR(limit / (2.0 * mass / damping), 1.0, 1e-9);
+}
+
 // Below the limit a free vibration stays bounded; just above it grows without bound.
 TEST(CentralDifference, BoundedBelowTheLimitAndDivergesAbove) {
   for (const double factor : {0.99, 1.01}) {
