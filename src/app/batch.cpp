@@ -70,13 +70,22 @@ std::vector<io::InputFile> input_files(const builder::SetSpec& set,
 // is resumed only if this is unchanged.
 std::string plan_text(const builder::SetSpec& set, const std::vector<builder::BatchCase>& cases,
                       const std::vector<io::InputFile>& inputs) {
+  // Each model and record resolved once, not once per case.
+  std::vector<std::string> models, records, pairs;
+  for (const builder::BatchModel& model : set.models)
+    models.push_back(io::resolved_path(model.path));
+  for (const builder::BatchRecord& record : set.records) {
+    const builder::ExcitationSpec& e = record.excitation;
+    records.push_back(io::resolved_path(e.record));
+    pairs.push_back(e.pair && e.pair->record ? io::resolved_path(*e.pair->record) : records.back());
+  }
   std::vector<io::Document> items;
   for (const builder::BatchCase& c : cases) {
     const builder::ExcitationSpec& e = set.records[c.record].excitation;
     io::Document item;
     item.set("case", c.name)
-        .set("model", io::resolved_path(set.models[c.model].path))
-        .set("record", io::resolved_path(e.record))
+        .set("model", models[c.model])
+        .set("record", records[c.record])
         .set("format", e.format)
         .set("column", e.column)
         .set("units", e.units)
@@ -84,7 +93,7 @@ std::string plan_text(const builder::SetSpec& set, const std::vector<builder::Ba
         .set("scale", c.scale);
     if (e.pair)  // the pair's second component and angle decide the case too
       item.set("pair", io::Document()
-                           .set("record", io::resolved_path(e.pair->record.value_or(e.record)))
+                           .set("record", pairs[c.record])
                            .set("column", e.pair->column.value_or(e.column))
                            .set("angle_deg", e.pair->angle));
     items.push_back(item);

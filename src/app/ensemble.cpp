@@ -128,25 +128,22 @@ int EnsembleResult::failed() const {
 results::CaseSummary EnsembleResult::median_summary() const {
   results::CaseSummary summary = unperturbed.case_summary;
   const std::size_t completed = copies.size() - static_cast<std::size_t>(failed());
-  for (const results::BatchQuantity& quantity : results::batch_quantities()) {
-    if (!(summary.*quantity.value) || !quantity.response) continue;
+  // The member's median over the completed copies, where the run has it and every copy does.
+  const auto take_median = [&](std::optional<double> results::CaseSummary::*member) {
+    if (!(summary.*member)) return;
     std::vector<double> values;
     for (std::size_t k = 0; k < copies.size(); ++k)
-      if (failures[k].empty() && copies[k].*quantity.value)
-        values.push_back(*(copies[k].*quantity.value));
+      if (failures[k].empty() && copies[k].*member) values.push_back(*(copies[k].*member));
     if (!values.empty() && values.size() == completed)
-      summary.*quantity.value = results::quantile(values, 0.5);
-  }
+      summary.*member = results::quantile(values, 0.5);
+  };
+  for (const results::BatchQuantity& quantity : results::batch_quantities())
+    if (quantity.response) take_median(quantity.value);
   // The least unseating margin is a response as well (not a batch quantity: limits take the
   // seat movement), and the row's `unseated` follows its median, as the seat movement's does.
-  std::vector<double> margins;
-  for (std::size_t k = 0; k < copies.size(); ++k)
-    if (failures[k].empty() && copies[k].min_unseating_margin)
-      margins.push_back(*copies[k].min_unseating_margin);
-  if (summary.min_unseating_margin && !margins.empty() && margins.size() == completed) {
-    summary.min_unseating_margin = results::quantile(margins, 0.5);
-    summary.unseated = *summary.min_unseating_margin <= 0.0;
-  }
+  // (A run's own `unseated` is its least margin <= 0, so this leaves an unchanged margin's.)
+  take_median(&results::CaseSummary::min_unseating_margin);
+  if (summary.min_unseating_margin) summary.unseated = *summary.min_unseating_margin <= 0.0;
   return summary;
 }
 

@@ -142,6 +142,11 @@ bool coupled_bearings(const Bridge& bridge, const ModelSpec& out) {
   return links::CoupledShear::numbers_of(*spec.bearing, {out.source, path}).has_value();
 }
 
+// The deck's mass per length: its girder's section and what it carries.
+double deck_mass_per_length(const GirderBridgeSpec& spec) {
+  return spec.girder.density * spec.girder.area + spec.girder.extra_mass;
+}
+
 // A friction pendulum's stick spring gives back 2 mu N d_y at each reversal, d_y = mu N / k_t
 // (laws.md): where the model does not set k_t, it is made stiff enough for the whole deck's
 // weight W on one bearing, k_t = max(k_v, 1e4 W / R), which keeps every bearing's error under
@@ -151,9 +156,8 @@ FrictionSpec bearing_friction(const Bridge& bridge, const ModelSpec& out) {
   const GirderBridgeSpec& spec = bridge.spec;
   FrictionSpec friction = *spec.bearing_friction;
   if (!friction.radius || friction.stick_stiffness) return friction;
-  const double per_length = spec.girder.density * spec.girder.area + spec.girder.extra_mass;
   const double deck_weight =
-      per_length * (bridge.x.back() - bridge.x.front()) * out.units.gravity();
+      deck_mass_per_length(spec) * (bridge.x.back() - bridge.x.front()) * out.units.gravity();
   friction.stick_stiffness =
       std::max(spec.bearing_vertical_stiffness, 1e4 * deck_weight / *friction.radius);
   return friction;
@@ -438,7 +442,7 @@ std::vector<int> girder_cuts(const GirderBridgeSpec& spec) {
 void add_deck_rotary_inertia(const Bridge& bridge, const std::vector<std::string>& nodes,
                              const std::vector<double>& stations, ModelSpec& out) {
   const GirderBridgeSpec& spec = bridge.spec;
-  const double per_length = spec.girder.density * spec.girder.area + spec.girder.extra_mass;
+  const double per_length = deck_mass_per_length(spec);
   std::vector<double> lumped(nodes.size(), 0.0);
   for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {
     const double half = 0.5 * per_length * (stations[k + 1] - stations[k]);

@@ -20,6 +20,7 @@
 
 #include "app/cluster.hpp"
 #include "io/folder_lock.hpp"
+#include "support/collapsing_column.hpp"
 #include "support/process.hpp"
 #include "support/shared_records.hpp"
 
@@ -421,28 +422,11 @@ TEST_F(Batch, ResumesASetTypedAnotherWay) {
 }
 
 // A case that completes with warnings on its results (here a column that collapses under
-// P-Delta once its hinge yields: drifts of hundreds of percent) is named on the console and
-// counted in the row's `warnings` column, which is 0 for a plain result (the column barely
-// shaken stays elastic); it stays in the statistics as any completed case.
+// P-Delta once its hinge yields, support/collapsing_column.hpp: drifts of hundreds of percent) is
+// named on the console and counted in the row's `warnings` column, which is 0 for a plain result
+// (the column barely shaken stays elastic); it stays in the statistics as any completed case.
 TEST_F(Batch, CompletedCasesWithWarningsAreNamedAndCounted) {
-  std::ofstream(path("column.json")) << fmt::format(R"({{
-    "dimension": 2,
-    "nodes": [{{"id": "base", "x": 0, "y": 0}}, {{"id": "hn", "x": 0, "y": 0}},
-              {{"id": "top", "x": 0, "y": 8}}],
-    "materials": [{{"id": "c", "youngs_modulus": 3e10, "density": 0}}],
-    "elements": [{{"id": "e1", "type": "beam", "nodes": ["hn", "top"], "material": "c",
-                   "area": 3, "inertia": 0.88}}],
-    "masses": [{{"node": "top", "mass": 3e6}}],
-    "supports": [{{"node": "base", "fix": ["x", "y", "rz"]}}, {{"node": "hn", "fix": ["x", "y"]}}],
-    "links": [{{"id": "hinge", "nodes": ["hn", "base"], "dof": "rotation",
-                "law": {{"type": "takeda", "stiffness": 9.9e10, "yield_force": 4e6,
-                        "hardening_ratio": 0}}}}],
-    "monitors": {{"drifts": [{{"id": "pier", "kind": "pier", "bottom": "base", "top": "top",
-                              "height": 8, "yield_displacement": 0.01, "base_element": "e1"}}]}},
-    "gravity": {{"p_delta": "chord"}},
-    "excitations": [{{"record": "{}/ground_motions/synthetic_firm_01.AT2", "units": "g"}}],
-    "analysis": {{"time_step": 0.005, "duration": 10}}}})",
-                                                    kSource);
+  std::ofstream(path("column.json")) << testing::collapsing_column(4e6);
   std::ofstream(path("set.json")) << fmt::format(
       R"({{"models": ["column.json"],
            "records": [{{"file": "{}/ground_motions/synthetic_firm_01.AT2", "id": "firm",

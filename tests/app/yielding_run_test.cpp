@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/model_run.hpp"
+#include "support/collapsing_column.hpp"
 
 namespace pound::app {
 namespace {
@@ -95,31 +96,12 @@ TEST(YieldingRun, HingedPiersReportTheirCurvatureDuctility) {
   EXPECT_NE(outcome.report.find("curvature ductility"), std::string::npos) << outcome.report;
 }
 
-// A 3,000 t mass on an 8 m cantilever over a Takeda base hinge without hardening, under gravity
-// with chord P-Delta: once the hinge yields its post-yield stiffness is -W/h = -3.7 MN/m, and
-// shaken hard it runs away. The drift (thousands of percent) is told as a collapse, not left as a
-// drift with a hint of a soft stiffness; the same column elastic under the same shaking is not.
+// A column that collapses under P-Delta once its hinge yields (support/collapsing_column.hpp):
+// the drift (thousands of percent) is told as a collapse, not left as a drift with a hint of a
+// soft stiffness; the same column elastic under the same shaking is not.
 TEST(YieldingRun, APDeltaRunawayIsToldAsACollapse) {
   const auto column_run = [](double yield_moment) {
-    const std::string text = fmt::format(R"({{
-      "dimension": 2,
-      "nodes": [{{"id": "base", "x": 0, "y": 0}}, {{"id": "hn", "x": 0, "y": 0}},
-                {{"id": "top", "x": 0, "y": 8}}],
-      "materials": [{{"id": "c", "youngs_modulus": 3e10, "density": 0}}],
-      "elements": [{{"id": "e1", "type": "beam", "nodes": ["hn", "top"], "material": "c",
-                     "area": 3, "inertia": 0.88}}],
-      "masses": [{{"node": "top", "mass": 3e6}}],
-      "supports": [{{"node": "base", "fix": ["x", "y", "rz"]}}, {{"node": "hn", "fix": ["x", "y"]}}],
-      "links": [{{"id": "hinge", "nodes": ["hn", "base"], "dof": "rotation",
-                  "law": {{"type": "takeda", "stiffness": 9.9e10, "yield_force": {},
-                          "hardening_ratio": 0}}}}],
-      "monitors": {{"drifts": [{{"id": "pier", "kind": "pier", "bottom": "base", "top": "top",
-                                "height": 8, "yield_displacement": 0.01, "base_element": "e1"}}]}},
-      "gravity": {{"p_delta": "chord"}},
-      "excitations": [{{"record": "{}/ground_motions/synthetic_firm_01.AT2", "units": "g",
-                        "scale": {{"pga": 0.6}}}}],
-      "analysis": {{"time_step": 0.005, "duration": 10}}}})",
-                                         yield_moment, POUND_SOURCE_DIR);
+    const std::string text = testing::collapsing_column(yield_moment);
     const std::filesystem::path file =
         std::filesystem::temp_directory_path() / fmt::format("pound_collapse_{}.json", ::getpid());
     std::ofstream(file) << text;
