@@ -111,15 +111,18 @@ void add_beam(const Bridge& bridge, const std::string& id, const std::string& no
 
 // The pounding points of a deck end at station s, from its centre (3-D): `contact_points` of them
 // along the end line d = (-sin a, cos a, 0), a the skew plus the heading there, from the right
-// corner (-y side) to the left one.
+// corner (-y side) to the left one. The deck is deck_width wide square to its axis, as drawings
+// give it, so its skewed end is deck_width / cos(skew) long, corner to corner.
 std::vector<std::array<double, 3>> end_points(const Bridge& bridge, double station) {
   const GirderBridgeSpec& spec = bridge.spec;
-  const double skew = spec.skew * std::numbers::pi / 180.0 + heading(bridge, station);
+  const double skew_angle = spec.skew * std::numbers::pi / 180.0;
+  const double skew = skew_angle + heading(bridge, station);
   const std::array<double, 3> line{-std::sin(skew), std::cos(skew), 0.0};
+  const double end_length = spec.deck_width / std::cos(skew_angle);
   std::vector<std::array<double, 3>> points;
   const int n = spec.contact_points;
   for (int k = 0; k < n; ++k) {
-    const double s = n == 1 ? 0.0 : spec.deck_width * (static_cast<double>(k) / (n - 1) - 0.5);
+    const double s = n == 1 ? 0.0 : end_length * (static_cast<double>(k) / (n - 1) - 0.5);
     points.push_back({s * line[0], s * line[1], 0.0});
   }
   return points;
@@ -438,7 +441,7 @@ std::vector<int> girder_cuts(const GirderBridgeSpec& spec) {
 
 // In space the deck's width gives each girder node a rotary inertia about x (twist) and z (plan
 // turn), m W^2 / 12 of the mass m it lumps (half of each beam beside it), the deck's mass spread
-// evenly across its width.
+// evenly across its width W, square to its axis whatever the skew.
 void add_deck_rotary_inertia(const Bridge& bridge, const std::vector<std::string>& nodes,
                              const std::vector<double>& stations, ModelSpec& out) {
   const GirderBridgeSpec& spec = bridge.spec;

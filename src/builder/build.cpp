@@ -250,10 +250,16 @@ model::RayleighDamping rayleigh_damping(const DampingSpec& damping, const model:
           source, "/damping/modes",
           fmt::format("the modes for Rayleigh damping cannot be found: {}", error.what()));
     }
-    if (static_cast<int>(found.size()) < highest)
-      throw InputError(source, "/damping/modes",
-                       fmt::format("mode {} asked for, the model has {} vibration modes", highest,
-                                   found.size()));
+    if (static_cast<int>(found.size()) < highest) {
+      const auto dofs_with_mass =
+          static_cast<Index>((system.mass_matrix().diagonal().array() > 0.0).count());
+      throw InputError(
+          source, "/damping/modes",
+          fmt::format("mode {} asked for, the model has {} vibration mode{}: {}", highest,
+                      found.size(), found.size() == 1 ? "" : "s",
+                      assembly::fewer_modes_reason(system.size(), dofs_with_mass, highest,
+                                                   static_cast<Index>(found.size()))));
+    }
     periods = {found[static_cast<std::size_t>((*damping.modes)[0] - 1)],
                found[static_cast<std::size_t>((*damping.modes)[1] - 1)]};
   }

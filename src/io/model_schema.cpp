@@ -1083,11 +1083,13 @@ const Fields<GirderBridgeSpec>& girder_bridge_fields() {
           .when([](const GirderBridgeSpec& bridge) { return bridge.backfill.has_value(); },
                 "with backfill"),
       required("deck_width", &GirderBridgeSpec::deck_width, Number<>{positive},
-               "the deck's width, between the corners that pound [L]")
+               "the deck's width square to its axis, as drawings give it; a skewed "
+               "deck's ends, from corner to corner, are deck_width / cos(skew) long [L]")
           .in_space(),
       optional("bearing_spacing", &GirderBridgeSpec::bearing_spacing, Number<>{positive},
-               "distance across the deck between its outer bearings, whose vertical stiffness "
-               "holds the deck's twist on a seat: k_v s² / 4 per seat [L]")
+               "distance across the deck (square to its axis) between its outer bearings, "
+               "whose vertical stiffness holds the deck's twist on a seat: k_v s² / 4 per seat "
+               "[L]")
           .in_space()
           .default_text("half the deck_width"),
       optional(

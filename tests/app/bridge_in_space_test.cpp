@@ -299,10 +299,45 @@ TEST(BridgeInSpace, ASkewedDeckTurnsInPlanWhenItPounds) {
   EXPECT_LT(mirror / scale, 1e-6);
 }
 
+// deck_width is the width square to the deck's axis, as drawings give it: at any skew the corners
+// lie W/2 either side of the centre line, W / (2 cos skew) from the end's centre along the skewed
+// end, and each girder node's rotary inertia is m W^2 / 12 of the deck mass it carries (here
+// 25 t/m over 7.5 m), the same at every skew. Before, the corners were W/2 along the end (only
+// W cos(skew) apart square to the axis) while the inertia took W as the square width.
+TEST(BridgeInSpace, TheDeckWidthIsSquareToTheAxisWhateverTheSkew) {
+  constexpr double kWidth = 12.0, kInertia = 25000.0 * 7.5 * kWidth * kWidth / 12.0;
+  for (const double degrees : {0.0, 30.0, 60.0, -45.0}) {
+    const BuiltModel built =
+        app::load_model_text(space_bridge(1.0, degrees, 2).dump(), kModels + "bridge.json").built;
+    const double skew = degrees * std::numbers::pi / 180.0;
+    double worst_offset = 0.0, worst_inertia = 0.0;
+    for (const char* corner : {"bridge.joint1.c0", "bridge.joint1.c1", "bridge.a0.joint.c1"}) {
+      const model::Link& link =
+          built.model.links[static_cast<std::size_t>(built.link_index.at(corner))];
+      for (const model::Coordinates& r : link.offsets) {
+        worst_offset = std::max(worst_offset, std::abs(std::abs(r[1]) - 0.5 * kWidth));
+        worst_offset = std::max(
+            worst_offset, std::abs(std::hypot(r[0], r[1]) - 0.5 * kWidth / std::cos(skew)));
+      }
+    }
+    for (const model::NodalMass& mass : built.model.masses)
+      if (built.model.nodes[static_cast<std::size_t>(mass.node)].id == "bridge.g0.n1")
+        for (const std::size_t axis : {0, 2})
+          worst_inertia = std::max(worst_inertia,
+                                   std::abs(mass.rotary_inertia[axis] - kInertia) / kInertia);
+    std::cout << fmt::format(
+        "skew {} deg: corners off W/2 across and W/(2 cos skew) along the end by {:.1e} m; girder "
+        "node's rotary inertia off m W^2/12 by {:.1e}\n",
+        degrees, worst_offset, worst_inertia);
+    EXPECT_LT(worst_offset, 1e-12);
+    EXPECT_LT(worst_inertia, 1e-14);
+  }
+}
+
 // A corner's movement on its seat across the skewed support line, n . (u + theta x r) of the
 // girder end less the seat's, from the nodes' histories, against the joint monitor's peak.
 TEST(BridgeInSpace, ACornersMovementOnItsSeatIsAcrossTheSkewedSupportLine) {
-  const double skew = 30.0 * std::numbers::pi / 180.0, half = 6.0;
+  const double skew = 30.0 * std::numbers::pi / 180.0, half = 6.0 / std::cos(skew);
   const Json model = space_bridge(4.0, 30.0, 2);
   const Json summary = testing::model_summary(model.dump(), kModels + "bridge.json");
   const std::array<double, 3> normal{std::cos(skew), std::sin(skew), 0.0};

@@ -85,6 +85,21 @@ TEST_F(Reliability, ModalDampingWithoutModesIsRefused) {
     expect_refused(command, model, {"/damping/modes", "the model has 0 vibration modes"});
 }
 
+// Modal damping asking for a mode that was dropped as rigid-body motion said only "mode 2 asked
+// for, the model has 1 vibration modes"; it now says why the other is not a vibration mode.
+TEST_F(Reliability, ModalDampingNamesTheModesThatStoreNoStrainEnergy) {
+  json model = bundled("two_sdof_girders");
+  model["elements"].erase(1);  // girder_2 stands on nothing: a mass free to move as a whole
+  model["masses"][0].erase("mass_damping");
+  model["masses"][1].erase("mass_damping");
+  model["damping"] = {{"ratio", 0.05}, {"modes", {1, 2}}};
+  const std::string file = write("free_girder.json", model);
+  for (const char* command : {"run", "check"})
+    expect_refused(command, file,
+                   {"/damping/modes", "the model has 1 vibration mode:",
+                    "1 of the model's 2 modes (one per DOF with mass) stores no strain energy"});
+}
+
 // The bundled bridge without its girders' extra mass: the girder is a mechanism without mass.
 // It aborted in run ("not positive definite at equation 24") while check passed; now both name
 // the node, at the generator that made it.
