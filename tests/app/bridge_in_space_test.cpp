@@ -316,15 +316,15 @@ TEST(BridgeInSpace, TheDeckWidthIsSquareToTheAxisWhateverTheSkew) {
           built.model.links[static_cast<std::size_t>(built.link_index.at(corner))];
       for (const model::Coordinates& r : link.offsets) {
         worst_offset = std::max(worst_offset, std::abs(std::abs(r[1]) - 0.5 * kWidth));
-        worst_offset = std::max(
-            worst_offset, std::abs(std::hypot(r[0], r[1]) - 0.5 * kWidth / std::cos(skew)));
+        worst_offset = std::max(worst_offset,
+                                std::abs(std::hypot(r[0], r[1]) - 0.5 * kWidth / std::cos(skew)));
       }
     }
     for (const model::NodalMass& mass : built.model.masses)
       if (built.model.nodes[static_cast<std::size_t>(mass.node)].id == "bridge.g0.n1")
         for (const std::size_t axis : {0, 2})
-          worst_inertia = std::max(worst_inertia,
-                                   std::abs(mass.rotary_inertia[axis] - kInertia) / kInertia);
+          worst_inertia =
+              std::max(worst_inertia, std::abs(mass.rotary_inertia[axis] - kInertia) / kInertia);
     std::cout << fmt::format(
         "skew {} deg: corners off W/2 across and W/(2 cos skew) along the end by {:.1e} m; girder "
         "node's rotary inertia off m W^2/12 by {:.1e}\n",
