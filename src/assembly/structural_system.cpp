@@ -1082,6 +1082,22 @@ double StructuralSystem::support_acceleration(Index node, int direction, double 
   return acceleration;
 }
 
+double StructuralSystem::moving_support_share(std::size_t k, Index node, int direction) const {
+  const MovingSupport& support = moving_supports_.at(k);
+  const model::Direction along = model::direction(direction, dofs_.dimension());
+  if (support.node != node || along.rotation ||
+      along.axis >= static_cast<int>(std::tuple_size_v<model::Coordinates>))
+    return 0.0;
+  return support.direction[static_cast<std::size_t>(along.axis)];
+}
+
+void StructuralSystem::moving_support_displacements(double time,
+                                                    std::vector<double>& displacements) const {
+  displacements.resize(moving_supports_.size());
+  for (std::size_t k = 0; k < moving_supports_.size(); ++k)
+    displacements[k] = moving_supports_[k].kinematics.at(time).displacement;
+}
+
 void StructuralSystem::external_force(double time, Vector& force) const {
   if (time == last_external_time_ && last_external_force_.size() == size()) {
     force = last_external_force_;

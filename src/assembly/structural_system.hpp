@@ -74,6 +74,16 @@ class StructuralSystem final : public integrators::SecondOrderSystem {
   // The absolute acceleration of a supported DOF (node, direction 0 = x, 1 = y): the ground's
   // along the excitations' directions, and a moving support's own record.
   double support_acceleration(Index node, int direction, double time) const;
+  // The moving supports' quasi-static part of the displacements, which u leaves out
+  // (u_total = u + sum r_k u_s,k(t)): each moving support's influence r_k on the free DOFs, its
+  // node's share of u_s,k along a direction (its record's direction there; 0 for another node or
+  // a rotation, as the ground does not turn), and the supports' displacements at a time.
+  std::size_t moving_support_count() const { return moving_supports_.size(); }
+  const Vector& moving_support_influence(std::size_t k) const {
+    return moving_supports_.at(k).influence;
+  }
+  double moving_support_share(std::size_t k, Index node, int direction) const;
+  void moving_support_displacements(double time, std::vector<double>& displacements) const;
 
  private:
   model::DofMap dofs_;

@@ -603,7 +603,30 @@ void add_abutment(const Bridge& bridge, int side, const std::string& girder, Mod
 
 }  // namespace
 
+// Each law in the role of its links, refused at its own path (the links it makes would be
+// located at the generator only).
+void check_law_roles(const GirderBridgeSpec& spec, const std::string& source) {
+  const std::string at = fmt::format("/generators/{}", spec.generator_index);
+  using links::LinkRole;
+  for (const auto& [joint, name] :
+       {std::pair{&spec.joint, "joint"}, std::pair{&spec.abutment, "abutment"}}) {
+    require_law_role(joint->law, LinkRole::contact, fmt::format("the {}'s pounding link", name),
+                     source, fmt::format("{}/{}/law", at, name));
+    if (joint->restrainer)
+      require_law_role(*joint->restrainer, LinkRole::tension,
+                       fmt::format("the {}'s restrainer", name), source,
+                       fmt::format("{}/{}/restrainer", at, name));
+  }
+  if (spec.backfill)
+    require_law_role(*spec.backfill, LinkRole::contact, "the backfill behind a backwall", source,
+                     at + "/backfill");
+  if (spec.shear_keys)
+    require_law_role(spec.shear_keys->law, LinkRole::contact, "a shear key", source,
+                     at + "/shear_keys/law");
+}
+
 void add_girder_bridge(const GirderBridgeSpec& spec, ModelSpec& out) {
+  check_law_roles(spec, out.source);
   const Bridge bridge{spec,
                       stations(spec),
                       spec.pier_height,

@@ -149,18 +149,19 @@ std::string floor_node_id(const Building& building, std::size_t floor) {
   return building_node_id(building.pair, building.side, static_cast<int>(floor));
 }
 
-// Every height where a floor of either building meets the other one.
+// Every height where a floor of either building meets the other one: floors level within
+// level_tolerance are one height, the lower one's.
 std::vector<double> contact_heights(const std::array<Building, 2>& buildings) {
-  std::vector<double> contacts;
+  const double tolerance = level_tolerance(buildings[0].pair);
+  std::vector<double> floors;
   const double top = std::min(buildings[0].heights.back(), buildings[1].heights.back());
   for (const Building& building : buildings)
     for (std::size_t f = 1; f < building.heights.size(); ++f)
-      if (building.heights[f] <= top * (1 + 1e-12)) contacts.push_back(building.heights[f]);
-  std::sort(contacts.begin(), contacts.end());
-  contacts.erase(
-      std::unique(contacts.begin(), contacts.end(),
-                  [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(a, b); }),
-      contacts.end());
+      if (building.heights[f] <= top + tolerance) floors.push_back(building.heights[f]);
+  std::sort(floors.begin(), floors.end());
+  std::vector<double> contacts;
+  for (const double h : floors)
+    if (contacts.empty() || h - contacts.back() > tolerance) contacts.push_back(h);
   return contacts;
 }
 
@@ -170,9 +171,10 @@ std::vector<double> contact_heights(const std::array<Building, 2>& buildings) {
 std::vector<std::string> add_column_cuts(const Building& building, std::size_t s,
                                          const std::vector<double>& contacts, ModelSpec& out) {
   const double bottom = building.heights[s], upper = building.heights[s + 1];
+  const double tolerance = level_tolerance(building.pair);
   std::vector<std::string> chain{floor_node_id(building, s)};
   for (double h : contacts)
-    if (h > bottom * (1 + 1e-12) && h < upper * (1 - 1e-12)) {
+    if (h > bottom + tolerance && h < upper - tolerance) {
       const std::string cut = cut_node_id(building, s, h);
       out.nodes.push_back(node_at(building, cut, building.column_at(), h));
       // Held vertically, free to bend and twist (the column's shape through the cut is kept).
@@ -385,21 +387,31 @@ struct ContactNode {
   std::string id;
   std::array<double, 2> at;
 };
-ContactNode contact_node(const Building& building, double h) {
+// The id of the building's floor level with height h, or "" where none is.
+std::string floor_node_id_at(const Building& building, double h) {
   for (std::size_t f = 1; f < building.heights.size(); ++f)
-    if (std::abs(building.heights[f] - h) <= 1e-9 * h)
-      return {floor_node_id(building, f), building.floor_at()};
+    if (std::abs(building.heights[f] - h) <= level_tolerance(building.pair))
+      return floor_node_id(building, f);
+  return {};
+}
+
+ContactNode contact_node(const Building& building, double h) {
+  if (std::string floor = floor_node_id_at(building, h); !floor.empty())
+    return {std::move(floor), building.floor_at()};
   for (std::size_t s = 0; s < building.spec.storeys.size(); ++s)
     if (h > building.heights[s] && h < building.heights[s + 1])
       return {cut_node_id(building, s, h), building.column_at()};
   return {};
 }
 
-// The mass of the building's floor at or just above a contact height.
+// The mass of the building's floor nearest a contact height (the upper one midway; the ground,
+// which has none, is not a floor here).
 double floor_mass_near(const Building& building, double h) {
-  for (std::size_t s = 0; s < building.spec.storeys.size(); ++s)
-    if (h <= building.heights[s + 1] * (1 + 1e-12)) return building.spec.storeys[s].mass;
-  return building.spec.storeys.back().mass;
+  std::size_t nearest = 0;
+  for (std::size_t s = 1; s < building.spec.storeys.size(); ++s)
+    if (std::abs(building.heights[s + 1] - h) <= std::abs(building.heights[nearest + 1] - h))
+      nearest = s;
+  return building.spec.storeys[nearest].mass;
 }
 
 // Where the facades meet along y (3-D): `contact_points` positions spread over the stretch
@@ -442,6 +454,16 @@ void add_pounding_links(const AdjacentBuildingsSpec& pair, const std::array<Buil
   const links::LawEntry* entry = links::find_law(pair.law.type);
   const bool uses_mass = entry && entry->accepts("mass", pair.law);
   for (double h : contacts) {
+    for (const Building& building : buildings)
+      if (entry && entry->traits.constraint &&
+          contact_node(building, h).id != floor_node_id_at(building, h))
+        throw InputError(
+            out.source, fmt::format("/generators/{}/law", pair.generator_index),
+            fmt::format("a {} gives its force as an impulse between masses, but at {:g} a floor "
+                        "strikes the {} building's column between its floors, which has none: "
+                        "give the two buildings floors at the same heights there, or a penalty "
+                        "law (kelvin_voigt, jankowski, extended_penalty, ...)",
+                        pair.law.type, h, kPairSides[building.side]));
     LawSpec law = pair.law;
     if (uses_mass && !pair.law.number("mass")) {
       const double m1 = floor_mass_near(buildings[0], h), m2 = floor_mass_near(buildings[1], h);
@@ -458,6 +480,8 @@ std::string building_node_id(const AdjacentBuildingsSpec& pair, int side, int fl
 }
 
 void add_adjacent_buildings(const AdjacentBuildingsSpec& pair, ModelSpec& out) {
+  require_law_role(pair.law, links::LinkRole::contact, "a pounding link between the buildings",
+                   out.source, fmt::format("/generators/{}/law", pair.generator_index));
   const bool space = out.dimension == 3;
   const std::array<Building, 2> buildings{make_building(pair, 0, space, out.source),
                                           make_building(pair, 1, space, out.source)};

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "core/errors.hpp"
+
 namespace pound::builder {
 namespace {
 
@@ -76,6 +78,25 @@ void mark_generated(const ModelSpec& spec, const std::string& path, ModelSpec& o
 std::string generator_path(int generator) { return fmt::format("/generators/{}", generator); }
 
 }  // namespace
+
+void require_law_role(const LawSpec& law, links::LinkRole role, const std::string& what,
+                      const std::string& source, const std::string& path) {
+  const links::LawEntry* entry = links::find_law(law.type);
+  if (!entry || entry->traits.role == role) return;
+  std::string fitting;
+  for (const links::LawEntry* other : links::law_registry())
+    if (other->traits.role == role) fitting += (fitting.empty() ? "" : ", ") + other->name;
+  const bool tension = role == links::LinkRole::tension;
+  throw InputError(
+      source, path + "/type",
+      fmt::format("{} needs a {} law ({}), got '{}', which {}", what,
+                  tension ? "tension-only" : "compression-only contact", fitting, law.type,
+                  entry->traits.role != links::LinkRole::spring
+                      ? (tension ? "pushes, not pulls" : "pulls, not pushes")
+                      : (tension ? "acts both ways: it would push as well as pull"
+                                 : "acts both ways from the link's rest length: across the gap "
+                                   "it would pull with k x gap before anything touches")));
+}
 
 LinkSpec make_link(const std::string& id, const std::string& node_i, const std::string& node_j,
                    std::vector<double> axis, double gap, const LawSpec& law) {

@@ -3,6 +3,7 @@
 // initial velocities and links a user would otherwise write by hand. expand() returns a spec
 // with no generators left, which is what the builder builds (and what `pound expand` could show).
 #include "builder/spec.hpp"
+#include "links/law_registry.hpp"
 
 namespace pound::builder {
 
@@ -27,6 +28,12 @@ std::string building_node_id(const AdjacentBuildingsSpec& pair, int side, int fl
 inline constexpr const char* kPairSides[] = {"left", "right"};  // side 0 and 1 in generated ids
 LinkSpec make_link(const std::string& id, const std::string& node_i, const std::string& node_j,
                    std::vector<double> axis, double gap, const LawSpec& law);
+// A generator's law in the role its links need, else an InputError at `path` (its "type"): a
+// pounding or stop link needs a contact law (compression only) and a restrainer a tension law; a
+// spring law there would act both ways from the link's rest length, pulling with k x gap at rest.
+// An unknown type is left to the link's own check.
+void require_law_role(const LawSpec& law, links::LinkRole role, const std::string& what,
+                      const std::string& source, const std::string& path);
 ElementSpec make_beam(const std::string& id, const std::string& node_i, const std::string& node_j,
                       const std::string& material, double area, double inertia);
 

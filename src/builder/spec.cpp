@@ -1,5 +1,6 @@
 #include "builder/spec.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -8,6 +9,13 @@
 #include "links/coupled_shear.hpp"
 
 namespace pound::builder {
+
+double level_tolerance(const AdjacentBuildingsSpec& pair) {
+  double lowest = INFINITY;
+  for (const BuildingSpec* building : {&pair.left, &pair.right})
+    for (const StoreySpec& storey : building->storeys) lowest = std::min(lowest, storey.height);
+  return 0.05 * lowest;
+}
 
 double UnitsSpec::gravity() const {
   static const std::map<std::string, double> metres = {

@@ -325,6 +325,11 @@ struct AdjacentBuildingsSpec {
   double offset = 0.0;
   int contact_points = 2;
 };
+// Floors of the two buildings closer in height than this are level: they meet floor to floor.
+// 5 % of the lowest storey of either, about a slab's depth for storeys of 3-4 m: a floor a hair
+// off the other building's would otherwise strike its column a hair below that floor (a column
+// stub far stiffer than anything else in the model), beside a second link to the floor itself.
+double level_tolerance(const AdjacentBuildingsSpec& pair);
 // The stretch of y where the two facades face each other, [low, high] (3-D; empty when
 // high <= low).
 inline std::array<double, 2> facing_stretch(const AdjacentBuildingsSpec& pair) {

@@ -235,6 +235,15 @@ void Newmark::initialize(SecondOrderSystem& system, State& state, double /*first
                          "a hard contact pushes a massless DOF, to which an implicit step cannot "
                          "give its impulse");
   }
+  unconnected_rows_.clear();
+  for (Index r = 0; r < links.size(); ++r) {
+    bool moves_a_dof = false;
+    for (LinkSet::SparseRowMatrix::InnerIterator it(links.connectivity(), r); it; ++it)
+      moves_a_dof = moves_a_dof || it.value() != 0.0;
+    if (!moves_a_dof && !hard_laws_[static_cast<std::size_t>(r)] &&
+        !hard_frictions_[static_cast<std::size_t>(r)])
+      unconnected_rows_.push_back(r);
+  }
   set_folding_references(links, state.link_penetration, rate);
   links.set_trial(state.link_penetration, rate, zero, 0.0, 0.0, state.link_force, tangent);
   links.commit();
@@ -932,6 +941,10 @@ void Newmark::evaluate_links(LinkSet& links, const Factorization& f, double c_m,
     const double folded_force = law_force_[r] - f.folded_stiffness[r] * folded_projection(r);
     residual_[r] = assumed_force_[r] - folded_force;
     tangent_(r, r) -= f.folded_stiffness[r];
+  }
+  for (const Index r : unconnected_rows_) {  // their force moves nothing: taken as it is
+    assumed_force_[r] -= residual_[r];
+    residual_[r] = 0.0;
   }
 }
 

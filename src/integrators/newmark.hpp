@@ -231,6 +231,9 @@ class Newmark final : public Integrator {
   // The rows this step's iteration has corrected (F may differ from F_start on these only), in
   // the order first corrected, and a mark by row.
   std::vector<Index> changed_rows_;
+  // Rows that move no free DOF (a link between two supports, deformed by their motion alone):
+  // no residual of theirs reaches the equilibrium test, so their force is the law's outright.
+  std::vector<Index> unconnected_rows_;
   std::vector<char> changed_mark_;
   void mark_changed_rows();  // after a correction
   // Where a late Newton step stands: the forces it started from, with their unbalanced force, and

@@ -769,6 +769,7 @@ void check_storey_laws(JsonObject& object, const AdjacentBuildingsSpec& pair) {
       floors[side].push_back(floors[side].back() + storey.height);
   }
   const double top = std::min(floors[0].back(), floors[1].back());
+  const double tolerance = builder::level_tolerance(pair);
   for (std::size_t side = 0; side < 2; ++side)
     for (std::size_t s = 0; s < buildings[side]->storeys.size(); ++s) {
       const std::optional<links::LawSpec>& law = buildings[side]->storeys[s].law;
@@ -786,7 +787,7 @@ void check_storey_laws(JsonObject& object, const AdjacentBuildingsSpec& pair) {
                         law->type));
       const double bottom = floors[side][s], upper = floors[side][s + 1];
       for (double h : floors[1 - side])
-        if (h > bottom * (1 + 1e-12) && h < upper * (1 - 1e-12) && h <= top * (1 + 1e-12))
+        if (h > bottom + tolerance && h < upper - tolerance && h <= top + tolerance)
           where().fail(fmt::format(
               "the {} building's floor at {:g} meets this storey between its floors ({:g} to "
               "{:g}): a yielding storey is a shear link with no column to hit there; give the "

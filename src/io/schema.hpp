@@ -75,14 +75,16 @@ struct Field {
   // The JSON of its default, a value equal to which is left out; none: written whenever set.
   std::function<OrderedJson(const Context&)> fallback;
   std::function<bool(const Spec&)> applies;         // for fields of some variants only
+  std::string variants;                             // which, as the docs say ("beam only")
   int lowest_dimension = 1, highest_dimension = 3;  // the scenes it exists in
   std::vector<FieldDoc> docs;  // its row, then those of an inline nested object's fields
 
   // Read and written only for the variants `applies` accepts (e.g. a beam, from the "type" read
-  // before it); for the others the field is unknown. `variants` says which, in the docs.
-  Field when(std::function<bool(const Spec&)> predicate, const std::string& variants) && {
+  // before it); for the others the field is unknown. `which` says which, in the docs.
+  Field when(std::function<bool(const Spec&)> predicate, const std::string& which) && {
     applies = std::move(predicate);
-    docs.front().meaning += " (" + variants + ")";
+    docs.front().meaning += " (" + which + ")";
+    variants = which;
     return std::move(*this);
   }
   // Only in scenes of dimension lowest..highest; in the others the field is refused where it
@@ -111,13 +113,31 @@ struct Field {
 template <class Spec>
 using Fields = std::vector<Field<Spec>>;
 
+// A field given where it does not apply (a beam's field on a truss, backwall_mass without
+// backfill), unless another field of the same key does: refused at it with where it applies,
+// where "unknown field" alone would send the reader looking for a typo.
+template <class Spec>
+void refuse_if_given(JsonObject& object, const Fields<Spec>& fields, const Field<Spec>& field,
+                     const Spec& spec) {
+  if (field.key.empty()) return;
+  for (const Field<Spec>& other : fields)
+    if (&other != &field && other.key == field.key && (!other.applies || other.applies(spec)))
+      return;
+  if (const std::optional<JsonValue> value = object.find(field.key))
+    value->fail(
+        fmt::format("unknown field here: it applies only where the docs say ({})", field.variants));
+}
+
 // Reads the fields of `fields` from `object` into `spec`, in order (no check for unknown ones).
 template <class Spec>
 void read_fields(JsonObject& object, const Fields<Spec>& fields, Spec& spec, Context& context) {
   for (const Field<Spec>& field : fields)
     if (!field.key.empty()) object.expect(field.key);
   for (const Field<Spec>& field : fields) {
-    if (field.applies && !field.applies(spec)) continue;
+    if (field.applies && !field.applies(spec)) {
+      refuse_if_given(object, fields, field, spec);
+      continue;
+    }
     if (context.dimension < field.lowest_dimension || context.dimension > field.highest_dimension) {
       // Not in this scene: refused where it stands, never required.
       if (const std::optional<JsonValue> value = object.find(field.key))

@@ -14,11 +14,18 @@ double sum_of(const std::vector<Term>& terms, const Vector& v) {
   return plus_zero(model::value_of(terms, v));
 }
 
+// The displacements monitors judge by: with moving supports their total motion (SupportMotion).
+const Vector& displacements_of(SupportMotion* support, const integrators::State& state) {
+  return support ? support->total(state) : state.displacement;
+}
+
 }  // namespace
 
-DriftMonitors::DriftMonitors(std::vector<Where> storeys, GroundAcceleration& ground)
+DriftMonitors::DriftMonitors(std::vector<Where> storeys, GroundAcceleration& ground,
+                             SupportMotion* support)
     : storeys_(std::move(storeys)),
       ground_(ground),
+      support_(support),
       peaks_(storeys_.size()),
       turning_(storeys_.size()) {
   for (const Where& w : storeys_) {
@@ -149,7 +156,7 @@ double DriftMonitors::RecentDrifts::half_range() const {
 void DriftMonitors::record(const integrators::State& state) {
   if (storeys_.empty()) return;
   read_current_ = false;
-  displacement_sums_.evaluate(state.displacement, displacements_.data());
+  displacement_sums_.evaluate(displacements_of(support_, state), displacements_.data());
   acceleration_sums_.evaluate(state.acceleration, ground_.frame(state.time), accelerations_.data());
   // Every sum's peak, without branches (a tie is no new peak; NaN none).
   const double time = state.time;
@@ -187,6 +194,7 @@ void DriftMonitors::record(const integrators::State& state) {
 }
 
 void JointMonitors::record(const integrators::State& state) {
+  const Vector& displacement = displacements_of(support_, state);
   for (std::size_t k = 0; k < joints_.size(); ++k) {
     const Where& w = joints_[k];
     const double closing = state.link_penetration[w.link_row] + w.gap;
@@ -196,12 +204,12 @@ void JointMonitors::record(const integrators::State& state) {
     p.residual_opening = -closing;
     double movement = 0.0;
     if (w.movement.empty())
-      movement = model::value_of(w.girder_x, state.displacement) -
-                 model::value_of(w.seat_x, state.displacement);
-    movement += sum_of(w.movement, state.displacement);
+      movement =
+          model::value_of(w.girder_x, displacement) - model::value_of(w.seat_x, displacement);
+    movement += sum_of(w.movement, displacement);
     p.peak_seat_movement = std::max(p.peak_seat_movement, std::abs(movement));
     p.peak_plan_rotation =
-        std::max(p.peak_plan_rotation, std::abs(sum_of(w.plan_rotation, state.displacement)));
+        std::max(p.peak_plan_rotation, std::abs(sum_of(w.plan_rotation, displacement)));
     p.peak_girder_acceleration = std::max(
         p.peak_girder_acceleration, std::abs(ground_.absolute(state, w.girder_x, w.girder, 0)));
   }

@@ -10,6 +10,7 @@
 #include "integrators/integrator.hpp"
 #include "results/ground_acceleration.hpp"
 #include "results/observer.hpp"
+#include "results/support_motion.hpp"
 #include "results/term_sums.hpp"
 
 namespace pound::results {
@@ -52,7 +53,9 @@ class DriftMonitors : public Observer {
     std::vector<std::vector<Term>> corners = {};
     std::vector<Term> twist = {};
   };
-  DriftMonitors(std::vector<Where> storeys, GroundAcceleration& ground);
+  // `support`: the moving supports' motion the drifts add (none: the displacements as they are).
+  DriftMonitors(std::vector<Where> storeys, GroundAcceleration& ground,
+                SupportMotion* support = nullptr);
   // The end swing is then the drift's half range over the run's last `seconds` (model time), a
   // window long enough that a higher mode's ripple does not hide the first mode's swing; set
   // before the run.
@@ -78,6 +81,7 @@ class DriftMonitors : public Observer {
 
   std::vector<Where> storeys_;
   GroundAcceleration& ground_;
+  SupportMotion* support_;
   // The plan fields (corner, twist) and the windowed end swing are folded in when the peaks are
   // read after a record.
   mutable std::vector<DriftPeak> peaks_;
@@ -140,14 +144,18 @@ class JointMonitors : public Observer {
     std::vector<Term> movement = {};
     std::vector<Term> plan_rotation = {};  // theta_z of the girder less the seat's (3-D, z up)
   };
-  JointMonitors(std::vector<Where> joints, GroundAcceleration& ground)
-      : joints_(std::move(joints)), ground_(ground), peaks_(joints_.size()) {}
+  // `support`: the moving supports' motion the movements add (none: the displacements as they
+  // are).
+  JointMonitors(std::vector<Where> joints, GroundAcceleration& ground,
+                SupportMotion* support = nullptr)
+      : joints_(std::move(joints)), ground_(ground), support_(support), peaks_(joints_.size()) {}
   void record(const integrators::State& state) override;
   const std::vector<JointPeak>& peaks() const { return peaks_; }
 
  private:
   std::vector<Where> joints_;
   GroundAcceleration& ground_;
+  SupportMotion* support_;
   std::vector<JointPeak> peaks_;
 };
 

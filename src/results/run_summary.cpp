@@ -26,6 +26,16 @@ GroundAcceleration ground_of(const assembly::StructuralSystem& system) {
       }};
 }
 
+SupportMotion support_motion_of(const assembly::StructuralSystem& system) {
+  if (system.moving_support_count() == 0) return {};
+  std::vector<Vector> influences;
+  for (std::size_t k = 0; k < system.moving_support_count(); ++k)
+    influences.push_back(system.moving_support_influence(k));
+  return {std::move(influences), [&system](double time, std::vector<double>& displacements) {
+            system.moving_support_displacements(time, displacements);
+          }};
+}
+
 std::unique_ptr<Quantities> link_quantities(const builder::BuiltModel& built,
                                             const integrators::LinkSet& links,
                                             const std::vector<Index>& items) {
@@ -163,19 +173,39 @@ std::vector<ShearRows> shear_rows(const integrators::LinkSet& links) {
   return rows;
 }
 
+// The terms of a node's displacement along a direction: its DOF's, and with moving supports the
+// entry of each moving support that moves it (SupportMotion::total's, after the free DOFs), for a
+// girder's movement on a moving seat or a pier's drift over a moving base in total motion.
+struct DisplacementTerms {
+  const model::DofMap& dofs;
+  const assembly::StructuralSystem* moving = nullptr;  // the system, where supports move
+
+  void add(Index node, int direction, double weight, std::vector<Term>& terms) const {
+    add_scaled(terms, dofs.terms(node, direction), weight);
+    if (!moving) return;
+    for (std::size_t k = 0; k < moving->moving_support_count(); ++k)
+      if (const double share = moving->moving_support_share(k, node, direction); share != 0.0)
+        terms.push_back({moving->size() + static_cast<Index>(k), weight * share});
+  }
+};
+
+DisplacementTerms displacement_terms(const assembly::StructuralSystem& system) {
+  return {system.dofs(), system.moving_support_count() > 0 ? &system : nullptr};
+}
+
 // Adds sign x n . (u + theta x r) of `node` (a point r from it, rigidly tied to it), with
 // n . (theta x r) = theta . (r x n).
 void add_point_terms(Index node, const std::array<double, 3>& r, const std::array<double, 3>& n,
-                     double sign, const model::DofMap& dofs, std::vector<Term>& terms) {
+                     double sign, const DisplacementTerms& dofs, std::vector<Term>& terms) {
   const std::array<double, 6> along{n[0],
                                     n[1],
                                     n[2],
                                     r[1] * n[2] - r[2] * n[1],
                                     r[2] * n[0] - r[0] * n[2],
                                     r[0] * n[1] - r[1] * n[0]};
-  for (int d = 0; d < std::min(6, dofs.dofs_per_node()); ++d) {
+  for (int d = 0; d < std::min(6, dofs.dofs.dofs_per_node()); ++d) {
     if (along[static_cast<std::size_t>(d)] != 0.0)
-      add_scaled(terms, dofs.terms(node, d), sign * along[static_cast<std::size_t>(d)]);
+      dofs.add(node, d, sign * along[static_cast<std::size_t>(d)], terms);
   }
 }
 
@@ -190,7 +220,7 @@ std::vector<Term> turn_in_plan(Index node, Index reference, const model::DofMap&
 // A storey's corner drifts along its direction (a corner c from the top node is c + X_top -
 // X_bottom from the bottom node) and its twist about z (3-D floors).
 void add_plan_terms(const builder::DriftMonitor& m, const model::Model& model,
-                    const model::DofMap& dofs, DriftMonitors::Where& where) {
+                    const DisplacementTerms& dofs, DriftMonitors::Where& where) {
   const std::array<double, 3> n = m.along();
   const model::Coordinates& top = model.nodes[static_cast<std::size_t>(m.top)].position;
   const model::Coordinates& bottom = model.nodes[static_cast<std::size_t>(m.bottom)].position;
@@ -201,34 +231,42 @@ void add_plan_terms(const builder::DriftMonitor& m, const model::Model& model,
     add_point_terms(m.top, corner, n, 1.0, dofs, terms);
     add_point_terms(m.bottom, from_bottom, n, -1.0, dofs, terms);
   }
-  where.twist = turn_in_plan(m.top, m.bottom, dofs);
+  where.twist = turn_in_plan(m.top, m.bottom, dofs.dofs);
 }
 
 // A drift along an axis n: n . (u_top - u_bottom), and the top's translations for its
 // acceleration along n.
-void add_axis_terms(const builder::DriftMonitor& m, const model::DofMap& dofs,
+void add_axis_terms(const builder::DriftMonitor& m, const DisplacementTerms& dofs,
                     DriftMonitors::Where& where) {
   add_point_terms(m.top, {}, *m.axis, 1.0, dofs, where.drift);
   add_point_terms(m.bottom, {}, *m.axis, -1.0, dofs, where.drift);
   for (int d = 0; d < 3; ++d)
-    where.top_along.emplace_back(reading(dofs, m.top, d), (*m.axis)[static_cast<std::size_t>(d)]);
+    where.top_along.emplace_back(reading(dofs.dofs, m.top, d),
+                                 (*m.axis)[static_cast<std::size_t>(d)]);
 }
 
 std::vector<DriftMonitors::Where> drift_places(const builder::BuiltModel& built,
-                                               const model::DofMap& dofs) {
+                                               const assembly::StructuralSystem& system) {
+  const DisplacementTerms dofs = displacement_terms(system);
   std::vector<DriftMonitors::Where> places;
   for (const builder::DriftMonitor& m : built.drift_monitors) {
-    places.push_back({reading(dofs, m.bottom, m.direction), reading(dofs, m.top, m.direction),
-                      m.top, m.direction});
-    if (m.axis) add_axis_terms(m, dofs, places.back());
-    if (!m.corners.empty()) add_plan_terms(m, built.model, dofs, places.back());
+    DriftMonitors::Where& where = places.emplace_back(
+        DriftMonitors::Where{reading(dofs.dofs, m.bottom, m.direction),
+                             reading(dofs.dofs, m.top, m.direction), m.top, m.direction});
+    if (m.axis) {
+      add_axis_terms(m, dofs, where);
+    } else if (dofs.moving) {  // the drift in total motion, a moving base's own included
+      dofs.add(m.top, m.direction, 1.0, where.drift);
+      dofs.add(m.bottom, m.direction, -1.0, where.drift);
+    }
+    if (!m.corners.empty()) add_plan_terms(m, built.model, dofs, where);
   }
   return places;
 }
 
 // A point r from the girder and the seat nodes moves across the support line (unit n) by
 // n . (u_g + theta_g x r) - n . (u_s + theta_s x r).
-std::vector<Term> point_movement(const builder::JointMonitor& m, const model::DofMap& dofs) {
+std::vector<Term> point_movement(const builder::JointMonitor& m, const DisplacementTerms& dofs) {
   const std::array<double, 3> r = m.point.value_or(std::array<double, 3>{});
   std::vector<Term> terms;
   add_point_terms(m.girder, r, *m.direction, 1.0, dofs, terms);
@@ -238,13 +276,19 @@ std::vector<Term> point_movement(const builder::JointMonitor& m, const model::Do
 
 std::vector<JointMonitors::Where> joint_places(const builder::BuiltModel& built,
                                                const assembly::StructuralSystem& system) {
+  const DisplacementTerms dofs = displacement_terms(system);
   std::vector<JointMonitors::Where> places;
   for (const builder::JointMonitor& m : built.joint_monitors) {
-    places.push_back(
-        {system.links().row(m.link), built.model.links[static_cast<std::size_t>(m.link)].gap,
-         reading(system.dofs(), m.girder, 0), reading(system.dofs(), m.seat, 0), m.girder});
-    if (m.direction) places.back().movement = point_movement(m, system.dofs());
-    if (m.direction) places.back().plan_rotation = turn_in_plan(m.girder, m.seat, system.dofs());
+    JointMonitors::Where& where = places.emplace_back(JointMonitors::Where{
+        system.links().row(m.link), built.model.links[static_cast<std::size_t>(m.link)].gap,
+        reading(system.dofs(), m.girder, 0), reading(system.dofs(), m.seat, 0), m.girder});
+    if (m.direction) {
+      where.movement = point_movement(m, dofs);
+      where.plan_rotation = turn_in_plan(m.girder, m.seat, system.dofs());
+    } else if (dofs.moving) {  // on a moving seat, in total motion
+      dofs.add(m.girder, 0, 1.0, where.movement);
+      dofs.add(m.seat, 0, -1.0, where.movement);
+    }
   }
   return places;
 }
@@ -438,13 +482,14 @@ RunObservers::RunObservers(const builder::BuiltModel& built,
                            const assembly::StructuralSystem& system, bool histories)
     // Without histories nothing is recorded, not just not written.
     : ground_(ground_of(system)),
+      support_(support_motion_of(system)),
       recorders_(histories ? make_recorders(built, system, ground_)
                            : std::vector<std::unique_ptr<Recorder>>()),
       links_(normal_rows(system.links()), shear_rows(system.links())),
       energy_(system, built.analysis.integrator.acceleration_energy()),
       passive_links_(!system.has_link_motion()),
-      drifts_(drift_places(built, system.dofs()), ground_),
-      joints_(joint_places(built, system), ground_) {
+      drifts_(drift_places(built, system), ground_, support_.moving() ? &support_ : nullptr),
+      joints_(joint_places(built, system), ground_, support_.moving() ? &support_ : nullptr) {
   if (!built.analysis.integrator.is_explicit()) {
     const std::vector<char> step_forces =
         system.links().impulsive_hard_contact_rows(system.lumped_mass());

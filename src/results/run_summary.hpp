@@ -46,6 +46,7 @@ class RunObservers {
 
  private:
   GroundAcceleration ground_;  // shared by the recorders and monitors below
+  SupportMotion support_;      // shared by the monitors below
   std::vector<std::unique_ptr<Recorder>> recorders_;
   LinkSummaries links_;
   EnergyBalance energy_;

@@ -7,6 +7,9 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <tuple>
+#include <vector>
 
 #include "support/process.hpp"
 
@@ -98,6 +101,54 @@ TEST_F(Reliability, ModalDampingNamesTheModesThatStoreNoStrainEnergy) {
     expect_refused(command, file,
                    {"/damping/modes", "the model has 1 vibration mode:",
                     "1 of the model's 2 modes (one per DOF with mass) stores no strain energy"});
+}
+
+// A spring law across a gap pulled with k x gap at rest: a yielding shear key 5 cm from the deck
+// carried -100 kN at t = 0, the generator's keys -2 MN each, and a spring as the buildings'
+// pounding law failed the run blaming the time step (audit 70). Each is refused where it is
+// written, with the laws that fit; a generator's law at its own path, not the generator's.
+TEST_F(Reliability, ALawInTheWrongRoleIsRefusedWhereItIsWritten) {
+  const json spring = {
+      {"type", "elastic_perfectly_plastic"}, {"stiffness", 1e8}, {"yield_force", 1e5}};
+  json girders = bundled("two_sdof_girders");
+  girders["links"][0]["law"] = spring;
+  json bridge = bundled("three_span_bridge");
+  bridge["generators"][0]["joint"]["law"] = spring;
+  json restrainer = bundled("three_span_bridge");
+  restrainer["generators"][0]["joint"]["restrainer"] = {{"type", "gap_spring"}, {"stiffness", 1e8}};
+  json backfill = bundled("three_span_bridge");
+  backfill["generators"][0]["backfill"] = {{"type", "elastic_spring"}, {"stiffness", 5e8}};
+  json buildings = bundled("adjacent_buildings");
+  buildings["generators"][0]["law"] = {{"type", "elastic_spring"}, {"stiffness", 1e8}};
+  for (const auto& [model, where, what] :
+       {std::tuple{girders, "/links/0/gap", "would have it pull with k x gap"},
+        std::tuple{bridge, "/generators/0/joint/law/type", "needs a compression-only contact law"},
+        std::tuple{restrainer, "/generators/0/joint/restrainer/type", "pushes, not pulls"},
+        std::tuple{backfill, "/generators/0/backfill/type", "would pull with k x gap"},
+        std::tuple{buildings, "/generators/0/law/type", "hertz_damp, jankowski"}}) {
+    const std::string file = write("wrong_role.json", model);
+    for (const char* command : {"run", "check"}) expect_refused(command, file, {where, what});
+  }
+}
+
+// A field given where it does not apply was "unknown field", which sends a reader looking for a
+// typo: backwall_mass without backfill (documented "required", with backfill) now says where it
+// applies. A hard contact where a floor strikes the other building's column between its floors (no
+// mass there for its impulse) was refused at /analysis/integrator, naming a generated node; now at
+// the generator's law (audit 70).
+TEST_F(Reliability, AFieldOrLawThatDoesNotApplyIsRefusedSayingWhy) {
+  json bridge = bundled("three_span_bridge");
+  bridge["generators"][0].erase("backfill");
+  json buildings = bundled("adjacent_buildings");
+  buildings["generators"][0]["law"] = {{"type", "hard_contact"}, {"restitution", 0.5}};
+  for (const auto& [model, where, what] :
+       {std::tuple{bridge, "/generators/0/backwall_mass",
+                   "unknown field here: it applies only where the docs say (with backfill)"},
+        std::tuple{buildings, "/generators/0/law",
+                   "at 3 a floor strikes the left building's column between its floors"}}) {
+    const std::string file = write("not_here.json", model);
+    for (const char* command : {"run", "check"}) expect_refused(command, file, {where, what});
+  }
 }
 
 // The bundled bridge without its girders' extra mass: the girder is a mechanism without mass.

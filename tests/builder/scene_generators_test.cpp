@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -121,6 +122,69 @@ TEST(SceneGenerators, BuildingsMeetAtEveryFloorOfEither) {
       "pair.pounding.at15", "pair.pounding.at17.5"};
   EXPECT_EQ(links, expected);
   EXPECT_EQ(spec.drift_monitors.size(), 13u);
+}
+
+// A contact on a column takes the mass of the nearest floor of that building (docs), the upper
+// one midway: the left building's floors at 3.5 k carry 1e5, 2e5, ..., 5e5, the right one's
+// 2.5e5 each; at 15 m the left's nearest floor is f4 at 14 m (4e5), at 12 m f3 at 10.5 m (3e5),
+// where the floor at or above the contact (5e5 and 4e5) was taken before (audit 70).
+TEST(SceneGenerators, AContactOnAColumnTakesTheNearestFloorsMass) {
+  nlohmann::json model = nlohmann::json::parse(bundled("adjacent_buildings.json"));
+  auto& left = model["generators"][0]["left"]["storeys"];
+  for (std::size_t s = 0; s < left.size(); ++s) left[s]["mass"] = 1e5 * static_cast<double>(s + 1);
+  for (auto& storey : model["generators"][0]["right"]["storeys"]) storey["mass"] = 2.5e5;
+  model["generators"][0]["law"] = {
+      {"type", "kelvin_voigt"}, {"stiffness", 2e9}, {"restitution", 0.65}};
+  const ModelSpec spec = expand(io::parse_model(model.dump(), "b.json"));
+  const auto effective = [](double m1, double m2) { return m1 * m2 / (m1 + m2); };
+  const std::map<std::string, double> expected = {
+      {"pair.pounding.at15", effective(4e5, 2.5e5)},   // left f4 at 14, right floor at 15
+      {"pair.pounding.at12", effective(3e5, 2.5e5)},   // left f3 at 10.5, right floor at 12
+      {"pair.pounding.at14", effective(4e5, 2.5e5)},   // left floor, right f5 at 15 (f4 at 12)
+      {"pair.pounding.at1.75", effective(1e5, 2.5e5)}  // not a contact: no link
+  };
+  int found = 0;
+  for (const LinkSpec& link : spec.links)
+    if (const auto it = expected.find(link.id); it != expected.end()) {
+      ++found;
+      const double mass = *link.law.number("mass");
+      std::cout << link.id << ": effective mass " << mass << " against " << it->second << "\n";
+      EXPECT_DOUBLE_EQ(mass, it->second) << link.id;
+    }
+  EXPECT_EQ(found, 3);
+}
+
+// Floors a hair apart are level: left storeys of 3.2 m against right ones of 3.2 m + eps met each
+// left floor twice, at the right floor and at a cut of the right column eps below it (a stub
+// 1e-6 m long, which failed the run or doubled the contact stiffness; at eps = 1e-6 the two
+// links even took one id). Within 5 % of the lowest storey they meet floor to floor, once.
+TEST(SceneGenerators, FloorsWithinASlabsDepthMeetFloorToFloor) {
+  for (const double eps : {1e-6, 1e-3, 0.3}) {
+    nlohmann::json model = nlohmann::json::parse(bundled("adjacent_buildings.json"));
+    auto& bridge = model["generators"][0];
+    bridge["left"]["storeys"] = nlohmann::json::array();
+    bridge["right"]["storeys"] = nlohmann::json::array();
+    for (int s = 0; s < 3; ++s)
+      bridge["left"]["storeys"].push_back({{"height", 3.2}, {"mass", 3e5}, {"stiffness", 4e8}});
+    for (int s = 0; s < 2; ++s)
+      bridge["right"]["storeys"].push_back(
+          {{"height", 3.2 + eps}, {"mass", 3e5}, {"stiffness", 4e8}});
+    const ModelSpec spec = expand(io::parse_model(model.dump(), "b.json"));
+    std::vector<std::string> links;
+    for (const LinkSpec& link : spec.links) links.push_back(link.id);
+    std::size_t cuts = 0;
+    for (const NodeSpec& node : spec.nodes) cuts += node.id.find(".at") != std::string::npos;
+    const bool level = eps < 0.05 * 3.2;
+    std::cout << "floors " << eps << " m apart: " << links.size() << " links, " << cuts
+              << " column cuts\n";
+    if (level) {
+      EXPECT_EQ(links, (std::vector<std::string>{"pair.pounding.at3.2", "pair.pounding.at6.4"}));
+      EXPECT_EQ(cuts, 0u);
+    } else {  // 0.3 m apart is more than a slab: the floors strike the columns
+      EXPECT_EQ(links.size(), 4u);
+      EXPECT_EQ(cuts, 4u);
+    }
+  }
 }
 
 // Columns cut where the other building's floors meet them keep each storey's stiffness: with

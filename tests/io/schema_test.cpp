@@ -177,7 +177,8 @@ TEST(Schema, PlaneFieldsOnlyInTwoDimensions) {
 
 TEST(Schema, VariantFieldsAreUnknownToTheOthers) {
   EXPECT_EQ(error_of(R"({"id": "p", "kind": "plain", "depth": 2})"),
-            "part.json: /depth: unknown field");
+            "part.json: /depth: unknown field here: it applies only where the docs say (fancy "
+            "only)");
   EXPECT_EQ(error_of(R"({"id": "p", "kind": "fancy"})"),
             "part.json: /depth: required field is missing");
   EXPECT_EQ(read_part(R"({"id": "p", "kind": "fancy", "depth": 2})").depth, 2.0);
