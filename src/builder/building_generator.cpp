@@ -309,8 +309,10 @@ void add_column(const Building& building, std::size_t s, const std::vector<std::
 
 // A storey's drift monitors: along x and, in space, along y, each also watching the floor's
 // plan corners (c0 at -x -y, then counter-clockwise) and the storey's twist.
-void add_drift_monitors(const Building& building, std::size_t s, const std::string& bottom,
+void add_drift_monitors(const Building& building, std::size_t s,
+                        const std::vector<std::string>& chain,
                         const std::array<std::optional<double>, 2>& yield_drift, ModelSpec& out) {
+  const std::string& bottom = chain.front();
   const StoreySpec& storey = building.spec.storeys[s];
   const std::string floor = floor_node_id(building, s + 1);
   for (int direction = 0; direction < (building.space ? 2 : 1); ++direction) {
@@ -327,8 +329,11 @@ void add_drift_monitors(const Building& building, std::size_t s, const std::stri
       monitor.shear_link_direction = direction + 1;
     } else if (storey.law) {
       monitor.shear_link = storey_id(building, s) + suffix;
-    } else
+    } else {
       monitor.base_element = fmt::format("{}.c0", storey_id(building, s));
+      for (std::size_t c = 1; c + 1 < chain.size(); ++c)  // the segments above a strike
+        monitor.upper_elements.push_back(fmt::format("{}.c{}", storey_id(building, s), c));
+    }
     monitor.direction = direction;
     if (building.space) {
       const double a = building.spec.plan[0], b = building.spec.plan[1];
@@ -364,7 +369,7 @@ void add_storey(const Building& building, std::size_t s, const std::vector<doubl
   else
     add_column(building, s, chain, out);
   add_leaning_column(building, s, out);
-  add_drift_monitors(building, s, chain.front(), yield_drift, out);
+  add_drift_monitors(building, s, chain, yield_drift, out);
 }
 
 void add_building(const Building& building, const std::vector<double>& contacts, ModelSpec& out) {

@@ -140,6 +140,9 @@ std::vector<DriftMonitor> resolve_drift_monitors(const Resolver& resolver) {
     if (m.hinge) monitor.curvature = curvature_of(resolver, m, path);
     if (m.base_element)
       monitor.base_element = resolver.element(*m.base_element, path + "/base_element");
+    for (std::size_t e = 0; e < m.upper_elements.size(); ++e)
+      monitor.upper_elements.push_back(
+          resolver.element(m.upper_elements[e], fmt::format("{}/upper_elements/{}", path, e)));
     if (m.shear_link) {
       monitor.shear_link = resolver.link(*m.shear_link, path + "/shear_link");
       monitor.shear_link_direction = shear_link_direction(resolver, m, *monitor.shear_link, path);

@@ -41,6 +41,8 @@ struct DriftMonitor {
   std::optional<Curvature> curvature;
   // What carries the shear (DriftMonitorSpec): an element (end i at the bottom) or a link.
   std::optional<Index> base_element, shear_link;
+  // With a base element, the member's elements above it, whose shears the peak shear takes too.
+  std::vector<Index> upper_elements;
   // 0: the shear link's own force; 1, 2: its coupled shear's along t_1, t_2.
   int shear_link_direction = 0;
   int direction = 0;  // of the drift and the top's acceleration: a translation (model/direction)

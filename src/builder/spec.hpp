@@ -455,6 +455,10 @@ struct DriftMonitorSpec {
   // What carries its shear: the member's lowest element (its end i forces: base shear V_i and,
   // for a beam, base moment M_i), or a link whose force is the storey shear.
   std::optional<std::string> base_element, shear_link;
+  // With a base element: the member's elements above it (a storey's column cut where the other
+  // building's floor strikes it between floors), whose shears |V_i| the peak shear takes too:
+  // across the strike the column's shear changes by its force.
+  std::vector<std::string> upper_elements;
   int direction = 0;  // the drift's: 0 x, 1 y (3-D scenes)
   // 3-D: a unit vector the drift is measured along instead (a curved bridge's local tangent).
   std::optional<std::array<double, 3>> axis;

@@ -1324,6 +1324,10 @@ const Fields<DriftMonitorSpec>& drift_monitor_fields() {
       optional("base_element", &DriftMonitorSpec::base_element, Text{true},
                "id of the member's lowest element, end i at the bottom: the summary's peak "
                "`shear` |V_i| and, for a beam, `base_moment` |M_i|"),
+      optional("upper_elements", &DriftMonitorSpec::upper_elements, Names{.what = "element"},
+               "with base_element: the member's elements above it (a storey's column cut where a "
+               "floor of the other building strikes it between floors), whose shear |V_i| the "
+               "peak `shear` takes too: across a strike the column's shear changes by its force"),
       optional("shear_link", &DriftMonitorSpec::shear_link, Text{true},
                "id of a link whose force is the storey shear (a yielding storey): the summary's "
                "peak `shear`"),
@@ -1334,6 +1338,8 @@ const Fields<DriftMonitorSpec>& drift_monitor_fields() {
       rule<DriftMonitorSpec>([](JsonObject& object, DriftMonitorSpec& monitor, Context&) {
         if (monitor.base_element && monitor.shear_link)
           object.at("shear_link").fail("give 'base_element' or 'shear_link', not both");
+        if (!monitor.upper_elements.empty() && !monitor.base_element)
+          object.at("upper_elements").fail("give 'base_element' with it: the member's lowest");
       }),
       rule<DriftMonitorSpec>([](JsonObject& object, DriftMonitorSpec& monitor, Context&) {
         const bool all = monitor.hinge && monitor.yield_curvature && monitor.plastic_hinge_length;

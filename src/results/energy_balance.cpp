@@ -149,6 +149,7 @@ void EnergyBalance::record(const integrators::State& state) {
   previous_.displacement = state.displacement;
   previous_.velocity = state.velocity;
   previous_.link_force = state.link_force;
+  if (link_motion_) previous_.link_penetration = state.link_penetration;
 }
 
 void EnergyBalance::record_step_lumped(const integrators::State& state, const Vector& mass) {
@@ -187,19 +188,30 @@ void EnergyBalance::sample_round_off(double dt) {
 
 void EnergyBalance::add_link_work(const integrators::State& state) {
   if (state.link_force.size() == 0) return;
-  // Work of the link forces on the structure (B du): with moving supports the links also
-  // deform by the supports' motion, whose work is not the structure's. A step-average row's
-  // force is F_{n+1} (weight 1), every other row's the trapezoidal average.
+  // Work of the link forces on the structure (B du). With moving supports (or belts) the links
+  // also deform by the supports' motion: the links then take their whole work F d(delta), and
+  // what the supports did through them (F (d(delta) - B du)) is input, so that the links' term
+  // holds what yielding links dissipate and a link driven by supports alone balances. A
+  // step-average row's force is F_{n+1} (weight 1), every other row's the trapezoidal average.
   system_.links().project(step_, link_step_);
   const bool weighted = step_force_weight_.size() > 0;
-  double work = 0.0;
+  const bool moving = link_motion_ && previous_.link_penetration.size() == link_step_.size();
+  double work = 0.0, whole = 0.0;
   for (Index r = 0; r < link_step_.size(); ++r) {
     const double now = state.link_force[r], before = previous_.link_force[r];
     double average = 0.5 * (now + before);
     if (weighted) average += 0.5 * step_force_weight_[r] * (now - before);
     work = multiply_add(average, link_step_[r], work);
+    if (moving)
+      whole =
+          multiply_add(average, state.link_penetration[r] - previous_.link_penetration[r], whole);
   }
-  terms_.links += work;
+  if (!moving) {
+    terms_.links += work;
+    return;
+  }
+  terms_.links += whole;
+  terms_.input += whole - work;
 }
 
 void EnergyBalance::record_general(const integrators::State& state, bool algorithmic) {

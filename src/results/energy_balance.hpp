@@ -21,7 +21,9 @@
 namespace pound::results {
 
 struct EnergyTerms {
-  double input = 0.0;        // work of loads and ground motion since the start
+  // Work of loads and ground motion since the start; where supports or belts move links, also
+  // theirs through the links.
+  double input = 0.0;
   double kinetic = 0.0;      // now
   double strain = 0.0;       // now, linear elements
   double damping = 0.0;      // dissipated by C since the start
@@ -64,7 +66,9 @@ class EnergyBalance : public Observer {
   // (IntegratorChoice::acceleration_energy).
   explicit EnergyBalance(const integrators::SecondOrderSystem& system,
                          double acceleration_energy = 0.0)
-      : system_(system), acceleration_energy_(acceleration_energy) {}
+      : system_(system),
+        acceleration_energy_(acceleration_energy),
+        link_motion_(system.has_link_motion()) {}
   void record(const integrators::State& state) override;
   // Rows whose force is its step's average (LinkSummaries::set_step_forces): their work is
   // F_{n+1} B du.
@@ -88,6 +92,7 @@ class EnergyBalance : public Observer {
 
   const integrators::SecondOrderSystem& system_;
   double acceleration_energy_ = 0.0;
+  bool link_motion_ = false;                // supports or belts move links (add_link_work)
   double initial_acceleration_norm_ = 0.0;  // a_0^T M a_0
   EnergyTerms terms_;
   double worst_ = 0.0;

@@ -496,8 +496,14 @@ RunObservers::RunObservers(const builder::BuiltModel& built,
     links_.set_step_forces(step_forces);
     energy_.set_step_forces(step_forces);
   }
-  // Each base element's shears and moments at end i (V_i in a plane, Vy_i and Vz_i in space;
-  // M likewise), read once a step however many monitors share it (a storey's x and y).
+  set_up_base_forces(built, system);
+}
+
+// Each base element's shears and moments at end i (V_i in a plane, Vy_i and Vz_i in space; M
+// likewise), and the shears of the elements above it (a column cut where a floor strikes it),
+// read once a step however many monitors share them (a storey's x and y).
+void RunObservers::set_up_base_forces(const builder::BuiltModel& built,
+                                      const assembly::StructuralSystem& system) {
   const auto is_shear = [](std::string_view name) {
     return name == "V_i" || name == "Vy_i" || name == "Vz_i";
   };
@@ -506,22 +512,18 @@ RunObservers::RunObservers(const builder::BuiltModel& built,
   };
   std::vector<Index> elements;
   std::vector<std::vector<std::size_t>> wanted;
-  std::map<Index, std::size_t> first_place;  // of each base element's values in base_row_
+  std::map<Index, std::size_t> first_place;  // of each element's values in base_row_
   std::size_t places = 0;
-  for (const builder::DriftMonitor& m : built.drift_monitors) {
-    if (!m.base_element) {
-      base_rows_.emplace_back();
-      continue;
-    }
-    const model::Element& element =
-        *built.model.elements[static_cast<std::size_t>(*m.base_element)];
+  // Element e's end-i shears and moments, their places in base_row_ (read once per element).
+  const auto rows_of = [&](Index e, const builder::DriftMonitor& m) {
+    const model::Element& element = *built.model.elements[static_cast<std::size_t>(e)];
     const auto names = element.end_force_names();
     std::vector<std::size_t> taken;
     for (std::size_t k = 0; k < names.size(); ++k)
       if (is_shear(names[k].name) || is_moment(names[k].name)) taken.push_back(k);
-    const auto [first, added] = first_place.try_emplace(*m.base_element, places);
+    const auto [first, added] = first_place.try_emplace(e, places);
     if (added) {
-      elements.push_back(*m.base_element);
+      elements.push_back(e);
       wanted.push_back(taken);
       places += taken.size();
     }
@@ -535,7 +537,19 @@ RunObservers::RunObservers(const builder::BuiltModel& built,
       rows.shear_weights = weights.shear;
       rows.moment_weights = weights.moment;
     }
-    base_rows_.push_back(rows);
+    return rows;
+  };
+  for (const builder::DriftMonitor& m : built.drift_monitors) {
+    if (!m.base_element) {
+      base_rows_.emplace_back();
+      continue;
+    }
+    BaseRows rows = rows_of(*m.base_element, m);
+    for (const Index upper : m.upper_elements) {
+      const BaseRows above = rows_of(upper, m);
+      rows.upper.push_back({above.shear, above.shear_weights});
+    }
+    base_rows_.push_back(std::move(rows));
   }
   if (!elements.empty()) {
     base_forces_ = element_quantities(built, system.dofs(), elements, std::move(wanted));
@@ -589,6 +603,9 @@ void RunObservers::record_base_forces(const integrators::State& state) {
     if (!rows->shear.empty())
       rows->peak_shear =
           std::max(rows->peak_shear, resultant(base_row_, rows->shear, rows->shear_weights));
+    for (const BaseRows::Shear& upper : rows->upper)
+      rows->peak_shear =
+          std::max(rows->peak_shear, resultant(base_row_, upper.components, upper.weights));
     if (!rows->moment.empty())
       rows->peak_moment =
           std::max(rows->peak_moment, resultant(base_row_, rows->moment, rows->moment_weights));

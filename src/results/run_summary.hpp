@@ -65,11 +65,20 @@ class RunObservers {
     // A 3-D beam's: each component's share of the shear along the drift and of the moment about
     // the horizontal axis across it (its local axis' global component); empty: the resultant.
     std::vector<double> shear_weights, moment_weights;
+    // The elements above the base (builder::DriftMonitor::upper_elements): their shears, whose
+    // largest the peak shear takes too.
+    struct Shear {
+      std::vector<std::size_t> components;
+      std::vector<double> weights;
+    };
+    std::vector<Shear> upper;
     double peak_shear = 0.0, peak_moment = 0.0;
   };
   std::vector<std::optional<BaseRows>> base_rows_;
   std::unique_ptr<Quantities> base_forces_;
   std::vector<double> base_row_;
+  void set_up_base_forces(const builder::BuiltModel& built,
+                          const assembly::StructuralSystem& system);
   void record_base_forces(const integrators::State& state);
   JointMonitors joints_;
   std::vector<Observer*> extra_;
