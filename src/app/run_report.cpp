@@ -106,13 +106,17 @@ std::string link_lines(const results::RunSummary& run, const ReportUnits& units)
         break;
       }
       case links::LinkRole::tension:
-        text += fmt::format("  {} {}: taut {} time(s), peak tension {}, peak opening {}{}\n",
-                            link.law, link.id, s.impacts, with_unit(s.peak_tension, units.force, 6),
-                            with_unit(s.peak_opening, units.length),
-                            link.permanent_deformation > 0.0
-                                ? fmt::format(", yielded: permanent elongation {}",
-                                              with_unit(link.permanent_deformation, units.length))
-                                : std::string());
+        text += fmt::format(
+            "  {} {}: taut {} time(s), peak tension {}, peak opening {}{}\n", link.law, link.id,
+            s.impacts, with_unit(s.peak_tension, units.force, 6),
+            with_unit(s.peak_opening, units.length),
+            link.permanent_deformation > 0.0
+                ? fmt::format(", yielded: permanent elongation {}{}",
+                              with_unit(link.permanent_deformation, units.length),
+                              link.ductility()
+                                  ? fmt::format(" (ductility {})", ratio(*link.ductility()))
+                                  : std::string())
+                : std::string());
         break;
       case links::LinkRole::contact:
         if (link.seated)

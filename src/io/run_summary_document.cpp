@@ -103,7 +103,14 @@ Document link_document(const results::LinkResult& link) {
   // A yielded restrainer's plastic elongation, the backfill soil's permanent deformation.
   if (link.permanent_deformation > 0.0)
     doc.set("permanent_deformation", link.permanent_deformation);
-  if (link.yield_deformation) {  // a yielding law: its demand and what it dissipated
+  if (link.yield_deformation && link.role == links::LinkRole::tension) {  // beyond its slack
+    doc.set("yield_elongation", *link.yield_deformation)
+        .set("peak_elongation", link.peak_demand())
+        .set("peak_plastic_elongation", *link.peak_plastic_deformation());
+    if (const std::optional<double> ductility = link.ductility()) doc.set("ductility", *ductility);
+    if (const std::optional<double> energy = link.hysteretic_energy())
+      doc.set("hysteretic_energy", *energy);
+  } else if (link.yield_deformation) {  // a yielding law: its demand and what it dissipated
     doc.set("yield_deformation", *link.yield_deformation)
         .set("peak_deformation", link.peak_deformation())
         .set("peak_plastic_deformation", *link.peak_plastic_deformation())

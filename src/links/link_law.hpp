@@ -59,6 +59,9 @@ class LinkLaw {
   // The deformation the law keeps at zero force in its committed state: a yielded restrainer's
   // plastic elongation, the backfill soil's permanent deformation; 0 for the others.
   virtual double permanent_deformation() const { return 0.0; }
+  // How far a tension law opens before it engages (a restrainer's slack): its yield_deformation
+  // and ductility are its elongation beyond that. 0 for the others.
+  virtual double slack() const { return 0.0; }
   // Zero for every law but one with added stiffness-proportional damping.
   virtual ViscousPart viscous_part() const { return {}; }
   // A hard contact is a constraint whose force the integrator finds; none for a force law.

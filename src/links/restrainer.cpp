@@ -1,5 +1,6 @@
 #include "links/restrainer.hpp"
 
+#include <cmath>
 #include <limits>
 
 #include "links/law_registry.hpp"
@@ -29,6 +30,11 @@ LawResponse Restrainer::set_trial(const LinkKinematics& trial) {
   }
   // dF/d(delta) = d(-T)/d(delta) = dT/d(opening).
   return {.force = -tension, .stiffness = slope};
+}
+
+std::optional<double> Restrainer::yield_deformation() const {
+  if (!std::isfinite(yield_force_)) return std::nullopt;
+  return yield_force_ / stiffness_;
 }
 
 void Restrainer::commit() {

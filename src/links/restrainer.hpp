@@ -34,6 +34,9 @@ class Restrainer final : public LinkLaw {
   double permanent_deformation() const override {
     return committed_plastic_;
   }  // plastic elongation
+  // The elongation beyond the slack at first yield, T_y / k; none for an elastic one (a hook).
+  std::optional<double> yield_deformation() const override;
+  double slack() const override { return slack_; }
 
  private:
   std::string name_;

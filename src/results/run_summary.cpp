@@ -680,12 +680,12 @@ std::optional<double> DriftResult::elastic_demand_ratio() const {
 
 std::optional<double> LinkResult::ductility() const {
   if (!yield_deformation || rotational) return std::nullopt;
-  return peak_deformation() / *yield_deformation;
+  return peak_demand() / *yield_deformation;
 }
 
 std::optional<double> LinkResult::peak_plastic_deformation() const {
   if (!yield_deformation) return std::nullopt;
-  return std::max(0.0, peak_deformation() - *yield_deformation);
+  return std::max(0.0, peak_demand() - *yield_deformation);
 }
 
 std::optional<double> LinkResult::hysteretic_energy() const {
@@ -782,11 +782,17 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
     LinkResult result{link.id, law.name(), link.role(), link_summaries[k], link.rotational};
     result.viscous = law.viscous_part();
     result.permanent_deformation = law.permanent_deformation();
+    result.slack = law.slack();
     result.passive_engagements =
         link.role() != links::LinkRole::spring && !(link.law && link.law->traits.inertia);
-    if ((result.yield_deformation = law.yield_deformation()))
-      result.initial_stiffness =  // of a fresh law: this one has yielded
-          link.make_law(system.link_context(link))->set_trial({0.0, 0.0, 0.0}).stiffness;
+    if ((result.yield_deformation = law.yield_deformation())) {
+      // Of a fresh law (this one has yielded): at rest, or a restrainer taut below yield.
+      const double at = link.role() == links::LinkRole::tension
+                            ? -(result.slack + 0.5 * *result.yield_deformation)
+                            : 0.0;
+      result.initial_stiffness =
+          link.make_law(system.link_context(link))->set_trial({at, 0.0, 0.0}).stiffness;
+    }
     result.shear = link.shear;
     result.friction = system.links().has_friction(static_cast<Index>(k));
     result.seated = builder::seated_under_weight(link, built);

@@ -123,13 +123,20 @@ struct LinkResult {
   // What the law keeps at zero force at the end (LinkLaw::permanent_deformation): a yielded
   // restrainer's plastic elongation, the backfill soil's permanent deformation.
   double permanent_deformation = 0.0;
+  double slack = 0.0;  // a restrainer's (LinkLaw::slack)
   double peak_deformation() const {
     return std::max(summary.peak_penetration, summary.peak_opening);
   }
-  // peak |delta| / delta_y; none for a hinge, whose elastic rotation is the numerical stiffness's
+  // What its ductility is measured in: peak |delta|, or a restrainer's peak elongation beyond
+  // its slack (Caltrans SDC, DesRoches & Fenves 2000).
+  double peak_demand() const {
+    return role == links::LinkRole::tension ? std::max(0.0, summary.peak_opening - slack)
+                                            : peak_deformation();
+  }
+  // peak_demand / delta_y; none for a hinge, whose elastic rotation is the numerical stiffness's
   // (the member's ductility is its drift monitor's).
   std::optional<double> ductility() const;
-  // peak |delta| - delta_y of a yielding law: a hinge's plastic rotation theta_p, the measure of
+  // peak_demand - delta_y of a yielding law: a hinge's plastic rotation theta_p, the measure of
   // ASCE 41's hinge acceptance criteria and of the curvature ductility 1 + theta_p / (phi_y L_p).
   std::optional<double> peak_plastic_deformation() const;
   // What its added stiffness-proportional damping did (LinkLaw::viscous_part): part of

@@ -333,6 +333,18 @@ TEST(RunReport, AYieldedRestrainerGivesItsPermanentElongation) {
   std::cout << line << "\npermanent elongation " << elongation << " m against 0.045, error "
             << std::abs(elongation - 0.045) << "\n";
   EXPECT_NEAR(elongation, 0.045, 1e-5);
+  // Its ductility is its elongation beyond the slack over T_y / k (Caltrans SDC): 500 J of
+  // kinetic energy stretch it 0.01 m elastically (50 J) and 0.045 m more at 10 kN (450 J,
+  // dissipated), 5.5 x its yield elongation of 0.01 m (audit 70: there was no ductility).
+  const nlohmann::json& cable = summary["links"][0];
+  std::cout << "yield elongation " << cable["yield_elongation"] << " m, peak "
+            << cable["peak_elongation"] << " m, ductility " << cable["ductility"]
+            << ", hysteretic energy " << cable["hysteretic_energy"] << " J (450 J)\n";
+  EXPECT_DOUBLE_EQ(cable["yield_elongation"].get<double>(), 0.01);
+  EXPECT_NEAR(cable["peak_elongation"].get<double>(), 0.055, 1e-5);
+  EXPECT_NEAR(cable["ductility"].get<double>(), 5.5, 1e-3);
+  EXPECT_NEAR(cable["hysteretic_energy"].get<double>(), 450.0, 0.1);
+  EXPECT_TRUE(has(line, "(ductility 5.50)")) << line;
 }
 
 // An impulse is force x time: in kg and cm the force is written out, kg*cm/s^2, and the impulse
