@@ -173,6 +173,7 @@ Document joint_document(const results::JointResult& joint) {
       .set("peak_opening", joint.peak.peak_opening)
       .set("peak_closing", joint.peak.peak_closing)
       .set("peak_seat_movement", joint.peak.peak_seat_movement)
+      .set("peak_unseating_movement", joint.peak.peak_unseating_movement)
       .set("residual_opening", joint.peak.residual_opening)
       .set("peak_girder_acceleration", joint.peak.peak_girder_acceleration);
   if (joint.in_space) doc.set("peak_plan_rotation", joint.peak.peak_plan_rotation);

@@ -208,6 +208,9 @@ void JointMonitors::record(const integrators::State& state) {
           model::value_of(w.girder_x, displacement) - model::value_of(w.seat_x, displacement);
     movement += sum_of(w.movement, displacement);
     p.peak_seat_movement = std::max(p.peak_seat_movement, std::abs(movement));
+    p.peak_unseating_movement =
+        std::max(p.peak_unseating_movement,
+                 w.opening_sign != 0.0 ? w.opening_sign * movement : std::abs(movement));
     p.peak_plan_rotation =
         std::max(p.peak_plan_rotation, std::abs(sum_of(w.plan_rotation, displacement)));
     p.peak_girder_acceleration = std::max(

@@ -124,7 +124,11 @@ struct JointPeak {
   double peak_opening = 0.0;        // max -(delta + gap): the joint wider than at the start [L]
   double peak_closing = 0.0;        // max (delta + gap): the joint narrower than at the start [L]
   double peak_seat_movement = 0.0;  // max |u_girder - u_seat| along x [L]
-  double residual_opening = 0.0;    // -(delta + gap) at the end of the run [L]
+  // The largest movement away from the joint (the way that opens it, toward the girder's own
+  // span): what takes the girder end off its seat, which moving toward the joint cannot, as the
+  // other girder or the backwall stops it there [L]
+  double peak_unseating_movement = 0.0;
+  double residual_opening = 0.0;          // -(delta + gap) at the end of the run [L]
   double peak_girder_acceleration = 0.0;  // the girder end's absolute, along x [L/T^2]
   // 3-D, with a direction: the girder end's turn in plan on its seat, theta_z,girder less the
   // seat's [rad]
@@ -143,6 +147,9 @@ class JointMonitors : public Observer {
     using Term = results::Term;
     std::vector<Term> movement = {};
     std::vector<Term> plan_rotation = {};  // theta_z of the girder less the seat's (3-D, z up)
+    // +1 or -1: the sign of the movement that opens the joint (the girder moving away from its
+    // pounding link); 0 where the link does not move with the girder (then either way counts).
+    double opening_sign = 0.0;
   };
   // `support`: the moving supports' motion the movements add (none: the displacements as they
   // are).

@@ -274,6 +274,26 @@ std::vector<Term> point_movement(const builder::JointMonitor& m, const Displacem
   return terms;
 }
 
+// The sign of a girder's movement on its seat that opens its joint: moving the girder along the
+// movement's direction (x, or the monitor's) changes the pounding link's penetration by
+// d(delta) = sum of B's entries at the girder's translations along it; the opening way is the one
+// that lowers delta. 0 where the link does not move with the girder.
+double opening_sign(const builder::JointMonitor& m, const assembly::StructuralSystem& system) {
+  const std::array<double, 3> along = m.direction.value_or(std::array<double, 3>{1.0, 0.0, 0.0});
+  const Index row = system.links().row(m.link);
+  const auto& connectivity = system.links().connectivity();
+  double change = 0.0;
+  for (int d = 0; d < std::min(3, system.dofs().dofs_per_node()); ++d) {
+    if (model::direction(d, system.dofs().dimension()).rotation) continue;
+    const double share = along[static_cast<std::size_t>(d)];
+    if (share == 0.0) continue;
+    for (const model::DofTerm& term : system.dofs().terms(m.girder, d))
+      change += share * term.coefficient * connectivity.coeff(row, term.equation);
+  }
+  if (!(std::abs(change) > 1e-9)) return 0.0;
+  return change > 0.0 ? -1.0 : 1.0;
+}
+
 std::vector<JointMonitors::Where> joint_places(const builder::BuiltModel& built,
                                                const assembly::StructuralSystem& system) {
   const DisplacementTerms dofs = displacement_terms(system);
@@ -289,6 +309,7 @@ std::vector<JointMonitors::Where> joint_places(const builder::BuiltModel& built,
       dofs.add(m.girder, 0, 1.0, where.movement);
       dofs.add(m.seat, 0, -1.0, where.movement);
     }
+    where.opening_sign = opening_sign(m, system);
   }
   return places;
 }
@@ -402,8 +423,10 @@ std::vector<std::string> result_warnings(const RunSummary& run, const UnitNames&
   for (const JointResult& joint : run.joints)
     if (joint.unseated())
       warnings.push_back(fmt::format(
-          "joint {}: the girder moved {:.4g}{} on a seat {:.4g}{} wide: unseated", joint.monitor.id,
-          joint.peak.peak_seat_movement, u.length, joint.monitor.seat_width, u.length));
+          "joint {}: the girder moved {:.4g}{} away from the joint on a seat {:.4g}{} wide: "
+          "unseated",
+          joint.monitor.id, joint.peak.peak_unseating_movement, u.length, joint.monitor.seat_width,
+          u.length));
   // Pounding drifts are a few percent; 10 % is far past what a model of small displacements (and
   // elastic storeys) describes, so such a number is not a result (a stiffness far too small?).
   // With P-Delta a yielded pier or storey whose post-yield stiffness is below P / h runs away
@@ -744,7 +767,7 @@ double RunSummary::contact_created_fraction() const {
 
 std::optional<double> JointResult::margin() const {
   if (!(monitor.seat_width > 0.0)) return std::nullopt;
-  return monitor.seat_width - peak.peak_seat_movement;
+  return monitor.seat_width - peak.peak_unseating_movement;
 }
 
 namespace {

@@ -192,7 +192,7 @@ struct JointResult {
   bool in_space = false;
   std::optional<double> margin() const;  // to unseating, with a seat width
   bool unseated() const {
-    return monitor.seat_width > 0.0 && peak.peak_seat_movement >= monitor.seat_width;
+    return monitor.seat_width > 0.0 && peak.peak_unseating_movement >= monitor.seat_width;
   }
 };
 

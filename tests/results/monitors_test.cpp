@@ -11,10 +11,14 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <string>
+#include <tuple>
+#include <vector>
 
+#include "app/model_loading.hpp"
 #include "app/model_run.hpp"
 #include "support/dof_readings.hpp"
 #include "support/model_summary.hpp"
+#include "support/node_motion.hpp"
 #include "support/vectors.hpp"
 
 namespace pound::results {
@@ -306,6 +310,59 @@ TEST(DriftMonitors, AStruckColumnsPeakShearIsItsLargestSegments) {
     }
     EXPECT_NEAR(reported / largest, 1.0, 1e-14) << storey;
   }
+}
+
+// A girder end leaves its seat by moving away from its joint, toward its own span: toward the
+// joint the other girder or the backwall stops it. The unseating margin counted the girder's
+// movement either way, so a seat was "unseated" by a movement into the joint (audit 70: 0.113 m
+// into the joint against 0.051 m away from it). It now takes the movement away from the joint,
+// the joint's opening way from its pounding link: on the bundled bridge, from the nodes'
+// histories, the left ends of the joints and the right abutment's end move off their seats
+// along -x, the others along +x.
+TEST(JointMonitors, AGirderEndsUnseatingMovementIsAwayFromItsJoint) {
+  const std::string path = std::string(POUND_SOURCE_DIR) + "/models/three_span_bridge.json";
+  std::ifstream file(path);
+  nlohmann::json model = nlohmann::json::parse(file);
+  model["analysis"]["duration"] = 12.0;
+  model.erase("recorders");
+  const app::LoadedModel loaded = app::load_model_text(model.dump(), path);
+  // monitor: girder end, seat, the sign of the movement away from the joint
+  const std::vector<std::tuple<std::string, std::string, std::string, double>> ends = {
+      {"bridge.a0.joint.girder_end", "bridge.g0.n0", "bridge.a0.seat", 1.0},
+      {"bridge.joint1.left_end", "bridge.g0.n4", "bridge.p1.top", -1.0},
+      {"bridge.joint1.right_end", "bridge.g1.n0", "bridge.p1.top", 1.0},
+      {"bridge.joint2.left_end", "bridge.g1.n4", "bridge.p2.top", -1.0},
+      {"bridge.joint2.right_end", "bridge.g2.n0", "bridge.p2.top", 1.0},
+      {"bridge.a1.joint.girder_end", "bridge.g2.n4", "bridge.a1.seat", -1.0}};
+  std::vector<std::string> nodes;
+  for (const auto& [monitor, girder, seat, sign] : ends) {
+    nodes.push_back(girder);
+    nodes.push_back(seat);
+  }
+  const testing::NodeMotion motion = testing::run_node_motion(loaded.built, nodes, {0});
+  const nlohmann::json summary = testing::model_summary(model.dump(), path);
+  double worst = 0.0;
+  int one_sided = 0;
+  for (std::size_t k = 0; k < ends.size(); ++k) {
+    const auto& [monitor, girder, seat, sign] = ends[k];
+    double away = 0.0, either = 0.0;
+    for (const std::vector<double>& u : motion.values) {
+      away = std::max(away, sign * (u[2 * k] - u[2 * k + 1]));
+      either = std::max(either, std::abs(u[2 * k] - u[2 * k + 1]));
+    }
+    for (const nlohmann::json& joint : summary["joints"])
+      if (joint["id"] == monitor) {
+        const double reported = joint["peak_unseating_movement"].get<double>();
+        const double margin = joint["unseating_margin"].get<double>();
+        const double width = joint["seat_width"].get<double>();
+        std::cout << monitor << ": away from the joint " << reported << " m (histories " << away
+                  << "), either way " << either << ", margin " << margin << "\n";
+        worst = std::max({worst, std::abs(reported - away), std::abs(margin - (width - away))});
+        one_sided += away < either;
+      }
+  }
+  EXPECT_LT(worst, 1e-15);
+  EXPECT_GT(one_sided, 0);  // some end moved farther into its joint than away from it
 }
 
 }  // namespace
