@@ -622,7 +622,10 @@ void check_law_roles(const GirderBridgeSpec& spec, const std::string& source) {
                      at + "/backfill");
   if (spec.shear_keys)
     require_law_role(spec.shear_keys->law, LinkRole::contact, "a shear key", source,
-                     at + "/shear_keys/law");
+                     at + "/shear_keys/law",
+                     "backfill gives a key that yields at a capacity (its ultimate force)");
+  if (spec.bearing)
+    require_law_role(*spec.bearing, LinkRole::spring, "a bearing", source, at + "/bearing");
 }
 
 void add_girder_bridge(const GirderBridgeSpec& spec, ModelSpec& out) {

@@ -80,22 +80,30 @@ std::string generator_path(int generator) { return fmt::format("/generators/{}",
 }  // namespace
 
 void require_law_role(const LawSpec& law, links::LinkRole role, const std::string& what,
-                      const std::string& source, const std::string& path) {
+                      const std::string& source, const std::string& path, const std::string& hint) {
+  using links::LinkRole;
   const links::LawEntry* entry = links::find_law(law.type);
   if (!entry || entry->traits.role == role) return;
   std::string fitting;
   for (const links::LawEntry* other : links::law_registry())
     if (other->traits.role == role) fitting += (fitting.empty() ? "" : ", ") + other->name;
-  const bool tension = role == links::LinkRole::tension;
-  throw InputError(
-      source, path + "/type",
-      fmt::format("{} needs a {} law ({}), got '{}', which {}", what,
-                  tension ? "tension-only" : "compression-only contact", fitting, law.type,
-                  entry->traits.role != links::LinkRole::spring
-                      ? (tension ? "pushes, not pulls" : "pulls, not pushes")
-                      : (tension ? "acts both ways: it would push as well as pull"
-                                 : "acts both ways from the link's rest length: across the gap "
-                                   "it would pull with k x gap before anything touches")));
+  const LinkRole given = entry->traits.role;
+  std::string kind = "compression-only contact", why = "pulls, not pushes";
+  if (role == LinkRole::spring) {
+    kind = "spring (force both ways)";
+    why = given == LinkRole::tension ? "only pulls" : "only pushes";
+  } else if (role == LinkRole::tension) {
+    kind = "tension-only";
+    why = given == LinkRole::spring ? "acts both ways: it would push as well as pull"
+                                    : "pushes, not pulls";
+  } else if (given == LinkRole::spring) {
+    why =
+        "acts both ways from the link's rest length: across the gap it would pull with k x gap "
+        "before anything touches";
+  }
+  throw InputError(source, path + "/type",
+                   fmt::format("{} needs a {} law ({}), got '{}', which {}{}", what, kind, fitting,
+                               law.type, why, hint.empty() ? "" : "; " + hint));
 }
 
 LinkSpec make_link(const std::string& id, const std::string& node_i, const std::string& node_j,

@@ -33,7 +33,8 @@ LinkSpec make_link(const std::string& id, const std::string& node_i, const std::
 // spring law there would act both ways from the link's rest length, pulling with k x gap at rest.
 // An unknown type is left to the link's own check.
 void require_law_role(const LawSpec& law, links::LinkRole role, const std::string& what,
-                      const std::string& source, const std::string& path);
+                      const std::string& source, const std::string& path,
+                      const std::string& hint = "");
 ElementSpec make_beam(const std::string& id, const std::string& node_i, const std::string& node_j,
                       const std::string& material, double area, double inertia);
 

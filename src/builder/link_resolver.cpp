@@ -111,9 +111,10 @@ void resolve_law(const LinkPlace& place, model::Link& link) {
   if (link.role() == links::LinkRole::spring && place.spec.gap != 0.0)
     place.fail("/gap",
                fmt::format("the law {} acts both ways from the link's rest length, so a gap of {} "
-                           "would have it pull with k x gap before anything touches: a gap is "
-                           "for a contact law (gap_spring, bilinear_impact, ...; a stop that "
-                           "engages after a gap), a restrainer's slack is in its law",
+                           "would start it stretched by the gap before anything touches (a "
+                           "spring pulling with k x gap): a stop that engages after a gap takes a "
+                           "contact law (gap_spring; backfill for one that yields at a capacity), "
+                           "a restrainer's slack is in its law",
                            type, place.spec.gap));
   link.make_law =
       links::make_law(place.spec.law, {place.resolver.spec().source, place.path + "/law"});

@@ -115,7 +115,7 @@ ElementQuantities::ElementQuantities(std::vector<std::shared_ptr<const model::El
 }
 
 void ElementQuantities::take(const integrators::State& state, double* values) const {
-  forces_.evaluate(state.displacement, values);
+  forces_.evaluate(support_ ? support_->total(state) : state.displacement, values);
   // A sum of products that are all -0 (negative entries on zero displacements) is -0; the
   // elements sum theirs from +0, which x + 0 gives without changing any other value.
   for (std::size_t s = 0; s < forces_.size(); ++s) values[s] += 0.0;

@@ -14,6 +14,7 @@
 #include "model/element.hpp"
 #include "results/ground_acceleration.hpp"
 #include "results/observer.hpp"
+#include "results/support_motion.hpp"
 #include "results/term_sums.hpp"
 
 namespace pound::results {
@@ -112,11 +113,15 @@ class ElementQuantities final : public Quantities {
                     std::vector<std::vector<DofReading>> readings,
                     std::vector<std::vector<std::size_t>> wanted = {});
   void take(const integrators::State& state, double* values) const override;
+  // Read from the supports' total motion (the readings then name its entries): the forces of
+  // members on moving supports.
+  void read_total_motion(SupportMotion* support) { support_ = support; }
 
  private:
   // Each end force as one sum over the equations: its row of the element's end force map
   // (model::end_force_map) times the DOFs' readings, formed once.
   TermSums forces_;
+  SupportMotion* support_ = nullptr;
 };
 
 // A time history: columns time and the quantities, a row per sampled step; `units` name the

@@ -105,17 +105,38 @@ std::vector<SpectrumPlace> spectrum_places(const builder::BuiltModel& built,
   return places;
 }
 
-std::unique_ptr<Quantities> element_quantities(const builder::BuiltModel& built,
-                                               const model::DofMap& dofs,
-                                               const std::vector<Index>& items,
-                                               std::vector<std::vector<std::size_t>> wanted = {}) {
+// The terms of a node's displacement along a direction: its DOF's, and with moving supports the
+// entry of each moving support that moves it (SupportMotion::total's, after the free DOFs), for a
+// girder's movement on a moving seat or a pier's drift over a moving base in total motion.
+struct DisplacementTerms {
+  const model::DofMap& dofs;
+  const assembly::StructuralSystem* moving = nullptr;  // the system, where supports move
+
+  void add(Index node, int direction, double weight, std::vector<Term>& terms) const {
+    add_scaled(terms, dofs.terms(node, direction), weight);
+    if (!moving) return;
+    for (std::size_t k = 0; k < moving->moving_support_count(); ++k)
+      if (const double share = moving->moving_support_share(k, node, direction); share != 0.0)
+        terms.push_back({moving->size() + static_cast<Index>(k), weight * share});
+  }
+};
+
+DisplacementTerms displacement_terms(const assembly::StructuralSystem& system) {
+  return {system.dofs(), system.moving_support_count() > 0 ? &system : nullptr};
+}
+
+// The end forces of elements `items` from their DOFs' displacements, read through `dofs` (with
+// moving supports, the entries of their total motion).
+std::unique_ptr<ElementQuantities> element_quantities(
+    const builder::BuiltModel& built, const DisplacementTerms& dofs,
+    const std::vector<Index>& items, std::vector<std::vector<std::size_t>> wanted = {}) {
   std::vector<std::shared_ptr<const model::Element>> elements;
   std::vector<std::vector<DofReading>> readings;
   for (Index item : items) {
     elements.push_back(built.model.elements[static_cast<std::size_t>(item)]);
     std::vector<DofReading>& each = readings.emplace_back();
     for (const model::ElementDof& dof : elements.back()->dofs())
-      each.push_back(reading(dofs, dof.node, dof.direction));
+      dofs.add(dof.node, dof.direction, 1.0, each.emplace_back());
   }
   return std::make_unique<ElementQuantities>(std::move(elements), std::move(readings),
                                              std::move(wanted));
@@ -132,7 +153,7 @@ std::unique_ptr<Recorder> make_recorder(const builder::BuiltModel& built,
   std::unique_ptr<Quantities> quantities =
       spec.kind == builder::RecorderKind::link ? link_quantities(built, system.links(), spec.items)
       : spec.kind == builder::RecorderKind::element
-          ? element_quantities(built, system.dofs(), spec.items)
+          ? element_quantities(built, DisplacementTerms{system.dofs()}, spec.items)
           : node_quantities(built, system.dofs(), spec, ground);
   if (spec.envelope)
     return std::make_unique<EnvelopeRecorder>(spec.file, std::move(quantities), built.units);
@@ -171,26 +192,6 @@ std::vector<ShearRows> shear_rows(const integrators::LinkSet& links) {
     }
   }
   return rows;
-}
-
-// The terms of a node's displacement along a direction: its DOF's, and with moving supports the
-// entry of each moving support that moves it (SupportMotion::total's, after the free DOFs), for a
-// girder's movement on a moving seat or a pier's drift over a moving base in total motion.
-struct DisplacementTerms {
-  const model::DofMap& dofs;
-  const assembly::StructuralSystem* moving = nullptr;  // the system, where supports move
-
-  void add(Index node, int direction, double weight, std::vector<Term>& terms) const {
-    add_scaled(terms, dofs.terms(node, direction), weight);
-    if (!moving) return;
-    for (std::size_t k = 0; k < moving->moving_support_count(); ++k)
-      if (const double share = moving->moving_support_share(k, node, direction); share != 0.0)
-        terms.push_back({moving->size() + static_cast<Index>(k), weight * share});
-  }
-};
-
-DisplacementTerms displacement_terms(const assembly::StructuralSystem& system) {
-  return {system.dofs(), system.moving_support_count() > 0 ? &system : nullptr};
 }
 
 // Adds sign x n . (u + theta x r) of `node` (a point r from it, rigidly tied to it), with
@@ -575,7 +576,11 @@ void RunObservers::set_up_base_forces(const builder::BuiltModel& built,
     base_rows_.push_back(std::move(rows));
   }
   if (!elements.empty()) {
-    base_forces_ = element_quantities(built, system.dofs(), elements, std::move(wanted));
+    // Under moving supports from the total motion: a pier's base moves with its support.
+    std::unique_ptr<ElementQuantities> forces =
+        element_quantities(built, displacement_terms(system), elements, std::move(wanted));
+    if (support_.moving()) forces->read_total_motion(&support_);
+    base_forces_ = std::move(forces);
     base_row_.resize(base_forces_->names().size());
   }
 }

@@ -349,8 +349,8 @@ TEST_F(Cli, RunGirderWritesItsRecorders) {
   const std::vector<std::string> girder = read_lines(out / "girder.csv");
   ASSERT_FALSE(joint.empty());
   ASSERT_FALSE(girder.empty());
-  // Issue 16 item 5: headers name the units; without units.mass forces have none to name.
-  EXPECT_EQ(joint.front(), "time [s],joint.force,joint.penetration [m]");
+  // Issue 16 item 5: headers name the units (the model's kg m s: forces in N).
+  EXPECT_EQ(joint.front(), "time [s],joint.force [N],joint.penetration [m]");
   EXPECT_EQ(girder.front(),
             "time [s],girder.u_x [m],girder.v_x [m/s],girder.a_rel_x [m/s^2],girder.a_abs_x "
             "[m/s^2]");

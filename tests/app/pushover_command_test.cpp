@@ -27,9 +27,9 @@ TEST_F(PushoverCommand, WritesTheCapacityCurveAndFindsTheFirstYield) {
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   std::cout << outcome.out;
   const std::string csv = read_text(path("out") / "pushover.csv");
-  // Each column with its unit, as every run CSV has (the bundled bridge names no mass unit).
+  // Each column with its unit, as every run CSV has.
   EXPECT_TRUE(contains(csv,
-                       "displacement [m],base_shear,iterations,bridge.p1.hinge.deformation "
+                       "displacement [m],base_shear [N],iterations,bridge.p1.hinge.deformation "
                        "[rad],"))
       << csv.substr(0, 200);
   const std::string summary = read_text(path("out") / "pushover.json");

@@ -121,7 +121,7 @@ TEST_F(Reliability, ALawInTheWrongRoleIsRefusedWhereItIsWritten) {
   json buildings = bundled("adjacent_buildings");
   buildings["generators"][0]["law"] = {{"type", "elastic_spring"}, {"stiffness", 1e8}};
   for (const auto& [model, where, what] :
-       {std::tuple{girders, "/links/0/gap", "would have it pull with k x gap"},
+       {std::tuple{girders, "/links/0/gap", "a spring pulling with k x gap"},
         std::tuple{bridge, "/generators/0/joint/law/type", "needs a compression-only contact law"},
         std::tuple{restrainer, "/generators/0/joint/restrainer/type", "pushes, not pulls"},
         std::tuple{backfill, "/generators/0/backfill/type", "would pull with k x gap"},

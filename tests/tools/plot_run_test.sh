@@ -32,8 +32,8 @@ figures=$(grep -o 'src="data:image/png;base64,' "$report" | wc -l)
 ! grep -qiE '(src|href)="(https?:|//|[a-z_]+\.png)' "$report" || fail "$report refers to outside files"
 grep -q '<td>joint</td>' "$report" || fail "$report has no row for the link joint"
 grep -q 'Energy balance' "$report" || fail "$report has no energy balance"
-# Its headings name their units: lengths and times in m and s; forces none (no mass unit).
-for heading in 'peak penetration \[m\]' 'time step \[s\]' '<th>peak force</th>'; do
+# Its headings name their units: lengths and times in m and s, forces in N (kg m s).
+for heading in 'peak penetration \[m\]' 'time step \[s\]' 'peak force \[N\]'; do
   grep -q "$heading" "$report" || fail "$report has no heading $heading"
 done
 
