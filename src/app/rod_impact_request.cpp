@@ -18,10 +18,17 @@ std::optional<std::string> rod_impact_request_error(const RodImpactRequest& requ
   if (const auto shortfall = memory_shortfall(2.0 * (request.elements + 1.0)))
     return fmt::format("--n {}: the rods would {}", request.elements, *shortfall);
   if (!(request.stiffness_ratio > 0.0)) return "--k-ratio must be > 0";
+  // Past this the contact's stiffness is lost to round-off against the rods' elements: 1e200
+  // let the rods pass through each other with no contact at all.
+  if (!(request.stiffness_ratio <= 1e12))
+    return "--k-ratio must be <= 1e12 (a stiffer link is lost to round-off beside the rods' "
+           "elements)";
   if (!(request.dt_ratio > 0.0)) return "--dt-ratio must be > 0";
   if (request.courant && !(*request.courant > 0.0)) return "--courant must be > 0";
   if (!(request.duration_ratio >= 1.5)) return "--duration-ratio must be >= 1.5 (the error window)";
-  if (!(request.tolerance > 0.0)) return "--tolerance must be > 0";
+  if (!(request.tolerance > 0.0 && request.tolerance < 0.1))
+    return "--tolerance must be in (0, 0.1): a looser test takes the contact force itself as "
+           "round-off";
   if (!(request.eta >= 0.0)) return "--eta must be >= 0";
   return std::nullopt;
 }
@@ -32,6 +39,13 @@ namespace {
 // (the energy kept, the rods' velocities exact, since they never meet).
 void check_step_fits_run(const verification::RodImpactOptions& run) {
   const verification::RodImpactTimes times = verification::rod_impact_times(run);
+  constexpr double kMostSteps = 1e8;
+  if (times.duration / times.time_step > kMostSteps)
+    throw std::invalid_argument(fmt::format(
+        "{} with --duration-ratio {:g}: the time step {:.4g} would take {:.3g} steps over the run "
+        "({:.4g}), more than {:g}",
+        run.courant ? "--courant" : "--dt-ratio", run.duration_ratio, times.time_step,
+        times.duration / times.time_step, times.duration, kMostSteps));
   if (!(times.time_step < times.duration))
     throw std::invalid_argument(fmt::format(
         "{}: the time step {:.4g} is longer than the whole run ({:.4g}: the first contact at "

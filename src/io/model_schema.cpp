@@ -1568,7 +1568,9 @@ Field<AnalysisSpec> time_step_field() {
       {"time_step", "number > 0 or `\"auto\"`", "required (implicit), `\"auto\"` (explicit)",
        "Δt [T], no longer than the duration; `\"auto\"` (central difference): safety_factor × "
        "the stable step, no more than the shortest record step; also when an explicit "
-       "integrator is given no step"},
+       "integrator is given no step; not with a Hertz-type contact law (hertz, hertz_damp, "
+       "jankowski, bilinear_impact), which has no stiffness until it touches to find that step "
+       "from"},
       [](JsonObject& object, AnalysisSpec& analysis, Context&) {
         // An explicit method has one right step, its stable one: without a number it takes it.
         if (analysis.integrator.is_explicit() && !object.find("time_step")) {
@@ -1682,7 +1684,11 @@ const Fields<AnalysisSpec>& analysis_fields() {
       nested<AnalysisSpec>(
           "convergence",
           {
-              optional("relative_tolerance", &AnalysisSpec::relative_tolerance, Number<>{positive},
+              optional("relative_tolerance", &AnalysisSpec::relative_tolerance,
+                       Number<>{positive, below(0.1,
+                                                "must be < 0.1 (a looser test takes a "
+                                                "contact's force itself as unbalanced), got "
+                                                "{}")},
                        "unbalanced force over the larger of the external and link forces")
                   .always_written(),
               optional("absolute_tolerance", &AnalysisSpec::absolute_tolerance,

@@ -17,6 +17,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "io/ground_motion_reader.hpp"
@@ -938,6 +939,23 @@ TEST_F(Cli, VerifyExplicitWithoutAStepTakesTheStableOne) {
 // A step longer than the whole run computes nothing; its metrics read as a perfect result (the
 // energy kept, the rods' velocities exact), so it is refused, naming the option. Kawashima's
 // case: contact from t = 0 for 0.6325, run 3 x that, 1.897; dt = 3.2 x 0.6325 = 2.02.
+// Far too many steps ran out of memory (exit 3), a stiffness past round-off let the rods pass
+// through each other, and a Newton test of 1 took the contact force for round-off (audit 70): each
+// is refused as a usage error naming its option.
+TEST_F(Cli, VerifyRefusesOptionsThatMakeTheRunMeaningless) {
+  for (const auto& [option, value, words] :
+       std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"--dt-ratio", "1e-12", "would take 3e+12 steps"},
+           {"--courant", "1e-9", "steps over the run"},
+           {"--k-ratio", "1e200", "--k-ratio must be <= 1e12"},
+           {"--tolerance", "1", "--tolerance must be in (0, 0.1)"}}) {
+    const Outcome refused = pound({"verify", "rod-impact", option, value});
+    EXPECT_EQ(refused.exit_code, 1) << refused.err;
+    EXPECT_TRUE(contains(refused.err, option)) << refused.err;
+    EXPECT_TRUE(contains(refused.err, words)) << refused.err;
+  }
+}
+
 TEST_F(Cli, VerifyRefusesAStepLongerThanTheRun) {
   for (const std::vector<std::string>& option : {std::vector<std::string>{"--dt-ratio", "3.2"},
                                                  {"--dt-ratio", "1e308"},

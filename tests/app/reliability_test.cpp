@@ -151,6 +151,28 @@ TEST_F(Reliability, AFieldOrLawThatDoesNotApplyIsRefusedSayingWhy) {
   }
 }
 
+// Central difference's "auto" step cannot see a Hertz-type contact (no stiffness until it
+// touches): it took 1.7 s steps through impacts and completed with a force 2,400 x the exact one.
+// A hard contact's impulse needs Newmark's beta >= 1/4: under linear acceleration a block sank
+// through its floor. A relative Newton tolerance of 1 passed bodies through each other. Each is
+// refused at its path (audit 70).
+TEST_F(Reliability, IntegratorSettingsThatCannotResolveTheContactsAreRefused) {
+  json hertz = bundled("two_sdof_girders");
+  hertz["links"][0]["law"] = {{"type", "hertz_damp"}, {"stiffness", 4e10}, {"restitution", 0.65}};
+  hertz["analysis"] = {{"integrator", "central_difference"}};
+  json linear = bundled("two_girders_hard_contact");
+  linear["analysis"]["integrator"] = "newmark_linear_acceleration";
+  json loose = bundled("two_sdof_girders");
+  loose["analysis"]["convergence"] = {{"relative_tolerance", 1.0}};
+  for (const auto& [model, where, what] :
+       {std::tuple{hertz, "/analysis/time_step", "no stiffness until it touches"},
+        std::tuple{linear, "/analysis/integrator", "(beta = 0.1667 < 1/4) cannot impose"},
+        std::tuple{loose, "/analysis/convergence/relative_tolerance", "must be < 0.1"}}) {
+    const std::string file = write("settings.json", model);
+    for (const char* command : {"run", "check"}) expect_refused(command, file, {where, what});
+  }
+}
+
 // The bundled bridge without its girders' extra mass: the girder is a mechanism without mass.
 // It aborted in run ("not positive definite at equation 24") while check passed; now both name
 // the node, at the generator that made it.
