@@ -150,6 +150,12 @@ void EnergyBalance::record(const integrators::State& state) {
   previous_.velocity = state.velocity;
   previous_.link_force = state.link_force;
   if (link_motion_) previous_.link_penetration = state.link_penetration;
+  if (predicted_damping_) {
+    // The first step's damping took v_0 itself (the start's acceleration is from C v_0).
+    if (previous_damping_velocity_.size() == 0) damping_velocity_ = state.velocity;
+    previous_damping_velocity_.swap(damping_velocity_);
+    previous_acceleration_ = state.acceleration;
+  }
 }
 
 void EnergyBalance::record_step_lumped(const integrators::State& state, const Vector& mass) {
@@ -233,7 +239,13 @@ void EnergyBalance::record_general(const integrators::State& state, bool algorit
   step_ = state.displacement - previous_.displacement;
   terms_.input += 0.5 * step_.dot(external_ + previous_external_);
   if (system_.has_damping()) {
-    average_ = 0.5 * (state.velocity + previous_.velocity);
+    if (predicted_damping_) {  // C v*, v* = v_n + dt a_n, at each end of the step
+      damping_velocity_ =
+          previous_.velocity + (state.time - previous_.time) * previous_acceleration_;
+      average_ = 0.5 * (damping_velocity_ + previous_damping_velocity_);
+    } else {
+      average_ = 0.5 * (state.velocity + previous_.velocity);
+    }
     if (const auto* rayleigh = system_.rayleigh()) {
       // du^T diag(a0) M v_avg + v_avg^T diag(a1) (K u - K u_n): C = diag(a0) M + diag(a1) K is
       // symmetric, as M and K couple no DOFs of different coefficients.

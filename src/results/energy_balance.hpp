@@ -63,12 +63,14 @@ inline constexpr int kEnergyGrowthSteps = 10;
 class EnergyBalance : public Observer {
  public:
   // `acceleration_energy`: c of the integrator's algorithmic energy
-  // (IntegratorChoice::acceleration_energy).
+  // (IntegratorChoice::acceleration_energy). `predicted_damping`: the integrator's damping force
+  // is C v* with v* = v_n + dt a_n (central difference's), whose work the balance then takes.
   explicit EnergyBalance(const integrators::SecondOrderSystem& system,
-                         double acceleration_energy = 0.0)
+                         double acceleration_energy = 0.0, bool predicted_damping = false)
       : system_(system),
         acceleration_energy_(acceleration_energy),
-        link_motion_(system.has_link_motion()) {}
+        link_motion_(system.has_link_motion()),
+        predicted_damping_(predicted_damping && system.has_damping()) {}
   void record(const integrators::State& state) override;
   // Rows whose force is its step's average (LinkSummaries::set_step_forces): their work is
   // F_{n+1} B du.
@@ -92,7 +94,11 @@ class EnergyBalance : public Observer {
 
   const integrators::SecondOrderSystem& system_;
   double acceleration_energy_ = 0.0;
-  bool link_motion_ = false;                // supports or belts move links (add_link_work)
+  bool link_motion_ = false;  // supports or belts move links (add_link_work)
+  // Central difference's damping velocity v* at this step and the previous one, from the previous
+  // state's v and a (its acceleration kept for it).
+  bool predicted_damping_ = false;
+  Vector damping_velocity_, previous_damping_velocity_, previous_acceleration_;
   double initial_acceleration_norm_ = 0.0;  // a_0^T M a_0
   EnergyTerms terms_;
   double worst_ = 0.0;

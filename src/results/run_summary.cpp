@@ -510,7 +510,8 @@ RunObservers::RunObservers(const builder::BuiltModel& built,
       recorders_(histories ? make_recorders(built, system, ground_)
                            : std::vector<std::unique_ptr<Recorder>>()),
       links_(normal_rows(system.links()), shear_rows(system.links())),
-      energy_(system, built.analysis.integrator.acceleration_energy()),
+      energy_(system, built.analysis.integrator.acceleration_energy(),
+              built.analysis.integrator.is_explicit()),
       passive_links_(!system.has_link_motion()),
       drifts_(drift_places(built, system), ground_, support_.moving() ? &support_ : nullptr),
       joints_(joint_places(built, system), ground_, support_.moving() ? &support_ : nullptr) {

@@ -133,7 +133,8 @@ BlockBeltPoint run_block_belt(const builder::ModelSpec& base, double dimensionle
   long step = 0;
   // A sweep point must not report numbers from a diverging run: the energy the integration
   // makes is watched as in `pound run`, and the point fails with the time and the reason.
-  results::EnergyBalance energy(system, built.analysis.integrator.acceleration_energy());
+  results::EnergyBalance energy(system, built.analysis.integrator.acceleration_energy(),
+                                built.analysis.integrator.is_explicit());
   // As in RunObservers: an implicit step's hard-contact force is its step's impulse / dt.
   if (!built.analysis.integrator.is_explicit())
     energy.set_step_forces(system.links().impulsive_hard_contact_rows(system.lumped_mass()));

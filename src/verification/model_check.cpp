@@ -436,8 +436,8 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
   if (!check.periods.empty() && !analysis.time_step_auto &&
       analysis.time_step > check.periods.back() / 10.0)
     check.warnings.push_back(
-        fmt::format("the time step {:.4g} resolves the {}th period {:.4g} "
-                    "with fewer than 10 steps",
+        fmt::format("the time step {:.4g} resolves period {} of the model ({:.4g}, the "
+                    "shortest found) with fewer than 10 steps",
                     analysis.time_step, check.periods.size(), check.periods.back()));
   return check;
 }
