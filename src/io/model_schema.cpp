@@ -710,7 +710,13 @@ const Fields<BuildingSpec>& building_fields() {
                                                {"none", builder::StoreyDamping::none}}},
                "the stiffness-proportional damping of its yielding storeys: a1 times their "
                "initial stiffness (the elastic column's), a1 times their tangent at the last "
-               "converged step, or none (the link's `rayleigh`)"),
+               "converged step, or none (the link's `rayleigh`)")
+          .when(
+              [](const BuildingSpec& building) {
+                return std::any_of(building.storeys.begin(), building.storeys.end(),
+                                   [](const StoreySpec& storey) { return storey.law.has_value(); });
+              },
+              "with a yielding storey, one that has a `law`"),
       optional("storey_interaction", &BuildingSpec::storeys_coupled,
                Choice<bool>{{{"elliptic", true}, {"none", false}}},
                "elliptic: each yielding storey one link `<storey>` whose shears along x and y "

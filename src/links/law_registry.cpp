@@ -75,8 +75,13 @@ double effective_mass(const LawSpec& law, const LawSource& where, const LinkCont
   if (!(mass > 0.0) || !std::isfinite(mass))
     throw InputError(where.file, where.path + "/mass",
                      fmt::format("{} needs the effective mass of the bodies it joins, and the "
-                                 "model gives {} (both ends fixed or massless): give 'mass'",
-                                 law.type, mass));
+                                 "model gives {} ({}): give 'mass'",
+                                 law.type, mass,
+                                 std::isfinite(mass) && mass <= 0.0
+                                     ? "both ends fixed or massless, or masses so small that "
+                                       "m1 m2 underflows"
+                                     : "m1 m2 / (m1 + m2) of its end masses overflows: masses far "
+                                       "beyond physical ones"));
   return mass;
 }
 

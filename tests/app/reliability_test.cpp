@@ -173,6 +173,25 @@ TEST_F(Reliability, IntegratorSettingsThatCannotResolveTheContactsAreRefused) {
   }
 }
 
+// Masses of 1e300 (m1 m2 overflows) or 1e-300 (underflows) were refused as "both ends fixed or
+// massless", which they are not; storey_damping on a building without yielding storeys was taken
+// silently (it damps only yielding storeys' links). Each now says what it is (audit 70).
+TEST_F(Reliability, MassesAndStoreyDampingThatMeanNothingSayWhy) {
+  json heavy = bundled("two_sdof_girders");
+  json light = heavy;
+  for (json& mass : heavy["masses"]) mass["mass"] = 1e300;
+  for (json& mass : light["masses"]) mass["mass"] = 1e-300;
+  json elastic = bundled("adjacent_buildings");
+  elastic["generators"][0]["left"]["storey_damping"] = "committed";
+  for (const auto& [model, where, what] :
+       {std::tuple{heavy, "/links/0/law/mass", "overflows: masses far beyond physical ones"},
+        std::tuple{light, "/links/0/law/mass", "or masses so small that m1 m2 underflows"},
+        std::tuple{elastic, "/generators/0/left/storey_damping", "with a yielding storey"}}) {
+    const std::string file = write("meaningless.json", model);
+    for (const char* command : {"run", "check"}) expect_refused(command, file, {where, what});
+  }
+}
+
 // The bundled bridge without its girders' extra mass: the girder is a mechanism without mass.
 // It aborted in run ("not positive definite at equation 24") while check passed; now both name
 // the node, at the generator that made it.
