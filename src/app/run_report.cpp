@@ -105,19 +105,20 @@ std::string link_lines(const results::RunSummary& run, const ReportUnits& units)
         if (link.summary.shear) largest = std::max(largest, link.summary.shear->peak_force);
         break;
       }
-      case links::LinkRole::tension:
+      case links::LinkRole::tension: {
+        const std::optional<double> ductility = link.ductility();
         text += fmt::format(
             "  {} {}: taut {} time(s), peak tension {}, peak opening {}{}\n", link.law, link.id,
             s.impacts, with_unit(s.peak_tension, units.force, 6),
             with_unit(s.peak_opening, units.length),
             link.permanent_deformation > 0.0
-                ? fmt::format(", yielded: permanent elongation {}{}",
-                              with_unit(link.permanent_deformation, units.length),
-                              link.ductility()
-                                  ? fmt::format(" (ductility {})", ratio(*link.ductility()))
-                                  : std::string())
+                ? fmt::format(
+                      ", yielded: permanent elongation {}{}",
+                      with_unit(link.permanent_deformation, units.length),
+                      ductility ? fmt::format(" (ductility {})", ratio(*ductility)) : std::string())
                 : std::string());
         break;
+      }
       case links::LinkRole::contact:
         if (link.seated)
           text += fmt::format("  bearing {}: seated under the weight, peak normal force {}, {}\n",

@@ -96,8 +96,9 @@ double shortest_record_step(const model::Model& model) {
 void refuse_hard_contacts_below_average_acceleration(const AnalysisSpec& analysis,
                                                      const model::Model& model,
                                                      const std::string& source) {
-  const auto beta = analysis.integrator.values();
-  if (!beta.contains("beta") || beta.at("beta") >= 0.25) return;
+  const std::map<std::string, double> parameters = analysis.integrator.values();
+  const auto beta = parameters.find("beta");
+  if (beta == parameters.end() || beta->second >= 0.25) return;
   for (const model::Link& link : model.links)
     if (link.law && link.law->traits.constraint)
       throw InputError(
@@ -105,7 +106,7 @@ void refuse_hard_contacts_below_average_acceleration(const AnalysisSpec& analysi
           fmt::format("{} (beta = {:.4g} < 1/4) cannot impose the hard contact '{}': its impulse "
                       "needs beta >= 1/4 (newmark_average_acceleration, hht, generalized_alpha) "
                       "or central difference",
-                      analysis.integrator.label(), beta.at("beta"), link.id));
+                      analysis.integrator.label(), beta->second, link.id));
 }
 
 // An implicit step makes a hard contact's force an impulse between masses (Newmark): a row that

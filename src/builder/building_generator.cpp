@@ -394,9 +394,9 @@ struct ContactNode {
 };
 // The id of the building's floor level with height h, or "" where none is.
 std::string floor_node_id_at(const Building& building, double h) {
+  const double tolerance = level_tolerance(building.pair);
   for (std::size_t f = 1; f < building.heights.size(); ++f)
-    if (std::abs(building.heights[f] - h) <= level_tolerance(building.pair))
-      return floor_node_id(building, f);
+    if (std::abs(building.heights[f] - h) <= tolerance) return floor_node_id(building, f);
   return {};
 }
 
@@ -460,8 +460,7 @@ void add_pounding_links(const AdjacentBuildingsSpec& pair, const std::array<Buil
   const bool uses_mass = entry && entry->accepts("mass", pair.law);
   for (double h : contacts) {
     for (const Building& building : buildings)
-      if (entry && entry->traits.constraint &&
-          contact_node(building, h).id != floor_node_id_at(building, h))
+      if (entry && entry->traits.constraint && floor_node_id_at(building, h).empty())
         throw InputError(
             out.source, fmt::format("/generators/{}/law", pair.generator_index),
             fmt::format("a {} gives its force as an impulse between masses, but at {:g} a floor "

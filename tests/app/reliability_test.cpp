@@ -48,6 +48,14 @@ class Reliability : public PoundProcess {
     for (const std::string& part : parts) EXPECT_TRUE(contains(outcome.err, part)) << outcome.err;
     EXPECT_FALSE(fs::exists(path("out"))) << command;
   }
+  // Each (model, where, what) written to a file and refused by both run and check.
+  void expect_each_refused(
+      const std::vector<std::tuple<json, std::string, std::string>>& refusals) const {
+    for (const auto& [model, where, what] : refusals) {
+      const std::string file = write("refused.json", model);
+      for (const char* command : {"run", "check"}) expect_refused(command, file, {where, what});
+    }
+  }
   // `pound run model` expected to fail loudly: exit 3, the reason, a summary saying "failed".
   Outcome expect_failed(const std::string& model, const std::string& reason) const {
     const Outcome outcome = pound({"run", model, "--out", path("out").string(), "--quiet"});
@@ -120,15 +128,12 @@ TEST_F(Reliability, ALawInTheWrongRoleIsRefusedWhereItIsWritten) {
   backfill["generators"][0]["backfill"] = {{"type", "elastic_spring"}, {"stiffness", 5e8}};
   json buildings = bundled("adjacent_buildings");
   buildings["generators"][0]["law"] = {{"type", "elastic_spring"}, {"stiffness", 1e8}};
-  for (const auto& [model, where, what] :
-       {std::tuple{girders, "/links/0/gap", "a spring pulling with k x gap"},
-        std::tuple{bridge, "/generators/0/joint/law/type", "needs a compression-only contact law"},
-        std::tuple{restrainer, "/generators/0/joint/restrainer/type", "pushes, not pulls"},
-        std::tuple{backfill, "/generators/0/backfill/type", "would pull with k x gap"},
-        std::tuple{buildings, "/generators/0/law/type", "hertz_damp, jankowski"}}) {
-    const std::string file = write("wrong_role.json", model);
-    for (const char* command : {"run", "check"}) expect_refused(command, file, {where, what});
-  }
+  expect_each_refused(
+      {{girders, "/links/0/gap", "a spring pulling with k x gap"},
+       {bridge, "/generators/0/joint/law/type", "needs a compression-only contact law"},
+       {restrainer, "/generators/0/joint/restrainer/type", "pushes, not pulls"},
+       {backfill, "/generators/0/backfill/type", "would pull with k x gap"},
+       {buildings, "/generators/0/law/type", "hertz_damp, jankowski"}});
 }
 
 // A field given where it does not apply was "unknown field", which sends a reader looking for a
@@ -141,14 +146,10 @@ TEST_F(Reliability, AFieldOrLawThatDoesNotApplyIsRefusedSayingWhy) {
   bridge["generators"][0].erase("backfill");
   json buildings = bundled("adjacent_buildings");
   buildings["generators"][0]["law"] = {{"type", "hard_contact"}, {"restitution", 0.5}};
-  for (const auto& [model, where, what] :
-       {std::tuple{bridge, "/generators/0/backwall_mass",
-                   "unknown field here: it applies only where the docs say (with backfill)"},
-        std::tuple{buildings, "/generators/0/law",
-                   "at 3 a floor strikes the left building's column between its floors"}}) {
-    const std::string file = write("not_here.json", model);
-    for (const char* command : {"run", "check"}) expect_refused(command, file, {where, what});
-  }
+  expect_each_refused({{bridge, "/generators/0/backwall_mass",
+                        "unknown field here: it applies only where the docs say (with backfill)"},
+                       {buildings, "/generators/0/law",
+                        "at 3 a floor strikes the left building's column between its floors"}});
 }
 
 // Central difference's "auto" step cannot see a Hertz-type contact (no stiffness until it
@@ -164,13 +165,9 @@ TEST_F(Reliability, IntegratorSettingsThatCannotResolveTheContactsAreRefused) {
   linear["analysis"]["integrator"] = "newmark_linear_acceleration";
   json loose = bundled("two_sdof_girders");
   loose["analysis"]["convergence"] = {{"relative_tolerance", 1.0}};
-  for (const auto& [model, where, what] :
-       {std::tuple{hertz, "/analysis/time_step", "no stiffness until it touches"},
-        std::tuple{linear, "/analysis/integrator", "(beta = 0.1667 < 1/4) cannot impose"},
-        std::tuple{loose, "/analysis/convergence/relative_tolerance", "must be < 0.1"}}) {
-    const std::string file = write("settings.json", model);
-    for (const char* command : {"run", "check"}) expect_refused(command, file, {where, what});
-  }
+  expect_each_refused({{hertz, "/analysis/time_step", "no stiffness until it touches"},
+                       {linear, "/analysis/integrator", "(beta = 0.1667 < 1/4) cannot impose"},
+                       {loose, "/analysis/convergence/relative_tolerance", "must be < 0.1"}});
 }
 
 // Masses of 1e300 (m1 m2 overflows) or 1e-300 (underflows) were refused as "both ends fixed or
@@ -183,13 +180,9 @@ TEST_F(Reliability, MassesAndStoreyDampingThatMeanNothingSayWhy) {
   for (json& mass : light["masses"]) mass["mass"] = 1e-300;
   json elastic = bundled("adjacent_buildings");
   elastic["generators"][0]["left"]["storey_damping"] = "committed";
-  for (const auto& [model, where, what] :
-       {std::tuple{heavy, "/links/0/law/mass", "overflows: masses far beyond physical ones"},
-        std::tuple{light, "/links/0/law/mass", "or masses so small that m1 m2 underflows"},
-        std::tuple{elastic, "/generators/0/left/storey_damping", "with a yielding storey"}}) {
-    const std::string file = write("meaningless.json", model);
-    for (const char* command : {"run", "check"}) expect_refused(command, file, {where, what});
-  }
+  expect_each_refused({{heavy, "/links/0/law/mass", "overflows: masses far beyond physical ones"},
+                       {light, "/links/0/law/mass", "or masses so small that m1 m2 underflows"},
+                       {elastic, "/generators/0/left/storey_damping", "with a yielding storey"}});
 }
 
 // The bundled bridge without its girders' extra mass: the girder is a mechanism without mass.

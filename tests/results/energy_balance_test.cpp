@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <random>
@@ -270,12 +269,9 @@ TEST(EnergyBalance, CentralDifferenceBalancesWithTheDampingForceItApplied) {
 // backfill pushed by its moving support alone (70.4 kJ dissipated) balanced nothing and warned of
 // a 163 % error (audit 70). Now links >= links_hysteretic and the balance closes to round-off.
 TEST(EnergyBalance, LinksMovedBySupportsTakeTheirWholeWorkAndTheSupportsWorkIsInput) {
-  const std::string path =
-      std::string(POUND_SOURCE_DIR) + "/models/three_span_bridge_wave_passage.json";
-  std::ifstream file(path);
-  nlohmann::json model = nlohmann::json::parse(file);
-  model.erase("recorders");
-  const nlohmann::json energy = testing::model_summary(model.dump(), path)["energy"];
+  const nlohmann::json energy = testing::model_summary(
+      testing::bundled_model("three_span_bridge_wave_passage").dump(),
+      testing::bundled_model_path("three_span_bridge_wave_passage"))["energy"];
   const double links = energy["links"].get<double>();
   const double hysteretic = energy["links_hysteretic"].get<double>();
   const double error = energy["worst_balance_error"].get<double>();

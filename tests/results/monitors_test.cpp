@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -231,12 +230,9 @@ TEST(JointMonitors, OpeningClosingAndSeatMovementFromTheLinkAndTheGirder) {
 // total: each joint's seat movement its bearing's peak deformation, each pier's drift a
 // vanishingly soft probe spring's from its base to its top.
 TEST(DriftAndJointMonitors, UnderMovingSupportsMeasureTotalMotionAsLinksDo) {
-  const std::string path =
-      std::string(POUND_SOURCE_DIR) + "/models/three_span_bridge_wave_passage.json";
-  std::ifstream file(path);
-  nlohmann::json model = nlohmann::json::parse(file);
+  const std::string path = testing::bundled_model_path("three_span_bridge_wave_passage");
+  nlohmann::json model = testing::bundled_model("three_span_bridge_wave_passage");
   model["analysis"]["duration"] = 8.0;
-  model.erase("recorders");
   for (const char* pier : {"p1", "p2"})
     model["links"].push_back(
         {{"id", std::string("probe.") + pier},
@@ -278,9 +274,8 @@ TEST(DriftAndJointMonitors, UnderMovingSupportsMeasureTotalMotionAsLinksDo) {
 // bundled pair half the shear above a strike (6.66 MN against 13.7 MN in pair.right.s6, audit
 // 70). It is now the largest |V| of all its segments, as an element recorder of them gives it.
 TEST(DriftMonitors, AStruckColumnsPeakShearIsItsLargestSegments) {
-  const std::string path = std::string(POUND_SOURCE_DIR) + "/models/adjacent_buildings.json";
-  std::ifstream file(path);
-  nlohmann::json model = nlohmann::json::parse(file);
+  const std::string path = testing::bundled_model_path("adjacent_buildings");
+  nlohmann::json model = testing::bundled_model("adjacent_buildings");
   const std::vector<std::string> storeys = {"pair.right.s6", "pair.left.s5", "pair.right.s2"};
   nlohmann::json elements = nlohmann::json::array();
   for (const std::string& storey : storeys)
@@ -322,11 +317,8 @@ TEST(DriftMonitors, AStruckColumnsPeakShearIsItsLargestSegments) {
 // the pier's peak base shear now agrees with it within the pier's own inertia and damping forces
 // (1.4 % under a uniform excitation, where both were always total).
 TEST(DriftMonitors, APiersBaseShearUnderMovingSupportsIsItsSupportsReaction) {
-  const std::string path =
-      std::string(POUND_SOURCE_DIR) + "/models/three_span_bridge_wave_passage.json";
-  std::ifstream file(path);
-  nlohmann::json model = nlohmann::json::parse(file);
-  model.erase("recorders");
+  const std::string path = testing::bundled_model_path("three_span_bridge_wave_passage");
+  nlohmann::json model = testing::bundled_model("three_span_bridge_wave_passage");
   model["analysis"]["duration"] = 12.0;
   nlohmann::json expanded = nlohmann::json::parse(
       io::model_to_json(builder::expand(io::parse_model(model.dump(), path))));
@@ -378,11 +370,9 @@ TEST(DriftMonitors, APiersBaseShearUnderMovingSupportsIsItsSupportsReaction) {
 // histories, the left ends of the joints and the right abutment's end move off their seats
 // along -x, the others along +x.
 TEST(JointMonitors, AGirderEndsUnseatingMovementIsAwayFromItsJoint) {
-  const std::string path = std::string(POUND_SOURCE_DIR) + "/models/three_span_bridge.json";
-  std::ifstream file(path);
-  nlohmann::json model = nlohmann::json::parse(file);
+  const std::string path = testing::bundled_model_path("three_span_bridge");
+  nlohmann::json model = testing::bundled_model("three_span_bridge");
   model["analysis"]["duration"] = 12.0;
-  model.erase("recorders");
   const app::LoadedModel loaded = app::load_model_text(model.dump(), path);
   // monitor: girder end, seat, the sign of the movement away from the joint
   const std::vector<std::tuple<std::string, std::string, std::string, double>> ends = {
