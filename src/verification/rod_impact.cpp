@@ -358,6 +358,9 @@ RodImpactResult run_rod_impact(const RodImpactOptions& options) {
   result.metrics.run_time_s = run_time;
   result.metrics.steps = stats.steps;
   result.metrics.newton_iterations = stats.newton_iterations;
+  result.metrics.time_step = simulation.time_step;
+  result.metrics.stable_time_step = simulation.built.analysis.stable_time_step;
+  result.metrics.hard_contact = options.pair.law.type == "hard_contact";
   const ExactRodImpact exact = exact_solution(options.pair, final_state.time * (1.0 + 1e-9));
   for (std::size_t p = 0; p < snapshots.size(); ++p)
     if (snapshots[p].displacement.size() > 0)

@@ -35,6 +35,11 @@ struct RodImpactMetrics {
   // Kinetic + strain energy of the rods at the end over the initial kinetic energy (1 for an
   // exact elastic collision; above 1 means the integration made energy).
   double energy_ratio = 1.0;
+  // What explains a ratio above 1: the step, and for an explicit integrator its stable step with
+  // the contact closed (builder::AnalysisSpec::stable_time_step); whether the contact is hard.
+  double time_step = 0.0;
+  std::optional<double> stable_time_step;
+  bool hard_contact = false;
 };
 
 // Velocity and stress along both rods at one instant, FE against exact (Kawashima Fig. 6).
