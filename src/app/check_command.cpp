@@ -102,6 +102,9 @@ std::string check_text(const std::string& model_path, const verification::ModelC
                         with_unit(*check.explicit_step_contact, time));
   else
     text += fmt::format("  central difference: not available ({})\n", check.explicit_unavailable);
+  if (check.implicit_stable_step)
+    text += fmt::format("  {} stable step: {} in contact (above it the run is refused)\n",
+                        analysis.integrator.label(), with_unit(*check.implicit_stable_step, time));
   text += analysis_text(analysis, units);
   for (const verification::LinkCheck& c : check.contacts) {
     text += c.constraint ? fmt::format("  link {} ({}): a constraint, no stiffness", c.id, c.law)
@@ -192,6 +195,7 @@ io::Document check_document(const std::string& model_path, const verification::M
     set_step("explicit_stable_step_open", *check.explicit_step_open);
     set_step("explicit_stable_step_contact", *check.explicit_step_contact);
   }
+  if (check.implicit_stable_step) set_step("implicit_stable_step", *check.implicit_stable_step);
   std::vector<io::Document> link_documents;
   // What does not apply to a link is null, not 0: a Hertz-type law's stiffness at first touch,
   // the adjacent stiffness of bare masses, a duration not claimed, the extended penalty's numbers

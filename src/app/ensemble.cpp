@@ -59,6 +59,7 @@ bool is_headline(const std::string& path) {
                                              "peak_deformation",
                                              "ductility",
                                              "curvature_ductility",
+                                             "resultant_ductility",
                                              "peak_opening",
                                              "peak_seat_movement",
                                              "unseating_margin",

@@ -8,6 +8,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <numeric>
 
 #include "assembly/pushover.hpp"
 #include "assembly/static_equilibrium.hpp"
@@ -40,9 +41,47 @@ void check_target_resolved(const std::string& model_path, const PushoverRequest&
                                  r.target, 1e-9 * size, size));
 }
 
-// The load pattern over the free DOFs, its components along the push summing to 1.
+// Whether each node belongs to the structure of `pushed`: joined to it through elements, ties and
+// links that are not contacts (bearings, hinges, storeys, restrainers), never through a node
+// that does not move (supports are the ground, which every structure stands on). Two buildings
+// side by side are two structures; a bridge's girders, piers and abutments one.
+std::vector<char> pushed_structure(const model::Model& model, const model::DofMap& dofs,
+                                   Index pushed) {
+  const auto count = static_cast<Index>(model.nodes.size());
+  std::vector<Index> root(static_cast<std::size_t>(count));
+  std::iota(root.begin(), root.end(), Index{0});
+  const auto find = [&](Index node) {
+    while (root[static_cast<std::size_t>(node)] != node)
+      node = root[static_cast<std::size_t>(node)] =
+          root[static_cast<std::size_t>(root[static_cast<std::size_t>(node)])];
+    return node;
+  };
+  const auto moves = [&](Index node) {
+    for (int d = 0; d < dofs.dofs_per_node(); ++d)
+      if (!dofs.terms(node, d).empty()) return true;
+    return false;
+  };
+  const auto join = [&](Index a, Index b) {
+    if (moves(a) && moves(b)) root[static_cast<std::size_t>(find(a))] = find(b);
+  };
+  for (const auto& element : model.elements)
+    for (std::size_t k = 1; k < element->nodes().size(); ++k)
+      join(element->nodes()[k - 1], element->nodes()[k]);
+  for (const model::Constraint& constraint : model.constraints)
+    for (const Index slave : constraint.slaves) join(constraint.master, slave);
+  for (const model::Link& link : model.links)
+    if (link.role() != links::LinkRole::contact) join(link.node_i, link.node_j);
+  std::vector<char> in(static_cast<std::size_t>(count), 0);
+  for (Index node = 0; node < count; ++node)
+    in[static_cast<std::size_t>(node)] = find(node) == find(pushed);
+  return in;
+}
+
+// The load pattern over the free DOFs of the pushed node's structure, its components along the
+// push summing to 1: a mass or triangular pattern loads the pushed building, not its neighbour
+// across an open gap too (whose share made the base shear 1.4x the building's: audit 71).
 Vector load_pattern(const LoadedModel& loaded, const assembly::StructuralSystem& system,
-                    Index control, int direction, const PushoverRequest& request) {
+                    Index control, Index pushed, int direction, const PushoverRequest& request) {
   const std::string& pattern = request.pattern;
   Vector p = Vector::Zero(system.size());
   if (pattern == "point") {
@@ -54,9 +93,11 @@ Vector load_pattern(const LoadedModel& loaded, const assembly::StructuralSystem&
   const std::size_t up = model.dimension == 3 ? 2 : 1;
   double lowest = std::numeric_limits<double>::infinity();
   for (const model::Node& node : model.nodes) lowest = std::min(lowest, node.position[up]);
+  const std::vector<char> structure = pushed_structure(model, system.dofs(), pushed);
   Vector along = Vector::Zero(system.size());
   for (Index node = 0; node < static_cast<Index>(model.nodes.size()); ++node)
-    if (const Index row = system.dofs().own_equation(node, direction); row >= 0)
+    if (const Index row = system.dofs().own_equation(node, direction);
+        row >= 0 && structure[static_cast<std::size_t>(node)])
       along[row] = pattern == "mass"
                        ? 1.0
                        : model.nodes[static_cast<std::size_t>(node)].position[up] - lowest;
@@ -221,7 +262,27 @@ struct CapacitySummary {
   std::optional<double> initial_stiffness, final_slope;
   assembly::PushoverPoint peak;
   std::optional<FirstYield> first_yield;
+  // Where the base shear, past its peak, has fallen to zero (a yielded structure whose weight's
+  // P-Delta overcomes its post-yield stiffness): it has no lateral strength left, and past that
+  // the push, not the structure, holds it up.
+  std::optional<double> zero_shear_displacement;
 };
+
+// The displacement, interpolated between the curve's points, at which the base shear past the
+// peak first reaches zero or changes sign; none when it does not.
+std::optional<double> zero_shear_after_peak(const std::vector<assembly::PushoverPoint>& curve,
+                                            const assembly::PushoverPoint& peak) {
+  if (!(std::abs(peak.load_factor) > 0.0)) return std::nullopt;
+  const double sign = peak.load_factor > 0.0 ? 1.0 : -1.0;
+  for (std::size_t k = 1; k < curve.size(); ++k) {
+    const assembly::PushoverPoint &a = curve[k - 1], &b = curve[k];
+    if (std::abs(a.displacement) < std::abs(peak.displacement)) continue;
+    if (!(sign * b.load_factor <= 0.0) || !(sign * a.load_factor > 0.0)) continue;
+    const double share = a.load_factor / (a.load_factor - b.load_factor);
+    return a.displacement + share * (b.displacement - a.displacement);
+  }
+  return std::nullopt;
+}
 
 double slope(const assembly::PushoverPoint& a, const assembly::PushoverPoint& b) {
   return (b.load_factor - a.load_factor) / (b.displacement - a.displacement);
@@ -248,6 +309,7 @@ CapacitySummary summarise(const assembly::PushoverResult& run,
   if (summary.first_yield &&
       std::abs(summary.first_yield->base_shear) > std::abs(summary.peak.load_factor))
     summary.peak = {summary.first_yield->displacement, summary.first_yield->base_shear, 0};
+  summary.zero_shear_displacement = zero_shear_after_peak(curve, summary.peak);
   return summary;
 }
 
@@ -275,6 +337,8 @@ io::Document capacity_document(const std::string& model_path, const PushoverRequ
         .set("base_shear", summary.first_yield->base_shear);
     doc.set("first_yield", yield);
   }
+  if (summary.zero_shear_displacement)
+    doc.set("zero_shear_displacement", *summary.zero_shear_displacement);
   return doc;
 }
 
@@ -291,6 +355,12 @@ std::string capacity_text(const CapacitySummary& summary) {
     text += "  no link reached its yield deformation\n";
   text += fmt::format("  peak base shear {:.6g} at displacement {:.6g}\n", summary.peak.load_factor,
                       summary.peak.displacement);
+  if (summary.zero_shear_displacement)
+    text += fmt::format(
+        "  the base shear falls to zero at displacement {:.6g}: past its peak the structure lost "
+        "its lateral strength (its weight's P-Delta beyond its post-yield stiffness), a collapse; "
+        "the curve beyond holds it up by the push\n",
+        *summary.zero_shear_displacement);
   return text;
 }
 
@@ -372,7 +442,7 @@ PushSetup set_up_push(const LoadedModel& loaded, const std::string& model_path,
   const Index control =
       control_equation(loaded.built, system, node, direction, model_path, request);
   push.settings = {.equation = control, .target = request.target, .increments = request.increments};
-  push.settings.pattern = load_pattern(loaded, system, control, direction, request);
+  push.settings.pattern = load_pattern(loaded, system, control, node, direction, request);
   push.start = system.has_external_force() ? assembly::static_equilibrium(system, 0.0).displacement
                                            : Vector::Zero(system.size());
   push.settings.target += push.start[control];  // the push is measured from the loaded state

@@ -23,8 +23,9 @@ Static pushover of a model under displacement control: the model's constant load
 nodal loads) act first and stay on, its records are left out; a lateral load pattern then grows
 until node ID has moved D along the direction, in N equal increments (halved where Newton does
 not converge). The load pattern is a point load at the node (point), the masses times a uniform
-acceleration (mass), or the masses times their height above the lowest node (triangular),
-scaled so that the load factor is the base shear. Writes into DIR (default out/<model name>):
+acceleration (mass), or the masses times their height above the lowest node (triangular), of
+the structure the node is in (joined by elements, ties and links other than contacts: a
+building, not its neighbour), scaled so that the load factor is the base shear. Writes into DIR (default out/<model name>):
   pushover.csv   control displacement, base shear, and the deformation of every yielding link
   pushover.json  initial stiffness, first yield, peak base shear, final slope
 (`python3 tools/plot_pushover.py DIR` draws the curve: pushover.png)

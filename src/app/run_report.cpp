@@ -193,18 +193,25 @@ std::string drift_line(const results::DriftResult& drift, const ReportUnits& uni
   const std::optional<double> ductility = drift.ductility();
   const std::optional<double> demand = drift.elastic_demand_ratio();
   std::string text = fmt::format(
-      "  {} {}: peak drift {} ({:.3f} % of {}), residual {}{}{}{}, {} acceleration {} "
-      "(absolute){}{}\n",
+      "  {} {}: peak drift {} ({:.3f} % of {}), residual {}{}{}{}, {}{}{}{}\n",
       pier ? "pier" : "storey", m.id, with_unit(drift.peak.peak_drift, units.length),
       100.0 * drift.peak.peak_drift / m.height, with_unit(m.height, units.length),
       with_unit(drift.peak.residual_drift, units.length), still_swinging(drift.peak, units),
-      ductility ? fmt::format(", ductility {}", ratio(*ductility))
-      : demand  ? fmt::format(", elastic, {} x its yield drift", ratio(*demand))
+      ductility ? fmt::format(", ductility {}{}", ratio(*ductility),
+                              drift.resultant_ductility
+                                  ? fmt::format(" ({} resultant of both directions)",
+                                                ratio(*drift.resultant_ductility))
+                                  : std::string())
+      : demand ? fmt::format(", elastic, {} x its yield drift", ratio(*demand))
                 : std::string(),
       drift.curvature_ductility
           ? fmt::format(", curvature ductility {}", ratio(*drift.curvature_ductility))
           : std::string(),
-      pier ? "top" : "floor", with_unit(drift.peak.peak_acceleration, units.acceleration),
+      pier ? "top" : "floor",
+      drift.top_acceleration()
+          ? fmt::format(" acceleration {} (absolute)",
+                        with_unit(*drift.top_acceleration(), units.acceleration))
+          : std::string(" without mass, its acceleration not reported"),
       drift.peak_shear ? fmt::format(", {} {}", pier ? "base shear" : "shear",
                                      with_unit(*drift.peak_shear, units.force))
                        : std::string(),

@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "builder/generators.hpp"
+#include "core/errors.hpp"
 #include "links/coupled_shear.hpp"
 
 namespace pound::builder {
@@ -425,6 +426,9 @@ void add_pier(const Bridge& bridge, int pier, ModelSpec& out) {
         monitor.hinge_direction = direction == 0 ? 2 : 1;
       }
     }
+    // One hinge yielding on an ellipse: the two drifts yield together.
+    if (hinge && coupled_hinges(bridge, out))
+      monitor.yields_with = fmt::format("{}.p{}{}", spec.id, pier, direction == 0 ? ".y" : "");
     out.drift_monitors.push_back(monitor);
   }
 }
@@ -628,8 +632,20 @@ void check_law_roles(const GirderBridgeSpec& spec, const std::string& source) {
     require_law_role(*spec.bearing, LinkRole::spring, "a bearing", source, at + "/bearing");
 }
 
+// A deck without mass is a static part: its girders would follow their bearings with no inertia
+// of their own, and their impacts would move nothing (piers without mass are fine: their tops
+// are static DOFs the bearings and hinges hold).
+void require_deck_mass(const GirderBridgeSpec& spec, const std::string& source) {
+  if (deck_mass_per_length(spec) > 0.0) return;
+  throw InputError(source, fmt::format("/generators/{}/girder", spec.generator_index),
+                   "the girders have no mass (density and extra_mass both 0): a deck without "
+                   "inertia follows its bearings and its impacts move nothing; give extra_mass, "
+                   "the deck's mass per length, or the girders' density");
+}
+
 void add_girder_bridge(const GirderBridgeSpec& spec, ModelSpec& out) {
   check_law_roles(spec, out.source);
+  require_deck_mass(spec, out.source);
   const Bridge bridge{spec,
                       stations(spec),
                       spec.pier_height,

@@ -169,11 +169,48 @@ void refuse_auto_step_past_soft_contacts(const model::Model& model, const std::s
 
 }  // namespace
 
+std::optional<double> conditional_stable_step(const integrators::IntegratorChoice& integrator,
+                                              assembly::StructuralSystem& system) {
+  const std::optional<double> limit = integrator.stability_limit();
+  const Vector* lumped = system.lumped_mass();
+  if (integrator.is_explicit() || !limit || !lumped || !(lumped->array() > 0.0).all())
+    return std::nullopt;
+  try {
+    const double omega = integrators::highest_frequency(system, true);
+    if (omega > 0.0) return *limit / omega;
+  } catch (const std::domain_error&) {
+    // Past the number range: the run's own checks say what overflows.
+  }
+  return std::nullopt;
+}
+
+namespace {
+
+// Linear acceleration (and any Newmark with beta < gamma / 2) grows without bound past its
+// limit of omega dt, as central difference does past its step: the same refusal. Its damping
+// term is implicit, so (with gamma = 1/2) the limit does not fall with damping.
+void refuse_step_past_implicit_limit(const AnalysisSpec& analysis,
+                                     assembly::StructuralSystem& system,
+                                     const std::string& source) {
+  const std::optional<double> limit = conditional_stable_step(analysis.integrator, system);
+  if (!limit || !(analysis.longest_step() > *limit)) return;
+  throw InputError(
+      source, "/analysis/time_step",
+      fmt::format("{:.6g} is above the stable limit {:.6g} of {} ({:.4g} / omega_max with the "
+                  "links in contact): past it the response grows without bound; use a smaller "
+                  "step, or newmark_average_acceleration, stable at any step",
+                  analysis.longest_step(), *limit, analysis.integrator.label(),
+                  *analysis.integrator.stability_limit()));
+}
+
+}  // namespace
+
 void settle_time_step(AnalysisSpec& analysis, const model::Model& model,
                       assembly::StructuralSystem& system, const std::string& source) {
   if (!analysis.integrator.is_explicit()) {
     check_implicit_hard_contacts(model, system, source);
     refuse_hard_contacts_below_average_acceleration(analysis, model, source);
+    refuse_step_past_implicit_limit(analysis, system, source);
     return;
   }
   // Implicit methods carry massless DOFs (contact points, rotations) as static equations; the

@@ -62,10 +62,17 @@ BuiltModel build(const ModelSpec& spec, const std::vector<model::GroundMotion>& 
 bool seated_under_weight(const model::Link& link, const BuiltModel& built);
 
 std::unique_ptr<integrators::Integrator> make_integrator(const AnalysisSpec& analysis);
+// The longest stable step of an implicit method stable only below a limit of omega dt
+// (IntegratorEntry::stability_limit: linear acceleration), omega_max with the links in contact;
+// none for the others, or where a DOF has no lumped mass (the method condenses such DOFs, so
+// the eigenproblem is another) or omega_max overflows.
+std::optional<double> conditional_stable_step(const integrators::IntegratorChoice& integrator,
+                                              assembly::StructuralSystem& system);
 integrators::TransientSettings make_transient_settings(const AnalysisSpec& analysis);
 // For central difference: sets an "auto" step from the stable limit (links in contact), or
 // refuses one above it with the limit in the message, before any step is taken. A free DOF
-// without lumped mass is refused naming its node.
+// without lumped mass is refused naming its node. An implicit method stable only below a limit
+// (linear acceleration) has a step above it refused the same way.
 void settle_time_step(AnalysisSpec& analysis, const model::Model& model,
                       assembly::StructuralSystem& system, const std::string& source);
 

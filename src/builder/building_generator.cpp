@@ -107,8 +107,31 @@ std::array<double, 2> plan_centre(const AdjacentBuildingsSpec& pair, int side, b
   return {pair.separation + 0.5 * pair.right.plan[0], pair.offset};
 }
 
+// A floor a millionth of the building's heaviest or less is no floor (a typo, or a mass in the
+// wrong unit): its storeys would hold a point that has no inertia, whose acceleration (floor
+// spectra, the report's floor acceleration) means nothing, and which gravity's P-Delta can buckle
+// between two yielding storeys.
+constexpr double kLeastFloorMass = 1e-6;
+
+void require_floor_masses(const AdjacentBuildingsSpec& pair, int side, const std::string& source) {
+  const BuildingSpec& spec = side == 0 ? pair.left : pair.right;
+  double heaviest = 0.0;
+  for (const StoreySpec& storey : spec.storeys) heaviest = std::max(heaviest, storey.mass);
+  for (std::size_t s = 0; s < spec.storeys.size(); ++s)
+    if (spec.storeys[s].mass < kLeastFloorMass * heaviest)
+      throw InputError(
+          source,
+          fmt::format("/generators/{}/{}/storeys/{}/mass", pair.generator_index, kPairSides[side],
+                      s),
+          fmt::format("{:g} is {:.3g} of the building's heaviest floor ({:g}): a "
+                      "floor without mass (its storeys would hold a point with no "
+                      "inertia); give the floor its mass",
+                      spec.storeys[s].mass, spec.storeys[s].mass / heaviest, heaviest));
+}
+
 Building make_building(const AdjacentBuildingsSpec& pair, int side, bool space,
                        const std::string& source) {
+  require_floor_masses(pair, side, source);
   const BuildingSpec& spec = side == 0 ? pair.left : pair.right;
   const std::string name = fmt::format("{}.{}", pair.id, kPairSides[side]);
   Building building{.pair = pair,

@@ -149,6 +149,10 @@ std::vector<DriftMonitor> resolve_drift_monitors(const Resolver& resolver) {
     }
     monitors.push_back(monitor);
   }
+  for (std::size_t k = 0; k < specs.size(); ++k)
+    if (const std::optional<std::string>& partner = specs[k].yields_with)
+      for (std::size_t j = 0; j < specs.size(); ++j)
+        if (specs[j].id == *partner) monitors[k].yields_with = j;
   return monitors;
 }
 

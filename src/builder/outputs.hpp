@@ -57,6 +57,9 @@ struct DriftMonitor {
   // Points of the top floor from the top node (DriftMonitorSpec::corners): their drifts and the
   // storey's twist are reported too.
   std::vector<std::array<double, 3>> corners;
+  // The monitor (index) whose drift yields together with this one's (DriftMonitorSpec::
+  // yields_with): the summary gives the pair's resultant ductility.
+  std::optional<std::size_t> yields_with;
 };
 
 struct JointMonitor {

@@ -466,6 +466,9 @@ struct DriftMonitorSpec {
   // a floor's plan corners) whose drift along `direction` the summary reports too, with the
   // storey's twist (theta_z of the top less the bottom's).
   std::vector<std::array<double, 3>> corners;
+  // The monitor across this one whose drift yields together with this one's (a pier's two
+  // drifts bending one hinge that yields on an ellipse), by id: generators only.
+  std::optional<std::string> yields_with;
 };
 struct JointMonitorSpec {
   std::string id;

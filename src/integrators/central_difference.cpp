@@ -267,7 +267,10 @@ const IntegratorEntry& CentralDifference::entry() {
       .presets = {{"central_difference", {}}},
       .make = [](const std::map<std::string, double>&, const ConvergenceTest&)
           -> std::unique_ptr<Integrator> { return std::make_unique<CentralDifference>(); },
-      .acceleration_energy = [](const std::map<std::string, double>&) { return -0.125; }};
+      .acceleration_energy = [](const std::map<std::string, double>&) { return -0.125; },
+      .stability_limit = [](const std::map<std::string, double>&) -> std::optional<double> {
+        return 2.0;
+      }};
   return entry;
 }
 
@@ -940,16 +943,32 @@ bool CentralDifference::apply_link_forces(const State& from, double half_dt, Sta
   return all_finite(flags);
 }
 
-double stable_time_step(SecondOrderSystem& system, bool contacts_active) {
-  const Vector inverse_mass = diagonal_mass(system).cwiseInverse();
-  LinkSet& links = system.links();
-  const LinkTangents tangents = link_tangents(links, contacts_active);
-  HighestMode mode = highest_mode(system, inverse_mass, tangents);
+namespace {
+
+void refuse_overflow(const HighestMode& mode, const LinkTangents& tangents) {
   if (!std::isfinite(mode.eigenvalue) || !tangents.stiffness.allFinite() ||
       !tangents.damping.allFinite())
     throw std::domain_error(
         "the highest frequency overflows the number range (a stiffness or damping far beyond "
         "physical ones, or masses near zero), so no explicit step is stable");
+}
+
+}  // namespace
+
+double highest_frequency(SecondOrderSystem& system, bool contacts_active) {
+  const Vector inverse_mass = diagonal_mass(system).cwiseInverse();
+  const LinkTangents tangents = link_tangents(system.links(), contacts_active);
+  const HighestMode mode = highest_mode(system, inverse_mass, tangents);
+  refuse_overflow(mode, tangents);
+  return std::sqrt(std::max(mode.eigenvalue, 0.0));
+}
+
+double stable_time_step(SecondOrderSystem& system, bool contacts_active) {
+  const Vector inverse_mass = diagonal_mass(system).cwiseInverse();
+  LinkSet& links = system.links();
+  const LinkTangents tangents = link_tangents(links, contacts_active);
+  HighestMode mode = highest_mode(system, inverse_mass, tangents);
+  refuse_overflow(mode, tangents);
   const double omega = std::sqrt(std::max(mode.eigenvalue, 0.0));
   if (!(omega > 0.0)) return std::numeric_limits<double>::infinity();
   // Damping lowers the limit to (2 / w)(sqrt(1 + z^2) - z), with z the damping ratio of the

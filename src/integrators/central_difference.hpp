@@ -152,5 +152,8 @@ class CentralDifference final : public Integrator {
 // penalty mass); without, with its tangent at rest (open contacts: none). Throws std::domain_error
 // when M has a zero on its diagonal (explicit needs lumped mass on every DOF).
 double stable_time_step(SecondOrderSystem& system, bool contacts_active);
+// omega_max of the same eigenproblem, undamped (for an implicit method stable only below a limit
+// of omega dt, IntegratorEntry::stability_limit). The same requirements and errors.
+double highest_frequency(SecondOrderSystem& system, bool contacts_active);
 
 }  // namespace pound::integrators

@@ -97,6 +97,10 @@ double IntegratorChoice::acceleration_energy() const {
   return method_->acceleration_energy ? method_->acceleration_energy(values()) : 0.0;
 }
 
+std::optional<double> IntegratorChoice::stability_limit() const {
+  return method_->stability_limit ? method_->stability_limit(values()) : std::nullopt;
+}
+
 bool IntegratorChoice::dissipates() const {
   return method_->dissipates && method_->dissipates(values());
 }

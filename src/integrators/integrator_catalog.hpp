@@ -55,6 +55,11 @@ struct IntegratorEntry {
   // Whether the method damps the highest modes numerically with these parameters, so that its
   // energy balance cannot close (none: it never does).
   std::function<bool(const std::map<std::string, double>& parameters)> dissipates;
+  // The largest omega dt at which the undamped method stays stable, for a method stable only
+  // below it (central difference 2; Newmark with beta < gamma / 2, 1 / sqrt(gamma / 2 - beta):
+  // linear acceleration 2 sqrt(3)); none (or no function) where every step is stable.
+  std::function<std::optional<double>(const std::map<std::string, double>& parameters)>
+      stability_limit;
 
   const IntegratorParameter* parameter(std::string_view wanted) const;
 };
@@ -89,6 +94,8 @@ class IntegratorChoice {
   std::unique_ptr<Integrator> make(const ConvergenceTest& test = {}) const;
   double acceleration_energy() const;  // IntegratorEntry::acceleration_energy, or 0
   bool dissipates() const;             // IntegratorEntry::dissipates, or false
+  // IntegratorEntry::stability_limit, or none.
+  std::optional<double> stability_limit() const;
 
  private:
   const IntegratorEntry* method_;

@@ -125,7 +125,10 @@ const IntegratorEntry& Newmark::newmark_entry() {
       .name = "newmark",
       .description =
           "Newmark's method with Newton equilibrium iteration condensed onto the link "
-          "rows; unconditionally stable for gamma >= 1/2, beta >= (gamma + 1/2)^2 / 4",
+          "rows; unconditionally stable for 2 beta >= gamma >= 1/2; with 2 beta < gamma only for "
+          "omega_max dt < 1 / sqrt(gamma / 2 - beta) (linear acceleration: 2 sqrt(3), dt < 0.551 "
+          "T_min), and a longer step (omega_max with the links in contact, `pound check` gives "
+          "it) is refused",
       .parameters = {{"beta", 0.25, 0.0, true, std::nullopt, "beta > 0"},
                      {"gamma", 0.5, 0.5, false, std::nullopt, "gamma >= 1/2 (above: damps)"}},
       .presets = {{"newmark_average_acceleration", {{"beta", 0.25}, {"gamma", 0.5}}},
@@ -138,7 +141,14 @@ const IntegratorEntry& Newmark::newmark_entry() {
           [](const std::map<std::string, double>& p) {
             return p.at("gamma") == 0.5 ? 0.5 * (p.at("beta") - 0.25) : 0.0;
           },
-      .dissipates = [](const std::map<std::string, double>& p) { return p.at("gamma") > 0.5; }};
+      .dissipates = [](const std::map<std::string, double>& p) { return p.at("gamma") > 0.5; },
+      // Undamped amplification matrix's spectral radius 1 up to omega dt = 1 / sqrt(gamma / 2 -
+      // beta) (Hughes, The Finite Element Method, 1987, section 9.1).
+      .stability_limit = [](const std::map<std::string, double>& p) -> std::optional<double> {
+        const double margin = 0.5 * p.at("gamma") - p.at("beta");
+        if (!(margin > 0.0)) return std::nullopt;
+        return 1.0 / std::sqrt(margin);
+      }};
   return entry;
 }
 
@@ -186,7 +196,6 @@ void Newmark::initialize(SecondOrderSystem& system, State& state, double /*first
   factorizations_.by_step.clear();
   factorizations_.last = nullptr;
   external_.resize(0);  // zeroed at the first step of a system without loads
-  linear_part_checked_ = false;
   mass_solver_.solver.reset();
   factorizations_.uses.clear();
   const Index n = system.size();
@@ -338,10 +347,6 @@ Newmark::Factorization& Newmark::new_factorization(SecondOrderSystem& system, do
   // it penetrates, so its result would depend on where the iteration starts.
   if (!general_correction_ && !has_hard_contacts_) f.folded_stiffness = folded_stiffness(dt);
   if (f.folded_stiffness.size() > 0) {
-    // A DOF without mass that only links hold is refused as it is without folding (the builder
-    // names it: a mechanism without mass); whether it is does not depend on dt.
-    if (!linear_part_checked_) system.factor(c_m, damping_factor, 1.0);
-    linear_part_checked_ = true;
     f.solver = system.factor_with_links(c_m, damping_factor, 1.0, f.folded_stiffness);
   }
   if (f.solver) {

@@ -256,7 +256,6 @@ class Newmark final : public Integrator {
   // dF/d(delta), dF/d(delta_dot), dF/d(delta_ddot) of each row at the initial state, on the rows
   // that may be folded (a force law's, not a contact's nor a friction link's), zero elsewhere.
   Vector reference_stiffness_, reference_damping_, reference_mass_;
-  bool linear_part_checked_ = false;  // c_m M + c_c C + K factored alone once, when folding
   Matrix tangent_, jacobian_;
   PivotedLu jacobian_lu_;
   bool general_correction_ = false;

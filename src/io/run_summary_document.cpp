@@ -145,10 +145,14 @@ Document drift_document(const results::DriftResult& drift) {
       .set("time", drift.peak.time);
   doc.set("residual_drift", drift.peak.residual_drift)
       .set("residual_drift_ratio", drift.residual_ratio())
-      .set("end_swing", drift.peak.end_swing)
-      .set("peak_absolute_acceleration", drift.peak.peak_acceleration)
-      .set("acceleration_time", drift.peak.acceleration_time);
+      .set("end_swing", drift.peak.end_swing);
+  if (const std::optional<double> acceleration = drift.top_acceleration())
+    doc.set("peak_absolute_acceleration", *acceleration)
+        .set("acceleration_time", drift.peak.acceleration_time);
+  else
+    doc.set("top_without_mass", true);
   if (const std::optional<double> ductility = drift.ductility()) doc.set("ductility", *ductility);
+  if (drift.resultant_ductility) doc.set("resultant_ductility", *drift.resultant_ductility);
   if (const std::optional<double> demand = drift.elastic_demand_ratio())
     doc.set("elastic_demand_ratio", *demand);
   if (drift.curvature_ductility) doc.set("curvature_ductility", *drift.curvature_ductility);

@@ -8,8 +8,8 @@
 namespace pound::results {
 
 double EnergyTerms::largest_term() const {
-  return std::max(
-      {std::abs(input), kinetic, strain, std::abs(damping), std::abs(links), initial, round_off});
+  return std::max({std::abs(input), kinetic, strain, std::abs(damping), std::abs(links), initial,
+                   round_off, peak});
 }
 
 double EnergyTerms::residual() const {
@@ -142,6 +142,7 @@ void EnergyBalance::record(const integrators::State& state) {
     record_step_lumped(state, *mass);
   else
     record_general(state, algorithmic);
+  terms_.peak = terms_.largest_term();
   worst_ = std::max(worst_, terms_.balance_error());
   previous_external_.swap(external_);
   previous_stiffness_force_.swap(stiffness_force_);

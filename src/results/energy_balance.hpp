@@ -36,7 +36,11 @@ struct EnergyTerms {
   // held at rest by hard contacts has no energy at all, and its terms' round-off (1e-22 J) must
   // not read as 100 % of the largest.
   double round_off = 0.0;
-  // max(|input|, kinetic, strain, |damping|, |links|, initial, round_off)
+  // The largest term any step of the run has had so far: a free mass (a deck on a slider, a
+  // storey past its yield force of nothing) has its input and kinetic energy pass through zero
+  // together, and its balance's round-off must not read then as 22 % of a term near zero.
+  double peak = 0.0;
+  // max(|input|, kinetic, strain, |damping|, |links|, initial, round_off, peak)
   double largest_term() const;
   // kinetic + strain + damping + links - input - initial: the physical energy made up.
   double residual() const;

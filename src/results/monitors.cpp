@@ -191,6 +191,13 @@ void DriftMonitors::record(const integrators::State& state) {
       p.acceleration_time = state.time;
     }
   }
+  for (const ResultantPair& pair : pairs_) {
+    DriftPeak &first = peaks_[pair.first], &second = peaks_[pair.second];
+    const double ratio = std::hypot(first.residual_drift / pair.first_yield,
+                                    second.residual_drift / pair.second_yield);
+    first.peak_resultant_ratio = std::max(first.peak_resultant_ratio, ratio);
+    second.peak_resultant_ratio = first.peak_resultant_ratio;
+  }
 }
 
 void JointMonitors::record(const integrators::State& state) {

@@ -37,6 +37,9 @@ struct DriftPeak {
   double corner_time = 0.0;
   double peak_twist = 0.0;
   double twist_time = 0.0;
+  // With a partner across it (DriftMonitors::set_resultant_pairs: a pier's two drifts bending
+  // one biaxial hinge): the peak of sqrt((d / d_y)^2 + (d_p / d_yp)^2), both at the same step.
+  double peak_resultant_ratio = 0.0;
 };
 
 class DriftMonitors : public Observer {
@@ -63,6 +66,13 @@ class DriftMonitors : public Observer {
     swing_window_ = seconds;
     windows_.assign(storeys_.size(), RecentDrifts{});
   }
+  // Two monitors whose drifts, each over its yield drift, yield together (a pier's two drifts on
+  // one hinge that yields on an ellipse): their resultant ratio's peak is kept for both.
+  struct ResultantPair {
+    std::size_t first = 0, second = 0;
+    double first_yield = 0.0, second_yield = 0.0;
+  };
+  void set_resultant_pairs(std::vector<ResultantPair> pairs) { pairs_ = std::move(pairs); }
   void record(const integrators::State& state) override;
   // With each storey's largest corner drift, its corner and time, and its twist, from the peaks
   // of the plan sums.
@@ -80,6 +90,7 @@ class DriftMonitors : public Observer {
   void record_plan(const Where& w, const Places& at, DriftPeak& p) const;
 
   std::vector<Where> storeys_;
+  std::vector<ResultantPair> pairs_;
   GroundAcceleration& ground_;
   SupportMotion* support_;
   // The plan fields (corner, twist) and the windowed end swing are folded in when the peaks are

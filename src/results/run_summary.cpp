@@ -11,6 +11,7 @@
 #include "assembly/beam_3d.hpp"
 #include "core/errors.hpp"
 #include "core/units.hpp"
+#include "model/direction.hpp"
 #include "results/spectrum_recorder.hpp"
 
 namespace pound::results {
@@ -409,6 +410,13 @@ std::optional<std::string> dish_warning(const LinkResult& link, const WarningUni
       slide * slide / (2.0 * radius), u.length);
 }
 
+// Whether the run has a pounding contact (a contact link not seated under its weight).
+bool has_contacts(const RunSummary& run) {
+  return std::any_of(run.links.begin(), run.links.end(), [](const LinkResult& link) {
+    return link.role == links::LinkRole::contact && !link.seated;
+  });
+}
+
 // Warnings for results an engineer should not trust as they are.
 std::vector<std::string> result_warnings(const RunSummary& run, const UnitNames& names) {
   const WarningUnits u(names);
@@ -439,7 +447,7 @@ std::vector<std::string> result_warnings(const RunSummary& run, const UnitNames&
           "the result is meaningless there ({})",
           drift.monitor.kind == builder::DriftKind::pier ? "pier" : "storey", drift.monitor.id,
           100.0 * drift.largest_ratio(),
-          run.p_delta && drift.ductility().value_or(0.0) > 1.0
+          run.p_delta && drift.largest_ductility().value_or(0.0) > 1.0
               ? "it yielded, and under gravity's P-Delta a post-yield stiffness below P/h runs "
                 "away: read it as a collapse, not as a drift"
               : "a stiffness far too small?"));
@@ -472,7 +480,8 @@ std::vector<std::string> result_warnings(const RunSummary& run, const UnitNames&
                   "resolved; run newmark_average_acceleration, which conserves energy, "
                   "to see their share",
                   run.integrator)
-            : "a contact or a step was not resolved (reduce the time step)";
+        : has_contacts(run) ? "a contact or a step was not resolved (reduce the time step)"
+                            : "a step was not resolved (reduce the time step)";
     warnings.push_back(
         fmt::format("energy balance error reached {:.2f} % of the largest energy "
                     "term: {}",
@@ -500,6 +509,21 @@ DriftWeights along_drift(const model::Element& element, const builder::DriftMoni
           {axes.row(1).dot(about), axes.row(2).dot(about)}};
 }
 
+// The monitors whose drifts yield together (DriftMonitor::yields_with), each pair once, with
+// their yield drifts.
+std::vector<DriftMonitors::ResultantPair> resultant_pairs(
+    const std::vector<builder::DriftMonitor>& monitors) {
+  std::vector<DriftMonitors::ResultantPair> pairs;
+  for (std::size_t k = 0; k < monitors.size(); ++k) {
+    const builder::DriftMonitor& m = monitors[k];
+    if (!m.yields_with || *m.yields_with <= k || !m.yields || !m.yield_drift) continue;
+    const builder::DriftMonitor& partner = monitors[*m.yields_with];
+    if (!partner.yield_drift) continue;
+    pairs.push_back({k, *m.yields_with, *m.yield_drift, *partner.yield_drift});
+  }
+  return pairs;
+}
+
 }  // namespace
 
 RunObservers::RunObservers(const builder::BuiltModel& built,
@@ -515,6 +539,7 @@ RunObservers::RunObservers(const builder::BuiltModel& built,
       passive_links_(!system.has_link_motion()),
       drifts_(drift_places(built, system), ground_, support_.moving() ? &support_ : nullptr),
       joints_(joint_places(built, system), ground_, support_.moving() ? &support_ : nullptr) {
+  drifts_.set_resultant_pairs(resultant_pairs(built.drift_monitors));
   if (!built.analysis.integrator.is_explicit()) {
     const std::vector<char> step_forces =
         system.links().impulsive_hard_contact_rows(system.lumped_mass());
@@ -785,6 +810,51 @@ std::optional<double> hinge_plastic_rotation(const RunSummary& run,
   return hinge.shear_peak_plastic_deformation(
       static_cast<std::size_t>(curvature.hinge_direction - 1));
 }
+
+// Whether the monitor's top node has no lumped mass along its drift (on every equation it moves
+// with there): its acceleration is then a static DOF's. Not with a consistent mass.
+bool top_without_mass(const assembly::StructuralSystem& system,
+                      const builder::DriftMonitor& monitor) {
+  const Vector* mass = system.lumped_mass();
+  if (!mass) return false;
+  const model::DofMap& dofs = system.dofs();
+  const std::array<double, 6> along =
+      model::over_directions(monitor.along(), false, dofs.dimension());
+  for (int d = 0; d < dofs.dofs_per_node(); ++d) {
+    if (along[static_cast<std::size_t>(d)] == 0.0) continue;
+    for (const model::DofTerm& term : dofs.terms(monitor.top, d))
+      if ((*mass)[term.equation] > 0.0) return false;
+  }
+  return true;
+}
+
+// A hinge's peak rotation over its yield rotation (M / M_y below yield for a bilinear hinge,
+// whose elastic rotation is proportional to its moment); none without a yield rotation.
+std::optional<double> hinge_rotation_ratio(const RunSummary& run,
+                                           const builder::DriftMonitor::Curvature& curvature) {
+  const LinkResult& hinge = run.links[static_cast<std::size_t>(curvature.hinge)];
+  if (curvature.hinge_direction == 0)
+    return hinge.yield_deformation && *hinge.yield_deformation > 0.0
+               ? std::optional<double>(hinge.peak_demand() / *hinge.yield_deformation)
+               : std::nullopt;
+  if (!hinge.shear || !hinge.summary.shear) return std::nullopt;
+  const auto along = static_cast<std::size_t>(curvature.hinge_direction - 1);
+  const double yield = hinge.shear->numbers[along].yield_deformation();
+  return yield > 0.0 ? std::optional<double>(hinge.summary.shear->peak_deformations[along] / yield)
+                     : std::nullopt;
+}
+
+// The curvature ductility 1 + theta_p / (phi_y L_p) of a yielded hinge; below yield, the ratio of
+// its peak rotation to its yield rotation (below 1, as a displacement ductility below 1 is a
+// demand ratio), not 1 as if the section were at yield.
+std::optional<double> curvature_ductility(const RunSummary& run,
+                                          const builder::DriftMonitor::Curvature& curvature) {
+  const std::optional<double> plastic = hinge_plastic_rotation(run, curvature);
+  if (!plastic) return std::nullopt;
+  if (*plastic > 0.0)
+    return 1.0 + *plastic / (curvature.yield_curvature * curvature.plastic_hinge_length);
+  return hinge_rotation_ratio(run, curvature);
+}
 }  // namespace
 
 RunSummary summarise_run(const builder::BuiltModel& built, const assembly::StructuralSystem& system,
@@ -835,9 +905,10 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
   for (std::size_t k = 0; k < built.drift_monitors.size(); ++k) {
     DriftResult drift{built.drift_monitors[k], observers.drifts().peaks()[k]};
     if (const auto& curvature = drift.monitor.curvature)
-      if (const std::optional<double> plastic = hinge_plastic_rotation(run, *curvature))
-        drift.curvature_ductility =
-            1.0 + *plastic / (curvature->yield_curvature * curvature->plastic_hinge_length);
+      drift.curvature_ductility = curvature_ductility(run, *curvature);
+    drift.top_without_mass = top_without_mass(system, drift.monitor);
+    if (drift.monitor.yields_with && drift.ductility())
+      drift.resultant_ductility = drift.peak.peak_resultant_ratio;
     drift.peak_shear = observers.base_shear(k);
     // A storey's column carries only its storey stiffness: its moments mean nothing.
     if (drift.monitor.kind == builder::DriftKind::pier)
@@ -847,6 +918,8 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
       const int along = drift.monitor.shear_link_direction;
       drift.peak_shear = along == 0 ? std::max(s.peak_force, s.peak_tension)
                                     : s.shear->peak_forces[static_cast<std::size_t>(along - 1)];
+      if (along > 0 && drift.monitor.kind == builder::DriftKind::storey && drift.ductility())
+        drift.resultant_ductility = run.links[static_cast<std::size_t>(*link)].shear_ductility();
     }
     run.drifts.push_back(drift);
   }
@@ -901,11 +974,11 @@ void summarise_case(const RunSummary& run, CaseSummary& c) {
   }
   for (const DriftResult& drift : run.drifts) {
     c.max_drift_ratio = std::max(c.max_drift_ratio.value_or(0.0), drift.largest_ratio());
-    c.max_top_acceleration =
-        std::max(c.max_top_acceleration.value_or(0.0), drift.peak.peak_acceleration);
+    if (const std::optional<double> acceleration = drift.top_acceleration())
+      c.max_top_acceleration = std::max(c.max_top_acceleration.value_or(0.0), *acceleration);
     c.max_residual_drift_ratio =
         std::max(c.max_residual_drift_ratio.value_or(0.0), std::abs(drift.residual_ratio()));
-    if (const std::optional<double> ductility = drift.ductility())
+    if (const std::optional<double> ductility = drift.largest_ductility())
       c.max_ductility = std::max(c.max_ductility.value_or(0.0), *ductility);
   }
   c.energy_balance_error = run.worst_balance_error;

@@ -172,8 +172,19 @@ struct DriftResult {
   std::optional<double> corner_amplification() const;
   // The largest drift ratio anywhere on the floor: the corners' where there are any.
   double largest_ratio() const { return std::max(ratio(), corner_ratio().value_or(0.0)); }
-  // peak drift / yield drift where the model yields there (DriftMonitor::yields)
+  // peak drift / yield drift where the model yields there (DriftMonitor::yields), along the
+  // monitor's own direction (as codes check each principal direction)
   std::optional<double> ductility() const;
+  // Where the two directions yield together on an ellipse: the peak of
+  // sqrt((d_1 / d_y1)^2 + (d_2 / d_y2)^2), which passes 1 when the member yields, where each
+  // direction's ductility along a diagonal is 1/sqrt(2) of it. A storey's from its coupled link
+  // (LinkResult::shear_ductility), a pier's from its two drifts (DriftMonitor::yields_with).
+  std::optional<double> resultant_ductility;
+  // The larger of the two: what a member's yielding is judged by.
+  std::optional<double> largest_ductility() const {
+    if (!resultant_ductility) return ductility();
+    return std::max(ductility().value_or(0.0), *resultant_ductility);
+  }
   // the same ratio for an elastic member given a yield drift: a demand, not a ductility
   std::optional<double> elastic_demand_ratio() const;
   // 1 + theta_p / (phi_y L_p) of the member's hinge (DriftMonitor::curvature)
@@ -181,6 +192,13 @@ struct DriftResult {
   // Peak |shear| at the base of the storey or pier and, for a beam, |moment| there [F], [F L]
   // (DriftMonitor::base_element, shear_link).
   std::optional<double> peak_shear, peak_base_moment;
+  // The top has no lumped mass along the drift (a pier of density 0): a static DOF, whose Newmark
+  // acceleration is the step's double difference of its displacement, not an acceleration (a
+  // massless pier top read 3x the massive one's). peak.peak_acceleration is then not reported.
+  bool top_without_mass = false;
+  std::optional<double> top_acceleration() const {
+    return top_without_mass ? std::nullopt : std::optional<double>(peak.peak_acceleration);
+  }
 };
 
 struct JointResult {

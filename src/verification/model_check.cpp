@@ -403,6 +403,7 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
     }
   }
   check_explicit_steps(analysis, system, check);
+  check.implicit_stable_step = builder::conditional_stable_step(analysis.integrator, system);
   check_step_against_duration(built, check.warnings);
   warn_step_count(analysis, check.warnings);
   check_record_peaks(built, check.warnings);

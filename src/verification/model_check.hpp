@@ -46,6 +46,9 @@ struct ModelCheck {
   std::optional<double> explicit_step_open, explicit_step_contact;
   // Why there are no explicit steps: no lumped mass on some DOF, or no stable step at all.
   std::string explicit_unavailable;
+  // The longest stable step of the model's implicit method when it has one (linear
+  // acceleration: builder::conditional_stable_step), links in contact.
+  std::optional<double> implicit_stable_step;
   std::vector<LinkCheck> contacts;
   // How many impacts of a contact's end masses were simulated for the created-energy warning:
   // one for each distinct law spec, context and approach velocity (contact_energy_probe.hpp).

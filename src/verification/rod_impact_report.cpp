@@ -254,14 +254,15 @@ std::string energy_made_reason(const RodImpactMetrics& m) {
       fmt::format("the step is {:.3g} of central difference's stable step ({:.4g}{})", fraction,
                   *m.stable_time_step, m.hard_contact ? "" : " with the contact closed");
   if (fraction >= 0.999)
-    return step + ", where its highest mode grows linearly; take a step below it (\"auto\" "
-                  "takes 0.8 of it)";
+    return step +
+           ", where its highest mode grows linearly; take a step below it (\"auto\" "
+           "takes 0.8 of it)";
   if (m.hard_contact) return step + "; reduce the step";
   if (fraction >= kChatterFraction)
-    return step + fmt::format(": from about {:g} of it the contact chatters ({} contact episodes, "
-                              "exact {}) and {}; take 0.8 of it or less (\"auto\")",
-                              kChatterFraction, m.contact_episodes, m.exact_contact_episodes,
-                              penalty);
+    return step + fmt::format(
+                      ": from about {:g} of it the contact chatters ({} contact episodes, "
+                      "exact {}) and {}; take 0.8 of it or less (\"auto\")",
+                      kChatterFraction, m.contact_episodes, m.exact_contact_episodes, penalty);
   return step + ": " + penalty + "; reduce the step";
 }
 

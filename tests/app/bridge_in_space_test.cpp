@@ -228,6 +228,49 @@ TEST(BridgeInSpace, EachPierBaseHasAHingeAboutEachBendingAxis) {
   }
 }
 
+// One elliptic hinge at each pier base under the record's pair (x along, y across): the pier
+// yields where (d_x / d_yx)^2 + (d_y / d_yy)^2 reaches 1, each direction's drift then below its
+// own yield drift. Both of its monitors keep their direction's ductility and give the pair's
+// resultant, the peak over the steps of that root, equal to the one taken from the pier's top and
+// base histories; the case's largest ductility is the larger of the two.
+TEST(BridgeInSpace, APiersTwoDriftsOnOneHingeGiveTheirResultantDuctility) {
+  Json model = in_space(takeda_bridge(8.0), 0.0, 2);
+  model.erase("gravity");  // the histories below start from rest, as the run then does
+  model["generators"][0]["pier_hinge"] = {
+      {"yield_moment", 4.0e6},
+      {"yield_moment_lateral", 6.0e6},
+      {"law", {{"type", "bilinear_spring"}, {"hardening_ratio", 0.02}}}};
+  with_a_pair(model);
+  const BuiltModel built = app::load_model_text(model.dump(), kModels + "bridge.json").built;
+  const Json summary = testing::model_summary(model.dump(), kModels + "bridge.json");
+  for (const char* pier : {"bridge.p1", "bridge.p2"}) {
+    std::vector<const DriftMonitor*> monitors;
+    for (const std::string& id : {std::string(pier), std::string(pier) + ".y"})
+      for (const DriftMonitor& m : built.drift_monitors)
+        if (m.id == id) monitors.push_back(&m);
+    ASSERT_EQ(monitors.size(), 2u);
+    const auto id_of = [&](Index node) {
+      return built.model.nodes[static_cast<std::size_t>(node)].id;
+    };
+    const testing::NodeMotion motion = testing::run_node_motion(
+        built, {id_of(monitors[0]->top), id_of(monitors[0]->bottom)}, {0, 1});
+    double resultant = 0.0;
+    for (const std::vector<double>& row : motion.values)
+      resultant = std::max(resultant, std::hypot((row[0] - row[2]) / *monitors[0]->yield_drift,
+                                                 (row[1] - row[3]) / *monitors[1]->yield_drift));
+    for (const Json& entry : summary["piers"]) {
+      if (entry["id"] != monitors[0]->id && entry["id"] != monitors[1]->id) continue;
+      const double reported = entry["resultant_ductility"].get<double>();
+      std::cout << fmt::format(
+          "{}: ductility {:.4f}, resultant {:.6f}, from the histories {:.6f}\n",
+          entry["id"].get<std::string>(), entry["ductility"].get<double>(), reported, resultant);
+      EXPECT_NEAR(reported, resultant, 1e-12 * resultant);
+      EXPECT_GT(reported, entry["ductility"].get<double>());
+    }
+    EXPECT_GT(resultant, 1.0) << pier << " must yield";
+  }
+}
+
 // A pier's base moment in each drift direction is the moment of the hinge about the axis across
 // that direction (the base element's end i and the hinge meet at the massless hinge node, which
 // the solution holds in equilibrium to rounding): along the bridge the hinge about y, across it

@@ -30,13 +30,34 @@ std::string oscillator(const std::string& integrator, double time_step) {
                      4.0 * M_PI * M_PI, integrator, time_step);
 }
 
+// The same oscillator on two springs of twice its stiffness in series, their joint without mass:
+// a static DOF the implicit methods condense, so no stable step of linear acceleration is known
+// before the run (the builder refuses a step past it only where every DOF has a mass).
+std::string oscillator_on_massless_joint(const std::string& integrator, double time_step) {
+  return fmt::format(R"({{
+  "dimension": 1,
+  "nodes": [{{"id": "ground", "x": 0}}, {{"id": "joint", "x": 0.5}}, {{"id": "mass", "x": 1}}],
+  "materials": [{{"id": "spring", "youngs_modulus": {}, "density": 0}}],
+  "elements": [{{"id": "lower", "type": "truss", "nodes": ["ground", "joint"], "material": "spring", "area": 1}},
+               {{"id": "upper", "type": "truss", "nodes": ["joint", "mass"], "material": "spring", "area": 1}}],
+  "masses": [{{"node": "mass", "mass": 1}}],
+  "supports": [{{"node": "ground", "fix": ["x"]}}],
+  "initial_velocities": [{{"node": "mass", "x": 1}}],
+  "analysis": {{"integrator": "{}", "time_step": {}, "duration": 200}},
+  "recorders": [{{"type": "node", "nodes": ["mass"], "file": "mass.csv"}}]
+}})",
+                     4.0 * M_PI * M_PI, integrator, time_step);
+}
+
 class Divergence : public PoundProcess {};
 
 // Newmark's linear acceleration is stable only up to dt = sqrt(3)/pi T = 0.551 T: at 0.7 T each
 // step multiplies the amplitude, and the run must stop on the energy it creates, long before
-// the numbers overflow.
+// the numbers overflow. (With a mass on every DOF such a step is refused before the run:
+// Cli.LinearAccelerationStepAboveItsStableLimitIsRefused; here a massless joint hides it.)
 TEST_F(Divergence, EnergyCreatedByAnUnstableStepStopsTheRun) {
-  std::ofstream(path("model.json")) << oscillator("newmark_linear_acceleration", 0.7);
+  std::ofstream(path("model.json"))
+      << oscillator_on_massless_joint("newmark_linear_acceleration", 0.7);
   const Outcome outcome =
       pound({"run", path("model.json").string(), "--out", path("out").string()});
   EXPECT_EQ(outcome.exit_code, 3) << outcome.err;
@@ -96,6 +117,38 @@ TEST_F(Divergence, CentralDifferenceFromRestUnderARecordRunsToTheEnd) {
                            error);
   EXPECT_LT(error, 1e-10);
   EXPECT_GT(summary["energy"]["input"].get<double>(), 0.0);
+}
+
+// A mass on a spring that yields at 1e-6 N (a free mass) under five cycles of a 0.2 g sine: its
+// input and kinetic energy pass through zero together at each turn, where the balance's
+// round-off read as 0.4 % of the terms then (22.7 % at a yield force of 1e-300 N, with a
+// warning that blamed a contact the model does not have); it is measured against the largest
+// term of the run so far.
+TEST_F(Divergence, AFreeMassBalancesAgainstTheRunsLargestTerm) {
+  std::string record;
+  for (int k = 0; k < 2000; ++k)
+    record += fmt::format("{:.17g}\n", 0.2 * std::sin(2.0 * M_PI * 0.5 * 0.005 * k));
+  std::ofstream(path("sine.txt")) << record;
+  const std::string model = fmt::format(R"({{
+  "dimension": 1, "units": {{"length": "m", "time": "s", "mass": "kg"}},
+  "nodes": [{{"id": "ground", "x": 0}}, {{"id": "mass", "x": 1}}],
+  "masses": [{{"node": "mass", "mass": 1000}}],
+  "supports": [{{"node": "ground", "fix": ["x"]}}],
+  "links": [{{"id": "slider", "nodes": ["mass", "ground"],
+    "law": {{"type": "elastic_perfectly_plastic", "stiffness": 40000, "yield_force": 1e-6}}}}],
+  "excitations": [{{"record": "{}", "format": "columns", "time_step": 0.005, "units": "g"}}],
+  "analysis": {{"time_step": 0.005, "duration": 10}}
+}})",
+                                        path("sine.txt").string());
+  std::ofstream(path("model.json")) << model;
+  const Outcome outcome =
+      pound({"run", path("model.json").string(), "--out", path("out").string()});
+  EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_FALSE(contains(outcome.err, "energy balance error")) << outcome.err;
+  const nlohmann::json summary = nlohmann::json::parse(read_text(path("out/summary.json")));
+  const double error = summary["energy"]["worst_balance_error"].get<double>();
+  std::cout << fmt::format("free mass under a sine: worst energy balance error {:.1e}\n", error);
+  EXPECT_LT(error, 1e-9);
 }
 
 }  // namespace

@@ -243,12 +243,12 @@ TEST_F(PushoverCommand, AModelWithHardContactsIsRefusedNamingTheLink) {
   EXPECT_FALSE(std::filesystem::exists(path("out")));
 }
 
-// The bundled bridge's abutment walls hang on compression-only backfill and open joints: a mass
-// pattern loads them, nothing holds them as the push starts, and Newton, which holds such a DOF
-// by a 1e-12 spring, throws them off before a contact can hold them. The push stops at once,
-// exit 3 with the curve up to there, naming both walls and what to do.
-// A block that only a contact holds: a mass pattern pushes it away from the girder, and nothing
-// holds it. (The bundled bridges' backwalls were such masses until the abutment's stem held them.)
+// A mass that nothing holds as the push starts: Newton, which holds such a DOF by a 1e-12 spring,
+// throws it off before a link can hold it. The push stops at once, exit 3 with the curve up to
+// there, naming the mass and what to do. Here a block that only a slack restrainer ties to the
+// girder: it belongs to the girder's structure, a mass pattern loads it, and pushed toward the
+// girder nothing holds it. Tied by a contact alone, it is a body of its own, which the girder's
+// mass pattern does not load. (The bundled bridges' backwalls, on their backfill, are such.)
 constexpr const char* kFreeBlock = R"({
   "dimension": 1,
   "nodes": [{"id": "ground", "x": 0}, {"id": "girder", "x": 1}, {"id": "block", "x": 2}],
@@ -257,15 +257,15 @@ constexpr const char* kFreeBlock = R"({
                 "area": 1}],
   "masses": [{"node": "girder", "mass": 1000}, {"node": "block", "mass": 100}],
   "supports": [{"node": "ground", "fix": ["x"]}],
-  "links": [{"id": "contact", "nodes": ["girder", "block"], "axis": [1], "gap": 0.05,
-             "law": {"type": "gap_spring", "stiffness": 1e8}}],
+  "links": [{"id": "tie", "nodes": ["girder", "block"], "axis": [1],
+             "law": {"type": "restrainer", "stiffness": 1e8, "slack": 0.05}}],
   "analysis": {"time_step": 0.01, "duration": 1}})";
 
 TEST_F(PushoverCommand, AMassThatNothingHoldsIsNamedWhenThePushStops) {
   const std::string model = path("free_block.json").string();
   std::ofstream(model) << kFreeBlock;
-  const Outcome outcome = pound({"pushover", model, "--node", "girder", "--to", "0.04", "--pattern",
-                                 "mass", "--out", path("out").string()});
+  const Outcome outcome = pound({"pushover", model, "--node", "girder", "--to", "-0.04",
+                                 "--pattern", "mass", "--out", path("out").string()});
   EXPECT_EQ(outcome.exit_code, 3);
   std::cout << outcome.err;
   EXPECT_TRUE(contains(outcome.err,
@@ -276,8 +276,18 @@ TEST_F(PushoverCommand, AMassThatNothingHoldsIsNamedWhenThePushStops) {
   EXPECT_TRUE(std::filesystem::exists(path("out") / "pushover.csv"));
   // The point pattern loads the girder alone: the same push reaches its target.
   const Outcome point = pound(
-      {"pushover", model, "--node", "girder", "--to", "0.04", "--out", path("point").string()});
+      {"pushover", model, "--node", "girder", "--to", "-0.04", "--out", path("point").string()});
   EXPECT_EQ(point.exit_code, 0) << point.err;
+  // Against the girder through a contact only, the block is not the girder's structure.
+  std::string apart = kFreeBlock;
+  apart.replace(
+      apart.find(R"("law": {"type": "restrainer", "stiffness": 1e8, "slack": 0.05})"),
+      std::string(R"("law": {"type": "restrainer", "stiffness": 1e8, "slack": 0.05})").size(),
+      R"("gap": 0.05, "law": {"type": "gap_spring", "stiffness": 1e8})");
+  std::ofstream(path("apart.json")) << apart;
+  const Outcome contact = pound({"pushover", path("apart.json").string(), "--node", "girder",
+                                 "--to", "0.04", "--pattern", "mass", "--json"});
+  EXPECT_EQ(contact.exit_code, 0) << contact.err;
 }
 
 // The bundled bridges' backwalls are held toward the span by the abutment's stem: a mass pattern
@@ -289,6 +299,97 @@ TEST_F(PushoverCommand, TheBundledBridgesTakeAMassPattern) {
                                    "--out", path(bridge).string()});
     EXPECT_EQ(outcome.exit_code, 0) << bridge << ": " << outcome.err;
   }
+}
+
+// A three-storey shear building beside a one-storey neighbour 10 m away (an open gap), pushed at
+// its roof by its masses or a triangle: the pattern loads the pushed building alone. Elastic,
+// its mass pattern's initial stiffness is 1 / sum_i s_i / k_i with s_i the share of the
+// building's mass above storey i (1, 0.6, 0.267), 1.7143e8; and the curve does not change when
+// the neighbour's mass does. The neighbour's share of the pattern made the base shear 1.4x (mass)
+// and 1.2x (triangle) the building's (audit 71).
+TEST_F(PushoverCommand, AMassPatternLoadsThePushedBuildingOnly) {
+  const auto model = [&](double neighbour_mass) {
+    const std::string text = fmt::format(
+        R"({{"dimension": 2, "units": {{"length": "m", "time": "s", "mass": "kg"}},
+  "generators": [{{"type": "adjacent_buildings", "id": "pair", "separation": 10.0,
+    "left": {{"damping_ratio": 0.05, "storeys": [
+      {{"height": 3.2, "mass": 300000.0, "stiffness": 4e8,
+        "law": {{"type": "bilinear_spring", "yield_force": 3e6, "hardening_ratio": 0.05}}}},
+      {{"height": 3.5, "mass": 250000.0, "stiffness": 3e8,
+        "law": {{"type": "bilinear_spring", "yield_force": 2e6, "hardening_ratio": 0.05}}}},
+      {{"height": 3.0, "mass": 200000.0, "stiffness": 2e8,
+        "law": {{"type": "bilinear_spring", "yield_force": 1.2e6, "hardening_ratio": 0.05}}}}]}},
+    "right": {{"damping_ratio": 0.05, "storeys": [
+      {{"height": 3.2, "mass": {}, "stiffness": 4e8}}]}},
+    "law": {{"type": "gap_spring", "stiffness": 1e9}}}}],
+  "excitations": [{{"record": "{}/ground_motions/synthetic_firm_01.AT2"}}],
+  "analysis": {{"time_step": 0.005, "duration": 12}}}})",
+        neighbour_mass, POUND_SOURCE_DIR);
+    const std::string file = path(fmt::format("pair_{:g}.json", neighbour_mass)).string();
+    std::ofstream(file) << text;
+    return file;
+  };
+  const double elastic = 1.0 / (1.0 / 4e8 + 0.6 / 3e8 + (2.0 / 7.5) / 2e8);
+  for (const char* pattern : {"mass", "triangular"}) {
+    std::optional<nlohmann::json> first;
+    for (const double neighbour : {3e5, 3e6}) {
+      const Outcome outcome =
+          pound({"pushover", model(neighbour), "--node", "pair.left.f3", "--to", "0.15",
+                 "--pattern", pattern, "--increments", "300", "--json"});
+      ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+      const nlohmann::json result = nlohmann::json::parse(outcome.out);
+      std::cout << pattern << ", neighbour " << neighbour << " kg: initial stiffness "
+                << result["initial_stiffness"] << ", base shear at 0.15 m "
+                << result["peak_base_shear"] << "\n";
+      if (std::string(pattern) == "mass") {
+        EXPECT_NEAR(result["initial_stiffness"].get<double>() / elastic, 1.0, 1e-9);
+      }
+      if (!first) {
+        first = result;
+        continue;
+      }
+      EXPECT_EQ(result["initial_stiffness"], (*first)["initial_stiffness"]) << pattern;
+      EXPECT_EQ(result["peak_base_shear"], (*first)["peak_base_shear"]) << pattern;
+    }
+  }
+}
+
+// A one-storey building on an elastic-perfectly-plastic storey (F_y = 2e6 N, h = 3.2 m) carrying
+// its floor's weight W = 3e5 kg x g with chord P-Delta: past the yield its base shear is
+// F_y - W d / h, zero at d = F_y h / W = 2.1754 m, where it has no lateral strength left. The
+// push went on to 3 m and a negative base shear, exit 0, saying nothing (audit 71); it now gives
+// that displacement, to round-off of the closed form (the branch is straight between
+// increments), and says it is a collapse.
+TEST_F(PushoverCommand, AStrengthLostToPDeltaIsFoundWhereTheBaseShearIsZero) {
+  const std::string model = path("epp.json").string();
+  std::ofstream(model) << fmt::format(
+      R"({{"dimension": 2, "units": {{"length": "m", "time": "s", "mass": "kg"}},
+  "generators": [{{"type": "adjacent_buildings", "id": "pair", "separation": 10.0,
+    "left": {{"damping_ratio": 0.0, "storeys": [{{"height": 3.2, "mass": 3e5, "stiffness": 4e8,
+      "law": {{"type": "elastic_perfectly_plastic", "yield_force": 2e6}}}}]}},
+    "right": {{"damping_ratio": 0.0, "storeys": [{{"height": 3.2, "mass": 3e5, "stiffness": 4e8}}]}},
+    "law": {{"type": "gap_spring", "stiffness": 1e9}}}}],
+  "gravity": {{"p_delta": "chord"}},
+  "excitations": [{{"record": "{}/ground_motions/synthetic_firm_01.AT2"}}],
+  "analysis": {{"time_step": 0.005, "duration": 12}}}})",
+      POUND_SOURCE_DIR);
+  const Outcome outcome =
+      pound({"pushover", model, "--node", "pair.left.f1", "--to", "3", "--json"});
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const nlohmann::json result = nlohmann::json::parse(outcome.out);
+  const double exact = 2e6 * 3.2 / (3e5 * 9.80665);
+  const double found = result["zero_shear_displacement"].get<double>();
+  std::cout << "zero base shear at " << found << " m, F_y h / W = " << exact << " m\n";
+  EXPECT_NEAR(found, exact, 1e-12 * exact);
+  const Outcome text = pound(
+      {"pushover", model, "--node", "pair.left.f1", "--to", "3", "--out", path("out").string()});
+  EXPECT_TRUE(contains(text.out, "the base shear falls to zero at displacement 2.17539"))
+      << text.out;
+  EXPECT_TRUE(contains(text.out, "a collapse")) << text.out;
+  // Pushed short of it, there is none.
+  const Outcome short_of =
+      pound({"pushover", model, "--node", "pair.left.f1", "--to", "2", "--json"});
+  EXPECT_FALSE(nlohmann::json::parse(short_of.out).contains("zero_shear_displacement"));
 }
 
 // A 1-D model's DOF map has x only: --direction y read the next node's x (wrong numbers) or, at

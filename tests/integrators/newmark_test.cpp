@@ -8,9 +8,11 @@
 #include <iostream>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "integrators/integrator_catalog.hpp"
 #include "integrators/transient_analysis.hpp"
 #include "links/bilinear_spring.hpp"
 #include "links/elastic_spring.hpp"
@@ -117,6 +119,45 @@ TEST(Newmark, AlphaMethodsDampTheHighestModesAtTheirSpectralRadius) {
               << "\n";
     EXPECT_NEAR(rate / c.radius, 1.0, 0.01);
   }
+}
+
+// Newmark with beta < gamma / 2 is stable only up to the catalog's omega dt = 1 / sqrt(gamma / 2 -
+// beta) (linear acceleration: 2 sqrt(3)), the limit the builder refuses steps past: a free
+// vibration at 0.99 of it keeps its amplitude, at 1.01 of it grows without bound.
+TEST(Newmark, ConditionallyStableVariantsHoldBelowTheirCatalogLimitOnly) {
+  struct Case {
+    double beta, gamma;
+  };
+  for (const Case& c : {Case{1.0 / 6.0, 0.5}, Case{0.1, 0.5}, Case{0.2, 0.6}}) {
+    const integrators::IntegratorChoice choice(integrators::Newmark::newmark_entry(),
+                                               {{"beta", c.beta}, {"gamma", c.gamma}});
+    const std::optional<double> limit = choice.stability_limit();
+    ASSERT_TRUE(limit);
+    EXPECT_NEAR(*limit, 1.0 / std::sqrt(0.5 * c.gamma - c.beta), 1e-15);
+    const auto largest_after = [&](double omega_dt) {
+      Oscillator system(1.0, 0.0, omega_dt * omega_dt);  // omega dt as given with dt = 1
+      integrators::Newmark newmark(c.beta, c.gamma);
+      integrators::TransientAnalysis analysis(system, newmark,
+                                              {.time_step = 1.0, .end_time = 3000.0});
+      integrators::State state;
+      state.displacement = Vector::Constant(1, 1.0);
+      double largest = 0.0;
+      analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
+        largest = std::max(largest, std::abs(s.displacement[0]));
+      });
+      return largest;
+    };
+    const double below = largest_after(0.99 * *limit), above = largest_after(1.01 * *limit);
+    std::cout << "beta " << c.beta << ", gamma " << c.gamma << ": limit " << *limit
+              << ", largest |u| over 3000 steps at 0.99 of it " << below << ", at 1.01 " << above
+              << "\n";
+    EXPECT_LT(below, 10.0);
+    EXPECT_GT(above, 1e6);
+  }
+  EXPECT_FALSE(
+      integrators::IntegratorChoice::preset("newmark_average_acceleration").stability_limit());
+  EXPECT_FALSE(integrators::IntegratorChoice::preset("hht").stability_limit());
+  EXPECT_EQ(integrators::IntegratorChoice::preset("central_difference").stability_limit(), 2.0);
 }
 
 // A mass hitting a rigid wall through a gap spring: while in contact it is a half cycle of a

@@ -156,9 +156,8 @@ def test_a_pushover_gives_what_pound_pushover_writes(models, pound_program, tmp_
 
 
 def test_a_pushover_that_cannot_reach_its_target_is_an_analysis_error():
-    # A block that only a contact holds: a mass pattern pushes it away from the girder, and
-    # nothing holds it (the bundled bridges' backwalls were such masses until the abutment's
-    # stem held them).
+    # A block that only a slack restrainer ties to the girder: the girder's mass pattern loads
+    # it, and pushed toward the girder nothing holds it.
     model = pound.Model.from_dict({
         "dimension": 1,
         "nodes": [{"id": "ground", "x": 0}, {"id": "girder", "x": 1}, {"id": "block", "x": 2}],
@@ -167,15 +166,15 @@ def test_a_pushover_that_cannot_reach_its_target_is_an_analysis_error():
                       "material": "pier", "area": 1}],
         "masses": [{"node": "girder", "mass": 1000}, {"node": "block", "mass": 100}],
         "supports": [{"node": "ground", "fix": ["x"]}],
-        "links": [{"id": "contact", "nodes": ["girder", "block"], "axis": [1], "gap": 0.05,
-                   "law": {"type": "gap_spring", "stiffness": 1e8}}],
+        "links": [{"id": "tie", "nodes": ["girder", "block"], "axis": [1],
+                   "law": {"type": "restrainer", "stiffness": 1e8, "slack": 0.05}}],
         "analysis": {"time_step": 0.01, "duration": 1}})
     with pytest.raises(pound.AnalysisError) as raised:
-        model.pushover("girder", 0.04, pattern="mass")
+        model.pushover("girder", -0.04, pattern="mass")
     print(raised.value)
     assert raised.value.time is None and not raised.value.result.completed
     assert "The pattern loads node 'block', direction x" in raised.value.reason
-    push = model.pushover("girder", 0.04, pattern="mass", check=False)
+    push = model.pushover("girder", -0.04, pattern="mass", check=False)
     assert push.stopped == raised.value.reason
 
 

@@ -2,9 +2,8 @@
 // says, and every metric under its key.
 #include "verification/rod_impact_report.hpp"
 
-#include <gtest/gtest.h>
-
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -120,9 +119,9 @@ TEST(RodImpactMetrics, EnergyMadeNoteGivesThisRunsReason) {
   EXPECT_LT(fraction, 1.0);
   EXPECT_GT(m.energy_ratio, 2.0);
   EXPECT_GT(m.contact_episodes, 100);
-  EXPECT_NE(text.find(fmt::format("the step is {:.3g} of central difference's stable step",
-                                  fraction)),
-            std::string::npos);
+  EXPECT_NE(
+      text.find(fmt::format("the step is {:.3g} of central difference's stable step", fraction)),
+      std::string::npos);
   EXPECT_NE(text.find("the contact chatters"), std::string::npos);
   EXPECT_EQ(text.find("Courant 1"), std::string::npos);
   const nlohmann::json doc = nlohmann::json::parse(to_document(m).dump());
