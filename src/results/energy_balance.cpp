@@ -143,7 +143,7 @@ void EnergyBalance::record(const integrators::State& state) {
   else
     record_general(state, algorithmic);
   terms_.peak = terms_.largest_term();
-  worst_ = std::max(worst_, terms_.balance_error());
+  worst_residual_ = std::max(worst_residual_, std::abs(terms_.residual() + terms_.algorithmic));
   previous_external_.swap(external_);
   previous_stiffness_force_.swap(stiffness_force_);
   previous_.time = state.time;

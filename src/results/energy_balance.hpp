@@ -80,8 +80,13 @@ class EnergyBalance : public Observer {
   // F_{n+1} B du.
   void set_step_forces(const std::vector<char>& by_row);
   const EnergyTerms& terms() const { return terms_; }
-  // The largest balance error seen over the run (not only at the end).
-  double worst_balance_error() const { return worst_; }
+  // The largest balance error seen over the run (not only at the end): its largest |residual|
+  // over the run's largest term, so that a step's error is measured against the energies the run
+  // reaches, not those of its first steps (HHT, alpha -0.1, on a damped SDOF under a record at
+  // dt = 0.01: its start-up error was 9.0e-2 of the early terms, and is 1.35e-3 of the run's).
+  double worst_balance_error() const {
+    return terms_.peak > 0.0 ? worst_residual_ / terms_.peak : 0.0;
+  }
 
  private:
   double mass_norm(const Vector& acceleration);  // a^T M a
@@ -105,7 +110,7 @@ class EnergyBalance : public Observer {
   Vector damping_velocity_, previous_damping_velocity_, previous_acceleration_;
   double initial_acceleration_norm_ = 0.0;  // a_0^T M a_0
   EnergyTerms terms_;
-  double worst_ = 0.0;
+  double worst_residual_ = 0.0;  // the largest |residual + algorithmic| of a step
   bool started_ = false;
   integrators::State previous_;
   // work_ has the DOFs' size, link_step_ the link rows': one buffer for both would be reallocated

@@ -119,36 +119,38 @@ TEST_F(Cli, VerifyHelpShowsItsOptions) {
     EXPECT_TRUE(contains(outcome.out, option)) << option << " missing from\n" << outcome.out;
 }
 
-// Hard contacts under Newmark in a generated bridge and between two SDOF girders: the energy
-// balance closes to round-off (the contact's force is its step's impulse, and the balance takes
-// it so), no contact creates energy, and the girders pound as often as under central difference.
-// HHT damps the bridge's highest modes by design, which the energy balance counts as an error:
-// the warning says so instead of blaming a contact; the trapezoidal rule's run of the same model
-// balances, and gives no such warning.
+// HHT at alpha = -1/3 damps a 1.4 s oscillator stepped at 0.05 s (omega dt = 0.22) by design,
+// which the energy balance counts as an error (4.9e-2 of the run's largest term): the warning
+// says so instead of blaming a contact or a step; the trapezoidal rule's run of the same model
+// balances, and gives no such warning. (HHT at its default alpha on the bundled bridge balances
+// to 8.6e-5 of the run's largest term; measured against the terms of its first steps it read
+// 1 % or more, and warned.)
 TEST_F(Cli, BalanceWarningOfADissipativeMethodSaysTheMethodDampsByDesign) {
-  json bridge =
-      json::parse(read_text(fs::path(POUND_SOURCE_DIR) / "models" / "three_span_bridge.json"));
-  for (json& excitation : bridge["excitations"])  // relative to models/, the file moves
-    excitation["record"] =
-        (fs::path(POUND_SOURCE_DIR) / "models" / excitation["record"].get<std::string>())
-            .lexically_normal()
-            .string();
-  for (const char* integrator : {"hht", "newmark_average_acceleration"}) {
-    bridge["analysis"]["integrator"] = integrator;
-    const fs::path file = path(std::string(integrator) + ".json");
-    std::ofstream(file) << bridge.dump(2);
-    const fs::path out = path(std::string(integrator) + ".out");
+  json model =
+      json::parse(read_text(fs::path(POUND_SOURCE_DIR) / "models" / "girder_abutment_sdof.json"));
+  model["links"] = json::array();
+  model.erase("recorders");
+  model.erase("initial_velocities");
+  model["damping"] = {{"ratio", 0.05}, {"periods", {1.405, 0.5}}};
+  model["excitations"] = {
+      {{"record", std::string(POUND_SOURCE_DIR) + "/ground_motions/synthetic_firm_01.AT2"}}};
+  const std::vector<std::pair<std::string, json>> integrators{
+      {"hht", {{"type", "hht"}, {"alpha", -1.0 / 3.0}}},
+      {"newmark_average_acceleration", "newmark_average_acceleration"}};
+  for (const auto& [name, integrator] : integrators) {
+    model["analysis"] = {{"integrator", integrator}, {"time_step", 0.05}};
+    const fs::path file = path(name + ".json");
+    std::ofstream(file) << model.dump(2);
+    const fs::path out = path(name + ".out");
     const Outcome outcome = pound({"run", file.string(), "--out", out.string(), "--quiet"});
     ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
     const double error =
         json::parse(read_text(out / "summary.json"))["energy"]["worst_balance_error"].get<double>();
-    std::cout << integrator << ": worst balance error " << error << "\n";
-    if (std::string(integrator) == "hht") {
+    std::cout << name << ": worst balance error " << error << "\n";
+    if (name == "hht") {
       EXPECT_GT(error, 0.01);
-      EXPECT_TRUE(contains(outcome.err, "hht(alpha=-0.1) damps the highest modes by design"))
-          << outcome.err;
-      EXPECT_FALSE(contains(outcome.err, "a contact or a step was not resolved (reduce"))
-          << outcome.err;
+      EXPECT_TRUE(contains(outcome.err, "damps the highest modes by design")) << outcome.err;
+      EXPECT_FALSE(contains(outcome.err, "was not resolved (reduce")) << outcome.err;
     } else {
       EXPECT_LT(error, 1e-9);
       EXPECT_FALSE(contains(outcome.err, "energy balance error reached")) << outcome.err;
@@ -156,6 +158,9 @@ TEST_F(Cli, BalanceWarningOfADissipativeMethodSaysTheMethodDampsByDesign) {
   }
 }
 
+// Hard contacts under Newmark in a generated bridge and between two SDOF girders: the energy
+// balance closes to round-off (the contact's force is its step's impulse, and the balance takes
+// it so), no contact creates energy, and the girders pound as often as under central difference.
 TEST_F(Cli, HardContactUnderNewmarkBalancesEnergy) {
   json girders = json::parse(
       read_text(fs::path(POUND_SOURCE_DIR) / "models" / "two_girders_hard_contact.json"));
