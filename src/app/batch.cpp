@@ -165,8 +165,7 @@ CaseRun run_case_model(RunRequest request, const std::optional<builder::SetEnsem
               {{"ensemble.json", ensemble_document(result, options)}},
               result.copies_setup_s,
               result.copies_solve_s};
-  if (set->medians && result.unperturbed.failure.empty())
-    run.outcome.case_summary = result.median_summary();
+  run.outcome.case_summary = result.row_summary(set->medians);
   return run;
 }
 

@@ -80,12 +80,20 @@ class BatchDisplay {
 };
 
 std::string fragility_line(const results::FragilityFit& f) {
+  // Cases that gave no observation change what the rest say: the reader is told how many.
+  const std::string left_out =
+      f.left_out > 0
+          ? fmt::format(
+                " ({} of the model's {} cases left out: failed below the limit, refused, "
+                "or without a positive intensity)",
+                f.left_out, f.left_out + f.observations)
+          : std::string();
   if (!f.fitted)
-    return fmt::format("  fragility {} {} > {:.4g}: not fitted: {}\n", f.model, f.quantity, f.limit,
-                       f.reason);
+    return fmt::format("  fragility {} {} > {:.4g}: not fitted: {}{}\n", f.model, f.quantity,
+                       f.limit, f.reason, left_out);
   return fmt::format(
-      "  fragility {} {} > {:.4g}: median {:.4g} g, dispersion {:.3f} ({} of {} cases exceed)\n",
-      f.model, f.quantity, f.limit, f.median, f.dispersion, f.exceeded, f.observations);
+      "  fragility {} {} > {:.4g}: median {:.4g} g, dispersion {:.3f} ({} of {} cases exceed){}\n",
+      f.model, f.quantity, f.limit, f.median, f.dispersion, f.exceeded, f.observations, left_out);
 }
 
 // The cases, where the workers' time went and the fragility fits.
@@ -115,8 +123,9 @@ void print_report(const BatchOptions& batch, const BatchReport& report) {
       names += fmt::format(" and {} more", report.warned.size() - kNamed);
     std::cout << fmt::format(
         "  {} completed case(s) with warnings on their results (a drift past 10 % or a "
-        "collapse, a girder off its seat, energy created by contacts...; column 'warnings', "
-        "each case's summary.json says which), in the statistics as the others: {}\n",
+        "collapse, a girder off its seat, energy created by contacts, ensemble copies that "
+        "failed...; column 'warnings', each case's summary.json and ensemble.json say which), in "
+        "the statistics as the others: {}\n",
         report.warned.size(), names);
   }
   for (const results::FragilityFit& f : report.statistics.fragilities)

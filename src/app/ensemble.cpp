@@ -121,6 +121,13 @@ std::vector<QuantitySpread> spreads(const RunOutcome& unperturbed,
 
 }  // namespace
 
+results::CaseSummary EnsembleResult::row_summary(bool medians) const {
+  const bool completed = unperturbed.failure.empty();
+  results::CaseSummary summary = medians && completed ? median_summary() : unperturbed.case_summary;
+  if (completed && failed() > 0) summary.warnings = summary.warnings.value_or(0.0) + failed();
+  return summary;
+}
+
 int EnsembleResult::failed() const {
   return static_cast<int>(
       std::count_if(failures.begin(), failures.end(), [](const auto& f) { return !f.empty(); }));

@@ -47,6 +47,10 @@ struct EnsembleResult {
   // its median over the completed copies (left as it is where a copy lacks it, or none
   // completed): a batch row that a chaotic peak does not decide alone.
   results::CaseSummary median_summary() const;
+  // A batch row: the medians (`medians`, where the run completed) or the unperturbed run's
+  // numbers, with each copy that failed counted among its warnings: a failed copy is left out of
+  // the medians, and its case must be read before them (a collapse there biases them low).
+  results::CaseSummary row_summary(bool medians) const;
 };
 
 // What is wrong with the options: the number as Python's pound.run names it ("ensemble",

@@ -210,6 +210,10 @@ LoadedModel load_model_with_record(const std::string& path, const builder::Excit
   if (spec.excitations.empty()) spec.excitations.push_back({});
   builder::ExcitationSpec& first = spec.excitations.front();
   builder::ExcitationSpec replaced = record;
+  // A set serves models of any unit of time: its times are seconds (a 1 s Sa period read as 1 ms
+  // scaled a millisecond model's record to another target, and its columns' step read likewise).
+  replaced.sa_period *= spec.units.second();
+  if (replaced.time_step) *replaced.time_step *= spec.units.second();
   replaced.direction = first.direction;
   replaced.supports = first.supports;
   replaced.apparent_velocity = first.apparent_velocity;

@@ -59,8 +59,9 @@ LoadedModel load_model_text(const std::string& text, const std::string& path,
                             const std::optional<MotionOverride>& motion_override = {});
 
 // A batch case: `record` (its path as the program opens it, format, units, scale and IDA
-// factor) replaces the first excitation's; the model keeps its direction, supports and wave
-// passage. A model without excitations gets it as a uniform excitation along x.
+// factor; its times, a columns step and an Sa period, in seconds) replaces the first
+// excitation's; the model keeps its direction, supports and wave passage. A model without
+// excitations gets it as a uniform excitation along x.
 LoadedModel load_model_with_record(const std::string& path, const builder::ExcitationSpec& record);
 
 }  // namespace pound::app

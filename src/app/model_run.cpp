@@ -233,7 +233,10 @@ void summarise_record(const LoadedModel& loaded, const builder::IntensityMeasure
   if (loaded.records.empty() || loaded.built.excitation_factors.empty()) return;
   const AppliedRecord applied = applied_record(loaded, 0);
   c.pga_g = applied.pga_g;
-  const double period = intensity.type == builder::IntensityKind::sa ? intensity.period : 0.0;
+  // The set's period is in seconds, the records in the model's unit of time.
+  const double period = intensity.type == builder::IntensityKind::sa
+                            ? intensity.period * loaded.spec.units.second()
+                            : 0.0;
   if (const auto& second = loaded.second_components.front()) {
     // A pair: the larger component's PGA (the first alone read 0.38 g of a pair scaled to RotD50
     // 0.4 g whose second peaks at 0.55 g), and its RotD50 or the geometric mean of its
@@ -248,12 +251,12 @@ void summarise_record(const LoadedModel& loaded, const builder::IntensityMeasure
                   loaded.spec.units.gravity();
     return;
   }
-  c.intensity = intensity.type == builder::IntensityKind::sa
-                    ? applied.factor *
-                          model::spectral_acceleration(loaded.records.front(), intensity.period,
-                                                       intensity.damping) /
-                          loaded.spec.units.gravity()
-                    : applied.pga_g;
+  c.intensity =
+      intensity.type == builder::IntensityKind::sa
+          ? applied.factor *
+                model::spectral_acceleration(loaded.records.front(), period, intensity.damping) /
+                loaded.spec.units.gravity()
+          : applied.pga_g;
 }
 
 // The verification of a rod pair against the exact solution. The exact solution has limits of

@@ -464,11 +464,22 @@ std::optional<StatedUnit> stated_unit(const std::vector<Line>& header) {
   return stated.front();
 }
 
-// Reading cm/s^2 as g multiplies a record by 981: refuse a header that says otherwise.
+// Reading cm/s^2 as g multiplies a record by 981: refuse a header that says otherwise. Read as
+// "model" units (the model's length over its time squared), values the header states in another
+// unit are as wrong (a file in g read as m/s^2 is 9.81 times too weak).
 void require_stated_units(const std::string& path, const std::vector<Line>& header,
-                          AccelerationUnit units) {
+                          AccelerationUnit units, double g_in_model_units) {
   const auto stated = stated_unit(header);
-  if (!stated || units == AccelerationUnit::model || stated->unit == units) return;
+  if (!stated || stated->unit == units) return;
+  if (units == AccelerationUnit::model) {
+    const double factor = to_model_units(stated->unit, g_in_model_units);
+    if (std::abs(factor - 1.0) <= 1e-12) return;  // the model's unit is the stated one
+    fail(path, stated->line->number,
+         fmt::format("the header says the values are in {} ({}) but they are being read as "
+                     "model units, of which 1 {} is {:.6g}; set the units to {}",
+                     unit_name(stated->unit), quoted(stated->line->text), unit_name(stated->unit),
+                     factor, unit_name(stated->unit)));
+  }
   fail(path, stated->line->number,
        fmt::format("the header says the values are in {} ({}) but they are being read as {}; "
                    "set the units to {}",
@@ -500,7 +511,8 @@ bool names_npts(const Line& line) {
 }
 
 std::vector<double> read_at2(const std::string& path, const std::vector<Line>& lines,
-                             const RecordFormat& format, double& time_step) {
+                             const RecordFormat& format, double g_in_model_units,
+                             double& time_step) {
   // The size line: the first line naming NPTS near the top, else the 4th line (PEER's place).
   const std::size_t search = std::min(lines.size(), kHeaderSearchLines);
   auto size_index = static_cast<std::size_t>(
@@ -521,7 +533,7 @@ std::vector<double> read_at2(const std::string& path, const std::vector<Line>& l
   const RecordSize size = read_size_line(path, size_line);
   time_step = size.time_step * format.second;
   require_same_time_step(path, size_line.number, time_step, format.time_step, format.second);
-  require_stated_units(path, header, format.units);
+  require_stated_units(path, header, format.units, g_in_model_units);
 
   // NPTS is only the file's claim: a corrupt one (10^18) must end as "the file ends after n of
   // the values", not exhaust memory. Each value takes at least one character of the file.
@@ -603,7 +615,8 @@ double columns_time_step(const std::string& path, const std::vector<Line>& heade
 }
 
 std::vector<double> read_columns(const std::string& path, const std::vector<Line>& lines,
-                                 const RecordFormat& format, double& time_step) {
+                                 const RecordFormat& format, double g_in_model_units,
+                                 double& time_step) {
   if (format.column < 1)
     fail(path, 0, fmt::format("column {} does not exist: columns count from 1", format.column));
   if (format.time_column && format.column == 1)
@@ -643,7 +656,7 @@ std::vector<double> read_columns(const std::string& path, const std::vector<Line
   // One sample lasts no time: a run under it would end before its first step.
   if (values.size() < 2)
     fail(path, rows.back(), "only 1 row of data: a record needs at least 2 samples");
-  require_stated_units(path, header, format.units);
+  require_stated_units(path, header, format.units, g_in_model_units);
   time_step = columns_time_step(path, header, format, times, rows);
   return values;
 }
@@ -713,8 +726,8 @@ model::GroundMotion parse_ground_motion(const std::string& text, const std::stri
                     "its own .AT2 file)",
                     format.time_column ? std::string("a time column")
                                        : fmt::format("column {}", format.column)));
-  motion.acceleration = at2 ? read_at2(path, lines, format, motion.time_step)
-                            : read_columns(path, lines, format, motion.time_step);
+  motion.acceleration = at2 ? read_at2(path, lines, format, g_in_model_units, motion.time_step)
+                            : read_columns(path, lines, format, g_in_model_units, motion.time_step);
   model::scale(motion, to_model_units(format.units, g_in_model_units));
   // A value that overflows in model units (1.7e308 g) would make every result infinite.
   for (std::size_t k = 0; k < motion.acceleration.size(); ++k)

@@ -1457,7 +1457,8 @@ const Fields<ExcitationSpec>& record_format_fields() {
         if (excitation.time_column && !object.has("column")) excitation.column = 2;
       }),
       optional("units", &ExcitationSpec::units, names_choice({"g", "m/s2", "cm/s2", "model"}),
-               "of the file's values (AT2 files are in g)")
+               "of the file's values (AT2 files are in g; a unit its header states must be this, "
+               "or with `\"model\"` the model's length over its time squared)")
           .always_written(),
   };
   return fields;

@@ -1,6 +1,7 @@
 #include "io/set_reader.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <fnmatch.h>
 
 #include <algorithm>
@@ -134,6 +135,28 @@ std::vector<builder::BatchRecord> read_record_entry(JsonObject& object, const fs
   return records;
 }
 
+// A limit on a name that is no quantity: the quantities whose names begin with it (a limit on
+// "max_drift" means "max_drift_ratio"), or the closest one, and the list of them all.
+void refuse_unknown_quantities(const JsonValue& limits) {
+  std::vector<std::string> names;
+  for (const results::BatchQuantity& quantity : results::batch_quantities())
+    names.emplace_back(quantity.name);
+  for (const auto& field : limits.json().items()) {
+    const std::string& key = field.key();
+    if (std::find(names.begin(), names.end(), key) != names.end()) continue;
+    std::vector<std::string> beginning;
+    for (const std::string& name : names)
+      if (name.starts_with(key)) beginning.push_back(name);
+    const std::optional<std::string> closest = closest_name(key, names);
+    const std::string meant =
+        !beginning.empty() ? fmt::format(" (did you mean '{}'?)", fmt::join(beginning, "' or '"))
+        : closest          ? fmt::format(" (did you mean '{}'?)", *closest)
+                           : std::string();
+    JsonObject(limits).at(key).fail(
+        fmt::format("unknown quantity{}; a limit is on one of: {}", meant, fmt::join(names, ", ")));
+  }
+}
+
 builder::IntensityMeasure read_intensity(JsonObject& object) {
   builder::IntensityMeasure measure;
   measure.type = object.one_of("type", {"pga", "sa"}) == "sa" ? builder::IntensityKind::sa
@@ -226,10 +249,12 @@ builder::SetSpec read_set(JsonObject& top) {
     set.intensity = read_object(*intensity, read_intensity);
   if (const std::optional<JsonValue> limits = top.find("limits")) {
     JsonObject object(*limits);
+    // Zero is a limit too: "impacts" above 0 is any pounding at all.
     for (const results::BatchQuantity& quantity : results::batch_quantities())
-      if (const std::optional<double> value = object.if_present<double>(quantity.name, positive))
+      if (const std::optional<double> value =
+              object.if_present<double>(quantity.name, non_negative))
         set.limits.push_back({std::string(quantity.name), *value});
-    object.finish();  // a name that is not a quantity, with the closest one suggested
+    refuse_unknown_quantities(*limits);
   }
   return set;
 }

@@ -57,6 +57,7 @@ Document fragility_document(const results::FragilityFit& f) {
       .set("quantity", f.quantity)
       .set("limit", f.limit)
       .set("observations", static_cast<long>(f.observations))
+      .set("left_out", static_cast<long>(f.left_out))
       .set("exceeded", static_cast<long>(f.exceeded))
       .set("fitted", f.fitted);
   if (f.fitted)

@@ -246,12 +246,30 @@ SdofResponse sdof_response(const GroundMotion& motion, double period, double dam
   return response;
 }
 
+double free_vibration_peak(double u, double v, double omega, double damping_ratio) {
+  // u(t) = e^(-z w t) (u cos(w_d t) + c sin(w_d t)), c = (v + z w u) / w_d; u'(t) = 0 where
+  // v cos(w_d t) = d sin(w_d t), d = z w c + w_d u: the first such w_d t in [0, pi).
+  const double omega_d = omega * std::sqrt(1.0 - damping_ratio * damping_ratio);
+  const double c = (v + damping_ratio * omega * u) / omega_d;
+  const double d = damping_ratio * omega * c + omega_d * u;
+  double angle = std::atan2(v, d);
+  if (angle < 0.0) angle += std::numbers::pi;
+  if (angle >= std::numbers::pi) angle -= std::numbers::pi;
+  const double extremum = std::exp(-damping_ratio * omega * angle / omega_d) *
+                          (u * std::cos(angle) + c * std::sin(angle));
+  return std::max(std::abs(u), std::abs(extremum));
+}
+
 double spectral_acceleration(const GroundMotion& motion, double period, double damping_ratio) {
   if (moves_with_ground(motion, period, damping_ratio)) return motion.peak();
-  double largest = 0.0;
-  integrate_sdof(motion, period, damping_ratio,
-                 [&](std::size_t, double u, double) { largest = std::max(largest, std::abs(u)); });
+  double largest = 0.0, last_u = 0.0, last_v = 0.0;
+  integrate_sdof(motion, period, damping_ratio, [&](std::size_t, double u, double v) {
+    largest = std::max(largest, std::abs(u));
+    last_u = u;
+    last_v = v;
+  });
   const double omega = 2.0 * std::numbers::pi / period;
+  largest = std::max(largest, free_vibration_peak(last_u, last_v, omega, damping_ratio));
   const double sa = omega * omega * largest;
   if (!std::isfinite(sa))
     throw std::invalid_argument("the spectral acceleration of ground motion '" + motion.name +

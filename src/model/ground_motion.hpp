@@ -44,8 +44,15 @@ inline constexpr double kLongestSpectralPeriod = 1000.0;
 
 // Pseudo-spectral acceleration S_a = w^2 max|u| of a linear SDOF (period, damping ratio) under
 // the record, computed with the exact piecewise-linear recurrence (Nigam & Jennings 1969), so
-// it is exact for the linearly interpolated record. Period 0 gives the peak acceleration.
+// it is exact for the linearly interpolated record, and over the free vibration after its last
+// sample: the record is zero after it, as a run takes it, and an oscillator of a period longer
+// than the record peaks there (T = 1 s on 3 s of a record: 0.42 g, against 0.25 g over the
+// samples alone). Period 0 gives the peak acceleration.
 double spectral_acceleration(const GroundMotion& motion, double period, double damping_ratio);
+
+// The largest |u| of a linear oscillator's free vibration from (u, v) (omega, damping ratio in
+// [0, 1)): |u| itself, or its first extremum (the later ones decay).
+double free_vibration_peak(double u, double v, double omega, double damping_ratio);
 
 // Whether the oscillator's pseudo-acceleration is the ground acceleration itself: period 0, or a
 // valid damping ratio and a period a thousand times shorter than the time step, which follows

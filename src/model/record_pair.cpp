@@ -32,17 +32,42 @@ std::array<double, kAngles> rotated_peaks(const std::vector<double>& first,
   return peaks;
 }
 
-// Each component's response to project: the oscillator's displacement times w^2, or the ground
-// accelerations (period 0, or an oscillator that follows the ground rigidly), as
-// spectral_acceleration takes them, so that the projections at 0 and 90 degrees are the
-// components' Sa to the bit.
-std::vector<double> pseudo_acceleration_history(const GroundMotion& motion, double period,
-                                                double damping_ratio) {
-  if (moves_with_ground(motion, period, damping_ratio)) return motion.acceleration;
-  std::vector<double> history = sdof_response(motion, period, damping_ratio).displacement;
+// Each component's response to project: the oscillator's displacement times w^2 and its state
+// at the last sample, or the ground accelerations (period 0, or an oscillator that follows the
+// ground rigidly; no free vibration after), as spectral_acceleration takes them, so that the
+// projections at 0 and 90 degrees are the components' Sa to the bit.
+struct PseudoAcceleration {
+  std::vector<double> history;
+  bool oscillates = false;
+  double last_u = 0.0, last_v = 0.0;
+};
+
+PseudoAcceleration pseudo_acceleration_history(const GroundMotion& motion, double period,
+                                               double damping_ratio) {
+  if (moves_with_ground(motion, period, damping_ratio)) return {motion.acceleration};
+  SdofResponse response = sdof_response(motion, period, damping_ratio);
   const double omega = 2.0 * std::numbers::pi / period;
-  for (double& u : history) u *= omega * omega;
-  return history;
+  PseudoAcceleration result{std::move(response.displacement), true};
+  result.last_u = result.history.back();
+  result.last_v = response.velocity.back();
+  for (double& u : result.history) u *= omega * omega;
+  return result;
+}
+
+// The projections' peaks over the free vibration after the last sample: the projection of two
+// oscillators of one period and damping is one such oscillator, from the projected state.
+void add_free_vibration(const PseudoAcceleration& first, const PseudoAcceleration& second,
+                        double period, double damping_ratio, std::array<double, kAngles>& peaks) {
+  if (!first.oscillates || !second.oscillates) return;
+  const double omega = 2.0 * std::numbers::pi / period;
+  for (int angle = 0; angle < kAngles; ++angle) {
+    const double radians = angle * std::numbers::pi / 180.0;
+    const double c = angle == 90 ? 0.0 : std::cos(radians),
+                 s = angle == 0 ? 0.0 : std::sin(radians);
+    const double u = first.last_u * c + second.last_u * s, v = first.last_v * c + second.last_v * s;
+    peaks[angle] =
+        std::max(peaks[angle], omega * omega * free_vibration_peak(u, v, omega, damping_ratio));
+  }
 }
 
 }  // namespace
@@ -80,9 +105,10 @@ PairSpectralAcceleration pair_spectral_acceleration(const GroundMotionPair& pair
   require_one_grid(pair.first, pair.second);
   // One oscillator run per component (sdof_response checks the period and damping); the
   // projections at 0 and 90 degrees are the components' own Sa.
-  const std::array<double, kAngles> peaks =
-      rotated_peaks(pseudo_acceleration_history(pair.first, period, damping_ratio),
-                    pseudo_acceleration_history(pair.second, period, damping_ratio));
+  const PseudoAcceleration first = pseudo_acceleration_history(pair.first, period, damping_ratio);
+  const PseudoAcceleration second = pseudo_acceleration_history(pair.second, period, damping_ratio);
+  std::array<double, kAngles> peaks = rotated_peaks(first.history, second.history);
+  add_free_vibration(first, second, period, damping_ratio, peaks);
   PairSpectralAcceleration result;
   result.first = peaks[0];
   result.second = peaks[90];

@@ -83,7 +83,8 @@ IntensitySpread intensity_spread(const std::vector<FragilityObservation>& observ
 std::string unidentifiable_reason(const IntensitySpread& spread, std::size_t observations) {
   if (spread.exceeded == 0) return "no case exceeds the limit";
   if (spread.exceeded == observations) return "every case exceeds the limit";
-  if (spread.lowest == spread.highest)
+  // (To the last digits: records scaled to one target come out an ulp or so apart.)
+  if (spread.highest - spread.lowest <= 1e-9 * spread.highest)
     return "every case has the same intensity: the dispersion is not identifiable";
   // Complete separation: the likelihood grows without bound as the dispersion goes to 0.
   if (spread.highest_safe <= spread.lowest_exceeding) {
@@ -217,9 +218,12 @@ BatchStatistics batch_statistics(const builder::SetSpec& set,
     }
     for (const builder::ResponseLimit& limit : set.limits) {
       std::vector<FragilityObservation> observations;
+      std::size_t of_model = 0;
       const auto value_of = limited_quantity(limit).value;
       for (const results::CaseSummary& c : cases) {
-        if (c.model != model.id || !c.intensity || !(*c.intensity > 0.0)) continue;
+        if (c.model != model.id) continue;
+        ++of_model;
+        if (!c.intensity || !(*c.intensity > 0.0)) continue;
         if (c.status == CaseStatus::completed) {
           if (const std::optional<double> value = c.*value_of)
             observations.push_back({*c.intensity, *value > limit.value});
@@ -232,6 +236,7 @@ BatchStatistics batch_statistics(const builder::SetSpec& set,
         fit.reason = fmt::format("no completed case reports {}", limit.quantity);
       else
         fit = fit_lognormal_fragility(observations);
+      fit.left_out = of_model - observations.size();
       fit.model = model.id;
       fit.quantity = limit.quantity;
       fit.limit = limit.value;

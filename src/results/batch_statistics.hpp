@@ -46,6 +46,9 @@ struct FragilityFit {
   std::string model, quantity;
   double limit = 0.0;
   std::size_t observations = 0, exceeded = 0;
+  // The model's cases that gave no observation: failed or refused (but for a failure past the
+  // limit), or without a positive intensity (a record of zeros).
+  std::size_t left_out = 0;
   bool fitted = false;
   std::string reason;       // why there is no fit (no exceedance, all exceed, separated data, ...)
   double median = 0.0;      // [IM units]

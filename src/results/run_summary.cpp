@@ -453,10 +453,16 @@ std::vector<std::string> result_warnings(const RunSummary& run, const UnitNames&
               : "a stiffness far too small?"));
   for (const DriftResult& drift : run.drifts)
     if (const std::optional<double> demand = drift.elastic_demand_ratio(); demand && *demand > 1.0)
-      warnings.push_back(fmt::format(
-          "pier {}: drift {:.2f} times its yield drift, but the pier is elastic and cannot yield: "
-          "this is not a ductility demand (give the bridge a 'pier_hinge' for one)",
-          drift.monitor.id, *demand));
+      warnings.push_back(
+          drift.monitor.kind == builder::DriftKind::pier
+              ? fmt::format("pier {}: drift {:.2f} times its yield drift, but the pier is elastic "
+                            "and cannot yield: this is not a ductility demand (give the bridge a "
+                            "'pier_hinge' for one)",
+                            drift.monitor.id, *demand)
+              : fmt::format("storey {}: drift {:.2f} times the yield drift its monitor gives, but "
+                            "the model does not yield there (\"yields\": false): this is not a "
+                            "ductility demand",
+                            drift.monitor.id, *demand));
   if (const double created = run.contact_created_fraction(); created > kContactCreatedWarning) {
     const LinkResult* most = nullptr;
     for (const LinkResult& link : run.links)
@@ -950,14 +956,15 @@ void summarise_case(const RunSummary& run, CaseSummary& c) {
     if (link.role == links::LinkRole::tension) {
       if (!c.max_restrainer_force || s.peak_tension > *c.max_restrainer_force) {
         c.max_restrainer_force = s.peak_tension;
-        c.max_restrainer_link = link.id;
+        c.max_restrainer_link = s.peak_tension > 0.0 ? link.id : std::string();
       }
       continue;
     }
     c.impacts = c.impacts.value_or(0.0) + s.impacts;
     if (!c.max_pounding_force || s.peak_force > *c.max_pounding_force) {
       c.max_pounding_force = s.peak_force;
-      c.max_pounding_link = link.id;
+      // No link is named for a force of nothing (no contact engaged).
+      c.max_pounding_link = s.peak_force > 0.0 ? link.id : std::string();
     }
   }
   for (const JointResult& joint : run.joints) {

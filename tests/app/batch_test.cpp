@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -543,6 +544,54 @@ TEST_F(Batch, AnEnsembleSetRowsTheCopiesMedians) {
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("/ensemble/copies"), std::string::npos) << bad.err;
   EXPECT_FALSE(fs::exists(path("bad")));
+}
+
+// A set serves models of any unit of time, so its times are seconds: the same oscillator (T = 1 s,
+// 5 % damped) written in seconds and in milliseconds, under a record scaled to Sa(1 s) = 0.25 g
+// and one of columns at a 0.01 s step, with the intensity measure Sa(1 s), gives the same rows.
+// The millisecond model read the period as 1 ms (another record factor: drifts 0.0354 against
+// 0.0620, and its intensity near the PGA) while the plan said "at 1 s" (audit 71).
+TEST_F(Batch, ASetsTimesAreSecondsWhateverTheModelsUnitOfTime) {
+  const auto oscillator = [&](const std::string& name, const std::string& time, double second) {
+    std::ofstream(path(name)) << fmt::format(
+        R"({{"dimension": 1, "units": {{"length": "m", "time": "{}", "mass": "kg"}},
+  "nodes": [{{"id": "ground", "x": 0}}, {{"id": "top", "x": 1}}],
+  "materials": [{{"id": "col", "youngs_modulus": {}, "density": 0}}],
+  "elements": [{{"id": "col", "type": "truss", "nodes": ["ground", "top"], "material": "col", "area": 1}}],
+  "masses": [{{"node": "top", "mass": 1000, "mass_damping": {}}}],
+  "supports": [{{"node": "ground", "fix": ["x"]}}],
+  "monitors": {{"drifts": [{{"id": "col", "bottom": "ground", "top": "top", "height": 1.0}}]}},
+  "analysis": {{"time_step": {}, "duration": {}}}}})",
+        time, 4e3 * M_PI * M_PI / (second * second), 0.2 * M_PI / second, 0.002 * second,
+        8.0 * second);
+    return path(name).string();
+  };
+  std::string columns;
+  for (int k = 0; k < 400; ++k) columns += fmt::format("{:.17g}\n", 0.2 * std::sin(0.05 * k));
+  std::ofstream(path("sine.txt")) << columns;
+  std::ofstream(path("set.json")) << fmt::format(
+      R"({{"models": ["{}", "{}"],
+  "records": [{{"file": "{}/ground_motions/synthetic_firm_01.AT2", "scale": {{"sa": 0.25, "period": 1.0}}}},
+              {{"file": "sine.txt", "format": "columns", "time_step": 0.01, "id": "sine"}}],
+  "intensity_measure": {{"type": "sa", "period": 1.0}}}})",
+      oscillator("seconds.json", "s", 1.0), oscillator("milliseconds.json", "ms", 1000.0), kSource);
+  const Outcome outcome = pound(
+      {"batch", path("set.json").string(), "--out", path("out").string(), "-q", "--jobs", "1"});
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const auto rows = rows_of(read_text(path("out/batch_summary.csv")));
+  ASSERT_EQ(rows.size(), 5u);  // two models under two records
+  for (std::size_t row = 1; row <= 2; ++row) {
+    const std::size_t in_ms = row + 2;
+    ASSERT_EQ(cell(rows, row, "record"), cell(rows, in_ms, "record"));
+    for (const char* column : {"intensity", "max_drift_ratio", "pga_g"}) {
+      const double seconds = std::stod(cell(rows, row, column)),
+                   milliseconds = std::stod(cell(rows, in_ms, column));
+      std::cout << cell(rows, row, "record") << " " << column << ": model in s " << seconds
+                << ", in ms " << milliseconds << "\n";
+      EXPECT_NEAR(milliseconds / seconds, 1.0, 1e-9) << column;
+    }
+  }
+  EXPECT_NEAR(std::stod(cell(rows, 1, "intensity")), 0.25, 1e-12);
 }
 
 // While cases run the batch reports them in flight (the bar of `pound batch` on a terminal

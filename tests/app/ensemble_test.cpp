@@ -275,6 +275,31 @@ TEST_F(Ensemble, TheMedianSummaryTakesEachResponsesMedianOverTheCopies) {
             << ", median of 5 copies " << *median.max_pounding_force << "\n";
 }
 
+// A copy that failed is left out of a batch row's medians and counted among its warnings, so
+// that the batch names the case (a copy that created energy was dropped without a word from a
+// "completed" row: audit 71); the unperturbed rows count it too. A failed run's row is its own.
+TEST(EnsembleRow, CountsTheFailedCopiesAmongItsWarnings) {
+  EnsembleResult result;
+  result.unperturbed.case_summary.max_pounding_force = 5.0;
+  result.unperturbed.case_summary.warnings = 1.0;
+  result.factors = {1.001, 0.999, 1.002};
+  result.failures = {"", "the links have given the structure 11.3 %", ""};
+  for (const double force : {1.0, 100.0, 3.0}) {
+    results::CaseSummary copy;
+    copy.max_pounding_force = force;
+    result.copies.push_back(copy);
+  }
+  const results::CaseSummary medians = result.row_summary(true);
+  EXPECT_EQ(*medians.max_pounding_force, 2.0);  // of the two completed copies
+  EXPECT_EQ(*medians.warnings, 2.0);
+  const results::CaseSummary unperturbed = result.row_summary(false);
+  EXPECT_EQ(*unperturbed.max_pounding_force, 5.0);
+  EXPECT_EQ(*unperturbed.warnings, 2.0);
+  result.unperturbed.failure = "the state is not finite";
+  EXPECT_EQ(*result.row_summary(true).warnings, 1.0);
+  EXPECT_EQ(*result.row_summary(true).max_pounding_force, 5.0);
+}
+
 TEST_F(Ensemble, TheCommandWritesEnsembleJsonBesideTheRunsOwnOutputs) {
   const testing::Outcome outcome = pound({"run", linear_model(path(".")), "--ensemble", "2",
                                           "--out", path("out").string(), "--jobs", "2"});

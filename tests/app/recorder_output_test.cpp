@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <string>
 
 #include "app/model_run.hpp"
@@ -92,7 +93,16 @@ TEST(RecorderOutput, FloorSpectraAreTheSpectraOfTheRecordedAbsoluteAccelerations
       const std::string name = fmt::format("{}.sa_x_{:g}%", roof, 100.0 * damping);
       const std::vector<double>& sa = column(spectra, name);
       for (std::size_t p = 0; p < periods.size(); ++p) {
-        const double direct = model::spectral_acceleration(floor, periods[p], damping);
+        // Over the run's samples: the floor goes on moving after the run, so a floor spectrum
+        // takes no free vibration after its last sample as a record's spectrum does.
+        double direct = model::spectral_acceleration(floor, periods[p], damping);
+        if (periods[p] > 0.0) {
+          double largest = 0.0;
+          for (const double u : model::sdof_response(floor, periods[p], damping).displacement)
+            largest = std::max(largest, std::abs(u));
+          const double omega = 2.0 * std::numbers::pi / periods[p];
+          direct = omega * omega * largest;
+        }
         worst = std::max(worst, std::abs(sa.at(p) - direct) / direct);
       }
     }

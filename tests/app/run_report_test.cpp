@@ -413,3 +413,34 @@ TEST_F(RunReportProcess, TheBinaryAndTheLibrariesTestedComputeTheSameBits) {
 
 }  // namespace
 }  // namespace pound::app
+
+namespace pound::app {
+namespace {
+
+// A contact that never engages is no pounding link, nor an elastic storey monitor's drift a
+// pier's: the case names no link for a pounding force of 0 (it named the first contact), and the
+// warning for a drift past a monitor's yield drift where the model does not yield speaks of the
+// storey, not of a bridge's pier_hinge (audit 71).
+TEST(RunReport, NothingThatDidNotHappenIsNamed) {
+  nlohmann::json model = nlohmann::json::parse(
+      std::ifstream(std::string(POUND_SOURCE_DIR) + "/models/two_sdof_girders.json"));
+  model["links"][0]["gap"] = 10.0;
+  model.erase("recorders");
+  model["monitors"] = nlohmann::json::parse(
+      R"({"drifts": [{"id": "column", "bottom": "ground_1", "top": "girder_1", "height": 5.0,
+                      "yield_displacement": 1e-4, "yields": false}]})");
+  for (nlohmann::json& excitation : model["excitations"])
+    excitation["record"] =
+        std::string(POUND_SOURCE_DIR) + "/models/" + excitation["record"].get<std::string>();
+  const RunOutcome outcome = run_text("far_apart.json", model.dump());
+  ASSERT_TRUE(outcome.failure.empty()) << outcome.failure;
+  EXPECT_EQ(*outcome.case_summary.max_pounding_force, 0.0);
+  EXPECT_EQ(outcome.case_summary.max_pounding_link, "");
+  const std::string warnings = outcome.summary.dump();
+  std::cout << warnings.substr(warnings.find("\"warnings\"")) << "\n";
+  EXPECT_NE(warnings.find("storey column: drift"), std::string::npos);
+  EXPECT_EQ(warnings.find("pier_hinge"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace pound::app

@@ -461,6 +461,39 @@ INSTANTIATE_TEST_SUITE_P(GroundMotionReader, GroundMotionBadRecord,
                            return test.param.name;
                          });
 
+// "model" units are the model's length over its time squared: a file whose header states another
+// unit is refused as read in it, unless that unit is the model's own. An .AT2 file in g read as
+// "model" by a model in metres and seconds was accepted and ran 9.81 times too weak (audit 71).
+TEST(GroundMotionReader, ModelUnitsAreRefusedWhereTheHeaderStatesAnotherUnit) {
+  const std::string at2 =
+      "PEER NGA STRONG MOTION DATABASE RECORD\nTEST 1940, EL CENTRO, 180\n"
+      "ACCELERATION TIME SERIES IN UNITS OF G\nNPTS=    4, DT=   .0100 SEC\n"
+      "  .1000000E-01  .2000000E-01 -.1000000E-01  .0000000E+00\n";
+  RecordFormat model_units;
+  model_units.units = AccelerationUnit::model;
+  try {
+    (void)parse_ground_motion(at2, "in_g.AT2", model_units, 9.80665);
+    ADD_FAILURE() << "read without an error";
+  } catch (const InputError& error) {
+    std::cout << "message: " << error.what() << "\n";
+    EXPECT_EQ(error.where(), "line 3");
+    EXPECT_NE(error.reason().find("the header says the values are in g ("), std::string::npos);
+    EXPECT_NE(error.reason().find("but they are being read as model units, of which 1 g is "
+                                  "9.80665; set the units to g"),
+              std::string::npos)
+        << error.reason();
+  }
+  // A model whose own unit is the header's: read as it is.
+  EXPECT_EQ(parse_ground_motion(at2, "in_g.AT2", model_units, 1.0).acceleration[1], 0.02);
+  const std::string columns_in_cm = "# acc in cm/s2, dt=0.01\n1.0\n2.0\n3.0\n";
+  RecordFormat columns_as_model = model_units;
+  columns_as_model.format = "columns";
+  EXPECT_EQ(parse_ground_motion(columns_in_cm, "cm.txt", columns_as_model, 980.665).acceleration[2],
+            3.0);
+  EXPECT_THROW((void)parse_ground_motion(columns_in_cm, "cm.txt", columns_as_model, 9.80665),
+               InputError);
+}
+
 // The text entry point (used by the fuzz targets) reads exactly what the file reader reads, and
 // takes "auto" from the name it is given.
 TEST(GroundMotionReader, ParsesTextAsTheFileReaderReadsTheFile) {

@@ -157,7 +157,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadSet{"RepeatedScale", R"([{"op": "replace", "path": "/scales/1", "value": 0.5}])",
                "/scales/1: scale 0.5 is given twice"},
         BadSet{"LimitTypo", R"([{"op": "add", "path": "/limits/max_ductilty", "value": 2}])",
-               "/limits/max_ductilty: unknown field (did you mean 'max_ductility'?)"},
+               "/limits/max_ductilty: unknown quantity (did you mean 'max_ductility'?); a limit "
+               "is on one of: impacts, max_pounding_force,"},
+        // A quantity's name cut short: the names it begins (audit 71: none was suggested).
+        BadSet{"LimitCutShort", R"([{"op": "add", "path": "/limits/max_drift", "value": 0.01}])",
+               "/limits/max_drift: unknown quantity (did you mean 'max_drift_ratio'?)"},
+        BadSet{"NegativeLimit", R"([{"op": "add", "path": "/limits/impacts", "value": -1}])",
+               "/limits/impacts: must be >= 0"},
         BadSet{"SaWithoutPeriod", R"([{"op": "remove", "path": "/intensity_measure/period"}])",
                "/intensity_measure"},
         // Sa of an oscillator at or past critical damping: the batch stopped at its first case

@@ -114,6 +114,28 @@ TEST(RecordPair, RotDIsIndependentOfTheOrientationOfTheSensors) {
   }
 }
 
+// A short pair under a long oscillator peaks in the free vibration after its last samples, in
+// every direction: its RotD50 and RotD100 are those of the pair padded with 10 s of zeros, to that
+// sampling's (w dt)^2 / 8, and each component's Sa is spectral_acceleration's.
+TEST(RecordPair, AShortPairsRotDTakesTheFreeVibrationAfterIt) {
+  const auto first = [](double t) { return t <= 2.0 ? 3.0 * std::sin(2.0 * kPi * t) : 0.0; };
+  const auto second = [](double t) { return t <= 2.0 ? 2.0 * std::sin(kPi * t) : 0.0; };
+  const GroundMotionPair short_pair = make_component_pair(sampled("first", first, 0.005, 401),
+                                                          sampled("second", second, 0.005, 401));
+  const GroundMotionPair padded = make_component_pair(sampled("first", first, 0.005, 2401),
+                                                      sampled("second", second, 0.005, 2401));
+  for (const double period : {2.0, 5.0}) {
+    const PairSpectralAcceleration with_free = pair_spectral_acceleration(short_pair, period, 0.05);
+    const PairSpectralAcceleration sampled_free = pair_spectral_acceleration(padded, period, 0.05);
+    std::printf("T = %g s: RotD50 %.8g, padded %.8g; RotD100 %.8g, padded %.8g\n", period,
+                with_free.rot_d50, sampled_free.rot_d50, with_free.rot_d100, sampled_free.rot_d100);
+    EXPECT_LT(relative(with_free.rot_d50, sampled_free.rot_d50), 1e-5);
+    EXPECT_LT(relative(with_free.rot_d100, sampled_free.rot_d100), 1e-5);
+    EXPECT_EQ(with_free.first, spectral_acceleration(short_pair.first, period, 0.05));
+    EXPECT_EQ(with_free.second, spectral_acceleration(short_pair.second, period, 0.05));
+  }
+}
+
 TEST(RecordPair, ComponentsOnDifferentTimeGridsAreRefusedNamingBoth) {
   const auto refused = [](GroundMotion a, GroundMotion b, const std::string& what) {
     try {

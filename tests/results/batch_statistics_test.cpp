@@ -84,6 +84,11 @@ TEST(Fragility, SaysWhyThereIsNoFit) {
   const FragilityFit one_stripe = fit_lognormal_fragility({{0.3, true}, {0.3, false}});
   EXPECT_FALSE(one_stripe.fitted);
   EXPECT_NE(one_stripe.reason.find("same intensity"), std::string::npos);
+  // Records scaled to one target differ in their last digits: still one intensity (it read "the
+  // fitted probability does not grow with intensity": audit 71).
+  const FragilityFit ulps_apart = fit_lognormal_fragility(
+      {{0.27, true}, {0.2700000000000001, false}, {0.27, false}, {0.2700000000000001, true}});
+  EXPECT_NE(ulps_apart.reason.find("same intensity"), std::string::npos) << ulps_apart.reason;
   const FragilityFit separated =
       fit_lognormal_fragility({{0.1, false}, {0.2, false}, {0.3, true}, {0.4, true}});
   EXPECT_FALSE(separated.fitted);
@@ -156,8 +161,10 @@ TEST(BatchStatistics, GroupsByModelAndScaleOverCompletedCasesOnly) {
   ASSERT_EQ(stats.fragilities.size(), 2u);
   EXPECT_EQ(stats.fragilities[0].observations, 7u);
   EXPECT_EQ(stats.fragilities[0].exceeded, 4u);
+  EXPECT_EQ(stats.fragilities[0].left_out, 2u);  // e failed below the limit, d refused
   EXPECT_TRUE(stats.fragilities[0].fitted) << stats.fragilities[0].reason;
   EXPECT_EQ(stats.fragilities[1].observations, 6u);
+  EXPECT_EQ(stats.fragilities[1].left_out, 3u);  // and d's residual, not a peak
 }
 
 }  // namespace
