@@ -62,24 +62,28 @@ double check_samples(const std::string& name, const std::vector<double>& acceler
       .time_step;
 }
 
+// `second`: one second in the record's unit of time (its periods'), 1000 for milliseconds.
 void check_spectrum_request(const std::string& name, const std::vector<double>& periods,
-                            double damping_ratio) {
+                            double damping_ratio, double second) {
   if (!(damping_ratio >= 0.0 && damping_ratio < 1.0))
     throw InputError(name, "damping",
                      fmt::format("a damping ratio in [0, 1), got {:g}", damping_ratio));
+  const double longest = model::kLongestSpectralPeriod * second;
   for (std::size_t k = 0; k < periods.size(); ++k)
-    if (!(periods[k] >= 0.0 && periods[k] <= model::kLongestSpectralPeriod))
+    if (!(periods[k] >= 0.0 && periods[k] <= longest))
       throw InputError(name, fmt::format("periods[{}]", k),
-                       fmt::format("a period in [0, {:g}] s, got {:g}",
-                                   model::kLongestSpectralPeriod, periods[k]));
+                       fmt::format("a period in [0, {:g}] of the record's unit of time ({:g} s), "
+                                   "got {:g}",
+                                   longest, model::kLongestSpectralPeriod, periods[k]));
 }
 
 // Pseudo-spectral accelerations S_a = w^2 max|u| at each period (model::spectral_acceleration),
 // in the record's units.
 py::array_t<double> spectrum(const std::string& name, double time_step,
                              const std::vector<double>& accelerations,
-                             const std::vector<double>& periods, double damping_ratio) {
-  check_spectrum_request(name, periods, damping_ratio);
+                             const std::vector<double>& periods, double damping_ratio,
+                             double second) {
+  check_spectrum_request(name, periods, damping_ratio, second);
   const model::GroundMotion motion{name, time_step, accelerations};
   std::vector<double> values(periods.size());
   {
@@ -94,8 +98,9 @@ py::array_t<double> spectrum(const std::string& name, double time_step,
 // `rotation` [degrees] first: Sa of each component, geometric mean, RotD50, RotD100 (the
 // records' units) and RotD100's direction [degrees].
 py::dict pair_spectrum(const model::GroundMotion& first, const model::GroundMotion& second,
-                       const std::vector<double>& periods, double damping_ratio, double rotation) {
-  check_spectrum_request(first.name, periods, damping_ratio);
+                       const std::vector<double>& periods, double damping_ratio, double rotation,
+                       double unit_second) {
+  check_spectrum_request(first.name, periods, damping_ratio, unit_second);
   if (!std::isfinite(rotation))
     throw InputError(second.name, "rotation", fmt::format("a finite angle, got {:g}", rotation));
   model::GroundMotionPair pair;
@@ -132,19 +137,19 @@ void bind_records(py::module_& module) {
              py::arg("time_step"), py::arg("times"), py::arg("units"),
              "Checks a record given as samples; returns its time step.");
   module.def("spectrum", &spectrum, py::arg("name"), py::arg("time_step"), py::arg("accelerations"),
-             py::arg("periods"), py::arg("damping"),
+             py::arg("periods"), py::arg("damping"), py::arg("second") = 1.0,
              "Pseudo-spectral accelerations at the periods, in the record's units.");
   module.def(
       "pair_spectrum",
       [](const std::string& first_name, double first_step, const std::vector<double>& first,
          const std::string& second_name, double second_step, const std::vector<double>& second,
-         const std::vector<double>& periods, double damping, double rotation) {
+         const std::vector<double>& periods, double damping, double rotation, double unit_second) {
         return pair_spectrum({first_name, first_step, first}, {second_name, second_step, second},
-                             periods, damping, rotation);
+                             periods, damping, rotation, unit_second);
       },
       py::arg("first_name"), py::arg("first_step"), py::arg("first"), py::arg("second_name"),
       py::arg("second_step"), py::arg("second"), py::arg("periods"), py::arg("damping"),
-      py::arg("rotation"),
+      py::arg("rotation"), py::arg("unit_second") = 1.0,
       "A pair's Sa of each component, geometric mean, RotD50, RotD100 and its direction.");
   module.def("default_spectrum_periods", &model::default_spectrum_periods,
              "40 periods log-spaced from 0.02 s to 10 s.");

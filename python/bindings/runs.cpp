@@ -98,6 +98,7 @@ app::MotionOverride motion_from(const py::dict& record) {
   if (!record["scale"].is_none()) motion.scale_factor = record["scale"].cast<double>();
   motion.replaced_by = "pound.run(record=...)";
   if (!record["time_step"].is_none()) motion.time_step = record["time_step"].cast<double>();
+  if (!record["second"].is_none()) motion.record_second = record["second"].cast<double>();
   if (record.contains("accelerations")) {
     motion.accelerations = record["accelerations"].cast<std::vector<double>>();
     motion.times = record["times"].cast<std::vector<double>>();

@@ -30,6 +30,14 @@ def _scale(scale, name):
     return float(scale)
 
 
+def _time_unit(value, name):
+    """None (the model's unit of time), "s" or "ms"."""
+    if value is not None and value not in ("s", "ms"):
+        raise InputError(name, "time_unit", f"expected 's' or 'ms' (or None, the model's unit of "
+                                            f"time), got {value!r}")
+    return value
+
+
 def _word(value, name, where):
     """A str argument (a unit, a format, a name)."""
     if not isinstance(value, str):
@@ -42,15 +50,18 @@ class Record:
 
     ``Record(times_or_dt, accelerations, units="g")`` takes the time step (a number) or the
     sample times (an array, uniform), and the accelerations in ``units``: "g", "m/s2", "cm/s2" or
-    "model" (the model's own units). ``Record.from_file`` reads the files ``pound run --motion``
-    reads. Given to :func:`pound.run`, it replaces the model's first excitation's record (its
+    "model" (the model's own units). The times are in ``time_unit``, "s" or "ms", or without it
+    in the unit of time of the model the record drives. ``Record.from_file`` reads the files
+    ``pound run --motion`` reads, its times (and ``dt``) in seconds as the file's. Given to :func:`pound.run`, it replaces the model's first excitation's record (its
     direction and supports stay); with ``scale`` it is multiplied by that factor instead of the
     model's scaling, without it the model's scaling (factor, target PGA or Sa) applies to it.
     """
 
-    def __init__(self, times_or_dt, accelerations, units="g", *, name="<array>", scale=None):
+    def __init__(self, times_or_dt, accelerations, units="g", *, name="<array>", scale=None,
+                 time_unit=None):
         self.name = _word(name, "", "name")
         self.units = _word(units, name, "units")
+        self.time_unit = _time_unit(time_unit, self.name)
         self.scale = _scale(scale, name)
         self.path = None
         self._values = _samples(accelerations, name, "accelerations")
@@ -83,6 +94,7 @@ class Record:
         name, step, values, sha1, read_as = _core.read_record(path, format, units, column, dt,
                                                               time_column)
         record.name, record.units, record.path = name, units, path
+        record.time_unit = "s"  # a file's times, and dt beside it
         record.scale = _scale(scale, path)
         record.time_step, record.sha1, record.format = step, sha1, read_as
         record._column, record._dt, record._time_column = column, dt, time_column
@@ -109,14 +121,26 @@ class Record:
         """The largest |acceleration|, in the record's units (``scale`` applied)."""
         return float(np.max(np.abs(self.accelerations)))
 
+    @property
+    def _second(self):
+        """One second in the record's unit of time (seconds unless its time_unit is "ms")."""
+        return 1000.0 if self.time_unit == "ms" else 1.0
+
+    def _periods(self, periods):
+        """The periods asked, or the default 40 from 0.02 s to 10 s, in the record's unit."""
+        if periods is None:
+            return np.asarray(_core.default_spectrum_periods()) * self._second
+        return _samples(np.atleast_1d(periods), self.name, "periods")
+
     def spectrum(self, periods=None, damping=0.05):
-        """Pseudo-spectral acceleration Sa = w^2 max|u| of a linear oscillator at each period
-        [s] (default: 40 log-spaced from 0.02 s to 10 s), exact for the linearly interpolated
-        record (Nigam & Jennings), in the record's units. Returns {"periods", "sa"} arrays."""
-        periods = (np.asarray(_core.default_spectrum_periods()) if periods is None
-                   else _samples(np.atleast_1d(periods), self.name, "periods"))
+        """Pseudo-spectral acceleration Sa = w^2 max|u| of a linear oscillator at each period, in
+        the record's unit of time (default: 40 log-spaced from 0.02 s to 10 s), exact for the
+        linearly interpolated record (Nigam & Jennings) and its free vibration after the last
+        sample, in the record's units. Returns {"periods", "sa"} arrays. A record of arrays in
+        a millisecond model's time wants ``time_unit="ms"`` for these defaults."""
+        periods = self._periods(periods)
         sa = _core.spectrum(self.name, self.time_step, self.accelerations, periods,
-                            real(damping, "damping"))
+                            real(damping, "damping"), self._second)
         return {"periods": periods, "sa": np.asarray(sa)}
 
     def pair_spectrum(self, second, periods=None, damping=0.05, rotation=0.0):
@@ -137,16 +161,20 @@ class Record:
         if isinstance(rotation, bool) or not isinstance(rotation, numbers.Real):
             raise InputError(second.name, "rotation", f"expected an angle, got {rotation!r}")
         rotation, damping = real(rotation, "rotation"), real(damping, "damping")
-        periods = (np.asarray(_core.default_spectrum_periods()) if periods is None
-                   else _samples(np.atleast_1d(periods), self.name, "periods"))
+        if second.time_unit != self.time_unit:
+            raise InputError(second.name, "time_unit",
+                             f"the pair's components must be in one unit of time, got "
+                             f"{self.time_unit!r} and {second.time_unit!r}")
+        periods = self._periods(periods)
         result = _core.pair_spectrum(self.name, self.time_step, self.accelerations, second.name,
                                      second.time_step, second.accelerations, periods,
-                                     damping, rotation)
+                                     damping, rotation, self._second)
         return {"periods": periods, **{key: np.asarray(value) for key, value in result.items()}}
 
     def _motion(self):
         """The record as _core.run takes it."""
-        motion = {"name": self.name, "units": self.units, "scale": self.scale}
+        motion = {"name": self.name, "units": self.units, "scale": self.scale,
+                  "second": None if self.time_unit is None else self._second}
         if self.path is None:
             motion.update(accelerations=self._values, times=self._times,
                           time_step=self._given_step)
@@ -156,5 +184,6 @@ class Record:
         return motion
 
     def __repr__(self):
+        unit = self.time_unit or "(the model's unit of time)"
         return (f"pound.Record({self.name!r}, {len(self._values)} samples, dt = "
-                f"{self.time_step:g} s, units {self.units!r})")
+                f"{self.time_step:g} {unit}, units {self.units!r})")

@@ -36,6 +36,11 @@ struct MotionOverride {
   std::optional<std::string> units;  // of the file's values: "g", "m/s2", "cm/s2", "model"
   std::optional<int> column;
   std::optional<double> time_step;
+  // One second in the unit of time of `time_step` and `times`, where it is not the model's (as
+  // `pound run --dt` gives it): 1 for seconds (the Python module's Record.from_file, which knows
+  // no model and takes a file's times in seconds; a Record of arrays with time_unit "s"), 1000
+  // for "ms".
+  std::optional<double> record_second;
   bool time_column = false;
   std::optional<double> scale_factor, target_pga;  // target in g
   // A record given as values (the Python module's arrays), still in `units` (default g), read

@@ -55,12 +55,14 @@ struct Solved {
 std::vector<std::string> record_warnings(const LoadedModel& loaded) {
   std::vector<std::string> warnings;
   const double duration = loaded.built.analysis.duration;
+  const std::string& unit = loaded.spec.units.time;  // records are held in the model's time
   for (const model::GroundMotion& record : loaded.records)
     if (record.duration() > 10.0 * duration)
       warnings.push_back(fmt::format(
-          "record '{}' lasts {:.4g} s but the analysis stops at {:.4g} s: only its first {:.1f} % "
-          "is used (is /analysis/duration what you meant?)",
-          record.name, record.duration(), duration, 100.0 * duration / record.duration()));
+          "record '{}' lasts {:.4g} {} but the analysis stops at {:.4g} {}: only its first "
+          "{:.1f} % is used (is /analysis/duration what you meant?)",
+          record.name, record.duration(), unit, duration, unit,
+          100.0 * duration / record.duration()));
   return warnings;
 }
 

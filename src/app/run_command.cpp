@@ -51,7 +51,9 @@ constexpr const char* kMotionOptions[] = {"units", "column", "dt", "time-column"
 
 // --motion and its options; throws std::invalid_argument naming a bad option.
 MotionOverride motion_override(const std::string& path, const po::variables_map& vm) {
-  MotionOverride motion{path, {}, {}, {}, vm.count("time-column") > 0, {}, {}};
+  MotionOverride motion;
+  motion.path = path;
+  motion.time_column = vm.count("time-column") > 0;
   if (vm.count("units")) {
     motion.units = vm["units"].as<std::string>();
     try {

@@ -24,10 +24,23 @@ struct ExcitationPlace {
   }
 };
 
+// An Sa target's period is at most pound spectrum's 1000 s, in the model's unit of time (1000 s
+// is 1e6 ms: a millisecond model was held to 1000 ms).
+void check_sa_period(const ExcitationPlace& place) {
+  const ExcitationSpec& e = place.spec;
+  const double second = place.resolver.spec().units.second();
+  const double longest = model::kLongestSpectralPeriod * second;
+  if (e.target_sa && !(e.sa_period <= longest))
+    place.fail("/scale/period",
+               fmt::format("must be <= {:g} ({:g} s, pound spectrum's range), got {:g}", longest,
+                           model::kLongestSpectralPeriod, e.sa_period));
+}
+
 // The factor of a single record: to its target PGA or Sa (in g), or as given.
 double record_factor(const ExcitationPlace& place, const model::GroundMotion& motion,
                      double gravity) {
   const ExcitationSpec& e = place.spec;
+  check_sa_period(place);
   if (!(motion.peak() > 0.0) && (e.target_pga || e.target_sa))
     place.fail("/scale", fmt::format("record '{}' is all zeros: it cannot be scaled to a target",
                                      motion.name));
@@ -46,6 +59,7 @@ double record_factor(const ExcitationPlace& place, const model::GroundMotion& mo
 double pair_factor(const ExcitationPlace& place, const model::GroundMotionPair& pair,
                    double gravity) {
   const ExcitationSpec& e = place.spec;
+  check_sa_period(place);
   if (!e.target_pga && !e.target_sa) return e.scale_factor.value_or(1.0);
   const double target = (e.target_pga ? *e.target_pga : *e.target_sa) * gravity;
   const double rot_d50 =

@@ -11,6 +11,7 @@
 
 #include "io/json_reader.hpp"
 #include "io/model_reader.hpp"
+#include "model/ground_motion.hpp"
 #include "results/batch_quantities.hpp"
 
 namespace pound::io {
@@ -90,6 +91,13 @@ builder::BatchModel read_model_entry(const JsonValue& value, const fs::path& fol
 std::vector<builder::BatchRecord> read_record_entry(JsonObject& object, const fs::path& folder) {
   builder::ExcitationSpec excitation;
   read_record_fields(object, excitation);
+  // A set's periods are seconds: pound spectrum's range is 1000 s (a model's own excitation is
+  // held to it in its unit of time, builder/excitations.cpp).
+  if (excitation.target_sa && !(excitation.sa_period <= model::kLongestSpectralPeriod))
+    JsonObject(object.at("scale"))
+        .at("period")
+        .fail(fmt::format("must be <= {:g} (pound spectrum's range), got {}",
+                          model::kLongestSpectralPeriod, excitation.sa_period));
   const std::optional<JsonValue> file = object.find("file");
   const std::optional<JsonValue> records_folder = object.find("folder");
   const std::optional<JsonValue> id = object.find("id");

@@ -63,6 +63,40 @@ TEST(ModelLoading, AnAt2RecordDrivesAModelInMillisecondsAsInSeconds) {
   EXPECT_NEAR(newtons, *in_s.max_pounding_force, 1e-6 * *in_s.max_pounding_force);
 }
 
+// An Sa target at 1.5 s is 1500 of a millisecond model's units: the same record factor as 1.5 in
+// seconds (it was refused, held to 1000 of the model's units, pound spectrum's 1000 s read as
+// 1000 ms); past 1000 s, 1e6 ms, it is refused in the model's unit. A record far longer than the
+// analysis is warned of in the model's unit of time (it said "s" of milliseconds: audit 71).
+TEST(ModelLoading, AMillisecondModelTakesItsTimesInMilliseconds) {
+  const auto excitation = [](double period) {
+    return fmt::format(R"({{"record": "../ground_motions/synthetic_firm_01.AT2", "units": "g",
+                            "scale": {{"sa": 0.3, "period": {}}}}})",
+                       period);
+  };
+  const RunOutcome seconds = run_text(girder_at_a_wall("s", excitation(1.5)));
+  const RunOutcome milliseconds = run_text(girder_at_a_wall("ms", excitation(1500.0)));
+  const double in_s = seconds.case_summary.pga_g.value(),
+               in_ms = milliseconds.case_summary.pga_g.value();
+  std::cout << "PGA of the record scaled to Sa(1.5 s) = 0.3 g: " << in_s << " g in s, " << in_ms
+            << " g in ms\n";
+  EXPECT_NEAR(in_ms / in_s, 1.0, 1e-12);
+  try {
+    (void)load_model_text(girder_at_a_wall("ms", excitation(2e6)),
+                          std::string(POUND_SOURCE_DIR) + "/models/girder_at_a_wall.json");
+    ADD_FAILURE() << "a period of 2000 s was taken";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.where(), "/excitations/0/scale/period");
+    EXPECT_NE(error.reason().find("must be <= 1e+06 (1000 s, pound spectrum's range)"),
+              std::string::npos)
+        << error.reason();
+  }
+  std::string short_run = girder_at_a_wall("ms", excitation(1500.0));
+  short_run.replace(short_run.find("\"duration\": 8000"), 16, "\"duration\": 1000");
+  const RunOutcome warned = run_text(short_run);
+  const std::string warnings = warned.summary.dump();
+  EXPECT_NE(warnings.find("ms but the analysis stops at 1000 ms"), std::string::npos) << warnings;
+}
+
 TEST(ModelLoading, ATimeColumnWithoutAColumnReadsTheColumnAfterIt) {
   const std::string folder = ::testing::TempDir();
   const std::string file = folder + "/time_and_acceleration.txt";

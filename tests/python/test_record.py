@@ -98,7 +98,29 @@ def test_periods_beyond_any_structures_are_refused(repository):
     assert record.spectrum([1000.0])["sa"][0] > 0.0
     with pytest.raises(pound.InputError) as raised:
         record.spectrum([1.0, 1e308])
-    assert raised.value.path == "periods[1]" and "in [0, 1000] s" in raised.value.message
+    assert raised.value.path == "periods[1]"
+    assert "in [0, 1000] of the record's unit of time (1000 s)" in raised.value.message
+
+
+def test_a_record_in_milliseconds_takes_its_periods_in_milliseconds(repository):
+    # The same samples with their step in ms (time_unit="ms"): the default periods are the same
+    # 0.02 to 10 s, given in ms, and so are the spectra; periods up to 1000 s (1e6 ms) are
+    # taken. Without time_unit a step of 10 read the defaults as 0.02 to 10 ms, a spectrum flat
+    # at the PGA, and refused 2000 ms as past "1000 s" (audit 71).
+    in_seconds = pound.Record.from_file(repository / "ground_motions" / "synthetic_firm_01.AT2")
+    in_ms = pound.Record(1000.0 * in_seconds.time_step, in_seconds.accelerations, time_unit="ms")
+    print(in_ms)
+    seconds, milliseconds = in_seconds.spectrum(), in_ms.spectrum()
+    assert np.allclose(milliseconds["periods"], 1000.0 * seconds["periods"], rtol=1e-15)
+    assert np.allclose(milliseconds["sa"], seconds["sa"], rtol=1e-12)
+    assert in_ms.spectrum([2000.0])["sa"][0] == pytest.approx(in_seconds.spectrum([2.0])["sa"][0],
+                                                              rel=1e-12)
+    assert "dt = 10 ms" in repr(in_ms) and "dt = 0.01 s" in repr(in_seconds)
+    pair = in_ms.pair_spectrum(in_ms, [500.0])
+    assert pair["rotd50"][0] == pytest.approx(in_seconds.spectrum([0.5])["sa"][0], rel=1e-12)
+    with pytest.raises(pound.InputError) as raised:
+        pound.Record(0.01, [0.0, 0.1], time_unit="min")
+    assert raised.value.path == "time_unit"
 
 
 def test_bad_units_scale_and_files_are_refused(tmp_path):

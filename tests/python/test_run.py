@@ -1,6 +1,7 @@
 """pound.run: the same results as `pound run`, records given from Python, failures, threads."""
 
 import json
+import math
 import pathlib
 import signal
 import subprocess
@@ -181,6 +182,57 @@ def test_results_hold_tables_units_and_a_data_frame(models):
     arrays = result.links[link]["force"]
     with pytest.raises(ValueError):
         arrays[0] = 1.0  # views of the results: read-only
+
+
+def test_an_item_two_recorders_hold_is_taken_from_the_one_with_every_step(models):
+    # A roof recorded every 0.05 s for a plot and at every step: nodes[] and to_pandas() took the
+    # thinned copy (the first recorder), and the roof's peak acceleration read 24 % low.
+    model = json.loads((models / "adjacent_buildings.json").read_text())
+    model["recorders"] = [
+        {"type": "node", "nodes": ["pair.left.f5"], "interval": 0.05, "file": "roof_plot.csv"},
+        {"type": "node", "nodes": ["pair.left.f5"], "file": "roof_full.csv"}]
+    result = pound.run(pound.Model.from_dict(model, folder=models))
+    full = result.tables["roof_full.csv"]["pair.left.f5.a_abs_x"]
+    assert len(result.tables["roof_plot.csv"]["time"]) < len(full)
+    assert np.array_equal(result.nodes["pair.left.f5"]["a_abs_x"], full)
+    frame = result.to_pandas()
+    assert np.array_equal(frame["pair.left.f5.a_abs_x"].to_numpy(), full)
+
+
+def oscillator_in_milliseconds():
+    """A 1000 kg oscillator of T = 1 s, 5 % mass-proportional damping, in kg, m and ms."""
+    return pound.Model.from_dict({
+        "dimension": 1, "units": {"length": "m", "time": "ms", "mass": "kg"},
+        "nodes": [{"id": "ground", "x": 0}, {"id": "top", "x": 1}],
+        "materials": [{"id": "col", "youngs_modulus": 4e-3 * math.pi ** 2, "density": 0}],
+        "elements": [{"id": "col", "type": "truss", "nodes": ["ground", "top"],
+                      "material": "col", "area": 1}],
+        "masses": [{"node": "top", "mass": 1000, "mass_damping": 2e-4 * math.pi}],
+        "supports": [{"node": "ground", "fix": ["x"]}],
+        "analysis": {"time_step": 5.0, "duration": 4000.0},
+        "recorders": [{"type": "node", "nodes": ["top"], "file": "top.csv"}]}, name="ms.json")
+
+
+def test_a_millisecond_models_records_take_their_own_unit_of_time(tmp_path):
+    # The same samples, their step given in ms, in s, in the model's unit (ms, no time_unit), or
+    # read from a file that states dt = 0.01 s with dt=0.01 beside it (Record.from_file takes a
+    # file's times in seconds): one response. from_file's dt was checked in seconds and then
+    # read by the run in ms, so no value of it ran (audit 71).
+    samples = 0.2 * np.sin(np.arange(300) * 0.05)
+    (tmp_path / "sine.txt").write_text("# dt=0.01 s, acceleration in g\n" +
+                                       "\n".join(f"{a:.17g}" for a in samples) + "\n")
+    model = oscillator_in_milliseconds()
+    runs = {name: pound.run(model, record) for name, record in {
+        "ms": pound.Record(10.0, samples, time_unit="ms"),
+        "s": pound.Record(0.01, samples, time_unit="s"),
+        "model's": pound.Record(10.0, samples),
+        "file": pound.Record.from_file(tmp_path / "sine.txt", dt=0.01)}.items()}
+    reference = runs["ms"].nodes["top"]["u_x"]
+    print({name: float(np.max(np.abs(run.nodes["top"]["u_x"]))) for name, run in runs.items()})
+    assert np.max(np.abs(reference)) > 0.0
+    for name, run in runs.items():
+        assert np.allclose(run.nodes["top"]["u_x"], reference, rtol=0, atol=1e-12 *
+                           np.max(np.abs(reference))), name
 
 
 def test_element_histories_and_envelopes(models):
