@@ -85,7 +85,7 @@ std::string fragility_line(const results::FragilityFit& f) {
       f.left_out > 0
           ? fmt::format(
                 " ({} of the model's {} cases left out: failed below the limit, refused, "
-                "or without a positive intensity)",
+                "without a positive intensity, or reporting no value of the quantity)",
                 f.left_out, f.left_out + f.observations)
           : std::string();
   if (!f.fitted)

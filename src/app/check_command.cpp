@@ -102,9 +102,17 @@ std::string check_text(const std::string& model_path, const verification::ModelC
                         with_unit(*check.explicit_step_contact, time));
   else
     text += fmt::format("  central difference: not available ({})\n", check.explicit_unavailable);
-  if (check.implicit_stable_step)
-    text += fmt::format("  {} stable step: {} in contact (above it the run is refused)\n",
-                        analysis.integrator.label(), with_unit(*check.implicit_stable_step, time));
+  if (check.implicit_stable_step) {
+    // A Hertz-type law's stiffness grows from 0 as it penetrates: at first touch it adds none.
+    const bool stiffening =
+        std::any_of(check.contacts.begin(), check.contacts.end(),
+                    [](const verification::LinkCheck& c) { return !c.stiff_at_first_touch; });
+    text += fmt::format("  {} stable step: {} in contact{} (above it the run is refused)\n",
+                        analysis.integrator.label(), with_unit(*check.implicit_stable_step, time),
+                        stiffening ? ", without the Hertz-type contacts' stiffness, which grows "
+                                     "as they penetrate"
+                                   : "");
+  }
   text += analysis_text(analysis, units);
   for (const verification::LinkCheck& c : check.contacts) {
     text += c.constraint ? fmt::format("  link {} ({}): a constraint, no stiffness", c.id, c.law)

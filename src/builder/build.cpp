@@ -194,13 +194,15 @@ void refuse_step_past_implicit_limit(const AnalysisSpec& analysis,
                                      const std::string& source) {
   const std::optional<double> limit = conditional_stable_step(analysis.integrator, system);
   if (!limit || !(analysis.longest_step() > *limit)) return;
+  // An adaptive run's longest step: its max_time_step (16 steps by default) that passes.
+  const bool adaptive = analysis.adaptive && analysis.time_step <= *limit;
   throw InputError(
-      source, "/analysis/time_step",
-      fmt::format("{:.6g} is above the stable limit {:.6g} of {} ({:.4g} / omega_max with the "
+      source, adaptive ? "/analysis/adaptive" : "/analysis/time_step",
+      fmt::format("{}{:.6g} is above the stable limit {:.6g} of {} ({:.4g} / omega_max with the "
                   "links in contact): past it the response grows without bound; use a smaller "
                   "step, or newmark_average_acceleration, stable at any step",
-                  analysis.longest_step(), *limit, analysis.integrator.label(),
-                  *analysis.integrator.stability_limit()));
+                  adaptive ? "the longest adaptive step, " : "", analysis.longest_step(), *limit,
+                  analysis.integrator.label(), *analysis.integrator.stability_limit()));
 }
 
 }  // namespace

@@ -107,7 +107,7 @@ std::array<double, 2> plan_centre(const AdjacentBuildingsSpec& pair, int side, b
   return {pair.separation + 0.5 * pair.right.plan[0], pair.offset};
 }
 
-// A floor a millionth of the building's heaviest or less is no floor (a typo, or a mass in the
+// A floor lighter than a millionth of the building's heaviest is no floor (a typo, or a mass in the
 // wrong unit): its storeys would hold a point that has no inertia, whose acceleration (floor
 // spectra, the report's floor acceleration) means nothing, and which gravity's P-Delta can buckle
 // between two yielding storeys.
@@ -350,6 +350,10 @@ void add_drift_monitors(const Building& building, std::size_t s,
     if (coupled_storeys(building, s, out)) {  // one link: its shear along x (t_1) or y (t_2)
       monitor.shear_link = storey_id(building, s);
       monitor.shear_link_direction = direction + 1;
+      // Yielding together on the ellipse: the resultant of the two drifts at the mass centre,
+      // where each direction's ductility is measured (the link, at the stiffness centre, moves
+      // otherwise on an eccentric storey: its resultant read below one direction's ductility).
+      monitor.yields_with = storey_id(building, s) + (direction == 0 ? ".y" : "");
     } else if (storey.law) {
       monitor.shear_link = storey_id(building, s) + suffix;
     } else {

@@ -128,7 +128,8 @@ const IntegratorEntry& Newmark::newmark_entry() {
           "rows; unconditionally stable for 2 beta >= gamma >= 1/2; with 2 beta < gamma only for "
           "omega_max dt < 1 / sqrt(gamma / 2 - beta) (linear acceleration: 2 sqrt(3), dt < 0.551 "
           "T_min), and a longer step (omega_max with the links in contact, `pound check` gives "
-          "it) is refused",
+          "it) is refused where every DOF has a mass (with DOFs without one, check warns against "
+          "the shortest period found, and the run stops one that grows)",
       .parameters = {{"beta", 0.25, 0.0, true, std::nullopt, "beta > 0"},
                      {"gamma", 0.5, 0.5, false, std::nullopt, "gamma >= 1/2 (above: damps)"}},
       .presets = {{"newmark_average_acceleration", {{"beta", 0.25}, {"gamma", 0.5}}},

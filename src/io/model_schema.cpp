@@ -673,7 +673,8 @@ const Fields<RodPairSpec>& rod_pair_fields() {
 const Fields<StoreySpec>& storey_fields() {
   static const Fields<StoreySpec> fields = {
       required("height", &StoreySpec::height, Number<>{positive}, "h [L]"),
-      required("mass", &StoreySpec::mass, Number<>{positive}, "floor mass [M]"),
+      required("mass", &StoreySpec::mass, Number<>{positive},
+               "floor mass [M], at least a millionth of the building's heaviest floor"),
       required("stiffness", &StoreySpec::stiffness, Number<>{positive},
                "lateral storey stiffness k [F/L]"),
       optional("law", &StoreySpec::law, Law{LawPlace::storey, "a storey"},

@@ -924,8 +924,6 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
       const int along = drift.monitor.shear_link_direction;
       drift.peak_shear = along == 0 ? std::max(s.peak_force, s.peak_tension)
                                     : s.shear->peak_forces[static_cast<std::size_t>(along - 1)];
-      if (along > 0 && drift.monitor.kind == builder::DriftKind::storey && drift.ductility())
-        drift.resultant_ductility = run.links[static_cast<std::size_t>(*link)].shear_ductility();
     }
     run.drifts.push_back(drift);
   }

@@ -176,9 +176,9 @@ struct DriftResult {
   // monitor's own direction (as codes check each principal direction)
   std::optional<double> ductility() const;
   // Where the two directions yield together on an ellipse: the peak of
-  // sqrt((d_1 / d_y1)^2 + (d_2 / d_y2)^2), which passes 1 when the member yields, where each
-  // direction's ductility along a diagonal is 1/sqrt(2) of it. A storey's from its coupled link
-  // (LinkResult::shear_ductility), a pier's from its two drifts (DriftMonitor::yields_with).
+  // sqrt((d_1 / d_y1)^2 + (d_2 / d_y2)^2) of its two drifts at each step (DriftMonitor::
+  // yields_with: a storey's coupled link, a pier's biaxial hinge), which passes 1 when the
+  // member yields, where each direction's ductility along a diagonal is 1/sqrt(2) of it.
   std::optional<double> resultant_ductility;
   // The larger of the two: what a member's yielding is judged by.
   std::optional<double> largest_ductility() const {

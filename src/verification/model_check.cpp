@@ -201,6 +201,29 @@ double peak_ground_velocity(const model::Model& model) {
   return peak;
 }
 
+// Linear acceleration's limit is computed where every DOF has a mass; with DOFs without one (a
+// frame's rotations), the condensed system's highest frequency is not, and a step past it runs
+// until the run's energy check stops it: say so, with the shortest period found (its modes).
+void warn_uncomputed_implicit_limit(const builder::AnalysisSpec& analysis, ModelCheck& check) {
+  const std::optional<double> limit = analysis.integrator.stability_limit();
+  if (analysis.integrator.is_explicit() || !limit || check.implicit_stable_step) return;
+  std::string against;
+  if (!check.periods.empty()) {
+    const double step = *limit / (2.0 * std::numbers::pi) * check.periods.back();
+    against =
+        fmt::format("; against the shortest period found, {:.4g} (contacts open), it is {:.4g}{}",
+                    check.periods.back(), step,
+                    analysis.longest_step() > step ? ", which the time step passes" : "");
+  }
+  check.warnings.push_back(fmt::format(
+      "{} is stable only below {:.4g} / omega_max, which is not computed for a model with DOFs "
+      "without mass (a frame's rotations, a node without mass){}: a step past it grows until the "
+      "run "
+      "stops it as "
+      "creating energy; newmark_average_acceleration is stable at any step",
+      analysis.integrator.label(), *limit, against));
+}
+
 void check_explicit_steps(const builder::AnalysisSpec& analysis, assembly::StructuralSystem& system,
                           ModelCheck& check) {
   const bool lumped = system.lumped_mass() && (system.lumped_mass()->array() > 0.0).all();
@@ -404,6 +427,7 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
   }
   check_explicit_steps(analysis, system, check);
   check.implicit_stable_step = builder::conditional_stable_step(analysis.integrator, system);
+  warn_uncomputed_implicit_limit(analysis, check);
   check_step_against_duration(built, check.warnings);
   warn_step_count(analysis, check.warnings);
   check_record_peaks(built, check.warnings);

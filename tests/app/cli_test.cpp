@@ -842,6 +842,14 @@ TEST_F(Cli, LinearAccelerationStepAboveItsStableLimitIsRefused) {
                                                 limit)))
       << refused.err;
   EXPECT_FALSE(fs::exists(out));
+  // An adaptive run whose longest step passes it: the adaptive settings are named.
+  model["analysis"]["time_step"] = 0.5 * limit;
+  model["analysis"]["adaptive"] = {{"max_time_step", 2.5 * limit}};  // steps of 2 x the limit
+  std::ofstream(file) << model.dump();
+  const Outcome adaptive = pound({"run", file.string(), "--out", out.string()});
+  EXPECT_EQ(adaptive.exit_code, 2) << adaptive.err;
+  EXPECT_TRUE(contains(adaptive.err, "/analysis/adaptive: the longest adaptive step")) << adaptive.err;
+  model["analysis"].erase("adaptive");
   // Below it: the contact (pi / omega = 0.07 long) wants ten steps or so to be resolved.
   model["analysis"]["time_step"] = 0.1 * limit;
   std::ofstream(file) << model.dump();

@@ -58,6 +58,13 @@ class Divergence : public PoundProcess {};
 TEST_F(Divergence, EnergyCreatedByAnUnstableStepStopsTheRun) {
   std::ofstream(path("model.json"))
       << oscillator_on_massless_joint("newmark_linear_acceleration", 0.7);
+  // check says the limit is not computed here, and where the shortest period puts it (0.551 s).
+  const Outcome checked = pound({"check", path("model.json").string()});
+  EXPECT_EQ(checked.exit_code, 0) << checked.err;
+  const std::string said = checked.out + checked.err;
+  EXPECT_NE(said.find("is not computed for a model with DOFs without mass"), std::string::npos)
+      << said;
+  EXPECT_NE(said.find("it is 0.5513, which the time step passes"), std::string::npos) << said;
   const Outcome outcome =
       pound({"run", path("model.json").string(), "--out", path("out").string()});
   EXPECT_EQ(outcome.exit_code, 3) << outcome.err;
