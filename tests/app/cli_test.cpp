@@ -848,7 +848,8 @@ TEST_F(Cli, LinearAccelerationStepAboveItsStableLimitIsRefused) {
   std::ofstream(file) << model.dump();
   const Outcome adaptive = pound({"run", file.string(), "--out", out.string()});
   EXPECT_EQ(adaptive.exit_code, 2) << adaptive.err;
-  EXPECT_TRUE(contains(adaptive.err, "/analysis/adaptive: the longest adaptive step")) << adaptive.err;
+  EXPECT_TRUE(contains(adaptive.err, "/analysis/adaptive: the longest adaptive step"))
+      << adaptive.err;
   model["analysis"].erase("adaptive");
   // Below it: the contact (pi / omega = 0.07 long) wants ten steps or so to be resolved.
   model["analysis"]["time_step"] = 0.1 * limit;
