@@ -168,8 +168,6 @@ void override_motion(const MotionOverride& motion, builder::ModelSpec& spec) {
   first.time_column = motion.time_column;
   first.column = motion.column.value_or(motion.time_column ? 2 : 1);
   first.time_step = motion.time_step;
-  if (first.time_step && motion.record_second)
-    *first.time_step *= spec.units.second() / *motion.record_second;
   if (motion.scale_factor || motion.target_pga) {
     first.scale_factor = motion.scale_factor;
     first.target_pga = motion.target_pga;
@@ -183,20 +181,19 @@ LoadedModel load_model_spec(builder::ModelSpec spec, const std::string& path,
   loaded.spec = std::move(spec);
   check_model_fits(loaded.spec, path);
   const MotionOverride* samples = nullptr;
-  MotionOverride converted;  // samples whose times are in another unit than the model's
+  MotionOverride converted;  // an override whose times are in another unit than the model's
   if (motion_override) {
-    override_motion(*motion_override, loaded.spec);
-    loaded.first_record_replaced_by = motion_override->replaced_by;
-    if (motion_override->accelerations) {
-      samples = &*motion_override;
-      if (motion_override->record_second) {
-        converted = *motion_override;
-        const double factor = loaded.spec.units.second() / *motion_override->record_second;
-        if (converted.time_step) *converted.time_step *= factor;
-        for (double& time : converted.times) time *= factor;
-        samples = &converted;
-      }
+    const MotionOverride* motion = &*motion_override;
+    if (motion->record_second) {
+      converted = *motion;
+      const double factor = loaded.spec.units.second() / *motion->record_second;
+      if (converted.time_step) *converted.time_step *= factor;
+      for (double& time : converted.times) time *= factor;
+      motion = &converted;
     }
+    override_motion(*motion, loaded.spec);
+    loaded.first_record_replaced_by = motion->replaced_by;
+    if (motion->accelerations) samples = motion;
   }
   read_records_and_build(path, motion_override.has_value(), loaded, samples);
   return loaded;

@@ -116,8 +116,8 @@ std::vector<ResolvedRecorder> resolve_recorders(const Resolver& resolver, std::s
 std::vector<DriftMonitor> resolve_drift_monitors(const Resolver& resolver) {
   const std::vector<DriftMonitorSpec>& specs = resolver.spec().drift_monitors;
   const std::size_t user_count = resolver.user_spec().drift_monitors.size();
-  resolver.index_ids(specs, "drift monitor",
-                     [&](std::size_t k) { return monitor_path(k, user_count, "drifts"); });
+  const std::map<std::string, Index> by_id = resolver.index_ids(
+      specs, "drift monitor", [&](std::size_t k) { return monitor_path(k, user_count, "drifts"); });
   std::vector<DriftMonitor> monitors;
   for (std::size_t k = 0; k < specs.size(); ++k) {
     const DriftMonitorSpec& m = specs[k];
@@ -147,12 +147,10 @@ std::vector<DriftMonitor> resolve_drift_monitors(const Resolver& resolver) {
       monitor.shear_link = resolver.link(*m.shear_link, path + "/shear_link");
       monitor.shear_link_direction = shear_link_direction(resolver, m, *monitor.shear_link, path);
     }
+    if (m.yields_with)  // a generator's own pair: the id is there
+      monitor.yields_with = static_cast<std::size_t>(by_id.at(*m.yields_with));
     monitors.push_back(monitor);
   }
-  for (std::size_t k = 0; k < specs.size(); ++k)
-    if (const std::optional<std::string>& partner = specs[k].yields_with)
-      for (std::size_t j = 0; j < specs.size(); ++j)
-        if (specs[j].id == *partner) monitors[k].yields_with = j;
   return monitors;
 }
 

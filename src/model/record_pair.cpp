@@ -15,20 +15,27 @@ namespace {
 
 constexpr int kAngles = 180;  // 0, 1, ..., 179 degrees: the non-redundant directions
 
-// max_t |x_1(t) cos(theta) + x_2(t) sin(theta)| for each whole degree theta.
-std::array<double, kAngles> rotated_peaks(const std::vector<double>& first,
-                                          const std::vector<double>& second) {
-  std::array<double, kAngles> cosines{}, sines{}, peaks{};
-  for (int angle = 0; angle < kAngles; ++angle) {
-    const double radians = angle * std::numbers::pi / 180.0;
-    // Exact at the axes, so that theta = 0 and 90 give the components' own peaks.
-    cosines[angle] = angle == 90 ? 0.0 : std::cos(radians);
-    sines[angle] = angle == 0 ? 0.0 : std::sin(radians);
+// cos(theta) and sin(theta) of each whole degree, exact at the axes, so that theta = 0 and 90
+// give the components' own values.
+struct Directions {
+  std::array<double, kAngles> cosines{}, sines{};
+  Directions() {
+    for (int angle = 0; angle < kAngles; ++angle) {
+      const double radians = angle * std::numbers::pi / 180.0;
+      cosines[angle] = angle == 90 ? 0.0 : std::cos(radians);
+      sines[angle] = angle == 0 ? 0.0 : std::sin(radians);
+    }
   }
+};
+
+// max_t |x_1(t) cos(theta) + x_2(t) sin(theta)| for each whole degree theta.
+std::array<double, kAngles> rotated_peaks(const Directions& d, const std::vector<double>& first,
+                                          const std::vector<double>& second) {
+  std::array<double, kAngles> peaks{};
   for (std::size_t k = 0; k < first.size(); ++k)
     for (int angle = 0; angle < kAngles; ++angle)
-      peaks[angle] =
-          std::max(peaks[angle], std::abs(first[k] * cosines[angle] + second[k] * sines[angle]));
+      peaks[angle] = std::max(peaks[angle],
+                              std::abs(first[k] * d.cosines[angle] + second[k] * d.sines[angle]));
   return peaks;
 }
 
@@ -56,14 +63,13 @@ PseudoAcceleration pseudo_acceleration_history(const GroundMotion& motion, doubl
 
 // The projections' peaks over the free vibration after the last sample: the projection of two
 // oscillators of one period and damping is one such oscillator, from the projected state.
-void add_free_vibration(const PseudoAcceleration& first, const PseudoAcceleration& second,
-                        double period, double damping_ratio, std::array<double, kAngles>& peaks) {
+void add_free_vibration(const Directions& d, const PseudoAcceleration& first,
+                        const PseudoAcceleration& second, double period, double damping_ratio,
+                        std::array<double, kAngles>& peaks) {
   if (!first.oscillates || !second.oscillates) return;
   const double omega = 2.0 * std::numbers::pi / period;
   for (int angle = 0; angle < kAngles; ++angle) {
-    const double radians = angle * std::numbers::pi / 180.0;
-    const double c = angle == 90 ? 0.0 : std::cos(radians),
-                 s = angle == 0 ? 0.0 : std::sin(radians);
+    const double c = d.cosines[angle], s = d.sines[angle];
     const double u = first.last_u * c + second.last_u * s, v = first.last_v * c + second.last_v * s;
     peaks[angle] =
         std::max(peaks[angle], omega * omega * free_vibration_peak(u, v, omega, damping_ratio));
@@ -107,8 +113,9 @@ PairSpectralAcceleration pair_spectral_acceleration(const GroundMotionPair& pair
   // projections at 0 and 90 degrees are the components' own Sa.
   const PseudoAcceleration first = pseudo_acceleration_history(pair.first, period, damping_ratio);
   const PseudoAcceleration second = pseudo_acceleration_history(pair.second, period, damping_ratio);
-  std::array<double, kAngles> peaks = rotated_peaks(first.history, second.history);
-  add_free_vibration(first, second, period, damping_ratio, peaks);
+  const Directions directions;
+  std::array<double, kAngles> peaks = rotated_peaks(directions, first.history, second.history);
+  add_free_vibration(directions, first, second, period, damping_ratio, peaks);
   PairSpectralAcceleration result;
   result.first = peaks[0];
   result.second = peaks[90];

@@ -808,13 +808,22 @@ std::optional<double> JointResult::margin() const {
 }
 
 namespace {
-// theta_p of a drift monitor's hinge: its law's, or its coupled bending's about one tangent.
-std::optional<double> hinge_plastic_rotation(const RunSummary& run,
-                                             const builder::DriftMonitor::Curvature& curvature) {
+// A drift monitor's hinge: its peak rotation and its yield rotation, its law's or its coupled
+// bending's about one tangent; none where it does not yield.
+struct HingeRotation {
+  double peak = 0.0, yield = 0.0;
+};
+std::optional<HingeRotation> hinge_rotation(const RunSummary& run,
+                                            const builder::DriftMonitor::Curvature& curvature) {
   const LinkResult& hinge = run.links[static_cast<std::size_t>(curvature.hinge)];
-  if (curvature.hinge_direction == 0) return hinge.peak_plastic_deformation();
-  return hinge.shear_peak_plastic_deformation(
-      static_cast<std::size_t>(curvature.hinge_direction - 1));
+  if (curvature.hinge_direction == 0) {
+    if (!hinge.yield_deformation) return std::nullopt;
+    return HingeRotation{hinge.peak_demand(), *hinge.yield_deformation};
+  }
+  if (!hinge.shear_yields()) return std::nullopt;
+  const auto along = static_cast<std::size_t>(curvature.hinge_direction - 1);
+  return HingeRotation{hinge.summary.shear->peak_deformations[along],
+                       hinge.shear->numbers[along].yield_deformation()};
 }
 
 // Whether the monitor's top node has no lumped mass along its drift (on every equation it moves
@@ -834,32 +843,18 @@ bool top_without_mass(const assembly::StructuralSystem& system,
   return true;
 }
 
-// A hinge's peak rotation over its yield rotation (M / M_y below yield for a bilinear hinge,
-// whose elastic rotation is proportional to its moment); none without a yield rotation.
-std::optional<double> hinge_rotation_ratio(const RunSummary& run,
-                                           const builder::DriftMonitor::Curvature& curvature) {
-  const LinkResult& hinge = run.links[static_cast<std::size_t>(curvature.hinge)];
-  if (curvature.hinge_direction == 0)
-    return hinge.yield_deformation && *hinge.yield_deformation > 0.0
-               ? std::optional<double>(hinge.peak_demand() / *hinge.yield_deformation)
-               : std::nullopt;
-  if (!hinge.shear || !hinge.summary.shear) return std::nullopt;
-  const auto along = static_cast<std::size_t>(curvature.hinge_direction - 1);
-  const double yield = hinge.shear->numbers[along].yield_deformation();
-  return yield > 0.0 ? std::optional<double>(hinge.summary.shear->peak_deformations[along] / yield)
-                     : std::nullopt;
-}
-
 // The curvature ductility 1 + theta_p / (phi_y L_p) of a yielded hinge; below yield, the ratio of
-// its peak rotation to its yield rotation (below 1, as a displacement ductility below 1 is a
-// demand ratio), not 1 as if the section were at yield.
+// its peak rotation to its yield rotation (M / M_y for a bilinear hinge; below 1, as a
+// displacement ductility below 1 is a demand ratio), not 1 as if the section were at yield.
 std::optional<double> curvature_ductility(const RunSummary& run,
                                           const builder::DriftMonitor::Curvature& curvature) {
-  const std::optional<double> plastic = hinge_plastic_rotation(run, curvature);
-  if (!plastic) return std::nullopt;
-  if (*plastic > 0.0)
-    return 1.0 + *plastic / (curvature.yield_curvature * curvature.plastic_hinge_length);
-  return hinge_rotation_ratio(run, curvature);
+  const std::optional<HingeRotation> rotation = hinge_rotation(run, curvature);
+  if (!rotation) return std::nullopt;
+  const double plastic = std::max(0.0, rotation->peak - rotation->yield);  // theta_p
+  if (plastic > 0.0)
+    return 1.0 + plastic / (curvature.yield_curvature * curvature.plastic_hinge_length);
+  if (!(rotation->yield > 0.0)) return std::nullopt;
+  return rotation->peak / rotation->yield;
 }
 }  // namespace
 
