@@ -16,6 +16,10 @@ class InputError(ValueError):
         where = ": ".join(part for part in (file, path) if part)
         super().__init__(f"{where}: {message}" if where else message)
 
+    def __reduce__(self):
+        # Rebuilt from its parts, so that it crosses to another process (a process pool's worker).
+        return (type(self), (self.file, self.path, self.message))
+
 
 class AnalysisError(RuntimeError):
     """The analysis could not go on (Newton failed at the smallest step, the state diverged).
@@ -31,6 +35,9 @@ class AnalysisError(RuntimeError):
         self.result = result
         super().__init__(f"analysis failed at t = {time:.6g}: {reason}" if time is not None
                          else f"analysis failed: {reason}")
+
+    def __reduce__(self):
+        return (type(self), (self.time, self.reason, self.result))
 
 
 class OutputError(OSError):

@@ -13,6 +13,11 @@ from pound.errors import InputError
 def _samples(values, name, what):
     """A 1-D float64 array of `values`, or InputError naming `what`."""
     try:
+        # Complex numbers would lose their imaginary part, booleans become 0 and 1, and text be
+        # parsed: none of them is a time or an acceleration.
+        kind = np.asarray(values).dtype.kind
+        if kind in "bcSUV":
+            raise TypeError(f"an array of {np.asarray(values).dtype} is no real number")
         array = np.asarray(values, dtype=np.float64)
     except (TypeError, ValueError, OverflowError) as error:
         raise InputError(name, what, f"expected numbers: {error}") from None

@@ -35,7 +35,8 @@ class Result:
       "quantities" a list of dicts (path, unperturbed, median, p16, p84, min, max, spread,
       robust, headline); ``pandas.DataFrame(result.ensemble["quantities"])`` is a table of them.
 
-    The arrays are read-only views of the results held by C++ (no copy).
+    The arrays are read-only views of the results held by C++ (no copy). A Result pickles (to
+    cross to a process pool's parent, say): its arrays go as copies, read-only again once loaded.
     """
 
     def __init__(self, core):
@@ -54,6 +55,19 @@ class Result:
             target = {"link": self.links, "node": self.nodes, "element": self.elements}
             for item, quantities in _by_item(table).items():
                 target[table["kind"]].setdefault(item, quantities)
+
+    def __getstate__(self):
+        # The C++ results stay in their process; every value read from them goes (pickle keeps
+        # an array that several tables share as one).
+        state = dict(self.__dict__)
+        state["_core"] = None
+        return state
+
+    def __setstate__(self, state):
+        self.__dict__.update(state)
+        for table in self._tables:
+            for values in table["values"]:
+                values.flags.writeable = False
 
     def _densest_first(self):
         """The history tables, those with the most samples first (in recorder order among
@@ -91,11 +105,17 @@ class Result:
                 return table["values"][table["columns"].index("time")]
         return None
 
-    def units(self, file):
-        """{column: unit} of a table, as its CSV header names them."""
+    def _table(self, file):
+        """A recorder's table by its file name, or a KeyError listing the names."""
         table = next((t for t in self._tables if t["file"] == file), None)
         if table is None:
-            raise KeyError(f"no table {file!r}: the tables are {sorted(self.tables)}")
+            raise KeyError(f"no table {file!r}: the tables are {sorted(self.tables)} "
+                           "(a file name as its CSV is written)")
+        return table
+
+    def units(self, file):
+        """{column: unit} of a table, as its CSV header names them."""
+        table = self._table(file)
         return dict(zip(table["columns"], table["units"] or [""] * len(table["columns"])))
 
     def to_pandas(self, file=None):
@@ -104,7 +124,7 @@ class Result:
         file name (an envelope or spectrum too). Needs pandas."""
         import pandas
         if file is not None:
-            return pandas.DataFrame(self.tables[file])
+            return pandas.DataFrame(self._columns(self._table(file)))
         frames = [pandas.DataFrame(self.tables[t["file"]]).set_index("time")
                   for t in self._densest_first()]
         if not frames:

@@ -100,7 +100,7 @@ void add_verify_options(po::options_description& description, VerifyOptions& opt
       "dt-ratio", po::value(&options.dt_ratio)->default_value(options.dt_ratio),
       "time step / exact contact duration")(
       "courant", po::value(&options.courant),
-      "time step as a Courant number dt C0 / h of the striking rod (overrides --dt-ratio)")(
+      "time step as a Courant number dt C0 / h of the striking rod (in place of --dt-ratio)")(
       "duration-ratio", po::value(&options.duration_ratio)->default_value(options.duration_ratio),
       "run length after first contact / exact contact duration")(
       "law", po::value(&options.law)->default_value(options.law),
@@ -365,6 +365,9 @@ int verify_command(const Arguments& arguments) {
   options.rho_infinity_given = !(*parsed)["rho-inf"].defaulted();
   if (const std::optional<std::string> stray = option_of_another_benchmark(*parsed, benchmark))
     return usage_error(*stray);
+  if (options.courant_given && options.dt_ratio_given)
+    return usage_error(
+        "--courant and --dt-ratio both give the time step: give one (the other would be ignored)");
   if (benchmark == "two-element") return verify_two_element(options.json);
   if (benchmark == "restitution") return verify_restitution(options.json);
   if (benchmark == "rod-impact-2d")

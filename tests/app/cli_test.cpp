@@ -1025,7 +1025,10 @@ TEST_F(Cli, VerifyRefusesAStepLongerThanTheRun) {
            {{"verify", "two-element", "--n", "50"},
             "--n is not an option of the two-element benchmark"},
            {{"verify", "rod-impact", "--study", "kawashima", "--k-ratio", "2"},
-            "--k-ratio does not apply to --study"}}) {
+            "--k-ratio does not apply to --study"},
+           // Two ways of giving the step: one of them would be ignored.
+           {{"verify", "rod-impact", "--courant", "0.5", "--dt-ratio", "0.02"},
+            "--courant and --dt-ratio both give the time step"}}) {
     const Outcome refused = pound(arguments);
     EXPECT_EQ(refused.exit_code, 1) << refused.err;
     EXPECT_TRUE(contains(refused.err, words)) << refused.err;

@@ -174,3 +174,15 @@ def test_a_pair_on_different_grids_or_units_is_refused():
         first.pair_spectrum(np.zeros(100))
     with pytest.raises(pound.InputError, match="finite angle"):
         first.pair_spectrum(pound.Record(0.01, np.zeros(100)), rotation=float("nan"))
+
+
+def test_complex_boolean_and_text_samples_are_refused():
+    # NumPy would drop an imaginary part (with a warning), read True as 1 and parse "0.1".
+    for values in (np.array([0.0, 0.1 + 0.2j]), np.array([True, False]), ["0.0", "0.1"]):
+        with pytest.raises(pound.InputError, match="no real number") as raised:
+            pound.Record(0.01, values)
+        assert raised.value.path == "accelerations"
+    with pytest.raises(pound.InputError, match="no real number") as raised:
+        pound.Record(np.array([0.0, 0.01 + 0j]), [0.0, 0.1])
+    assert raised.value.path == "times"
+    assert pound.Record(0.01, np.array([0, 1], dtype=np.int32)).time_step == 0.01

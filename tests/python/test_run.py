@@ -495,6 +495,9 @@ def test_a_missing_table_is_a_key_error_naming_the_tables(models):
     result = pound.run(models / "two_sdof_girders.json")
     with pytest.raises(KeyError, match="no table 'nope'"):
         result.units("nope")
+    # A position is no name either: the same message, not a bare KeyError(3).
+    with pytest.raises(KeyError, match="no table 3: the tables are"):
+        result.to_pandas(3)
 
 
 def test_sigterm_ends_python_as_it_would_without_pound(models, signalled):
@@ -539,3 +542,36 @@ except InterruptedError as stopped:
 """, name)
         assert done.returncode == 0 and "noted 1 |" in done.stdout
         assert f"stopped by {name}: the script's handler returned" in done.stdout
+
+
+def test_results_and_errors_cross_to_a_process_pool(models, tmp_path):
+    # A study spread over a process pool gets each worker's Result whole, and a bad model's
+    # InputError as the worker raised it (an exception that cannot be rebuilt from its args
+    # reached the parent as a TypeError about pickling).
+    import concurrent.futures
+    import pickle
+    bad = tmp_path / "bad.json"
+    bad.write_text('{"nodes": 3}')
+    with concurrent.futures.ProcessPoolExecutor(2) as pool:
+        remote = pool.submit(pound.run, models / "two_sdof_girders.json").result()
+        with pytest.raises(pound.InputError) as raised:
+            pool.submit(pound.run, bad).result()
+    assert raised.value.file == str(bad) and raised.value.path == "/nodes"
+    local = pound.run(models / "two_sdof_girders.json")
+    assert remote.summary.pop("run_time_s") > 0 and local.summary.pop("run_time_s") > 0
+    assert remote.summary == local.summary and remote.warnings == local.warnings
+    assert remote.to_pandas().equals(local.to_pandas())
+    loaded = pickle.loads(pickle.dumps(local))
+    assert (loaded.summary, loaded.report, repr(loaded)) == (local.summary, local.report,
+                                                             repr(local))
+    for item, quantities in local.links.items():
+        for quantity, values in quantities.items():
+            assert np.array_equal(remote.links[item][quantity], values)
+            assert not remote.links[item][quantity].flags.writeable
+            assert np.array_equal(loaded.links[item][quantity], values)
+    with pytest.raises(pound.AnalysisError) as stopped:
+        pound.run(models / "two_sdof_girders.json", max_steps=5)
+    again = pickle.loads(pickle.dumps(stopped.value))
+    assert (again.time, again.reason, str(again)) == (stopped.value.time, stopped.value.reason,
+                                                      str(stopped.value))
+    assert again.result.summary == stopped.value.result.summary
