@@ -348,6 +348,19 @@ void LinkSummaries::record_engagements(double time) {
   }
 }
 
+void LinkSummaries::record_initial_forces(const integrators::State& state) {
+  // Moving, a link's force may hold a dashpot's part, which stores nothing; at rest it is all the
+  // law's own (a preload, or a static state's yield).
+  if (!state.velocity.isZero(0.0)) return;
+  for (std::size_t k = 0; k < rows_.size(); ++k) {
+    summaries_[k].initial_force = state.link_force[rows_[k]];
+    if (summaries_[k].shear)
+      for (Index a = 0; a < shear_rows_[k].count; ++a)
+        summaries_[k].shear->initial_forces[static_cast<std::size_t>(a)] =
+            state.link_force[rows_[k] + 1 + a];
+  }
+}
+
 void LinkSummaries::record(const integrators::State& state) {
   Running& r = running_;
   const std::size_t count = rows_.size();
@@ -363,6 +376,7 @@ void LinkSummaries::record(const integrators::State& state) {
                   r.impulse.data(), r.work.data(), r.engagement_work.data());
   if (!started_ || any_engagement_changed(count, r.force.data(), r.previous_force.data()))
     record_engagements(state.time);
+  if (!started_) record_initial_forces(state);
   raise_peaks(count, state.time, r.force.data(), r.penetration.data(), r.last_contact.data(),
               r.peak_force.data(), r.peak_tension.data(), r.peak_penetration.data(),
               r.peak_opening.data());

@@ -183,6 +183,9 @@ struct ShearSummary {
   double final_deformation = 0.0;  // residual [L]
   // Along each tangent: the largest |s_a| [L] and |F_a| [F], and F_a at the end [F].
   std::array<double, 2> peak_deformations{}, peak_forces{}, final_forces{};
+  // F_a at the start of a run begun at rest (a static initial state's), else 0: the spring's own
+  // force there, what it held before the run did any work [F].
+  std::array<double, 2> initial_forces{};
   // The largest |(s_1 / delta_y1, s_2 / delta_y2)|: the resultant's ductility on an elliptic
   // surface (0 while the law has no yield).
   double peak_ductility = 0.0;
@@ -209,6 +212,9 @@ struct LinkSummary {
   double last_contact = -1.0;      // time of the last step in contact
   double final_force = 0.0;        // at the end of the run [F]
   double final_deformation = 0.0;  // delta at the end of the run (residual) [L]
+  // The force at the start of a run begun at rest (under a static initial state's loads), else
+  // 0: with no velocity anywhere it is the law's own, held before the run did any work [F].
+  double initial_force = 0.0;
   // Work done on the link in its current engagement (0 while open) [F L].
   double engagement_work = 0.0;
   // Energy the link gave the structure beyond what it had taken, summed over its engagements:
@@ -252,6 +258,7 @@ class LinkSummaries : public Observer {
   void record_shear(const integrators::State& state, std::size_t k);
   // Engagements begun or ended this step (force from or to 0): counts and created energy.
   void record_engagements(double time);
+  void record_initial_forces(const integrators::State& state);
 
   std::vector<Index> rows_;
   std::vector<ShearRows> shear_rows_;

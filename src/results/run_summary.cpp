@@ -750,8 +750,11 @@ std::optional<double> LinkResult::peak_plastic_deformation() const {
 
 std::optional<double> LinkResult::hysteretic_energy() const {
   if (!yield_deformation || !initial_stiffness || !(*initial_stiffness > 0.0)) return std::nullopt;
+  // What the run's work left stored in the spring is F^2 / 2k at the end less what it held at the
+  // start (a static state's preload or yield, which the run's work does not include).
   const double force = summary.final_force - viscous.force;  // the spring's own
-  return summary.work - viscous.work - force * force / (2.0 * *initial_stiffness);
+  const double start = summary.initial_force;
+  return summary.work - viscous.work - (force * force - start * start) / (2.0 * *initial_stiffness);
 }
 
 bool LinkResult::shear_yields() const {
@@ -774,7 +777,8 @@ std::optional<double> LinkResult::shear_hysteretic_energy() const {
   double stored = 0.0;  // by the law, without the damping's force
   for (std::size_t a = 0; a < shear->numbers.size(); ++a) {
     const double force = summary.shear->final_forces[a] - shear_viscous.force[a];
-    stored += force * force / (2.0 * shear->numbers[a].initial_stiffness());
+    const double start = summary.shear->initial_forces[a];
+    stored += (force * force - start * start) / (2.0 * shear->numbers[a].initial_stiffness());
   }
   return summary.shear->work - shear_viscous.work - stored;
 }
