@@ -288,6 +288,12 @@ void CentralDifference::initialize(SecondOrderSystem& system, State& state, doub
     state.link_penetration += offset_;
     rate_ += offset_rate_;
   }
+  if (links.size() > 0) {
+    prepare_links(links);
+    // The hard contacts' forces at the start are found below for this start: none imposed
+    // before (a trial of the first step on this system, as the run's check makes) may act in it.
+    release_hard_forces();
+  }
   links.set_trial(state.link_penetration, rate_, Vector::Zero(links.size()), 0.0, 0.0,
                   state.link_force, tangent_);
   links.commit();
@@ -428,7 +434,6 @@ bool CentralDifference::solve_hard_contacts(const LinkSet& links, State& to, dou
 
 void CentralDifference::initial_hard_contacts(SecondOrderSystem& system, State& state, double dt) {
   LinkSet& links = system.links();
-  prepare_links(links);
   if (hard_groups_.empty()) return;
   Vector acceleration, force = Vector::Zero(links.size());
   links.project(state.velocity, rate_);

@@ -80,6 +80,10 @@ class EnergyBalance : public Observer {
   // F_{n+1} B du.
   void set_step_forces(const std::vector<char>& by_row);
   const EnergyTerms& terms() const { return terms_; }
+  // Central difference's first step: each link row's work beyond the trapezoidal rule's, for the
+  // forces the start's state holds (LinkSummaries::add_work takes it too); empty at other steps
+  // and with other integrators.
+  const Vector& start_link_work() const { return start_link_work_; }
   // The largest balance error seen over the run (not only at the end): its largest |residual|
   // over the run's largest term, so that a step's error is measured against the energies the run
   // reaches, not those of its first steps (HHT, alpha -0.1, on a damped SDOF under a record at
@@ -98,6 +102,8 @@ class EnergyBalance : public Observer {
   void sample_round_off(double dt);
   // F_avg . B du over the link rows, from step_ (du).
   void add_link_work(const integrators::State& state);
+  // Central difference's first step (see the .cpp): each row's work beyond the trapezoidal rule.
+  double add_start_link_work(double dt);
   // 1/2 sum (f_i dt)^2 / m_i over the lumped masses (0 with consistent ones).
   double step_load_energy(double dt);
 
@@ -109,6 +115,10 @@ class EnergyBalance : public Observer {
   bool predicted_damping_ = false;
   Vector damping_velocity_, previous_damping_velocity_, previous_acceleration_;
   double initial_acceleration_norm_ = 0.0;  // a_0^T M a_0
+  // What the first step's link work gained over the trapezoidal rule (start_link_work_), taken
+  // from the algorithmic term, which held it, at every step after: the balance is unchanged.
+  double start_algorithmic_ = 0.0;
+  Vector start_link_work_, start_link_rate_;
   EnergyTerms terms_;
   double worst_residual_ = 0.0;  // the largest |residual + algorithmic| of a step
   bool started_ = false;

@@ -348,6 +348,15 @@ void LinkSummaries::record_engagements(double time) {
   }
 }
 
+void LinkSummaries::add_work(const Vector& by_row) {
+  for (std::size_t k = 0; k < rows_.size(); ++k) {
+    running_.work[k] += by_row[rows_[k]];
+    running_.engagement_work[k] += by_row[rows_[k]];
+    if (summaries_[k].shear)
+      summaries_[k].shear->work += by_row.segment(rows_[k] + 1, shear_rows_[k].count).sum();
+  }
+}
+
 void LinkSummaries::record_initial_forces(const integrators::State& state) {
   // Moving, a link's force may hold a dashpot's part, which stores nothing; at rest it is all the
   // law's own (a preload, or a static state's yield).

@@ -242,6 +242,9 @@ class LinkSummaries : public Observer {
   // rule there, F_{n+1} dt and F_{n+1} d(delta), instead of the trapezoidal one.
   void set_step_forces(const std::vector<char>& by_row);
   void record(const integrators::State& state) override;
+  // Work beyond what record() took, by row of B (EnergyBalance::start_link_work): added to each
+  // link's work, its shear's, and its engagement's.
+  void add_work(const Vector& by_row);
   // Gathered from the running columns below at each call: take it once, not per link.
   const std::vector<LinkSummary>& summaries() const;
 
