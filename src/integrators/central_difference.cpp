@@ -105,22 +105,6 @@ bool accelerate(Index first, Index last, double half_dt, const double* __restric
   return all_finite(flags);
 }
 
-// How far past its bound a hard contact's delta may be, over the size of its terms
-// (row_magnitudes): above what their sums accumulate in round-off over a run, so that a contact at
-// rest against another (grazing, as after two rods part) stays without force rather than chatter.
-constexpr double kHardContactRoundOff = 1e-10;
-
-// sum_j |B_rj u_j| of each row: the size of delta's terms, and so of its round-off.
-void row_magnitudes(const LinkSet::SparseRowMatrix& b, const Vector& u, Vector& magnitudes) {
-  magnitudes.resize(b.rows());
-  for (Index r = 0; r < b.rows(); ++r) {
-    double sum = 0.0;
-    for (LinkSet::SparseRowMatrix::InnerIterator it(b, r); it; ++it)
-      sum += std::abs(it.value() * u[it.col()]);
-    magnitudes[r] = sum;
-  }
-}
-
 // Union-find over the link rows.
 class RowUnion {
  public:
@@ -420,7 +404,7 @@ bool CentralDifference::solve_hard_contacts(const LinkSet& links, State& to, dou
   // the force laws' forces already.
   link_acceleration_ = free_acceleration_;
   link_acceleration_.noalias() -= coupling_ * to.link_force;
-  row_magnitudes(links.connectivity(), to.displacement, magnitudes_);
+  links.row_magnitudes(to.displacement, magnitudes_);
   for (const std::vector<Index>& rows : hard_groups_)
     if (!solve_hard_group(rows, dt, dt * dt, to.link_penetration, rate_, link_acceleration_,
                           to.link_force)) {
@@ -443,7 +427,7 @@ void CentralDifference::initial_hard_contacts(SecondOrderSystem& system, State& 
     rate_ += offset_rate_;
     acceleration += offset_acceleration_;
   }
-  row_magnitudes(links.connectivity(), state.displacement, magnitudes_);
+  links.row_magnitudes(state.displacement, magnitudes_);
   for (const std::vector<Index>& rows : hard_groups_)
     if (!solve_hard_group(rows, dt, 0.5 * dt * dt, state.link_penetration, rate_, acceleration,
                           force))

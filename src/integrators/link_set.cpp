@@ -315,4 +315,14 @@ Vector LinkSet::rest_stiffness() const {
   return stiffness;
 }
 
+void LinkSet::row_magnitudes(const Vector& u, Vector& magnitudes) const {
+  magnitudes.resize(connectivity_.rows());
+  for (Index r = 0; r < connectivity_.rows(); ++r) {
+    double sum = 0.0;
+    for (SparseRowMatrix::InnerIterator it(connectivity_, r); it; ++it)
+      sum += std::abs(it.value() * u[it.col()]);
+    magnitudes[r] = sum;
+  }
+}
+
 }  // namespace pound::integrators

@@ -17,6 +17,12 @@
 
 namespace pound::integrators {
 
+// How far past its bound a hard contact's delta may be, over the size of its terms
+// (LinkSet::row_magnitudes): above what their sums accumulate in round-off over a run, so that a
+// contact at rest against another (grazing, as after two rods part, or two bodies riding together
+// after a plastic impact) stays without force rather than chatter.
+inline constexpr double kHardContactRoundOff = 1e-10;
+
 class LinkSet {
  public:
   using SparseRowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
@@ -123,6 +129,8 @@ class LinkSet {
     std::vector<char> pair;
   };
   HardRows hard_rows();
+  // sum_j |B_rj u_j| of each row: the size of delta's terms, and so of its round-off.
+  void row_magnitudes(const Vector& u, Vector& magnitudes) const;
   // 1 on the rows of hard contacts between masses (with friction, every row of the link), by
   // row: every DOF of the link's rows carries mass
   // (`lumped_mass`; none: a consistent mass, which every DOF carries). Such a contact's force is

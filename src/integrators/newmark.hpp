@@ -315,6 +315,7 @@ class Newmark final : public Integrator {
   std::vector<HardEntries> hard_entries_;
   std::vector<char> hard_candidate_;  // constrained in this step (held, or penetrated)
   Vector hard_bound_, hard_rate_, hard_force_, hard_acceleration_, link_history_;
+  Vector hard_magnitudes_;  // LinkSet::row_magnitudes at the step's start: delta's round-off
   Vector hard_offset_, hard_offset_rate_, hard_offset_acceleration_;  // the supports' at t_n
   // M factored, for a consistent mass; tied to the system like the factors above.
   struct MassSolver {
