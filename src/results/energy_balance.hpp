@@ -80,10 +80,10 @@ class EnergyBalance : public Observer {
   // F_{n+1} B du.
   void set_step_forces(const std::vector<char>& by_row);
   const EnergyTerms& terms() const { return terms_; }
-  // Central difference's first step: each link row's work beyond the trapezoidal rule's, for the
-  // forces the start's state holds (LinkSummaries::add_work takes it too); empty at other steps
-  // and with other integrators.
-  const Vector& start_link_work() const { return start_link_work_; }
+  // Each link row's work this step beyond what LinkSummaries' rules take (the trapezoidal one,
+  // the rectangle one for step forces), which LinkSummaries::add_work then adds: central
+  // difference's first step, and an implicit step's impulses. Empty where there is none.
+  const Vector& extra_link_work() const { return extra_link_work_; }
   // The largest balance error seen over the run (not only at the end): its largest |residual|
   // over the run's largest term, so that a step's error is measured against the energies the run
   // reaches, not those of its first steps (HHT, alpha -0.1, on a damped SDOF under a record at
@@ -104,6 +104,8 @@ class EnergyBalance : public Observer {
   void add_link_work(const integrators::State& state);
   // Central difference's first step (see the .cpp): each row's work beyond the trapezoidal rule.
   double add_start_link_work(double dt);
+  // The rates of the link rows at the ends of the step (rate_before_ ... whole_rate_after_).
+  void link_rates(const integrators::State& state);
   // 1/2 sum (f_i dt)^2 / m_i over the lumped masses (0 with consistent ones).
   double step_load_energy(double dt);
 
@@ -118,7 +120,11 @@ class EnergyBalance : public Observer {
   // What the first step's link work gained over the trapezoidal rule (start_link_work_), taken
   // from the algorithmic term, which held it, at every step after: the balance is unchanged.
   double start_algorithmic_ = 0.0;
-  Vector start_link_work_, start_link_rate_;
+  Vector extra_link_work_, start_link_rate_;
+  // The link rows' rates at the step's two ends, with the supports' part (whole) and without:
+  // for the impulses' work.
+  Vector rate_before_, rate_after_, whole_rate_before_, whole_rate_after_, offset_, offset_rate_,
+      offset_acceleration_;
   EnergyTerms terms_;
   double worst_residual_ = 0.0;  // the largest |residual + algorithmic| of a step
   bool started_ = false;

@@ -621,7 +621,7 @@ void RunObservers::record(const integrators::State& state) {
   for (auto& recorder : recorders_) recorder->record(state);
   links_.record(state);
   energy_.record(state);
-  if (energy_.start_link_work().size() > 0) links_.add_work(energy_.start_link_work());
+  if (energy_.extra_link_work().size() > 0) links_.add_work(energy_.extra_link_work());
   drifts_.record(state);
   if (base_forces_) record_base_forces(state);
   joints_.record(state);
