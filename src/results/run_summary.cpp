@@ -469,13 +469,20 @@ std::vector<std::string> result_warnings(const RunSummary& run, const UnitNames&
       if (link.passive_engagements &&
           (!most || link.summary.created_energy() > most->summary.created_energy()))
         most = &link;
+    // A hard contact has no penalty to resolve: its impulse is exact, so what it made up is a
+    // step that did not settle, not a stiffness.
+    const bool hard = most->law == "hard_contact";
     warnings.push_back(fmt::format(
-        "contact links created {:.4g}{}, {:.2f} % of the energy put in (link {} {:.4g}{}): a "
-        "penalty contact that starts or ends inside a step gives back more than it took, so the "
-        "pounding forces and what follows them are not to be trusted; reduce the time step, or "
-        "use a law that resolves the impact (the extended penalty)",
+        "contact links created {:.4g}{}, {:.2f} % of the energy put in (link {} {:.4g}{}): {}",
         run.contact_created_energy(), u.energy, 100.0 * created, most->id,
-        most->summary.created_energy(), u.energy));
+        most->summary.created_energy(), u.energy,
+        hard ? "a hard contact's impulse takes energy and gives none back, so its constraint "
+               "was not met within the step (contacts striking together that did not settle?); "
+               "reduce the time step"
+             : "a penalty contact that starts or ends inside a step gives back more than it "
+               "took, so the pounding forces and what follows them are not to be trusted; "
+               "reduce the time step, or use a law that resolves the impact (the extended "
+               "penalty)"));
   }
   if (run.worst_balance_error > 0.01) {
     const std::string why =
