@@ -250,10 +250,14 @@ void EnergyBalance::record_general(const integrators::State& state, bool algorit
   }
   const bool first_step = recorded_steps_ == 0;
   if (algorithmic) {
+    // c dt^2 a^T M a of the state less the start's: the start's is fixed at the first step's dt
+    // (a run's last step, shorter to end at its duration, took it at its own and scaled it: a
+    // launched mass damped at 0.32 in its highest mode read 4 % of balance error at its end).
     const double dt = state.time - previous_.time;
-    terms_.algorithmic = acceleration_energy_ * dt * dt *
-                             (mass_norm(state.acceleration) - initial_acceleration_norm_) +
-                         start_algorithmic_;
+    if (first_step)
+      initial_algorithmic_ = -acceleration_energy_ * dt * dt * initial_acceleration_norm_;
+    terms_.algorithmic = acceleration_energy_ * dt * dt * mass_norm(state.acceleration) +
+                         initial_algorithmic_ + start_algorithmic_;
   }
   sample_round_off(state.time - previous_.time);
   step_ = state.displacement - previous_.displacement;

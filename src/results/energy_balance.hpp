@@ -117,6 +117,7 @@ class EnergyBalance : public Observer {
   bool predicted_damping_ = false;
   Vector damping_velocity_, previous_damping_velocity_, previous_acceleration_;
   double initial_acceleration_norm_ = 0.0;  // a_0^T M a_0
+  double initial_algorithmic_ = 0.0;        // -c dt_1^2 a_0^T M a_0, dt_1 the first step's
   // What the first step's link work gained over the trapezoidal rule (start_link_work_), taken
   // from the algorithmic term, which held it, at every step after: the balance is unchanged.
   double start_algorithmic_ = 0.0;
