@@ -97,9 +97,16 @@ std::string check_text(const std::string& model_path, const verification::ModelC
     text += time.empty() ? "\n" : " " + time + "\n";
   }
   if (check.explicit_step_contact)
-    text += fmt::format("  central difference stable step: {} with contacts open, {} in contact\n",
-                        with_unit(*check.explicit_step_open, time),
-                        with_unit(*check.explicit_step_contact, time));
+    text += fmt::format(
+        "  central difference stable step: {} with contacts open, {} in contact{}{}\n",
+        with_unit(*check.explicit_step_open, time), with_unit(*check.explicit_step_contact, time),
+        check.hertz_at_peak ? " (the Hertz-type contacts at their peak penetration in an impact "
+                              "at their approach velocity below)"
+                            : "",
+        check.hertz_without_stiffness
+            ? ", without the stiffness of the Hertz-type contacts that have no approach velocity "
+              "to estimate it at"
+            : "");
   else
     text += fmt::format("  central difference: not available ({})\n", check.explicit_unavailable);
   if (check.implicit_stable_step) {

@@ -206,6 +206,14 @@ LoadedModel load_model(const std::string& path,
   return load_model_spec(io::read_model_file(path), path, motion_override);
 }
 
+LoadedModel load_model_structure(const std::string& path) {
+  // Modes and pushovers need the structure, not its records: a model copied away from its
+  // records still has periods (it was refused, naming the record it did not need).
+  builder::ModelSpec spec = io::read_model_file(path);
+  spec.excitations.clear();
+  return load_model_spec(std::move(spec), path, std::nullopt);
+}
+
 LoadedModel load_model_text(const std::string& text, const std::string& path,
                             const std::optional<MotionOverride>& motion_override) {
   return load_model_spec(io::parse_model(text, path), path, motion_override);

@@ -56,6 +56,9 @@ struct MotionOverride {
 // than the Y GiB ..." (run, check and the verify benchmarks refuse it before allocating).
 std::optional<std::string> memory_shortfall(double dofs);
 
+// The model without its excitations (none of its records read): what `pound modes` and
+// `pound pushover` need.
+LoadedModel load_model_structure(const std::string& path);
 LoadedModel load_model(const std::string& path,
                        const std::optional<MotionOverride>& motion_override = {});
 

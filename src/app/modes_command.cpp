@@ -269,7 +269,7 @@ int modes_command(const Arguments& arguments) {
               << "'\n";
     return 1;
   }
-  const LoadedModel loaded = load_model(model_path);
+  const LoadedModel loaded = load_model_structure(model_path);
   if (!shapes.empty()) {
     std::vector<io::NamedPath> inputs{{model_path, "the model"}};
     for (const std::string& record : loaded.record_paths) inputs.push_back({record, "a record"});

@@ -72,7 +72,8 @@ int pushover_command(const Arguments& arguments) {
   const std::string out =
       command.out.empty() ? io::folder_named_after("out", model_path, "--out") : command.out;
   check_pushover_outputs(out, model_path, "--out");
-  const PushoverFindings push = pushover_findings(load_model(model_path), model_path, request);
+  const PushoverFindings push =
+      pushover_findings(load_model_structure(model_path), model_path, request);
   write_pushover_outputs(out, push);
   std::cout << (command.json ? push.document.dump() + "\n"
                              : fmt::format("pushover -> {}/pushover.csv\n{}", out, push.text));

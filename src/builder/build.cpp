@@ -567,6 +567,7 @@ BuiltModel build(const ModelSpec& user_spec, const std::vector<model::GroundMoti
   ExcitationScaling scaling = resolve_excitations(resolver, motions, second_motions, model);
   built.excitation_factors = std::move(scaling.factors);
   built.excitation_peaks = std::move(scaling.peaks);
+  built.uniform_excitation_sources = std::move(scaling.uniform_sources);
   built.units = spec.units.names();
   fit_analysis_to_records(built.analysis, model);
   if (!built.analysis.time_step_auto) {

@@ -35,7 +35,9 @@ struct BuiltModel {
   // The factor each record of spec.excitations was multiplied by (its scale times extra_factor).
   std::vector<double> excitation_factors;
   std::vector<ScaledPeak> excitation_peaks;  // per excitation, in g
-  UnitNames units;                           // of spec.units, for the outputs' headers
+  // Per uniform excitation of the model, the spec's excitation it came from (a pair gives two).
+  std::vector<std::size_t> uniform_excitation_sources;
+  UnitNames units;  // of spec.units, for the outputs' headers
 };
 
 // The size of the model a spec makes, generators included, known before anything is built (a

@@ -84,10 +84,12 @@ void check_scaled(const ExcitationPlace& place, const model::GroundMotion& motio
 // Adds a record (already scaled) along `direction`: uniform, or moving the supports the
 // excitation names, each after its wave-passage delay.
 void add_component(const ExcitationPlace& place, model::GroundMotion motion,
-                   const model::Coordinates& direction, model::Model& model) {
+                   const model::Coordinates& direction, model::Model& model,
+                   ExcitationScaling& scaling) {
   const ExcitationSpec& e = place.spec;
   if (e.supports.empty()) {
     model.excitations.push_back({std::move(motion), direction});
+    scaling.uniform_sources.push_back(place.k);
     return;
   }
   model::SupportExcitation moving{std::move(motion), direction, {}};
@@ -148,7 +150,7 @@ ExcitationScaling resolve_excitations(
       check_scaled(place, motion, factor);
       scaling.factors.push_back(factor);
       scaling.peaks.push_back({motion.name, motion.peak() / gravity});
-      add_component(place, std::move(motion), model::to_coordinates(e.direction), model);
+      add_component(place, std::move(motion), model::to_coordinates(e.direction), model, scaling);
       continue;
     }
     model::GroundMotionPair pair;
@@ -166,8 +168,8 @@ ExcitationScaling resolve_excitations(
     const model::GroundMotion& stronger =
         pair.first.peak() >= pair.second.peak() ? pair.first : pair.second;
     scaling.peaks.push_back({stronger.name, stronger.peak() / gravity});
-    add_component(place, std::move(pair.first), pair_direction(*e.pair, 0), model);
-    add_component(place, std::move(pair.second), pair_direction(*e.pair, 1), model);
+    add_component(place, std::move(pair.first), pair_direction(*e.pair, 0), model, scaling);
+    add_component(place, std::move(pair.second), pair_direction(*e.pair, 1), model, scaling);
   }
   return scaling;
 }

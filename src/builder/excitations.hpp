@@ -23,6 +23,9 @@ struct ScaledPeak {
 struct ExcitationScaling {
   std::vector<double> factors;
   std::vector<ScaledPeak> peaks;
+  // For each uniform excitation of the model (a pair gives two), the spec's excitation it came
+  // from: where a message about it points (/excitations/k).
+  std::vector<std::size_t> uniform_sources;
 };
 
 // Adds the excitations to `model` (its supports already there). A support that does not hold

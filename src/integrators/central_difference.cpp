@@ -154,10 +154,15 @@ struct LinkTangents {
 };
 
 // Link tangents: at first touch (closing) when contacts count, else at rest.
-LinkTangents link_tangents(LinkSet& links, bool contacts_active) {
+LinkTangents link_tangents(LinkSet& links, bool contacts_active,
+                           std::span<const LinkRowState> at = {}) {
   const Index m = links.size();
-  const Vector delta = contacts_active ? Vector::Constant(m, 1e-12) : Vector(-links.gaps());
-  const Vector rate = Vector::Constant(m, contacts_active ? 1e-12 : 0.0);
+  Vector delta = contacts_active ? Vector::Constant(m, 1e-12) : Vector(-links.gaps());
+  Vector rate = Vector::Constant(m, contacts_active ? 1e-12 : 0.0);
+  for (const LinkRowState& state : at) {
+    delta[state.row] = state.penetration;
+    rate[state.row] = state.rate;
+  }
   Vector force;
   Matrix stiffness_only, with_mass, with_damping;
   links.set_trial(delta, rate, Vector::Zero(m), 0.0, 0.0, force, stiffness_only);
@@ -952,10 +957,11 @@ double highest_frequency(SecondOrderSystem& system, bool contacts_active) {
   return std::sqrt(std::max(mode.eigenvalue, 0.0));
 }
 
-double stable_time_step(SecondOrderSystem& system, bool contacts_active) {
+double stable_time_step(SecondOrderSystem& system, bool contacts_active,
+                        std::span<const LinkRowState> at) {
   const Vector inverse_mass = diagonal_mass(system).cwiseInverse();
   LinkSet& links = system.links();
-  const LinkTangents tangents = link_tangents(links, contacts_active);
+  const LinkTangents tangents = link_tangents(links, contacts_active, at);
   HighestMode mode = highest_mode(system, inverse_mass, tangents);
   refuse_overflow(mode, tangents);
   const double omega = std::sqrt(std::max(mode.eigenvalue, 0.0));

@@ -29,6 +29,7 @@
 // slipping, F_t = mu F_n e along the step's slide e = s / |s|, found by Newton's method on e within
 // the same active set (slip_in_plane_row).
 #include <Eigen/LU>
+#include <span>
 #include <vector>
 
 #include "integrators/integrator.hpp"
@@ -151,7 +152,14 @@ class CentralDifference final : public Integrator {
 // `contacts_active`, every link counts with its tangent at first touch (contact stiffness and
 // penalty mass); without, with its tangent at rest (open contacts: none). Throws std::domain_error
 // when M has a zero on its diagonal (explicit needs lumped mass on every DOF).
-double stable_time_step(SecondOrderSystem& system, bool contacts_active);
+// `at`: link rows whose tangents are taken at a given penetration and rate instead (a Hertz-type
+// contact, whose stiffness at first touch is 0, at its estimated peak penetration).
+struct LinkRowState {
+  Index row;
+  double penetration, rate;
+};
+double stable_time_step(SecondOrderSystem& system, bool contacts_active,
+                        std::span<const LinkRowState> at = {});
 // omega_max of the same eigenproblem, undamped (for an implicit method stable only below a limit
 // of omega dt, IntegratorEntry::stability_limit). The same requirements and errors.
 double highest_frequency(SecondOrderSystem& system, bool contacts_active);

@@ -224,8 +224,48 @@ void warn_uncomputed_implicit_limit(const builder::AnalysisSpec& analysis, Model
       analysis.integrator.label(), *limit, against));
 }
 
-void check_explicit_steps(const builder::AnalysisSpec& analysis, assembly::StructuralSystem& system,
-                          ModelCheck& check) {
+// Each contact's approach velocity for its estimates: twice the largest peak ground velocity, or
+// its initial closing velocity where larger.
+Vector approach_velocities(const builder::BuiltModel& built, assembly::StructuralSystem& system) {
+  const integrators::LinkSet& links = system.links();
+  const double ground_velocity = peak_ground_velocity(built.model);
+  Vector closing;
+  links.project(system.initial_velocity(built.model), closing);
+  Vector approach(links.count());
+  for (Index k = 0; k < links.count(); ++k)
+    approach[k] = std::max(2.0 * ground_velocity, std::abs(closing[links.row(k)]));
+  return approach;
+}
+
+// The Hertz-type contacts (F = k_h delta^1.5, no stiffness at first touch) at their elastic
+// impact's peak penetration and approach velocity: where the explicit step in contact is set
+// (at first touch they add no stiffness, and the step found there depended on the units).
+// `unknown`: some Hertz-type contact has no approach velocity to estimate it at.
+std::vector<integrators::LinkRowState> hertz_peaks(const builder::BuiltModel& built,
+                                                   assembly::StructuralSystem& system,
+                                                   const Vector& approach, bool& unknown) {
+  integrators::LinkSet& links = system.links();
+  std::vector<integrators::LinkRowState> peaks;
+  unknown = false;
+  for (Index k = 0; k < links.count(); ++k) {
+    const model::Link& link = built.model.links[static_cast<std::size_t>(k)];
+    if (link.role() != links::LinkRole::contact || !link.law ||
+        link.law->traits.stiff_at_first_touch)
+      continue;
+    const std::optional<double> k_h = hertz_stiffness(links.law(k));
+    const double m_eff = system.link_context(link).effective_mass();
+    if (k_h && m_eff > 0.0 && approach[k] > 0.0)
+      peaks.push_back({links.row(k), links::hertz_impact(*k_h, m_eff, approach[k]).max_penetration,
+                       approach[k]});
+    else
+      unknown = true;
+  }
+  return peaks;
+}
+
+void check_explicit_steps(const builder::BuiltModel& built, assembly::StructuralSystem& system,
+                          const Vector& approach, ModelCheck& check) {
+  const builder::AnalysisSpec& analysis = built.analysis;
   const bool lumped = system.lumped_mass() && (system.lumped_mass()->array() > 0.0).all();
   if (!lumped) {
     check.explicit_unavailable = !system.lumped_mass() && system.dofs().has_ties()
@@ -233,9 +273,17 @@ void check_explicit_steps(const builder::AnalysisSpec& analysis, assembly::Struc
                                      : "a DOF has no lumped mass";
     return;
   }
+  bool unknown = false;
+  const std::vector<integrators::LinkRowState> peaks =
+      hertz_peaks(built, system, approach, unknown);
+  check.hertz_at_peak = !peaks.empty();
+  check.hertz_without_stiffness = unknown;
+  double refused_above = 0.0;
   try {
     check.explicit_step_open = integrators::stable_time_step(system, false);
-    check.explicit_step_contact = integrators::stable_time_step(system, true);
+    check.explicit_step_contact = integrators::stable_time_step(system, true, peaks);
+    refused_above =
+        peaks.empty() ? *check.explicit_step_contact : integrators::stable_time_step(system, true);
   } catch (const std::domain_error& error) {
     check.explicit_step_open.reset();
     check.explicit_unavailable = error.what();
@@ -243,12 +291,19 @@ void check_explicit_steps(const builder::AnalysisSpec& analysis, assembly::Struc
         fmt::format("central difference cannot run this model: {}", error.what()));
     return;
   }
-  if (analysis.integrator.is_explicit() && !analysis.time_step_auto &&
-      analysis.time_step > *check.explicit_step_contact)
+  if (!analysis.integrator.is_explicit() || analysis.time_step_auto) return;
+  if (analysis.time_step > refused_above)
     check.warnings.push_back(
         fmt::format("time step {:.4g} is above the explicit stable limit "
                     "{:.4g}: the run will be refused",
-                    analysis.time_step, *check.explicit_step_contact));
+                    analysis.time_step, refused_above));
+  else if (analysis.time_step > *check.explicit_step_contact)
+    check.warnings.push_back(fmt::format(
+        "time step {:.4g} is above the explicit stable step {:.4g} with the Hertz-type contacts "
+        "at their peak penetration (an impact at twice the peak ground velocity or the initial "
+        "closing velocity): their impacts will not be resolved, and the run may create energy "
+        "or stop",
+        analysis.time_step, *check.explicit_step_contact));
 }
 
 // A step that spans a good part of the analysis or many samples of a record computes something,
@@ -378,10 +433,13 @@ void check_excitations_load(const builder::BuiltModel& built,
   for (std::size_t k = 0; k < built.model.excitations.size(); ++k) {
     if (system.excitation_loads(k)) continue;
     const model::UniformExcitation& e = built.model.excitations[k];
+    // A pair's two components are two of the model's excitations but one of the file's.
+    const std::size_t entry =
+        k < built.uniform_excitation_sources.size() ? built.uniform_excitation_sources[k] : k;
     warnings.push_back(fmt::format(
         "/excitations/{}: record '{}' acts along [{:.4g}], in which every DOF with mass is held: "
         "it loads nothing and every response to it is 0 (is its \"direction\" what you meant?)",
-        k, e.motion.name,
+        entry, e.motion.name,
         fmt::join(e.direction.begin(), e.direction.begin() + built.model.dimension, ", ")));
   }
 }
@@ -425,7 +483,8 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
       check.warnings.push_back(fmt::format("the periods cannot be found: {}", error.what()));
     }
   }
-  check_explicit_steps(analysis, system, check);
+  const Vector approach = approach_velocities(built, system);
+  check_explicit_steps(built, system, approach, check);
   check.implicit_stable_step = builder::conditional_stable_step(analysis.integrator, system);
   warn_uncomputed_implicit_limit(analysis, check);
   check_step_against_duration(built, check.warnings);
@@ -434,15 +493,11 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
   check_duration_reaches_peaks(built, check.warnings);
   check_excitations_load(built, system, check.warnings);
   warn_friction_coefficients(system, check.warnings);
-  const double ground_velocity = peak_ground_velocity(built.model);
-  Vector closing;
-  links.project(system.initial_velocity(built.model), closing);
   ProbeMemo memo;
   for (Index k = 0; k < links.count(); ++k) {
     const model::Link& link = built.model.links[static_cast<std::size_t>(k)];
     if (link.role() != links::LinkRole::contact) continue;
-    const double approach = std::max(2.0 * ground_velocity, std::abs(closing[links.row(k)]));
-    const LinkCheck c = check_contact(link, links.law(k), system, approach);
+    const LinkCheck c = check_contact(link, links.law(k), system, approach[k]);
     // A penalty spring without the extended penalty's mass: Kawashima's advice.
     const bool plain_penalty = link.law && link.law->traits.penalty &&
                                links.law(k).clone()->set_trial({1e-9, 1e-9, 0.0}).mass == 0.0;
@@ -453,7 +508,7 @@ ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSys
     // energy).
     if (!builder::seated_under_weight(link, built)) {
       warn_contact_steps(c, analysis, check.warnings);
-      warn_created_energy(link, links.law(k), system, analysis, approach, memo, check.warnings);
+      warn_created_energy(link, links.law(k), system, analysis, approach[k], memo, check.warnings);
     }
     check.contacts.push_back(c);
   }

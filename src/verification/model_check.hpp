@@ -44,6 +44,9 @@ struct ModelCheck {
   std::vector<double> periods;  // the first six; none when not asked
   // Central difference's stable step; none without a lumped mass on every DOF.
   std::optional<double> explicit_step_open, explicit_step_contact;
+  // The Hertz-type contacts in explicit_step_contact: at their peak penetration for an impact at
+  // their approach velocity (some), or without their stiffness (some had no velocity to take).
+  bool hertz_at_peak = false, hertz_without_stiffness = false;
   // Why there are no explicit steps: no lumped mass on some DOF, or no stable step at all.
   std::string explicit_unavailable;
   // The longest stable step of the model's implicit method when it has one (linear

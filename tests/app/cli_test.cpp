@@ -849,6 +849,9 @@ TEST_F(Cli, EveryBundledModelRuns) {
       EXPECT_EQ(summary["energy"]["contact_created"].get<double>(), 0.0);
       EXPECT_EQ(summary["links"][0]["peak_penetration"].get<double>(), 0.0);
       EXPECT_GT(summary["links"][0]["impacts"].get<int>(), 0);
+      // Its girders' peak accelerations hold the impulses over one step: said so.
+      EXPECT_TRUE(contains(summary["warnings"].dump(), "struck under central difference"))
+          << summary["warnings"].dump();
     }
   }
   EXPECT_GE(models, 4);
@@ -1171,6 +1174,45 @@ TEST_F(Cli, VerifyRefusesAStepLongerThanTheRun) {
 }  // namespace
 
 namespace {
+
+// Central difference's stable step in contact with a Hertz contact (no stiffness at first touch)
+// is taken at its elastic impact's peak penetration, for an impact at its approach velocity:
+// two bare masses (1,000 and 500 kg) closing at 1 m/s on k_h = 1e9 N/m^1.5 give
+// 2 / sqrt(1.5 k_h sqrt(delta_max) / m_eff) with delta_max = (5 m_eff v^2 / (4 k_h))^(2/5), the
+// same in mm, ms and kN. At first touch it was 1e-12 of a unit deep: 1.574 s in metres, 8,853 ms
+// in millimetres, for an impact that lasts milliseconds.
+TEST_F(Cli, CheckTakesAHertzContactsStableStepAtItsPeakPenetration) {
+  const double mass_eff = 1000.0 * 500.0 / 1500.0, stiffness = 1e9;
+  const double peak = std::pow(5.0 * mass_eff / (4.0 * stiffness), 0.4);
+  const double exact = 2.0 / std::sqrt(1.5 * stiffness * std::sqrt(peak) / mass_eff);
+  for (const bool millimetres : {false, true}) {
+    json pair = moving_masses(2, 1000.0, "central_difference");
+    pair["masses"][1]["mass"] = 500.0;
+    pair["analysis"]["time_step"] = millimetres ? 1e-2 : 1e-5;
+    pair["analysis"]["duration"] = millimetres ? 50.0 : 0.05;
+    pair["nodes"][1]["x"] = millimetres ? 1000.0 : 1.0;
+    // kN / mm^1.5 = 1e3 N / (1e-3 m)^1.5: k_h / 31,622.8
+    pair["links"] = {
+        {{"id", "c"},
+         {"nodes", {"m0", "m1"}},
+         {"law",
+          {{"type", "hertz"},
+           {"stiffness", millimetres ? stiffness / 1e3 / std::pow(1e3, 1.5) : stiffness}}}}};
+    if (millimetres) pair["units"] = {{"length", "mm"}, {"time", "ms"}, {"mass", "kg"}};
+    const fs::path file = path(millimetres ? "mm.json" : "m.json");
+    std::ofstream(file) << pair.dump(2);
+    const Outcome check = pound({"check", file.string(), "--json"});
+    ASSERT_EQ(check.exit_code, 0) << check.err << check.out;
+    const double step = json::parse(check.out)["explicit_stable_step_contact"].get<double>() /
+                        (millimetres ? 1e3 : 1.0);
+    std::cout << fmt::format(
+        "Hertz pair, {}: explicit stable step in contact {:.6e} s, exact "
+        "{:.6e} s\n",
+        millimetres ? "mm, ms, kN" : "m, s, N", step, exact);
+    EXPECT_NEAR(step / exact, 1.0, 1e-9);
+    EXPECT_TRUE(contains(pound({"check", file.string()}).out, "at their peak penetration"));
+  }
+}
 
 // `pound check` finds what the benchmarks show to be meaningless, and is quiet otherwise.
 TEST_F(Cli, CheckWarnsAboutMeaninglessSettingsOnly) {
@@ -1521,6 +1563,26 @@ TEST_F(Cli, ModesListOnlyTheDirectionsTheSceneMovesInAndWriteTheShapes) {
 // M-orthonormal basis = iota^T M iota). The listed modes' sums are printed; where they hold less
 // than the codes' 90 % along an axis a record shakes (the plane bridge's first mode alone, x),
 // the listing says so, and not for an axis no record shakes (its y).
+// A model copied away from its records still has periods and a capacity curve: modes and pushover
+// read no record (they were refused, naming the record file they did not need).
+TEST_F(Cli, ModesAndPushoverOfAModelAwayFromItsRecordsNeedNone) {
+  const fs::path original = fs::path(POUND_SOURCE_DIR) / "models" / "eccentric_storey_3d.json";
+  const fs::path copy = path("storey.json");
+  fs::copy_file(original, copy);
+  const Outcome here = pound({"modes", copy.string(), "--json"});
+  ASSERT_EQ(here.exit_code, 0) << here.err;
+  const Outcome there = pound({"modes", original.string(), "--json"});
+  ASSERT_EQ(there.exit_code, 0) << there.err;
+  EXPECT_EQ(json::parse(here.out)["modes"], json::parse(there.out)["modes"]);
+  const Outcome push = pound({"pushover", copy.string(), "--node", "floor", "--direction", "x",
+                              "--to", "0.01", "--out", path("push").string()});
+  EXPECT_EQ(push.exit_code, 0) << push.err;
+  // A run needs its records, and says which.
+  const Outcome run = pound({"run", copy.string(), "--out", path("run").string()});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_TRUE(contains(run.err, "synthetic_firm_01.AT2")) << run.err;
+}
+
 TEST_F(Cli, ModesSumTheirEffectiveMassAlongEachAxisAgainstTheCodes90Percent) {
   const std::string skewed = POUND_SOURCE_DIR "/models/skewed_bridge_3d.json";
   const Outcome listed = pound({"modes", skewed});

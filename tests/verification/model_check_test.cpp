@@ -262,6 +262,35 @@ TEST(ModelCheck, ARecordThatLoadsNothingWarns) {
             "meant?)");
 }
 
+// A pair of horizontal components is one entry of the file and two excitations of the model: a
+// vertical record after it, loading nothing where the floor is held in z, is /excitations/1 (it
+// was named /excitations/2).
+TEST(ModelCheck, ARecordAfterAPairIsNamedByItsEntry) {
+  const std::string text = R"({
+    "dimension": 3,
+    "nodes": [{"id": "ground", "x": 0, "y": 0, "z": 0}, {"id": "top", "x": 0, "y": 0, "z": 0}],
+    "supports": [{"node": "ground", "fix": ["x", "y", "z"]}, {"node": "top", "fix": ["z"]}],
+    "masses": [{"node": "top", "mass": 1}],
+    "links": [{"id": "x", "nodes": ["ground", "top"], "axis": [1, 0, 0],
+               "law": {"type": "elastic_spring", "stiffness": 400}},
+              {"id": "y", "nodes": ["ground", "top"], "axis": [0, 1, 0],
+               "law": {"type": "elastic_spring", "stiffness": 400}}],
+    "excitations": [{"record": "pulse.txt", "pair": {"record": "pulse.txt"}},
+                    {"record": "pulse.txt", "direction": [0, 0, 1]}],
+    "analysis": {"time_step": 0.01, "duration": 1}})";
+  const model::GroundMotion pulse{
+      .name = "pulse", .time_step = 0.01, .acceleration = {0.0, 0.1, 0.0}};
+  const builder::BuiltModel built =
+      builder::build(io::parse_model(text, "pair.json"), {pulse, pulse}, {pulse, std::nullopt});
+  assembly::StructuralSystem system(built.model);
+  std::vector<std::string> found;
+  for (const std::string& w : check_model(built, system, false).warnings)
+    if (w.find("loads nothing") != std::string::npos) found.push_back(w);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_TRUE(found[0].starts_with("/excitations/1: record 'pulse' acts along [0, 0, 1]"))
+      << found[0];
+}
+
 // More than a billion steps (a time step or duration mistyped by powers of ten) warns with the run
 // time that means; a billion does not.
 TEST(ModelCheck, AnAnalysisOfMoreThanABillionStepsWarns) {
