@@ -14,6 +14,7 @@
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <set>
 #include <sstream>
 #include <string>
@@ -1212,6 +1213,31 @@ TEST_F(Cli, CheckTakesAHertzContactsStableStepAtItsPeakPenetration) {
     EXPECT_NEAR(step / exact, 1.0, 1e-9);
     EXPECT_TRUE(contains(pound({"check", file.string()}).out, "at their peak penetration"));
   }
+}
+
+// An extended penalty's mass alpha2 moves with the pair it joins: between bare masses a contact
+// lasts half a period of m_eff + alpha2 on alpha0 (check claimed pi sqrt(m_eff / alpha0), 0.026 s
+// for a 0.103 s contact at alpha2 = 15 m_eff).
+TEST_F(Cli, CheckCountsTheExtendedPenaltysMassInTheContactsDuration) {
+  json pair = moving_masses(2, 1e5, "central_difference");
+  pair["masses"][1]["mass"] = 2e5;
+  pair["analysis"]["time_step"] = 1e-5;
+  pair["analysis"]["duration"] = 0.05;
+  pair["links"] = {
+      {{"id", "c"},
+       {"nodes", {"m0", "m1"}},
+       {"law", {{"type", "extended_penalty"}, {"alpha0", 1e9}, {"alpha1", 0.0}, {"alpha2", 1e6}}}}};
+  const fs::path file = path("penalty.json");
+  std::ofstream(file) << pair.dump(2);
+  const Outcome check = pound({"check", file.string(), "--json"});
+  ASSERT_EQ(check.exit_code, 0) << check.err << check.out;
+  const double duration = json::parse(check.out)["links"][0]["contact_duration"].get<double>();
+  const double exact = std::numbers::pi * std::sqrt((1e5 * 2e5 / 3e5 + 1e6) / 1e9);
+  std::cout << fmt::format(
+      "extended penalty, alpha2 = 15 m_eff: contact lasts {:.6f} s, "
+      "pi sqrt((m_eff + alpha2) / alpha0) = {:.6f} s\n",
+      duration, exact);
+  EXPECT_NEAR(duration, exact, 1e-12 * exact);
 }
 
 // `pound check` finds what the benchmarks show to be meaningless, and is quiet otherwise.
