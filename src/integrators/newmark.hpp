@@ -247,6 +247,8 @@ class Newmark final : public Integrator {
   };
   // Cuts a late correction that did not lower the unbalanced force back by half (true: the
   // forces changed, evaluate again).
+  // ||diag(T) delta||: the size of the link laws' terms, whose cancellation bounds the residual.
+  double law_terms_norm() const;
   bool backtracked(Backtrack& backtrack, int iteration, double unbalanced);
   double force_change(Index row) const {
     return started_loaded_ ? assumed_force_[row] - start_force_[row] : assumed_force_[row];

@@ -353,6 +353,38 @@ TEST_F(Cli, AHardContactsImpulseUnderHhtAndGeneralizedAlphaTakesItsExactWork) {
     }
 }
 
+// An extended penalty with a mass alpha2 between bare masses, under Newmark: its law force is
+// alpha2 c_m (delta - delta~) + alpha0 delta, terms of 6e10 N cancelling to 3e4 N, so its
+// round-off is 1e-5 N, above the tolerance on the force; Newton swung by that much to its 25th
+// iteration and the run failed from alpha2 = 0.45 m_eff on. The iteration now stops where its
+// correction is below the laws' terms' round-off: undamped, the pair parts with its energy.
+TEST_F(Cli, AnExtendedPenaltysMassBetweenBareMassesConvergesUnderNewmark) {
+  for (const double alpha2 : {3e4, 1e5}) {
+    json pair = moving_masses(2, 1e5, "newmark_average_acceleration");
+    pair["masses"][1]["mass"] = 2e5;
+    pair["analysis"]["time_step"] = 1e-5;
+    pair["analysis"]["duration"] = 0.06;
+    pair["links"] = {
+        {{"id", "c"},
+         {"nodes", {"m0", "m1"}},
+         {"gap", 0.01},
+         {"law",
+          {{"type", "extended_penalty"}, {"alpha0", 1e9}, {"alpha1", 0.0}, {"alpha2", alpha2}}}}};
+    const fs::path file = path("penalty.json"), out = path("penalty.out");
+    std::ofstream(file) << pair.dump(2);
+    const Outcome outcome = pound({"run", file.string(), "--out", out.string()});
+    ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+    const json summary = json::parse(read_text(out / "summary.json"));
+    const double kinetic = summary["energy"]["kinetic"];
+    std::cout << fmt::format(
+        "extended penalty, alpha2 = {:.2f} m_eff: kinetic energy after "
+        "{:.9f} of 50,000 J\n",
+        alpha2 / (1e5 * 2e5 / 3e5), kinetic / 5e4);
+    EXPECT_EQ(summary["links"][0]["impacts"], 1);
+    EXPECT_NEAR(kinetic, 5e4, 1e-6 * 5e4);
+  }
+}
+
 // The same block started at rest from the static state ("initial_state": "static", which a hard
 // contact used to refuse): the contact holds its weight from t = 0 and the block stays where it
 // is, with every energy term at round-off and no warning (their 1e-21 J is not "100 %" of
