@@ -134,7 +134,8 @@ def excitations(summary, folder):
             scaling = e.get("scaling") if isinstance(e.get("scaling"), dict) else {}
             rows.append({"record": e.get("record", ""), "sha1": e.get("sha1", ""),
                          "format": e.get("format", ""), "units": e.get("units", ""),
-                         "scaling": ", ".join(f"{k} {v}" for k, v in scaling.items()),
+                         "scaling": ", ".join("as recorded" if k == "as_recorded" else
+                                              f"{k} {v}" for k, v in scaling.items()),
                          "factor": e.get("factor"), "pga_g": e.get("pga_g"),
                          "replaced_by": e.get("replaced_by", "")})
         return (table(rows, [("sha1", "SHA-1", None), ("format", "format", None),

@@ -210,8 +210,19 @@ LoadedModel load_model_structure(const std::string& path) {
   // Modes and pushovers need the structure, not its records: a model copied away from its
   // records still has periods (it was refused, naming the record it did not need).
   builder::ModelSpec spec = io::read_model_file(path);
+  std::vector<model::Coordinates> directions;
+  for (const builder::ExcitationSpec& e : spec.excitations) {
+    if (!e.pair) {
+      directions.push_back(model::to_coordinates(e.direction));
+      continue;
+    }
+    for (const int component : {0, 1})
+      directions.push_back(builder::pair_direction(*e.pair, component));
+  }
   spec.excitations.clear();
-  return load_model_spec(std::move(spec), path, std::nullopt);
+  LoadedModel loaded = load_model_spec(std::move(spec), path, std::nullopt);
+  loaded.unread_excitation_directions = std::move(directions);
+  return loaded;
 }
 
 LoadedModel load_model_text(const std::string& text, const std::string& path,

@@ -27,6 +27,9 @@ struct LoadedModel {
   std::vector<std::optional<SecondComponent>> second_components;
   // Who replaced the first excitation's record: "--motion", "the batch case", or empty.
   std::string first_record_replaced_by;
+  // load_model_structure's: the directions of the excitations it left out (a pair's two), which
+  // `pound modes` holds the 90 % of mass to.
+  std::vector<model::Coordinates> unread_excitation_directions;
 };
 
 // `pound run --motion RECORD` and its options: the record replacing the model's first one, how to

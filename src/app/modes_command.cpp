@@ -89,19 +89,21 @@ std::array<Vector, 3> influence_vectors(const assembly::StructuralSystem& system
 }
 
 // The axes an excitation of the model shakes (a component above 1e-9 of its direction).
-std::array<bool, 3> shaken_axes(const model::Model& model) {
+std::array<bool, 3> shaken_axes(const model::Model& model,
+                                const std::vector<model::Coordinates>& unread) {
   std::array<bool, 3> shaken{false, false, false};
   const auto add = [&](const model::Coordinates& direction) {
     for (std::size_t a = 0; a < 3; ++a) shaken[a] = shaken[a] || std::abs(direction[a]) > 1e-9;
   };
   for (const model::UniformExcitation& e : model.excitations) add(e.direction);
   for (const model::SupportExcitation& e : model.support_excitations) add(e.direction);
+  for (const model::Coordinates& direction : unread) add(direction);
   return shaken;
 }
 
 // The first `count` modes that are not rigid-body motion.
 ListedModes list_modes(const assembly::StructuralSystem& system, const model::Model& model,
-                       int count) {
+                       int count, const std::vector<model::Coordinates>& unread) {
   const assembly::Modes modes = assembly::vibration_modes(system, count);
   // Effective modal mass along x, y and z: (phi^T M iota)^2 with mass-normalised phi.
   const std::array<Vector, 3> influence = influence_vectors(system, model.nodes.size());
@@ -112,7 +114,7 @@ ListedModes list_modes(const assembly::StructuralSystem& system, const model::Mo
   ListedModes result;
   for (int d = 1; d < 3; ++d)
     if (total[static_cast<std::size_t>(d)] > 0.0) result.axes.push_back(d);
-  result.shaken = shaken_axes(model);
+  result.shaken = shaken_axes(model, unread);
   result.asked = count;
   const auto dofs_with_mass = static_cast<Index>((mass.diagonal().array() > 0.0).count());
   result.fewer = assembly::fewer_modes_reason(system.size(), dofs_with_mass, count,
@@ -236,7 +238,7 @@ ModalFindings modal_findings(const LoadedModel& loaded, const std::string& model
   const std::unique_ptr<assembly::StructuralSystem> system = assemble(loaded, model_path);
   ListedModes modes;
   try {
-    modes = list_modes(*system, loaded.built.model, count);
+    modes = list_modes(*system, loaded.built.model, count, loaded.unread_excitation_directions);
   } catch (const assembly::NotPositiveDefinite& failure) {
     throw builder::not_held_error(loaded.built, system->dofs(), failure,
                                   "the condensation of the massless DOFs", model_path);

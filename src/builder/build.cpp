@@ -187,6 +187,14 @@ std::optional<double> conditional_stable_step(const integrators::IntegratorChoic
 namespace {
 
 // Linear acceleration (and any Newmark with beta < gamma / 2) grows without bound past its
+// "<step> is above the stable limit <limit>", with as many digits as tell them apart (at six a
+// step just past its limit read "0.0703891 is above the stable limit 0.0703891").
+std::string step_above_limit(double step, double limit) {
+  if (fmt::format("{:.6g}", step) != fmt::format("{:.6g}", limit))
+    return fmt::format("{:.6g} is above the stable limit {:.6g}", step, limit);
+  return fmt::format("{} is above the stable limit {}", step, limit);
+}
+
 // limit of omega dt, as central difference does past its step: the same refusal. Its damping
 // term is implicit, so (with gamma = 1/2) the limit does not fall with damping.
 void refuse_step_past_implicit_limit(const AnalysisSpec& analysis,
@@ -198,11 +206,12 @@ void refuse_step_past_implicit_limit(const AnalysisSpec& analysis,
   const bool adaptive = analysis.adaptive && analysis.time_step <= *limit;
   throw InputError(
       source, adaptive ? "/analysis/adaptive" : "/analysis/time_step",
-      fmt::format("{}{:.6g} is above the stable limit {:.6g} of {} ({:.4g} / omega_max with the "
-                  "links in contact): past it the response grows without bound; use a smaller "
-                  "step, or newmark_average_acceleration, stable at any step",
-                  adaptive ? "the longest adaptive step, " : "", analysis.longest_step(), *limit,
-                  analysis.integrator.label(), *analysis.integrator.stability_limit()));
+      fmt::format("{}{} of {} ({:.4g} / omega_max with the links in contact): past it the "
+                  "response grows without bound; use a smaller step, or "
+                  "newmark_average_acceleration, stable at any step",
+                  adaptive ? "the longest adaptive step, " : "",
+                  step_above_limit(analysis.longest_step(), *limit), analysis.integrator.label(),
+                  *analysis.integrator.stability_limit()));
 }
 
 }  // namespace
@@ -264,10 +273,9 @@ void settle_time_step(AnalysisSpec& analysis, const model::Model& model,
     check_step_count(analysis, source);
   } else if (analysis.time_step > limit) {
     throw InputError(source, "/analysis/time_step",
-                     fmt::format("{:.6g} is above the stable limit {:.6g} of central difference "
-                                 "(2 / omega_max with the links in contact); use \"auto\" or a "
-                                 "smaller step",
-                                 analysis.time_step, limit));
+                     fmt::format("{} of central difference (2 / omega_max with the links in "
+                                 "contact); use \"auto\" or a smaller step",
+                                 step_above_limit(analysis.time_step, limit)));
   }
 }
 
