@@ -199,36 +199,21 @@ void EnergyBalance::add_link_work(const integrators::State& state) {
   // Work of the link forces on the structure (B du). With moving supports (or belts) the links
   // also deform by the supports' motion: the links then take their whole work F d(delta), and
   // what the supports did through them (F (d(delta) - B du)) is input, so that the links' term
-  // holds what yielding links dissipate and a link driven by supports alone balances. A
-  // step-average row's force is F_{n+1} (weight 1), every other row's the trapezoidal average.
+  // holds what yielding links dissipate and a link driven by supports alone balances. Each row
+  // by the trapezoidal rule, or an impulse's by add_impulse_work.
   system_.links().project(step_, link_step_);
-  const bool weighted = step_force_weight_.size() > 0;
   const bool moving = link_motion_ && previous_.link_penetration.size() == link_step_.size();
-  if (weighted) {
-    link_rates(state);
-    extra_link_work_.setZero(link_step_.size());
-  }
-  const double dt = state.time - previous_.time;
   double work = 0.0, whole = 0.0;
-  for (Index r = 0; r < link_step_.size(); ++r) {
-    const double now = state.link_force[r], before = previous_.link_force[r];
-    const double deformed =
-        moving ? state.link_penetration[r] - previous_.link_penetration[r] : link_step_[r];
-    if (weighted && step_force_weight_[r] != 0.0) {
-      // An impulse F_{n+1} dt that turned the row's rate from w_n to w_{n+1} did the impulse
-      // times their mean, what the velocities' change takes. F_{n+1} d(delta) is that only where
-      // d(delta) = dt (w_n + w_{n+1}) / 2, under the trapezoidal rule: under HHT a perfectly
-      // elastic impact of two masses (81 J) read -1.8 J, "created by a penalty contact".
-      const double impulse = now * dt;
-      work = multiply_add(impulse, 0.5 * (rate_before_[r] + rate_after_[r]), work);
-      const double taken = impulse * 0.5 * (whole_rate_before_[r] + whole_rate_after_[r]);
-      whole += taken;
-      extra_link_work_[r] = taken - now * deformed;  // beyond LinkSummaries' rectangle rule
-      continue;
+  if (step_force_weight_.size() > 0) {
+    add_impulse_work(state, moving, work, whole);
+  } else {
+    for (Index r = 0; r < link_step_.size(); ++r) {
+      const double average = 0.5 * (state.link_force[r] + previous_.link_force[r]);
+      work = multiply_add(average, link_step_[r], work);
+      if (moving)
+        whole = multiply_add(average, state.link_penetration[r] - previous_.link_penetration[r],
+                             whole);
     }
-    const double average = 0.5 * (now + before);
-    work = multiply_add(average, link_step_[r], work);
-    if (moving) whole = multiply_add(average, deformed, whole);
   }
   if (!moving) {
     terms_.links += work;
@@ -297,6 +282,34 @@ void EnergyBalance::record_general(const integrators::State& state, bool algorit
 // The two differ by O(dt^2) for a smooth force, but a hard contact striking at t = 0 has its whole
 // impulse there: a block against a wall at e = 0.5 took -1.5 J by the rule, +0.75 J in fact.
 // The algorithmic term -(1/8) dt^2 (a^T M a - a_0^T M a_0) held the difference.
+// With step forces (an implicit integrator's hard contacts): an impulse F_{n+1} dt that turned
+// the row's rate from w_n to w_{n+1} did the impulse times their mean, what the velocities' change
+// takes. F_{n+1} d(delta) is that only where d(delta) = dt (w_n + w_{n+1}) / 2, under the
+// trapezoidal rule: under HHT a perfectly elastic impact of two masses (81 J) read -1.8 J,
+// "created by a penalty contact". The other rows by the trapezoidal rule.
+void EnergyBalance::add_impulse_work(const integrators::State& state, bool moving, double& work,
+                                     double& whole) {
+  link_rates(state);
+  extra_link_work_.setZero(link_step_.size());
+  const double dt = state.time - previous_.time;
+  for (Index r = 0; r < link_step_.size(); ++r) {
+    const double now = state.link_force[r], before = previous_.link_force[r];
+    const double deformed = moving ? state.link_penetration[r] - previous_.link_penetration[r]
+                                   : link_step_[r];
+    if (step_force_weight_[r] == 0.0) {
+      const double average = 0.5 * (now + before);
+      work = multiply_add(average, link_step_[r], work);
+      whole = multiply_add(average, deformed, whole);
+      continue;
+    }
+    const double impulse = now * dt;
+    work = multiply_add(impulse, 0.5 * (rate_before_[r] + rate_after_[r]), work);
+    const double taken = impulse * 0.5 * (whole_rate_before_[r] + whole_rate_after_[r]);
+    whole += taken;
+    extra_link_work_[r] = taken - now * deformed;  // beyond LinkSummaries' rectangle rule
+  }
+}
+
 double EnergyBalance::add_start_link_work(double dt) {
   system_.links().project(previous_.velocity, start_link_rate_);
   extra_link_work_.resize(link_step_.size());

@@ -104,6 +104,8 @@ class EnergyBalance : public Observer {
   void add_link_work(const integrators::State& state);
   // Central difference's first step (see the .cpp): each row's work beyond the trapezoidal rule.
   double add_start_link_work(double dt);
+  // add_link_work's sums with step forces (see the .cpp).
+  void add_impulse_work(const integrators::State& state, bool moving, double& work, double& whole);
   // The rates of the link rows at the ends of the step (rate_before_ ... whole_rate_after_).
   void link_rates(const integrators::State& state);
   // 1/2 sum (f_i dt)^2 / m_i over the lumped masses (0 with consistent ones).
