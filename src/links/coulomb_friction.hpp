@@ -20,19 +20,22 @@
 // themselves). The force then passes from +mu R_n to -mu R_n through the stick branch, over
 // 2 mu R_n / k_t of slide, instead of jumping by 2 mu R_n with the velocity's sign: at that jump
 // Newton's iteration cycles without end when a step ends near a reversal (a friction pendulum
-// failed so in 2 of 8 copies of a 1e-4 ensemble). Elsewhere the slip opposes the velocity, as
-// Suzuki & Toi's does: under a belt or a contact that lands sliding, the velocity is the only
-// direction there is.
+// failed so in 2 of 8 copies of a 1e-4 ensemble). One out of a stick whose velocity points h's way
+// (h s_dot > 0) slips along h as well, which with one tangent is the velocity's direction.
+// Elsewhere the slip opposes the velocity, as Suzuki & Toi's does: under a belt or a contact that
+// lands sliding, the velocity is the only direction there is.
 //
 // With two tangents (t_1, t_2: links of 3-D scenes) s, F_c and s_0 are vectors of the contact
 // plane and the limit is a circle (isotropic friction):
 //   stick:  F_c = k_t (s - s_0) + c_t s_dot + m_t s_ddot
 //   slip:   F_c = mu R_n e,  e = s_dot / |s_dot|   when |F_c(stick)| > mu R_n
 // (at rest e = F_c(stick) / |F_c(stick)|; turning back, h . e_last > 0 for the last commit's slip
-// direction e_last, e = h / |h|), so a block sliding obliquely is held back along its
-// own path, not along each tangent separately. The direction's derivative
-// de/dw = (I - e e^T) / |w| (w = s_dot, h or the stick force) enters the tangent; with one tangent
-// it vanishes and the law is the one above to the bit.
+// direction e_last, or out of a stick with h . s_dot > 0, e = h / |h|), so a block sliding
+// obliquely is held back along its own path, not along each tangent separately. Out of a stick
+// s_dot is the stick spring's own rocking, not along h in a plane: e = s_dot / |s_dot| there
+// would make F_c jump where the stick force crosses the circle (a diagonal pendulum at rest
+// failed so). The direction's derivative de/dw = (I - e e^T) / |w| (w = s_dot, h or the stick
+// force) enters the tangent; with one tangent it vanishes and the law is the one above to the bit.
 //
 // R_n >= 0 comes from the normal law; without contact R_t = 0. Equal static and kinetic mu.
 // Signs as for the normal force: R_t > 0 pushes node i back along -t, so R_n s / R pulls node i
@@ -130,9 +133,9 @@ class CoulombFriction {
   // The slip branch in a contact plane: F_c = mu R_n e.
   void slip_in_plane(std::span<const LinkKinematics> tangential, const Tangential& stick_force,
                      FrictionResponse& out);
-  // Whether a contact that slipped at the last commit still has its stick force's spring and
-  // dashpot part `held` that way.
-  bool turning_back(const Tangential& held) const;
+  // Whether the slip goes along the stick force's spring and dashpot part `held`: a contact that
+  // slipped at the last commit the way `held` still points, or stuck with `rate` along it.
+  bool slips_along_held(const Tangential& held, const Tangential& rate) const;
   // R_n and R_t as imposed, for the hard contact.
   FrictionResponse imposed(const LinkKinematics& normal,
                            std::span<const LinkKinematics> tangential);

@@ -218,6 +218,85 @@ TEST(FrictionPendulumBlock,
   }
 }
 
+// The same free decay in 3-D (a 100 t block, R = 2.24 m, mu = 0.06, k_t = 1e10), launched at
+// 0.5 m/s along (0.6, 0.8) and along x: the bearing's friction circle holds the block back along
+// its own path, so both rest on their launch line where the rigid-plastic bearing stops it
+// (0.12907 m), nearer the centre by the stick spring's share (0.29 mm predicted), within 1e-9 m
+// of each other. Launched on the diagonal it failed at t = 3.66 s, at rest: its slip out of a
+// stick went along the stick spring's rocking velocity, 0.7 degrees off the stick force, and
+// Newton's iteration cycled between stick and slip.
+struct PlanRest {
+  double along = 0.0, across = 0.0;  // the mean slide over the last 2 s, on and off the launch line
+  double peak = 0.0;                 // the largest slide
+};
+
+PlanRest plan_decay(double cos_launch, double sin_launch) {
+  constexpr double mass = 1e5, launch = 0.5;
+  const std::string text =
+      fmt::format(R"({{
+    "dimension": 3,
+    "nodes": [{{"id": "block", "x": 0, "y": 0, "z": 0}}, {{"id": "seat", "x": 0, "y": 0, "z": 0}}],
+    "masses": [{{"node": "block", "mass": {mass}}}],
+    "supports": [{{"node": "seat", "fix": ["x", "y", "z"]}}],
+    "loads": [{{"node": "block", "z": {weight}}}],
+    "initial_velocities": [{{"node": "block", "x": {vx}, "y": {vy}}}],
+    "links": [{{"id": "bearing", "nodes": ["block", "seat"], "axis": [0, 0, -1],
+                "law": {{"type": "gap_spring", "stiffness": 1e9}},
+                "friction": {{"coefficient": 0.06, "radius": 2.24, "stick_stiffness": 1e10}}}}],
+    "analysis": {{"time_step": 1e-3, "duration": 6.0, "initial_state": "static"}}
+  }})",
+                  fmt::arg("mass", mass), fmt::arg("weight", -mass * kGravity),
+                  fmt::arg("vx", launch * cos_launch), fmt::arg("vy", launch * sin_launch));
+  const builder::BuiltModel built = builder::build(io::parse_model(text, "plan_pendulum.json"));
+  assembly::StructuralSystem system(built.model);
+  auto integrator = builder::make_integrator(built.analysis);
+  integrators::TransientAnalysis analysis(system, *integrator,
+                                          builder::make_transient_settings(built.analysis));
+  const Index block = built.node_index.at("block");
+  const Index x = system.dofs().own_equation(block, 0), y = system.dofs().own_equation(block, 1);
+  integrators::State state;
+  state.displacement = assembly::static_equilibrium(system, 0.0).displacement;
+  state.velocity = system.initial_velocity(built.model);
+  PlanRest rest;
+  int count = 0;
+  analysis.run(state, [&](const integrators::State& s, const integrators::StepResult&) {
+    const double u = s.displacement[x], v = s.displacement[y];
+    rest.peak = std::max(rest.peak, std::hypot(u, v));
+    if (s.time < 4.0) return;
+    rest.along += u * cos_launch + v * sin_launch;
+    rest.across += v * cos_launch - u * sin_launch;
+    ++count;
+  });
+  EXPECT_NEAR(state.time, 6.0, 1e-9);
+  rest.along /= count;
+  rest.across /= count;
+  return rest;
+}
+
+TEST(FrictionPendulumBlock, InPlanADiagonalLaunchRestsOnItsLineAsOneAlongAnAxis) {
+  constexpr double mu = 0.06, radius = 2.24, launch = 0.5;
+  const double band = mu * radius, omega = std::sqrt(kGravity / radius);
+  // The rigid-plastic turning points: the first past mu R, back to the first within it.
+  const double peak = -band + std::hypot(band, launch / omega);
+  const double stop = 2 * band - peak, last_amplitude = peak - band;
+  const double stick_slide = mu * kGravity * 1e5 / 1e10;
+  const double predicted =
+      std::sqrt(last_amplitude * last_amplitude + 4 * band * stick_slide) - last_amplitude;
+  PlanRest diagonal, axis;
+  ASSERT_NO_THROW(diagonal = plan_decay(0.6, 0.8));
+  ASSERT_NO_THROW(axis = plan_decay(1.0, 0.0));
+  std::cout << fmt::format(
+      "in plan, launched along (0.6, 0.8): peak {:.5f} m, rests at {:.5f} m ({:.1e} m off its "
+      "line); along x: {:.5f} m; rigid-plastic peak {:.5f} m, stop {:.5f} m, {:.5f} m nearer "
+      "predicted\n",
+      diagonal.peak, diagonal.along, diagonal.across, axis.along, peak, stop, predicted);
+  EXPECT_NEAR(diagonal.peak, peak, 2e-4);
+  EXPECT_NEAR(diagonal.along, axis.along, 1e-9);
+  EXPECT_LT(std::abs(diagonal.across), 1e-9);
+  // As in 2-D: the stick spring's share, and the 1 ms step's own (about 0.13 mm).
+  EXPECT_NEAR(stop - diagonal.along, predicted, 0.25 * predicted + 2e-4);
+}
+
 // A single 20 m span on two pendulum bearings (girder_bridge with "bearing_friction" and no
 // horizontal bearing law), its weight W as loads on the girder nodes (the generator has no
 // gravity of its own yet) and a push P = 0.1 W at midspan: the bearings share W, and the girder

@@ -1,7 +1,7 @@
 // Coulomb friction: stick and slip forces, and the consistent (non-symmetric) tangent against
 // finite differences in both regimes, with one tangent (plane scenes) and two (3-D: the limit is
 // a circle, slip is against the slide velocity, and its direction's turn enters the tangent); a
-// slip turning back passes through the stick branch, continuous in the slide.
+// slip turning back, or starting out of a stick, passes the limit continuously in the slide.
 #include "links/coulomb_friction.hpp"
 
 #include <gtest/gtest.h>
@@ -184,6 +184,43 @@ TEST(CoulombFriction, InAContactPlaneTheLimitIsACircleAndSlipOpposesTheVelocity)
   EXPECT_NEAR(slide.tangential_force[1], -0.4 * 100.0 * 0.8, 1e-9);
 }
 
+// A contact stuck at rest on its spring (R_n = 100 N, limit 40 N, k_t = 2e5 N/m) whose slide
+// grows along (0.6, 0.8) past the circle while it rocks at 1e-7 m/s, 0.7 degrees off that line
+// (as a friction pendulum at rest does): the slip goes along the stick force, continuous where it
+// crosses the circle. Along the velocity F_c jumped by 40 N x 0.0122 rad = 0.49 N there, and
+// Newton's iteration cycled between the two sides.
+TEST(CoulombFriction, InAContactPlaneASlipOutOfAStickGoesAlongTheStickForce) {
+  CoulombFriction friction = in_plane_law();
+  in_plane(friction, {-1e-4, 0.1, 0, 0, 0, 0, 0});
+  friction.commit();
+  EXPECT_FALSE(in_plane(friction, {1e-4, 0, 0.6e-4, 0.8e-4, 0, 0, 0}).slipping);
+  friction.commit();  // stuck, anchored at s = 0
+  const double angle = std::atan2(0.8, 0.6) + 0.0122, speed = 1e-7, step = 1e-7;
+  double worst_jump = 0.0, worst_off_line = 0.0;
+  std::array<double, 2> previous{};
+  int slipping = 0;
+  for (int i = 0; i <= 800; ++i) {
+    const double radius = 1.6e-4 + step * i;  // stick force 32 N to 48 N
+    const FrictionResponse r = in_plane(
+        friction,
+        {1e-4, 0, 0.6 * radius, 0.8 * radius, speed * std::cos(angle), speed * std::sin(angle), 0});
+    slipping += r.slipping;
+    const auto& f = r.tangential_force;
+    worst_off_line = std::max(worst_off_line, std::abs(0.8 * f[0] - 0.6 * f[1]));
+    if (i > 0)
+      worst_jump = std::max(worst_jump, std::hypot(f[0] - previous[0], f[1] - previous[1]));
+    previous = f;
+  }
+  std::cout << "out of a stick: largest force change over a 1e-7 m slide " << worst_jump
+            << " N (stick slope 0.02 N), largest force off the slide's line " << worst_off_line
+            << " N\n";
+  EXPECT_GT(slipping, 300);
+  EXPECT_LE(worst_jump, 2e5 * step * (1 + 1e-6));
+  // The dashpot's c_t s_dot (5e-5 N) is all that turns the force off the line.
+  EXPECT_LT(worst_off_line, 1e-6);
+  EXPECT_NEAR(std::hypot(previous[0], previous[1]), 40.0, 1e-9);
+}
+
 TEST(CoulombFriction, InAContactPlaneTheTangentMatchesFiniteDifferences) {
   const double stick = plane_tangent_error({1e-4, 0.01, 1e-6, -2e-6, 1e-3, 2e-3, 0.5}, false, 7);
   const double slip = plane_tangent_error({1e-4, 0.01, 1e-2, -3e-3, 0.3, -0.4, 2.0}, true, 7);
@@ -193,9 +230,16 @@ TEST(CoulombFriction, InAContactPlaneTheTangentMatchesFiniteDifferences) {
   // forwards: along the stick force, every column.
   const double turning = plane_tangent_error({1e-4, 0.01, 1.5e-3, 1e-4, -0.1, 0.2, 0.0}, true, 7,
                                              {{1e-4, 0.0, 1e-3, 0.0, 0.1, 0.0, 0.0}});
+  // Stuck at rest, then past the circle while rocking at 1e-7 m/s 0.7 degrees off the stick
+  // force (a pendulum at rest): along the stick force, every column.
+  const double rocking = plane_tangent_error(
+      {1e-4, 0.0, 1.5e-4, 2e-4, 0.6e-7 - 0.8e-7 * 0.0122, 0.8e-7 + 0.6e-7 * 0.0122, 0.0}, true, 7,
+      {{1e-4, 0.0, 0.6e-4, 0.8e-4, 0.0, 0.0, 0.0}});
   std::cout << "in-plane tangent errors: stick " << stick << ", slip " << slip << ", slip at rest "
-            << rest << ", turning back " << turning << "\n";
+            << rest << ", turning back " << turning << ", out of a stick rocking " << rocking
+            << "\n";
   EXPECT_LT(turning, 1e-6);
+  EXPECT_LT(rocking, 1e-6);
   EXPECT_LT(stick, 1e-6);
   EXPECT_LT(slip, 1e-6);
   EXPECT_LT(rest, 1e-6);
