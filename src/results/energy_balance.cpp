@@ -211,8 +211,8 @@ void EnergyBalance::add_link_work(const integrators::State& state) {
       const double average = 0.5 * (state.link_force[r] + previous_.link_force[r]);
       work = multiply_add(average, link_step_[r], work);
       if (moving)
-        whole = multiply_add(average, state.link_penetration[r] - previous_.link_penetration[r],
-                             whole);
+        whole =
+            multiply_add(average, state.link_penetration[r] - previous_.link_penetration[r], whole);
     }
   }
   if (!moving) {
@@ -294,8 +294,8 @@ void EnergyBalance::add_impulse_work(const integrators::State& state, bool movin
   const double dt = state.time - previous_.time;
   for (Index r = 0; r < link_step_.size(); ++r) {
     const double now = state.link_force[r], before = previous_.link_force[r];
-    const double deformed = moving ? state.link_penetration[r] - previous_.link_penetration[r]
-                                   : link_step_[r];
+    const double deformed =
+        moving ? state.link_penetration[r] - previous_.link_penetration[r] : link_step_[r];
     if (step_force_weight_[r] == 0.0) {
       const double average = 0.5 * (now + before);
       work = multiply_add(average, link_step_[r], work);
