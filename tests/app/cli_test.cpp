@@ -254,6 +254,22 @@ json moving_masses(int count, double mass, const std::string& integrator) {
   return model;
 }
 
+// Masses of 100 and 200 t, the first at 1 m/s, `gap` apart, on an undamped extended penalty
+// (alpha0 = 1e9 N/m, `alpha2`), over 0.05 s at dt = 1e-5 s.
+json penalty_pair(const std::string& integrator, double alpha2, double gap) {
+  json pair = moving_masses(2, 1e5, integrator);
+  pair["masses"][1]["mass"] = 2e5;
+  pair["analysis"]["time_step"] = 1e-5;
+  pair["analysis"]["duration"] = 0.05;
+  pair["links"] = {
+      {{"id", "c"},
+       {"nodes", {"m0", "m1"}},
+       {"gap", gap},
+       {"law",
+        {{"type", "extended_penalty"}, {"alpha0", 1e9}, {"alpha1", 0.0}, {"alpha2", alpha2}}}}};
+  return pair;
+}
+
 // A hard contact c<i> between masses i and j.
 json hard_contact_between(int i, int j, double restitution, double gap = 0.0) {
   return json{{"id", fmt::format("c{}", i)},
@@ -360,16 +376,8 @@ TEST_F(Cli, AHardContactsImpulseUnderHhtAndGeneralizedAlphaTakesItsExactWork) {
 // correction is below the laws' terms' round-off: undamped, the pair parts with its energy.
 TEST_F(Cli, AnExtendedPenaltysMassBetweenBareMassesConvergesUnderNewmark) {
   for (const double alpha2 : {3e4, 1e5}) {
-    json pair = moving_masses(2, 1e5, "newmark_average_acceleration");
-    pair["masses"][1]["mass"] = 2e5;
-    pair["analysis"]["time_step"] = 1e-5;
+    json pair = penalty_pair("newmark_average_acceleration", alpha2, 0.01);
     pair["analysis"]["duration"] = 0.06;
-    pair["links"] = {
-        {{"id", "c"},
-         {"nodes", {"m0", "m1"}},
-         {"gap", 0.01},
-         {"law",
-          {{"type", "extended_penalty"}, {"alpha0", 1e9}, {"alpha1", 0.0}, {"alpha2", alpha2}}}}};
     const fs::path file = path("penalty.json"), out = path("penalty.out");
     std::ofstream(file) << pair.dump(2);
     const Outcome outcome = pound({"run", file.string(), "--out", out.string()});
@@ -1251,14 +1259,7 @@ TEST_F(Cli, CheckTakesAHertzContactsStableStepAtItsPeakPenetration) {
 // lasts half a period of m_eff + alpha2 on alpha0 (check claimed pi sqrt(m_eff / alpha0), 0.026 s
 // for a 0.103 s contact at alpha2 = 15 m_eff).
 TEST_F(Cli, CheckCountsTheExtendedPenaltysMassInTheContactsDuration) {
-  json pair = moving_masses(2, 1e5, "central_difference");
-  pair["masses"][1]["mass"] = 2e5;
-  pair["analysis"]["time_step"] = 1e-5;
-  pair["analysis"]["duration"] = 0.05;
-  pair["links"] = {
-      {{"id", "c"},
-       {"nodes", {"m0", "m1"}},
-       {"law", {{"type", "extended_penalty"}, {"alpha0", 1e9}, {"alpha1", 0.0}, {"alpha2", 1e6}}}}};
+  const json pair = penalty_pair("central_difference", 1e6, 0.0);
   const fs::path file = path("penalty.json");
   std::ofstream(file) << pair.dump(2);
   const Outcome check = pound({"check", file.string(), "--json"});
