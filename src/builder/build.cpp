@@ -274,7 +274,7 @@ void settle_time_step(AnalysisSpec& analysis, const model::Model& model,
   } else if (analysis.time_step > limit) {
     throw InputError(source, "/analysis/time_step",
                      fmt::format("{} of central difference (2 / omega_max with the links in "
-                                 "contact); use \"auto\" or a smaller step",
+                                 "contact, less with damping); use \"auto\" or a smaller step",
                                  step_above_limit(analysis.time_step, limit)));
   }
 }
