@@ -26,7 +26,12 @@ LawResponse ExtendedPenalty::set_trial(const LinkKinematics& trial) {
   // In contact the force may hold past delta = 0 while positive (released only when it would
   // pull); out of contact it needs penetration. No condition on the rate: it would leave the
   // condensed Newton equation without a solution near a grazing contact.
-  trial_contact_ = force > 0.0 && (committed_contact_ || trial.penetration > 0.0);
+  // Touched at an earlier iterate of this step, it is held as if committed: a stiff dashpot's
+  // alpha1 v at touch can push the pair back past delta = 0 within the step, and the contact
+  // would then be off at every iterate that applies its force and on at every one that does not
+  // (no solution: Newton failed at first touch with the default eta between bare masses).
+  trial_contact_ = force > 0.0 && (committed_contact_ || touched_ || trial.penetration > 0.0);
+  touched_ = touched_ || trial_contact_;
   if (!trial_contact_) return {};
   return {.force = force,
           .stiffness = numbers_.alpha0,

@@ -37,14 +37,21 @@ class ExtendedPenalty final : public LinkLaw {
     return std::make_unique<ExtendedPenalty>(*this);
   }
   LawResponse set_trial(const LinkKinematics& trial) override;
-  void commit() override { committed_contact_ = trial_contact_; }
-  void revert() override { trial_contact_ = committed_contact_; }
+  void commit() override {
+    committed_contact_ = trial_contact_;
+    touched_ = false;
+  }
+  void revert() override {
+    trial_contact_ = committed_contact_;
+    touched_ = false;
+  }
   bool in_contact() const override { return committed_contact_; }
   const Numbers& numbers() const { return numbers_; }
 
  private:
   Numbers numbers_;
   bool trial_contact_ = false, committed_contact_ = false;
+  bool touched_ = false;  // in contact at a trial since the last commit or revert
 };
 
 }  // namespace pound::links

@@ -1255,6 +1255,40 @@ TEST_F(Cli, CheckTakesAHertzContactsStableStepAtItsPeakPenetration) {
   }
 }
 
+// The extended penalty with its default dashpot, alpha1 = 2 sqrt(alpha0 alpha2) (eta = 1), between
+// bare masses under Newmark: its alpha1 v at touch can push the pair back past delta = 0 within
+// the step, and the first-touch rule (in contact only while penetrating) then had no solution:
+// Newton failed at every first touch. Held once touched within the step, the impact is the pair's
+// linear one, (m_eff + alpha2) d'' + alpha1 d' + alpha0 d = 0 from d = 0, d' = v until
+// alpha0 d + alpha1 d' = 0 (the force's zero): its impulse m_eff (v - d'_end).
+TEST_F(Cli, AnExtendedPenaltysDefaultDashpotStrikesUnderNewmark) {
+  json pair = penalty_pair("newmark_average_acceleration", 1e4, 0.01);
+  pair["links"][0]["law"].erase("alpha1");
+  const fs::path file = path("damped.json"), out = path("damped.out");
+  std::ofstream(file) << pair.dump(2);
+  const Outcome outcome = pound({"run", file.string(), "--out", out.string()});
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const double mass = 1e5 * 2e5 / 3e5 + 1e4, alpha0 = 1e9, alpha1 = 2.0 * std::sqrt(alpha0 * 1e4);
+  const double omega = std::sqrt(alpha0 / mass), zeta = alpha1 / (2.0 * std::sqrt(alpha0 * mass));
+  const double damped = omega * std::sqrt(1.0 - zeta * zeta);
+  const auto rate = [&](double t) {
+    return std::exp(-zeta * omega * t) *
+           (std::cos(damped * t) - zeta * omega / damped * std::sin(damped * t));
+  };
+  const auto force = [&](double t) {  // alpha0 d + alpha1 d', v = 1
+    return alpha0 * std::exp(-zeta * omega * t) * std::sin(damped * t) / damped + alpha1 * rate(t);
+  };
+  double low = 0.5 * std::numbers::pi / damped, high = 2.0 * std::numbers::pi / damped;
+  for (int k = 0; k < 200; ++k) (force(0.5 * (low + high)) > 0.0 ? low : high) = 0.5 * (low + high);
+  const double exact = 1e5 * 2e5 / 3e5 * (1.0 - rate(low));
+  const double impulse = json::parse(read_text(out / "summary.json"))["links"][0]["impulse"];
+  std::cout << fmt::format(
+      "default extended penalty under Newmark: impulse {:.1f} N s, the "
+      "linear impact's {:.1f} (error {:.1e})\n",
+      impulse, exact, impulse / exact - 1.0);
+  EXPECT_NEAR(impulse / exact, 1.0, 1e-3);  // dt = 1e-5 s against a 23 ms contact
+}
+
 // An extended penalty's mass alpha2 moves with the pair it joins: between bare masses a contact
 // lasts half a period of m_eff + alpha2 on alpha0 (check claimed pi sqrt(m_eff / alpha0), 0.026 s
 // for a 0.103 s contact at alpha2 = 15 m_eff).
