@@ -276,12 +276,6 @@ void EnergyBalance::record_general(const integrators::State& state, bool algorit
   }
 }
 
-// Central difference applies a force of the start's state over the first half step only (v_1/2 =
-// v_0 + dt/2 a_0), at the velocities from v_0 to v_1/2: its work there is F_0 (dt delta_dot_0 +
-// d(delta)) / 4, where the trapezoidal rule counts F_0 d(delta) / 2 (d(delta) = dt delta_dot_1/2).
-// The two differ by O(dt^2) for a smooth force, but a hard contact striking at t = 0 has its whole
-// impulse there: a block against a wall at e = 0.5 took -1.5 J by the rule, +0.75 J in fact.
-// The algorithmic term -(1/8) dt^2 (a^T M a - a_0^T M a_0) held the difference.
 // With step forces (an implicit integrator's hard contacts): an impulse F_{n+1} dt that turned
 // the row's rate from w_n to w_{n+1} did the impulse times their mean, what the velocities' change
 // takes. F_{n+1} d(delta) is that only where d(delta) = dt (w_n + w_{n+1}) / 2, under the
@@ -310,6 +304,12 @@ void EnergyBalance::add_impulse_work(const integrators::State& state, bool movin
   }
 }
 
+// Central difference applies a force of the start's state over the first half step only (v_1/2 =
+// v_0 + dt/2 a_0), at the velocities from v_0 to v_1/2: its work there is F_0 (dt delta_dot_0 +
+// d(delta)) / 4, where the trapezoidal rule counts F_0 d(delta) / 2 (d(delta) = dt delta_dot_1/2).
+// The two differ by O(dt^2) for a smooth force, but a hard contact striking at t = 0 has its whole
+// impulse there: a block against a wall at e = 0.5 took -1.5 J by the rule, +0.75 J in fact.
+// The algorithmic term -(1/8) dt^2 (a^T M a - a_0^T M a_0) held the difference.
 double EnergyBalance::add_start_link_work(double dt) {
   system_.links().project(previous_.velocity, start_link_rate_);
   extra_link_work_.resize(link_step_.size());
