@@ -15,10 +15,10 @@ def _samples(values, name, what):
     try:
         # Complex numbers would lose their imaginary part, booleans become 0 and 1, and text be
         # parsed: none of them is a time or an acceleration.
-        kind = np.asarray(values).dtype.kind
-        if kind in "bcSUV":
-            raise TypeError(f"an array of {np.asarray(values).dtype} is no real number")
-        array = np.asarray(values, dtype=np.float64)
+        given = np.asarray(values)
+        if given.dtype.kind in "bcSUV":
+            raise TypeError(f"an array of {given.dtype} is no real number")
+        array = np.asarray(given, dtype=np.float64)
     except (TypeError, ValueError, OverflowError) as error:
         raise InputError(name, what, f"expected numbers: {error}") from None
     if array.ndim != 1:
@@ -57,7 +57,8 @@ class Record:
     sample times (an array, uniform), and the accelerations in ``units``: "g", "m/s2", "cm/s2" or
     "model" (the model's own units). The times are in ``time_unit``, "s" or "ms", or without it
     in the unit of time of the model the record drives. ``Record.from_file`` reads the files
-    ``pound run --motion`` reads, its times (and ``dt``) in seconds as the file's. Given to :func:`pound.run`, it replaces the model's first excitation's record (its
+    ``pound run --motion`` reads, its times (and ``dt``) in seconds as the file's. Given to
+    :func:`pound.run`, it replaces the model's first excitation's record (its
     direction and supports stay); with ``scale`` it is multiplied by that factor instead of the
     model's scaling, without it the model's scaling (factor, target PGA or Sa) applies to it.
     """

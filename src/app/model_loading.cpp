@@ -51,6 +51,13 @@ std::string sample_hash(const MotionOverride& samples) {
   return io::sha1_hex(bytes);
 }
 
+// A record named in the model at `path`: as given where absolute, else relative to its folder.
+std::string record_beside(const std::string& path, const std::string& record) {
+  return std::filesystem::path(record).is_absolute()
+             ? record
+             : (std::filesystem::path(path).parent_path() / record).string();
+}
+
 // A pair's second component: its own file (relative to the model) or another column of the
 // first's (`first_record`, as opened), read as the first.
 LoadedModel::SecondComponent read_second_component(const std::string& path, std::size_t k,
@@ -60,10 +67,7 @@ LoadedModel::SecondComponent read_second_component(const std::string& path, std:
                                                    const LoadedModel& loaded) {
   const builder::PairSpec& pair = *e.pair;
   LoadedModel::SecondComponent second;
-  second.path = !pair.record ? first_record
-                : std::filesystem::path(*pair.record).is_absolute()
-                    ? *pair.record
-                    : (std::filesystem::path(path).parent_path() / *pair.record).string();
+  second.path = pair.record ? record_beside(path, *pair.record) : first_record;
   format.column = pair.column.value_or(e.column);
   const auto read = [&] {
     second.motion =
@@ -92,13 +96,9 @@ LoadedModel::SecondComponent read_second_component(const std::string& path, std:
 void read_records_and_build(const std::string& path, bool first_as_given, LoadedModel& loaded,
                             const MotionOverride* given_samples = nullptr) {
   const builder::ModelSpec& spec = loaded.spec;
-  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
   for (std::size_t k = 0; k < spec.excitations.size(); ++k) {
     const builder::ExcitationSpec& e = spec.excitations[k];
-    const std::string record =
-        (k == 0 && first_as_given) || std::filesystem::path(e.record).is_absolute()
-            ? e.record
-            : (folder / e.record).string();
+    const std::string record = k == 0 && first_as_given ? e.record : record_beside(path, e.record);
     io::RecordFormat format;
     format.format = e.format;
     format.column = e.column;
@@ -209,19 +209,24 @@ LoadedModel load_model(const std::string& path,
 LoadedModel load_model_structure(const std::string& path) {
   // Modes and pushovers need the structure, not its records: a model copied away from its
   // records still has periods (it was refused, naming the record it did not need).
+  // Their files are still the model's inputs: kept by name, so no output goes over one.
   builder::ModelSpec spec = io::read_model_file(path);
   std::vector<model::Coordinates> directions;
+  std::vector<std::string> records;
   for (const builder::ExcitationSpec& e : spec.excitations) {
+    records.push_back(record_beside(path, e.record));
     if (!e.pair) {
       directions.push_back(model::to_coordinates(e.direction));
       continue;
     }
+    if (e.pair->record) records.push_back(record_beside(path, *e.pair->record));
     for (const int component : {0, 1})
       directions.push_back(builder::pair_direction(*e.pair, component));
   }
   spec.excitations.clear();
   LoadedModel loaded = load_model_spec(std::move(spec), path, std::nullopt);
   loaded.unread_excitation_directions = std::move(directions);
+  loaded.record_paths = std::move(records);
   return loaded;
 }
 

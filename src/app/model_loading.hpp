@@ -16,7 +16,7 @@ struct LoadedModel {
   builder::ModelSpec spec;
   builder::BuiltModel built;
   std::vector<model::GroundMotion> records;      // of spec.excitations, as read (before scaling)
-  std::vector<std::string> record_paths;         // the files they were read from
+  std::vector<std::string> record_paths;         // the files they were read from (named only)
   std::vector<io::RecordSource> record_sources;  // their format and content hash
   // Per excitation, a pair's second component (none for a single record), read as its first.
   struct SecondComponent {

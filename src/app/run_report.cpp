@@ -132,7 +132,7 @@ std::string link_lines(const results::RunSummary& run, const ReportUnits& units)
               link.id, s.impacts, with_unit(s.peak_force, units.force, 6),
               with_unit(s.peak_penetration, units.length), with_unit(s.impulse, units.impulse, 6),
               // Between lumped masses a hard contact's impact is an impulse within one step.
-              link.law == "hard_contact"
+              link.hard_contact()
                   ? " (hard contact: an impact of lumped masses lasts about a step, so its peak "
                     "force is that impact's impulse / dt)"
               : link.permanent_deformation > 0.0

@@ -245,10 +245,10 @@ class Newmark final : public Integrator {
     double scale = 1.0;
     int halvings = 0;
   };
-  // Cuts a late correction that did not lower the unbalanced force back by half (true: the
-  // forces changed, evaluate again).
   // ||diag(T) delta||: the size of the link laws' terms, whose cancellation bounds the residual.
   double law_terms_norm() const;
+  // Cuts a late correction that did not lower the unbalanced force back by half (true: the
+  // forces changed, evaluate again).
   bool backtracked(Backtrack& backtrack, int iteration, double unbalanced);
   double force_change(Index row) const {
     return started_loaded_ ? assumed_force_[row] - start_force_[row] : assumed_force_[row];

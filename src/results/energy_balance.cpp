@@ -136,7 +136,7 @@ void EnergyBalance::record(const integrators::State& state) {
   else
     external_.setZero(n);
   system_.multiply_stiffness(state.displacement, stiffness_force_);
-  extra_link_work_.resize(0);
+  has_extra_link_work_ = false;
   const Vector* mass = system_.lumped_mass();
   const bool algorithmic = acceleration_energy_ != 0.0 && state.acceleration.size() == n;
   if (started_ && mass && !algorithmic)
@@ -285,6 +285,7 @@ void EnergyBalance::add_impulse_work(const integrators::State& state, bool movin
                                      double& whole) {
   link_rates(state);
   extra_link_work_.setZero(link_step_.size());
+  has_extra_link_work_ = true;
   const double dt = state.time - previous_.time;
   for (Index r = 0; r < link_step_.size(); ++r) {
     const double now = state.link_force[r], before = previous_.link_force[r];
@@ -313,6 +314,7 @@ void EnergyBalance::add_impulse_work(const integrators::State& state, bool movin
 double EnergyBalance::add_start_link_work(double dt) {
   system_.links().project(previous_.velocity, start_link_rate_);
   extra_link_work_.resize(link_step_.size());
+  has_extra_link_work_ = true;
   double gained = 0.0;
   for (Index r = 0; r < link_step_.size(); ++r) {
     extra_link_work_[r] =
@@ -324,15 +326,20 @@ double EnergyBalance::add_start_link_work(double dt) {
 
 void EnergyBalance::link_rates(const integrators::State& state) {
   const integrators::LinkSet& links = system_.links();
-  links.project(previous_.velocity, rate_before_);
-  links.project(state.velocity, rate_after_);
-  whole_rate_before_ = rate_before_;
-  whole_rate_after_ = rate_after_;
-  if (!link_motion_) return;
-  system_.link_motion(previous_.time, offset_, offset_rate_, offset_acceleration_);
-  whole_rate_before_ += offset_rate_;
-  system_.link_motion(state.time, offset_, offset_rate_, offset_acceleration_);
-  whole_rate_after_ += offset_rate_;
+  // B v (+ s'(t) for the whole rate) of a state: the observer sees every accepted state, so the
+  // last step's end is this step's start.
+  const auto rates_of = [&](const Vector& velocity, double time, Vector& rate, Vector& whole) {
+    links.project(velocity, rate);
+    whole = rate;
+    if (!link_motion_) return;
+    system_.link_motion(time, offset_, offset_rate_, offset_acceleration_);
+    whole += offset_rate_;
+  };
+  if (rate_after_.size() != link_step_.size())
+    rates_of(previous_.velocity, previous_.time, rate_after_, whole_rate_after_);
+  rate_before_.swap(rate_after_);
+  whole_rate_before_.swap(whole_rate_after_);
+  rates_of(state.velocity, state.time, rate_after_, whole_rate_after_);
 }
 
 }  // namespace pound::results

@@ -82,8 +82,10 @@ class EnergyBalance : public Observer {
   const EnergyTerms& terms() const { return terms_; }
   // Each link row's work this step beyond what LinkSummaries' rules take (the trapezoidal one,
   // the rectangle one for step forces), which LinkSummaries::add_work then adds: central
-  // difference's first step, and an implicit step's impulses. Empty where there is none.
-  const Vector& extra_link_work() const { return extra_link_work_; }
+  // difference's first step, and an implicit step's impulses. None where there is none.
+  const Vector* extra_link_work() const {
+    return has_extra_link_work_ ? &extra_link_work_ : nullptr;
+  }
   // The largest balance error seen over the run (not only at the end): its largest |residual|
   // over the run's largest term, so that a step's error is measured against the energies the run
   // reaches, not those of its first steps (HHT, alpha -0.1, on a damped SDOF under a record at
@@ -106,7 +108,8 @@ class EnergyBalance : public Observer {
   double add_start_link_work(double dt);
   // add_link_work's sums with step forces (see the .cpp).
   void add_impulse_work(const integrators::State& state, bool moving, double& work, double& whole);
-  // The rates of the link rows at the ends of the step (rate_before_ ... whole_rate_after_).
+  // The rates of the link rows at the ends of the step (rate_before_ ... whole_rate_after_): the
+  // start's are the last step's end's, taken then (the first step takes its own).
   void link_rates(const integrators::State& state);
   // 1/2 sum (f_i dt)^2 / m_i over the lumped masses (0 with consistent ones).
   double step_load_energy(double dt);
@@ -124,8 +127,9 @@ class EnergyBalance : public Observer {
   // from the algorithmic term, which held it, at every step after: the balance is unchanged.
   double start_algorithmic_ = 0.0;
   Vector extra_link_work_, start_link_rate_;
+  bool has_extra_link_work_ = false;  // this step's extra_link_work_ holds some (kept allocated)
   // The link rows' rates at the step's two ends, with the supports' part (whole) and without:
-  // for the impulses' work.
+  // for the impulses' work. The end's are the next step's start.
   Vector rate_before_, rate_after_, whole_rate_before_, whole_rate_after_, offset_, offset_rate_,
       offset_acceleration_;
   EnergyTerms terms_;

@@ -242,7 +242,7 @@ class LinkSummaries : public Observer {
   // rule there, F_{n+1} dt and F_{n+1} d(delta), instead of the trapezoidal one.
   void set_step_forces(const std::vector<char>& by_row);
   void record(const integrators::State& state) override;
-  // Work beyond what record() took, by row of B (EnergyBalance::start_link_work): added to each
+  // Work beyond what record() took, by row of B (EnergyBalance::extra_link_work): added to each
   // link's work, its shear's, and its engagement's.
   void add_work(const Vector& by_row);
   // Gathered from the running columns below at each call: take it once, not per link.

@@ -417,7 +417,6 @@ bool has_contacts(const RunSummary& run) {
   });
 }
 
-// Warnings for results an engineer should not trust as they are.
 namespace {
 
 // Central difference gives a hard impact's impulse J to the struck masses within one step, as an
@@ -430,7 +429,7 @@ std::optional<std::string> impulse_acceleration_warning(const RunSummary& run) {
     return std::nullopt;
   std::string struck;
   for (const LinkResult& link : run.links)
-    if (link.law == "hard_contact" && link.summary.impacts > 0) {
+    if (link.hard_contact() && link.summary.impacts > 0) {
       struck = link.id;
       break;
     }
@@ -446,6 +445,7 @@ std::optional<std::string> impulse_acceleration_warning(const RunSummary& run) {
 
 }  // namespace
 
+// Warnings for results an engineer should not trust as they are.
 std::vector<std::string> result_warnings(const RunSummary& run, const UnitNames& names) {
   const WarningUnits u(names);
   std::vector<std::string> warnings;
@@ -501,7 +501,7 @@ std::vector<std::string> result_warnings(const RunSummary& run, const UnitNames&
         most = &link;
     // A hard contact has no penalty to resolve: its impulse is exact, so what it made up is a
     // step that did not settle, not a stiffness.
-    const bool hard = most->law == "hard_contact";
+    const bool hard = most->hard_contact();
     warnings.push_back(fmt::format(
         "contact links created {:.4g}{}, {:.2f} % of the energy put in (link {} {:.4g}{}): {}",
         run.contact_created_energy(), u.energy, 100.0 * created, most->id,
@@ -658,7 +658,7 @@ void RunObservers::record(const integrators::State& state) {
   for (auto& recorder : recorders_) recorder->record(state);
   links_.record(state);
   energy_.record(state);
-  if (energy_.extra_link_work().size() > 0) links_.add_work(energy_.extra_link_work());
+  if (const Vector* extra = energy_.extra_link_work()) links_.add_work(*extra);
   drifts_.record(state);
   if (base_forces_) record_base_forces(state);
   joints_.record(state);

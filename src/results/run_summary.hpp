@@ -108,6 +108,7 @@ struct PendulumNumbers {
 
 struct LinkResult {
   std::string id, law;
+  bool hard_contact() const { return law == "hard_contact"; }  // a constraint, its impacts impulses
   links::LinkRole role = links::LinkRole::contact;
   LinkSummary summary;
   bool rotational = false;  // a hinge: deformations are rotations

@@ -91,6 +91,20 @@ std::optional<double> hertz_stiffness(const links::LinkLaw& law) {
   return shallow / std::pow(kDepth, 1.5);
 }
 
+// A Hertz-type contact's (F = k_h delta^1.5) elastic impact of its end masses at
+// `approach_velocity` (links::hertz_impact); none for any other law, or without the masses or the
+// velocity to take.
+std::optional<links::HertzImpact> hertz_impact_of(const model::Link& link,
+                                                  const links::LinkLaw& law,
+                                                  const assembly::StructuralSystem& system,
+                                                  double approach_velocity) {
+  if (link.law && link.law->traits.stiff_at_first_touch) return std::nullopt;
+  const std::optional<double> k_h = hertz_stiffness(law);
+  const double m_eff = system.link_context(link).effective_mass();
+  if (!k_h || !(m_eff > 0.0) || !(approach_velocity > 0.0)) return std::nullopt;
+  return links::hertz_impact(*k_h, m_eff, approach_velocity);
+}
+
 LinkCheck check_contact(const model::Link& link, const links::LinkLaw& law,
                         const assembly::StructuralSystem& system, double approach_velocity) {
   const links::LawTraits traits = link.law ? link.law->traits : links::LawTraits{};
@@ -120,11 +134,12 @@ LinkCheck check_contact(const model::Link& link, const links::LinkLaw& law,
   // A Hertz-type contact: its elastic impact's closed form, where the link at its peak
   // penetration is stiff against its neighbours.
   const std::optional<double> k_h = c.stiff_at_first_touch ? std::nullopt : hertz_stiffness(law);
-  if (k_h && m_eff > 0.0 && approach_velocity > 0.0) {
-    const links::HertzImpact impact = links::hertz_impact(*k_h, m_eff, approach_velocity);
-    const double peak_stiffness = 1.5 * *k_h * std::sqrt(impact.max_penetration);
+  const std::optional<links::HertzImpact> impact =
+      k_h ? hertz_impact_of(link, law, system, approach_velocity) : std::nullopt;
+  if (impact) {
+    const double peak_stiffness = 1.5 * *k_h * std::sqrt(impact->max_penetration);
     if (c.adjacent == 0.0 || peak_stiffness >= 10.0 * c.adjacent) {
-      c.contact_duration = impact.duration;
+      c.contact_duration = impact->duration;
       c.approach_velocity = approach_velocity;
     } else {
       c.no_duration = fmt::format(
@@ -220,9 +235,7 @@ void warn_uncomputed_implicit_limit(const builder::AnalysisSpec& analysis, Model
   check.warnings.push_back(fmt::format(
       "{} is stable only below {:.4g} / omega_max, which is not computed for a model with DOFs "
       "without mass (a frame's rotations, a node without mass){}: a step past it grows until the "
-      "run "
-      "stops it as "
-      "creating energy; newmark_average_acceleration is stable at any step",
+      "run stops it as creating energy; newmark_average_acceleration is stable at any step",
       analysis.integrator.label(), *limit, against));
 }
 
@@ -254,11 +267,8 @@ std::vector<integrators::LinkRowState> hertz_peaks(const builder::BuiltModel& bu
     if (link.role() != links::LinkRole::contact || !link.law ||
         link.law->traits.stiff_at_first_touch)
       continue;
-    const std::optional<double> k_h = hertz_stiffness(links.law(k));
-    const double m_eff = system.link_context(link).effective_mass();
-    if (k_h && m_eff > 0.0 && approach[k] > 0.0)
-      peaks.push_back({links.row(k), links::hertz_impact(*k_h, m_eff, approach[k]).max_penetration,
-                       approach[k]});
+    if (const auto impact = hertz_impact_of(link, links.law(k), system, approach[k]))
+      peaks.push_back({links.row(k), impact->max_penetration, approach[k]});
     else
       unknown = true;
   }

@@ -1674,6 +1674,15 @@ TEST_F(Cli, ModesAndPushoverOfAModelAwayFromItsRecordsNeedNone) {
   const Outcome run = pound({"run", copy.string(), "--out", path("run").string()});
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_TRUE(contains(run.err, "synthetic_firm_01.AT2")) << run.err;
+  // Unread, a record is still an input: shapes written over it are refused, the file kept.
+  json model = json::parse(read_text(copy));
+  model["excitations"][0]["record"] = "ground.csv";
+  model["excitations"][0].erase("pair");
+  std::ofstream(copy) << model.dump(2);
+  std::ofstream(path("ground.csv")) << "0.0\n0.1\n";
+  const Outcome over = pound({"modes", copy.string(), "--shapes", path("ground.csv").string()});
+  EXPECT_EQ(over.exit_code, 2) << over.err;
+  EXPECT_EQ(read_text(path("ground.csv")), "0.0\n0.1\n");
 }
 
 TEST_F(Cli, ModesSumTheirEffectiveMassAlongEachAxisAgainstTheCodes90Percent) {
