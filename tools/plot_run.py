@@ -478,7 +478,16 @@ class Plotter:
             columns = min(3, len(items))
             fig, axes = self.figure(len(items), columns, 3.2)
             for ax, (link_id, x, force, kind) in zip(axes, items):
-                ax.plot(x, force, lw=0.8, color="C0" if kind == "normal" else "C1")
+                rigid = kind == "normal" and summaries.get(link_id, {}).get("law") == "hard_contact"
+                if rigid:
+                    # A hard contact's forces are impulses over a step (at the step's start under
+                    # central difference, where the gap is still open): lines between samples
+                    # would draw a stiffness it does not have.
+                    engaged = force != 0.0
+                    ax.vlines(x[engaged], 0.0, force[engaged], lw=0.8, color="C0")
+                    ax.plot(x[engaged], force[engaged], "o", ms=3, color="C0")
+                else:
+                    ax.plot(x, force, lw=0.8, color="C0" if kind == "normal" else "C1")
                 ax.axhline(0.0, color="0.6", lw=0.5)
                 ax.axvline(0.0, color="0.6", lw=0.5)
                 window = self.contact_window(x, force)

@@ -28,6 +28,7 @@
 #include "io/output_paths.hpp"
 #include "io/set_reader.hpp"
 #include "io/statistics_document.hpp"
+#include "results/batch_quantities.hpp"
 
 namespace pound::app {
 namespace {
@@ -542,13 +543,47 @@ void write_batch_results(const builder::SetSpec& set, const std::vector<builder:
                         io::to_document(report.statistics, set).dump() + "\n");
 }
 
+// The unit a model gives `dimension` in: a force's needs a mass unit, without which it is the
+// length and time it is made of.
+std::string unit_of(const builder::UnitsSpec& units, Dimension dimension) {
+  if (dimension == Dimension::force && !units.mass)
+    return fmt::format("(no mass unit; {}, {})", units.length, units.time);
+  return units.names().of(dimension);
+}
+
+// A limit is one number, read in each model's units: over models that give its quantity in
+// different units it would compare millimetres with metres (a limit of 0.03 on the joint opening
+// of a model in mm exceeded by every case, and its fragility "not fitted"), so such a set is
+// refused.
+void refuse_limits_in_mixed_units(const builder::SetSpec& set,
+                                  const std::vector<builder::ModelSpec>& specs) {
+  for (const builder::ResponseLimit& limit : set.limits) {
+    const results::BatchQuantity* quantity = results::find_batch_quantity(limit.quantity);
+    if (!quantity || quantity->dimension == Dimension::none) continue;
+    for (std::size_t k = 1; k < specs.size(); ++k) {
+      const std::string first = unit_of(specs[0].units, quantity->dimension);
+      const std::string other = unit_of(specs[k].units, quantity->dimension);
+      if (first != other)
+        throw InputError(
+            set.source, "/limits/" + limit.quantity,
+            fmt::format("a limit is read in each model's units, and the set's models give {} in "
+                        "different ones ('{}' in {}, '{}' in {}): split the set by units, or write "
+                        "its models in one system",
+                        limit.quantity, set.models[0].id, first, set.models[k].id, other));
+    }
+  }
+}
+
 }  // namespace
 
 BatchReport run_batch(const BatchOptions& options, const Cluster& cluster) {
   // Everything wrong with the set or its models is found before anything is written.
   const builder::SetSpec set = options.set_text ? io::parse_set(*options.set_text, options.set_path)
                                                 : io::read_set_file(options.set_path);
-  for (const builder::BatchModel& model : set.models) (void)io::read_model_file(model.path);
+  std::vector<builder::ModelSpec> specs;
+  for (const builder::BatchModel& model : set.models)
+    specs.push_back(io::read_model_file(model.path));
+  refuse_limits_in_mixed_units(set, specs);
   const std::vector<builder::BatchCase> cases = builder::plan_cases(set);
   const std::optional<io::FolderLock> lock = open_out_folder(options, set, cases, cluster);
 

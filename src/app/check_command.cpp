@@ -262,13 +262,14 @@ ModelFindings check_findings(const LoadedModel& loaded, const std::string& model
   } catch (const InputError& error) {
     throw error.file().empty() ? error.in_file(model_path) : error;
   }
-  verification::ModelCheck check = verification::check_model(loaded.built, *system, true);
-  // After the diagnostics: the first step leaves the laws committed at the start, as a run does.
+  // The step settled first, as a run does: "auto" is checked as the step it takes.
   builder::AnalysisSpec analysis = loaded.built.analysis;
   builder::settle_time_step(analysis, loaded.built.model, *system, model_path);
-  if (loaded.built.analysis.time_step_auto) verification::warn_step_count(analysis, check.warnings);
+  verification::ModelCheck check = verification::check_model(loaded.built, analysis, *system, true);
+  // After the diagnostics: the first step leaves the laws committed at the start, as a run does.
   builder::check_first_step(loaded.built, analysis, *system, model_path);
   io::Document document = check_document(model_path, check, analysis);
+  document.set("units", units_document(loaded.spec.units));
   if (!document.non_finite().empty())
     throw InputError(model_path, model_path_of(document.non_finite().front(), check, loaded.built),
                      fmt::format("the model's numbers overflow: its check finds {} not finite (a "

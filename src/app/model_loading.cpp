@@ -58,6 +58,15 @@ std::string record_beside(const std::string& path, const std::string& record) {
              : (std::filesystem::path(path).parent_path() / record).string();
 }
 
+// A record of excitation k found wrong as it was read: the model's entry that names it (`field`:
+// the entry's field to fix, where one is), then the record's file and line, and why.
+InputError record_error(const std::string& path, std::size_t k, const std::string& field,
+                        const InputError& error) {
+  const std::string line = error.where().empty() ? "" : ", " + error.where();
+  return InputError(path, fmt::format("/excitations/{}{}", k, field),
+                    fmt::format("record '{}'{}: {}", error.file(), line, error.reason()));
+}
+
 // A pair's second component: its own file (relative to the model) or another column of the
 // first's (`first_record`, as opened), read as the first.
 LoadedModel::SecondComponent read_second_component(const std::string& path, std::size_t k,
@@ -70,14 +79,22 @@ LoadedModel::SecondComponent read_second_component(const std::string& path, std:
   second.path = pair.record ? record_beside(path, *pair.record) : first_record;
   format.column = pair.column.value_or(e.column);
   const auto read = [&] {
-    second.motion =
-        io::read_ground_motion(second.path, format, loaded.spec.units.gravity(), &second.source);
+    try {
+      second.motion =
+          io::read_ground_motion(second.path, format, loaded.spec.units.gravity(), &second.source);
+    } catch (const io::StatedUnitsError& error) {
+      throw record_error(path, k, "/units", error);
+    } catch (const io::FileAccessError& error) {
+      throw InputError(path, fmt::format("/excitations/{}/pair/record", k),
+                       fmt::format("{}: '{}'", error.reason(), error.file()));
+    } catch (const io::ColumnOfAt2Error&) {
+      throw;
+    } catch (const InputError& error) {
+      throw record_error(path, k, "/pair", error);
+    }
   };
   try {
     read();
-  } catch (const io::FileAccessError& error) {
-    throw InputError(path, fmt::format("/excitations/{}/pair/record", k),
-                     fmt::format("{}: '{}'", error.reason(), error.file()));
   } catch (const io::ColumnOfAt2Error& error) {
     if (pair.column)
       throw InputError(path, fmt::format("/excitations/{}/pair/column", k),
@@ -123,11 +140,17 @@ void read_records_and_build(const std::string& path, bool first_as_given, Loaded
       // The record cannot be opened: the model's field that names it is what to fix.
       throw InputError(path, fmt::format("/excitations/{}/record", k),
                        fmt::format("{}: '{}'", error.reason(), error.file()));
+    } catch (const io::StatedUnitsError& error) {
+      if (k == 0 && first_as_given) throw;  // the caller's units
+      throw record_error(path, k, "/units", error);
     } catch (const io::ColumnOfAt2Error& error) {
       if (k == 0 && first_as_given) throw;  // the caller's options asked for the column
       throw InputError(
           path, fmt::format("/excitations/{}/{}", k, e.time_column ? "time_column" : "column"),
           fmt::format("{}: '{}'", error.reason(), error.file()));
+    } catch (const InputError& error) {
+      if (k == 0 && first_as_given) throw;  // the caller's record: its error names it
+      throw record_error(path, k, "", error);
     }
     loaded.second_components.push_back(
         e.pair ? std::optional(read_second_component(path, k, e, record, format, loaded))
@@ -256,6 +279,23 @@ LoadedModel load_model_with_record(const std::string& path, const builder::Excit
   loaded.first_record_replaced_by = "the batch case";
   read_records_and_build(path, true, loaded);
   return loaded;
+}
+
+// The units the numbers are in: length and time always (m and s unless the model says otherwise:
+// records in g are converted with them); force, moment and mass only with a mass unit.
+io::Document units_document(const builder::UnitsSpec& units) {
+  const UnitNames names = units.names();
+  io::Document doc;
+  doc.set("length", units.length)
+      .set("time", units.time)
+      .set("acceleration", names.of(Dimension::acceleration));
+  if (units.mass)
+    doc.set("mass", *units.mass)
+        .set("force", names.of(Dimension::force))
+        .set("moment", names.of(Dimension::moment));
+  else
+    doc.set("force", "the model's own (give units.mass to name it)");
+  return doc;
 }
 
 }  // namespace pound::app

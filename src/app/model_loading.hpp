@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "builder/build.hpp"
+#include "io/document.hpp"
 #include "io/ground_motion_reader.hpp"
 #include "model/ground_motion.hpp"
 
@@ -62,6 +63,10 @@ std::optional<std::string> memory_shortfall(double dofs);
 // The model without its excitations (none of its records read): what `pound modes` and
 // `pound pushover` need.
 LoadedModel load_model_structure(const std::string& path);
+
+// The units a model's numbers are in, as summary.json, check --json, modes --json and
+// pushover.json give them.
+io::Document units_document(const builder::UnitsSpec& units);
 LoadedModel load_model(const std::string& path,
                        const std::optional<MotionOverride>& motion_override = {});
 

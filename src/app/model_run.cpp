@@ -150,7 +150,7 @@ PreparedRun prepare(const RunRequest& request) {
   run.verification =
       verification::RodImpactObserver::attach(built, run.system->dofs(), run.system->links());
   if (run.verification) run.observers->add(*run.verification);
-  run.warnings = verification::check_model(built, *run.system, false).warnings;
+  run.warnings = verification::check_model(built, built.analysis, *run.system, false).warnings;
   set_swing_window(built, *run.system, *run.observers);
   // After the diagnostics, which see the laws as built; the run's start commits them again. Not
   // before a static start, which must find them as built: the first step's start commits them
@@ -369,23 +369,6 @@ std::string excitation_lines(const LoadedModel& loaded) {
                           applied.pair_pga / loaded.spec.units.gravity());
   }
   return text;
-}
-
-// The units the numbers are in: length and time always (m and s unless the model says otherwise:
-// records in g are converted with them); force, moment and mass only with a mass unit.
-io::Document units_document(const builder::UnitsSpec& units) {
-  const UnitNames names = units.names();
-  io::Document doc;
-  doc.set("length", units.length)
-      .set("time", units.time)
-      .set("acceleration", names.of(Dimension::acceleration));
-  if (units.mass)
-    doc.set("mass", *units.mass)
-        .set("force", names.of(Dimension::force))
-        .set("moment", names.of(Dimension::moment));
-  else
-    doc.set("force", "the model's own (give units.mass to name it)");
-  return doc;
 }
 
 // The summary of a run, with its excitations and its verification when there is one.

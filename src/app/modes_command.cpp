@@ -245,8 +245,9 @@ ModalFindings modal_findings(const LoadedModel& loaded, const std::string& model
   } catch (const assembly::ModalAnalysisError& error) {
     throw builder::extreme_mode_error(loaded.built, *system, error.what(), model_path);
   }
-  return {modes_document(model_path, system->size(), modes),
-          shapes_table(loaded, *system, modes.modes),
+  io::Document document = modes_document(model_path, system->size(), modes);
+  document.set("units", units_document(loaded.spec.units));
+  return {std::move(document), shapes_table(loaded, *system, modes.modes),
           modes_table(model_path, system->size(), modes, loaded.built.units.of(Dimension::time))};
 }
 

@@ -342,25 +342,36 @@ io::Document capacity_document(const std::string& model_path, const PushoverRequ
   return doc;
 }
 
-std::string capacity_text(const CapacitySummary& summary) {
+// A number with its unit, where the model names one (forces need a mass unit).
+std::string with_unit(double value, const std::string& unit) {
+  return unit.empty() ? fmt::format("{:.6g}", value) : fmt::format("{:.6g} {}", value, unit);
+}
+
+std::string capacity_text(const CapacitySummary& summary, const UnitNames& units) {
+  const std::string& force = units.of(Dimension::force);
+  const std::string& length = units.of(Dimension::length);
+  const std::string stiffness = force.empty() ? "" : force + "/" + length;
   std::string text;
   if (summary.initial_stiffness)
-    text += fmt::format("  initial stiffness {:.6g}, final slope {:.6g}\n",
-                        *summary.initial_stiffness, *summary.final_slope);
+    text += fmt::format("  initial stiffness {}, final slope {}\n",
+                        with_unit(*summary.initial_stiffness, stiffness),
+                        with_unit(*summary.final_slope, stiffness));
   if (summary.first_yield)
-    text += fmt::format("  first yield: {} at displacement {:.6g}, base shear {:.6g}\n",
-                        summary.first_yield->link, summary.first_yield->displacement,
-                        summary.first_yield->base_shear);
+    text +=
+        fmt::format("  first yield: {} at displacement {}, base shear {}\n",
+                    summary.first_yield->link, with_unit(summary.first_yield->displacement, length),
+                    with_unit(summary.first_yield->base_shear, force));
   else
     text += "  no link reached its yield deformation\n";
-  text += fmt::format("  peak base shear {:.6g} at displacement {:.6g}\n", summary.peak.load_factor,
-                      summary.peak.displacement);
+  text += fmt::format("  peak base shear {} at displacement {}\n",
+                      with_unit(summary.peak.load_factor, force),
+                      with_unit(summary.peak.displacement, length));
   if (summary.zero_shear_displacement)
     text += fmt::format(
-        "  the base shear falls to zero at displacement {:.6g}: past its peak the structure lost "
+        "  the base shear falls to zero at displacement {}: past its peak the structure lost "
         "its lateral strength (its weight's P-Delta beyond its post-yield stiffness), a collapse; "
         "the curve beyond holds it up by the push\n",
-        *summary.zero_shear_displacement);
+        with_unit(*summary.zero_shear_displacement, length));
   return text;
 }
 
@@ -507,8 +518,10 @@ PushoverFindings pushover_findings(LoadedModel loaded, const std::string& model_
           : std::nullopt;
   const CapacitySummary summary = summarise(result, recorder.first_yield(), fine);
   const double start = push.start[push.settings.equation];
-  return {recorder.table(), capacity_document(model_path, request, result, summary, start),
-          capacity_text(summary), stopped_words(loaded.built, *push.system, result)};
+  io::Document document = capacity_document(model_path, request, result, summary, start);
+  document.set("units", units_document(loaded.spec.units));
+  return {recorder.table(), std::move(document), capacity_text(summary, loaded.built.units),
+          stopped_words(loaded.built, *push.system, result)};
 }
 
 namespace {

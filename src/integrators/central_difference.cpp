@@ -169,8 +169,22 @@ LinkTangents link_tangents(LinkSet& links, bool contacts_active,
   links.set_trial(delta, rate, Vector::Zero(m), 0.0, 1.0, force, with_mass);
   links.set_trial(delta, rate, Vector::Zero(m), 1.0, 0.0, force, with_damping);
   links.revert();
-  return {stiffness_only.diagonal(), (with_mass - stiffness_only).diagonal(),
-          (with_damping - stiffness_only).diagonal()};
+  LinkTangents tangents{stiffness_only.diagonal(), (with_mass - stiffness_only).diagonal(),
+                        (with_damping - stiffness_only).diagonal()};
+  // A contact's friction sticks on its stick spring, dashpot and mass, which the touch above
+  // (with almost no normal force to hold them) leaves slipping: a friction pendulum's k_t = 1e10
+  // N/m bounds its step far below its normal stiffness's, and "auto" took 0.016 s for a 6.3 ms
+  // limit.
+  if (contacts_active)
+    for (Index link = 0; link < links.count(); ++link)
+      if (const links::CoulombFriction* friction = links.friction(link))
+        for (Index r = links.row(link) + 1; r < links.row(link) + links.rows(link); ++r) {
+          const links::StickPenalty& stick = friction->stick();
+          tangents.stiffness[r] = std::max(tangents.stiffness[r], stick.stiffness);
+          tangents.damping[r] = std::max(tangents.damping[r], stick.damping);
+          tangents.mass[r] = std::max(tangents.mass[r], stick.mass);
+        }
+  return tangents;
 }
 
 struct HighestMode {
@@ -229,15 +243,30 @@ double damped_stable_step(double omega, double zeta) {
   return zeta > 1.0 ? 2.0 / omega / (root + zeta) : 2.0 / omega * (root - zeta);
 }
 
+// The highest mode's stable step, of frequency `omega` and shape `shape`. Damping lowers it, with
+// z the damping ratio of the mode: x^T C x / (2 w x^T M x). The step damps with C v*,
+// v* = v_n + dt a_n, whose amplification has the eigenvalue -1 at w dt = 2 (sqrt(1 + 4 z^2) - 2 z):
+// the limit of the textbook scheme, (2 / w)(sqrt(1 + z^2) - z), at twice the damping (0.75 of it
+// at z = 0.32, half of it, m / c, far past critical; at the textbook limit a mode damped at 0.32
+// grew).
+double structural_stable_step(SecondOrderSystem& system, Vector shape, const LinkTangents& tangents,
+                              double omega) {
+  const double zeta =
+      system.has_damping() ? damping_ratio(system, std::move(shape), tangents.mass, omega) : 0.0;
+  return damped_stable_step(omega, 2.0 * zeta);
+}
+
 // The stable step of link row r's own relative mode: its two end masses,
 // m_rel = 1 / (B M^-1 B^T), against its stiffness, penalty mass and dashpot. A dashpot with no
-// stiffness (a viscous damper) is the limit of no stiffness: h < 2 (m_rel + m_link) / c.
+// stiffness (a viscous damper) is stable below 2 m / c (m = m_rel + m_link), but past m / c its
+// decay's amplification 1 - h c / m is negative: the velocity changes sign at every step, and
+// the damper's response, which is that decay, is wrong (-68 % at 0.8 of 2 m / c). So m / c.
 double link_mode_stable_step(const LinkSet& links, const Vector& inverse_mass,
                              const LinkTangents& tangents, Index r) {
   const double relative_mass =
       1.0 / links.connectivity().row(r).cwiseAbs2().dot(inverse_mass.transpose());
   const double modal_mass = relative_mass + tangents.mass[r];
-  if (!(tangents.stiffness[r] > 0.0)) return 2.0 * modal_mass / tangents.damping[r];
+  if (!(tangents.stiffness[r] > 0.0)) return modal_mass / tangents.damping[r];
   const double link_omega = std::sqrt(tangents.stiffness[r] / modal_mass);
   const double link_zeta =
       tangents.damping[r] / (2.0 * std::sqrt(tangents.stiffness[r] * modal_mass));
@@ -965,21 +994,17 @@ double stable_time_step(SecondOrderSystem& system, bool contacts_active,
   HighestMode mode = highest_mode(system, inverse_mass, tangents);
   refuse_overflow(mode, tangents);
   const double omega = std::sqrt(std::max(mode.eigenvalue, 0.0));
-  if (!(omega > 0.0)) return std::numeric_limits<double>::infinity();
-  // Damping lowers the limit, with z the damping ratio of the highest mode: x^T C x / (2 w x^T M
-  // x), x its shape from the power iteration. The step damps with C v*, v* = v_n + dt a_n, whose
-  // amplification has the eigenvalue -1 at w dt = 2 (sqrt(1 + 4 z^2) - 2 z): the limit of the
-  // textbook scheme, (2 / w)(sqrt(1 + z^2) - z), at twice the damping (0.75 of it at z = 0.32,
-  // half of it, m / c, far past critical; at the textbook limit a mode damped at 0.32 grew).
-  const double zeta = system.has_damping()
-                          ? damping_ratio(system, std::move(mode.shape), tangents.mass, omega)
-                          : 0.0;
-  double limit = damped_stable_step(omega, 2.0 * zeta);
+  // Nothing stiff (a mass on dampers alone): only the links' own modes bound the step.
+  double limit = std::numeric_limits<double>::infinity();
+  if (omega > 0.0) limit = structural_stable_step(system, std::move(mode.shape), tangents, omega);
   // A link's own relative mode (its two end masses, m_rel = 1 / (B M^-1 B^T), against its
   // stiffness, penalty mass and dashpot) can be the binding one when its dashpot is stiff: the
   // extended penalty's critical alpha1 allows only 0.414 of 2 / omega there.
+  // Where nothing vibrates above round-off (omega 0) a row's stiffness is as negligible: then
+  // only a dashpot without one bounds the step.
   for (Index r = 0; r < links.size(); ++r)
-    if (tangents.stiffness[r] > 0.0 || tangents.damping[r] > 0.0)
+    if ((tangents.stiffness[r] > 0.0 && omega > 0.0) ||
+        (!(tangents.stiffness[r] > 0.0) && tangents.damping[r] > 0.0))
       limit = std::min(limit, link_mode_stable_step(links, inverse_mass, tangents, r));
   if (std::isnan(limit))
     throw std::domain_error(

@@ -474,17 +474,19 @@ void require_stated_units(const std::string& path, const std::vector<Line>& head
   if (units == AccelerationUnit::model) {
     const double factor = to_model_units(stated->unit, g_in_model_units);
     if (std::abs(factor - 1.0) <= 1e-12) return;  // the model's unit is the stated one
-    fail(path, stated->line->number,
-         fmt::format("the header says the values are in {} ({}) but they are being read as "
-                     "model units, of which 1 {} is {:.6g}; set the units to {}",
-                     unit_name(stated->unit), quoted(stated->line->text), unit_name(stated->unit),
-                     factor, unit_name(stated->unit)));
+    throw StatedUnitsError(
+        path, fmt::format("line {}", stated->line->number),
+        fmt::format("the header says the values are in {} ({}) but they are being read as "
+                    "model units, of which 1 {} is {:.6g}; set the units to {}",
+                    unit_name(stated->unit), quoted(stated->line->text), unit_name(stated->unit),
+                    factor, unit_name(stated->unit)));
   }
-  fail(path, stated->line->number,
-       fmt::format("the header says the values are in {} ({}) but they are being read as {}; "
-                   "set the units to {}",
-                   unit_name(stated->unit), quoted(stated->line->text), unit_name(units),
-                   unit_name(stated->unit)));
+  throw StatedUnitsError(
+      path, fmt::format("line {}", stated->line->number),
+      fmt::format("the header says the values are in {} ({}) but they are being read as {}; "
+                  "set the units to {}",
+                  unit_name(stated->unit), quoted(stated->line->text), unit_name(units),
+                  unit_name(stated->unit)));
 }
 
 // PEER also distributes velocity (.VT2) and displacement (.DT2) files in the same layout.

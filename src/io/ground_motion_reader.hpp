@@ -26,6 +26,13 @@ class ColumnOfAt2Error : public InputError {
   using InputError::InputError;
 };
 
+// A record whose header states other units than it is read in: a model names the field that
+// set them (its excitation's "units").
+class StatedUnitsError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
 enum class AccelerationUnit { g, m_per_s2, cm_per_s2, model };  // "g", "m/s2", "cm/s2", "model"
 
 struct RecordFormat {

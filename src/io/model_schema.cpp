@@ -907,8 +907,12 @@ Field<GirderBridgeSpec> expansion_joints() {
         for (const JsonValue& value : list->elements()) {
           const int pier = value.as<int>(at_least(1));
           if (pier >= static_cast<int>(bridge.spans.size()))
-            value.fail(fmt::format("is pier {}, but the bridge has piers 1 to {}", pier,
-                                   bridge.spans.size() - 1));
+            value.fail(bridge.spans.size() == 1
+                           ? fmt::format("is pier {}, but a one-span bridge has no piers, so no "
+                                         "joint over one (its ends are the abutments')",
+                                         pier)
+                           : fmt::format("is pier {}, but the bridge has piers 1 to {}", pier,
+                                         bridge.spans.size() - 1));
           joints.add(std::to_string(pier), value);
           bridge.expansion_joints.push_back(pier);
         }

@@ -133,7 +133,8 @@ void format_csv_rows(const Table& table, std::size_t first, std::size_t last,
       fmt::format_to(std::back_inserter(text), "{},", csv_cell(column.values.at(r)));
     for (std::size_t c = 0; c < table.values.size(); ++c) {
       if (c) text.push_back(',');
-      fmt::format_to(std::back_inserter(text), FMT_COMPILE("{}"), table.values[c][r]);
+      // + 0.0: a -0 (a force that rounded to zero from below) is written 0, as a reader expects.
+      fmt::format_to(std::back_inserter(text), FMT_COMPILE("{}"), table.values[c][r] + 0.0);
     }
     text.push_back('\n');
   }

@@ -18,15 +18,12 @@ const char* role_name(links::LinkRole role) {
 }
 
 // A contact or restrainer in the words of pounding: impacts (or times taut), the peak force in
-// compression and in tension, penetration and opening, impulse, when in contact.
-void add_pounding(const results::LinkSummary& s, Document& doc) {
-  doc.set("impacts", s.impacts)
-      .set("peak_force", s.peak_force)
-      .set("peak_tension", s.peak_tension)
-      .set("peak_penetration", s.peak_penetration)
-      .set("peak_opening", s.peak_opening)
-      .set("impulse", s.impulse)
-      .set("work", s.work);
+// compression and in tension, penetration (a contact's: a restrainer's closing is the joint's,
+// nothing it does) and opening, impulse, when in contact.
+void add_pounding(const results::LinkSummary& s, links::LinkRole role, Document& doc) {
+  doc.set("impacts", s.impacts).set("peak_force", s.peak_force).set("peak_tension", s.peak_tension);
+  if (role != links::LinkRole::tension) doc.set("peak_penetration", s.peak_penetration);
+  doc.set("peak_opening", s.peak_opening).set("impulse", s.impulse).set("work", s.work);
   if (s.first_contact >= 0.0)
     doc.set("first_contact", s.first_contact).set("last_contact", s.last_contact);
 }
@@ -91,14 +88,14 @@ Document friction_document(const results::ShearSummary& s, bool in_plane) {
 Document link_document(const results::LinkResult& link) {
   const results::LinkSummary& s = link.summary;
   Document doc;
-  doc.set("id", link.id).set("role", role_name(link.role));
+  doc.set("id", link.id).set("law", link.law).set("role", role_name(link.role));
   // A hinge: its forces are moments, its deformations rotations.
   if (link.rotational) doc.set("rotational", true);
   if (link.seated) doc.set("seated", true);  // a bearing under the weight, no pounding contact
   if (link.role == links::LinkRole::spring)
     add_spring(link, doc);
   else
-    add_pounding(s, doc);
+    add_pounding(s, link.role, doc);
   if (link.passive_engagements) doc.set("created_energy", s.created_energy());
   // A yielded restrainer's plastic elongation, the backfill soil's permanent deformation.
   if (link.permanent_deformation > 0.0)

@@ -47,6 +47,9 @@ class Clough final : public LinkLaw {
   void revert() override { law_.revert(); }
   bool in_contact() const override { return law_.in_contact(); }
   std::optional<double> yield_deformation() const override { return law_.yield_deformation(); }
+  std::optional<double> stored_energy(double force, double deformation) const override {
+    return law_.stored_energy(force, deformation);
+  }
 
   double peak(int side) const { return law_.peak(side); }
 

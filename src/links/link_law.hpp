@@ -59,6 +59,13 @@ class LinkLaw {
   // The deformation the law keeps at zero force in its committed state: a yielded restrainer's
   // plastic elongation, the backfill soil's permanent deformation; 0 for the others.
   virtual double permanent_deformation() const { return 0.0; }
+  // The elastic energy a yielding law holds at force F and deformation delta of its committed
+  // history, which its work less the change of it has dissipated [F L]: a bilinear spring's
+  // F^2 / 2k plus its hardening's H p^2 / 2 (a lead-rubber bearing's rubber), a degrading law's
+  // F^2 / 2k_u on its unloading slope. None: F^2 / 2k0 of its initial stiffness.
+  virtual std::optional<double> stored_energy(double /*force*/, double /*deformation*/) const {
+    return std::nullopt;
+  }
   // How far a tension law opens before it engages (a restrainer's slack): its yield_deformation
   // and ductility are its elongation beyond that. 0 for the others.
   virtual double slack() const { return 0.0; }

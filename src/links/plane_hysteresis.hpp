@@ -39,6 +39,22 @@ struct ShearNumbers {
     return smooth ? stiffness * (hardening_ratio + (1.0 - hardening_ratio) * smooth->amplitude)
                   : stiffness;
   }
+  // The elastic energy a direction holds at force F and deformation s, as its uniaxial law's
+  // (LinkLaw::stored_energy): F^2 / 2k + H p^2 / 2 (H = b k / (1 - b), p = s - F / k) of a
+  // bilinear one, a k s^2 / 2 + F_h^2 / (2 (1 - a) k A) (F_h = F - a k s) of a Bouc-Wen one.
+  // Summed over the directions, it is the plane law's: both are quadratic forms in them.
+  double stored_energy(double force, double deformation) const {
+    if (smooth) {
+      const double elastic = hardening_ratio * stiffness,
+                   hysteretic = force - elastic * deformation;
+      return 0.5 *
+             (elastic * deformation * deformation +
+              hysteretic * hysteretic / ((1.0 - hardening_ratio) * stiffness * smooth->amplitude));
+    }
+    const double plastic = deformation - force / stiffness;
+    const double hardening = hardening_ratio / (1.0 - hardening_ratio) * stiffness;
+    return 0.5 * (force * force / stiffness + hardening * plastic * plastic);
+  }
   bool operator==(const ShearNumbers&) const = default;
 };
 // Along t_1 and t_2 (equal: a circular surface).

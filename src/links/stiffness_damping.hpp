@@ -29,6 +29,9 @@ class StiffnessDamping : public LinkLaw {
   void revert() override;
   bool in_contact() const override { return law_->in_contact(); }
   std::optional<double> yield_deformation() const override { return law_->yield_deformation(); }
+  std::optional<double> stored_energy(double force, double deformation) const override {
+    return law_->stored_energy(force, deformation);
+  }
   ViscousPart viscous_part() const override { return {committed_work_, committed_force_}; }
 
   double coefficient() const { return coefficient_; }  // a1 k_ref of the step [F T/L]

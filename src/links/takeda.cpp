@@ -180,6 +180,13 @@ void Takeda::along_unloading(State& state, double goal, int direction) const {
   state.branch = Branch::reloading;
 }
 
+std::optional<double> Takeda::stored_energy(double force, double /*deformation*/) const {
+  if (force == 0.0) return 0.0;
+  State state = committed_;
+  if (state.branch != Branch::unloading) start_unloading(state);
+  return force * force / (2.0 * state.unloading_slope);
+}
+
 void Takeda::start_unloading(State& state) const {
   const int side = sign_of(state.force);
   double slope = unloading_stiffness(state, side);

@@ -85,6 +85,8 @@ class Takeda final : public LinkLaw {
   void revert() override { trial_ = committed_; }
   bool in_contact() const override { return committed_.force != 0.0; }
   std::optional<double> yield_deformation() const override { return yield_deformation_; }
+  // F^2 / 2k_u, k_u the slope it would unload on from its committed state (degraded past yield).
+  std::optional<double> stored_energy(double force, double deformation) const override;
 
   // The skeleton S(d) and its slope on the segment of d (an end point belongs to the inner one).
   double skeleton_force(double deformation) const;

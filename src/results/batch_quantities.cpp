@@ -13,17 +13,17 @@ const std::array<BatchQuantity, 11> kQuantities = {{
      "number of impacts [-]"},
     {"max_pounding_force", &CaseSummary::max_pounding_force,
      "largest compression of a contact link [model force units]",
-     "peak pounding force [model force units]"},
+     "peak pounding force [model force units]", true, true, Dimension::force},
     {"max_restrainer_force", &CaseSummary::max_restrainer_force,
      "largest tension of a restrainer or hook [model force units]",
-     "peak restrainer force [model force units]"},
+     "peak restrainer force [model force units]", true, true, Dimension::force},
     {"max_joint_opening", &CaseSummary::max_joint_opening,
      "largest widening of a joint beyond its initial gap, over the joint monitors [model length "
      "units]",
-     "peak joint opening [model length units]"},
+     "peak joint opening [model length units]", true, true, Dimension::length},
     {"max_seat_movement", &CaseSummary::max_seat_movement,
      "largest movement of a girder on its seat, over the joint monitors [model length units]",
-     "peak seat movement [model length units]"},
+     "peak seat movement [model length units]", true, true, Dimension::length},
     {"max_drift_ratio", &CaseSummary::max_drift_ratio,
      "largest drift over height of the storey and pier monitors (at a 3-D floor's corners too) [-]",
      "peak drift ratio [-]"},
@@ -40,11 +40,12 @@ const std::array<BatchQuantity, 11> kQuantities = {{
     {"max_top_acceleration", &CaseSummary::max_top_acceleration,
      "largest absolute acceleration along x at the top of a storey or pier monitor (a floor, a "
      "pier top) [model acceleration units]",
-     "peak floor / pier top acceleration [model acceleration units]"},
+     "peak floor / pier top acceleration [model acceleration units]", true, true,
+     Dimension::acceleration},
     {"max_deck_acceleration", &CaseSummary::max_deck_acceleration,
      "largest absolute acceleration along x of a girder end at a joint monitor [model "
      "acceleration units]",
-     "peak deck acceleration [model acceleration units]"},
+     "peak deck acceleration [model acceleration units]", true, true, Dimension::acceleration},
 }};
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <span>
 #include <string_view>
 
+#include "core/units.hpp"
 #include "results/case_summary.hpp"
 
 namespace pound::results {
@@ -22,6 +23,8 @@ struct BatchQuantity {
   // A running peak (largest so far): a run that stopped early has at least the value it
   // reached, so past a limit it exceeded it. Not so a value at the record's end (residual drift).
   bool running_peak = true;
+  // What it measures, in each model's units (none: a count or a ratio).
+  Dimension dimension = Dimension::none;
 };
 
 // In the order of their columns.

@@ -276,6 +276,7 @@ void LinkSummaries::record_shear(const integrators::State& state, std::size_t k)
     const auto along = static_cast<std::size_t>(a);
     const double deformation = state.link_penetration[first + a];
     s.final_forces[along] = state.link_force[first + a];
+    s.final_deformations[along] = deformation;
     s.peak_deformations[along] = std::max(s.peak_deformations[along], std::abs(deformation));
     s.peak_forces[along] = std::max(s.peak_forces[along], std::abs(s.final_forces[along]));
     const double ratio = deformation / rows.yield_deformation[along];
@@ -363,10 +364,14 @@ void LinkSummaries::record_initial_forces(const integrators::State& state) {
   if (!state.velocity.isZero(0.0)) return;
   for (std::size_t k = 0; k < rows_.size(); ++k) {
     summaries_[k].initial_force = state.link_force[rows_[k]];
+    summaries_[k].initial_deformation = state.link_penetration[rows_[k]];
     if (summaries_[k].shear)
-      for (Index a = 0; a < shear_rows_[k].count; ++a)
+      for (Index a = 0; a < shear_rows_[k].count; ++a) {
         summaries_[k].shear->initial_forces[static_cast<std::size_t>(a)] =
             state.link_force[rows_[k] + 1 + a];
+        summaries_[k].shear->initial_deformations[static_cast<std::size_t>(a)] =
+            state.link_penetration[rows_[k] + 1 + a];
+      }
   }
 }
 

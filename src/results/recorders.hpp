@@ -183,9 +183,11 @@ struct ShearSummary {
   double final_deformation = 0.0;  // residual [L]
   // Along each tangent: the largest |s_a| [L] and |F_a| [F], and F_a at the end [F].
   std::array<double, 2> peak_deformations{}, peak_forces{}, final_forces{};
+  std::array<double, 2> final_deformations{};  // s_a at the end [L]
   // F_a at the start of a run begun at rest (a static initial state's), else 0: the spring's own
   // force there, what it held before the run did any work [F].
   std::array<double, 2> initial_forces{};
+  std::array<double, 2> initial_deformations{};  // s_a with them [L]
   // The largest |(s_1 / delta_y1, s_2 / delta_y2)|: the resultant's ductility on an elliptic
   // surface (0 while the law has no yield).
   double peak_ductility = 0.0;
@@ -215,6 +217,7 @@ struct LinkSummary {
   // The force at the start of a run begun at rest (under a static initial state's loads), else
   // 0: with no velocity anywhere it is the law's own, held before the run did any work [F].
   double initial_force = 0.0;
+  double initial_deformation = 0.0;  // delta with it [L]
   // Work done on the link in its current engagement (0 while open) [F L].
   double engagement_work = 0.0;
   // Energy the link gave the structure beyond what it had taken, summed over its engagements:

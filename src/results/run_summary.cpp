@@ -788,11 +788,15 @@ std::optional<double> LinkResult::peak_plastic_deformation() const {
 
 std::optional<double> LinkResult::hysteretic_energy() const {
   if (!yield_deformation || !initial_stiffness || !(*initial_stiffness > 0.0)) return std::nullopt;
-  // What the run's work left stored in the spring is F^2 / 2k at the end less what it held at the
-  // start (a static state's preload or yield, which the run's work does not include).
+  if (role == links::LinkRole::tension && *peak_plastic_deformation() == 0.0) return 0.0;
+  // What the run's work left stored in the spring at the end less what it held at the start (a
+  // static state's preload or yield, which the run's work does not include).
   const double force = summary.final_force - viscous.force;  // the spring's own
   const double start = summary.initial_force;
-  return summary.work - viscous.work - (force * force - start * start) / (2.0 * *initial_stiffness);
+  const double k0 = *initial_stiffness;
+  const double stored = final_stored_energy.value_or(force * force / (2.0 * k0)) -
+                        initial_stored_energy.value_or(start * start / (2.0 * k0));
+  return summary.work - viscous.work - stored;
 }
 
 bool LinkResult::shear_yields() const {
@@ -813,10 +817,12 @@ std::optional<double> LinkResult::shear_peak_plastic_deformation(std::size_t alo
 std::optional<double> LinkResult::shear_hysteretic_energy() const {
   if (!shear_yields()) return std::nullopt;
   double stored = 0.0;  // by the law, without the damping's force
+  const ShearSummary& s = *summary.shear;
   for (std::size_t a = 0; a < shear->numbers.size(); ++a) {
-    const double force = summary.shear->final_forces[a] - shear_viscous.force[a];
-    const double start = summary.shear->initial_forces[a];
-    stored += (force * force - start * start) / (2.0 * shear->numbers[a].initial_stiffness());
+    const links::ShearNumbers& numbers = shear->numbers[a];
+    stored +=
+        numbers.stored_energy(s.final_forces[a] - shear_viscous.force[a], s.final_deformations[a]) -
+        numbers.stored_energy(s.initial_forces[a], s.initial_deformations[a]);
   }
   return summary.shear->work - shear_viscous.work - stored;
 }
@@ -932,8 +938,13 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
       const double at = link.role() == links::LinkRole::tension
                             ? -(result.slack + 0.5 * *result.yield_deformation)
                             : 0.0;
-      result.initial_stiffness =
-          link.make_law(system.link_context(link))->set_trial({at, 0.0, 0.0}).stiffness;
+      const std::unique_ptr<links::LinkLaw> fresh = link.make_law(system.link_context(link));
+      const LinkSummary& s = link_summaries[k];
+      // The start's with a fresh law's history: at rest, or preloaded by a static state.
+      result.initial_stored_energy = fresh->stored_energy(s.initial_force, s.initial_deformation);
+      result.final_stored_energy =
+          law.stored_energy(s.final_force - result.viscous.force, s.final_deformation);
+      result.initial_stiffness = fresh->set_trial({at, 0.0, 0.0}).stiffness;
     }
     result.shear = link.shear;
     result.friction = system.links().has_friction(static_cast<Index>(k));

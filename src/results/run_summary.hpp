@@ -143,8 +143,12 @@ struct LinkResult {
   // What its added stiffness-proportional damping did (LinkLaw::viscous_part): part of
   // summary.work and of summary's forces, never of the hysteretic energy.
   links::ViscousPart viscous;
-  // Energy the law dissipated: its work less the elastic energy F^2 / (2 k_0) it still holds,
-  // both without the viscous part.
+  // The elastic energy the law held at the end and at the start (LinkLaw::stored_energy, without
+  // the viscous part's force); none where it gives none (then F^2 / (2 k_0)).
+  std::optional<double> final_stored_energy, initial_stored_energy;
+  // Energy the law dissipated: its work less the change of the elastic energy it holds, both
+  // without the viscous part. 0 for a restrainer that never yielded: an elastic cable dissipates
+  // nothing, and its work's rest is the created energy of engagements inside a step.
   std::optional<double> hysteretic_energy() const;
   // A bearing's coupled shear (model::LinkShear) and, when it yields, its resultant's peak in
   // units of delta_y = F_y / k (of each direction's: the ellipse's; none for a hinge, as

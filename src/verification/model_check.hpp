@@ -60,14 +60,14 @@ struct ModelCheck {
 };
 
 // Warnings when `analysis` takes more than a billion steps (with the wall time that means) or
-// more than its step limit allows (the run would stop as failed part way): check_model gives them
-// for a step given as a number; for "auto", whoever settles the step (builder::settle_time_step)
-// asks after it (`pound check`; `pound run` checks after settling).
+// more than its step limit allows (the run would stop as failed part way); check_model gives them.
 void warn_step_count(const builder::AnalysisSpec& analysis, std::vector<std::string>& warnings);
 
-// `with_periods`: the natural periods (assembly::natural_periods) and the warning
-// on the step against the sixth; `run` leaves them out.
-ModelCheck check_model(const builder::BuiltModel& built, assembly::StructuralSystem& system,
-                       bool with_periods);
+// The model's checks for `analysis`, its time step settled (builder::settle_time_step: "auto"
+// is checked as the step it takes). `with_periods`: the natural periods
+// (assembly::natural_periods) and the warning on the step against the sixth; `run` leaves them
+// out.
+ModelCheck check_model(const builder::BuiltModel& built, const builder::AnalysisSpec& analysis,
+                       assembly::StructuralSystem& system, bool with_periods);
 
 }  // namespace pound::verification

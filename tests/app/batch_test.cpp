@@ -709,6 +709,40 @@ TEST_F(Batch, ABadSetWritesNothing) {
   EXPECT_FALSE(fs::exists(path("out")));
 }
 
+// A limit is one number in each model's units: over a model in metres and the same in millimetres
+// the joint opening's 0.03 was compared with millimetres (every case "exceeded" it, its fragility
+// "not fitted"). Such a set is refused naming the limit; a dimensionless limit, or one over
+// models in the same units, is not.
+TEST_F(Batch, RefusesALimitOverModelsInDifferentUnits) {
+  nlohmann::json model =
+      nlohmann::json::parse(read_text(kSource + "/models/two_sdof_girders.json"));
+  model["excitations"][0]["record"] = kSource + "/ground_motions/synthetic_firm_02.AT2";
+  std::ofstream(path("metres.json")) << model.dump();
+  model["units"]["length"] = "mm";
+  model["units"]["mass"] = "t";
+  std::ofstream(path("millimetres.json")) << model.dump();
+  const auto batch = [&](const std::string& models, const std::string& limits) {
+    std::ofstream(path("set.json")) << fmt::format(
+        R"({{"models": [{}], "records": [{{"file": "{}/ground_motions/synthetic_firm_01.AT2"}}],
+             "limits": {}}})",
+        models, kSource, limits);
+    fs::remove_all(path("out"));
+    return pound({"batch", path("set.json").string(), "--out", path("out").string(), "-q"});
+  };
+  const Outcome mixed =
+      batch(R"("metres.json", "millimetres.json")", R"({"max_joint_opening": 0.03})");
+  EXPECT_EQ(mixed.exit_code, 2);
+  EXPECT_NE(mixed.err.find("set.json: /limits/max_joint_opening: a limit is read in each "
+                           "model's units, and the set's models give max_joint_opening in "
+                           "different ones ('metres' in m, 'millimetres' in mm)"),
+            std::string::npos)
+      << mixed.err;
+  EXPECT_FALSE(fs::exists(path("out")));
+  EXPECT_EQ(batch(R"("metres.json", "millimetres.json")", R"({"max_drift_ratio": 0.01})").exit_code,
+            0);
+  EXPECT_EQ(batch(R"("metres.json")", R"({"max_joint_opening": 0.03})").exit_code, 0);
+}
+
 // --jobs 0 is every core, as for `pound run --ensemble` and Python's pound.batch; below 0 a
 // usage error.
 TEST_F(Batch, JobsZeroIsEveryCore) {

@@ -393,6 +393,138 @@ TEST_F(Cli, AnExtendedPenaltysMassBetweenBareMassesConvergesUnderNewmark) {
   }
 }
 
+// The round-off stop above is no licence for a residual the size of the load: a 1,000 t mass on a
+// bilinear spring of k = 1e50 (yield 5e5 N) or a damper with a linear_velocity of 1e-300 has
+// tangents that make any correction vanish against the laws' terms, and the runs completed with
+// the mass carried rigidly (3.9e6 N through a spring that yields at 5e5; unbalanced 3.4e6 N).
+// They now fail (exit 3), saying Newton did not converge; at k = 1e12 the spring still yields at
+// its force.
+TEST_F(Cli, ARoundOffStopNeverAcceptsAResidualOfTheLoad) {
+  const auto run_with = [&](const json& law) {
+    json model = {{"dimension", 1},
+                  {"nodes", {{{"id", "g"}, {"x", 0}}, {{"id", "m"}, {"x", 1}}}},
+                  {"masses", {{{"node", "m"}, {"mass", 1e6}}}},
+                  {"supports", {{{"node", "g"}, {"fix", {"x"}}}}},
+                  {"links", {{{"id", "L"}, {"nodes", {"m", "g"}}, {"axis", {-1}}, {"law", law}}}},
+                  {"excitations",
+                   {{{"record", POUND_SOURCE_DIR "/ground_motions/synthetic_soft_01.AT2"},
+                     {"units", "g"},
+                     {"scale", {{"pga", 0.4}}}}}},
+                  {"analysis", {{"time_step", 0.002}, {"duration", 3.0}}}};
+    const fs::path file = path("stiff.json"), out = path("stiff.out");
+    fs::remove_all(out);
+    std::ofstream(file) << model.dump(2);
+    return std::pair{pound({"run", file.string(), "--out", out.string()}), out};
+  };
+  const auto spring = [](double stiffness) {
+    return json{{"type", "bilinear_spring"},
+                {"stiffness", stiffness},
+                {"yield_force", 5e5},
+                {"hardening_ratio", 0}};
+  };
+  for (const json& law : {spring(1e50), json{{"type", "viscous_damper"},
+                                             {"coefficient", 1e6},
+                                             {"exponent", 0.05},
+                                             {"linear_velocity", 1e-300}}}) {
+    const auto [outcome, out] = run_with(law);
+    std::cout << law.dump() << ": exit " << outcome.exit_code << "\n";
+    EXPECT_EQ(outcome.exit_code, 3) << outcome.err;
+    EXPECT_TRUE(contains(outcome.err, "Newton did not converge")) << outcome.err;
+  }
+  const auto [outcome, out] = run_with(spring(1e12));
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const json summary = json::parse(read_text(out / "summary.json"));
+  const double peak = summary["links"][0]["peak_force"];
+  std::cout << "k = 1e12: peak force " << peak << " (yield 5e5), unbalanced "
+            << summary["max_unbalanced_force"] << "\n";
+  EXPECT_LT(peak, 5e5 * (1.0 + 1e-9));
+}
+
+// Central difference's stable step holds what the links' own modes need: a friction pendulum's
+// stick spring (k_t = 1e10 on 100 t: 2 / sqrt(k_t / m) = 6.32 ms; "auto" took 16 ms, from the
+// normal stiffness alone, and the block came to rest 57 % short), and a damper's decay, m / c
+// (a damper alone was "no stable limit", and beside a spring 2 m / c, where the velocity changes
+// sign at every step). A linear dashpot is warned of where central difference does not resolve
+// its decay.
+TEST_F(Cli, CentralDifferencesStepHoldsStickSpringsAndDampers) {
+  const auto check_json = [&](const json& model) {
+    const fs::path file = path("cd.json");
+    std::ofstream(file) << model.dump(2);
+    const Outcome outcome = pound({"check", "--json", file.string()});
+    EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+    return json::parse(outcome.out);
+  };
+  json pendulum = {
+      {"dimension", 2},
+      {"nodes", {{{"id", "block"}, {"x", 0}, {"y", 0}}, {{"id", "seat"}, {"x", 0}, {"y", 0}}}},
+      {"masses", {{{"node", "block"}, {"mass", 1e5}}}},
+      {"supports", {{{"node", "seat"}, {"fix", {"x", "y"}}}}},
+      {"loads", {{{"node", "block"}, {"y", -981000.0}}}},
+      {"initial_velocities", {{{"node", "block"}, {"x", 0.5}}}},
+      {"links",
+       {{{"id", "b"},
+         {"nodes", {"block", "seat"}},
+         {"axis", {0, -1}},
+         {"law", {{"type", "gap_spring"}, {"stiffness", 1e9}}},
+         {"friction", {{"coefficient", 0.06}, {"radius", 2.24}, {"stick_stiffness", 1e10}}}}}},
+      {"recorders", {{{"type", "node"}, {"nodes", {"block"}}, {"file", "block.csv"}}}},
+      {"analysis",
+       {{"duration", 15.0}, {"initial_state", "static"}, {"integrator", "central_difference"}}}};
+  const double stick_limit = 2.0 / std::sqrt(1e10 / 1e5);
+  const double stable = check_json(pendulum)["explicit_stable_step_contact"];
+  std::cout << "pendulum: stable step " << stable << ", the stick spring's " << stick_limit << "\n";
+  EXPECT_LE(stable, stick_limit * (1.0 + 1e-9));
+  const auto rest = [&](const std::string& name) {
+    const fs::path file = path(name + ".json"), out = path(name + ".out");
+    std::ofstream(file) << pendulum.dump(2);
+    const Outcome outcome = pound({"run", file.string(), "--out", out.string()});
+    EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+    return last_block_position(out / "block.csv");
+  };
+  const double explicit_rest = rest("explicit");
+  pendulum["analysis"]["integrator"] = "newmark_average_acceleration";
+  pendulum["analysis"]["time_step"] = 1e-3;
+  const double implicit_rest = rest("implicit");
+  std::cout << "comes to rest at " << explicit_rest << " (auto step), " << implicit_rest
+            << " (Newmark, 1 ms)\n";
+  EXPECT_NEAR(explicit_rest, implicit_rest, 5e-3 * implicit_rest);
+
+  json damped = {{"dimension", 1},
+                 {"nodes", {{{"id", "g"}, {"x", 0}}, {{"id", "m"}, {"x", 1}}}},
+                 {"masses", {{{"node", "m"}, {"mass", 1e6}}}},
+                 {"supports", {{{"node", "g"}, {"fix", {"x"}}}}},
+                 {"initial_velocities", {{{"node", "m"}, {"x", 0.5}}}},
+                 {"links",
+                  {{{"id", "spring"},
+                    {"nodes", {"m", "g"}},
+                    {"axis", {-1}},
+                    {"law", {{"type", "elastic_spring"}, {"stiffness", 1e7}}}},
+                   {{"id", "damper"},
+                    {"nodes", {"m", "g"}},
+                    {"axis", {-1}},
+                    {"law", {{"type", "viscous_damper"}, {"coefficient", 1e8}}}}}},
+                 {"analysis", {{"integrator", "central_difference"}, {"duration", 1.0}}}};
+  const json linear = check_json(damped);
+  EXPECT_EQ(linear["units"]["time"], "s");  // check --json names its units too
+  std::cout << "spring and damper: stable step " << linear["explicit_stable_step_contact"]
+            << " (m / c = 0.01)\n";
+  EXPECT_NEAR(linear["explicit_stable_step_contact"].get<double>(), 0.01, 1e-12);
+  ASSERT_EQ(linear["warnings"].size(), 1u) << linear["warnings"];
+  const std::string warning = linear["warnings"][0]["warning"];
+  EXPECT_TRUE(contains(warning, "link damper: its dashpot (c = 1e+08)") &&
+              contains(warning, "off by about dt / (2 tau) = 40 %"))
+      << warning;
+  damped["links"].erase(0);
+  damped["links"][0]["law"] = {{"type", "viscous_damper"},
+                               {"coefficient", 1e6},
+                               {"exponent", 0.05},
+                               {"linear_velocity", 1e-3}};
+  const json alone = check_json(damped);
+  // Its tangent below the linear velocity: c v_l^(alpha - 1); m / that = 1e-3^0.95.
+  std::cout << "a damper alone: stable step " << alone["explicit_stable_step_contact"] << "\n";
+  EXPECT_NEAR(alone["explicit_stable_step_contact"].get<double>(), std::pow(1e-3, 0.95), 1e-12);
+}
+
 // The same block started at rest from the static state ("initial_state": "static", which a hard
 // contact used to refuse): the contact holds its weight from t = 0 and the block stays where it
 // is, with every energy term at round-off and no warning (their 1e-21 J is not "100 %" of
@@ -1342,6 +1474,22 @@ TEST_F(Cli, CheckWarnsAboutMeaninglessSettingsOnly) {
   std::string ran;
   for (const json& w : summary["warnings"]) ran += w["warning"].get<std::string>() + "\n";
   EXPECT_TRUE(contains(ran, all)) << ran;
+  // Piers with a little mass of their own (1 m of a 0.0015 m^2 strip at steel's density: 12 kg
+  // beside girders of 200 and 400 t, the stiffness unchanged) leave the girders lumped: no k-ratio
+  // warning (they made the joint "meshed" and warned).
+  json massive = model;
+  massive["materials"][0]["density"] = 7850.0;
+  massive["materials"][1]["density"] = 7850.0;
+  massive["elements"][0]["area"] = 0.0015;
+  massive["materials"][0]["youngs_modulus"] = 4.386e7 / 0.0015;
+  massive["elements"][1]["area"] = 0.0015;
+  massive["materials"][1]["youngs_modulus"] = 5.483e6 / 0.0015;
+  std::ofstream(path("massive.json")) << massive.dump();
+  const json lumped = json::parse(pound({"check", path("massive.json").string(), "--json"}).out);
+  std::string lumped_warnings;
+  for (const json& w : lumped["warnings"])
+    lumped_warnings += w["warning"].get<std::string>() + "\n";
+  EXPECT_FALSE(contains(lumped_warnings, "k-ratio")) << lumped_warnings;
   // Kawashima's stiff link between meshed rods (k-ratio 1000): it rings inside the contact.
   json rods = json::parse(read_text(fs::path(POUND_SOURCE_DIR) / "models" / "rod_impact.json"));
   rods["generators"][0]["law"]["stiffness_ratio"] = 1000.0;
@@ -1618,6 +1766,7 @@ TEST_F(Cli, ModesListOnlyTheDirectionsTheSceneMovesInAndWriteTheShapes) {
   EXPECT_TRUE(contains(listed.out, "mass x")) << listed.out;
   EXPECT_FALSE(contains(listed.out, "mass y")) << listed.out;  // floors sway along x only
   const json modes = json::parse(pound({"modes", buildings, "--count", "3", "--json"}).out);
+  EXPECT_EQ(modes["units"]["time"], "s");  // the periods' unit
   EXPECT_FALSE(modes["modes"][0].contains("mass_ratio_y"));
   const json bridge = json::parse(
       pound({"modes", POUND_SOURCE_DIR "/models/three_span_bridge.json", "--count", "2", "--json"})

@@ -34,6 +34,14 @@ TEST_F(PushoverCommand, WritesTheCapacityCurveAndFindsTheFirstYield) {
       << csv.substr(0, 200);
   const std::string summary = read_text(path("out") / "pushover.json");
   EXPECT_TRUE(contains(summary, "\"status\": \"completed\""));
+  // Its numbers name their units, in the console and in pushover.json, as summary.json does.
+  EXPECT_TRUE(contains(outcome.out, " N/m, final slope ") &&
+              contains(outcome.out, " m, base shear ") &&
+              contains(outcome.out, " N at displacement "))
+      << outcome.out;
+  const nlohmann::json units = nlohmann::json::parse(summary)["units"];
+  EXPECT_EQ(units["force"], "N");
+  EXPECT_EQ(units["length"], "m");
   // The pier yields near its top displacement M_y h^2 / (3 E I) = 3.556 mm (the deck on its
   // bearings takes a little of the pier's bending), found between the 0.4 mm increments as a push
   // in 20,000 increments finds it.

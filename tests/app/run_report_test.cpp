@@ -63,6 +63,8 @@ TEST(RunReport, TheBridgesNumbersCarryTheirUnits) {
   for (const nlohmann::json& link : summary["links"]) {
     if (link["role"] != "contact") continue;
     ++contacts;
+    // Each link names its law's type (the joints and abutments Hertz-damp, the backfills).
+    EXPECT_TRUE(link["law"] == "hertz_damp" || link["law"] == "backfill") << link;
     const std::string line = line_of(outcome.report, fmt::format("contact {}:", link["id"]));
     EXPECT_TRUE(has(line, fmt::format("peak force {:.6g} N, peak penetration ",
                                       link["peak_force"].get<double>())))

@@ -15,6 +15,7 @@
 #include "assembly/structural_system.hpp"
 #include "builder/build.hpp"
 #include "builder/generators.hpp"
+#include "core/errors.hpp"
 #include "io/ground_motion_reader.hpp"
 #include "io/model_reader.hpp"
 
@@ -81,6 +82,29 @@ TEST(SceneGenerators, BridgeWithGapsTooWideToCloseEqualsTheGapFreeBridge) {
 // the deck's weight (20 m x 4 m2 x 2500 kg/m3 x g = 1.96 MN): its stick spring's share of a
 // residual displacement stays under 2 % of mu R (laws.md). Given, it is kept; a flat slider
 // (no radius) keeps the normal law's.
+// An expansion joint over a pier of a one-span bridge: it has no piers, and says so (it read
+// "the bridge has piers 1 to 0"); over pier 3 of three spans, the piers it has.
+TEST(SceneGenerators, AnExpansionJointPastTheLastPierNamesThePiers) {
+  nlohmann::json model = nlohmann::json::parse(bundled("three_span_bridge.json"));
+  const auto refusal = [&](const nlohmann::json& spans, int joint) {
+    model["generators"][0]["spans"] = spans;
+    model["generators"][0]["expansion_joints"] = {joint};
+    try {
+      (void)io::parse_model(model.dump(), "bridge.json");
+    } catch (const InputError& error) {
+      return std::string(error.what());
+    }
+    return std::string("accepted");
+  };
+  const std::string one = refusal({30}, 1);
+  EXPECT_NE(one.find("/generators/0/expansion_joints/0: is pier 1, but a one-span bridge has no "
+                     "piers"),
+            std::string::npos)
+      << one;
+  const std::string three = refusal({30, 40, 30}, 3);
+  EXPECT_NE(three.find("is pier 3, but the bridge has piers 1 to 2"), std::string::npos) << three;
+}
+
 TEST(SceneGenerators, PendulumBearingsGetAStickSpringStiffForTheDecksWeight) {
   const auto stick_stiffness = [](const std::string& friction) {
     const ModelSpec spec = expand(io::parse_model(R"({

@@ -226,6 +226,15 @@ TEST(OutputCsv, LabelsAreTheFirstColumnQuotedWhereNeeded) {
   EXPECT_EQ(to_csv(table), "quantity,max,min\na.force,1.5,-2\n\"b,\"\"c\"\".force\",3,0.25\n");
 }
 
+// A negative zero (a force that rounded to 0 from below) is written "0": "-0" in a history read
+// as a sign where there is none. .npy keeps the bits.
+TEST(OutputCsv, NegativeZeroIsWrittenAsZero) {
+  Table table = table_with_columns({"time", "force"});
+  append_row(table, {0.0, -0.0});
+  append_row(table, {-0.0, -1e-300});
+  EXPECT_EQ(to_csv(table), "time,force\n0,0\n0,-1e-300\n");
+}
+
 // Units follow a column's name in brackets; a column without one keeps its bare name, and .npy
 // field names are always bare.
 TEST(OutputCsv, HeadersNameTheUnitsAfterTheColumns) {

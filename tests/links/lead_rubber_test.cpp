@@ -83,6 +83,25 @@ TEST(LeadRubber, CycleDissipatesFourQdTimesDMinusDyWithSecantStiffnessKdPlusQdOv
   }
 }
 
+// Pushed to D and held, a bearing has dissipated Q_d (D - delta_y), its lead's slip; the rest of
+// the work, k_d D^2 / 2 in its rubber and the lead's elastic part, it holds (stored_energy):
+// F^2 / 2k_u alone called 3.65 times the lead's work dissipated at D = 0.3 m.
+TEST(LeadRubber, HeldAtItsPeakItHasDissipatedOnlyTheLeadsSlip) {
+  for (const double peak : {0.05, 0.3}) {
+    const std::unique_ptr<LinkLaw> law =
+        make("lead_rubber", {{"characteristic_strength", kStrength},
+                             {"post_yield_stiffness", kPostYield},
+                             {"elastic_stiffness", kElastic}});
+    const double yield = kStrength / (kElastic - kPostYield);
+    const double work = loop_energy(*law, {0.0, yield, peak}, 200);
+    const double force = law->set_trial(at(peak)).force;
+    const double dissipated = work - *law->stored_energy(force, peak);
+    std::printf("D = %g: work %.9g, dissipated %.9g, Q_d (D - d_y) %.9g\n", peak, work, dissipated,
+                kStrength * (peak - yield));
+    EXPECT_NEAR(dissipated, kStrength * (peak - yield), 1e-9 * work);
+  }
+}
+
 TEST(LeadRubber, ElasticStiffnessDefaultsToTenTimesThePostYieldOne) {
   auto law = make("lead_rubber",
                   {{"characteristic_strength", kStrength}, {"post_yield_stiffness", kPostYield}});

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "assembly/structural_system.hpp"
@@ -52,7 +53,7 @@ std::string warning_of(const std::vector<std::string>& warnings, const std::stri
 TEST(ModelCheck, ContactsOfOneSpecAndContextAreProbedOnceAndWarnedEach) {
   const builder::BuiltModel built = builder::build(io::parse_model(kPairs, "pairs.json"));
   assembly::StructuralSystem system(built.model);
-  const ModelCheck check = check_model(built, system, false);
+  const ModelCheck check = check_model(built, built.analysis, system, false);
   // c1 and c2 share one probe; c3 (another context) and c4 (another approach velocity) have
   // theirs.
   EXPECT_EQ(check.contact_energy_probes, 3u);
@@ -82,7 +83,7 @@ std::vector<std::string> warnings_under_pulse(const std::string& text) {
       io::parse_model(text, "model.json"),
       {model::GroundMotion{.name = "pulse", .time_step = 0.01, .acceleration = pulse}});
   assembly::StructuralSystem system(built.model);
-  return check_model(built, system, false).warnings;
+  return check_model(built, built.analysis, system, false).warnings;
 }
 
 // A girder on two friction bearings seated under its weight from a static start strikes nothing
@@ -196,7 +197,7 @@ std::vector<std::string> pulse_warnings(const std::string& scale,
       {model::GroundMotion{.name = "pulse", .time_step = 0.01, .acceleration = pulse}});
   assembly::StructuralSystem system(built.model);
   std::vector<std::string> peaks;
-  for (const std::string& w : check_model(built, system, false).warnings)
+  for (const std::string& w : check_model(built, built.analysis, system, false).warnings)
     if (w.find(about) != std::string::npos) peaks.push_back(w);
   std::printf("scale %s: %zu warning(s) %s\n", scale.empty() ? "none" : scale.c_str(), peaks.size(),
               peaks.empty() ? "" : peaks[0].c_str());
@@ -249,7 +250,7 @@ TEST(ModelCheck, ARecordThatLoadsNothingWarns) {
         {model::GroundMotion{.name = "pulse", .time_step = 0.01, .acceleration = {0.0, 0.1, 0.0}}});
     assembly::StructuralSystem system(built.model);
     std::vector<std::string> found;
-    for (const std::string& w : check_model(built, system, false).warnings)
+    for (const std::string& w : check_model(built, built.analysis, system, false).warnings)
       if (w.find("loads nothing") != std::string::npos) found.push_back(w);
     return found;
   };
@@ -284,7 +285,7 @@ TEST(ModelCheck, ARecordAfterAPairIsNamedByItsEntry) {
       builder::build(io::parse_model(text, "pair.json"), {pulse, pulse}, {pulse, std::nullopt});
   assembly::StructuralSystem system(built.model);
   std::vector<std::string> found;
-  for (const std::string& w : check_model(built, system, false).warnings)
+  for (const std::string& w : check_model(built, built.analysis, system, false).warnings)
     if (w.find("loads nothing") != std::string::npos) found.push_back(w);
   ASSERT_EQ(found.size(), 1u);
   EXPECT_TRUE(found[0].starts_with("/excitations/1: record 'pulse' acts along [0, 0, 1]"))
@@ -306,6 +307,42 @@ TEST(ModelCheck, AnAnalysisOfMoreThanABillionStepsWarns) {
   ASSERT_EQ(years.size(), 1u);
   EXPECT_NE(years[0].find("1e+13 steps"), std::string::npos) << years[0];
   EXPECT_NE(years[0].find("about 116 days"), std::string::npos) << years[0];
+}
+
+// Two bare masses closing through a stiff extended penalty under central difference: "auto" takes
+// 0.8 of the stable step, which the contact itself sets, so the impact spans about three steps
+// (its kinetic energy came out 2.8 % above the initial one, unwarned). The "auto" step is checked
+// as the step it takes; a given step of T_contact / 40 is not warned.
+TEST(ModelCheck, AnAutoStepIsCheckedAgainstTheContactsDuration) {
+  const auto contact_warnings = [](const std::string& step) {
+    const std::string text = fmt::format(R"({{
+      "dimension": 1,
+      "nodes": [{{"id": "a", "x": 0}}, {{"id": "b", "x": 1}}],
+      "masses": [{{"node": "a", "mass": 1e4}}, {{"node": "b", "mass": 1e4}}],
+      "initial_velocities": [{{"node": "a", "x": 2}}],
+      "links": [{{"id": "c", "nodes": ["a", "b"], "axis": [1], "gap": 0.01,
+                 "law": {{"type": "extended_penalty", "alpha0": 1e10, "alpha2": 1e3}}}}],
+      "analysis": {{"integrator": "central_difference", "time_step": {}, "duration": 0.1}}
+    }})",
+                                         step);
+    const builder::BuiltModel built = builder::build(io::parse_model(text, "pair.json"));
+    assembly::StructuralSystem system(built.model);
+    builder::AnalysisSpec analysis = built.analysis;
+    builder::settle_time_step(analysis, built.model, system, "pair.json");
+    std::vector<std::string> found;
+    for (const std::string& w : check_model(built, analysis, system, false).warnings)
+      if (w.starts_with("link c:")) found.push_back(w);
+    return std::pair{analysis.time_step, found};
+  };
+  // T_contact = pi sqrt((m_eff + alpha2) / alpha0) = pi sqrt(6000 / 1e10) = 2.4335 ms.
+  const double duration = M_PI * std::sqrt(6000.0 / 1e10);
+  const auto [auto_step, warned] = contact_warnings("\"auto\"");
+  std::printf("auto step %.4g = contact duration / %.2f\n", auto_step, duration / auto_step);
+  ASSERT_EQ(warned.size(), 1u);
+  EXPECT_NE(warned[0].find("the \"auto\" time step"), std::string::npos) << warned[0];
+  EXPECT_NE(warned[0].find(fmt::format("at most {:.4g}", duration / 20.0)), std::string::npos)
+      << warned[0];
+  EXPECT_TRUE(contact_warnings(fmt::format("{}", duration / 40.0)).second.empty());
 }
 
 }  // namespace
