@@ -648,9 +648,8 @@ bool Newmark::solve_link_forces(SecondOrderSystem& system, const Factorization& 
     // Only a residual small against the forces: a tangent of 1e50 makes any correction vanish
     // against its terms while a yielded spring's residual is the whole load (and a damper's
     // power law at a linear_velocity of 1e-300 is as steep).
-    const double terms = law_terms_norm();
     if (iteration > 0 && result.unbalanced_force <= kRoundOffResidual * reference &&
-        correction_.norm() <= 1e-14 * std::max({assumed_force_.norm(), terms, 1e-300})) {
+        correction_.norm() <= 1e-14 * std::max({assumed_force_.norm(), law_terms_norm(), 1e-300})) {
       deform_links(f);
       return true;
     }
