@@ -8,15 +8,19 @@ DIR, each when its data is there (one line printed per file):
   ida_<quantity>.png  incremental dynamic analysis curves: one line per model and record through
                       its scales, the response on the horizontal axis and the intensity measure
                       [g] on the vertical one, with the median and 84th percentile of every scale
-                      (batch_stats.json) and the set's limit on that quantity, dashed
-  fragility.png       fraction of the cases exceeding each limit at every intensity stripe, and
+                      whose cases share one intensity (batch_stats.json) and the set's limit on
+                      that quantity, dashed
+  fragility.png       the cases pound's fit took, each at its intensity (1: exceeded, 0: not;
+                      failed cases that had passed the limit count as exceeding, as in the fit),
+                      the fraction exceeding at every scale whose cases share one intensity, and
                       the fitted lognormal fragility curve; the fits pound could not make are
                       listed with their reason
 Quantities are the ones batch_stats.json lists under "quantities", with their axis labels
 (pound's own table: impacts, peak forces, joint openings, drifts, ...): by default every response
 among them that a completed case reports, leaving out checks of the analysis such as
-energy_balance_error; --quantity names the ones to draw. One panel per model. Failed cases and
-input errors are left out and counted on the figures. Units are the model's own, intensities in g.
+energy_balance_error; --quantity names the ones to draw. One panel per model. Failed cases (but
+in the fragility as above) and input errors are left out and counted on the figures. Units are
+the model's own (named where every model gives them alike), intensities in g.
 
 Needs matplotlib (Debian: python3-matplotlib, installed by tools/install_dependencies.sh).
 Run it with the interpreter that has it; if `python3` is another one (pyenv, a venv) without
@@ -27,6 +31,7 @@ malformed CSV or batch_stats.json; message names the file), 4 a figure could not
 """
 
 import difflib
+import json
 import math
 import os
 import sys
@@ -42,6 +47,9 @@ REEXEC_MARK = "POUND_PLOT_BATCH_REEXEC"
 
 SUMMARY_FILE = "batch_summary.csv"
 STATS_FILE = "batch_stats.json"
+# Intensities of one scale's cases within this fraction of each other make a stripe (a level of
+# multiple-stripe analysis); past it (records scaled to one PGA, measured by Sa) they do not.
+STRIPE_SPREAD = 0.05
 STATUSES = ("completed", "failed", "input_error")
 REQUIRED_COLUMNS = ("name", "model", "record", "scale", "status", "intensity")
 
@@ -66,7 +74,8 @@ def parse_number(text):
 class Case:
     """One row of batch_summary.csv: the fields the figures use."""
 
-    def __init__(self, model, record, scale, status, intensity, values):
+    def __init__(self, model, record, scale, status, intensity, values, name=""):
+        self.name = name  # its folder under the batch's output
         self.model = model
         self.record = record
         self.scale = scale
@@ -106,7 +115,8 @@ def read_summary(folder, known_quantities):
             if scale is None:
                 raise InputError(f"{path}: line {line}, column 'scale': empty")
             cases.append(Case(row[index["model"]].strip(), row[index["record"]].strip(), scale,
-                              status, cell("intensity"), {q: cell(q) for q in quantities}))
+                              status, cell("intensity"), {q: cell(q) for q in quantities},
+                              row[index["name"]].strip()))
     return path, cases, quantities
 
 
@@ -204,7 +214,10 @@ def read_stats(folder):
         at = f"quantities.{quantity}"
         entry = obj(entry, at)
         stats.quantities[quantity] = {"axis_label": text(entry, "axis_label", at),
-                                      "response": flag(entry, "response", at)}
+                                      "response": flag(entry, "response", at),
+                                      # older files: every limited quantity was a running peak but
+                                      # the residual drift
+                                      "running_peak": entry.get("running_peak") is not False}
     for i, group in enumerate(items(top, "groups", '"groups"')):
         where = f"groups[{i}]"
         entry = {"model": text(group, "model", where), "scale": num(group, "scale", where),
@@ -278,6 +291,37 @@ class Plotter:
         name = stats.set_name or os.path.basename(os.path.abspath(folder))
         self.set_name = os.path.splitext(os.path.basename(name))[0] if name else "batch"
         self.written = []
+        self.units = self.shared_units()
+
+    def shared_units(self):
+        """The units every model of the set gives its numbers in (summary.json's "units" of a
+        completed case of each), or None where they differ or cannot be read: then the axes say
+        "model ... units"."""
+        found = {}
+        for c in self.completed:
+            if c.model in found:
+                continue
+            try:
+                with open(os.path.join(self.folder, c.name, "summary.json"), encoding="utf-8") as f:
+                    units = json.load(f).get("units")
+            except (OSError, ValueError, AttributeError):
+                return None
+            if not isinstance(units, dict):
+                return None
+            found[c.model] = units
+        values = list(found.values())
+        return values[0] if values and all(v == values[0] for v in values) else None
+
+    def label(self, quantity):
+        """The quantity's axis label, its "[model force units]" and the like named where every
+        model gives them in the same units."""
+        label = self.stats.label(quantity)
+        if self.units:
+            for dimension in ("force", "length", "acceleration"):
+                unit = self.units.get(dimension)
+                if isinstance(unit, str) and unit and not unit.startswith("the model"):
+                    label = label.replace(f"[model {dimension} units]", f"[{unit}]")
+        return label
 
     @staticmethod
     def colormap(k, count):
@@ -343,10 +387,15 @@ class Plotter:
     # -- IDA curves -----------------------------------------------------------------------------
 
     def stripe_intensity(self, model, scale):
-        """Median intensity of the completed cases of a model at a scale (None: none known)."""
+        """Median intensity of the completed cases of a model at a scale (None: none known, or
+        the cases' intensities differ by more than STRIPE_SPREAD: records scaled to one PGA and
+        measured by Sa at a period, whose scale is no intensity level, and whose statistics at
+        "the" intensity would mix levels)."""
         values = [c.intensity for c in self.completed
                   if c.model == model and same_scale(c.scale, scale) and c.intensity is not None]
-        return median(values) if values else None
+        if not values or max(values) > (1.0 + STRIPE_SPREAD) * min(values):
+            return None
+        return median(values)
 
     def plot_ida(self, quantity):
         models = [m for m in self.models if any(c.model == m and c.values.get(quantity) is not None
@@ -387,6 +436,9 @@ class Plotter:
                     ys.append(intensity)
             if xs:
                 ax.plot(xs, ys, style, color="k", lw=2.2, marker="s", ms=5, label=label, zorder=5)
+        if groups and not any(self.stripe_intensity(model, g["scale"]) for g in groups):
+            ax.plot([], [], " ", label="no stripe statistics: the intensities differ within each "
+                                       "scale")
 
         limit = self.limit(model, quantity)
         if limit is not None:
@@ -394,7 +446,7 @@ class Plotter:
 
         ax.set_xlim(left=0.0)
         ax.set_ylim(bottom=0.0)
-        ax.set_xlabel(self.stats.label(quantity))
+        ax.set_xlabel(self.label(quantity))
         ax.set_ylabel(f"intensity: {self.im_label()}")
         model_cases = [c for c in self.cases if c.model == model]
         title = f"{model}: {plural(len(records), 'record')}"
@@ -409,17 +461,32 @@ class Plotter:
 
     # -- fragility ------------------------------------------------------------------------------
 
-    def observed_fractions(self, model, quantity, limit):
-        """[(mean intensity, exceeded, count)] per scale of a model, from the completed cases."""
-        stripes = {}
-        for c in self.completed:
+    def observations(self, model, quantity, limit):
+        """[(scale, intensity, exceeded)]: the cases pound's fit takes, each at its own intensity.
+        The completed cases that report the quantity, and the failed ones whose running peak had
+        passed the limit before they stopped (as exceeding; docs/batch_format.md)."""
+        running_peak = self.stats.quantities.get(quantity, {}).get("running_peak", True)
+        found = []
+        for c in self.cases:
             value = c.values.get(quantity)
-            if c.model != model or value is None or c.intensity is None:
+            if c.model != model or value is None or c.intensity is None or not c.intensity > 0.0:
                 continue
-            key = next((s for s in stripes if same_scale(s, c.scale)), c.scale)
-            stripes.setdefault(key, []).append((c.intensity, value > limit))
+            if c.status == "completed":
+                found.append((c.scale, c.intensity, value > limit))
+            elif c.status == "failed" and running_peak and value > limit:
+                found.append((c.scale, c.intensity, True))
+        return found
+
+    def observed_fractions(self, model, quantity, limit):
+        """[(mean intensity, exceeded, count)] per scale of a model whose cases share one
+        intensity (within STRIPE_SPREAD); a scale whose intensities differ has no fraction."""
+        stripes = {}
+        for scale, intensity, exceeded in self.observations(model, quantity, limit):
+            key = next((s for s in stripes if same_scale(s, scale)), scale)
+            stripes.setdefault(key, []).append((intensity, exceeded))
         return [(mean([i for i, _ in items]), sum(e for _, e in items), len(items))
-                for _, items in sorted(stripes.items())]
+                for _, items in sorted(stripes.items())
+                if max(i for i, _ in items) <= (1.0 + STRIPE_SPREAD) * min(i for i, _ in items)]
 
     def plot_fragility(self):
         entries = self.stats.fragility
@@ -463,11 +530,11 @@ class Plotter:
         """Why an entry has no curve, or a warning when its median lies outside the data."""
         if not entry["fitted"]:
             return f"not fitted: {entry['reason'] or 'no reason given'}"
-        stripes = self.observed_fractions(entry["model"], entry["quantity"], entry["limit"])
-        if not stripes:
+        cases = self.observations(entry["model"], entry["quantity"], entry["limit"])
+        if not cases:
             return ""
-        low, high = min(x for x, _, _ in stripes), max(x for x, _, _ in stripes)
-        counts = f"{sum(e for _, e, _ in stripes)} of {sum(n for _, _, n in stripes)} cases exceed"
+        low, high = min(x for _, x, _ in cases), max(x for _, x, _ in cases)
+        counts = f"{sum(e for _, _, e in cases)} of {len(cases)} cases exceed"
         if entry["median"] < low:
             return (f"fitted median {entry['median']:.3g} g is below the lowest intensity {low:.3g} g "
                     f"({counts}): an extrapolation, poorly constrained by the data")
@@ -480,18 +547,24 @@ class Plotter:
         np = self.np
         quantity, limit = key
         observed = [self.observed_fractions(e["model"], quantity, limit) for e in entries]
-        highest = max((x for stripes in observed for x, _, _ in stripes), default=0.0)
+        cases = [self.observations(e["model"], quantity, limit) for e in entries]
+        highest = max((x for found in cases for _, x, _ in found), default=0.0)
         top = 1.15 * highest if highest > 0.0 else 1.0
         for entry in entries:  # show the fitted median when it is not far beyond the data
             if entry["fitted"] and top < entry["median"] < 5.0 * top:
                 top = 1.3 * entry["median"]
-        for m, (entry, stripes) in enumerate(zip(entries, observed)):
+        for m, (entry, stripes, found) in enumerate(zip(entries, observed, cases)):
             colour = f"C{m % 10}"
             prefix = f"{entry['model']}: " if several_models else ""
+            if found:  # every case the fit takes, at its own intensity: 1 exceeded, 0 not
+                offset = 0.012 * (m - 0.5 * (len(entries) - 1))
+                ax.plot([x for _, x, _ in found], [(1.0 if e else 0.0) + offset for _, _, e in found],
+                        "|", ms=9, mew=1.2, color=colour, alpha=0.6, zorder=4,
+                        label=f"{prefix}cases of the fit (1: exceeded, 0: not)")
             if stripes:
                 ax.plot([x for x, _, _ in stripes], [e / n for _, e, n in stripes],
                         MARKERS[m % len(MARKERS)], ms=7, color=colour, alpha=0.85, zorder=5,
-                        label=f"{prefix}observed fraction exceeding")
+                        label=f"{prefix}fraction exceeding at a scale")
                 for x, exceeded, count in stripes:
                     ax.annotate(f"{exceeded}/{count}", (x, exceeded / count), fontsize="small",
                                 xytext=(5, -12 if exceeded > 0.5 * count else 6),
@@ -508,7 +581,7 @@ class Plotter:
         ax.set_ylim(-0.03, 1.05)
         ax.set_xlabel(f"intensity: {self.im_label()}")
         ax.set_ylabel("probability of exceeding the limit [-]")
-        ax.set_title(f"{self.stats.label(quantity).split(' [')[0]} > {limit:.4g}",
+        ax.set_title(f"{self.label(quantity).split(' [')[0]} > {limit:.4g}",
                      fontsize="medium")
         ax.grid(alpha=0.3)
         ax.legend(loc="lower right", fontsize="small", framealpha=0.9)

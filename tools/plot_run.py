@@ -76,9 +76,22 @@ def load_ensemble(folder):
             raise InputError(f"{path}: every quantity needs a path and its numbers")
         if q.get("headline") is True:
             shown.append(q)
+    for q in shown:  # pound's verdict (band and the unperturbed run's place); older files: band
+        if not isinstance(q.get("robust"), bool):
+            q["robust"] = q["spread"] <= (number(ensemble, "robust_spread") or 0.05)
     return {"path": path, "quantities": shown, "copies": ensemble.get("copies"),
             "perturbation": ensemble.get("perturbation"),
+            "perturbed": ensemble.get("perturbed") if isinstance(ensemble.get("perturbed"), str)
+            else "the records",
+            "failed": number(ensemble, "failed") or 0,
             "robust_spread": number(ensemble, "robust_spread") or 0.05}
+
+
+def ensemble_words(ensemble):
+    """How many copies completed, of how many, and what was perturbed: for titles and notes."""
+    copies, failed = ensemble.get("copies"), int(ensemble.get("failed") or 0)
+    counted = f"{copies} copies" if not failed else f"{copies - failed} of {copies} copies ({failed} failed, left out)"
+    return f"{counted}, {ensemble['perturbed']} scaled by 1 ± k·{ensemble['perturbation']:g}"
 
 
 # ----------------------------------------------------------------------------------------------
@@ -681,36 +694,36 @@ class Plotter:
         present = [q for q in ensemble["quantities"]
                    if max(abs(q["min"]), abs(q["max"]), abs(q["unperturbed"])) > 0.0]
         # The least robust first, then, for contrast, robust peak drifts, ductilities and forces.
-        loose = sorted((q for q in present if q["spread"] > limit), key=lambda q: -q["spread"])
+        loose = sorted((q for q in present if not q["robust"]), key=lambda q: -q["spread"])
         loose = loose[:ENSEMBLE_SHOWN * 2 // 3]
         contrast = ("peak_drift", "ductility", "peak_force")
-        robust = sorted((q for q in present if q["spread"] <= limit
+        robust = sorted((q for q in present if q["robust"]
                          and q["path"].rsplit("/", 1)[-1] in contrast),
                         key=lambda q: contrast.index(q["path"].rsplit("/", 1)[-1]))
         quantities = loose + robust[:ENSEMBLE_SHOWN - len(loose)]
         if not quantities:
             return
-        fig = self.Figure(figsize=(11.0, 1.6 + 0.32 * len(quantities)))
+        fig = self.Figure(figsize=(11.0, 1.9 + 0.32 * len(quantities)))
         ax = fig.subplots(1, 1)
         for row, q in enumerate(quantities):
             size = max(abs(q["min"]), abs(q["max"]), abs(q["unperturbed"]))
             y = len(quantities) - 1 - row
             ax.plot([q["min"] / size, q["max"] / size], [y, y], color="0.6", lw=1.0)
-            robust = q["spread"] <= limit
             ax.plot([q["p16"] / size, q["p84"] / size], [y, y], lw=6.0, solid_capstyle="butt",
-                    color="C0" if robust else "C3", alpha=0.8)
+                    color="C0" if q["robust"] else "C3", alpha=0.8)
             ax.plot(q["median"] / size, y, "|", color="k", ms=12, mew=2.0)
             ax.plot(q["unperturbed"] / size, y, "o", color="k", mfc="white", ms=5)
         ax.set_yticks(range(len(quantities)))
         ax.set_yticklabels([f"{q['path'].lstrip('/')} ({100 * q['spread']:.0f} %)"
                             for q in reversed(quantities)], fontsize="small")
         for label, q in zip(ax.get_yticklabels(), reversed(quantities)):
-            label.set_color("C3" if q["spread"] > limit else "k")
+            label.set_color("k" if q["robust"] else "C3")
         ax.axvline(0.0, color="0.6", lw=0.5)
         ax.set_xlabel("value / its largest |value| over the runs [-]")
-        ax.set_title(f"{ensemble['copies']} copies, records scaled by 1 ± k·{ensemble['perturbation']:g}\n"
-                     f"range (grey), 16–84 % (bar; red: spread above {100 * limit:g} %, not robust), "
-                     "median (|), unperturbed run (o)", fontsize="medium")
+        ax.set_title(f"{ensemble_words(ensemble)}\n"
+                     "range (grey), 16–84 % (bar), median (|), unperturbed run (o)\n"
+                     f"red: not robust (16–84 % spread above {100 * limit:g} %, or the unperturbed "
+                     f"run over {50 * limit:g} % from the median)", fontsize="medium")
         ax.grid(alpha=0.3, axis="x")
         fig.subplots_adjust(left=0.42, right=0.98)
         self.save(fig, "ensemble.png", "Spread of the peaks over the ensemble")

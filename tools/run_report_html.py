@@ -57,7 +57,8 @@ DRIFT_COLUMNS = [("height", "height", "length"), ("peak_drift", "peak drift", "l
                  ("peak_base_moment", "peak base moment", "moment")]
 ENSEMBLE_COLUMNS = [("unperturbed", "unperturbed", None), ("median", "median", None),
                     ("p16", "16 %", None), ("p84", "84 %", None), ("min", "min", None),
-                    ("max", "max", None), ("spread", "spread", None)]
+                    ("max", "max", None), ("spread", "spread", None),
+                    ("deviation", "unperturbed from median", None)]
 # A hinge's force and deformation are a moment and a rotation.
 ROTATIONAL = {"force": "moment", "length": "angle"}
 
@@ -187,9 +188,13 @@ def ensemble_table(ensemble):
                   key=lambda q: -(q.get("spread") or 0.0))
     for row in rows:
         row["robust"] = bool(row.get("robust"))
+    failed = int(ensemble.get("failed") or 0)
+    failures = (f" {failed} of the {ensemble.get('copies')} copies failed and are left out: if they "
+                "were collapses, the medians are biased low." if failed else "")
+    perturbed = escape(ensemble.get("perturbed") or "the records")
     return ("<h2>Robustness over the ensemble</h2><p class=\"note\">Headline numbers over copies "
-            "with the records perturbed at the level of numerical noise, least robust first: read "
-            "the late pounding peaks as distributions.</p>" +
+            f"with {perturbed} perturbed at the level of numerical noise, least robust first: read "
+            "the late pounding peaks as distributions." + failures + "</p>" +
             table(rows, ENSEMBLE_COLUMNS + [("robust", "robust", None)], {}, first="path"))
 
 

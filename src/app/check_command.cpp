@@ -129,10 +129,23 @@ std::string check_text(const std::string& model_path, const verification::ModelC
     if (c.adjacent > 0.0 && c.stiff_at_first_touch)
       text +=
           fmt::format(", k-ratio {:.3g} (adjacent {:.4g})", c.stiffness / c.adjacent, c.adjacent);
-    if (c.automatic && c.law == "extended_penalty")
+    if (c.used) {
+      // The law's own numbers; the automatic ones beside them where the model gave others.
+      const auto numbers = [](const links::ExtendedPenalty::Numbers& n) {
+        return fmt::format("alpha0 {:.4g}, alpha1 {:.4g}, alpha2 {:.4g}", n.alpha0, n.alpha1,
+                           n.alpha2);
+      };
+      const bool automatic = c.automatic && numbers(*c.automatic) == numbers(*c.used);
+      text +=
+          fmt::format("; extended penalty {}{}", numbers(*c.used),
+                      automatic     ? " (the automatic numbers)"
+                      : c.automatic ? fmt::format(" (automatic would be {})", numbers(*c.automatic))
+                                    : "");
+    } else if (c.automatic && c.law == "extended_penalty") {
       text +=
           fmt::format("; automatic extended penalty alpha0 {:.4g}, alpha1 {:.4g}, alpha2 {:.4g}",
                       c.automatic->alpha0, c.automatic->alpha1, c.automatic->alpha2);
+    }
     if (c.contact_duration > 0.0)
       text += fmt::format("; contact lasts ~{}", with_unit(c.contact_duration, time));
     else if (!c.no_duration.empty())

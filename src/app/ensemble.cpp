@@ -39,8 +39,9 @@ bool is_response(const std::string& path) {
   const std::string_view own =
       path.starts_with("/verification/") ? std::string_view(path).substr(13) : path;
   if (std::find(statistics.begin(), statistics.end(), own) != statistics.end()) return false;
-  // The records as applied (each copy's own scale): inputs, not responses.
-  if (path.starts_with("/excitations/")) return false;
+  // The records as applied (each copy's own scale): inputs, not responses; an adaptive run's
+  // rejected steps, located contacts and tolerance: how it stepped.
+  if (path.starts_with("/excitations/") || path.starts_with("/adaptive/")) return false;
   return !path.ends_with("balance_error");
 }
 
@@ -83,7 +84,8 @@ QuantitySpread spread_of(const std::string& path, double unperturbed,
   q.max = *std::max_element(values.begin(), values.end());
   const double size = std::max({std::abs(unperturbed), std::abs(q.min), std::abs(q.max), scale});
   q.spread = size > 0.0 ? (q.p84 - q.p16) / size : 0.0;
-  q.robust = q.spread <= robust_spread;
+  q.deviation = size > 0.0 ? std::abs(unperturbed - q.median) / size : 0.0;
+  q.robust = q.spread <= robust_spread && q.deviation <= 0.5 * robust_spread;
   q.headline = is_headline(path);
   return q;
 }
@@ -124,7 +126,8 @@ std::vector<QuantitySpread> spreads(const RunOutcome& unperturbed,
 results::CaseSummary EnsembleResult::row_summary(bool medians) const {
   const bool completed = unperturbed.failure.empty();
   results::CaseSummary summary = medians && completed ? median_summary() : unperturbed.case_summary;
-  if (completed && failed() > 0) summary.warnings = summary.warnings.value_or(0.0) + failed();
+  // Failed copies are counted whether or not the unperturbed run completed (docs/batch_format.md).
+  if (failed() > 0) summary.warnings = summary.warnings.value_or(0.0) + failed();
   return summary;
 }
 
@@ -240,19 +243,32 @@ std::string ensemble_report(const EnsembleResult& result, const EnsembleOptions&
     if (residual(a) != residual(b)) return residual(b);
     return a->spread > b->spread;
   });
-  std::string text = fmt::format(
-      "ensemble: {} cop{} with {} scaled by 1 +- k {:g} (k up to {}), {} failed: {} of "
-      "{} numbers are not robust (16-84 % spread above {:g} of their size)\n",
+  const std::string copies = fmt::format(
+      "ensemble: {} cop{} with {} scaled by 1 +- k {:g} (k up to {}), {} failed",
       result.factors.size(), result.factors.size() == 1 ? "y" : "ies", result.unperturbed.perturbed,
-      options.perturbation, (options.copies + 1) / 2, result.failed(), loose.size() + other,
-      result.quantities.size(), options.robust_spread);
+      options.perturbation, (options.copies + 1) / 2, result.failed());
+  if (result.quantities.empty())
+    return copies + ": no statistics (no copy completed, or none reports the run's numbers)\n";
+  std::string text = fmt::format(
+      "{}: {} of {} numbers are not robust (16-84 % spread above {:g} of their size, or the "
+      "unperturbed run further than half that from the median)\n",
+      copies, loose.size() + other, result.quantities.size(), options.robust_spread);
+  const std::size_t completed = result.factors.size() - static_cast<std::size_t>(result.failed());
+  if (completed < 5)
+    text += fmt::format(
+        "  {} completed cop{}: their 16-84 % are those of {} sample{}, no measure of the spread; "
+        "run 10 or more to judge one\n",
+        completed, completed == 1 ? "y" : "ies", completed, completed == 1 ? "" : "s");
   constexpr std::size_t kShown = 16;
   for (std::size_t k = 0; k < std::min(kShown, loose.size()); ++k) {
     const QuantitySpread& q = *loose[k];
     text += fmt::format(
         "  {}: {:.4g}; median {:.4g}, 16-84 % {:.4g} to {:.4g}, range {:.4g} to "
-        "{:.4g} (spread {:.0f} %)\n",
-        q.path, q.unperturbed, q.median, q.p16, q.p84, q.min, q.max, 100.0 * q.spread);
+        "{:.4g} (spread {:.0f} %{})\n",
+        q.path, q.unperturbed, q.median, q.p16, q.p84, q.min, q.max, 100.0 * q.spread,
+        q.deviation > 0.5 * options.robust_spread
+            ? fmt::format(", the unperturbed run {:.0f} % from the median", 100.0 * q.deviation)
+            : "");
   }
   const std::size_t more_headline = loose.size() - std::min(kShown, loose.size());
   if (more_headline + other > 0)
@@ -287,6 +303,7 @@ io::Document ensemble_document(const EnsembleResult& result, const EnsembleOptio
                 .set("min", q.min)
                 .set("max", q.max)
                 .set("spread", q.spread)
+                .set("deviation", q.deviation)
                 .set("robust", q.robust)
                 .set("headline", q.headline);
           }));

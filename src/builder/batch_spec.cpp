@@ -21,12 +21,25 @@ std::optional<EnsembleError> ensemble_error(int copies, double perturbation, dou
                          fmt::format("a relative change of the records at the level of numerical "
                                      "noise is in (0, 0.01), got {}",
                                      perturbation)};
-  // Below about 1.1e-16, 1 + eps rounds to 1: every copy would be the unperturbed run.
-  if (!(1.0 + perturbation > 1.0 && 1.0 - perturbation < 1.0))
-    return EnsembleError{EnsembleNumber::perturbation,
-                         fmt::format("{} leaves the records unchanged: 1 + it is 1 in double "
-                                     "precision (it must be at least 1.2e-16)",
-                                     perturbation)};
+  // Below the double spacing above 1 (2.2e-16), 1 + k eps rounds alike for two k (at 1.2e-16,
+  // 1 + eps and 1 + 2 eps are both 1 + 2.2e-16), or to 1: two copies, or a copy and the
+  // unperturbed run, would be the same run and narrow the quantiles.
+  double above = 1.0, below = 1.0;
+  for (int k = 1; k <= copies / 2 + 1; ++k) {
+    const double up = 1.0 + k * perturbation, down = 1.0 - k * perturbation;
+    if (!(up > above && down < below))
+      return EnsembleError{
+          EnsembleNumber::perturbation,
+          k == 1 ? fmt::format("{} leaves the records unchanged: 1 + it is 1 in double precision "
+                               "(it must be at least 2.3e-16)",
+                               perturbation)
+                 : fmt::format("{} gives copies that are the same run: 1 +- {} times it rounds as "
+                               "1 +- {} times it does in double precision (it must be at least "
+                               "2.3e-16)",
+                               perturbation, k, k - 1)};
+    above = up;
+    below = down;
+  }
   // The copies' factors reach 1 +- (copies / 2 + 1) eps at most.
   if (!(perturbation * (copies / 2 + 1) < 0.5))
     return EnsembleError{EnsembleNumber::perturbation,

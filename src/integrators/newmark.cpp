@@ -645,9 +645,11 @@ bool Newmark::solve_link_forces(SecondOrderSystem& system, const Factorization& 
     // terms may be far larger than its force: an extended penalty's alpha2 c_m (delta - delta~)
     // cancels delta's leading digits (T delta of 6e10 N for a force of 3.4e4 at alpha2 =
     // 0.45 m_eff, dt = 1e-5: Newton then swung by 1e-5 N, its round-off, to the 25th iteration).
-    // Only a residual small against the forces: a tangent of 1e50 makes any correction vanish
-    // against its terms while a yielded spring's residual is the whole load (and a damper's
-    // power law at a linear_velocity of 1e-300 is as steep).
+    // Only a residual small against the forces (the loads' and the laws'; not the iterate's own
+    // unknowns, 1e17 N where a damper's linear_velocity is 1e-300): a tangent of 1e50 makes any
+    // correction vanish against its terms while a yielded spring's residual is the whole load,
+    // and an extended penalty's release with a residual of 3.8e5 N against no force at all was
+    // accepted so.
     if (iteration > 0 && result.unbalanced_force <= kRoundOffResidual * reference &&
         correction_.norm() <= 1e-14 * std::max({assumed_force_.norm(), law_terms_norm(), 1e-300})) {
       deform_links(f);

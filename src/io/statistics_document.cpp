@@ -10,7 +10,8 @@ Document quantities_document() {
     quantities.set(std::string(q.name), Document()
                                             .set("meaning", std::string(q.meaning))
                                             .set("axis_label", std::string(q.axis_label))
-                                            .set("response", q.response));
+                                            .set("response", q.response)
+                                            .set("running_peak", q.running_peak));
   return quantities;
 }
 

@@ -37,6 +37,11 @@ class Restrainer final : public LinkLaw {
   // The elongation beyond the slack at first yield, T_y / k; none for an elastic one (a hook).
   std::optional<double> yield_deformation() const override;
   double slack() const override { return slack_; }
+  // T^2 / 2k taut and its hardening's H p^2 / 2 of the committed plastic elongation p.
+  std::optional<double> stored_energy(double force, double /*deformation*/) const override {
+    return 0.5 *
+           (force * force / stiffness_ + hardening_ * committed_plastic_ * committed_plastic_);
+  }
 
  private:
   std::string name_;

@@ -30,6 +30,7 @@ struct LinkCheck {
   // excitations or the link's initial closing velocity, whichever is larger; 0: none.
   double approach_velocity = 0.0;
   std::optional<links::ExtendedPenalty::Numbers> automatic;  // with an adjacent stiffness
+  std::optional<links::ExtendedPenalty::Numbers> used;       // an extended penalty's own
 };
 
 struct ModelCheck {
