@@ -271,6 +271,11 @@ def median(values):
     return values[middle] if len(values) % 2 else 0.5 * (values[middle - 1] + values[middle])
 
 
+def one_intensity(values):
+    """Whether these intensities make one stripe: some, within STRIPE_SPREAD of each other."""
+    return bool(values) and max(values) <= (1.0 + STRIPE_SPREAD) * min(values)
+
+
 def plural(count, word):
     return f"{count} {word}{'' if count == 1 else 's'}"
 
@@ -393,9 +398,7 @@ class Plotter:
         "the" intensity would mix levels)."""
         values = [c.intensity for c in self.completed
                   if c.model == model and same_scale(c.scale, scale) and c.intensity is not None]
-        if not values or max(values) > (1.0 + STRIPE_SPREAD) * min(values):
-            return None
-        return median(values)
+        return median(values) if one_intensity(values) else None
 
     def plot_ida(self, quantity):
         models = [m for m in self.models if any(c.model == m and c.values.get(quantity) is not None
@@ -485,8 +488,7 @@ class Plotter:
             key = next((s for s in stripes if same_scale(s, scale)), scale)
             stripes.setdefault(key, []).append((intensity, exceeded))
         return [(mean([i for i, _ in items]), sum(e for _, e in items), len(items))
-                for _, items in sorted(stripes.items())
-                if max(i for i, _ in items) <= (1.0 + STRIPE_SPREAD) * min(i for i, _ in items)]
+                for _, items in sorted(stripes.items()) if one_intensity([i for i, _ in items])]
 
     def plot_fragility(self):
         entries = self.stats.fragility

@@ -557,11 +557,12 @@ std::string unit_of(const builder::UnitsSpec& units, Dimension dimension) {
 // refused.
 void refuse_limits_in_mixed_units(const builder::SetSpec& set,
                                   const std::vector<builder::ModelSpec>& specs) {
+  if (specs.empty()) return;
   for (const builder::ResponseLimit& limit : set.limits) {
     const results::BatchQuantity* quantity = results::find_batch_quantity(limit.quantity);
     if (!quantity || quantity->dimension == Dimension::none) continue;
+    const std::string first = unit_of(specs.front().units, quantity->dimension);
     for (std::size_t k = 1; k < specs.size(); ++k) {
-      const std::string first = unit_of(specs[0].units, quantity->dimension);
       const std::string other = unit_of(specs[k].units, quantity->dimension);
       if (first != other)
         throw InputError(

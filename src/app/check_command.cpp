@@ -135,6 +135,8 @@ std::string check_text(const std::string& model_path, const verification::ModelC
         return fmt::format("alpha0 {:.4g}, alpha1 {:.4g}, alpha2 {:.4g}", n.alpha0, n.alpha1,
                            n.alpha2);
       };
+      // Alike as printed: the law's own automatic numbers come from its context in another order
+      // of operations and may differ in the last bits.
       const bool automatic = c.automatic && numbers(*c.automatic) == numbers(*c.used);
       text +=
           fmt::format("; extended penalty {}{}", numbers(*c.used),

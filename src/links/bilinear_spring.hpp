@@ -40,12 +40,10 @@ class BilinearSpring final : public LinkLaw {
   // A spring is always attached; "in contact" means it carries a force.
   bool in_contact() const override { return committed_force_ != 0.0; }
   std::optional<double> yield_deformation() const override { return yield_force_ / stiffness_; }
-  // k (delta - p)^2 / 2 + H p^2 / 2 with p = delta - F / k: the parallel springs b k and an
-  // elastic-perfectly-plastic (1 - b) k hold as much, so what is dissipated is the plastic slip's
-  // (1 - b) F_y |dq| alone (a lead-rubber bearing's lead, Q_d (D - delta_y) pushed to D).
+  // bilinear_stored_energy: what is dissipated is then the plastic slip's (1 - b) F_y |dq| alone
+  // (a lead-rubber bearing's lead, Q_d (D - delta_y) pushed to D).
   std::optional<double> stored_energy(double force, double deformation) const override {
-    const double plastic = deformation - force / stiffness_;
-    return 0.5 * (force * force / stiffness_ + hardening_modulus_ * plastic * plastic);
+    return bilinear_stored_energy(stiffness_, hardening_modulus_, force, deformation);
   }
 
   double plastic_deformation() const { return committed_plastic_; }

@@ -82,13 +82,6 @@ BoucWen::BoucWen(const Parameters& p)
     throw std::invalid_argument("bouc_wen: " + refused->parameter + " " + refused->reason);
 }
 
-std::optional<double> BoucWen::stored_energy(double force, double deformation) const {
-  const double elastic = hardening_ratio_ * stiffness_;
-  const double hysteretic = force - elastic * deformation;
-  return 0.5 * (elastic * deformation * deformation +
-                hysteretic * hysteretic / ((1.0 - hardening_ratio_) * stiffness_ * amplitude_));
-}
-
 double BoucWen::rate(double w, Branch branch) const {
   // |z|^n (beta s + gamma) = A (w / z_max)^n (beta s + gamma) / (beta + gamma), in the scale of
   // z_max so that no power of a small deformation underflows.

@@ -119,9 +119,10 @@ class BoucWen final : public LinkLaw {
   // A spring is always attached; "in contact" means it carries a force.
   bool in_contact() const override { return committed_force_ != 0.0; }
   std::optional<double> yield_deformation() const override { return saturation_ / amplitude_; }
-  // a k delta^2 / 2 and the hysteretic part's F_h^2 / (2 (1 - a) k A), F_h = F - a k delta =
-  // (1 - a) k z, on its initial slope (1 - a) k A.
-  std::optional<double> stored_energy(double force, double deformation) const override;
+  // bouc_wen_stored_energy (F_h = (1 - a) k z).
+  std::optional<double> stored_energy(double force, double deformation) const override {
+    return bouc_wen_stored_energy(stiffness_, hardening_ratio_, amplitude_, force, deformation);
+  }
 
   const Parameters& parameters() const { return parameters_; }
   double hysteretic_deformation() const { return committed_z_; }  // z [L]

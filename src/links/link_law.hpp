@@ -76,4 +76,22 @@ class LinkLaw {
   virtual bool is_hard_contact() const { return false; }
 };
 
+// The elastic energy a bilinear spring with kinematic hardening holds at force F and deformation
+// delta: k (delta - p)^2 / 2 + H p^2 / 2 = F^2 / 2k + H p^2 / 2, p = delta - F / k; the parallel
+// springs b k and an elastic-perfectly-plastic (1 - b) k hold as much (H = b k / (1 - b)) [F L].
+inline double bilinear_stored_energy(double stiffness, double hardening_modulus, double force,
+                                     double deformation) {
+  const double plastic = deformation - force / stiffness;
+  return 0.5 * (force * force / stiffness + hardening_modulus * plastic * plastic);
+}
+
+// A Bouc-Wen law's, F = a k delta + F_h: a k delta^2 / 2 and the hysteretic part's
+// F_h^2 / (2 (1 - a) k A), on its initial slope (1 - a) k A [F L].
+inline double bouc_wen_stored_energy(double stiffness, double hardening_ratio, double amplitude,
+                                     double force, double deformation) {
+  const double elastic = hardening_ratio * stiffness, hysteretic = force - elastic * deformation;
+  return 0.5 * (elastic * deformation * deformation +
+                hysteretic * hysteretic / ((1.0 - hardening_ratio) * stiffness * amplitude));
+}
+
 }  // namespace pound::links

@@ -44,16 +44,11 @@ struct ShearNumbers {
   // bilinear one, a k s^2 / 2 + F_h^2 / (2 (1 - a) k A) (F_h = F - a k s) of a Bouc-Wen one.
   // Summed over the directions, it is the plane law's: both are quadratic forms in them.
   double stored_energy(double force, double deformation) const {
-    if (smooth) {
-      const double elastic = hardening_ratio * stiffness,
-                   hysteretic = force - elastic * deformation;
-      return 0.5 *
-             (elastic * deformation * deformation +
-              hysteretic * hysteretic / ((1.0 - hardening_ratio) * stiffness * smooth->amplitude));
-    }
-    const double plastic = deformation - force / stiffness;
-    const double hardening = hardening_ratio / (1.0 - hardening_ratio) * stiffness;
-    return 0.5 * (force * force / stiffness + hardening * plastic * plastic);
+    return smooth ? bouc_wen_stored_energy(stiffness, hardening_ratio, smooth->amplitude, force,
+                                           deformation)
+                  : bilinear_stored_energy(stiffness,
+                                           hardening_ratio / (1.0 - hardening_ratio) * stiffness,
+                                           force, deformation);
   }
   bool operator==(const ShearNumbers&) const = default;
 };

@@ -791,12 +791,7 @@ std::optional<double> LinkResult::hysteretic_energy() const {
   if (role == links::LinkRole::tension && *peak_plastic_deformation() == 0.0) return 0.0;
   // What the run's work left stored in the spring at the end less what it held at the start (a
   // static state's preload or yield, which the run's work does not include).
-  const double force = summary.final_force - viscous.force;  // the spring's own
-  const double start = summary.initial_force;
-  const double k0 = *initial_stiffness;
-  const double stored = final_stored_energy.value_or(force * force / (2.0 * k0)) -
-                        initial_stored_energy.value_or(start * start / (2.0 * k0));
-  return summary.work - viscous.work - stored;
+  return summary.work - viscous.work - (final_stored_energy - initial_stored_energy);
 }
 
 bool LinkResult::shear_yields() const {
@@ -941,10 +936,13 @@ RunSummary summarise_run(const builder::BuiltModel& built, const assembly::Struc
       const std::unique_ptr<links::LinkLaw> fresh = link.make_law(system.link_context(link));
       const LinkSummary& s = link_summaries[k];
       // The start's with a fresh law's history: at rest, or preloaded by a static state.
-      result.initial_stored_energy = fresh->stored_energy(s.initial_force, s.initial_deformation);
-      result.final_stored_energy =
-          law.stored_energy(s.final_force - result.viscous.force, s.final_deformation);
-      result.initial_stiffness = fresh->set_trial({at, 0.0, 0.0}).stiffness;
+      const double start = s.initial_force, end = s.final_force - result.viscous.force;
+      const std::optional<double> started = fresh->stored_energy(start, s.initial_deformation);
+      const std::optional<double> ended = law.stored_energy(end, s.final_deformation);
+      const double k0 = fresh->set_trial({at, 0.0, 0.0}).stiffness;
+      result.initial_stiffness = k0;
+      result.initial_stored_energy = started.value_or(start * start / (2.0 * k0));
+      result.final_stored_energy = ended.value_or(end * end / (2.0 * k0));
     }
     result.shear = link.shear;
     result.friction = system.links().has_friction(static_cast<Index>(k));

@@ -143,9 +143,9 @@ struct LinkResult {
   // What its added stiffness-proportional damping did (LinkLaw::viscous_part): part of
   // summary.work and of summary's forces, never of the hysteretic energy.
   links::ViscousPart viscous;
-  // The elastic energy the law held at the end and at the start (LinkLaw::stored_energy, without
-  // the viscous part's force); none where it gives none (then F^2 / (2 k_0)).
-  std::optional<double> final_stored_energy, initial_stored_energy;
+  // The elastic energy a yielding law held at the end and at the start (LinkLaw::stored_energy,
+  // without the viscous part's force; F^2 / (2 k_0) where the law gives none).
+  double final_stored_energy = 0.0, initial_stored_energy = 0.0;
   // Energy the law dissipated: its work less the change of the elastic energy it holds, both
   // without the viscous part. 0 for a restrainer that never yielded: an elastic cable dissipates
   // nothing, and its work's rest is the created energy of engagements inside a step.
